@@ -1,0 +1,60 @@
+//! `POST /v1/flywheel`: flywheel design jobs.
+
+mod request;
+mod result;
+
+pub use request::{DiskDto, FlywheelDto, FlywheelRequest, TorqueDto};
+pub use result::{
+    AccuracyDto, AreaDto, CSV_COLUMNS, CheckDto, DiskOut, FlywheelResult, InertiaPair, ItemWork, SampleDto,
+};
+
+use super::json::JsonBody;
+use super::problem::{ApiError, FieldError, Problem};
+use super::{AppState, jobs};
+use crate::engine::EngineError;
+use crate::engine::flywheel::solve;
+use axum::extract::State;
+use axum::response::Response;
+
+/// Designs a flywheel: balance torque, lobes of M*, energy fluctuation, and the
+/// inertia by the approximate and the exact (Wittenbauer) method, checked by a
+/// time simulation.
+#[utoipa::path(post, path = "/v1/flywheel", tag = "flywheel", request_body = FlywheelRequest,
+    responses(
+        (status = 201, description = "Job computed and stored; `result` is a FlywheelResult", body = jobs::Job,
+            headers(("Location" = String, description = "/v1/jobs/{id}"))),
+        (status = 400, description = "Body is not valid JSON", body = Problem, content_type = "application/problem+json"),
+        (status = 413, description = "Body larger than the limit (default 1 MiB)", body = Problem, content_type = "application/problem+json"),
+        (status = 415, description = "Content type is not application/json", body = Problem, content_type = "application/problem+json"),
+        (status = 422, description = "Not a valid problem; `errors` has a JSON pointer for every invalid field", body = Problem, content_type = "application/problem+json"),
+    ))]
+pub async fn create(State(state): State<AppState>, body: JsonBody<FlywheelRequest>) -> Result<Response, ApiError> {
+    let JsonBody { value, raw, unknown } = body;
+    jobs::create(&state, "flywheel", raw, move || compute(&value, unknown)).await
+}
+
+/// Validates and solves a request (also used by `mechdyn solve flywheel`).
+pub fn compute(request: &FlywheelRequest, mut errors: Vec<FieldError>) -> Result<FlywheelResult, ApiError> {
+    let problem = request.to_problem();
+    match problem {
+        Ok(p) if errors.is_empty() => {
+            let solution = solve(&p).map_err(|e| ApiError::Invalid(vec![engine_error(e)]))?;
+            Ok(FlywheelResult::new(solution, request.torques.iter().map(|t| t.name.clone())))
+        }
+        Ok(_) => Err(ApiError::Invalid(errors)),
+        Err(more) => {
+            errors.extend(more);
+            Err(ApiError::Invalid(errors))
+        }
+    }
+}
+
+/// An engine error as a field error; engine labels are JSON pointers.
+fn engine_error(e: EngineError) -> FieldError {
+    let pointer = match &e {
+        EngineError::NotFinite { function, .. } | EngineError::NegativeInertia { function, .. } => function.clone(),
+        EngineError::NotSteady { .. } => "/torques".into(),
+        EngineError::NotFiniteResult => String::new(),
+    };
+    FieldError::at(pointer, e.to_string())
+}

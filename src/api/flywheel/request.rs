@@ -1,0 +1,254 @@
+//! `POST /v1/flywheel` request and its conversion into an engine problem.
+
+use crate::api::quantity::{Errors, FunctionDto, Quantity};
+use crate::engine::flywheel::{DiskSize, DiskSpec, FlywheelProblem, Load, TorqueItem};
+use crate::engine::function::Function;
+use crate::units::Dim;
+use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
+use utoipa::ToSchema;
+
+/// Most torque items in one request.
+pub const MAX_TORQUES: usize = 100;
+/// Most rows in the sampled table of the result.
+pub const MAX_SAMPLES: usize = 100_000;
+const DEFAULT_SAMPLES: usize = 361;
+
+/// A flywheel design problem. Give the speeds as exactly one of:
+/// `mean_speed` + `irregularity`, `mean_speed` + `min_speed`, or `min_speed` + `max_speed`.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[schema(example = json!({
+    "mean_speed": "60 rpm",
+    "irregularity": 0.04,
+    "torques": [
+        {"name": "slider load", "value": {"segments": [{"from": 0, "to": "pi", "expr": "-500*sin(phi)"}]}},
+        {"name": "motor", "balance": true}
+    ],
+    "reduced_inertia": {"expr": "5*sin(phi)^2"}
+}))]
+pub struct FlywheelRequest {
+    /// Cycle length in rad of the reference shaft (default 2π; 4π for a four-stroke engine).
+    #[schema(value_type = Option<Quantity>)]
+    pub period: Option<Quantity>,
+    /// ω_a = (ω_max + ω_min)/2 of the reference shaft.
+    #[schema(value_type = Option<Quantity>)]
+    pub mean_speed: Option<Quantity>,
+    /// ε = (ω_max − ω_min)/ω_a, in (0, 2).
+    #[schema(exclusive_minimum = 0.0, exclusive_maximum = 2.0)]
+    pub irregularity: Option<f64>,
+    #[schema(value_type = Option<Quantity>)]
+    pub min_speed: Option<Quantity>,
+    #[schema(value_type = Option<Quantity>)]
+    pub max_speed: Option<Quantity>,
+    /// Torques on the machine, positive when they drive it.
+    #[schema(min_items = 1, max_items = 100)]
+    pub torques: Vec<TorqueDto>,
+    /// I*(φ) of the machine reduced to the reference shaft, without flywheel (default 0).
+    #[schema(value_type = Option<FunctionDto>)]
+    pub reduced_inertia: Option<FunctionDto>,
+    /// Constant inertia already on the reference shaft, subtracted from the flywheel (default 0).
+    #[schema(value_type = Option<Quantity>)]
+    pub existing_inertia: Option<Quantity>,
+    pub flywheel: Option<FlywheelDto>,
+    /// Requested relative accuracy (default 1e-9).
+    #[schema(minimum = 1e-14, maximum = 1e-2)]
+    pub tolerance: Option<f64>,
+    /// Run the independent time-simulation check (default true).
+    pub check: Option<bool>,
+    /// Rows of the sampled table in the result and its CSV (default 361; 0 for none).
+    #[schema(minimum = 0, maximum = 100000)]
+    pub samples: Option<usize>,
+    /// Derive M* and I* from a mechanism: not available yet in this version.
+    #[schema(value_type = Option<Object>)]
+    pub machine: Option<serde_json::Value>,
+}
+
+/// A torque item: `value` (a Function), or `"balance": true`.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct TorqueDto {
+    #[schema(max_length = 200)]
+    pub name: String,
+    #[schema(value_type = Option<FunctionDto>)]
+    pub value: Option<FunctionDto>,
+    /// A constant torque solved so that the cycle work is zero (at most one item).
+    pub balance: Option<bool>,
+    /// ω of the shaft it acts on / ω of the reference shaft (default 1).
+    pub ratio: Option<f64>,
+}
+
+/// Where the flywheel sits and how to size it.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct FlywheelDto {
+    /// ω of the flywheel's shaft / ω of the reference shaft (default 1).
+    pub ratio: Option<f64>,
+    pub disk: Option<DiskDto>,
+}
+
+/// A solid disk: `density` and exactly one of `rim_speed`, `radius`, `thickness`.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct DiskDto {
+    #[schema(value_type = Quantity)]
+    pub density: Quantity,
+    /// R·k·ω_a, at the mean speed of the flywheel's shaft.
+    #[schema(value_type = Option<Quantity>)]
+    pub rim_speed: Option<Quantity>,
+    #[schema(value_type = Option<Quantity>)]
+    pub radius: Option<Quantity>,
+    #[schema(value_type = Option<Quantity>)]
+    pub thickness: Option<Quantity>,
+}
+
+impl FlywheelRequest {
+    /// Validates the request, collecting every error under its pointer.
+    pub fn to_problem(&self) -> Result<FlywheelProblem, Vec<crate::api::problem::FieldError>> {
+        let mut e = Errors::default();
+        let period = match &self.period {
+            Some(q) => e
+                .angle(q, "/period")
+                .and_then(|p| if p > 0.0 { Some(p) } else { e.fail("/period", "must be greater than 0") }),
+            None => Some(2.0 * PI),
+        };
+        let speeds = self.speeds(&mut e);
+        let tolerance = match self.tolerance {
+            Some(t) if !(1e-14..=1e-2).contains(&t) => e.fail("/tolerance", "must be between 1e-14 and 1e-2"),
+            t => Some(t.unwrap_or(1e-9)),
+        };
+        let samples = match self.samples {
+            Some(n) if n > MAX_SAMPLES => e.fail("/samples", format!("must be at most {MAX_SAMPLES}")),
+            Some(1) => e.fail("/samples", "must be 0 (no table) or at least 2"),
+            n => Some(n.unwrap_or(DEFAULT_SAMPLES)),
+        };
+        if self.machine.is_some() {
+            e.push(
+                "/machine",
+                "deriving M* and I* from a mechanism is not available yet; give torques and reduced_inertia",
+            );
+        }
+        let p = period.unwrap_or(2.0 * PI);
+        let torques = self.torques(&mut e, p);
+        let inertia = match &self.reduced_inertia {
+            Some(f) => e.function(f, Dim::INERTIA, p, "/reduced_inertia"),
+            None => Some(Function::Constant(0.0)),
+        };
+        let existing = match &self.existing_inertia {
+            Some(q) => e.quantity(q, Dim::INERTIA, "/existing_inertia"),
+            None => Some(0.0),
+        };
+        let (flywheel_ratio, disk) = self.flywheel(&mut e);
+        match (period, speeds, tolerance, samples, torques, inertia, existing, flywheel_ratio, disk) {
+            (
+                Some(period),
+                Some((mean_speed, irregularity)),
+                Some(tolerance),
+                Some(samples),
+                Some(torques),
+                Some(reduced_inertia),
+                Some(existing_inertia),
+                Some(flywheel_ratio),
+                Some(disk),
+            ) if e.0.is_empty() => Ok(FlywheelProblem {
+                period,
+                mean_speed,
+                irregularity,
+                torques,
+                reduced_inertia,
+                reduced_inertia_label: "/reduced_inertia".into(),
+                existing_inertia,
+                flywheel_ratio,
+                disk,
+                tolerance,
+                check: self.check.unwrap_or(true),
+                samples,
+            }),
+            _ => Err(e.0),
+        }
+    }
+
+    /// (ω_a, ε) from exactly one of the three accepted pairs.
+    fn speeds(&self, e: &mut Errors) -> Option<(f64, f64)> {
+        let q =
+            |e: &mut Errors, q: &Option<Quantity>, at: &str| q.as_ref().map(|q| e.positive(q, Dim::ANGULAR_SPEED, at));
+        let mean = q(e, &self.mean_speed, "/mean_speed");
+        let min = q(e, &self.min_speed, "/min_speed");
+        let max = q(e, &self.max_speed, "/max_speed");
+        let (mean, eps) = match (mean, self.irregularity, min, max) {
+            (Some(m), Some(eps), None, None) => (m?, eps),
+            (Some(m), None, Some(lo), None) => {
+                let (m, lo) = (m?, lo?);
+                if lo >= m {
+                    return e.fail("/min_speed", "must be less than mean_speed");
+                }
+                (m, 2.0 * (m - lo) / m)
+            }
+            (None, None, Some(lo), Some(hi)) => {
+                let (lo, hi) = (lo?, hi?);
+                if lo >= hi {
+                    return e.fail("/min_speed", "must be less than max_speed");
+                }
+                let m = 0.5 * (lo + hi);
+                (m, (hi - lo) / m)
+            }
+            _ => {
+                return e.fail(
+                    "",
+                    "give exactly one of: mean_speed + irregularity, mean_speed + min_speed, min_speed + max_speed",
+                );
+            }
+        };
+        if !(eps > 0.0 && eps < 2.0) {
+            return e.fail("/irregularity", format!("must be greater than 0 and less than 2 (got {eps})"));
+        }
+        Some((mean, eps))
+    }
+
+    fn torques(&self, e: &mut Errors, period: f64) -> Option<Vec<TorqueItem>> {
+        if self.torques.is_empty() || self.torques.len() > MAX_TORQUES {
+            return e.fail("/torques", format!("must hold 1 to {MAX_TORQUES} items"));
+        }
+        if self.torques.iter().filter(|t| t.balance == Some(true)).count() > 1 {
+            e.push("/torques", "at most one item may have \"balance\": true");
+        }
+        let items: Vec<Option<TorqueItem>> =
+            self.torques.iter().enumerate().map(|(i, t)| torque(e, t, i, period)).collect();
+        items.into_iter().collect()
+    }
+
+    fn flywheel(&self, e: &mut Errors) -> (Option<f64>, Option<Option<DiskSpec>>) {
+        let Some(f) = &self.flywheel else { return (Some(1.0), Some(None)) };
+        let ratio = ratio(e, f.ratio, "/flywheel/ratio");
+        let disk = match &f.disk {
+            None => Some(None),
+            Some(d) => disk(e, d).map(Some),
+        };
+        (ratio, disk)
+    }
+}
+
+fn ratio(e: &mut Errors, r: Option<f64>, at: &str) -> Option<f64> {
+    match r {
+        Some(k) if k == 0.0 || !k.is_finite() => e.fail(at, "must be a finite, non-zero number"),
+        k => Some(k.unwrap_or(1.0)),
+    }
+}
+
+fn torque(e: &mut Errors, t: &TorqueDto, i: usize, period: f64) -> Option<TorqueItem> {
+    let at = format!("/torques/{i}");
+    let ratio = ratio(e, t.ratio, &format!("{at}/ratio"));
+    let load = match (&t.value, t.balance.unwrap_or(false)) {
+        (Some(v), false) => e.function(v, Dim::TORQUE, period, &format!("{at}/value")).map(Load::Given),
+        (None, true) => Some(Load::Balance),
+        _ => e.fail(&at, "give either \"value\" or \"balance\": true"),
+    };
+    Some(TorqueItem { name: t.name.clone(), load: load?, ratio: ratio?, label: format!("{at}/value") })
+}
+
+fn disk(e: &mut Errors, d: &DiskDto) -> Option<DiskSpec> {
+    let density = e.positive(&d.density, Dim::DENSITY, "/flywheel/disk/density");
+    let size = match (&d.rim_speed, &d.radius, &d.thickness) {
+        (Some(v), None, None) => e.positive(v, Dim::SPEED, "/flywheel/disk/rim_speed").map(DiskSize::RimSpeed),
+        (None, Some(r), None) => e.positive(r, Dim::LENGTH, "/flywheel/disk/radius").map(DiskSize::Radius),
+        (None, None, Some(t)) => e.positive(t, Dim::LENGTH, "/flywheel/disk/thickness").map(DiskSize::Thickness),
+        _ => e.fail("/flywheel/disk", "give exactly one of rim_speed, radius or thickness"),
+    };
+    Some(DiskSpec { density: density?, size: size? })
+}

@@ -1,0 +1,187 @@
+//! The `result` of a flywheel job, as stored and served.
+
+use crate::engine::flywheel as fw;
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct AreaDto {
+    /// Start of the lobe (rad).
+    pub from: f64,
+    pub to: f64,
+    /// Work of M* over the lobe (J): the textbook's A_i.
+    pub work: f64,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct InertiaPair {
+    pub approximate: f64,
+    pub exact: f64,
+}
+
+/// Measured on an independent time simulation of the steady state with `inertia_exact`.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct CheckDto {
+    pub irregularity: f64,
+    /// (ω_max + ω_min)/2 of the simulation, rad/s.
+    pub mean_speed: f64,
+    pub omega_max: f64,
+    pub omega_min: f64,
+    /// Duration of one cycle, s.
+    pub cycle_time: f64,
+    /// |ω(period) − ω(0)|/ω_a of the simulated motion.
+    pub periodicity_error: f64,
+    pub steps: usize,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct DiskOut {
+    /// kg
+    pub mass: f64,
+    /// m
+    pub radius: f64,
+    /// m
+    pub thickness: f64,
+    /// m/s, at the mean speed of the flywheel's shaft.
+    pub rim_speed: f64,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct AccuracyDto {
+    /// Estimated relative error of the works, ΔE and the inertias.
+    pub estimated_relative_error: f64,
+    /// Summed quadrature error estimate, J.
+    pub quadrature_error: f64,
+    pub function_evaluations: usize,
+    /// max(|ε_check − ε|/ε, |ω_check − ω_a|/ω_a): agreement of the independent check.
+    pub check_relative_difference: Option<f64>,
+    pub method: String,
+}
+
+/// Work of one torque item over a cycle, reduced to the reference shaft.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct ItemWork {
+    pub name: String,
+    /// J
+    pub work: f64,
+}
+
+/// One row of the sampled cycle (also the rows of the CSV export).
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct SampleDto {
+    /// φ, rad
+    pub angle: f64,
+    /// M*(φ), N·m
+    pub reduced_torque: f64,
+    /// I*(φ), kg·m²
+    pub reduced_inertia: f64,
+    /// W(φ) = ∫₀^φ M*, J
+    pub work: f64,
+    /// ω(φ) with the exact inertia, rad/s
+    pub speed: f64,
+}
+
+/// Result of a flywheel job (SI units: rad, rad/s, N·m, J, W, kg·m², kg, m).
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct FlywheelResult {
+    /// Solved balance torque on its own shaft, N·m.
+    pub balance_torque: Option<f64>,
+    /// Mean power of the torques doing positive work over the cycle, W.
+    pub mean_power: f64,
+    pub item_work: Vec<ItemWork>,
+    /// Angles in (0, period) where M* changes sign.
+    pub crossings: Vec<f64>,
+    pub areas: Vec<AreaDto>,
+    /// S_i: running sums of the areas.
+    pub cumulative: Vec<f64>,
+    /// ΔE = S_max − S_min, J.
+    pub energy_fluctuation: f64,
+    /// ΔE/(ε ω_a²), I* neglected: total inertia on the reference shaft.
+    pub inertia_approximate: f64,
+    /// Constant inertia I with which (I + I*(φ)) runs at exactly ε and ω_a (Wittenbauer).
+    pub inertia_exact: f64,
+    /// Inertia of the flywheel on its own shaft: (inertia − existing_inertia)/ratio².
+    pub flywheel_inertia: InertiaPair,
+    pub omega_max: f64,
+    pub omega_min: f64,
+    pub phi_at_omega_max: f64,
+    pub phi_at_omega_min: f64,
+    /// ω at φ = 0 in the exact steady state.
+    pub omega_at_start: f64,
+    /// ½(I + I*(0))ω(0)², J.
+    pub kinetic_energy_at_start: f64,
+    pub check: Option<CheckDto>,
+    pub disk: Option<DiskOut>,
+    pub accuracy: AccuracyDto,
+    pub warnings: Vec<String>,
+    pub samples: Vec<SampleDto>,
+}
+
+impl FlywheelResult {
+    pub fn new(s: fw::FlywheelSolution, names: impl Iterator<Item = String>) -> Self {
+        Self {
+            balance_torque: s.balance_torque,
+            mean_power: s.mean_power,
+            item_work: names.zip(&s.item_work).map(|(name, &work)| ItemWork { name, work }).collect(),
+            crossings: s.crossings,
+            areas: s.areas.iter().map(|a| AreaDto { from: a.from, to: a.to, work: a.work }).collect(),
+            cumulative: s.cumulative,
+            energy_fluctuation: s.energy_fluctuation,
+            inertia_approximate: s.inertia_approximate,
+            inertia_exact: s.inertia_exact,
+            flywheel_inertia: InertiaPair {
+                approximate: s.flywheel_inertia.approximate,
+                exact: s.flywheel_inertia.exact,
+            },
+            omega_max: s.omega_max,
+            omega_min: s.omega_min,
+            phi_at_omega_max: s.phi_at_omega_max,
+            phi_at_omega_min: s.phi_at_omega_min,
+            omega_at_start: s.omega_at_start,
+            kinetic_energy_at_start: s.kinetic_energy_at_start,
+            check: s.check.map(|c| CheckDto {
+                irregularity: c.irregularity,
+                mean_speed: c.mean_speed,
+                omega_max: c.omega_max,
+                omega_min: c.omega_min,
+                cycle_time: c.cycle_time,
+                periodicity_error: c.periodicity_error,
+                steps: c.steps,
+            }),
+            disk: s.disk.map(|d| DiskOut {
+                mass: d.mass,
+                radius: d.radius,
+                thickness: d.thickness,
+                rim_speed: d.rim_speed,
+            }),
+            accuracy: AccuracyDto {
+                estimated_relative_error: s.accuracy.estimated_relative_error,
+                quadrature_error: s.accuracy.quadrature_error,
+                function_evaluations: s.accuracy.function_evaluations,
+                check_relative_difference: s.accuracy.check_relative_difference,
+                method: s.accuracy.method,
+            },
+            warnings: s.warnings,
+            samples: s
+                .samples
+                .iter()
+                .map(|r| SampleDto {
+                    angle: r.angle,
+                    reduced_torque: r.reduced_torque,
+                    reduced_inertia: r.reduced_inertia,
+                    work: r.work,
+                    speed: r.speed,
+                })
+                .collect(),
+        }
+    }
+}
+
+/// CSV columns of the flywheel table: JSON key of a sample row, header with unit.
+pub const CSV_COLUMNS: &[(&str, &str)] = &[
+    ("angle", "angle_rad"),
+    ("reduced_torque", "reduced_torque_N_m"),
+    ("reduced_inertia", "reduced_inertia_kg_m2"),
+    ("work", "work_J"),
+    ("speed", "speed_rad_s"),
+];

@@ -1,0 +1,123 @@
+//! The request-body extractor: 415 for a wrong content type, 413 over the
+//! body limit, 400 for malformed JSON, 422 with a JSON pointer for every
+//! unknown field and for the first field of the wrong type.
+
+use super::problem::{ApiError, FieldError};
+use axum::body::Bytes;
+use axum::extract::{FromRequest, Request};
+use axum::http::header;
+use serde::de::DeserializeOwned;
+
+/// A JSON body: the typed request, the body as sent, and its unknown fields.
+pub struct JsonBody<T> {
+    pub value: T,
+    /// The body exactly as the client sent it (stored with the job).
+    pub raw: String,
+    /// Fields the schema does not know, as errors (reported with the others).
+    pub unknown: Vec<FieldError>,
+}
+
+fn is_json(content_type: Option<&str>) -> bool {
+    let Some(ct) = content_type else { return false };
+    let essence = ct.split(';').next().unwrap_or("").trim().to_ascii_lowercase();
+    essence == "application/json" || (essence.starts_with("application/") && essence.ends_with("+json"))
+}
+
+impl<S: Send + Sync, T: DeserializeOwned> FromRequest<S> for JsonBody<T> {
+    type Rejection = ApiError;
+
+    async fn from_request(req: Request, state: &S) -> Result<Self, Self::Rejection> {
+        let content_type = req.headers().get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok());
+        if !is_json(content_type) {
+            return Err(ApiError::UnsupportedMediaType);
+        }
+        let limit = req.extensions().get::<BodyLimit>().map_or(usize::MAX, |l| l.0);
+        let bytes = Bytes::from_request(req, state).await.map_err(|e| {
+            if e.status() == axum::http::StatusCode::PAYLOAD_TOO_LARGE {
+                ApiError::PayloadTooLarge(limit)
+            } else {
+                ApiError::MalformedJson(e.body_text())
+            }
+        })?;
+        let raw =
+            String::from_utf8(bytes.to_vec()).map_err(|_| ApiError::MalformedJson("the body is not UTF-8".into()))?;
+        parse(raw)
+    }
+}
+
+/// Parses a body already read: the same rules as the extractor (used by the CLI too).
+pub fn parse<T: DeserializeOwned>(raw: String) -> Result<JsonBody<T>, ApiError> {
+    let value: serde_json::Value = serde_json::from_str(&raw).map_err(|e| ApiError::MalformedJson(e.to_string()))?;
+    let mut unknown = Vec::new();
+    let mut record = |path: serde_ignored::Path| unknown.push(FieldError::at(ignored_pointer(&path), "unknown field"));
+    let result: Result<T, _> = serde_path_to_error::deserialize(serde_ignored::Deserializer::new(&value, &mut record));
+    match result {
+        Ok(value) => Ok(JsonBody { value, raw, unknown }),
+        Err(e) => {
+            let mut errors = unknown;
+            errors.push(type_error(&e));
+            Err(ApiError::Invalid(errors))
+        }
+    }
+}
+
+/// The body limit in force, put in the request extensions by the router.
+#[derive(Clone, Copy, Debug)]
+pub struct BodyLimit(pub usize);
+
+/// Escapes one reference token of a JSON pointer (RFC 6901).
+pub fn escape(token: &str) -> String {
+    token.replace('~', "~0").replace('/', "~1")
+}
+
+fn ignored_pointer(path: &serde_ignored::Path) -> String {
+    use serde_ignored::Path;
+    match path {
+        Path::Root => String::new(),
+        Path::Seq { parent, index } => format!("{}/{index}", ignored_pointer(parent)),
+        Path::Map { parent, key } => format!("{}/{}", ignored_pointer(parent), escape(key)),
+        Path::Some { parent } | Path::NewtypeStruct { parent } | Path::NewtypeVariant { parent } => {
+            ignored_pointer(parent)
+        }
+    }
+}
+
+/// A structural error (wrong type, missing field) with the pointer to its field.
+fn type_error(e: &serde_path_to_error::Error<serde_json::Error>) -> FieldError {
+    use serde_path_to_error::Segment;
+    let mut pointer: String = e
+        .path()
+        .iter()
+        .filter_map(|s| match s {
+            Segment::Seq { index } => Some(format!("/{index}")),
+            Segment::Map { key } => Some(format!("/{}", escape(key))),
+            _ => None,
+        })
+        .collect();
+    let message = e.inner().to_string();
+    let message = message.split(" at line ").next().unwrap_or(&message).to_string();
+    if let Some(field) = message.strip_prefix("missing field `").and_then(|m| m.strip_suffix('`')) {
+        pointer = format!("{pointer}/{}", escape(field));
+        return FieldError::at(pointer, "required field is missing");
+    }
+    FieldError::at(pointer, message)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn json_content_types() {
+        assert!(is_json(Some("application/json")));
+        assert!(is_json(Some("application/json; charset=utf-8")));
+        assert!(is_json(Some("application/problem+json")));
+        assert!(!is_json(Some("text/plain")));
+        assert!(!is_json(None));
+    }
+
+    #[test]
+    fn pointers_escape_slash_and_tilde() {
+        assert_eq!(escape("a/b~c"), "a~1b~0c");
+    }
+}

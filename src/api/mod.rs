@@ -1,0 +1,101 @@
+//! The HTTP interface: routes, OpenAPI document, interactive docs.
+//!
+//! Handlers stay short: parse the body ([`json::JsonBody`]), convert it to
+//! an engine problem collecting every error with its JSON pointer, run the
+//! engine off the async workers, store the job ([`jobs::create`]).
+
+pub mod flywheel;
+pub mod jobs;
+pub mod json;
+pub mod problem;
+pub mod quantity;
+
+use crate::store::Store;
+use axum::extract::{DefaultBodyLimit, State};
+use axum::http::StatusCode;
+use axum::routing::{get, post};
+use axum::{Extension, Json, Router};
+use problem::{ApiError, FieldError, Problem};
+use serde::Serialize;
+use tower_http::trace::{DefaultOnResponse, TraceLayer};
+use tracing::Level;
+use utoipa::{OpenApi, ToSchema};
+use utoipa_swagger_ui::SwaggerUi;
+
+/// Shared state of the handlers.
+#[derive(Clone)]
+pub struct AppState {
+    pub store: Store,
+}
+
+/// Default limit of a request body, bytes.
+pub const DEFAULT_BODY_LIMIT: usize = 1 << 20;
+
+#[derive(OpenApi)]
+#[openapi(
+    info(
+        title = "mechdyn",
+        description = "Machine-dynamics calculations: flywheels (approximate and exact Wittenbauer methods), \
+with every job stored and readable later.\n\nQuantities are SI numbers or \"VALUE UNIT\" strings \
+(\"300 rpm\", \"3200 ft*lbf\", \"20 slug*ft^2\"); results are SI. Errors are application/problem+json \
+with a JSON pointer for every invalid field.\n\nLimits: request body 1 MiB (configurable, 413); \
+expressions 2000 characters and 64 levels of nesting; tables 100000 rows; 1000 segments per function; \
+100 torques; 100000 result samples (422 beyond them)."
+    ),
+    paths(flywheel::create, jobs::get, jobs::list, jobs::csv, healthz),
+    components(schemas(
+        Problem, FieldError, Health,
+        flywheel::FlywheelRequest, flywheel::FlywheelResult,
+        quantity::Quantity, quantity::FunctionDto, quantity::FunctionSpec
+    )),
+    tags(
+        (name = "flywheel", description = "Flywheel design for a machine in steady state"),
+        (name = "jobs", description = "Stored computations"),
+        (name = "service", description = "Health"),
+    )
+)]
+pub struct ApiDoc;
+
+/// The OpenAPI document, as served at `/openapi.json`.
+pub fn openapi() -> utoipa::openapi::OpenApi {
+    ApiDoc::openapi()
+}
+
+/// The service's router with its middleware.
+pub fn router(state: AppState, body_limit: usize) -> Router {
+    Router::new()
+        .route("/v1/flywheel", post(flywheel::create))
+        .route("/v1/jobs", get(jobs::list))
+        .route("/v1/jobs/{id}", get(jobs::get))
+        .route("/v1/jobs/{id}/result.csv", get(jobs::csv))
+        .route("/healthz", get(healthz))
+        .merge(SwaggerUi::new("/docs").url("/openapi.json", openapi()))
+        .fallback(|| async { ApiError::NoRoute })
+        .method_not_allowed_fallback(|| async { ApiError::MethodNotAllowed })
+        .layer(DefaultBodyLimit::max(body_limit))
+        .layer(Extension(json::BodyLimit(body_limit)))
+        .layer(TraceLayer::new_for_http().on_response(DefaultOnResponse::new().level(Level::INFO)))
+        .with_state(state)
+}
+
+#[derive(Serialize, ToSchema)]
+pub struct Health {
+    #[schema(example = "ok")]
+    pub status: &'static str,
+    pub version: &'static str,
+}
+
+/// Liveness and database check.
+#[utoipa::path(get, path = "/healthz", tag = "service",
+    responses(
+        (status = 200, description = "Service and database up", body = Health),
+        (status = 503, description = "Database unavailable", body = Health),
+    ))]
+pub async fn healthz(State(state): State<AppState>) -> (StatusCode, Json<Health>) {
+    let version = env!("CARGO_PKG_VERSION");
+    if state.store.ping().await {
+        (StatusCode::OK, Json(Health { status: "ok", version }))
+    } else {
+        (StatusCode::SERVICE_UNAVAILABLE, Json(Health { status: "database unavailable", version }))
+    }
+}

@@ -1,0 +1,329 @@
+//! Wire forms of quantities and functions of the cycle angle, and their
+//! conversion to SI engine values with every error collected under its pointer.
+
+use super::problem::FieldError;
+use crate::engine::expr::Expr;
+use crate::engine::function::{Function, Interpolation, Segment, Table};
+use crate::units::{self, Dim};
+use serde::de::{self, Deserializer, MapAccess, Visitor};
+use serde::{Deserialize, Serialize};
+use std::fmt;
+use utoipa::openapi::RefOr;
+use utoipa::openapi::schema::{ObjectBuilder, OneOfBuilder, Schema, Type};
+use utoipa::{PartialSchema, ToSchema};
+
+/// Longest table accepted, in rows.
+pub const MAX_TABLE_ROWS: usize = 100_000;
+/// Most segments in one piecewise function.
+pub const MAX_SEGMENTS: usize = 1_000;
+
+/// A number (SI) or a `"VALUE UNIT"` string.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum Quantity {
+    Number(f64),
+    Text(String),
+}
+
+struct QuantityVisitor;
+
+impl<'de> Visitor<'de> for QuantityVisitor {
+    type Value = Quantity;
+
+    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str("a number (SI) or a string \"VALUE UNIT\" such as \"300 rpm\"")
+    }
+    fn visit_f64<E: de::Error>(self, v: f64) -> Result<Quantity, E> {
+        Ok(Quantity::Number(v))
+    }
+    fn visit_i64<E: de::Error>(self, v: i64) -> Result<Quantity, E> {
+        Ok(Quantity::Number(v as f64))
+    }
+    fn visit_u64<E: de::Error>(self, v: u64) -> Result<Quantity, E> {
+        Ok(Quantity::Number(v as f64))
+    }
+    fn visit_str<E: de::Error>(self, v: &str) -> Result<Quantity, E> {
+        Ok(Quantity::Text(v.to_string()))
+    }
+}
+
+impl<'de> Deserialize<'de> for Quantity {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(QuantityVisitor)
+    }
+}
+
+impl PartialSchema for Quantity {
+    fn schema() -> RefOr<Schema> {
+        OneOfBuilder::new()
+            .item(ObjectBuilder::new().schema_type(Type::Number).description(Some("SI value")))
+            .item(
+                ObjectBuilder::new()
+                    .schema_type(Type::String)
+                    .max_length(Some(200))
+                    .description(Some("\"VALUE UNIT\", e.g. \"300 rpm\", \"3200 ft*lbf\", \"20 slug*ft^2\"; angle fields also take constant expressions such as \"7*pi/4\""))
+                    .examples(["300 rpm"]),
+            )
+            .description(Some("A quantity: a number in SI units, or a string \"VALUE UNIT\""))
+            .into()
+    }
+}
+impl ToSchema for Quantity {}
+
+/// Interpolation of a table.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum InterpolationDto {
+    Linear,
+    Step,
+    Spline,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct SegmentDto {
+    /// Start angle: number (rad), angle quantity or constant expression.
+    #[schema(value_type = Quantity)]
+    pub from: Quantity,
+    #[schema(value_type = Quantity)]
+    pub to: Quantity,
+    /// Expression of `phi`.
+    #[schema(max_length = 2000, example = "-500*sin(phi)")]
+    pub expr: String,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct TableDto {
+    /// Angles (rad, or angle quantities), strictly increasing in [0, period).
+    #[schema(value_type = Vec<Quantity>, min_items = 1, max_items = 100000)]
+    pub angle: Vec<Quantity>,
+    #[schema(min_items = 1, max_items = 100000)]
+    pub value: Vec<f64>,
+}
+
+/// The object form of a function: exactly one of `expr`, `segments`, `table`.
+#[derive(Clone, Debug, Default, Serialize, Deserialize, ToSchema)]
+pub struct FunctionSpec {
+    #[schema(max_length = 2000, example = "500/pi - 500*sin(phi)")]
+    pub expr: Option<String>,
+    #[schema(min_items = 1, max_items = 1000)]
+    pub segments: Option<Vec<SegmentDto>>,
+    pub table: Option<TableDto>,
+    /// Table interpolation (default linear).
+    pub interpolation: Option<InterpolationDto>,
+    /// Unit of the values (default SI), e.g. "ft*lbf".
+    #[schema(max_length = 100)]
+    pub unit: Option<String>,
+}
+
+/// A function of the cycle angle: a constant (number or quantity string) or an object.
+#[derive(Clone, Debug, Serialize)]
+#[serde(untagged)]
+pub enum FunctionDto {
+    Constant(Quantity),
+    Spec(FunctionSpec),
+}
+
+struct FunctionVisitor;
+
+impl<'de> Visitor<'de> for FunctionVisitor {
+    type Value = FunctionDto;
+
+    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str("a number, a quantity string, or an object with expr, segments or table")
+    }
+    fn visit_f64<E: de::Error>(self, v: f64) -> Result<FunctionDto, E> {
+        QuantityVisitor.visit_f64(v).map(FunctionDto::Constant)
+    }
+    fn visit_i64<E: de::Error>(self, v: i64) -> Result<FunctionDto, E> {
+        QuantityVisitor.visit_i64(v).map(FunctionDto::Constant)
+    }
+    fn visit_u64<E: de::Error>(self, v: u64) -> Result<FunctionDto, E> {
+        QuantityVisitor.visit_u64(v).map(FunctionDto::Constant)
+    }
+    fn visit_str<E: de::Error>(self, v: &str) -> Result<FunctionDto, E> {
+        QuantityVisitor.visit_str(v).map(FunctionDto::Constant)
+    }
+    fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<FunctionDto, A::Error> {
+        FunctionSpec::deserialize(de::value::MapAccessDeserializer::new(map)).map(FunctionDto::Spec)
+    }
+}
+
+impl<'de> Deserialize<'de> for FunctionDto {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(FunctionVisitor)
+    }
+}
+
+impl PartialSchema for FunctionDto {
+    fn schema() -> RefOr<Schema> {
+        OneOfBuilder::new()
+            .item(Quantity::schema())
+            .item(RefOr::Ref(utoipa::openapi::Ref::from_schema_name("FunctionSpec")))
+            .description(Some(
+                "A function of the cycle angle phi: a constant, {\"expr\"}, {\"segments\"} (zero outside them) or a periodic {\"table\"}; optional \"unit\" for its values",
+            ))
+            .into()
+    }
+}
+impl ToSchema for FunctionDto {
+    fn schemas(schemas: &mut Vec<(String, RefOr<Schema>)>) {
+        schemas.push(("FunctionSpec".into(), FunctionSpec::schema()));
+        <FunctionSpec as ToSchema>::schemas(schemas);
+    }
+}
+
+/// Collects (pointer, message) errors while converting a request.
+#[derive(Default)]
+pub struct Errors(pub Vec<FieldError>);
+
+impl Errors {
+    pub fn push(&mut self, pointer: &str, message: impl Into<String>) {
+        self.0.push(FieldError::at(pointer, message));
+    }
+
+    /// A quantity of the expected dimension, in SI.
+    pub fn quantity(&mut self, q: &Quantity, dim: Dim, at: &str) -> Option<f64> {
+        let value = match q {
+            Quantity::Number(v) => Ok(*v),
+            Quantity::Text(s) => units::parse_as(s, dim),
+        };
+        match value {
+            Ok(v) if v.is_finite() => Some(v),
+            Ok(_) => self.fail(at, "must be finite"),
+            Err(e) => self.fail(at, e.to_string()),
+        }
+    }
+
+    /// An angle: number (rad), angle quantity, or constant expression (`"7*pi/4"`).
+    pub fn angle(&mut self, q: &Quantity, at: &str) -> Option<f64> {
+        if let Quantity::Text(s) = q
+            && units::parse_quantity(s).is_err()
+        {
+            return match Expr::compile(s, &[]).map(|e| e.constant()) {
+                Ok(Some(v)) if v.is_finite() => Some(v),
+                _ => self.fail(
+                    at,
+                    format!("'{s}' is neither an angle (e.g. \"90 deg\") nor a constant expression (e.g. \"7*pi/4\")"),
+                ),
+            };
+        }
+        self.quantity(q, Dim::ANGLE, at)
+    }
+
+    /// A quantity that must be > 0.
+    pub fn positive(&mut self, q: &Quantity, dim: Dim, at: &str) -> Option<f64> {
+        let v = self.quantity(q, dim, at)?;
+        if v > 0.0 { Some(v) } else { self.fail(at, "must be greater than 0") }
+    }
+
+    pub fn fail<T>(&mut self, at: &str, message: impl Into<String>) -> Option<T> {
+        self.push(at, message);
+        None
+    }
+
+    /// A function of `phi` with values of dimension `dim`, over [0, period].
+    pub fn function(&mut self, f: &FunctionDto, dim: Dim, period: f64, at: &str) -> Option<Function> {
+        match f {
+            FunctionDto::Constant(q) => self.quantity(q, dim, at).map(Function::Constant),
+            FunctionDto::Spec(spec) => self.function_spec(spec, dim, period, at),
+        }
+    }
+
+    fn function_spec(&mut self, s: &FunctionSpec, dim: Dim, period: f64, at: &str) -> Option<Function> {
+        let scale = match &s.unit {
+            Some(u) => match units::unit_factor(u, dim) {
+                Ok(k) => k,
+                Err(e) => return self.fail(&format!("{at}/unit"), e.to_string()),
+            },
+            None => 1.0,
+        };
+        if s.interpolation.is_some() && s.table.is_none() {
+            self.push(&format!("{at}/interpolation"), "applies to a table only");
+        }
+        match (&s.expr, &s.segments, &s.table) {
+            (Some(e), None, None) => self.expr(e, &format!("{at}/expr")).map(|e| Function::Expr(e.scaled(scale))),
+            (None, Some(segs), None) => self.segments(segs, scale, period, &format!("{at}/segments")),
+            (None, None, Some(t)) => {
+                let interp = s.interpolation.unwrap_or(InterpolationDto::Linear);
+                self.table(t, interp, scale, period, &format!("{at}/table"))
+            }
+            _ => self.fail(at, "give exactly one of \"expr\", \"segments\" or \"table\""),
+        }
+    }
+
+    pub fn expr(&mut self, src: &str, at: &str) -> Option<Expr> {
+        match Expr::compile(src, &["phi"]) {
+            Ok(e) => Some(e),
+            Err(e) => self.fail(at, format!("expression does not parse: {e}")),
+        }
+    }
+
+    fn segments(&mut self, segs: &[SegmentDto], scale: f64, period: f64, at: &str) -> Option<Function> {
+        if segs.is_empty() || segs.len() > MAX_SEGMENTS {
+            return self.fail(at, format!("must hold 1 to {MAX_SEGMENTS} segments"));
+        }
+        let slack = 1e-12 * period;
+        let mut out = Vec::with_capacity(segs.len());
+        for (i, s) in segs.iter().enumerate() {
+            let p = format!("{at}/{i}");
+            let from = self.angle(&s.from, &format!("{p}/from"));
+            let to = self.angle(&s.to, &format!("{p}/to"));
+            let expr = self.expr(&s.expr, &format!("{p}/expr"));
+            let (Some(from), Some(to), Some(expr)) = (from, to, expr) else { continue };
+            if from < -slack || to > period + slack {
+                self.push(&p, format!("segment [{from}, {to}] must lie inside [0, period = {period}]"));
+            } else if to <= from {
+                self.push(&p, "\"to\" must be greater than \"from\"");
+            } else {
+                out.push((i, Segment { from: from.max(0.0), to: to.min(period), expr: expr.scaled(scale) }));
+            }
+        }
+        out.sort_by(|a, b| a.1.from.total_cmp(&b.1.from));
+        for w in out.windows(2) {
+            if w[1].1.from < w[0].1.to - slack {
+                self.push(&format!("{at}/{}", w[1].0), format!("overlaps segment {}", w[0].0));
+            }
+        }
+        (out.len() == segs.len()).then(|| Function::Segments(out.into_iter().map(|s| s.1).collect()))
+    }
+
+    fn table(&mut self, t: &TableDto, interp: InterpolationDto, scale: f64, period: f64, at: &str) -> Option<Function> {
+        let n = t.angle.len();
+        if n == 0 || n > MAX_TABLE_ROWS {
+            return self.fail(&format!("{at}/angle"), format!("must hold 1 to {MAX_TABLE_ROWS} angles"));
+        }
+        if t.value.len() != n {
+            return self.fail(at, format!("\"angle\" has {n} rows but \"value\" has {}", t.value.len()));
+        }
+        let angles: Vec<Option<f64>> =
+            t.angle.iter().enumerate().map(|(i, a)| self.angle(a, &format!("{at}/angle/{i}"))).collect();
+        let mut angle: Vec<f64> = angles.into_iter().collect::<Option<_>>()?;
+        let mut value: Vec<f64> = t.value.iter().map(|v| v * scale).collect();
+        if let Some(i) = value.iter().position(|v| !v.is_finite()) {
+            return self.fail(&format!("{at}/value/{i}"), "must be finite");
+        }
+        if n > 1 && (angle[n - 1] - (angle[0] + period)).abs() <= 1e-12 * period {
+            if (value[n - 1] - value[0]).abs() > 1e-12 * value[0].abs().max(1e-300) {
+                return self.fail(
+                    &format!("{at}/value/{}", n - 1),
+                    "the row at the first angle + period must repeat the first value",
+                );
+            }
+            angle.pop();
+            value.pop();
+        }
+        if let Some(i) = (1..angle.len()).find(|&i| angle[i] <= angle[i - 1]) {
+            return self.fail(&format!("{at}/angle/{i}"), "angles must be strictly increasing");
+        }
+        if angle[0] < 0.0 || *angle.last().unwrap_or(&0.0) >= period {
+            return self.fail(&format!("{at}/angle"), format!("angles must lie in [0, period = {period})"));
+        }
+        let interpolation = match interp {
+            InterpolationDto::Linear => Interpolation::Linear,
+            InterpolationDto::Step => Interpolation::Step,
+            InterpolationDto::Spline if angle.len() < 3 => return self.fail(at, "a spline needs at least 3 rows"),
+            InterpolationDto::Spline => Interpolation::Spline,
+        };
+        Some(Function::Table(Table::new(angle, value, interpolation, period)))
+    }
+}

@@ -1,0 +1,42 @@
+//! Command line and environment settings.
+
+use clap::{Parser, Subcommand};
+use std::path::PathBuf;
+
+/// Default database: a SQLite file under ./data, created on first start.
+pub const DEFAULT_DATABASE: &str = "sqlite://data/mechdyn.db";
+/// Default listen address.
+pub const DEFAULT_ADDR: &str = "127.0.0.1:8080";
+
+#[derive(Parser, Debug)]
+#[command(name = "mechdyn", version, about = "Machine-dynamics calculation service")]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+    /// Address to listen on (serve) or to probe (healthcheck).
+    #[arg(long, env = "MECHDYN_ADDR", default_value = DEFAULT_ADDR, global = true)]
+    pub addr: String,
+    /// SQLite database URL.
+    #[arg(long, env = "DATABASE_URL", default_value = DEFAULT_DATABASE, global = true)]
+    pub database: String,
+    /// Largest accepted request body, bytes.
+    #[arg(long, env = "MECHDYN_MAX_BODY_BYTES", default_value_t = crate::api::DEFAULT_BODY_LIMIT, global = true)]
+    pub max_body_bytes: usize,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Run the HTTP service (the default).
+    Serve,
+    /// Exit 0 when the service at --addr answers GET /healthz with 200 (for container health checks).
+    Healthcheck,
+    /// Print the OpenAPI document.
+    Openapi,
+    /// Solve a request file without a server and print the result (same validation as the API).
+    Solve {
+        /// Job kind: flywheel.
+        kind: String,
+        /// Request JSON file ("-" for standard input).
+        file: PathBuf,
+    },
+}

@@ -1,0 +1,194 @@
+//! Mathematical expressions of the cycle angle, compiled once and evaluated many times.
+//!
+//! Grammar and precedence follow the API contract: `^` binds tighter than unary
+//! minus and is right-associative (`-x^2` = −(x²), `2^3^2` = 2⁹), then `* /`,
+//! then `+ -`. Functions: `sin cos tan asin acos atan atan2 sqrt exp ln log10
+//! abs min max sign floor`; constants `pi`, `e`; numbers with optional
+//! exponent (`1.5e-3`). Variables are named by the caller (`phi`, `t`, `omega`).
+//!
+//! Limits keep hostile input cheap: at most [`MAX_LENGTH`] characters and
+//! [`MAX_DEPTH`] levels of nesting.
+
+mod node;
+mod parse;
+
+use node::Node;
+
+/// Longest accepted expression, in characters.
+pub const MAX_LENGTH: usize = 2000;
+/// Deepest accepted nesting of parentheses and unary operators.
+pub const MAX_DEPTH: usize = 64;
+
+/// Why an expression was rejected; `position` is a character index into the source.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{message} (at character {position})")]
+pub struct ExprError {
+    pub position: usize,
+    pub message: String,
+}
+
+/// A compiled expression of named variables.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Expr {
+    root: Node,
+}
+
+impl Expr {
+    /// Parses `source` with the given variable names (their order is the order
+    /// of the values passed to [`Expr::eval`]) and folds constant subtrees.
+    pub fn compile(source: &str, variables: &[&str]) -> Result<Self, ExprError> {
+        let length = source.chars().count();
+        if length > MAX_LENGTH {
+            return Err(ExprError {
+                position: MAX_LENGTH,
+                message: format!("expression has {length} characters; the maximum is {MAX_LENGTH}"),
+            });
+        }
+        let root = parse::Parser::parse(source, variables, MAX_DEPTH)?.fold();
+        Ok(Self { root })
+    }
+
+    /// Value for the variable values `vars` (same order as at compilation).
+    #[inline]
+    pub fn eval(&self, vars: &[f64]) -> f64 {
+        self.root.eval(vars)
+    }
+
+    /// The value when the expression reads no variable.
+    pub fn constant(&self) -> Option<f64> {
+        match self.root {
+            Node::Const(c) => Some(c),
+            _ => None,
+        }
+    }
+
+    /// Derivative with respect to variable number `var`.
+    pub fn derivative(&self, var: usize) -> Self {
+        Self { root: self.root.derivative(var).fold() }
+    }
+
+    /// `k · self`.
+    pub fn scaled(self, k: f64) -> Self {
+        if k == 1.0 {
+            return self;
+        }
+        Self { root: Node::Mul(Box::new(Node::Const(k)), Box::new(self.root)).fold() }
+    }
+
+    /// Depth of the compiled tree.
+    pub fn depth(&self) -> usize {
+        self.root.depth()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn value(src: &str, x: f64) -> f64 {
+        Expr::compile(src, &["x"]).unwrap().eval(&[x])
+    }
+
+    #[test]
+    fn unary_minus_binds_looser_than_power() {
+        assert_eq!(value("-x^2", 3.0), -9.0);
+        assert_eq!(value("-2^2", 0.0), -4.0);
+        assert_eq!(value("2^-1", 0.0), 0.5);
+        assert_eq!(value("-x^-2", 2.0), -0.25);
+    }
+
+    #[test]
+    fn power_is_right_associative() {
+        assert_eq!(value("2^3^2", 0.0), 512.0);
+    }
+
+    #[test]
+    fn products_bind_tighter_than_sums_and_associate_left() {
+        assert_eq!(value("1 - 2 - 3", 0.0), -4.0);
+        assert_eq!(value("8 / 4 / 2", 0.0), 1.0);
+        assert_eq!(value("1 + 2 * 3", 0.0), 7.0);
+        assert_eq!(value("2 * -x", 3.0), -6.0);
+        assert_eq!(value("x - -x", 3.0), 6.0);
+    }
+
+    #[test]
+    fn numbers_constants_and_functions() {
+        assert_eq!(value("1.5e-3 * 2E3", 0.0), 3.0);
+        assert_eq!(value(".5", 0.0), 0.5);
+        assert_eq!(value("pi", 0.0), std::f64::consts::PI);
+        assert_eq!(value("e", 0.0), std::f64::consts::E);
+        assert_eq!(value("atan2(1, -1)", 0.0), (1.0f64).atan2(-1.0));
+        assert_eq!(value("min(3, x, 1)", 2.0), 1.0);
+        assert_eq!(value("max(3, x)", 4.0), 4.0);
+        assert_eq!(value("sign(x) + floor(x)", -1.5), -3.0);
+        assert_eq!(value("log10(1000) + ln(e) + sqrt(4) + abs(-1) + exp(0)", 0.0), 8.0);
+        assert!((value("sin(x)^2 + cos(x)^2", 0.7) - 1.0).abs() < 1e-15);
+        assert!((value("tan(x) - sin(x)/cos(x)", 0.3)).abs() < 1e-15);
+        assert!((value("asin(x) + acos(x)", 0.3) - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+        assert!((value("atan(x)", 1.0) - std::f64::consts::FRAC_PI_4).abs() < 1e-15);
+    }
+
+    #[test]
+    fn negative_base_with_integer_power_is_real() {
+        assert_eq!(value("x^3", -2.0), -8.0);
+    }
+
+    #[test]
+    fn constant_subtrees_are_folded() {
+        let e = Expr::compile("7*pi/4", &[]).unwrap();
+        assert_eq!(e.constant(), Some(7.0 * std::f64::consts::PI / 4.0));
+        assert_eq!(Expr::compile("x*1 + 0", &["x"]).unwrap(), Expr::compile("x", &["x"]).unwrap());
+    }
+
+    #[test]
+    fn errors_say_where_and_what() {
+        let err = |s: &str| Expr::compile(s, &["phi"]).unwrap_err();
+        assert!(err("2*").message.contains("ends where a value"));
+        assert!(err("sin phi").message.contains("needs parentheses"));
+        assert!(err("foo(1)").message.contains("unknown function"));
+        assert!(err("theta").message.contains("unknown name 'theta'"));
+        assert_eq!(err("1 + $").position, 4);
+        assert!(err("(1").message.contains("expected ')'"));
+        assert!(err("atan2(1)").message.contains("2 arguments"));
+        assert!(err("").message.contains("empty"));
+        assert!(err("1 2").message.contains("after the end"));
+    }
+
+    #[test]
+    fn hostile_inputs_are_rejected_cheaply() {
+        let deep = format!("{}1{}", "(".repeat(20_000), ")".repeat(20_000));
+        assert!(Expr::compile(&deep, &[]).unwrap_err().message.contains("characters"));
+        let nested = format!("{}1{}", "(".repeat(100), ")".repeat(100));
+        assert!(Expr::compile(&nested, &[]).unwrap_err().message.contains("nested deeper"));
+        let minus = format!("{}1", "-".repeat(500));
+        assert!(Expr::compile(&minus, &[]).is_err());
+    }
+
+    /// Symbolic derivatives against central finite differences, h = 1e-6
+    /// (truncation error ~h²·f''' ≈ 1e-12, round-off ~1e-16/h ≈ 1e-10).
+    #[test]
+    fn derivatives_match_finite_differences() {
+        let cases = [
+            "5*sin(x)^2",
+            "x^3 - 2*x",
+            "exp(-x)*cos(3*x)",
+            "sqrt(1 + x^2)",
+            "ln(2 + x) + log10(3 + x)",
+            "tan(x/3) + asin(x/4) + acos(x/5) + atan(x)",
+            "atan2(sin(x), 2 + cos(x))",
+            "x^x",
+            "abs(x - 0.1) + min(x, 0.2) + max(x^2, 0.3)",
+            "1/(1 + x)",
+        ];
+        for src in cases {
+            let e = Expr::compile(src, &["x"]).unwrap();
+            let d = e.derivative(0);
+            for x in [0.35, 0.7, 1.1] {
+                let h = 1e-6;
+                let fd = (e.eval(&[x + h]) - e.eval(&[x - h])) / (2.0 * h);
+                let an = d.eval(&[x]);
+                assert!((fd - an).abs() < 1e-8 * (1.0 + an.abs()), "{src} at {x}: {an} vs {fd}");
+            }
+        }
+    }
+}

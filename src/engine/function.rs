@@ -1,0 +1,356 @@
+//! Functions of the cycle angle φ: constant, expression, piecewise segments
+//! (zero outside them) and periodic tables (linear, step or periodic cubic
+//! spline interpolation).
+//!
+//! Every function is smooth between its *breakpoints* (segment bounds, table
+//! angles); at a breakpoint it may jump, so values there are asked for from
+//! one [`Side`]. Tables are integrated exactly (each interpolant is a
+//! polynomial of degree ≤ 3 between nodes, so Simpson's rule is exact);
+//! expressions by adaptive Gauss–Kronrod quadrature.
+
+use super::expr::Expr;
+use super::numeric::quadrature::{Integral, integrate};
+
+/// Which one-sided limit to take at a breakpoint.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Side {
+    Left,
+    Right,
+}
+
+/// Interpolation between the rows of a table.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Interpolation {
+    Linear,
+    /// The value of a row holds until the next row.
+    Step,
+    /// Periodic cubic spline (C² across the period).
+    Spline,
+}
+
+/// A piece of a piecewise function: `expr` on [from, to].
+#[derive(Clone, Debug)]
+pub struct Segment {
+    pub from: f64,
+    pub to: f64,
+    pub expr: Expr,
+}
+
+/// A periodic table; angles strictly increasing within one period.
+#[derive(Clone, Debug)]
+pub struct Table {
+    angle: Vec<f64>,
+    value: Vec<f64>,
+    interpolation: Interpolation,
+    period: f64,
+    /// Spline second derivatives at the nodes (empty unless Spline).
+    curvature: Vec<f64>,
+    /// 0: the interpolant; 1: its derivative.
+    order: u8,
+}
+
+/// A function of the cycle angle, in SI units.
+#[derive(Clone, Debug)]
+pub enum Function {
+    Constant(f64),
+    Expr(Expr),
+    Segments(Vec<Segment>),
+    Table(Table),
+}
+
+impl Table {
+    /// A table over `period`; `angle` strictly increasing in [0, period),
+    /// `value` of the same length (≥ 3 rows for a spline).
+    pub fn new(angle: Vec<f64>, value: Vec<f64>, interpolation: Interpolation, period: f64) -> Self {
+        let curvature = match interpolation {
+            Interpolation::Spline => periodic_spline_curvature(&angle, &value, period),
+            _ => Vec::new(),
+        };
+        Self { angle, value, interpolation, period, curvature, order: 0 }
+    }
+
+    fn node(&self, i: usize) -> (f64, f64) {
+        let n = self.angle.len();
+        (self.angle[i % n] + (i / n) as f64 * self.period, self.value[i % n])
+    }
+
+    /// Interval index k with φ in [x_k, x_{k+1}] (one-sided at nodes) and φ
+    /// shifted into [x_0, x_0 + period].
+    fn locate(&self, phi: f64, side: Side) -> (usize, f64) {
+        let x0 = self.angle[0];
+        let mut u = x0 + (phi - x0).rem_euclid(self.period);
+        if side == Side::Left && u == x0 {
+            u += self.period;
+        }
+        let k = match side {
+            Side::Right => self.angle.partition_point(|&a| a <= u),
+            Side::Left => self.angle.partition_point(|&a| a < u),
+        };
+        (k.max(1) - 1, u)
+    }
+
+    fn eval(&self, phi: f64, side: Side) -> f64 {
+        let (k, u) = self.locate(phi, side);
+        self.eval_in(k, u)
+    }
+
+    /// The interpolant of interval k at the (shifted) angle u.
+    fn eval_in(&self, k: usize, u: f64) -> f64 {
+        let ((xa, va), (xb, vb)) = (self.node(k), self.node(k + 1));
+        let h = xb - xa;
+        let t = u - xa;
+        match (self.interpolation, self.order) {
+            (Interpolation::Step, 0) => va,
+            (Interpolation::Step, _) => 0.0,
+            (Interpolation::Linear, 0) => va + (vb - va) * t / h,
+            (Interpolation::Linear, _) => (vb - va) / h,
+            (Interpolation::Spline, order) => {
+                let n = self.angle.len();
+                let (ma, mb) = (self.curvature[k % n], self.curvature[(k + 1) % n]);
+                let slope = (vb - va) / h - h * (2.0 * ma + mb) / 6.0;
+                if order == 0 {
+                    va + t * (slope + t * (ma / 2.0 + t * (mb - ma) / (6.0 * h)))
+                } else {
+                    slope + t * (ma + t * (mb - ma) / (2.0 * h))
+                }
+            }
+        }
+    }
+
+    /// The polynomial of the interval holding `anchor`, evaluated at φ (may extrapolate).
+    fn eval_frozen(&self, phi: f64, anchor: f64) -> f64 {
+        let (k, u) = self.locate(anchor, Side::Right);
+        self.eval_in(k, u + (phi - anchor))
+    }
+
+    fn breakpoints(&self) -> impl Iterator<Item = f64> + '_ {
+        self.angle.iter().copied()
+    }
+
+    /// Exact integral over [a, b] (Simpson on every polynomial piece).
+    fn integral(&self, a: f64, b: f64) -> f64 {
+        let mut cuts: Vec<f64> = vec![a, b];
+        let first = ((a - self.angle[0]) / self.period).floor() as i64 - 1;
+        let last = ((b - self.angle[0]) / self.period).ceil() as i64 + 1;
+        for p in first..=last {
+            let shift = p as f64 * self.period;
+            cuts.extend(self.angle.iter().map(|x| x + shift).filter(|x| *x > a && *x < b));
+        }
+        cuts.sort_by(f64::total_cmp);
+        cuts.windows(2)
+            .map(|w| {
+                let (x, y) = (w[0], w[1]);
+                let m = 0.5 * (x + y);
+                (y - x) / 6.0 * (self.eval(x, Side::Right) + 4.0 * self.eval(m, Side::Right) + self.eval(y, Side::Left))
+            })
+            .sum()
+    }
+}
+
+/// Second derivatives M_i of the periodic cubic spline through (x_i, v_i):
+/// h_{i−1} M_{i−1} + 2(h_{i−1} + h_i) M_i + h_i M_{i+1} = 6(δ_i − δ_{i−1}),
+/// δ_i = (v_{i+1} − v_i)/h_i, indices modulo n; solved as a cyclic
+/// tridiagonal system by Sherman–Morrison.
+fn periodic_spline_curvature(x: &[f64], v: &[f64], period: f64) -> Vec<f64> {
+    let n = x.len();
+    let h: Vec<f64> = (0..n).map(|i| if i + 1 < n { x[i + 1] - x[i] } else { x[0] + period - x[i] }).collect();
+    let delta: Vec<f64> = (0..n).map(|i| (v[(i + 1) % n] - v[i]) / h[i]).collect();
+    let prev = |i: usize| (i + n - 1) % n;
+    let lower: Vec<f64> = (0..n).map(|i| h[prev(i)]).collect();
+    let diag: Vec<f64> = (0..n).map(|i| 2.0 * (h[prev(i)] + h[i])).collect();
+    let upper: Vec<f64> = h.clone();
+    let rhs: Vec<f64> = (0..n).map(|i| 6.0 * (delta[i] - delta[prev(i)])).collect();
+    cyclic_tridiagonal(&lower, &diag, &upper, &rhs)
+}
+
+/// Solves the cyclic tridiagonal system (corner terms lower[0], upper[n−1]).
+fn cyclic_tridiagonal(a: &[f64], b: &[f64], c: &[f64], r: &[f64]) -> Vec<f64> {
+    let n = b.len();
+    let gamma = -b[0];
+    let mut bb = b.to_vec();
+    bb[0] -= gamma;
+    bb[n - 1] -= a[0] * c[n - 1] / gamma;
+    let x = tridiagonal(a, &bb, c, r);
+    let mut u = vec![0.0; n];
+    u[0] = gamma;
+    u[n - 1] = c[n - 1];
+    let z = tridiagonal(a, &bb, c, &u);
+    let fact = (x[0] + a[0] * x[n - 1] / gamma) / (1.0 + z[0] + a[0] * z[n - 1] / gamma);
+    x.iter().zip(&z).map(|(xi, zi)| xi - fact * zi).collect()
+}
+
+/// Thomas algorithm; a[0] and c[n−1] are ignored.
+fn tridiagonal(a: &[f64], b: &[f64], c: &[f64], r: &[f64]) -> Vec<f64> {
+    let n = b.len();
+    let mut cp = vec![0.0; n];
+    let mut x = vec![0.0; n];
+    let mut beta = b[0];
+    x[0] = r[0] / beta;
+    for i in 1..n {
+        cp[i] = c[i - 1] / beta;
+        beta = b[i] - a[i] * cp[i];
+        x[i] = (r[i] - a[i] * x[i - 1]) / beta;
+    }
+    for i in (0..n - 1).rev() {
+        x[i] -= cp[i + 1] * x[i + 1];
+    }
+    x
+}
+
+impl Function {
+    /// Value at φ; at a breakpoint, the limit from `side`.
+    pub fn eval(&self, phi: f64, side: Side) -> f64 {
+        match self {
+            Self::Constant(c) => *c,
+            Self::Expr(e) => e.eval(&[phi]),
+            Self::Segments(segs) => segs
+                .iter()
+                .find(|s| match side {
+                    Side::Right => s.from <= phi && phi < s.to,
+                    Side::Left => s.from < phi && phi <= s.to,
+                })
+                .map_or(0.0, |s| s.expr.eval(&[phi])),
+            Self::Table(t) => t.eval(phi, side),
+        }
+    }
+
+    /// The formula that holds at `anchor` (inside a smooth piece), evaluated
+    /// at φ, extrapolating past the piece's ends. Lets an integrator step
+    /// across a breakpoint and locate it without seeing the jump.
+    pub fn eval_frozen(&self, phi: f64, anchor: f64) -> f64 {
+        match self {
+            Self::Constant(c) => *c,
+            Self::Expr(e) => e.eval(&[phi]),
+            Self::Segments(segs) => {
+                segs.iter().find(|s| s.from <= anchor && anchor < s.to).map_or(0.0, |s| s.expr.eval(&[phi]))
+            }
+            Self::Table(t) => t.eval_frozen(phi, anchor),
+        }
+    }
+
+    /// The constant value, when the function is one.
+    pub fn constant(&self) -> Option<f64> {
+        match self {
+            Self::Constant(c) => Some(*c),
+            Self::Expr(e) => e.constant(),
+            _ => None,
+        }
+    }
+
+    /// dF/dφ as a function (jumps of step tables are not included).
+    pub fn derivative(&self) -> Function {
+        match self {
+            Self::Constant(_) => Self::Constant(0.0),
+            Self::Expr(e) => Self::Expr(e.derivative(0)),
+            Self::Segments(segs) => Self::Segments(
+                segs.iter().map(|s| Segment { from: s.from, to: s.to, expr: s.expr.derivative(0) }).collect(),
+            ),
+            Self::Table(t) => Self::Table(Table { order: t.order + 1, ..t.clone() }),
+        }
+    }
+
+    /// Angles in (0, period) where the function or its slope may jump.
+    pub fn breakpoints(&self, period: f64) -> Vec<f64> {
+        let mut b: Vec<f64> = match self {
+            Self::Constant(_) | Self::Expr(_) => vec![],
+            Self::Segments(segs) => segs.iter().flat_map(|s| [s.from, s.to]).collect(),
+            Self::Table(t) => t.breakpoints().collect(),
+        };
+        b.retain(|x| *x > 0.0 && *x < period);
+        b
+    }
+
+    /// ∫ₐᵇ F dφ with a ≤ b: exact for constants and tables, adaptive
+    /// quadrature (tolerances `abs_tol`, `rel_tol`) for expressions.
+    pub fn integral(&self, a: f64, b: f64, abs_tol: f64, rel_tol: f64) -> Integral {
+        match self {
+            Self::Constant(c) => Integral { value: c * (b - a), ..Integral::default() },
+            Self::Table(t) => Integral { value: t.integral(a, b), ..Integral::default() },
+            Self::Expr(e) => integrate_expr(e, a, b, abs_tol, rel_tol),
+            Self::Segments(segs) => {
+                let mut total = Integral::default();
+                for s in segs {
+                    let (lo, hi) = (a.max(s.from), b.min(s.to));
+                    if lo < hi {
+                        let share = abs_tol * (hi - lo) / (b - a);
+                        total += integrate_expr(&s.expr, lo, hi, share, rel_tol);
+                    }
+                }
+                total
+            }
+        }
+    }
+}
+
+/// Adaptive quadrature of an expression of φ (exact when it is constant).
+fn integrate_expr(e: &Expr, a: f64, b: f64, abs_tol: f64, rel_tol: f64) -> Integral {
+    const MAX_EVALUATIONS: usize = 200_000;
+    match e.constant() {
+        Some(c) => Integral { value: c * (b - a), ..Integral::default() },
+        None => integrate(|x| e.eval(&[x]), a, b, abs_tol, rel_tol, MAX_EVALUATIONS),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::PI;
+
+    fn table(angle: &[f64], value: &[f64], interp: Interpolation) -> Function {
+        Function::Table(Table::new(angle.to_vec(), value.to_vec(), interp, 2.0 * PI))
+    }
+
+    #[test]
+    fn step_tables_hold_values_and_jump_at_rows() {
+        let f = table(&[0.0, 1.0, 3.0], &[1.0, -2.0, 5.0], Interpolation::Step);
+        assert_eq!(f.eval(0.5, Side::Right), 1.0);
+        assert_eq!(f.eval(1.0, Side::Right), -2.0);
+        assert_eq!(f.eval(1.0, Side::Left), 1.0);
+        assert_eq!(f.eval(0.0, Side::Left), 5.0);
+        assert_eq!(f.eval(2.0 * PI + 0.5, Side::Right), 1.0);
+        // ∫₀^{2π} = 1·1 − 2·2 + 5·(2π − 3), exactly.
+        let i = f.integral(0.0, 2.0 * PI, 0.0, 0.0).value;
+        assert!((i - (1.0 - 4.0 + 5.0 * (2.0 * PI - 3.0))).abs() < 1e-13);
+    }
+
+    #[test]
+    fn linear_tables_wrap_around_the_period() {
+        let f = table(&[1.0, 2.0], &[0.0, 1.0], Interpolation::Linear);
+        // From φ = 2 (value 1) back to φ = 1 + 2π (value 0): slope −1/(2π − 1).
+        let x = 0.5;
+        let expected = 1.0 - (x + 2.0 * PI - 2.0) / (2.0 * PI - 1.0);
+        assert!((f.eval(x, Side::Right) - expected).abs() < 1e-15);
+        // Integral over a period of a periodic linear table = trapezoids = (0+1)/2·1 + (1+0)/2·(2π−1).
+        let i = f.integral(0.3, 0.3 + 2.0 * PI, 0.0, 0.0).value;
+        assert!((i - PI).abs() < 1e-13, "{i}");
+    }
+
+    /// A periodic spline through samples of sin φ reproduces sin to the
+    /// interpolation error O(h⁴) and its integral over the period is 0.
+    #[test]
+    fn periodic_spline_reproduces_a_sine() {
+        let n = 64;
+        let angle: Vec<f64> = (0..n).map(|i| 2.0 * PI * i as f64 / n as f64).collect();
+        let value: Vec<f64> = angle.iter().map(|a| a.sin()).collect();
+        let f = table(&angle, &value, Interpolation::Spline);
+        for x in [0.05, 1.0, 3.3, 6.2] {
+            assert!((f.eval(x, Side::Right) - x.sin()).abs() < 1e-6);
+            assert!((f.derivative().eval(x, Side::Right) - x.cos()).abs() < 1e-4);
+        }
+        assert!(f.integral(0.0, 2.0 * PI, 0.0, 0.0).value.abs() < 1e-14);
+        let half = f.integral(0.0, PI, 0.0, 0.0).value;
+        assert!((half - 2.0).abs() < 1e-6, "{half}");
+    }
+
+    #[test]
+    fn segments_are_zero_outside_and_one_sided_at_bounds() {
+        let seg = |a: f64, b: f64, s: &str| Segment { from: a, to: b, expr: Expr::compile(s, &["phi"]).unwrap() };
+        let f = Function::Segments(vec![seg(0.0, PI, "-500*sin(phi)"), seg(PI, 1.5 * PI, "7")]);
+        assert_eq!(f.eval(PI, Side::Left), -500.0 * PI.sin());
+        assert_eq!(f.eval(PI, Side::Right), 7.0);
+        assert_eq!(f.eval(1.6 * PI, Side::Right), 0.0);
+        assert_eq!(f.breakpoints(2.0 * PI), vec![PI, PI, 1.5 * PI]);
+        let i = f.integral(0.0, 2.0 * PI, 1e-12, 1e-12).value;
+        assert!((i - (-1000.0 + 3.5 * PI)).abs() < 1e-9, "{i}");
+    }
+}

@@ -1,0 +1,31 @@
+//! The calculation engine: pure math on validated SI inputs.
+//!
+//! Nothing here knows about HTTP, JSON, SQL or files; inputs are plain
+//! structs, results are plain structs, and conditions worth reporting are
+//! result values, not errors. Errors carry the context needed to explain
+//! them ([`EngineError`]).
+
+pub mod expr;
+pub mod flywheel;
+pub mod function;
+pub mod numeric;
+
+/// Why a problem has no answer.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum EngineError {
+    /// A function evaluates to NaN or infinity inside the cycle.
+    #[error("{function} is not finite at phi = {phi} rad")]
+    NotFinite { function: String, phi: f64 },
+    /// A reduced inertia below zero.
+    #[error("{function} is negative ({value} kg*m^2) at phi = {phi} rad")]
+    NegativeInertia { function: String, phi: f64, value: f64 },
+    /// The loads do no zero net work over a cycle and nothing balances them.
+    #[error(
+        "the cycle is not in steady state: the net work of the torques over a cycle is {net_work} J \
+         (largest lobe {largest_area} J); add a torque with \"balance\": true or correct the loads"
+    )]
+    NotSteady { net_work: f64, largest_area: f64 },
+    /// The computation produced a non-finite number (never returned as a result).
+    #[error("the computation produced a non-finite number; the input is numerically degenerate")]
+    NotFiniteResult,
+}

@@ -1,0 +1,117 @@
+//! The `mechdyn` binary: the HTTP service and its command-line helpers.
+
+use clap::Parser;
+use mechdyn::api::{self, AppState};
+use mechdyn::config::{Cli, Command};
+use mechdyn::store::Store;
+use std::io::{Read, Write};
+use std::process::ExitCode;
+use tracing_subscriber::EnvFilter;
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match &cli.command {
+        None | Some(Command::Serve) => serve(&cli),
+        Some(Command::Healthcheck) => healthcheck(&cli.addr),
+        Some(Command::Openapi) => {
+            println!("{}", api::openapi().to_pretty_json().unwrap_or_default());
+            ExitCode::SUCCESS
+        }
+        Some(Command::Solve { kind, file }) => solve(kind, file),
+    }
+}
+
+fn serve(cli: &Cli) -> ExitCode {
+    tracing_subscriber::fmt()
+        .with_env_filter(EnvFilter::try_from_default_env().unwrap_or_else(|_| EnvFilter::new("info")))
+        .init();
+    let runtime = match tokio::runtime::Runtime::new() {
+        Ok(r) => r,
+        Err(e) => return fail(&format!("cannot start the runtime: {e}")),
+    };
+    match runtime.block_on(run(cli)) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => fail(&e),
+    }
+}
+
+async fn run(cli: &Cli) -> Result<(), String> {
+    let store = Store::open(&cli.database).await.map_err(|e| format!("database {}: {e}", cli.database))?;
+    let app = api::router(AppState { store }, cli.max_body_bytes);
+    let listener = tokio::net::TcpListener::bind(&cli.addr).await.map_err(|e| format!("bind {}: {e}", cli.addr))?;
+    let local = listener.local_addr().map_err(|e| e.to_string())?;
+    tracing::info!(addr = %local, database = %cli.database, "mechdyn listening; docs at http://{local}/docs");
+    axum::serve(listener, app).with_graceful_shutdown(shutdown_signal()).await.map_err(|e| e.to_string())?;
+    tracing::info!("stopped");
+    Ok(())
+}
+
+/// Resolves on SIGINT (Ctrl-C) or SIGTERM (docker stop).
+async fn shutdown_signal() {
+    let ctrl_c = async {
+        let _ = tokio::signal::ctrl_c().await;
+    };
+    #[cfg(unix)]
+    let term = async {
+        match tokio::signal::unix::signal(tokio::signal::unix::SignalKind::terminate()) {
+            Ok(mut s) => {
+                s.recv().await;
+            }
+            Err(_) => std::future::pending::<()>().await,
+        }
+    };
+    #[cfg(not(unix))]
+    let term = std::future::pending::<()>();
+    tokio::select! { () = ctrl_c => {}, () = term => {} }
+    tracing::info!("shutting down: finishing requests in flight");
+}
+
+/// A plain TCP `GET /healthz`; 0.0.0.0 is probed on loopback.
+fn healthcheck(addr: &str) -> ExitCode {
+    let target = addr.replace("0.0.0.0", "127.0.0.1").replace("[::]", "[::1]");
+    let probe = || -> std::io::Result<bool> {
+        let mut s = std::net::TcpStream::connect(&target)?;
+        s.set_read_timeout(Some(std::time::Duration::from_secs(3)))?;
+        s.write_all(b"GET /healthz HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n")?;
+        let mut head = [0u8; 12];
+        s.read_exact(&mut head)?;
+        Ok(head.starts_with(b"HTTP/1.1 200"))
+    };
+    match probe() {
+        Ok(true) => ExitCode::SUCCESS,
+        _ => ExitCode::FAILURE,
+    }
+}
+
+fn solve(kind: &str, file: &std::path::Path) -> ExitCode {
+    let mut raw = String::new();
+    let read = if file.as_os_str() == "-" {
+        std::io::stdin().read_to_string(&mut raw).map(|_| ())
+    } else {
+        std::fs::read_to_string(file).map(|s| raw = s)
+    };
+    if let Err(e) = read {
+        return fail(&format!("cannot read {}: {e}", file.display()));
+    }
+    let output = match kind {
+        "flywheel" => mechdyn::api::json::parse::<api::flywheel::FlywheelRequest>(raw)
+            .and_then(|body| api::flywheel::compute(&body.value, body.unknown))
+            .map(|r| serde_json::to_string_pretty(&r).unwrap_or_default()),
+        other => return fail(&format!("unknown kind '{other}' (known: flywheel)")),
+    };
+    match output {
+        Ok(json) => {
+            println!("{json}");
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("{}", serde_json::to_string_pretty(&e.problem()).unwrap_or_default());
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn fail(message: &str) -> ExitCode {
+    eprintln!("mechdyn: {message}");
+    ExitCode::FAILURE
+}
