@@ -72,7 +72,8 @@ fn healthcheck(addr: &str) -> ExitCode {
     let probe = || -> std::io::Result<bool> {
         let mut s = std::net::TcpStream::connect(&target)?;
         s.set_read_timeout(Some(std::time::Duration::from_secs(3)))?;
-        s.write_all(b"GET /healthz HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n")?;
+        let request = format!("GET {} HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n", api::HEALTH_PATH);
+        s.write_all(request.as_bytes())?;
         let mut head = [0u8; 12];
         s.read_exact(&mut head)?;
         Ok(head.starts_with(b"HTTP/1.1 200"))

@@ -28,6 +28,9 @@ pub struct AppState {
     pub store: Store,
 }
 
+/// Path of the health check (also probed by `mechdyn healthcheck`).
+pub const HEALTH_PATH: &str = "/healthz";
+
 /// Default limit of a request body, bytes.
 pub const DEFAULT_BODY_LIMIT: usize = 1 << 20;
 
@@ -68,7 +71,7 @@ pub fn router(state: AppState, body_limit: usize) -> Router {
         .route("/v1/jobs", get(jobs::list))
         .route("/v1/jobs/{id}", get(jobs::get))
         .route("/v1/jobs/{id}/result.csv", get(jobs::csv))
-        .route("/healthz", get(healthz))
+        .route(HEALTH_PATH, get(healthz))
         .merge(SwaggerUi::new("/docs").url("/openapi.json", openapi()))
         .fallback(|| async { ApiError::NoRoute })
         .method_not_allowed_fallback(|| async { ApiError::MethodNotAllowed })

@@ -1,0 +1,189 @@
+//! Bad input gets a clear 4xx problem+json naming the field; hard cases give
+//! a right answer or a clear 422; never a 500, never NaN in a 201.
+
+use crate::helpers::{TestApp, request};
+use axum::http::StatusCode;
+use serde_json::{Value, json};
+
+fn with(mut body: Value, key: &str, value: Value) -> Value {
+    body[key] = value;
+    body
+}
+
+fn pointers(errors: &[(String, String)]) -> Vec<&str> {
+    errors.iter().map(|e| e.0.as_str()).collect()
+}
+
+#[tokio::test]
+async fn malformed_json_is_400_problem() {
+    let app = TestApp::new().await;
+    let r = app.post_raw("/v1/flywheel", "application/json", "{\"mean_speed\": ").await;
+    assert_eq!(r.status, StatusCode::BAD_REQUEST);
+    assert_eq!(r.content_type, "application/problem+json");
+    assert_eq!(r.json()["status"], 400);
+}
+
+#[tokio::test]
+async fn wrong_or_missing_content_type_is_415() {
+    let app = TestApp::new().await;
+    let body = request("p103_slider").to_string();
+    for ct in ["text/plain", ""] {
+        let r = app.post_raw("/v1/flywheel", ct, body.clone()).await;
+        assert_eq!(r.status, StatusCode::UNSUPPORTED_MEDIA_TYPE, "{ct}");
+        assert_eq!(r.content_type, "application/problem+json");
+    }
+}
+
+#[tokio::test]
+async fn a_body_over_the_limit_is_413() {
+    let app = TestApp::with_limit(1000).await;
+    let mut body = request("p103_slider");
+    body["torques"][0]["name"] = json!("x".repeat(2000));
+    let r = app.post("/v1/flywheel", &body).await;
+    assert_eq!(r.status, StatusCode::PAYLOAD_TOO_LARGE, "{}", r.text);
+    assert_eq!(r.content_type, "application/problem+json");
+    assert!(r.json()["detail"].as_str().unwrap().contains("1000 bytes"));
+}
+
+#[tokio::test]
+async fn every_invalid_field_is_reported_with_its_pointer() {
+    let app = TestApp::new().await;
+    let mut body = request("p103_slider");
+    body["irregularity"] = json!(2.5);
+    body["period"] = json!(-1);
+    body["torques"][0]["value"]["segments"][0]["expr"] = json!("-500*sin(phi");
+    body["reduced_inertia"] = json!("5 kg");
+    body["torques"][1]["speling"] = json!(1);
+    body["extra"] = json!(true);
+    let errors = app.flywheel_422(&body).await;
+    let p = pointers(&errors);
+    for want in [
+        "/irregularity",
+        "/period",
+        "/torques/0/value/segments/0/expr",
+        "/reduced_inertia",
+        "/torques/1/speling",
+        "/extra",
+    ] {
+        assert!(p.contains(&want), "{want} missing from {errors:?}");
+    }
+}
+
+#[tokio::test]
+async fn a_field_of_the_wrong_type_is_422_with_its_pointer() {
+    let app = TestApp::new().await;
+    let errors = app.flywheel_422(&with(request("p103_slider"), "irregularity", json!("lots"))).await;
+    assert_eq!(pointers(&errors), ["/irregularity"]);
+    let errors = app.flywheel_422(&json!({"mean_speed": 1, "irregularity": 0.1})).await;
+    assert_eq!(pointers(&errors), ["/torques"]);
+    assert!(errors[0].1.contains("missing"));
+}
+
+#[tokio::test]
+async fn units_of_the_wrong_dimension_or_unknown_are_named() {
+    let app = TestApp::new().await;
+    let errors = app.flywheel_422(&with(request("p103_slider"), "mean_speed", json!("60 1/s"))).await;
+    assert_eq!(errors[0].0, "/mean_speed");
+    assert!(errors[0].1.contains("rad/s"), "{errors:?}");
+    let errors = app.flywheel_422(&with(request("p103_slider"), "mean_speed", json!("60 rmp"))).await;
+    assert!(errors[0].1.contains("unknown unit 'rmp'"), "{errors:?}");
+}
+
+#[tokio::test]
+async fn speeds_must_be_positive_and_given_one_way() {
+    let app = TestApp::new().await;
+    for (speed, eps, pointer) in [
+        (json!(0), json!(0.04), "/mean_speed"),
+        (json!(-3), json!(0.04), "/mean_speed"),
+        (json!(6.0), json!(2.0), "/irregularity"),
+        (json!(6.0), json!(0), "/irregularity"),
+    ] {
+        let body = with(with(request("p103_slider"), "mean_speed", speed), "irregularity", eps);
+        assert_eq!(pointers(&app.flywheel_422(&body).await), [pointer]);
+    }
+    let both = with(request("p103_slider"), "min_speed", json!("50 rpm"));
+    assert_eq!(pointers(&app.flywheel_422(&both).await), [""]);
+    let mut inverted = request("punch_press_us");
+    inverted["min_speed"] = json!("320 rpm");
+    assert_eq!(pointers(&app.flywheel_422(&inverted).await), ["/min_speed"]);
+}
+
+#[tokio::test]
+async fn period_must_be_positive() {
+    let app = TestApp::new().await;
+    for period in [json!(0), json!("-2*pi"), json!("0 deg")] {
+        assert_eq!(pointers(&app.flywheel_422(&with(request("p103_slider"), "period", period)).await), ["/period"]);
+    }
+}
+
+#[tokio::test]
+async fn overlapping_segments_are_refused() {
+    let app = TestApp::new().await;
+    let mut body = request("p103_slider");
+    body["torques"][0]["value"]["segments"] = json!([
+        {"from": 0, "to": 2, "expr": "1"}, {"from": 1.5, "to": 3, "expr": "2"}
+    ]);
+    let errors = app.flywheel_422(&body).await;
+    assert_eq!(pointers(&errors), ["/torques/0/value/segments/1"]);
+    assert!(errors[0].1.contains("overlaps"));
+}
+
+#[tokio::test]
+async fn table_angles_must_increase() {
+    let app = TestApp::new().await;
+    let mut body = request("p103_slider");
+    body["torques"][0]["value"] = json!({"table": {"angle": [0, 2, 1], "value": [1, 2, 3]}});
+    assert_eq!(pointers(&app.flywheel_422(&body).await), ["/torques/0/value/table/angle/2"]);
+}
+
+#[tokio::test]
+async fn an_unbalanced_cycle_is_422_with_its_net_work() {
+    let app = TestApp::new().await;
+    let mut body = request("p103_slider");
+    body["torques"][1] = json!({"name": "motor", "value": "100 N*m"});
+    let errors = app.flywheel_422(&body).await;
+    assert_eq!(pointers(&errors), ["/torques"]);
+    // Net work: 100·2π − 1000 = −371.68 J.
+    assert!(errors[0].1.contains("-371.68"), "{errors:?}");
+}
+
+#[tokio::test]
+async fn a_function_that_is_not_finite_is_named() {
+    let app = TestApp::new().await;
+    let mut body = request("p103_slider");
+    body["reduced_inertia"] = json!({"expr": "1/(phi - 1)"});
+    let errors = app.flywheel_422(&body).await;
+    assert_eq!(pointers(&errors), ["/reduced_inertia"], "{errors:?}");
+}
+
+#[tokio::test]
+async fn zero_torque_gives_zero_inertia_not_nan() {
+    let app = TestApp::new().await;
+    let body = json!({"mean_speed": 10, "irregularity": 0.01, "torques": [{"name": "none", "value": 0}]});
+    let r = app.flywheel(&body).await["result"].clone();
+    assert_eq!(r["inertia_approximate"], 0.0);
+    assert_eq!(r["inertia_exact"], 0.0);
+    assert!(!r["warnings"].as_array().unwrap().is_empty());
+}
+
+#[tokio::test]
+async fn unknown_routes_and_jobs_are_404_problems() {
+    let app = TestApp::new().await;
+    for path in ["/v1/jobs/00000000-0000-4000-8000-000000000000", "/v1/jobs/not-a-uuid", "/nope"] {
+        let r = app.get(path).await;
+        assert_eq!(r.status, StatusCode::NOT_FOUND, "{path}");
+        assert_eq!(r.content_type, "application/problem+json");
+    }
+}
+
+#[tokio::test]
+async fn invalid_query_parameters_are_400_with_their_names() {
+    let app = TestApp::new().await;
+    let r = app.get("/v1/jobs?kind=boat&limit=0&color=red").await;
+    assert_eq!(r.status, StatusCode::BAD_REQUEST);
+    let names: Vec<String> =
+        r.json()["errors"].as_array().unwrap().iter().map(|e| e["parameter"].as_str().unwrap().to_string()).collect();
+    for want in ["kind", "limit", "color"] {
+        assert!(names.iter().any(|n| n == want), "{names:?}");
+    }
+}

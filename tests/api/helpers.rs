@@ -1,0 +1,123 @@
+//! A test app: the real router on a fresh SQLite file in a temporary folder.
+
+use axum::body::Body;
+use axum::http::{Request, StatusCode};
+use http_body_util::BodyExt;
+use mechdyn::api::{AppState, router};
+use mechdyn::store::Store;
+use serde_json::Value;
+use tower::ServiceExt;
+
+pub struct TestApp {
+    pub app: axum::Router,
+    pub url: String,
+    _dir: tempfile::TempDir,
+}
+
+pub struct Reply {
+    pub status: StatusCode,
+    pub content_type: String,
+    pub location: Option<String>,
+    pub text: String,
+}
+
+impl Reply {
+    pub fn json(&self) -> Value {
+        serde_json::from_str(&self.text).unwrap_or_else(|e| panic!("not JSON ({e}): {}", self.text))
+    }
+}
+
+impl TestApp {
+    pub async fn new() -> Self {
+        Self::with_limit(mechdyn::api::DEFAULT_BODY_LIMIT).await
+    }
+
+    pub async fn with_limit(limit: usize) -> Self {
+        let dir = tempfile::tempdir().unwrap();
+        let url = format!("sqlite://{}/sub/jobs.db", dir.path().display());
+        let store = Store::open(&url).await.unwrap();
+        Self { app: router(AppState { store }, limit), url, _dir: dir }
+    }
+
+    /// The same database opened again, as after a restart.
+    pub async fn restart(self) -> Self {
+        let store = Store::open(&self.url).await.unwrap();
+        Self { app: router(AppState { store }, mechdyn::api::DEFAULT_BODY_LIMIT), ..self }
+    }
+
+    pub async fn send(&self, req: Request<Body>) -> Reply {
+        let res = self.app.clone().oneshot(req).await.unwrap();
+        let status = res.status();
+        let header = |n: &str| res.headers().get(n).and_then(|v| v.to_str().ok()).map(str::to_string);
+        let content_type = header("content-type").unwrap_or_default();
+        let location = header("location");
+        let bytes = res.into_body().collect().await.unwrap().to_bytes();
+        Reply { status, content_type, location, text: String::from_utf8_lossy(&bytes).into_owned() }
+    }
+
+    pub async fn post_raw(&self, path: &str, content_type: &str, body: impl Into<Body>) -> Reply {
+        let req = Request::post(path).header("content-type", content_type).body(body.into()).unwrap();
+        self.send(req).await
+    }
+
+    pub async fn post(&self, path: &str, body: &Value) -> Reply {
+        self.post_raw(path, "application/json", body.to_string()).await
+    }
+
+    pub async fn get(&self, path: &str) -> Reply {
+        self.send(Request::get(path).body(Body::empty()).unwrap()).await
+    }
+
+    /// POSTs a flywheel request that must succeed; returns the job.
+    pub async fn flywheel(&self, body: &Value) -> Value {
+        let r = self.post("/v1/flywheel", body).await;
+        assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+        r.json()
+    }
+
+    /// POSTs a flywheel request that must be refused with 422; returns the errors.
+    pub async fn flywheel_422(&self, body: &Value) -> Vec<(String, String)> {
+        let r = self.post("/v1/flywheel", body).await;
+        assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+        assert_eq!(r.content_type, "application/problem+json");
+        r.json()["errors"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|e| (e["pointer"].as_str().unwrap().to_string(), e["message"].as_str().unwrap().to_string()))
+            .collect()
+    }
+}
+
+/// A request fixture from tests/fixtures/requests.
+pub fn request(name: &str) -> Value {
+    fixture(&format!("requests/{name}.json"))
+}
+
+/// A reference case from tests/fixtures/cases.
+pub fn case(name: &str) -> Value {
+    fixture(&format!("cases/{name}.json"))
+}
+
+fn fixture(path: &str) -> Value {
+    let full = format!("{}/tests/fixtures/{path}", env!("CARGO_MANIFEST_DIR"));
+    serde_json::from_str(&std::fs::read_to_string(&full).unwrap()).unwrap()
+}
+
+/// Asserts |actual − expected| ≤ tol·|expected| (or ≤ tol when expected is 0).
+#[track_caller]
+pub fn close(actual: &Value, expected: f64, tol: f64, what: &str) {
+    let a = actual.as_f64().unwrap_or_else(|| panic!("{what}: {actual} is not a number"));
+    let bound = if expected == 0.0 { tol } else { tol * expected.abs() };
+    assert!((a - expected).abs() <= bound, "{what}: {a} vs {expected} (tolerance {tol})");
+}
+
+/// Element-wise [`close`] of a JSON array against expected values.
+#[track_caller]
+pub fn all_close(actual: &Value, expected: &Value, tol: f64, what: &str) {
+    let (a, e) = (actual.as_array().unwrap(), expected.as_array().unwrap());
+    assert_eq!(a.len(), e.len(), "{what}: {actual} vs {expected}");
+    for (i, (x, y)) in a.iter().zip(e).enumerate() {
+        close(x, y.as_f64().unwrap(), tol, &format!("{what}[{i}]"));
+    }
+}

@@ -1,0 +1,7 @@
+//! Integration tests through the real router and a real SQLite file.
+
+mod cases;
+mod errors;
+mod helpers;
+mod jobs;
+mod seed_exams;
