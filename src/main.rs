@@ -4,7 +4,7 @@ use clap::Parser;
 use mechdyn::api::{self, AppState};
 use mechdyn::config::{Cli, Command};
 use mechdyn::store::Store;
-use std::io::{Read, Write};
+use std::io::{IsTerminal, Read, Write};
 use std::process::ExitCode;
 use tracing_subscriber::EnvFilter;
 
@@ -23,6 +23,7 @@ fn main() -> ExitCode {
 
 fn serve(cli: &Cli) -> ExitCode {
     tracing_subscriber::fmt()
+        .with_ansi(std::io::stdout().is_terminal())
         .with_env_filter(EnvFilter::try_from_default_env().unwrap_or_else(|_| EnvFilter::new("info")))
         .init();
     let runtime = match tokio::runtime::Runtime::new() {

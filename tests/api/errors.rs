@@ -187,3 +187,16 @@ async fn invalid_query_parameters_are_400_with_their_names() {
         assert!(names.iter().any(|n| n == want), "{names:?}");
     }
 }
+
+/// A flywheel already provided by existing inertia: no disk, and a warning why.
+#[tokio::test]
+async fn no_disk_when_the_existing_inertia_suffices() {
+    let app = TestApp::new().await;
+    let mut body = request("p113_pulley");
+    body["existing_inertia"] = json!("100 kg*m^2");
+    body["flywheel"] = json!({"disk": {"density": "7850 kg/m^3", "radius": "0.3 m"}});
+    let r = app.flywheel(&body).await["result"].clone();
+    assert!(r["flywheel_inertia"]["exact"].as_f64().unwrap() < 0.0);
+    assert!(r["disk"].is_null());
+    assert!(r["warnings"][0].as_str().unwrap().contains("no disk"), "{}", r["warnings"]);
+}

@@ -10,6 +10,8 @@ use utoipa::ToSchema;
 
 /// Most torque items in one request.
 pub const MAX_TORQUES: usize = 100;
+/// Longest torque name, in characters.
+pub const MAX_NAME: usize = 200;
 /// Most rows in the sampled table of the result.
 pub const MAX_SAMPLES: usize = 100_000;
 const DEFAULT_SAMPLES: usize = 361;
@@ -233,6 +235,9 @@ fn ratio(e: &mut Errors, r: Option<f64>, at: &str) -> Option<f64> {
 
 fn torque(e: &mut Errors, t: &TorqueDto, i: usize, period: f64) -> Option<TorqueItem> {
     let at = format!("/torques/{i}");
+    if t.name.chars().count() > MAX_NAME {
+        e.push(&format!("{at}/name"), format!("must be at most {MAX_NAME} characters"));
+    }
     let ratio = ratio(e, t.ratio, &format!("{at}/ratio"));
     let load = match (&t.value, t.balance.unwrap_or(false)) {
         (Some(v), false) => e.function(v, Dim::TORQUE, period, &format!("{at}/value")).map(Load::Given),

@@ -41,7 +41,7 @@ pub fn solve(p: &FlywheelProblem) -> Result<FlywheelSolution, EngineError> {
     let flywheel = |i: f64| (i - p.existing_inertia) / (p.flywheel_ratio * p.flywheel_ratio);
     let flywheel_inertia = Pair { approximate: flywheel(inertia_approximate), exact: flywheel(ex.inertia) };
     let speed = SpeedLaw { cycle: &cycle, ex: &ex, omega_a };
-    let omega_at_start = speed.omega(0.0, 0.0);
+    let omega_at_start = speed.omega(0.0, 0.0, Side::Right);
     let check = run_check(p, &cycle, &ex, omega_at_start, &mut warnings);
     if ex.degenerate {
         warnings.push(
@@ -49,7 +49,8 @@ pub fn solve(p: &FlywheelProblem) -> Result<FlywheelSolution, EngineError> {
                 .into(),
         );
     }
-    let disk = p.disk.and_then(|d| size_disk(d, flywheel_inertia.exact, p.flywheel_ratio * omega_a, &mut warnings));
+    let shaft_speed = p.flywheel_ratio.abs() * omega_a;
+    let disk = p.disk.and_then(|d| size_disk(d, flywheel_inertia.exact, shaft_speed, &mut warnings));
     let table = sample_table(p, &speed);
     let quadrature_error = lobes.quadrature.error + ex.quadrature.error + table.1;
     evaluations += lobes.quadrature.evaluations + ex.quadrature.evaluations;
@@ -151,12 +152,12 @@ struct SpeedLaw<'a> {
 }
 
 impl SpeedLaw<'_> {
-    fn omega(&self, phi: f64, work: f64) -> f64 {
+    fn omega(&self, phi: f64, work: f64, side: Side) -> f64 {
         if self.ex.degenerate {
             return self.omega_a;
         }
         let f = 2.0 * work / (self.omega_a * self.omega_a);
-        let z = (f + self.ex.c) / (self.ex.inertia + self.cycle.inertia_at(phi, Side::Right));
+        let z = (f + self.ex.c) / (self.ex.inertia + self.cycle.inertia_at(phi, side));
         self.omega_a * z.max(0.0).sqrt()
     }
 }
@@ -204,12 +205,16 @@ fn sample_table(p: &FlywheelProblem, speed: &SpeedLaw) -> (Vec<SamplePoint>, f64
     let rows = angles
         .iter()
         .zip(works)
-        .map(|(&angle, work)| SamplePoint {
-            angle,
-            reduced_torque: speed.cycle.torque(angle, Side::Right),
-            reduced_inertia: speed.cycle.inertia_at(angle, Side::Right),
-            work,
-            speed: speed.omega(angle, work),
+        .map(|(&angle, work)| {
+            // The last row closes the cycle: values as φ → period from below.
+            let side = if angle < p.period { Side::Right } else { Side::Left };
+            SamplePoint {
+                angle,
+                reduced_torque: speed.cycle.torque(angle, side),
+                reduced_inertia: speed.cycle.inertia_at(angle, side),
+                work,
+                speed: speed.omega(angle, work, side),
+            }
         })
         .collect();
     (rows, q.error)

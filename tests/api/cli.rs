@@ -1,0 +1,42 @@
+//! The binary's helpers: `solve` without a server, `healthcheck`, `openapi`.
+
+use std::process::Command;
+
+fn mechdyn(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_mechdyn")).args(args).current_dir(env!("CARGO_MANIFEST_DIR")).output().unwrap()
+}
+
+/// `solve` prints the same result as the API: P.103's 348.99 kg·m² (textbook).
+#[test]
+fn solve_prints_the_result_without_a_server() {
+    let out = mechdyn(&["solve", "flywheel", "tests/fixtures/requests/p103_slider.json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let r: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let i = r["inertia_approximate"].as_f64().unwrap();
+    assert!((i - 348.98939677963364).abs() < 1e-9 * i, "{i}");
+}
+
+#[test]
+fn solve_reports_invalid_requests_as_problems() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("bad.json");
+    std::fs::write(&file, r#"{"mean_speed": "60 rpm", "irregularity": 5, "torques": []}"#).unwrap();
+    let out = mechdyn(&["solve", "flywheel", file.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    let problem: serde_json::Value = serde_json::from_slice(&out.stderr).unwrap();
+    assert_eq!(problem["status"], 422);
+}
+
+#[test]
+fn healthcheck_fails_when_nothing_listens() {
+    let port = std::net::TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port();
+    let out = mechdyn(&["healthcheck", "--addr", &format!("127.0.0.1:{port}")]);
+    assert!(!out.status.success());
+}
+
+#[test]
+fn openapi_prints_the_committed_document() {
+    let out = mechdyn(&["openapi"]);
+    let committed = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/openapi/openapi.json")).unwrap();
+    assert_eq!(String::from_utf8_lossy(&out.stdout).trim(), committed.trim());
+}
