@@ -68,6 +68,9 @@ pub(crate) fn simulate(cycle: &Cycle, inertia: f64, omega0: f64, omega_a: f64, r
         steps += ode.accepted + ode.rejected;
         evaluations += ode.evaluations;
     }
+    // Back to φ = 0 of the next cycle: across a jump of I* there, energy is kept.
+    let wrap = (inertia + cycle.inertia_at(cycle.period, Side::Left)) / (inertia + cycle.inertia_at(0.0, Side::Right));
+    state[1] *= wrap.sqrt();
     let mean = 0.5 * (w_max + w_min);
     Ok(Check {
         irregularity: (w_max - w_min) / mean,
