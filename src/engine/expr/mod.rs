@@ -74,11 +74,6 @@ impl Expr {
         }
         Self { root: Node::Mul(Box::new(Node::Const(k)), Box::new(self.root)).fold() }
     }
-
-    /// Depth of the compiled tree.
-    pub fn depth(&self) -> usize {
-        self.root.depth()
-    }
 }
 
 #[cfg(test)]

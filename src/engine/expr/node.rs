@@ -140,16 +140,6 @@ impl Node {
         }
     }
 
-    /// Depth of the tree (a constant has depth 1).
-    pub fn depth(&self) -> usize {
-        1 + match self {
-            Const(_) | Var(_) => 0,
-            Neg(a) | Call1(_, a) => a.depth(),
-            Add(a, c) | Sub(a, c) | Mul(a, c) | Div(a, c) | Pow(a, c) | Call2(_, a, c) => a.depth().max(c.depth()),
-            IfLess(n) => n.iter().map(Node::depth).max().unwrap_or(0),
-        }
-    }
-
     /// Whether the tree reads variable `i`.
     pub fn uses(&self, i: usize) -> bool {
         match self {
