@@ -5,10 +5,15 @@
 //! result values, not errors. Errors carry the context needed to explain
 //! them ([`EngineError`]).
 
+pub mod constraints;
 pub mod expr;
 pub mod flywheel;
 pub mod function;
+pub mod kinematics;
+pub mod kinetostatics;
+pub mod model;
 pub mod numeric;
+pub mod samples;
 
 /// Why a problem has no answer.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -25,6 +30,14 @@ pub enum EngineError {
          (largest lobe {largest_area} J); add a torque with \"balance\": true or correct the loads"
     )]
     NotSteady { net_work: f64, largest_area: f64 },
+    /// Newton–Raphson did not assemble the mechanism at an input position.
+    #[error("the mechanism cannot be assembled at step {step}: Newton-Raphson stopped with residual {residual:e}")]
+    NewtonDiverged { step: usize, residual: f64 },
+    /// The constraint Jacobian is singular (a dead centre or toggle position the input cannot pass).
+    #[error(
+        "the mechanism is at a singular position at step {step} (input {input}): the constraint Jacobian loses rank"
+    )]
+    Singular { step: usize, input: f64 },
     /// The computation produced a non-finite number (never returned as a result).
     #[error("the computation produced a non-finite number; the input is numerically degenerate")]
     NotFiniteResult,

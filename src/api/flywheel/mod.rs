@@ -54,7 +54,9 @@ fn engine_error(e: EngineError) -> FieldError {
     let pointer = match &e {
         EngineError::NotFinite { function, .. } | EngineError::NegativeInertia { function, .. } => function.clone(),
         EngineError::NotSteady { .. } => "/torques".into(),
-        EngineError::NotFiniteResult => String::new(),
+        EngineError::NotFiniteResult | EngineError::NewtonDiverged { .. } | EngineError::Singular { .. } => {
+            String::new()
+        }
     };
     FieldError::at(pointer, e.to_string())
 }

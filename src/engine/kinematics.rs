@@ -1,0 +1,107 @@
+//! Position, velocity and acceleration of a driven mechanism.
+//!
+//! Position: Newton–Raphson on Φ(q, φ) = 0 from a predicted q (continuation
+//! keeps the assembly branch). Velocity: Φ_q q̇ = ν (the input speeds).
+//! Acceleration: Φ_q q̈ = γ. With one input, g = dq/dφ (velocity
+//! coefficients) and h = d²q/dφ² give the predictor q + gΔφ + ½hΔφ².
+
+use super::EngineError;
+use super::constraints::{State, System, evaluate, nu};
+use super::model::Mechanism;
+use nalgebra::{DMatrix, DVector};
+
+/// Newton iterations allowed per position.
+const MAX_ITERATIONS: usize = 30;
+/// Φ_q is treated as singular beyond this condition number.
+pub const SINGULAR_CONDITION: f64 = 1e12;
+
+/// The mechanism at one input position.
+#[derive(Clone, Debug)]
+pub struct Configuration {
+    pub q: Vec<f64>,
+    pub qd: Vec<f64>,
+    pub qdd: Vec<f64>,
+    /// Condition number of Φ_q (2-norm).
+    pub condition: f64,
+    pub iterations: usize,
+    pub residual: f64,
+}
+
+/// Solves A x = b: LU when A is square and regular, else least squares (SVD).
+pub fn solve_linear(a: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
+    if a.is_square()
+        && let Some(x) = a.clone().lu().solve(b)
+        && x.iter().all(|v| v.is_finite())
+    {
+        return Some(x);
+    }
+    let svd = a.clone().svd(true, true);
+    let tol = 1e-12 * svd.singular_values.max();
+    svd.solve(b, tol).ok()
+}
+
+/// 2-norm condition number σ_max/σ_min of a matrix with at least as many rows as columns.
+pub fn condition(a: &DMatrix<f64>) -> f64 {
+    let s = a.singular_values();
+    let (max, min) = (s.max(), s.min());
+    if min > 0.0 { max / min } else { f64::INFINITY }
+}
+
+/// Newton–Raphson from `q` to Φ = 0 at the given inputs.
+pub fn assemble(m: &Mechanism, q: &mut [f64], inputs: &[[f64; 3]], step: usize) -> Result<(usize, f64), EngineError> {
+    let scale = 1.0 + q.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    let tol = 1e-13 * scale;
+    let mut residual = f64::INFINITY;
+    for iteration in 0..=MAX_ITERATIONS {
+        let sys = evaluate(m, &State { q, qd: None, inputs });
+        residual = sys.phi.amax();
+        if residual <= tol {
+            return Ok((iteration, residual));
+        }
+        let Some(dq) = solve_linear(&sys.jacobian, &(-&sys.phi)) else { break };
+        for (v, d) in q.iter_mut().zip(dq.iter()) {
+            *v += d;
+        }
+    }
+    Err(EngineError::NewtonDiverged { step, residual })
+}
+
+/// Velocities and accelerations at an assembled q.
+pub fn motion(m: &Mechanism, q: &[f64], inputs: &[[f64; 3]]) -> Option<(Vec<f64>, Vec<f64>, System)> {
+    let sys = evaluate(m, &State { q, qd: None, inputs });
+    let qd = solve_linear(&sys.jacobian, &nu(m, inputs))?;
+    let qd: Vec<f64> = qd.iter().copied().collect();
+    let sys = evaluate(m, &State { q, qd: Some(&qd), inputs });
+    let qdd = solve_linear(&sys.jacobian, &sys.gamma)?;
+    Some((qd, qdd.iter().copied().collect(), sys))
+}
+
+/// The configurations along the given input positions, starting from the
+/// reference configuration and continuing from each position to the next.
+pub fn sweep(m: &Mechanism, positions: &[Vec<[f64; 3]>]) -> Result<Vec<Configuration>, EngineError> {
+    let mut q = m.reference_q();
+    let mut out: Vec<Configuration> = Vec::with_capacity(positions.len());
+    let mut coefficients: Option<(Vec<f64>, Vec<f64>, Vec<f64>)> = None;
+    for (step, inputs) in positions.iter().enumerate() {
+        if let Some((g, h, from)) = &coefficients {
+            let dphi = inputs[0][0] - from[0];
+            for (k, v) in q.iter_mut().enumerate() {
+                *v += g[k] * dphi + 0.5 * h[k] * dphi * dphi;
+            }
+        }
+        let (iterations, residual) = assemble(m, &mut q, inputs, step)?;
+        let (qd, qdd, sys) = motion(m, &q, inputs).ok_or(EngineError::Singular { step, input: inputs[0][0] })?;
+        let cond = condition(&sys.jacobian);
+        if cond > SINGULAR_CONDITION {
+            return Err(EngineError::Singular { step, input: inputs[0][0] });
+        }
+        if m.drivers.len() == 1 {
+            let unit: Vec<[f64; 3]> = vec![[inputs[0][0], 1.0, 0.0]];
+            if let Some((g, h, _)) = motion(m, &q, &unit) {
+                coefficients = Some((g, h, vec![inputs[0][0]]));
+            }
+        }
+        out.push(Configuration { q: q.clone(), qd, qdd, condition: cond, iterations, residual });
+    }
+    Ok(out)
+}

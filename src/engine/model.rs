@@ -1,0 +1,145 @@
+//! A planar mechanism in body coordinates.
+//!
+//! Symbols:
+//! - body b ≥ 1 has coordinates q_b = (x_G, y_G, θ): its centre of mass G and
+//!   its rotation θ from the drawn reference configuration (θ = 0 there);
+//!   body 0 is the ground and has none;
+//! - A(θ) is the rotation matrix, B(θ) = dA/dθ;
+//! - a point P of body b is r_b + A(θ_b)·s_b with s_b = P_ref − G_ref, its
+//!   position relative to G in the reference configuration;
+//! - Φ(q, φ) = 0 are the joint constraints and the driving constraints of the
+//!   inputs (coordinates φ), Φ_q their Jacobian.
+
+/// Index of a body; 0 is the ground.
+pub type BodyId = usize;
+
+/// A rigid body: mass m, inertia I_G about its centre of mass G.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Body {
+    pub name: String,
+    pub mass: f64,
+    pub inertia: f64,
+    /// G in the reference configuration.
+    pub cg: [f64; 2],
+}
+
+/// Kinds of joint between bodies `[first, second]`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum JointKind {
+    /// The two bodies share the point `at`.
+    Revolute,
+    /// No relative rotation; `at` of the second body moves along `axis` (unit,
+    /// reference configuration) fixed in the first.
+    Prismatic { axis: [f64; 2] },
+    /// `at` of the second body moves along `axis` fixed in the first; rotation free.
+    PinSlot { axis: [f64; 2] },
+    /// ω₂ − ω_c = k·(ω₁ − ω_c).
+    Gear { ratio: f64, carrier: BodyId },
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Joint {
+    pub name: String,
+    pub kind: JointKind,
+    pub bodies: [BodyId; 2],
+    /// The joint's point in the reference configuration.
+    pub at: [f64; 2],
+}
+
+/// A driven joint: its relative rotation (revolute) or displacement along the
+/// axis (prismatic) equals the input coordinate minus `reference`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Driver {
+    pub joint: usize,
+    pub reference: f64,
+}
+
+/// A mechanism: bodies (index 0 is the ground, with no coordinates), joints,
+/// drivers and gravity.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mechanism {
+    pub bodies: Vec<Body>,
+    pub joints: Vec<Joint>,
+    pub drivers: Vec<Driver>,
+    pub gravity: [f64; 2],
+}
+
+impl Mechanism {
+    /// Number of coordinates, 3 per moving body.
+    pub fn n_coordinates(&self) -> usize {
+        3 * (self.bodies.len() - 1)
+    }
+
+    /// Column of the first coordinate of body b (None for the ground).
+    pub fn column(&self, b: BodyId) -> Option<usize> {
+        (b > 0).then(|| 3 * (b - 1))
+    }
+
+    /// Rows of a joint's constraint equations.
+    pub fn joint_rows(kind: &JointKind) -> usize {
+        match kind {
+            JointKind::Revolute | JointKind::Prismatic { .. } => 2,
+            JointKind::PinSlot { .. } | JointKind::Gear { .. } => 1,
+        }
+    }
+
+    /// s_b of a point given in reference coordinates.
+    pub fn local(&self, b: BodyId, p: [f64; 2]) -> [f64; 2] {
+        let g = self.bodies[b].cg;
+        [p[0] - g[0], p[1] - g[1]]
+    }
+
+    /// The reference configuration q₀: every G where drawn, every θ = 0.
+    pub fn reference_q(&self) -> Vec<f64> {
+        self.bodies[1..].iter().flat_map(|b| [b.cg[0], b.cg[1], 0.0]).collect()
+    }
+
+    /// Grübler's count for a planar mechanism: G = 3(N − 1) − 2·P_I − P_II,
+    /// N counting the ground; P_I joints remove 2 freedoms, P_II joints 1.
+    pub fn grubler(&self) -> Grubler {
+        let (mut p1, mut p2) = (0, 0);
+        for j in &self.joints {
+            match Self::joint_rows(&j.kind) {
+                2 => p1 += 1,
+                _ => p2 += 1,
+            }
+        }
+        let equations = 3 * (self.bodies.len() as i64 - 1);
+        let reactions = 2 * p1 + p2;
+        Grubler { mobility: equations - reactions, equations, unknowns: reactions + self.drivers.len() as i64 }
+    }
+}
+
+/// Counting formulas: mobility, equilibrium equations 3(N − 1), and unknowns
+/// (reaction components 2·P_I + P_II plus one driving action per input).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Grubler {
+    pub mobility: i64,
+    pub equations: i64,
+    pub unknowns: i64,
+}
+
+/// A(θ)·s.
+pub fn rotate(theta: f64, s: [f64; 2]) -> [f64; 2] {
+    let (sn, cs) = theta.sin_cos();
+    [cs * s[0] - sn * s[1], sn * s[0] + cs * s[1]]
+}
+
+/// B(θ)·s = dA/dθ·s = A(θ)·(−s_y, s_x).
+pub fn rotate_d(theta: f64, s: [f64; 2]) -> [f64; 2] {
+    rotate(theta, [-s[1], s[0]])
+}
+
+/// The unit normal (−u_y, u_x) of a direction u.
+pub fn perp(u: [f64; 2]) -> [f64; 2] {
+    [-u[1], u[0]]
+}
+
+pub fn dot(a: [f64; 2], b: [f64; 2]) -> f64 {
+    a[0] * b[0] + a[1] * b[1]
+}
+
+/// z-component of a × b.
+pub fn cross(a: [f64; 2], b: [f64; 2]) -> f64 {
+    a[0] * b[1] - a[1] * b[0]
+}

@@ -1,0 +1,3 @@
+//! Engine-level golden tests against the reference cases in tests/fixtures/cases.
+
+mod kinetostatics;
