@@ -11,6 +11,7 @@ pub mod flywheel;
 pub mod function;
 pub mod kinematics;
 pub mod kinetostatics;
+pub mod mobility;
 pub mod model;
 pub mod numeric;
 pub mod samples;

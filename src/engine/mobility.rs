@@ -1,0 +1,116 @@
+//! Degrees of freedom from the rank of the constraint Jacobian, redundant
+//! constraints, and which joint reactions they leave indeterminate.
+//!
+//! With J = Φ_q of the joints alone, DOF = n − rank J and the redundant
+//! constraints number rows(J) − rank J. The multipliers of Φ_qᵀλ = Q − Mq̈
+//! are unique up to the left null space of the full Φ_q (joints and
+//! drivers): a joint whose rows touch that null space has a reaction the
+//! equations cannot determine — it is flagged, never invented.
+
+use super::constraints::{State, evaluate, joint_offsets};
+use super::model::{Grubler, Mechanism};
+use nalgebra::DMatrix;
+
+/// Relative size below which a singular value counts as zero.
+const RANK_TOLERANCE: f64 = 1e-9;
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mobility {
+    pub dof: usize,
+    pub redundant_constraints: usize,
+    pub grubler: Grubler,
+    /// Joints whose reactions are not determined by the equations.
+    pub indeterminate_joints: Vec<usize>,
+}
+
+fn rank(a: &DMatrix<f64>) -> usize {
+    if a.nrows() == 0 || a.ncols() == 0 {
+        return 0;
+    }
+    let s = a.singular_values();
+    let tol = RANK_TOLERANCE * s.max();
+    s.iter().filter(|v| **v > tol).count()
+}
+
+/// Mobility of the mechanism at an assembled configuration `q`.
+pub fn mobility(m: &Mechanism, q: &[f64]) -> Mobility {
+    let inputs = vec![[0.0; 3]; m.drivers.len()];
+    let jac = evaluate(m, &State { q, qd: None, inputs: &inputs }).jacobian;
+    let joint_rows = jac.nrows() - m.drivers.len();
+    let rank_joints = rank(&jac.rows(0, joint_rows).into_owned());
+    Mobility {
+        dof: m.n_coordinates() - rank_joints,
+        redundant_constraints: joint_rows - rank_joints,
+        grubler: m.grubler(),
+        indeterminate_joints: indeterminate(m, &jac),
+    }
+}
+
+/// Joints with a row in the left null space of Φ_q (eigenvectors of Φ_qΦ_qᵀ
+/// with a zero eigenvalue).
+fn indeterminate(m: &Mechanism, jac: &DMatrix<f64>) -> Vec<usize> {
+    if jac.nrows() == 0 || rank(jac) == jac.nrows() {
+        return Vec::new();
+    }
+    let eig = (jac * jac.transpose()).symmetric_eigen();
+    let top = eig.eigenvalues.amax();
+    let offsets = joint_offsets(m);
+    let null: Vec<usize> = (0..eig.eigenvalues.len()).filter(|&k| eig.eigenvalues[k] <= 1e-18 * top).collect();
+    (0..m.joints.len())
+        .filter(|&j| {
+            let rows = offsets[j]..offsets[j] + Mechanism::joint_rows(&m.joints[j].kind);
+            rows.clone().any(|r| null.iter().any(|&k| eig.eigenvectors[(r, k)].abs() > 1e-8))
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::engine::model::{Body, Driver, Joint, JointKind};
+    use crate::engine::samples::offset_slider_crank;
+
+    #[test]
+    fn the_slider_crank_has_one_dof_and_no_redundancy() {
+        let m = offset_slider_crank();
+        let mob = mobility(&m, &m.reference_q());
+        assert_eq!((mob.dof, mob.redundant_constraints), (1, 0));
+        assert_eq!(mob.grubler.mobility, 1);
+        assert!(mob.indeterminate_joints.is_empty());
+    }
+
+    /// A parallelogram four-bar with a third, parallel crank: Grübler says 0,
+    /// the Jacobian's rank says 1 DOF with one redundant constraint, and the
+    /// reactions of all six joints are indeterminate: the cranks can carry a
+    /// self-stress of axial forces (1, 1, −2) (zero net force and moment on
+    /// the coupler) that no equation of equilibrium sees.
+    #[test]
+    fn a_parallelogram_with_a_redundant_crank_is_detected() {
+        let body = |n: &str, cg: [f64; 2]| Body { name: n.into(), mass: 1.0, inertia: 0.01, cg };
+        let rev =
+            |n: &str, b: [usize; 2], at: [f64; 2]| Joint { name: n.into(), kind: JointKind::Revolute, bodies: b, at };
+        let m = Mechanism {
+            bodies: vec![
+                body("ground", [0.0, 0.0]),
+                body("crank1", [0.0, 0.5]),
+                body("coupler", [1.0, 1.0]),
+                body("crank2", [2.0, 0.5]),
+                body("crank3", [1.0, 0.5]),
+            ],
+            joints: vec![
+                rev("O1", [0, 1], [0.0, 0.0]),
+                rev("A", [1, 2], [0.0, 1.0]),
+                rev("B", [2, 3], [2.0, 1.0]),
+                rev("O2", [0, 3], [2.0, 0.0]),
+                rev("O3", [0, 4], [1.0, 0.0]),
+                rev("C", [4, 2], [1.0, 1.0]),
+            ],
+            drivers: vec![Driver { joint: 0, reference: 0.0 }],
+            gravity: [0.0, -9.81],
+        };
+        let mob = mobility(&m, &m.reference_q());
+        assert_eq!(m.grubler().mobility, 0);
+        assert_eq!((mob.dof, mob.redundant_constraints), (1, 1));
+        assert_eq!(mob.indeterminate_joints, vec![0, 1, 2, 3, 4, 5]);
+    }
+}
