@@ -11,33 +11,26 @@
 //! single input independently: with g = dq/dφ (Φ_q g = e_driver),
 //! T = gᵀ(M q̈ − Q); and I* = gᵀMg, M* = gᵀQ (Zhukovsky).
 
+mod loads;
+mod summary;
+
+pub use loads::{Load, applied_forces, point_motion};
+pub use summary::Summary;
+
 use super::EngineError;
 use super::constraints::{State, evaluate, joint_offsets};
-use super::function::{Function, Side};
 use super::kinematics::{Configuration, motion, solve_linear, sweep};
+use super::mobility::{Mobility, mobility};
 use super::model::{BodyId, Mechanism, cross, rotate};
 use nalgebra::DVector;
-
-/// A load on a body; functions take the first input coordinate φ.
-#[derive(Clone, Debug)]
-pub enum Load {
-    /// A force of signed `magnitude` along the unit `direction` (fixed in the
-    /// ground), applied at the body's point `at` (reference coordinates).
-    Force { body: BodyId, at: [f64; 2], direction: [f64; 2], magnitude: Function },
-    /// A couple on the body (counter-clockwise positive).
-    Torque { body: BodyId, value: Function },
-    /// A linear spring between point `a` of one body and `b` of another:
-    /// tension k·(L − L₀) along the line between them.
-    Spring { a: (BodyId, [f64; 2]), b: (BodyId, [f64; 2]), stiffness: f64, free_length: f64 },
-    /// A linear damper: tension c·dL/dt along the line between the points.
-    Damper { a: (BodyId, [f64; 2]), b: (BodyId, [f64; 2]), coefficient: f64 },
-}
 
 /// What to compute at every position.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Outputs {
     pub reactions: bool,
     pub reduced: bool,
+    /// Keep q, q̇, q̈ of every step.
+    pub kinematics: bool,
 }
 
 /// The reaction of joint `joint` on body `on` by body `by`: force at the
@@ -50,6 +43,28 @@ pub struct Reaction {
     pub fx: f64,
     pub fy: f64,
     pub moment: f64,
+    /// False when redundant constraints leave this reaction undetermined
+    /// (the values are then one of many equilibrium solutions).
+    pub determinate: bool,
+}
+
+/// Coordinates, velocities and accelerations at a step.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Motion {
+    pub q: Vec<f64>,
+    pub qd: Vec<f64>,
+    pub qdd: Vec<f64>,
+}
+
+/// Everything computed over the positions.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Solution {
+    pub steps: Vec<Step>,
+    pub mobility: Mobility,
+    pub summary: Summary,
+    /// Largest Newton iteration count and final |Φ| over the steps.
+    pub max_iterations: usize,
+    pub max_constraint_residual: f64,
 }
 
 /// Results at one input position.
@@ -64,63 +79,7 @@ pub struct Step {
     pub reduced_inertia: Option<f64>,
     pub reduced_torque: Option<f64>,
     pub condition: f64,
-}
-
-/// Generalized applied forces Q at a configuration (velocities `qd` for dampers).
-pub fn applied_forces(m: &Mechanism, loads: &[Load], q: &[f64], qd: &[f64], phi: f64) -> DVector<f64> {
-    let mut qv = DVector::zeros(m.n_coordinates());
-    // Force f at point `at` of body b, plus a couple.
-    let mut apply = |b: BodyId, at: [f64; 2], f: [f64; 2], couple: f64| {
-        if let Some(c) = m.column(b) {
-            let arm = rotate(q[c + 2], m.local(b, at));
-            qv[c] += f[0];
-            qv[c + 1] += f[1];
-            qv[c + 2] += cross(arm, f) + couple;
-        }
-    };
-    for (b, body) in m.bodies.iter().enumerate() {
-        apply(b, body.cg, [body.mass * m.gravity[0], body.mass * m.gravity[1]], 0.0);
-    }
-    for load in loads {
-        match load {
-            Load::Force { body, at, direction, magnitude } => {
-                let f = magnitude.eval(phi, Side::Right);
-                apply(*body, *at, [f * direction[0], f * direction[1]], 0.0);
-            }
-            Load::Torque { body, value } => apply(*body, [0.0, 0.0], [0.0, 0.0], value.eval(phi, Side::Right)),
-            Load::Spring { a, b, stiffness, free_length } => {
-                let (u, length, _) = line(m, q, qd, *a, *b);
-                let t = stiffness * (length - free_length);
-                apply(a.0, a.1, [t * u[0], t * u[1]], 0.0);
-                apply(b.0, b.1, [-t * u[0], -t * u[1]], 0.0);
-            }
-            Load::Damper { a, b, coefficient } => {
-                let (u, _, rate) = line(m, q, qd, *a, *b);
-                let t = coefficient * rate;
-                apply(a.0, a.1, [t * u[0], t * u[1]], 0.0);
-                apply(b.0, b.1, [-t * u[0], -t * u[1]], 0.0);
-            }
-        }
-    }
-    qv
-}
-
-/// Unit vector from point a to point b, their distance and its rate.
-fn line(m: &Mechanism, q: &[f64], qd: &[f64], a: (BodyId, [f64; 2]), b: (BodyId, [f64; 2])) -> ([f64; 2], f64, f64) {
-    let (pa, va) = point_motion(m, q, qd, a);
-    let (pb, vb) = point_motion(m, q, qd, b);
-    let d = [pb[0] - pa[0], pb[1] - pa[1]];
-    let length = d[0].hypot(d[1]);
-    let u = if length > 0.0 { [d[0] / length, d[1] / length] } else { [0.0, 0.0] };
-    (u, length, u[0] * (vb[0] - va[0]) + u[1] * (vb[1] - va[1]))
-}
-
-/// Position and velocity of a body point (reference coordinates `p`).
-pub fn point_motion(m: &Mechanism, q: &[f64], qd: &[f64], (b, p): (BodyId, [f64; 2])) -> ([f64; 2], [f64; 2]) {
-    let Some(c) = m.column(b) else { return (p, [0.0, 0.0]) };
-    let s = m.local(b, p);
-    let (a, ds) = (rotate(q[c + 2], s), super::model::rotate_d(q[c + 2], s));
-    ([q[c] + a[0], q[c + 1] + a[1]], [qd[c] + ds[0] * qd[c + 2], qd[c + 1] + ds[1] * qd[c + 2]])
+    pub kinematics: Option<Motion>,
 }
 
 /// M·v with M = diag(m, m, I_G).
@@ -141,14 +100,22 @@ pub fn solve(
     loads: &[Load],
     positions: &[Vec<[f64; 3]>],
     outputs: Outputs,
-) -> Result<Vec<Step>, EngineError> {
+) -> Result<Solution, EngineError> {
     let configurations = sweep(m, positions)?;
-    configurations
+    let mobility = mobility(m, &configurations.first().map_or_else(|| m.reference_q(), |c| c.q.clone()));
+    let steps = configurations
         .iter()
         .zip(positions)
         .enumerate()
-        .map(|(k, (c, inputs))| step(m, loads, c, inputs, outputs, k))
-        .collect()
+        .map(|(k, (c, inputs))| step(m, loads, c, inputs, outputs, &mobility, k))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Solution {
+        summary: Summary::new(&steps, m.joints.len()),
+        steps,
+        mobility,
+        max_iterations: configurations.iter().map(|c| c.iterations).max().unwrap_or(0),
+        max_constraint_residual: configurations.iter().map(|c| c.residual).fold(0.0, f64::max),
+    })
 }
 
 fn step(
@@ -157,6 +124,7 @@ fn step(
     c: &Configuration,
     inputs: &[[f64; 3]],
     outputs: Outputs,
+    mobility: &Mobility,
     k: usize,
 ) -> Result<Step, EngineError> {
     let phi = inputs[0][0];
@@ -176,7 +144,7 @@ fn step(
         _ => (None, None),
     };
     let (driving, reactions) = if outputs.reactions || !single {
-        multipliers(m, c, &inertial, outputs.reactions, k, phi)?
+        multipliers(m, c, &inertial, outputs.reactions.then_some(&mobility.indeterminate_joints), k, phi)?
     } else {
         (vec![driving_virtual_power.unwrap_or(f64::NAN)], Vec::new())
     };
@@ -188,6 +156,7 @@ fn step(
         reduced_inertia,
         reduced_torque,
         condition: c.condition,
+        kinematics: outputs.kinematics.then(|| Motion { q: c.q.clone(), qd: c.qd.clone(), qdd: c.qdd.clone() }),
     })
 }
 
@@ -196,7 +165,7 @@ fn multipliers(
     m: &Mechanism,
     c: &Configuration,
     inertial: &DVector<f64>,
-    with_reactions: bool,
+    reactions_with: Option<&Vec<usize>>,
     step: usize,
     input: f64,
 ) -> Result<(Vec<f64>, Vec<Reaction>), EngineError> {
@@ -205,9 +174,7 @@ fn multipliers(
     let lambda = solve_linear(&jac.transpose(), &(-inertial)).ok_or(EngineError::Singular { step, input })?;
     let first_driver = lambda.len() - m.drivers.len();
     let driving = (first_driver..lambda.len()).map(|r| -lambda[r]).collect();
-    if !with_reactions {
-        return Ok((driving, Vec::new()));
-    }
+    let Some(indeterminate) = reactions_with else { return Ok((driving, Vec::new())) };
     let offsets = joint_offsets(m);
     let reactions = m
         .joints
@@ -226,7 +193,8 @@ fn multipliers(
             let [fx, fy, mg] = force_on(b);
             let arm = m.column(b).map_or([0.0; 2], |col| rotate(c.q[col + 2], m.local(b, joint.at)));
             let moment = mg - cross(arm, [fx, fy]);
-            Reaction { joint: k, on: j, by: i, fx: sign * fx, fy: sign * fy, moment: sign * moment }
+            let determinate = !indeterminate.contains(&k);
+            Reaction { joint: k, on: j, by: i, fx: sign * fx, fy: sign * fy, moment: sign * moment, determinate }
         })
         .collect();
     Ok((driving, reactions))

@@ -1,0 +1,77 @@
+//! Loads on a mechanism and their generalized forces Q.
+
+use crate::engine::function::{Function, Side};
+use crate::engine::model::{BodyId, Mechanism, cross, rotate, rotate_d};
+use nalgebra::DVector;
+
+/// A load on a body; functions take the first input coordinate φ.
+#[derive(Clone, Debug)]
+pub enum Load {
+    /// A force of signed `magnitude` along the unit `direction` (fixed in the
+    /// ground), applied at the body's point `at` (reference coordinates).
+    Force { body: BodyId, at: [f64; 2], direction: [f64; 2], magnitude: Function },
+    /// A couple on the body (counter-clockwise positive).
+    Torque { body: BodyId, value: Function },
+    /// A linear spring between point `a` of one body and `b` of another:
+    /// tension k·(L − L₀) along the line between them.
+    Spring { a: (BodyId, [f64; 2]), b: (BodyId, [f64; 2]), stiffness: f64, free_length: f64 },
+    /// A linear damper: tension c·dL/dt along the line between the points.
+    Damper { a: (BodyId, [f64; 2]), b: (BodyId, [f64; 2]), coefficient: f64 },
+}
+
+/// Generalized applied forces Q at a configuration (velocities `qd` for dampers).
+pub fn applied_forces(m: &Mechanism, loads: &[Load], q: &[f64], qd: &[f64], phi: f64) -> DVector<f64> {
+    let mut qv = DVector::zeros(m.n_coordinates());
+    // Force f at point `at` of body b, plus a couple.
+    let mut apply = |b: BodyId, at: [f64; 2], f: [f64; 2], couple: f64| {
+        if let Some(c) = m.column(b) {
+            let arm = rotate(q[c + 2], m.local(b, at));
+            qv[c] += f[0];
+            qv[c + 1] += f[1];
+            qv[c + 2] += cross(arm, f) + couple;
+        }
+    };
+    for (b, body) in m.bodies.iter().enumerate() {
+        apply(b, body.cg, [body.mass * m.gravity[0], body.mass * m.gravity[1]], 0.0);
+    }
+    for load in loads {
+        match load {
+            Load::Force { body, at, direction, magnitude } => {
+                let f = magnitude.eval(phi, Side::Right);
+                apply(*body, *at, [f * direction[0], f * direction[1]], 0.0);
+            }
+            Load::Torque { body, value } => apply(*body, [0.0, 0.0], [0.0, 0.0], value.eval(phi, Side::Right)),
+            Load::Spring { a, b, stiffness, free_length } => {
+                let (u, length, _) = line(m, q, qd, *a, *b);
+                let t = stiffness * (length - free_length);
+                apply(a.0, a.1, [t * u[0], t * u[1]], 0.0);
+                apply(b.0, b.1, [-t * u[0], -t * u[1]], 0.0);
+            }
+            Load::Damper { a, b, coefficient } => {
+                let (u, _, rate) = line(m, q, qd, *a, *b);
+                let t = coefficient * rate;
+                apply(a.0, a.1, [t * u[0], t * u[1]], 0.0);
+                apply(b.0, b.1, [-t * u[0], -t * u[1]], 0.0);
+            }
+        }
+    }
+    qv
+}
+
+/// Unit vector from point a to point b, their distance and its rate.
+fn line(m: &Mechanism, q: &[f64], qd: &[f64], a: (BodyId, [f64; 2]), b: (BodyId, [f64; 2])) -> ([f64; 2], f64, f64) {
+    let (pa, va) = point_motion(m, q, qd, a);
+    let (pb, vb) = point_motion(m, q, qd, b);
+    let d = [pb[0] - pa[0], pb[1] - pa[1]];
+    let length = d[0].hypot(d[1]);
+    let u = if length > 0.0 { [d[0] / length, d[1] / length] } else { [0.0, 0.0] };
+    (u, length, u[0] * (vb[0] - va[0]) + u[1] * (vb[1] - va[1]))
+}
+
+/// Position and velocity of a body point (reference coordinates `p`).
+pub fn point_motion(m: &Mechanism, q: &[f64], qd: &[f64], (b, p): (BodyId, [f64; 2])) -> ([f64; 2], [f64; 2]) {
+    let Some(c) = m.column(b) else { return (p, [0.0, 0.0]) };
+    let s = m.local(b, p);
+    let (a, ds) = (rotate(q[c + 2], s), rotate_d(q[c + 2], s));
+    ([q[c] + a[0], q[c + 1] + a[1]], [qd[c] + ds[0] * qd[c + 2], qd[c + 1] + ds[1] * qd[c + 2]])
+}
