@@ -99,7 +99,10 @@ fn solve(kind: &str, file: &std::path::Path) -> ExitCode {
         "flywheel" => mechdyn::api::json::parse::<api::flywheel::FlywheelRequest>(raw)
             .and_then(|body| api::flywheel::compute(&body.value, body.unknown))
             .map(|r| serde_json::to_string_pretty(&r).unwrap_or_default()),
-        other => return fail(&format!("unknown kind '{other}' (known: flywheel)")),
+        "kinetostatics" => mechdyn::api::json::parse::<api::kinetostatics::KinetostaticsRequest>(raw)
+            .and_then(|body| api::kinetostatics::compute(&body.value, body.unknown))
+            .map(|r| serde_json::to_string_pretty(&r).unwrap_or_default()),
+        other => return fail(&format!("unknown kind '{other}' (known: flywheel, kinetostatics)")),
     };
     match output {
         Ok(json) => {

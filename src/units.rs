@@ -29,6 +29,12 @@ impl Dim {
     pub const POWER: Dim = Dim([2, 1, -3, 0]);
     pub const INERTIA: Dim = Dim([2, 1, 0, 0]);
     pub const DENSITY: Dim = Dim([-3, 1, 0, 0]);
+    pub const ACCELERATION: Dim = Dim([1, 0, -2, 0]);
+    pub const ANGULAR_ACCELERATION: Dim = Dim([0, 0, -2, 1]);
+    /// N/m
+    pub const STIFFNESS: Dim = Dim([0, 1, -2, 0]);
+    /// N·s/m
+    pub const DAMPING: Dim = Dim([0, 1, -1, 0]);
 
     fn pow(self, p: i8) -> Dim {
         Dim(self.0.map(|e| e * p))
@@ -40,7 +46,7 @@ impl Dim {
 
     /// The SI unit of this dimension, for messages.
     pub fn si_name(self) -> String {
-        const NAMED: [(Dim, &str); 12] = [
+        const NAMED: [(Dim, &str); 16] = [
             (Dim::NONE, "1 (dimensionless)"),
             (Dim::LENGTH, "m"),
             (Dim::MASS, "kg"),
@@ -53,6 +59,10 @@ impl Dim {
             (Dim::POWER, "W"),
             (Dim::INERTIA, "kg*m^2"),
             (Dim::DENSITY, "kg/m^3"),
+            (Dim::ACCELERATION, "m/s^2"),
+            (Dim::ANGULAR_ACCELERATION, "rad/s^2"),
+            (Dim::STIFFNESS, "N/m"),
+            (Dim::DAMPING, "N*s/m"),
         ];
         if let Some((_, n)) = NAMED.iter().find(|(d, _)| *d == self) {
             return (*n).to_string();

@@ -205,11 +205,7 @@ fn list_params(q: &HashMap<String, String>) -> Result<(Option<String>, i64, Opti
     ))]
 pub async fn csv(State(state): State<AppState>, Path(id): Path<String>) -> Result<Response, ApiError> {
     let row = state.store.get(&id).await?.ok_or_else(|| ApiError::NotFound(id.clone()))?;
-    let columns = match row.kind.as_str() {
-        "flywheel" => super::flywheel::CSV_COLUMNS,
-        _ => &[],
-    };
-    let body = to_csv(&row.result, columns)?;
+    let body = to_csv(&row.kind, &row.result)?;
     let disposition = format!("attachment; filename=\"{}-{id}.csv\"", row.kind);
     Ok((
         [(header::CONTENT_TYPE, "text/csv; charset=utf-8".to_string()), (header::CONTENT_DISPOSITION, disposition)],
@@ -218,14 +214,19 @@ pub async fn csv(State(state): State<AppState>, Path(id): Path<String>) -> Resul
         .into_response())
 }
 
-/// Writes `result.samples` as CSV with the given (key, header) columns.
-fn to_csv(result: &str, columns: &[(&str, &str)]) -> Result<String, ApiError> {
+/// The CSV of a stored result: the table of its kind, header row with units.
+fn to_csv(kind: &str, result: &str) -> Result<String, ApiError> {
     let value: serde_json::Value = serde_json::from_str(result).map_err(|e| ApiError::Internal(e.to_string()))?;
+    let (header, rows) = match kind {
+        "flywheel" => super::flywheel::csv_table(&value),
+        "kinetostatics" => super::kinetostatics::csv_table(&value),
+        _ => (Vec::new(), Vec::new()),
+    };
     let mut w = csv::Writer::from_writer(Vec::new());
     let internal = |e: csv::Error| ApiError::Internal(e.to_string());
-    w.write_record(columns.iter().map(|c| c.1)).map_err(internal)?;
-    for row in value["samples"].as_array().into_iter().flatten() {
-        w.write_record(columns.iter().map(|c| row[c.0].to_string())).map_err(internal)?;
+    w.write_record(&header).map_err(internal)?;
+    for row in rows {
+        w.write_record(&row).map_err(internal)?;
     }
     let bytes = w.into_inner().map_err(|e| ApiError::Internal(e.to_string()))?;
     String::from_utf8(bytes).map_err(|e| ApiError::Internal(e.to_string()))

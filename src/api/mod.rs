@@ -7,6 +7,8 @@
 pub mod flywheel;
 pub mod jobs;
 pub mod json;
+pub mod kinetostatics;
+pub mod mechanism;
 pub mod problem;
 pub mod quantity;
 
@@ -38,21 +40,24 @@ pub const DEFAULT_BODY_LIMIT: usize = 1 << 20;
 #[openapi(
     info(
         title = "mechdyn",
-        description = "Machine-dynamics calculations: flywheels (approximate and exact Wittenbauer methods), \
-with every job stored and readable later.\n\nQuantities are SI numbers or \"VALUE UNIT\" strings \
+        description = "Machine-dynamics calculations: flywheels (approximate and exact Wittenbauer methods) and \
+kinetostatics of planar mechanisms, with every job stored and readable later.\n\nQuantities are SI numbers or \"VALUE UNIT\" strings \
 (\"300 rpm\", \"3200 ft*lbf\", \"20 slug*ft^2\"); results are SI. Errors are application/problem+json \
 with a JSON pointer for every invalid field.\n\nLimits: request body 1 MiB (configurable, 413); \
 expressions 2000 characters and 64 levels of nesting; tables 100000 rows; 1000 segments per function; \
-100 torques; 100000 result samples (422 beyond them)."
+100 torques; 100000 result samples; 200 bodies and joints, 500 loads and 100000 steps per mechanism \
+(422 beyond them)."
     ),
-    paths(flywheel::create, jobs::get, jobs::list, jobs::csv, healthz),
+    paths(flywheel::create, kinetostatics::create, jobs::get, jobs::list, jobs::csv, healthz),
     components(schemas(
         Problem, FieldError, Health,
         flywheel::FlywheelRequest, flywheel::FlywheelResult,
+        kinetostatics::KinetostaticsRequest, kinetostatics::KinetostaticsResult,
         quantity::Quantity, quantity::FunctionDto, quantity::FunctionSpec
     )),
     tags(
         (name = "flywheel", description = "Flywheel design for a machine in steady state"),
+        (name = "kinetostatics", description = "Inverse dynamics of planar mechanisms"),
         (name = "jobs", description = "Stored computations"),
         (name = "service", description = "Health"),
     )
@@ -68,6 +73,7 @@ pub fn openapi() -> utoipa::openapi::OpenApi {
 pub fn router(state: AppState, body_limit: usize) -> Router {
     Router::new()
         .route("/v1/flywheel", post(flywheel::create))
+        .route("/v1/kinetostatics", post(kinetostatics::create))
         .route("/v1/jobs", get(jobs::list))
         .route("/v1/jobs/{id}", get(jobs::get))
         .route("/v1/jobs/{id}/result.csv", get(jobs::csv))
@@ -105,4 +111,16 @@ pub async fn healthz(State(state): State<AppState>) -> (StatusCode, Json<Health>
     } else {
         (StatusCode::SERVICE_UNAVAILABLE, Json(Health { status: "database unavailable", version }))
     }
+}
+
+/// An engine error as a field error. Engine labels are JSON pointers; errors
+/// without a field of their own point at `fallback`.
+pub fn engine_error(e: crate::engine::EngineError, fallback: &str) -> FieldError {
+    use crate::engine::EngineError as E;
+    let pointer = match &e {
+        E::NotFinite { function, .. } | E::NegativeInertia { function, .. } => function.clone(),
+        E::NotSteady { .. } | E::NewtonDiverged { .. } | E::Singular { .. } => fallback.into(),
+        E::NotFiniteResult => String::new(),
+    };
+    FieldError::at(pointer, e.to_string())
 }

@@ -63,7 +63,7 @@ pub fn assemble(m: &Mechanism, q: &mut [f64], inputs: &[[f64; 3]], step: usize) 
             *v += d;
         }
     }
-    Err(EngineError::NewtonDiverged { step, residual })
+    Err(EngineError::NewtonDiverged { step, input: inputs.first().map_or(0.0, |i| i[0]), residual })
 }
 
 /// Velocities and accelerations at an assembled q.

@@ -32,8 +32,11 @@ pub enum EngineError {
     )]
     NotSteady { net_work: f64, largest_area: f64 },
     /// Newton–Raphson did not assemble the mechanism at an input position.
-    #[error("the mechanism cannot be assembled at step {step}: Newton-Raphson stopped with residual {residual:e}")]
-    NewtonDiverged { step: usize, residual: f64 },
+    #[error(
+        "the mechanism cannot be assembled at input {input} (step {step}): Newton-Raphson stopped with residual \
+         {residual:e}; the links cannot close there (e.g. a non-Grashof crank asked for a full turn)"
+    )]
+    NewtonDiverged { step: usize, input: f64, residual: f64 },
     /// The constraint Jacobian is singular (a dead centre or toggle position the input cannot pass).
     #[error(
         "the mechanism is at a singular position at step {step} (input {input}): the constraint Jacobian loses rank"

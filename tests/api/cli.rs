@@ -40,3 +40,13 @@ fn openapi_prints_the_committed_document() {
     let committed = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/openapi/openapi.json")).unwrap();
     assert_eq!(String::from_utf8_lossy(&out.stdout).trim(), committed.trim());
 }
+
+/// `solve kinetostatics` prints K1's driving torque at 30° (−228.4912 N·m, reference case).
+#[test]
+fn solve_kinetostatics_prints_the_result() {
+    let out = mechdyn(&["solve", "kinetostatics", "tests/fixtures/requests/k1_offset_slider_crank.json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let r: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let t = r["steps"][1]["driving"].as_f64().unwrap();
+    assert!((t - -228.491215292969).abs() < 1e-6, "{t}");
+}

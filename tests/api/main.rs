@@ -5,4 +5,5 @@ mod cli;
 mod errors;
 mod helpers;
 mod jobs;
+mod kinetostatics;
 mod seed_exams;

@@ -5,13 +5,12 @@ mod result;
 
 pub use request::{DiskDto, FlywheelDto, FlywheelRequest, TorqueDto};
 pub use result::{
-    AccuracyDto, AreaDto, CSV_COLUMNS, CheckDto, DiskOut, FlywheelResult, InertiaPair, ItemWork, SampleDto,
+    AccuracyDto, AreaDto, CSV_COLUMNS, CheckDto, DiskOut, FlywheelResult, InertiaPair, ItemWork, SampleDto, csv_table,
 };
 
 use super::json::JsonBody;
 use super::problem::{ApiError, FieldError, Problem};
-use super::{AppState, jobs};
-use crate::engine::EngineError;
+use super::{AppState, engine_error, jobs};
 use crate::engine::flywheel::solve;
 use axum::extract::State;
 use axum::response::Response;
@@ -38,7 +37,7 @@ pub fn compute(request: &FlywheelRequest, mut errors: Vec<FieldError>) -> Result
     let problem = request.to_problem();
     match problem {
         Ok(p) if errors.is_empty() => {
-            let solution = solve(&p).map_err(|e| ApiError::Invalid(vec![engine_error(e)]))?;
+            let solution = solve(&p).map_err(|e| ApiError::Invalid(vec![engine_error(e, "/torques")]))?;
             Ok(FlywheelResult::new(solution, request.torques.iter().map(|t| t.name.clone())))
         }
         Ok(_) => Err(ApiError::Invalid(errors)),
@@ -47,16 +46,4 @@ pub fn compute(request: &FlywheelRequest, mut errors: Vec<FieldError>) -> Result
             Err(ApiError::Invalid(errors))
         }
     }
-}
-
-/// An engine error as a field error; engine labels are JSON pointers.
-fn engine_error(e: EngineError) -> FieldError {
-    let pointer = match &e {
-        EngineError::NotFinite { function, .. } | EngineError::NegativeInertia { function, .. } => function.clone(),
-        EngineError::NotSteady { .. } => "/torques".into(),
-        EngineError::NotFiniteResult | EngineError::NewtonDiverged { .. } | EngineError::Singular { .. } => {
-            String::new()
-        }
-    };
-    FieldError::at(pointer, e.to_string())
 }

@@ -185,3 +185,15 @@ pub const CSV_COLUMNS: &[(&str, &str)] = &[
     ("work", "work_J"),
     ("speed", "speed_rad_s"),
 ];
+
+/// The CSV table of a stored flywheel result: one row per sample.
+pub fn csv_table(result: &serde_json::Value) -> (Vec<String>, Vec<Vec<String>>) {
+    let header = CSV_COLUMNS.iter().map(|c| c.1.to_string()).collect();
+    let rows = result["samples"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .map(|row| CSV_COLUMNS.iter().map(|c| row[c.0].to_string()).collect())
+        .collect();
+    (header, rows)
+}

@@ -1,0 +1,46 @@
+//! `POST /v1/kinetostatics`: driving actions and joint reactions of a driven mechanism.
+
+mod request;
+mod result;
+
+pub use request::{InputDto, Inputs, KinetostaticsRequest, LoadDto, LoadType, OutputKind};
+pub use result::{KinetostaticsResult, csv_table};
+
+use super::json::JsonBody;
+use super::problem::{ApiError, FieldError, Problem};
+use super::{AppState, engine_error, jobs};
+use crate::engine::kinetostatics::solve;
+use axum::extract::State;
+use axum::response::Response;
+
+/// Inverse dynamics over a range of input positions: driving torque or force,
+/// every joint reaction, reduced inertia and torque, checked by virtual power.
+#[utoipa::path(post, path = "/v1/kinetostatics", tag = "kinetostatics", request_body = KinetostaticsRequest,
+    responses(
+        (status = 201, description = "Job computed and stored; `result` is a KinetostaticsResult", body = jobs::Job,
+            headers(("Location" = String, description = "/v1/jobs/{id}"))),
+        (status = 400, description = "Body is not valid JSON", body = Problem, content_type = "application/problem+json"),
+        (status = 413, description = "Body larger than the limit (default 1 MiB)", body = Problem, content_type = "application/problem+json"),
+        (status = 415, description = "Content type is not application/json", body = Problem, content_type = "application/problem+json"),
+        (status = 422, description = "Not a valid problem (unknown body or point, a mechanism that cannot be assembled or passes a singular position, ...); `errors` has a JSON pointer for every invalid field", body = Problem, content_type = "application/problem+json"),
+    ))]
+pub async fn create(State(state): State<AppState>, body: JsonBody<KinetostaticsRequest>) -> Result<Response, ApiError> {
+    let JsonBody { value, raw, unknown } = body;
+    jobs::create(&state, "kinetostatics", raw, move || compute(&value, unknown)).await
+}
+
+/// Validates and solves a request (also used by `mechdyn solve kinetostatics`).
+pub fn compute(request: &KinetostaticsRequest, mut errors: Vec<FieldError>) -> Result<KinetostaticsResult, ApiError> {
+    let problem = match request.to_problem() {
+        Ok(p) if errors.is_empty() => p,
+        Ok(_) => return Err(ApiError::Invalid(errors)),
+        Err(more) => {
+            errors.extend(more);
+            return Err(ApiError::Invalid(errors));
+        }
+    };
+    let solution = solve(&problem.mechanism, &problem.loads, &problem.positions, problem.outputs)
+        .map_err(|e| ApiError::Invalid(vec![engine_error(e, "/input")]))?;
+    let joint_names: Vec<String> = problem.mechanism.joints.iter().map(|j| j.name.clone()).collect();
+    Ok(KinetostaticsResult::new(solution, &problem, &joint_names))
+}

@@ -1,0 +1,394 @@
+//! `POST /v1/kinetostatics` request and its conversion into an engine problem.
+
+use crate::api::mechanism::{MechanismDto, PointRef, body_id};
+use crate::api::problem::FieldError;
+use crate::api::quantity::{Errors, FunctionDto, Quantity};
+use crate::engine::function::{Function, Side};
+use crate::engine::kinetostatics::{Load, Outputs};
+use crate::engine::model::{Driver, JointKind, Mechanism};
+use crate::units::Dim;
+use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
+use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
+use std::fmt;
+use utoipa::openapi::schema::{ArrayBuilder, OneOfBuilder, Schema};
+use utoipa::openapi::{Ref, RefOr};
+use utoipa::{PartialSchema, ToSchema};
+
+/// Most positions in one job.
+pub const MAX_STEPS: usize = 100_000;
+const DEFAULT_STEPS: usize = 360;
+/// Most loads in one job.
+pub const MAX_LOADS: usize = 500;
+
+/// A kinetostatic (inverse dynamics) problem: a mechanism, its driven input(s) and its loads.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct KinetostaticsRequest {
+    pub mechanism: MechanismDto,
+    /// One input, or a list of inputs (one per degree of freedom, sharing `steps`).
+    #[schema(value_type = Inputs)]
+    pub input: Inputs,
+    #[schema(max_items = 500)]
+    pub loads: Option<Vec<LoadDto>>,
+    /// Compute only these (default all).
+    pub outputs: Option<Vec<OutputKind>>,
+}
+
+/// What to compute.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum OutputKind {
+    Driving,
+    Reactions,
+    Kinematics,
+    Reduced,
+}
+
+/// A driven joint and the range of its coordinate.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct InputDto {
+    /// A revolute (crank) or prismatic (linear actuator) joint.
+    pub joint: String,
+    /// Speed (rad/s or m/s), or a Function of the coordinate (a motion law).
+    #[schema(value_type = FunctionDto)]
+    pub speed: FunctionDto,
+    /// Acceleration (rad/s² or m/s²); default 0, or ω·dω/dq for a motion law.
+    #[schema(value_type = Option<Quantity>)]
+    pub acceleration: Option<Quantity>,
+    /// First coordinate (default 0).
+    #[schema(value_type = Option<Quantity>)]
+    pub start: Option<Quantity>,
+    /// End of the range, excluded (default start + 2π for a revolute joint).
+    #[schema(value_type = Option<Quantity>)]
+    pub end: Option<Quantity>,
+    /// Number of positions start + k·(end − start)/steps, k = 0..steps−1 (default 360).
+    #[schema(minimum = 1, maximum = 100000)]
+    pub steps: Option<usize>,
+    /// Coordinate of the drawn configuration (default 0).
+    #[schema(value_type = Option<Quantity>)]
+    pub reference: Option<Quantity>,
+}
+
+/// One input or several.
+#[derive(Clone, Debug, Serialize)]
+#[serde(untagged)]
+pub enum Inputs {
+    One(Box<InputDto>),
+    Many(Vec<InputDto>),
+}
+
+struct InputsVisitor;
+
+impl<'de> Visitor<'de> for InputsVisitor {
+    type Value = Inputs;
+    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str("an input object or a list of them")
+    }
+    fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Inputs, A::Error> {
+        InputDto::deserialize(de::value::MapAccessDeserializer::new(map)).map(|i| Inputs::One(Box::new(i)))
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Inputs, A::Error> {
+        Vec::<InputDto>::deserialize(de::value::SeqAccessDeserializer::new(seq)).map(Inputs::Many)
+    }
+}
+
+impl<'de> Deserialize<'de> for Inputs {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(InputsVisitor)
+    }
+}
+
+impl PartialSchema for Inputs {
+    fn schema() -> RefOr<Schema> {
+        let one = || RefOr::Ref(Ref::from_schema_name("InputDto"));
+        OneOfBuilder::new()
+            .item(one())
+            .item(ArrayBuilder::new().items(one()).min_items(Some(1)).max_items(Some(10)))
+            .into()
+    }
+}
+impl ToSchema for Inputs {
+    fn schemas(schemas: &mut Vec<(String, RefOr<Schema>)>) {
+        schemas.push(("InputDto".into(), InputDto::schema()));
+        <InputDto as ToSchema>::schemas(schemas);
+    }
+}
+
+/// Load types.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum LoadType {
+    Force,
+    Torque,
+    Spring,
+    Damper,
+}
+
+/// A load. `force`: body, at, direction (fixed in the ground), magnitude (Function);
+/// `torque`: body, value (Function); `spring`: a, b ([body, point]), stiffness,
+/// free_length; `damper`: a, b, coefficient. Functions take `phi`, the first input's coordinate.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct LoadDto {
+    #[serde(rename = "type")]
+    pub kind: LoadType,
+    pub body: Option<String>,
+    #[schema(value_type = Option<PointRef>)]
+    pub at: Option<PointRef>,
+    #[schema(min_items = 2, max_items = 2)]
+    pub direction: Option<Vec<f64>>,
+    #[schema(value_type = Option<FunctionDto>)]
+    pub magnitude: Option<FunctionDto>,
+    #[schema(value_type = Option<FunctionDto>)]
+    pub value: Option<FunctionDto>,
+    /// [body, point]
+    #[schema(value_type = Option<Vec<Object>>, min_items = 2, max_items = 2)]
+    pub a: Option<(String, PointRef)>,
+    #[schema(value_type = Option<Vec<Object>>, min_items = 2, max_items = 2)]
+    pub b: Option<(String, PointRef)>,
+    /// N/m
+    #[schema(value_type = Option<Quantity>)]
+    pub stiffness: Option<Quantity>,
+    #[schema(value_type = Option<Quantity>)]
+    pub free_length: Option<Quantity>,
+    /// N·s/m
+    #[schema(value_type = Option<Quantity>)]
+    pub coefficient: Option<Quantity>,
+}
+
+/// The validated problem, ready for the engine.
+pub struct Problem {
+    pub mechanism: Mechanism,
+    pub body_names: Vec<String>,
+    pub loads: Vec<Load>,
+    pub positions: Vec<Vec<[f64; 3]>>,
+    pub outputs: Outputs,
+    pub want_driving: bool,
+    /// Per input: true for a prismatic (linear) input.
+    pub linear: Vec<bool>,
+}
+
+impl KinetostaticsRequest {
+    pub fn to_problem(&self) -> Result<Problem, Vec<FieldError>> {
+        let mut e = Errors::default();
+        let converted = self.mechanism.convert(&mut e, "/mechanism");
+        let outputs = self.outputs.clone().unwrap_or_else(|| {
+            vec![OutputKind::Driving, OutputKind::Reactions, OutputKind::Kinematics, OutputKind::Reduced]
+        });
+        let Some(c) = converted else { return Err(e.0) };
+        let mut mechanism = c.mechanism;
+        let inputs = match &self.input {
+            Inputs::One(i) => vec![(**i).clone()],
+            Inputs::Many(v) => v.clone(),
+        };
+        let (drivers, positions, linear) =
+            positions(&mut e, &mechanism, &inputs, matches!(self.input, Inputs::Many(_)));
+        mechanism.drivers = drivers;
+        let period = if linear.first().copied().unwrap_or(false) { 1.0 } else { 2.0 * PI };
+        let loads = self.loads(&mut e, &c.body_names, period);
+        if !e.0.is_empty() {
+            return Err(e.0);
+        }
+        Ok(Problem {
+            mechanism,
+            body_names: c.body_names,
+            loads,
+            positions,
+            outputs: Outputs {
+                reactions: outputs.contains(&OutputKind::Reactions),
+                reduced: outputs.contains(&OutputKind::Reduced),
+                kinematics: outputs.contains(&OutputKind::Kinematics),
+            },
+            want_driving: outputs.contains(&OutputKind::Driving),
+            linear,
+        })
+    }
+
+    fn loads(&self, e: &mut Errors, names: &[String], period: f64) -> Vec<Load> {
+        let list = self.loads.as_deref().unwrap_or_default();
+        if list.len() > MAX_LOADS {
+            e.push("/loads", format!("at most {MAX_LOADS} loads"));
+            return Vec::new();
+        }
+        list.iter()
+            .enumerate()
+            .filter_map(|(k, l)| load(e, l, &self.mechanism, names, period, &format!("/loads/{k}")))
+            .collect()
+    }
+}
+
+fn point_of(e: &mut Errors, p: &PointRef, dto: &MechanismDto, at: &str) -> Option<[f64; 2]> {
+    match p {
+        PointRef::Coords(c) if c.iter().all(|v| v.is_finite()) => Some(*c),
+        PointRef::Coords(_) => e.fail(at, "coordinates must be finite"),
+        PointRef::Name(n) => match dto.points.as_ref().and_then(|ps| ps.get(n)) {
+            Some(c) => Some(*c),
+            None => e.fail(at, format!("unknown point '{n}'")),
+        },
+    }
+}
+
+fn moving_body(e: &mut Errors, names: &[String], name: &str, at: &str) -> Option<usize> {
+    match body_id(names, name) {
+        Some(0) => e.fail(at, "a load on the ground does nothing; name a moving body"),
+        Some(b) => Some(b),
+        None => e.fail(at, format!("unknown body '{name}'")),
+    }
+}
+
+/// Builds one load, checking that it has exactly the fields of its type.
+fn load(e: &mut Errors, l: &LoadDto, mech: &MechanismDto, names: &[String], period: f64, at: &str) -> Option<Load> {
+    let present = [
+        ("body", l.body.is_some()),
+        ("at", l.at.is_some()),
+        ("direction", l.direction.is_some()),
+        ("magnitude", l.magnitude.is_some()),
+        ("value", l.value.is_some()),
+        ("a", l.a.is_some()),
+        ("b", l.b.is_some()),
+        ("stiffness", l.stiffness.is_some()),
+        ("free_length", l.free_length.is_some()),
+        ("coefficient", l.coefficient.is_some()),
+    ];
+    let fields: &[&str] = match l.kind {
+        LoadType::Force => &["body", "at", "direction", "magnitude"],
+        LoadType::Torque => &["body", "value"],
+        LoadType::Spring => &["a", "b", "stiffness", "free_length"],
+        LoadType::Damper => &["a", "b", "coefficient"],
+    };
+    let before = e.0.len();
+    for (name, given) in present {
+        match (fields.contains(&name), given) {
+            (true, false) => e.push(at, format!("a {:?} load needs \"{name}\"", l.kind).to_lowercase()),
+            (false, true) => e.push(&format!("{at}/{name}"), "does not apply to this load type"),
+            _ => {}
+        }
+    }
+    if e.0.len() > before {
+        return None;
+    }
+    let ends = |e: &mut Errors, side: &str, v: &(String, PointRef)| {
+        let b = body_id(names, &v.0).or_else(|| e.fail(&format!("{at}/{side}/0"), format!("unknown body '{}'", v.0)));
+        let p = point_of(e, &v.1, mech, &format!("{at}/{side}/1"));
+        Some((b?, p?))
+    };
+    match l.kind {
+        LoadType::Force => {
+            let body = moving_body(e, names, l.body.as_deref()?, &format!("{at}/body"));
+            let point = point_of(e, l.at.as_ref()?, mech, &format!("{at}/at"));
+            let direction = match l.direction.as_deref() {
+                Some([x, y]) if x.is_finite() && y.is_finite() && x.hypot(*y) > 0.0 => {
+                    Some([x / x.hypot(*y), y / x.hypot(*y)])
+                }
+                _ => e.fail(&format!("{at}/direction"), "must be a finite, non-zero vector [x, y]"),
+            };
+            let magnitude = e.function(l.magnitude.as_ref()?, Dim::FORCE, period, &format!("{at}/magnitude"));
+            Some(Load::Force { body: body?, at: point?, direction: direction?, magnitude: magnitude? })
+        }
+        LoadType::Torque => {
+            let body = moving_body(e, names, l.body.as_deref()?, &format!("{at}/body"));
+            let value = e.function(l.value.as_ref()?, Dim::TORQUE, period, &format!("{at}/value"));
+            Some(Load::Torque { body: body?, value: value? })
+        }
+        LoadType::Spring => {
+            let (a, b) = (ends(e, "a", l.a.as_ref()?), ends(e, "b", l.b.as_ref()?));
+            let k = e.quantity(l.stiffness.as_ref()?, Dim::STIFFNESS, &format!("{at}/stiffness"));
+            let l0 = e.quantity(l.free_length.as_ref()?, Dim::LENGTH, &format!("{at}/free_length"));
+            Some(Load::Spring { a: a?, b: b?, stiffness: k?, free_length: l0? })
+        }
+        LoadType::Damper => {
+            let (a, b) = (ends(e, "a", l.a.as_ref()?), ends(e, "b", l.b.as_ref()?));
+            let c = e.quantity(l.coefficient.as_ref()?, Dim::DAMPING, &format!("{at}/coefficient"));
+            Some(Load::Damper { a: a?, b: b?, coefficient: c? })
+        }
+    }
+}
+
+/// Drivers and the positions (coordinate, speed, acceleration per input) of every step.
+fn positions(
+    e: &mut Errors,
+    m: &Mechanism,
+    inputs: &[InputDto],
+    many: bool,
+) -> (Vec<Driver>, Vec<Vec<[f64; 3]>>, Vec<bool>) {
+    let mut drivers = Vec::new();
+    let mut ranges = Vec::new();
+    let mut linear = Vec::new();
+    let steps = inputs.first().and_then(|i| i.steps).unwrap_or(DEFAULT_STEPS);
+    if inputs.is_empty() || inputs.len() > 10 {
+        e.push("/input", "give 1 to 10 inputs");
+    }
+    if steps == 0 || steps > MAX_STEPS {
+        e.push(if many { "/input/0/steps" } else { "/input/steps" }, format!("must be 1 to {MAX_STEPS}"));
+    }
+    for (k, input) in inputs.iter().enumerate() {
+        let at = if many { format!("/input/{k}") } else { "/input".to_string() };
+        if k > 0 && input.steps.is_some_and(|s| s != steps) {
+            e.push(&format!("{at}/steps"), "all inputs share the steps of the first");
+        }
+        let Some(j) = m.joints.iter().position(|j| j.name == input.joint) else {
+            e.push(&format!("{at}/joint"), format!("unknown joint '{}'", input.joint));
+            continue;
+        };
+        let prismatic = match m.joints[j].kind {
+            JointKind::Revolute => false,
+            JointKind::Prismatic { .. } => true,
+            _ => {
+                e.push(&format!("{at}/joint"), "an input must be a revolute or prismatic joint");
+                continue;
+            }
+        };
+        if let Some((driver, range)) = input_range(e, input, j, prismatic, &at) {
+            drivers.push(driver);
+            ranges.push(range);
+            linear.push(prismatic);
+        }
+    }
+    let positions =
+        (0..steps).map(|s| ranges.iter().map(|r: &Range| r.at(s as f64 / steps as f64)).collect()).collect();
+    (drivers, if ranges.len() == inputs.len() { positions } else { Vec::new() }, linear)
+}
+
+struct Range {
+    start: f64,
+    end: f64,
+    speed: Function,
+    slope: Option<Function>,
+    acceleration: Option<f64>,
+}
+
+impl Range {
+    fn at(&self, fraction: f64) -> [f64; 3] {
+        let x = self.start + fraction * (self.end - self.start);
+        let w = self.speed.eval(x, Side::Right);
+        let a = self.acceleration.unwrap_or_else(|| self.slope.as_ref().map_or(0.0, |s| w * s.eval(x, Side::Right)));
+        [x, w, a]
+    }
+}
+
+fn input_range(e: &mut Errors, input: &InputDto, joint: usize, prismatic: bool, at: &str) -> Option<(Driver, Range)> {
+    let (coordinate, speed_dim, accel_dim) = if prismatic {
+        (Dim::LENGTH, Dim::SPEED, Dim::ACCELERATION)
+    } else {
+        (Dim::ANGLE, Dim::ANGULAR_SPEED, Dim::ANGULAR_ACCELERATION)
+    };
+    let value = |e: &mut Errors, q: &Option<Quantity>, name: &str| match q {
+        None => Some(None),
+        Some(q) if !prismatic => e.angle(q, &format!("{at}/{name}")).map(Some),
+        Some(q) => e.quantity(q, coordinate, &format!("{at}/{name}")).map(Some),
+    };
+    let start = value(e, &input.start, "start")?.unwrap_or(0.0);
+    let end = match value(e, &input.end, "end")? {
+        Some(v) => v,
+        None if !prismatic => start + 2.0 * PI,
+        None => return e.fail(at, "a prismatic input needs \"end\""),
+    };
+    let reference = value(e, &input.reference, "reference")?.unwrap_or(0.0);
+    let period = if prismatic { (end - start).abs().max(f64::MIN_POSITIVE) } else { 2.0 * PI };
+    let speed = e.function(&input.speed, speed_dim, period, &format!("{at}/speed"))?;
+    let acceleration = match &input.acceleration {
+        Some(q) => Some(e.quantity(q, accel_dim, &format!("{at}/acceleration"))?),
+        None => None,
+    };
+    let slope = speed.constant().is_none().then(|| speed.derivative());
+    Some((Driver { joint, reference }, Range { start, end, speed, slope, acceleration }))
+}

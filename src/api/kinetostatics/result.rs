@@ -1,0 +1,300 @@
+//! The `result` of a kinetostatics job, as stored and served, and its CSV table.
+
+use super::request::Problem;
+use crate::engine::kinetostatics::{Motion, Reaction, Solution, Step};
+use serde::{Deserialize, Serialize};
+use serde_json::Value;
+use std::collections::BTreeMap;
+use utoipa::ToSchema;
+
+/// A number for one input, a list (in input order) for several.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, ToSchema)]
+#[serde(untagged)]
+pub enum Scalars {
+    One(f64),
+    Many(Vec<f64>),
+}
+
+impl Scalars {
+    fn of(v: &[f64]) -> Self {
+        if v.len() == 1 { Self::One(v[0]) } else { Self::Many(v.to_vec()) }
+    }
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct GrublerDto {
+    /// 3(N − 1) − 2·P_I − P_II, N counting the ground.
+    pub mobility: i64,
+    /// 3(N − 1) equilibrium equations.
+    pub equations: i64,
+    /// Reaction components 2·P_I + P_II plus one driving action per input.
+    pub unknowns: i64,
+}
+
+/// The force body `by` exerts on body `on` at the joint (ground frame) and the
+/// couple about the joint point. Null when redundant constraints leave it undetermined.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct ReactionDto {
+    pub joint: String,
+    pub on: String,
+    pub by: String,
+    pub fx: Option<f64>,
+    pub fy: Option<f64>,
+    pub moment: Option<f64>,
+    pub determinate: bool,
+}
+
+/// Position, velocity and acceleration of a body's centre of mass and rotation.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct BodyMotion {
+    pub body: String,
+    pub x: f64,
+    pub y: f64,
+    /// Rotation from the drawn configuration, rad.
+    pub theta: f64,
+    pub vx: f64,
+    pub vy: f64,
+    pub omega: f64,
+    pub ax: f64,
+    pub ay: f64,
+    pub alpha: f64,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct StepDto {
+    #[schema(value_type = Scalars)]
+    pub input: Scalars,
+    /// Torque (N·m) or force (N) of each input on the second body of its joint.
+    #[schema(value_type = Option<Scalars>)]
+    pub driving: Option<Scalars>,
+    pub reactions: Option<Vec<ReactionDto>>,
+    /// I*(φ), one input only.
+    pub reduced_inertia: Option<f64>,
+    /// M*(φ) of every load, driver excluded.
+    pub reduced_torque: Option<f64>,
+    pub jacobian_condition: f64,
+    pub kinematics: Option<Vec<BodyMotion>>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct SummaryDto {
+    #[schema(value_type = Option<Scalars>)]
+    pub max_abs_driving: Option<Scalars>,
+    #[schema(value_type = Option<Scalars>)]
+    pub mean_driving: Option<Scalars>,
+    #[schema(value_type = Option<Scalars>)]
+    pub rms_driving: Option<Scalars>,
+    /// Largest reaction force magnitude per joint (null when undetermined or not computed).
+    pub max_reaction: BTreeMap<String, Option<f64>>,
+    /// Largest |driving from multipliers − driving from virtual power| / max |driving|.
+    pub virtual_power_residual: Option<f64>,
+    /// Whether any sampled position is near-singular (condition number above 1e8).
+    pub singular: bool,
+    #[schema(value_type = Vec<Scalars>)]
+    pub near_singular_inputs: Vec<Scalars>,
+    pub max_jacobian_condition: f64,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct KinetostaticsAccuracy {
+    /// Same as summary.virtual_power_residual: the two independent driving actions agree to this.
+    pub virtual_power_residual: Option<f64>,
+    /// Largest |Φ(q)| left by Newton–Raphson, m or rad.
+    pub max_constraint_residual: f64,
+    pub max_newton_iterations: usize,
+    pub method: String,
+}
+
+/// A driven input: its joint and the units of its coordinate and driving action.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct InputInfo {
+    pub joint: String,
+    /// "rad" (revolute) or "m" (prismatic).
+    pub coordinate_unit: String,
+    /// "N*m" (revolute) or "N" (prismatic).
+    pub driving_unit: String,
+}
+
+/// Result of a kinetostatics job (SI units).
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct KinetostaticsResult {
+    pub inputs: Vec<InputInfo>,
+    /// Degrees of freedom from the rank of the constraint Jacobian.
+    pub dof: usize,
+    pub grubler: GrublerDto,
+    pub redundant_constraints: usize,
+    pub steps: Vec<StepDto>,
+    pub summary: SummaryDto,
+    pub accuracy: KinetostaticsAccuracy,
+    pub warnings: Vec<String>,
+}
+
+const METHOD: &str = "body coordinates; Newton-Raphson assembly with second-order continuation; velocities and \
+accelerations from the constraint Jacobian; multipliers of Phi_q^T lambda = Q - M q'' for reactions and driving \
+actions, checked against virtual power";
+
+impl KinetostaticsResult {
+    pub fn new(s: Solution, p: &Problem, joint_names: &[String]) -> Self {
+        let steps = s.steps.iter().map(|st| step_dto(st, p, joint_names)).collect();
+        let mob = &s.mobility;
+        let mut warnings = Vec::new();
+        if mob.redundant_constraints > 0 {
+            warnings.push(format!(
+                "{} redundant constraint(s): the reactions of joints {:?} are not determined by equilibrium and are reported as null",
+                mob.redundant_constraints,
+                mob.indeterminate_joints.iter().map(|&j| &joint_names[j]).collect::<Vec<_>>()
+            ));
+        }
+        let sum = &s.summary;
+        let driving = |v: &Vec<f64>| p.want_driving.then(|| Scalars::of(v));
+        let inputs = p
+            .mechanism
+            .drivers
+            .iter()
+            .zip(&p.linear)
+            .map(|(d, &linear)| InputInfo {
+                joint: joint_names[d.joint].clone(),
+                coordinate_unit: if linear { "m" } else { "rad" }.into(),
+                driving_unit: if linear { "N" } else { "N*m" }.into(),
+            })
+            .collect();
+        Self {
+            inputs,
+            dof: mob.dof,
+            grubler: GrublerDto {
+                mobility: mob.grubler.mobility,
+                equations: mob.grubler.equations,
+                unknowns: mob.grubler.unknowns,
+            },
+            redundant_constraints: mob.redundant_constraints,
+            steps,
+            summary: SummaryDto {
+                max_abs_driving: driving(&sum.max_abs_driving),
+                mean_driving: driving(&sum.mean_driving),
+                rms_driving: driving(&sum.rms_driving),
+                max_reaction: joint_names
+                    .iter()
+                    .cloned()
+                    .zip(sum.max_reaction.iter().copied())
+                    .filter(|_| p.outputs.reactions)
+                    .collect(),
+                virtual_power_residual: sum.virtual_power_residual,
+                singular: !sum.near_singular.is_empty(),
+                near_singular_inputs: sum.near_singular.iter().map(|v| Scalars::of(v)).collect(),
+                max_jacobian_condition: sum.max_condition,
+            },
+            accuracy: KinetostaticsAccuracy {
+                virtual_power_residual: sum.virtual_power_residual,
+                max_constraint_residual: s.max_constraint_residual,
+                max_newton_iterations: s.max_iterations,
+                method: METHOD.into(),
+            },
+            warnings,
+        }
+    }
+}
+
+fn step_dto(s: &Step, p: &Problem, joint_names: &[String]) -> StepDto {
+    let names = &p.body_names;
+    let reaction = |r: &Reaction| {
+        let v = |x: f64| r.determinate.then_some(x);
+        ReactionDto {
+            joint: joint_names[r.joint].clone(),
+            on: names[r.on].clone(),
+            by: names[r.by].clone(),
+            fx: v(r.fx),
+            fy: v(r.fy),
+            moment: v(r.moment),
+            determinate: r.determinate,
+        }
+    };
+    StepDto {
+        input: Scalars::of(&s.input),
+        driving: p.want_driving.then(|| Scalars::of(&s.driving)),
+        reactions: p.outputs.reactions.then(|| s.reactions.iter().map(reaction).collect()),
+        reduced_inertia: s.reduced_inertia,
+        reduced_torque: s.reduced_torque,
+        jacobian_condition: s.condition,
+        kinematics: s.kinematics.as_ref().map(|m| motion(m, names)),
+    }
+}
+
+fn motion(m: &Motion, names: &[String]) -> Vec<BodyMotion> {
+    (0..m.q.len() / 3)
+        .map(|b| {
+            let c = 3 * b;
+            BodyMotion {
+                body: names[b + 1].clone(),
+                x: m.q[c],
+                y: m.q[c + 1],
+                theta: m.q[c + 2],
+                vx: m.qd[c],
+                vy: m.qd[c + 1],
+                omega: m.qd[c + 2],
+                ax: m.qdd[c],
+                ay: m.qdd[c + 1],
+                alpha: m.qdd[c + 2],
+            }
+        })
+        .collect()
+}
+
+/// The CSV table of a stored result: one row per step; columns input(s),
+/// driving action(s), I*, M*, condition number, and fx, fy, moment per joint.
+pub fn csv_table(result: &Value) -> (Vec<String>, Vec<Vec<String>>) {
+    let steps = result["steps"].as_array().cloned().unwrap_or_default();
+    let Some(first) = steps.first() else { return (Vec::new(), Vec::new()) };
+    let units = |key: &str| -> Vec<String> {
+        result["inputs"]
+            .as_array()
+            .into_iter()
+            .flatten()
+            .map(|i| i[key].as_str().unwrap_or("").replace('*', "_"))
+            .collect()
+    };
+    let numbered = |name: &str, units: Vec<String>| -> Vec<String> {
+        let n = units.len();
+        units
+            .iter()
+            .enumerate()
+            .map(|(k, u)| if n == 1 { format!("{name}_{u}") } else { format!("{name}_{}_{u}", k + 1) })
+            .collect()
+    };
+    let mut header = numbered("input", units("coordinate_unit"));
+    if !first["driving"].is_null() {
+        header.extend(numbered("driving", units("driving_unit")));
+    }
+    header.extend(["reduced_inertia_kg_m2", "reduced_torque_N_m", "jacobian_condition"].map(String::from));
+    let joints: Vec<String> = first["reactions"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(|r| r["joint"].as_str().map(String::from))
+        .collect();
+    for j in &joints {
+        header.extend([format!("{j}_fx_N"), format!("{j}_fy_N"), format!("{j}_moment_N_m")]);
+    }
+    let flat = |v: &Value| -> Vec<String> {
+        match v {
+            Value::Array(a) => a.iter().map(Value::to_string).collect(),
+            Value::Null => vec![String::new()],
+            other => vec![other.to_string()],
+        }
+    };
+    let cell = |v: &Value| if v.is_null() { String::new() } else { v.to_string() };
+    let rows = steps
+        .iter()
+        .map(|s| {
+            let mut row = flat(&s["input"]);
+            if !first["driving"].is_null() {
+                row.extend(flat(&s["driving"]));
+            }
+            row.extend([cell(&s["reduced_inertia"]), cell(&s["reduced_torque"]), cell(&s["jacobian_condition"])]);
+            for r in s["reactions"].as_array().into_iter().flatten() {
+                row.extend([cell(&r["fx"]), cell(&r["fy"]), cell(&r["moment"])]);
+            }
+            row
+        })
+        .collect();
+    (header, rows)
+}

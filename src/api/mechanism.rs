@@ -1,0 +1,297 @@
+//! Wire form of a planar mechanism (named points, bodies, joints) and its
+//! conversion into the engine's model, with every error under its pointer.
+
+use super::quantity::{Errors, Quantity};
+use crate::engine::model::{Body, BodyId, Joint, JointKind, Mechanism};
+use crate::units::Dim;
+use serde::de::{self, Deserializer, SeqAccess, Visitor};
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+use std::fmt;
+use utoipa::openapi::RefOr;
+use utoipa::openapi::schema::{ArrayBuilder, ObjectBuilder, OneOfBuilder, Schema, Type};
+use utoipa::{PartialSchema, ToSchema};
+
+/// Most bodies, joints or points in one mechanism.
+pub const MAX_ITEMS: usize = 200;
+
+/// A point: the name of a point of `points`, or coordinates [x, y] in m.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum PointRef {
+    Name(String),
+    Coords([f64; 2]),
+}
+
+struct PointVisitor;
+
+impl<'de> Visitor<'de> for PointVisitor {
+    type Value = PointRef;
+
+    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str("a point name or coordinates [x, y]")
+    }
+    fn visit_str<E: de::Error>(self, v: &str) -> Result<PointRef, E> {
+        Ok(PointRef::Name(v.to_string()))
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<PointRef, A::Error> {
+        <[f64; 2]>::deserialize(de::value::SeqAccessDeserializer::new(seq)).map(PointRef::Coords)
+    }
+}
+
+impl<'de> Deserialize<'de> for PointRef {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(PointVisitor)
+    }
+}
+
+impl PartialSchema for PointRef {
+    fn schema() -> RefOr<Schema> {
+        OneOfBuilder::new()
+            .item(
+                ObjectBuilder::new()
+                    .schema_type(Type::String)
+                    .max_length(Some(100))
+                    .description(Some("name of a point")),
+            )
+            .item(coords_schema())
+            .into()
+    }
+}
+impl ToSchema for PointRef {}
+
+fn coords_schema() -> ArrayBuilder {
+    ArrayBuilder::new()
+        .items(ObjectBuilder::new().schema_type(Type::Number))
+        .min_items(Some(2))
+        .max_items(Some(2))
+        .description(Some("[x, y] in m"))
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct BodyDto {
+    #[schema(max_length = 100)]
+    pub name: String,
+    /// kg (≥ 0; default 0)
+    #[schema(value_type = Option<Quantity>)]
+    pub mass: Option<Quantity>,
+    /// Inertia about the centre of mass, kg·m² (≥ 0; default 0).
+    #[schema(value_type = Option<Quantity>)]
+    pub inertia: Option<Quantity>,
+    /// Centre of mass: required when the mass is not 0.
+    #[schema(value_type = Option<PointRef>)]
+    pub cg: Option<PointRef>,
+}
+
+/// Joint types.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum JointType {
+    Revolute,
+    Prismatic,
+    PinSlot,
+    Gear,
+}
+
+/// A joint between two bodies (`ground` is implicit). `axis` for prismatic and
+/// pin_slot; `ratio` or `teeth` (and `internal`) and optional `carrier` for gears.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct JointDto {
+    #[schema(max_length = 100)]
+    pub name: String,
+    #[serde(rename = "type")]
+    pub kind: JointType,
+    #[schema(min_items = 2, max_items = 2)]
+    pub bodies: Vec<String>,
+    #[schema(value_type = Option<PointRef>)]
+    pub at: Option<PointRef>,
+    #[schema(min_items = 2, max_items = 2)]
+    pub axis: Option<Vec<f64>>,
+    /// Gear: ω₂ − ω_c = ratio·(ω₁ − ω_c).
+    pub ratio: Option<f64>,
+    /// Gear: tooth numbers [z₁, z₂].
+    #[schema(min_items = 2, max_items = 2)]
+    pub teeth: Option<Vec<f64>>,
+    /// Gear: internal mesh (default false).
+    pub internal: Option<bool>,
+    /// Gear: the carrier body (default ground).
+    pub carrier: Option<String>,
+    /// Gear module (m): reported tooth force at the pitch point (not yet computed).
+    #[schema(value_type = Option<Quantity>)]
+    pub module: Option<Quantity>,
+    #[schema(value_type = Option<Quantity>)]
+    pub pressure_angle: Option<Quantity>,
+}
+
+/// A planar mechanism drawn in one assembled configuration.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[schema(example = json!({
+    "points": {"O": [0, 0], "A": [0.08, 0], "B": [0.37933, 0.02]},
+    "bodies": [
+        {"name": "crank", "mass": 2.0, "inertia": 0.004, "cg": [0.02, 0]},
+        {"name": "rod", "mass": 1.2, "inertia": 0.012, "cg": [0.1698, 0.006]},
+        {"name": "piston", "mass": 0.9, "inertia": 0.001, "cg": "B"}
+    ],
+    "joints": [
+        {"name": "O", "type": "revolute", "bodies": ["ground", "crank"], "at": "O"},
+        {"name": "A", "type": "revolute", "bodies": ["crank", "rod"], "at": "A"},
+        {"name": "B", "type": "revolute", "bodies": ["rod", "piston"], "at": "B"},
+        {"name": "guide", "type": "prismatic", "bodies": ["ground", "piston"], "at": "B", "axis": [1, 0]}
+    ],
+    "gravity": [0, -9.81]
+}))]
+pub struct MechanismDto {
+    /// Named points (m) in the drawn configuration.
+    #[schema(value_type = Object)]
+    pub points: Option<BTreeMap<String, [f64; 2]>>,
+    #[schema(min_items = 1, max_items = 200)]
+    pub bodies: Vec<BodyDto>,
+    #[schema(min_items = 1, max_items = 200)]
+    pub joints: Vec<JointDto>,
+    /// Gravitational acceleration [gx, gy], m/s² (default none).
+    #[schema(min_items = 2, max_items = 2)]
+    pub gravity: Option<Vec<f64>>,
+}
+
+/// The model and the names needed to read results back.
+pub struct Converted {
+    pub mechanism: Mechanism,
+    pub body_names: Vec<String>,
+}
+
+impl MechanismDto {
+    /// Converts to the engine model (without drivers), at pointer `at`.
+    pub fn convert(&self, e: &mut Errors, at: &str) -> Option<Converted> {
+        let before = e.0.len();
+        if self.bodies.len() > MAX_ITEMS || self.joints.len() > MAX_ITEMS {
+            e.push(at, format!("at most {MAX_ITEMS} bodies and {MAX_ITEMS} joints"));
+        }
+        let points = self.points.clone().unwrap_or_default();
+        if let Some((name, _)) = points.iter().find(|(_, p)| !p.iter().all(|v| v.is_finite())) {
+            e.push(&format!("{at}/points/{}", super::json::escape(name)), "coordinates must be finite");
+        }
+        let point = |e: &mut Errors, p: &PointRef, ptr: &str| match p {
+            PointRef::Coords(c) if c.iter().all(|v| v.is_finite()) => Some(*c),
+            PointRef::Coords(_) => e.fail(ptr, "coordinates must be finite"),
+            PointRef::Name(n) => match points.get(n) {
+                Some(c) => Some(*c),
+                None => e.fail(ptr, format!("unknown point '{n}'")),
+            },
+        };
+        let mut names = vec!["ground".to_string()];
+        let mut bodies = vec![Body { name: "ground".into(), mass: 0.0, inertia: 0.0, cg: [0.0, 0.0] }];
+        for (k, b) in self.bodies.iter().enumerate() {
+            let ptr = format!("{at}/bodies/{k}");
+            if names.contains(&b.name) {
+                e.push(&format!("{ptr}/name"), format!("duplicate body name '{}' (ground is implicit)", b.name));
+            }
+            names.push(b.name.clone());
+            let mass = non_negative(e, b.mass.as_ref(), Dim::MASS, &format!("{ptr}/mass"));
+            let inertia = non_negative(e, b.inertia.as_ref(), Dim::INERTIA, &format!("{ptr}/inertia"));
+            let cg = match &b.cg {
+                Some(p) => point(e, p, &format!("{ptr}/cg")),
+                None if mass.unwrap_or(0.0) > 0.0 => e.fail(&ptr, "a body with mass needs \"cg\""),
+                None => Some(self.first_joint_point(&b.name, &points).unwrap_or([0.0, 0.0])),
+            };
+            bodies.push(Body {
+                name: b.name.clone(),
+                mass: mass.unwrap_or(0.0),
+                inertia: inertia.unwrap_or(0.0),
+                cg: cg.unwrap_or([0.0; 2]),
+            });
+        }
+        let body = |e: &mut Errors, n: &str, ptr: &str| match names.iter().position(|x| x == n) {
+            Some(i) => Some(i),
+            None => e.fail(ptr, format!("unknown body '{n}'")),
+        };
+        let mut joints = Vec::with_capacity(self.joints.len());
+        for (k, j) in self.joints.iter().enumerate() {
+            let ptr = format!("{at}/joints/{k}");
+            if self.joints[..k].iter().any(|o| o.name == j.name) {
+                e.push(&format!("{ptr}/name"), format!("duplicate joint name '{}'", j.name));
+            }
+            if j.bodies.len() != 2 {
+                e.push(&format!("{ptr}/bodies"), "must name exactly two bodies");
+                continue;
+            }
+            let b0 = body(e, &j.bodies[0], &format!("{ptr}/bodies/0"));
+            let b1 = body(e, &j.bodies[1], &format!("{ptr}/bodies/1"));
+            if j.bodies[0] == j.bodies[1] {
+                e.push(&format!("{ptr}/bodies"), "a joint cannot tie a body to itself");
+            }
+            let at_point = match &j.at {
+                Some(p) => point(e, p, &format!("{ptr}/at")),
+                None if j.kind == JointType::Gear => Some([0.0, 0.0]),
+                None => e.fail(&ptr, "\"at\" is required"),
+            };
+            let kind = joint_kind(e, j, &names, &ptr);
+            if let (Some(b0), Some(b1), Some(at_point), Some(kind)) = (b0, b1, at_point, kind) {
+                joints.push(Joint { name: j.name.clone(), kind, bodies: [b0, b1], at: at_point });
+            }
+        }
+        let gravity = match self.gravity.as_deref() {
+            None => [0.0, 0.0],
+            Some([gx, gy]) if gx.is_finite() && gy.is_finite() => [*gx, *gy],
+            Some(_) => e.fail(&format!("{at}/gravity"), "must be [gx, gy], finite").unwrap_or([0.0; 2]),
+        };
+        (e.0.len() == before).then(|| Converted {
+            mechanism: Mechanism { bodies, joints, drivers: Vec::new(), gravity },
+            body_names: names,
+        })
+    }
+
+    /// The point of the first joint that names this body (the cg of a massless link).
+    fn first_joint_point(&self, body: &str, points: &BTreeMap<String, [f64; 2]>) -> Option<[f64; 2]> {
+        self.joints.iter().filter(|j| j.bodies.iter().any(|b| b == body)).find_map(|j| match &j.at {
+            Some(PointRef::Coords(c)) => Some(*c),
+            Some(PointRef::Name(n)) => points.get(n).copied(),
+            None => None,
+        })
+    }
+}
+
+fn non_negative(e: &mut Errors, q: Option<&Quantity>, dim: Dim, at: &str) -> Option<f64> {
+    let v = q.map_or(Some(0.0), |q| e.quantity(q, dim, at))?;
+    if v >= 0.0 { Some(v) } else { e.fail(at, "must not be negative") }
+}
+
+fn unit_axis(e: &mut Errors, axis: Option<&[f64]>, at: &str) -> Option<[f64; 2]> {
+    match axis {
+        Some([x, y]) if x.is_finite() && y.is_finite() && x.hypot(*y) > 0.0 => {
+            let n = x.hypot(*y);
+            Some([x / n, y / n])
+        }
+        Some(_) => e.fail(&format!("{at}/axis"), "must be a finite, non-zero vector [x, y]"),
+        None => e.fail(at, "\"axis\" is required for this joint type"),
+    }
+}
+
+fn joint_kind(e: &mut Errors, j: &JointDto, names: &[String], at: &str) -> Option<JointKind> {
+    match j.kind {
+        JointType::Revolute => Some(JointKind::Revolute),
+        JointType::Prismatic => unit_axis(e, j.axis.as_deref(), at).map(|axis| JointKind::Prismatic { axis }),
+        JointType::PinSlot => unit_axis(e, j.axis.as_deref(), at).map(|axis| JointKind::PinSlot { axis }),
+        JointType::Gear => {
+            let carrier = match &j.carrier {
+                None => Some(0),
+                Some(c) => match names.iter().position(|n| n == c) {
+                    Some(i) => Some(i),
+                    None => e.fail(&format!("{at}/carrier"), format!("unknown body '{c}'")),
+                },
+            };
+            let ratio = match (j.ratio, j.teeth.as_deref()) {
+                (Some(k), None) if k.is_finite() && k != 0.0 => Some(k),
+                (None, Some([z1, z2])) if *z1 > 0.0 && *z2 > 0.0 => {
+                    Some(if j.internal.unwrap_or(false) { z1 / z2 } else { -z1 / z2 })
+                }
+                _ => e.fail(at, "a gear needs a finite non-zero \"ratio\" or \"teeth\": [z1, z2] (positive)"),
+            };
+            Some(JointKind::Gear { ratio: ratio?, carrier: carrier? })
+        }
+    }
+}
+
+/// The id of a named body.
+pub fn body_id(names: &[String], name: &str) -> Option<BodyId> {
+    names.iter().position(|n| n == name)
+}
