@@ -80,6 +80,9 @@ pub fn motion(m: &Mechanism, q: &[f64], inputs: &[[f64; 3]]) -> Option<(Vec<f64>
 /// reference configuration and continuing from each position to the next.
 pub fn sweep(m: &Mechanism, positions: &[Vec<[f64; 3]>]) -> Result<Vec<Configuration>, EngineError> {
     let mut q = m.reference_q();
+    if let Some(first) = positions.first() {
+        approach(m, &mut q, first)?;
+    }
     let mut out: Vec<Configuration> = Vec::with_capacity(positions.len());
     let mut coefficients: Option<(Vec<f64>, Vec<f64>, Vec<f64>)> = None;
     for (step, inputs) in positions.iter().enumerate() {
@@ -104,4 +107,23 @@ pub fn sweep(m: &Mechanism, positions: &[Vec<[f64; 3]>]) -> Result<Vec<Configura
         out.push(Configuration { q: q.clone(), qd, qdd, condition: cond, iterations, residual });
     }
     Ok(out)
+}
+
+/// Largest change of an input coordinate per continuation step on the way
+/// from the drawn configuration to the first position (rad or m).
+const APPROACH_STEP: f64 = 0.05;
+
+/// Moves q from the drawn configuration (inputs at their `reference`) to the
+/// first requested position in small steps, so the assembly branch drawn is
+/// the branch solved.
+fn approach(m: &Mechanism, q: &mut [f64], target: &[[f64; 3]]) -> Result<(), EngineError> {
+    let from: Vec<f64> = m.drivers.iter().map(|d| d.reference).collect();
+    let span = from.iter().zip(target).map(|(a, t)| (t[0] - a).abs()).fold(0.0, f64::max);
+    let n = (span / APPROACH_STEP).ceil().min(10_000.0) as usize;
+    for k in 1..n {
+        let f = k as f64 / n as f64;
+        let inputs: Vec<[f64; 3]> = from.iter().zip(target).map(|(a, t)| [a + f * (t[0] - a), 0.0, 0.0]).collect();
+        assemble(m, q, &inputs, 0)?;
+    }
+    Ok(())
 }

@@ -141,3 +141,81 @@ async fn a_non_grashof_crank_asked_for_a_full_turn_is_422() {
         "{message}"
     );
 }
+
+/// Reference case K5 (seed 002): differential train, sun z1 = 60, planet
+/// z3 = 30, ring z4 = 120, carrier at 50 rpm, ring at 25 rpm (Willis), 15 N·m
+/// on the sun. Two inputs (carrier, ring) give the other members' speeds and
+/// the torques the carrier and ring need: T2 = −45 N·m, T4 = +30 N·m
+/// (virtual power; checked in the case by the tooth force 250 N).
+#[tokio::test]
+async fn k5_differential_gear_train_with_two_inputs() {
+    let (app, c) = (TestApp::new().await, case("K5_differential_gear_train"));
+    let e = &c["expected"];
+    let r = post(&app, &request("k5_differential")).await["result"].clone();
+    assert_eq!((r["dof"].as_u64(), r["grubler"]["mobility"].as_i64()), (Some(2), Some(2)));
+    let rpm = std::f64::consts::PI / 30.0;
+    for step in r["steps"].as_array().unwrap() {
+        let driving = step["driving"].as_array().unwrap();
+        close(&driving[0], e["torque_on_carrier2_Nm"].as_f64().unwrap(), 1e-9, "T on the carrier");
+        close(&driving[1], e["torque_on_wheel4_Nm"].as_f64().unwrap(), 1e-9, "T on the ring");
+        let bodies = step["kinematics"].as_array().unwrap();
+        close(&bodies[0]["omega"], 100.0 * rpm, 1e-12, "ω sun (given in the case: 100 rpm)");
+        close(&bodies[2]["omega"], e["omega3_rpm"].as_f64().unwrap() * rpm, 1e-12, "ω planet");
+        assert!(step["reduced_inertia"].is_null(), "I* is defined for one DOF only");
+    }
+}
+
+/// Scotch yoke (course notes P.81 in closed form): crank R = 0.1 m (2 kg at its
+/// pin, I_G = 0.05 kg·m²), yoke 5 kg driven by the pin in its vertical slot,
+/// load −100 sin φ N along x on the yoke, ω = 10 rad/s:
+/// I* = I_G + mR² + MR² sin²φ = 0.07 + 0.05 sin²φ, M* = F·dx/dφ = 10 sin²φ,
+/// T = ½ dI*/dφ ω² − M* = 5 sin φ cos φ − 10 sin²φ; mean T = −5 N·m, which
+/// is the energy balance: the driver's work over a turn equals −∫M* dφ = −10π J.
+#[tokio::test]
+async fn scotch_yoke_matches_its_closed_form() {
+    let app = TestApp::new().await;
+    let body = json!({
+        "mechanism": {
+            "points": {"O": [0, 0], "A": [0.1, 0]},
+            "bodies": [
+                {"name": "crank", "mass": 2, "inertia": 0.05, "cg": "A"},
+                {"name": "yoke", "mass": 5, "inertia": 0.3, "cg": [0.3, 0]}
+            ],
+            "joints": [
+                {"name": "O", "type": "revolute", "bodies": ["ground", "crank"], "at": "O"},
+                {"name": "slide", "type": "prismatic", "bodies": ["ground", "yoke"], "at": [0.3, 0], "axis": [1, 0]},
+                {"name": "pin", "type": "pin_slot", "bodies": ["yoke", "crank"], "at": "A", "axis": [0, 1]}
+            ]
+        },
+        "input": {"joint": "O", "speed": 10, "steps": 16},
+        "loads": [{"type": "force", "body": "yoke", "at": "A", "direction": [1, 0], "magnitude": {"expr": "-100*sin(phi)"}}]
+    });
+    let r = post(&app, &body).await["result"].clone();
+    for step in r["steps"].as_array().unwrap() {
+        let phi = step["input"].as_f64().unwrap();
+        let (s, c) = phi.sin_cos();
+        let t = (step["driving"].as_f64().unwrap() - (5.0 * s * c - 10.0 * s * s)).abs();
+        assert!(t < 1e-10, "T at {phi}: off by {t}");
+        assert!((step["reduced_inertia"].as_f64().unwrap() - (0.07 + 0.05 * s * s)).abs() < 1e-12);
+        assert!((step["reduced_torque"].as_f64().unwrap() - 10.0 * s * s).abs() < 1e-10);
+    }
+    close(&r["summary"]["mean_driving"], -5.0, 1e-12, "mean T (energy balance)");
+}
+
+/// Starting far from the drawn configuration keeps the drawn assembly branch:
+/// the slider-crank drawn at φ = 0 and started at φ = 170° (continued there in
+/// small steps) gives the same answer as the sweep that passes 170° (K1 at
+/// 180° from the case, the row computed with the piston on the +x side).
+#[tokio::test]
+async fn a_start_far_from_the_drawing_keeps_the_assembly_branch() {
+    let (app, c) = (TestApp::new().await, case("K1_offset_slider_crank"));
+    let mut body = request("k1_offset_slider_crank");
+    body["input"]["start"] = json!("180 deg");
+    body["input"]["end"] = json!("540 deg");
+    let r = post(&app, &body).await["result"].clone();
+    let row = &c["expected"]["table"][6];
+    assert_eq!(row["phi_deg"], 180);
+    let t = r["steps"][0]["driving"].as_f64().unwrap() - row["T_drive_Nm"].as_f64().unwrap();
+    assert!(t.abs() < 1e-8, "{t}");
+    close(&r["steps"][0]["kinematics"][2]["x"], row["piston_x_m"].as_f64().unwrap(), 1e-11, "piston on the +x side");
+}
