@@ -9,7 +9,9 @@
 //! expressions by adaptive Gauss–Kronrod quadrature.
 
 use super::expr::Expr;
+use super::machine::{Machine, Reduced};
 use super::numeric::quadrature::{Integral, integrate};
+use std::sync::Arc;
 
 /// Which one-sided limit to take at a breakpoint.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -56,6 +58,10 @@ pub enum Function {
     Expr(Expr),
     Segments(Vec<Segment>),
     Table(Table),
+    /// A reduced quantity of a mechanism, evaluated by solving it at φ.
+    Machine(Arc<Machine>, Reduced),
+    /// The sum of several functions.
+    Sum(Vec<Function>),
 }
 
 impl Table {
@@ -211,6 +217,8 @@ impl Function {
                 })
                 .map_or(0.0, |s| s.expr.eval(&[phi])),
             Self::Table(t) => t.eval(phi, side),
+            Self::Machine(m, what) => m.eval(phi, *what),
+            Self::Sum(fs) => fs.iter().map(|f| f.eval(phi, side)).sum(),
         }
     }
 
@@ -225,6 +233,8 @@ impl Function {
                 segs.iter().find(|s| s.from <= anchor && anchor < s.to).map_or(0.0, |s| s.expr.eval(&[phi]))
             }
             Self::Table(t) => t.eval_frozen(phi, anchor),
+            Self::Machine(m, what) => m.eval(phi, *what),
+            Self::Sum(fs) => fs.iter().map(|f| f.eval_frozen(phi, anchor)).sum(),
         }
     }
 
@@ -233,6 +243,7 @@ impl Function {
         match self {
             Self::Constant(c) => Some(*c),
             Self::Expr(e) => e.constant(),
+            Self::Sum(fs) => fs.iter().map(Function::constant).sum(),
             _ => None,
         }
     }
@@ -246,6 +257,10 @@ impl Function {
                 segs.iter().map(|s| Segment { from: s.from, to: s.to, expr: s.expr.derivative(0) }).collect(),
             ),
             Self::Table(t) => Self::Table(Table { order: t.order + 1, ..t.clone() }),
+            Self::Machine(m, Reduced::Inertia) => Self::Machine(m.clone(), Reduced::InertiaSlope),
+            // Only I* is differentiated (for the equation of motion); others have no use for it.
+            Self::Machine(..) => Self::Constant(f64::NAN),
+            Self::Sum(fs) => Self::Sum(fs.iter().map(Function::derivative).collect()),
         }
     }
 
@@ -255,6 +270,8 @@ impl Function {
             Self::Constant(_) | Self::Expr(_) => vec![],
             Self::Segments(segs) => segs.iter().flat_map(|s| [s.from, s.to]).collect(),
             Self::Table(t) => t.breakpoints().collect(),
+            Self::Machine(m, _) => m.breakpoints(),
+            Self::Sum(fs) => fs.iter().flat_map(|f| f.breakpoints(period)).collect(),
         };
         b.retain(|x| *x > 0.0 && *x < period);
         b
@@ -266,6 +283,14 @@ impl Function {
         match self {
             Self::Constant(c) => Integral { value: c * (b - a), ..Integral::default() },
             Self::Table(t) => Integral { value: t.integral(a, b), ..Integral::default() },
+            Self::Machine(m, what) => integrate(|x| m.eval(x, *what), a, b, abs_tol, rel_tol, MAX_EVALUATIONS),
+            Self::Sum(fs) => {
+                let mut total = Integral::default();
+                for f in fs {
+                    total += f.integral(a, b, abs_tol / fs.len() as f64, rel_tol);
+                }
+                total
+            }
             Self::Expr(e) => integrate_expr(e, a, b, abs_tol, rel_tol),
             Self::Segments(segs) => {
                 let mut total = Integral::default();
@@ -282,9 +307,11 @@ impl Function {
     }
 }
 
+/// Evaluations allowed for one adaptive integral.
+const MAX_EVALUATIONS: usize = 200_000;
+
 /// Adaptive quadrature of an expression of φ (exact when it is constant).
 fn integrate_expr(e: &Expr, a: f64, b: f64, abs_tol: f64, rel_tol: f64) -> Integral {
-    const MAX_EVALUATIONS: usize = 200_000;
     match e.constant() {
         Some(c) => Integral { value: c * (b - a), ..Integral::default() },
         None => integrate(|x| e.eval(&[x]), a, b, abs_tol, rel_tol, MAX_EVALUATIONS),

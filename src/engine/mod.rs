@@ -11,6 +11,7 @@ pub mod flywheel;
 pub mod function;
 pub mod kinematics;
 pub mod kinetostatics;
+pub mod machine;
 pub mod mobility;
 pub mod model;
 pub mod numeric;

@@ -3,7 +3,7 @@
 mod request;
 mod result;
 
-pub use request::{DiskDto, FlywheelDto, FlywheelRequest, TorqueDto};
+pub use request::{DiskDto, FlywheelDto, FlywheelRequest, MachineDto, TorqueDto};
 pub use result::{
     AccuracyDto, AreaDto, CSV_COLUMNS, CheckDto, DiskOut, FlywheelResult, InertiaPair, ItemWork, SampleDto, csv_table,
 };
@@ -38,7 +38,7 @@ pub fn compute(request: &FlywheelRequest, mut errors: Vec<FieldError>) -> Result
     match problem {
         Ok(p) if errors.is_empty() => {
             let solution = solve(&p).map_err(|e| ApiError::Invalid(vec![engine_error(e, "/torques")]))?;
-            Ok(FlywheelResult::new(solution, request.torques.iter().map(|t| t.name.clone())))
+            Ok(FlywheelResult::new(solution, p.torques.iter().map(|t| t.name.clone())))
         }
         Ok(_) => Err(ApiError::Invalid(errors)),
         Err(more) => {

@@ -1,11 +1,15 @@
 //! `POST /v1/flywheel` request and its conversion into an engine problem.
 
+use crate::api::kinetostatics::{InputDto, LoadDto, machine_parts};
+use crate::api::mechanism::MechanismDto;
 use crate::api::quantity::{Errors, FunctionDto, Quantity};
 use crate::engine::flywheel::{DiskSize, DiskSpec, FlywheelProblem, Load, TorqueItem};
 use crate::engine::function::Function;
+use crate::engine::machine::{Machine, Reduced};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
+use std::sync::Arc;
 use utoipa::ToSchema;
 
 /// Most torque items in one request.
@@ -42,9 +46,9 @@ pub struct FlywheelRequest {
     pub min_speed: Option<Quantity>,
     #[schema(value_type = Option<Quantity>)]
     pub max_speed: Option<Quantity>,
-    /// Torques on the machine, positive when they drive it.
-    #[schema(min_items = 1, max_items = 100)]
-    pub torques: Vec<TorqueDto>,
+    /// Torques on the machine, positive when they drive it (at least one item, or a `machine`).
+    #[schema(max_items = 100)]
+    pub torques: Option<Vec<TorqueDto>>,
     /// I*(φ) of the machine reduced to the reference shaft, without flywheel (default 0).
     #[schema(value_type = Option<FunctionDto>)]
     pub reduced_inertia: Option<FunctionDto>,
@@ -60,9 +64,20 @@ pub struct FlywheelRequest {
     /// Rows of the sampled table in the result and its CSV (default 361; 0 for none).
     #[schema(minimum = 0, maximum = 100000)]
     pub samples: Option<usize>,
-    /// Derive M* and I* from a mechanism: not available yet in this version.
-    #[schema(value_type = Option<Object>)]
-    pub machine: Option<serde_json::Value>,
+    /// A mechanism whose loads and inertias give M*(φ) and I*(φ) (added to
+    /// `torques` and `reduced_inertia`); its input joint is the reference shaft.
+    pub machine: Option<MachineDto>,
+}
+
+/// A driven mechanism with its loads, as in kinetostatics. The input's
+/// `speed`, `start`, `end` and `steps` do not apply: the flywheel's mean speed
+/// and period rule.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct MachineDto {
+    pub mechanism: MechanismDto,
+    pub input: InputDto,
+    #[schema(max_items = 500)]
+    pub loads: Option<Vec<LoadDto>>,
 }
 
 /// A torque item: `value` (a Function), or `"balance": true`.
@@ -120,18 +135,23 @@ impl FlywheelRequest {
             Some(1) => e.fail("/samples", "must be 0 (no table) or at least 2"),
             n => Some(n.unwrap_or(DEFAULT_SAMPLES)),
         };
-        if self.machine.is_some() {
-            e.push(
-                "/machine",
-                "deriving M* and I* from a mechanism is not available yet; give torques and reduced_inertia",
-            );
-        }
         let p = period.unwrap_or(2.0 * PI);
-        let torques = self.torques(&mut e, p);
-        let inertia = match &self.reduced_inertia {
+        let machine = self.machine(&mut e, p, speeds.map_or(0.0, |s| s.0));
+        let mut torques = self.torques(&mut e, p, machine.is_some());
+        let mut inertia = match &self.reduced_inertia {
             Some(f) => e.function(f, Dim::INERTIA, p, "/reduced_inertia"),
             None => Some(Function::Constant(0.0)),
         };
+        if let (Some(m), Some(t), Some(i)) = (machine, torques.as_mut(), inertia.as_mut()) {
+            let label = "/machine".to_string();
+            t.push(TorqueItem {
+                name: "machine".into(),
+                load: Load::Given(Function::Machine(m.clone(), Reduced::Torque)),
+                ratio: 1.0,
+                label,
+            });
+            *i = Function::Sum(vec![i.clone(), Function::Machine(m, Reduced::Inertia)]);
+        }
         let existing = match &self.existing_inertia {
             Some(q) => e.quantity(q, Dim::INERTIA, "/existing_inertia"),
             None => Some(0.0),
@@ -203,16 +223,27 @@ impl FlywheelRequest {
         Some((mean, eps))
     }
 
-    fn torques(&self, e: &mut Errors, period: f64) -> Option<Vec<TorqueItem>> {
-        if self.torques.is_empty() || self.torques.len() > MAX_TORQUES {
-            return e.fail("/torques", format!("must hold 1 to {MAX_TORQUES} items"));
+    fn torques(&self, e: &mut Errors, period: f64, machine: bool) -> Option<Vec<TorqueItem>> {
+        let list = self.torques.as_deref().unwrap_or_default();
+        if (list.is_empty() && !machine) || list.len() > MAX_TORQUES {
+            return e.fail("/torques", format!("must hold 1 to {MAX_TORQUES} items (or give a machine)"));
         }
-        if self.torques.iter().filter(|t| t.balance == Some(true)).count() > 1 {
+        if list.iter().filter(|t| t.balance == Some(true)).count() > 1 {
             e.push("/torques", "at most one item may have \"balance\": true");
         }
-        let items: Vec<Option<TorqueItem>> =
-            self.torques.iter().enumerate().map(|(i, t)| torque(e, t, i, period)).collect();
+        let items: Vec<Option<TorqueItem>> = list.iter().enumerate().map(|(i, t)| torque(e, t, i, period)).collect();
         items.into_iter().collect()
+    }
+
+    /// The machine's reduced quantities, solved around the period at the mean speed.
+    fn machine(&self, e: &mut Errors, period: f64, mean_speed: f64) -> Option<Arc<Machine>> {
+        let m = self.machine.as_ref()?;
+        let loads = m.loads.as_deref().unwrap_or_default();
+        let (mechanism, loads) = machine_parts(e, &m.mechanism, &m.input, loads, period, "/machine")?;
+        match Machine::new(mechanism, loads, mean_speed, period) {
+            Ok(m) => Some(Arc::new(m)),
+            Err(err) => e.fail("/machine", err.to_string()),
+        }
     }
 
     fn flywheel(&self, e: &mut Errors) -> (Option<f64>, Option<Option<DiskSpec>>) {

@@ -3,6 +3,7 @@
 mod request;
 mod result;
 
+pub(crate) use request::machine_parts;
 pub use request::{InputDto, Inputs, KinetostaticsRequest, LoadDto, LoadType, OutputKind};
 pub use result::{KinetostaticsResult, csv_table};
 

@@ -50,8 +50,9 @@ pub struct InputDto {
     /// A revolute (crank) or prismatic (linear actuator) joint.
     pub joint: String,
     /// Speed (rad/s or m/s), or a Function of the coordinate (a motion law).
-    #[schema(value_type = FunctionDto)]
-    pub speed: FunctionDto,
+    /// Required for kinetostatics; a flywheel's machine runs at its mean speed.
+    #[schema(value_type = Option<FunctionDto>)]
+    pub speed: Option<FunctionDto>,
     /// Acceleration (rad/s² or m/s²); default 0, or ω·dω/dq for a motion law.
     #[schema(value_type = Option<Quantity>)]
     pub acceleration: Option<Quantity>,
@@ -184,7 +185,14 @@ impl KinetostaticsRequest {
             positions(&mut e, &mechanism, &inputs, matches!(self.input, Inputs::Many(_)));
         mechanism.drivers = drivers;
         let period = if linear.first().copied().unwrap_or(false) { 1.0 } else { 2.0 * PI };
-        let loads = self.loads(&mut e, &c.body_names, period);
+        let loads = convert_loads(
+            &mut e,
+            self.loads.as_deref().unwrap_or_default(),
+            &self.mechanism,
+            &c.body_names,
+            period,
+            "/loads",
+        );
         if !e.0.is_empty() {
             return Err(e.0);
         }
@@ -202,18 +210,48 @@ impl KinetostaticsRequest {
             linear,
         })
     }
+}
 
-    fn loads(&self, e: &mut Errors, names: &[String], period: f64) -> Vec<Load> {
-        let list = self.loads.as_deref().unwrap_or_default();
-        if list.len() > MAX_LOADS {
-            e.push("/loads", format!("at most {MAX_LOADS} loads"));
-            return Vec::new();
-        }
-        list.iter()
-            .enumerate()
-            .filter_map(|(k, l)| load(e, l, &self.mechanism, names, period, &format!("/loads/{k}")))
-            .collect()
+/// Converts a list of loads (pointers under `at`, e.g. "/loads").
+pub(crate) fn convert_loads(
+    e: &mut Errors,
+    list: &[LoadDto],
+    mech: &MechanismDto,
+    names: &[String],
+    period: f64,
+    at: &str,
+) -> Vec<Load> {
+    if list.len() > MAX_LOADS {
+        e.push(at, format!("at most {MAX_LOADS} loads"));
+        return Vec::new();
     }
+    list.iter().enumerate().filter_map(|(k, l)| load(e, l, mech, names, period, &format!("{at}/{k}"))).collect()
+}
+
+/// The mechanism, its loads and a revolute driver for a flywheel's `machine`
+/// (pointers under `at`).
+pub(crate) fn machine_parts(
+    e: &mut Errors,
+    mech: &MechanismDto,
+    input: &InputDto,
+    loads: &[LoadDto],
+    period: f64,
+    at: &str,
+) -> Option<(Mechanism, Vec<Load>)> {
+    let c = mech.convert(e, &format!("{at}/mechanism"))?;
+    let mut mechanism = c.mechanism;
+    let joint = match mechanism.joints.iter().position(|j| j.name == input.joint) {
+        Some(j) if mechanism.joints[j].kind == JointKind::Revolute => Some(j),
+        Some(_) => e.fail(&format!("{at}/input/joint"), "the flywheel's shaft must be a revolute joint"),
+        None => e.fail(&format!("{at}/input/joint"), format!("unknown joint '{}'", input.joint)),
+    };
+    let reference = match &input.reference {
+        Some(q) => e.angle(q, &format!("{at}/input/reference")),
+        None => Some(0.0),
+    };
+    let loads = convert_loads(e, loads, mech, &c.body_names, period, &format!("{at}/loads"));
+    mechanism.drivers = vec![Driver { joint: joint?, reference: reference? }];
+    Some((mechanism, loads))
 }
 
 fn point_of(e: &mut Errors, p: &PointRef, dto: &MechanismDto, at: &str) -> Option<[f64; 2]> {
@@ -384,7 +422,8 @@ fn input_range(e: &mut Errors, input: &InputDto, joint: usize, prismatic: bool, 
     };
     let reference = value(e, &input.reference, "reference")?.unwrap_or(0.0);
     let period = if prismatic { (end - start).abs().max(f64::MIN_POSITIVE) } else { 2.0 * PI };
-    let speed = e.function(&input.speed, speed_dim, period, &format!("{at}/speed"))?;
+    let Some(speed) = &input.speed else { return e.fail(at, "\"speed\" is required") };
+    let speed = e.function(speed, speed_dim, period, &format!("{at}/speed"))?;
     let acceleration = match &input.acceleration {
         Some(q) => Some(e.quantity(q, accel_dim, &format!("{at}/acceleration"))?),
         None => None,
