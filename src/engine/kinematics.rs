@@ -12,8 +12,11 @@ use nalgebra::{DMatrix, DVector};
 
 /// Newton iterations allowed per position.
 const MAX_ITERATIONS: usize = 30;
-/// Φ_q is treated as singular beyond this condition number.
-pub const SINGULAR_CONDITION: f64 = 1e12;
+/// Φ_q is treated as singular beyond this condition number: velocities and
+/// forces there are not computed (a regular position of a mechanism in SI
+/// units has a condition number well below 1e4; at a toggle or change point
+/// it is 1e6 or more, from round-off alone).
+pub const SINGULAR_CONDITION: f64 = 1e6;
 
 /// The mechanism at one input position.
 #[derive(Clone, Debug)]
@@ -25,6 +28,9 @@ pub struct Configuration {
     pub condition: f64,
     pub iterations: usize,
     pub residual: f64,
+    /// Φ_q is singular here (or Newton could not assemble this one position
+    /// while its neighbours assemble): nothing but q (predicted) is valid.
+    pub singular: bool,
 }
 
 /// Solves A x = b: LU when A is square and regular, else least squares (SVD).
@@ -79,34 +85,56 @@ pub fn motion(m: &Mechanism, q: &[f64], inputs: &[[f64; 3]]) -> Option<(Vec<f64>
 /// The configurations along the given input positions, starting from the
 /// reference configuration and continuing from each position to the next.
 pub fn sweep(m: &Mechanism, positions: &[Vec<[f64; 3]>]) -> Result<Vec<Configuration>, EngineError> {
-    let mut q = m.reference_q();
+    let mut base = m.reference_q();
     if let Some(first) = positions.first() {
-        approach(m, &mut q, first)?;
+        approach(m, &mut base, first)?;
     }
     let mut out: Vec<Configuration> = Vec::with_capacity(positions.len());
-    let mut coefficients: Option<(Vec<f64>, Vec<f64>, Vec<f64>)> = None;
+    // Velocity coefficients at the last regular position, for the predictor.
+    let mut coefficients: Option<(Vec<f64>, Vec<f64>, f64)> = None;
+    let mut failure: Option<EngineError> = None;
     for (step, inputs) in positions.iter().enumerate() {
+        let mut q = base.clone();
         if let Some((g, h, from)) = &coefficients {
-            let dphi = inputs[0][0] - from[0];
-            for (k, v) in q.iter_mut().enumerate() {
-                *v += g[k] * dphi + 0.5 * h[k] * dphi * dphi;
+            let d = inputs[0][0] - from;
+            q.iter_mut().enumerate().for_each(|(k, v)| *v += g[k] * d + 0.5 * h[k] * d * d);
+        }
+        let (iterations, residual) = match assemble(m, &mut q, inputs, step) {
+            Ok(r) => r,
+            // One position that will not assemble between two that do is a
+            // singular point passed; two in a row is a position out of reach.
+            Err(e) if failure.is_none() => {
+                failure = Some(e);
+                out.push(Configuration::singular_at(q, f64::INFINITY));
+                continue;
             }
-        }
-        let (iterations, residual) = assemble(m, &mut q, inputs, step)?;
-        let (qd, qdd, sys) = motion(m, &q, inputs).ok_or(EngineError::Singular { step, input: inputs[0][0] })?;
-        let cond = condition(&sys.jacobian);
-        if cond > SINGULAR_CONDITION {
-            return Err(EngineError::Singular { step, input: inputs[0][0] });
-        }
-        if m.drivers.len() == 1 {
-            let unit: Vec<[f64; 3]> = vec![[inputs[0][0], 1.0, 0.0]];
-            if let Some((g, h, _)) = motion(m, &q, &unit) {
-                coefficients = Some((g, h, vec![inputs[0][0]]));
+            Err(_) => return Err(failure.unwrap_or(EngineError::Singular { step, input: inputs[0][0] })),
+        };
+        failure = None;
+        let motion_now = motion(m, &q, inputs);
+        let cond = motion_now.as_ref().map_or(f64::INFINITY, |(_, _, sys)| condition(&sys.jacobian));
+        match motion_now {
+            Some((qd, qdd, _)) if cond <= SINGULAR_CONDITION => {
+                if m.drivers.len() == 1 {
+                    coefficients = motion(m, &q, &[[inputs[0][0], 1.0, 0.0]]).map(|(g, h, _)| (g, h, inputs[0][0]));
+                }
+                base = q.clone();
+                out.push(Configuration { q, qd, qdd, condition: cond, iterations, residual, singular: false });
             }
+            _ => out.push(Configuration { iterations, residual, ..Configuration::singular_at(q, cond) }),
         }
-        out.push(Configuration { q: q.clone(), qd, qdd, condition: cond, iterations, residual });
     }
-    Ok(out)
+    match failure {
+        Some(e) => Err(e),
+        None => Ok(out),
+    }
+}
+
+impl Configuration {
+    fn singular_at(q: Vec<f64>, condition: f64) -> Self {
+        let n = q.len();
+        Self { q, qd: vec![0.0; n], qdd: vec![0.0; n], condition, iterations: 0, residual: f64::NAN, singular: true }
+    }
 }
 
 /// Largest change of an input coordinate per continuation step on the way

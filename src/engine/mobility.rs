@@ -49,13 +49,17 @@ pub fn mobility(m: &Mechanism, q: &[f64]) -> Mobility {
 /// Joints with a row in the left null space of Φ_q (eigenvectors of Φ_qΦ_qᵀ
 /// with a zero eigenvalue).
 fn indeterminate(m: &Mechanism, jac: &DMatrix<f64>) -> Vec<usize> {
-    if jac.nrows() == 0 || rank(jac) == jac.nrows() {
+    let r = rank(jac);
+    if jac.nrows() == 0 || r == jac.nrows() {
         return Vec::new();
     }
+    // The rank comes from the SVD; the null space is spanned by the
+    // eigenvectors of the (rows − rank) smallest eigenvalues.
     let eig = (jac * jac.transpose()).symmetric_eigen();
-    let top = eig.eigenvalues.amax();
+    let mut order: Vec<usize> = (0..eig.eigenvalues.len()).collect();
+    order.sort_by(|&a, &b| eig.eigenvalues[a].total_cmp(&eig.eigenvalues[b]));
+    let null = &order[..jac.nrows() - r];
     let offsets = joint_offsets(m);
-    let null: Vec<usize> = (0..eig.eigenvalues.len()).filter(|&k| eig.eigenvalues[k] <= 1e-18 * top).collect();
     (0..m.joints.len())
         .filter(|&j| {
             let rows = offsets[j]..offsets[j] + Mechanism::joint_rows(&m.joints[j].kind);

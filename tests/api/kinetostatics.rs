@@ -219,3 +219,83 @@ async fn a_start_far_from_the_drawing_keeps_the_assembly_branch() {
     assert!(t.abs() < 1e-8, "{t}");
     close(&r["steps"][0]["kinematics"][2]["x"], row["piston_x_m"].as_f64().unwrap(), 1e-11, "piston on the +x side");
 }
+
+/// A parallelogram four-bar, cranks 0.5 m (1 kg, I_G 0.02 kg·m², G at mid),
+/// coupler 1 m (2 kg), drawn with the cranks vertical (input 0 there): a
+/// Grashof change-point linkage (s + l = p + q), singular where all links are
+/// collinear, at inputs π/2 and 3π/2. Closed form on the parallelogram branch:
+/// every crank turns with the input, I* is constant, and with gravity
+/// M* = 9.81·(0.25 + 0.25 + 2·0.5)·sin φ, so at constant speed T = −14.715 sin φ.
+fn parallelogram(third_crank: bool) -> Value {
+    let crank = |name: &str, x: f64| json!({"name": name, "mass": 1, "inertia": 0.02, "cg": [x, 0.25]});
+    let rev =
+        |name: &str, a: &str, b: &str, at: &str| json!({"name": name, "type": "revolute", "bodies": [a, b], "at": at});
+    let mut bodies = vec![
+        crank("crank", 0.0),
+        json!({"name": "coupler", "mass": 2, "inertia": 0.2, "cg": [0.5, 0.5]}),
+        crank("rocker", 1.0),
+    ];
+    let mut joints = vec![
+        rev("O2", "ground", "crank", "O2"),
+        rev("A", "crank", "coupler", "A"),
+        rev("B", "coupler", "rocker", "B"),
+        rev("O4", "rocker", "ground", "O4"),
+    ];
+    if third_crank {
+        bodies.push(crank("crank3", 0.5));
+        joints.push(rev("O3", "ground", "crank3", "O3"));
+        joints.push(rev("C", "crank3", "coupler", "C"));
+    }
+    json!({
+        "mechanism": {
+            "points": {"O2": [0, 0], "O4": [1, 0], "A": [0, 0.5], "B": [1, 0.5], "O3": [0.5, 0], "C": [0.5, 0.5]},
+            "bodies": bodies, "joints": joints, "gravity": [0, -9.81]
+        },
+        "input": {"joint": "O2", "speed": 10, "start": "-80 deg", "end": "280 deg", "steps": 36}
+    })
+}
+
+#[tokio::test]
+async fn a_change_point_four_bar_passes_its_singular_positions() {
+    let app = TestApp::new().await;
+    let r = post(&app, &parallelogram(false)).await["result"].clone();
+    let mut singular = Vec::new();
+    for step in r["steps"].as_array().unwrap() {
+        let phi = step["input"].as_f64().unwrap();
+        if step["singular"] == true {
+            assert!(step["driving"].is_null() && step["reactions"].is_null(), "no garbage at a singular position");
+            singular.push(phi);
+            continue;
+        }
+        let t = step["driving"].as_f64().unwrap() + 14.715 * phi.sin();
+        assert!(t.abs() < 1e-9, "T at {phi}: off by {t}");
+        close(&step["kinematics"][2]["omega"], 10.0, 1e-9, "the rocker turns with the crank (parallelogram branch)");
+    }
+    assert_eq!(singular.len(), 2, "{singular:?}");
+    assert!(
+        (singular[0] - std::f64::consts::FRAC_PI_2).abs() < 1e-12
+            && (singular[1] - 1.5 * std::f64::consts::PI).abs() < 1e-12
+    );
+    assert_eq!(r["summary"]["singular"], true);
+}
+
+/// The same with a third, parallel crank: one redundant constraint; the
+/// reactions are indeterminate (null, flagged), the driving torque is still
+/// right: T = −(14.715 + 9.81·0.25)·sin φ = −17.1675 sin φ.
+#[tokio::test]
+async fn a_redundant_crank_flags_the_reactions_and_keeps_the_driving_torque() {
+    let app = TestApp::new().await;
+    let r = post(&app, &parallelogram(true)).await["result"].clone();
+    assert_eq!(
+        (r["dof"].as_u64(), r["redundant_constraints"].as_u64(), r["grubler"]["mobility"].as_i64()),
+        (Some(1), Some(1), Some(0))
+    );
+    assert!(r["warnings"][0].as_str().unwrap().contains("redundant"));
+    let step = &r["steps"][3];
+    let phi = step["input"].as_f64().unwrap();
+    assert!((step["driving"].as_f64().unwrap() + 17.1675 * phi.sin()).abs() < 1e-9, "{step}");
+    for reaction in step["reactions"].as_array().unwrap() {
+        assert_eq!(reaction["determinate"], false, "{}", step["reactions"]);
+        assert!(reaction["fx"].is_null());
+    }
+}

@@ -73,6 +73,8 @@ pub struct StepDto {
     /// M*(φ) of every load, driver excluded.
     pub reduced_torque: Option<f64>,
     pub jacobian_condition: f64,
+    /// A singular position (toggle, change point): nothing but the input is computed here.
+    pub singular: bool,
     pub kinematics: Option<Vec<BodyMotion>>,
 }
 
@@ -88,8 +90,12 @@ pub struct SummaryDto {
     pub max_reaction: BTreeMap<String, Option<f64>>,
     /// Largest |driving from multipliers − driving from virtual power| / max |driving|.
     pub virtual_power_residual: Option<f64>,
-    /// Whether any sampled position is near-singular (condition number above 1e8).
+    /// Whether any sampled position is singular (condition number above 1e6):
+    /// its step has no driving action, reactions or reduced quantities.
     pub singular: bool,
+    #[schema(value_type = Vec<Scalars>)]
+    pub singular_inputs: Vec<Scalars>,
+    /// Inputs where the condition number exceeds 1e4 (results valid but sensitive).
     #[schema(value_type = Vec<Scalars>)]
     pub near_singular_inputs: Vec<Scalars>,
     pub max_jacobian_condition: f64,
@@ -179,7 +185,8 @@ impl KinetostaticsResult {
                     .filter(|_| p.outputs.reactions)
                     .collect(),
                 virtual_power_residual: sum.virtual_power_residual,
-                singular: !sum.near_singular.is_empty(),
+                singular: !sum.singular.is_empty(),
+                singular_inputs: sum.singular.iter().map(|v| Scalars::of(v)).collect(),
                 near_singular_inputs: sum.near_singular.iter().map(|v| Scalars::of(v)).collect(),
                 max_jacobian_condition: sum.max_condition,
             },
@@ -210,11 +217,12 @@ fn step_dto(s: &Step, p: &Problem, joint_names: &[String]) -> StepDto {
     };
     StepDto {
         input: Scalars::of(&s.input),
-        driving: p.want_driving.then(|| Scalars::of(&s.driving)),
-        reactions: p.outputs.reactions.then(|| s.reactions.iter().map(reaction).collect()),
+        driving: (p.want_driving && !s.singular).then(|| Scalars::of(&s.driving)),
+        reactions: (p.outputs.reactions && !s.singular).then(|| s.reactions.iter().map(reaction).collect()),
         reduced_inertia: s.reduced_inertia,
         reduced_torque: s.reduced_torque,
         jacobian_condition: s.condition,
+        singular: s.singular,
         kinematics: s.kinematics.as_ref().map(|m| motion(m, names)),
     }
 }

@@ -80,6 +80,8 @@ pub struct Step {
     pub reduced_torque: Option<f64>,
     pub condition: f64,
     pub kinematics: Option<Motion>,
+    /// A singular position: no driving action, reaction or reduced quantity is computed.
+    pub singular: bool,
 }
 
 /// M·v with M = diag(m, m, I_G).
@@ -127,6 +129,19 @@ fn step(
     mobility: &Mobility,
     k: usize,
 ) -> Result<Step, EngineError> {
+    if c.singular {
+        return Ok(Step {
+            input: inputs.iter().map(|i| i[0]).collect(),
+            driving: Vec::new(),
+            driving_virtual_power: None,
+            reactions: Vec::new(),
+            reduced_inertia: None,
+            reduced_torque: None,
+            condition: c.condition,
+            kinematics: None,
+            singular: true,
+        });
+    }
     let phi = inputs[0][0];
     let qv = applied_forces(m, loads, &c.q, &c.qd, phi);
     let inertial = mass_times(m, &c.qdd) - &qv;
@@ -157,6 +172,7 @@ fn step(
         reduced_torque,
         condition: c.condition,
         kinematics: outputs.kinematics.then(|| Motion { q: c.q.clone(), qd: c.qd.clone(), qdd: c.qdd.clone() }),
+        singular: false,
     })
 }
 

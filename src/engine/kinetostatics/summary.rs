@@ -3,9 +3,9 @@
 use super::Step;
 
 /// Φ_q counts as near-singular beyond this condition number (reported, not an error).
-pub const NEAR_SINGULAR: f64 = 1e8;
+pub const NEAR_SINGULAR: f64 = 1e4;
 
-/// Means and RMS are over the sampled steps (not weighted by time).
+/// Means and RMS are over the regular sampled steps (not weighted by time).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Summary {
     pub max_abs_driving: Vec<f64>,
@@ -17,11 +17,15 @@ pub struct Summary {
     pub virtual_power_residual: Option<f64>,
     /// Inputs where Φ_q is near-singular (condition number above [`NEAR_SINGULAR`]).
     pub near_singular: Vec<Vec<f64>>,
+    /// Inputs at singular positions (no forces computed there).
+    pub singular: Vec<Vec<f64>>,
     pub max_condition: f64,
 }
 
 impl Summary {
-    pub fn new(steps: &[Step], joints: usize) -> Self {
+    pub fn new(all: &[Step], joints: usize) -> Self {
+        let regular: Vec<Step> = all.iter().filter(|s| !s.singular).cloned().collect();
+        let steps = &regular[..];
         let n_inputs = steps.first().map_or(0, |s| s.driving.len());
         let count = steps.len().max(1) as f64;
         let column = |d: usize| steps.iter().map(move |s| s.driving[d]);
@@ -49,7 +53,8 @@ impl Summary {
             rms_driving,
             max_reaction,
             virtual_power_residual,
-            near_singular: steps.iter().filter(|s| s.condition > NEAR_SINGULAR).map(|s| s.input.clone()).collect(),
+            near_singular: all.iter().filter(|s| s.condition > NEAR_SINGULAR).map(|s| s.input.clone()).collect(),
+            singular: all.iter().filter(|s| s.singular).map(|s| s.input.clone()).collect(),
             max_condition: steps.iter().map(|s| s.condition).fold(0.0, f64::max),
         }
     }
