@@ -171,30 +171,69 @@ pub fn nu(m: &Mechanism, inputs: &[[f64; 3]]) -> DVector<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::engine::samples::offset_slider_crank;
+    use crate::engine::samples::{actuated_arm, four_bar, offset_slider_crank, planetary_train, scotch_yoke};
+
+    /// Every sample, covering every joint and driver type, at a displaced state.
+    fn cases() -> Vec<(&'static str, Mechanism, Vec<f64>, Vec<f64>)> {
+        let samples = [
+            ("slider-crank", offset_slider_crank()),
+            ("scotch yoke", scotch_yoke()),
+            ("four-bar", four_bar()),
+            ("planetary train", planetary_train()),
+            ("actuated arm", actuated_arm()),
+        ];
+        samples
+            .into_iter()
+            .map(|(name, m)| {
+                let mut q = m.reference_q();
+                let qd: Vec<f64> = (0..q.len()).map(|k| (k as f64 * 1.7 + 0.3).cos()).collect();
+                for (k, v) in q.iter_mut().enumerate() {
+                    *v += 0.01 * (k as f64 + 1.0).sin();
+                }
+                (name, m, q, qd)
+            })
+            .collect()
+    }
 
     /// Every joint's analytic Jacobian against central differences of Φ
-    /// (h = 1e-7; truncation ~h², round-off ~1e-16/h), at a displaced state.
+    /// (h = 1e-7; truncation ~h², round-off ~1e-16/h).
     #[test]
     fn jacobians_match_finite_differences() {
-        let m = offset_slider_crank();
-        let mut q = m.reference_q();
-        for (k, v) in q.iter_mut().enumerate() {
-            *v += 0.01 * (k as f64 + 1.0).sin();
+        for (name, m, q, _) in cases() {
+            let inputs = vec![[0.3, 0.0, 0.0]; m.drivers.len()];
+            let state = State { q: &q, qd: None, inputs: &inputs };
+            let jac = evaluate(&m, &state).jacobian;
+            let h = 1e-7;
+            for c in 0..q.len() {
+                let (mut qp, mut qm) = (q.clone(), q.clone());
+                qp[c] += h;
+                qm[c] -= h;
+                let fp = evaluate(&m, &State { q: &qp, ..state }).phi;
+                let fm = evaluate(&m, &State { q: &qm, ..state }).phi;
+                for r in 0..fp.len() {
+                    let fd = (fp[r] - fm[r]) / (2.0 * h);
+                    assert!((fd - jac[(r, c)]).abs() < 1e-7, "{name} row {r} col {c}: {} vs {fd}", jac[(r, c)]);
+                }
+            }
         }
-        let inputs = [[0.3, 0.0, 0.0]];
-        let state = State { q: &q, qd: None, inputs: &inputs };
-        let jac = evaluate(&m, &state).jacobian;
-        let h = 1e-7;
-        for c in 0..q.len() {
-            let (mut qp, mut qm) = (q.clone(), q.clone());
-            qp[c] += h;
-            qm[c] -= h;
-            let fp = evaluate(&m, &State { q: &qp, ..state }).phi;
-            let fm = evaluate(&m, &State { q: &qm, ..state }).phi;
-            for r in 0..fp.len() {
-                let fd = (fp[r] - fm[r]) / (2.0 * h);
-                assert!((fd - jac[(r, c)]).abs() < 1e-7, "row {r} col {c}: {} vs {fd}", jac[(r, c)]);
+    }
+
+    /// γ = −(Φ_q q̇)_q q̇ (no input acceleration): against the central
+    /// difference of Φ_q(q + s q̇)·q̇ in s (h = 1e-6).
+    #[test]
+    fn gamma_matches_the_derivative_of_the_jacobian_along_the_velocity() {
+        for (name, m, q, qd) in cases() {
+            let inputs = vec![[0.3, 0.0, 0.0]; m.drivers.len()];
+            let gamma = evaluate(&m, &State { q: &q, qd: Some(&qd), inputs: &inputs }).gamma;
+            let h = 1e-6;
+            let jv = |s: f64| {
+                let qs: Vec<f64> = q.iter().zip(&qd).map(|(a, b)| a + s * b).collect();
+                let j = evaluate(&m, &State { q: &qs, qd: None, inputs: &inputs }).jacobian;
+                &j * DVector::from_column_slice(&qd)
+            };
+            let fd = (jv(h) - jv(-h)) / (2.0 * h);
+            for r in 0..gamma.len() {
+                assert!((gamma[r] + fd[r]).abs() < 1e-7, "{name} row {r}: {} vs {}", gamma[r], -fd[r]);
             }
         }
     }

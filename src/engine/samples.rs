@@ -36,3 +36,97 @@ pub fn offset_slider_crank() -> Mechanism {
         gravity: [0.0, -9.81],
     }
 }
+
+/// A scotch yoke: crank R = 0.1 m (2 kg at its pin, I_G = 0.05 kg·m²) drives
+/// a 5 kg yoke on a horizontal guide through a pin in its vertical slot.
+pub fn scotch_yoke() -> Mechanism {
+    Mechanism {
+        bodies: vec![
+            body("ground", 0.0, 0.0, [0.0, 0.0]),
+            body("crank", 2.0, 0.05, [0.1, 0.0]),
+            body("yoke", 5.0, 0.3, [0.3, 0.0]),
+        ],
+        joints: vec![
+            joint("O", JointKind::Revolute, [0, 1], [0.0, 0.0]),
+            joint("slide", JointKind::Prismatic { axis: [1.0, 0.0] }, [0, 2], [0.3, 0.0]),
+            joint("pin", JointKind::PinSlot { axis: [0.0, 1.0] }, [2, 1], [0.1, 0.0]),
+        ],
+        drivers: vec![Driver { joint: 0, reference: 0.0 }],
+        gravity: [0.0, -9.81],
+    }
+}
+
+/// A Grashof crank-rocker four-bar: ground O2 (0, 0)–O4 (0.4, 0), crank
+/// 0.1 m, coupler 0.35 m, rocker 0.3 m, drawn with the crank along +x.
+pub fn four_bar() -> Mechanism {
+    let (a, o4) = ([0.1, 0.0], [0.4, 0.0]);
+    // B: |B − A| = 0.35, |B − O4| = 0.3; A and O4 lie on the x axis, 0.3 apart.
+    let bx = 0.1 + (0.35f64 * 0.35 - 0.3 * 0.3 + 0.3 * 0.3) / (2.0 * 0.3);
+    let b = [bx, (0.35f64 * 0.35 - (bx - 0.1) * (bx - 0.1)).sqrt()];
+    Mechanism {
+        bodies: vec![
+            body("ground", 0.0, 0.0, [0.0, 0.0]),
+            body("crank", 0.5, 0.001, [0.05, 0.0]),
+            body("coupler", 1.0, 0.01, [(a[0] + b[0]) / 2.0, b[1] / 2.0]),
+            body("rocker", 0.8, 0.006, [(o4[0] + b[0]) / 2.0, b[1] / 2.0]),
+        ],
+        joints: vec![
+            joint("O2", JointKind::Revolute, [0, 1], [0.0, 0.0]),
+            joint("A", JointKind::Revolute, [1, 2], a),
+            joint("B", JointKind::Revolute, [2, 3], b),
+            joint("O4", JointKind::Revolute, [3, 0], o4),
+        ],
+        drivers: vec![Driver { joint: 0, reference: 0.0 }],
+        gravity: [0.0, -9.81],
+    }
+}
+
+/// The differential train of reference case K5: sun (z = 60), planet (30),
+/// internal ring (120) on a carrier, all about O; planet pin at 0.09 m.
+/// Driven by the carrier and the ring.
+pub fn planetary_train() -> Mechanism {
+    let gear = |ratio: f64| JointKind::Gear { ratio, carrier: 2 };
+    Mechanism {
+        bodies: vec![
+            body("ground", 0.0, 0.0, [0.0, 0.0]),
+            body("sun", 1.0, 0.002, [0.0, 0.0]),
+            body("carrier", 1.5, 0.01, [0.0, 0.0]),
+            body("planet", 0.3, 0.0002, [0.09, 0.0]),
+            body("ring", 2.0, 0.03, [0.0, 0.0]),
+        ],
+        joints: vec![
+            joint("sun bearing", JointKind::Revolute, [0, 1], [0.0, 0.0]),
+            joint("carrier bearing", JointKind::Revolute, [0, 2], [0.0, 0.0]),
+            joint("planet pin", JointKind::Revolute, [2, 3], [0.09, 0.0]),
+            joint("ring bearing", JointKind::Revolute, [0, 4], [0.0, 0.0]),
+            joint("sun-planet", gear(-2.0), [1, 3], [0.0, 0.0]),
+            joint("planet-ring", gear(0.25), [3, 4], [0.0, 0.0]),
+        ],
+        drivers: vec![Driver { joint: 1, reference: 0.0 }, Driver { joint: 3, reference: 0.0 }],
+        gravity: [0.0, 0.0],
+    }
+}
+
+/// A hydraulic cylinder (pivoted on the ground at C) lifting an arm pivoted at
+/// O; the cylinder's rod slides in it (prismatic) and is pinned to the arm at
+/// P. Driven by the prismatic joint (a linear actuator).
+pub fn actuated_arm() -> Mechanism {
+    let (o, c, p) = ([0.0, 0.0], [0.5, -0.3], [0.4, 0.0]);
+    let axis = [(p[0] - c[0]) / 0.316_227_766_016_837_94, (p[1] - c[1]) / 0.316_227_766_016_837_94];
+    Mechanism {
+        bodies: vec![
+            body("ground", 0.0, 0.0, [0.0, 0.0]),
+            body("arm", 10.0, 0.6, [0.5, 0.0]),
+            body("cylinder", 3.0, 0.02, [0.47, -0.21]),
+            body("rod", 1.0, 0.005, [0.43, -0.09]),
+        ],
+        joints: vec![
+            joint("O", JointKind::Revolute, [0, 1], o),
+            joint("C", JointKind::Revolute, [0, 2], c),
+            joint("stroke", JointKind::Prismatic { axis }, [2, 3], p),
+            joint("P", JointKind::Revolute, [3, 1], p),
+        ],
+        drivers: vec![Driver { joint: 2, reference: 0.0 }],
+        gravity: [0.0, -9.81],
+    }
+}
