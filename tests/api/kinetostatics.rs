@@ -198,6 +198,9 @@ async fn scotch_yoke_matches_its_closed_form() {
         assert!(t < 1e-10, "T at {phi}: off by {t}");
         assert!((step["reduced_inertia"].as_f64().unwrap() - (0.07 + 0.05 * s * s)).abs() < 1e-12);
         assert!((step["reduced_torque"].as_f64().unwrap() - 10.0 * s * s).abs() < 1e-10);
+        // Quinn: the yoke's share of the kinetic energy is MR² sin²φ / I*.
+        let share = step["energy_contribution"]["yoke"].as_f64().unwrap();
+        assert!((share - 0.05 * s * s / (0.07 + 0.05 * s * s)).abs() < 1e-12);
     }
     close(&r["summary"]["mean_driving"], -5.0, 1e-12, "mean T (energy balance)");
 }

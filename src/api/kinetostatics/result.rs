@@ -72,6 +72,8 @@ pub struct StepDto {
     pub reduced_inertia: Option<f64>,
     /// M*(φ) of every load, driver excluded.
     pub reduced_torque: Option<f64>,
+    /// Quinn's energy-contribution coefficient T_body/T of each moving body (one input).
+    pub energy_contribution: Option<BTreeMap<String, f64>>,
     pub jacobian_condition: f64,
     /// A singular position (toggle, change point): nothing but the input is computed here.
     pub singular: bool,
@@ -221,6 +223,10 @@ fn step_dto(s: &Step, p: &Problem, joint_names: &[String]) -> StepDto {
         reactions: (p.outputs.reactions && !s.singular).then(|| s.reactions.iter().map(reaction).collect()),
         reduced_inertia: s.reduced_inertia,
         reduced_torque: s.reduced_torque,
+        energy_contribution: s
+            .energy_shares
+            .as_ref()
+            .map(|v| names[1..].iter().cloned().zip(v.iter().copied()).collect()),
         jacobian_condition: s.condition,
         singular: s.singular,
         kinematics: s.kinematics.as_ref().map(|m| motion(m, names)),

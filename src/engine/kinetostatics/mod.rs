@@ -78,6 +78,9 @@ pub struct Step {
     pub reactions: Vec<Reaction>,
     pub reduced_inertia: Option<f64>,
     pub reduced_torque: Option<f64>,
+    /// Quinn's energy-contribution coefficients ε_b = T_b/T of the moving
+    /// bodies (one input; share of I* per body, since T_b/T = g_bᵀM_b g_b / I*).
+    pub energy_shares: Option<Vec<f64>>,
     pub condition: f64,
     pub kinematics: Option<Motion>,
     /// A singular position: no driving action, reaction or reduced quantity is computed.
@@ -137,6 +140,7 @@ fn step(
             reactions: Vec::new(),
             reduced_inertia: None,
             reduced_torque: None,
+            energy_shares: None,
             condition: c.condition,
             kinematics: None,
             singular: true,
@@ -158,6 +162,18 @@ fn step(
         }
         _ => (None, None),
     };
+    let energy_shares = match (&g, reduced_inertia) {
+        (Some(g), Some(total)) if total > 0.0 => Some(
+            (0..g.len() / 3)
+                .map(|b| {
+                    let body = &m.bodies[b + 1];
+                    let k = 3 * b;
+                    (body.mass * (g[k] * g[k] + g[k + 1] * g[k + 1]) + body.inertia * g[k + 2] * g[k + 2]) / total
+                })
+                .collect(),
+        ),
+        _ => None,
+    };
     let (driving, reactions) = if outputs.reactions || !single {
         multipliers(m, c, &inertial, outputs.reactions.then_some(&mobility.indeterminate_joints), k, phi)?
     } else {
@@ -170,6 +186,7 @@ fn step(
         reactions,
         reduced_inertia,
         reduced_torque,
+        energy_shares,
         condition: c.condition,
         kinematics: outputs.kinematics.then(|| Motion { q: c.q.clone(), qd: c.qd.clone(), qdd: c.qdd.clone() }),
         singular: false,
