@@ -2,7 +2,7 @@
 //! conversion into the engine's model, with every error under its pointer.
 
 use super::quantity::{Errors, Quantity};
-use crate::engine::model::{Body, BodyId, Joint, JointKind, Mechanism};
+use crate::engine::model::{Body, BodyId, Friction, Joint, JointKind, Mechanism};
 use crate::units::Dim;
 use serde::de::{self, Deserializer, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
@@ -121,6 +121,19 @@ pub struct JointDto {
     pub module: Option<Quantity>,
     #[schema(value_type = Option<Quantity>)]
     pub pressure_angle: Option<Quantity>,
+    /// Coulomb friction: {"mu", "radius"} on a revolute joint, {"mu"} on a prismatic or pin-in-slot joint.
+    pub friction: Option<FrictionDto>,
+}
+
+/// Coulomb friction of a joint.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct FrictionDto {
+    /// Friction coefficient μ ≥ 0.
+    #[schema(minimum = 0.0)]
+    pub mu: f64,
+    /// Pin radius (revolute joints only), m.
+    #[schema(value_type = Option<Quantity>)]
+    pub radius: Option<Quantity>,
 }
 
 /// A planar mechanism drawn in one assembled configuration.
@@ -226,7 +239,8 @@ impl MechanismDto {
             };
             let kind = joint_kind(e, j, &names, &ptr);
             if let (Some(b0), Some(b1), Some(at_point), Some(kind)) = (b0, b1, at_point, kind) {
-                joints.push(Joint { name: j.name.clone(), kind, bodies: [b0, b1], at: at_point });
+                let friction = friction(e, j, &ptr);
+                joints.push(Joint { name: j.name.clone(), kind, bodies: [b0, b1], at: at_point, friction });
             }
         }
         let gravity = match self.gravity.as_deref() {
@@ -247,6 +261,26 @@ impl MechanismDto {
             Some(PointRef::Name(n)) => points.get(n).copied(),
             None => None,
         })
+    }
+}
+
+/// The joint's friction, checked against its type.
+fn friction(e: &mut Errors, j: &JointDto, at: &str) -> Option<Friction> {
+    let f = j.friction.as_ref()?;
+    let at = format!("{at}/friction");
+    if !(f.mu.is_finite() && f.mu >= 0.0) {
+        return e.fail(&format!("{at}/mu"), "must be a finite number ≥ 0");
+    }
+    match (j.kind, &f.radius) {
+        (JointType::Revolute, Some(r)) => {
+            e.positive(r, Dim::LENGTH, &format!("{at}/radius")).map(|radius| Friction { mu: f.mu, radius })
+        }
+        (JointType::Revolute, None) => e.fail(&at, "a revolute joint's friction needs the pin \"radius\""),
+        (JointType::Prismatic | JointType::PinSlot, None) => Some(Friction { mu: f.mu, radius: 0.0 }),
+        (JointType::Prismatic | JointType::PinSlot, Some(_)) => {
+            e.fail(&format!("{at}/radius"), "applies to revolute joints only")
+        }
+        (JointType::Gear, _) => e.fail(&at, "friction is not modelled for gears"),
     }
 }
 

@@ -91,8 +91,13 @@ mod tests {
     #[test]
     fn a_parallelogram_with_a_redundant_crank_is_detected() {
         let body = |n: &str, cg: [f64; 2]| Body { name: n.into(), mass: 1.0, inertia: 0.01, cg };
-        let rev =
-            |n: &str, b: [usize; 2], at: [f64; 2]| Joint { name: n.into(), kind: JointKind::Revolute, bodies: b, at };
+        let rev = |n: &str, b: [usize; 2], at: [f64; 2]| Joint {
+            name: n.into(),
+            kind: JointKind::Revolute,
+            bodies: b,
+            at,
+            friction: None,
+        };
         let m = Mechanism {
             bodies: vec![
                 body("ground", [0.0, 0.0]),

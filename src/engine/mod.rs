@@ -43,6 +43,12 @@ pub enum EngineError {
         "the mechanism is at a singular position at step {step} (input {input}): the constraint Jacobian loses rank"
     )]
     Singular { step: usize, input: f64 },
+    /// The friction iteration did not settle (friction too large for the mechanism to move).
+    #[error(
+        "joint friction does not settle at input {input} (step {step}): the friction coefficients are too large \
+         for the mechanism to be driven there (self-locking)"
+    )]
+    FrictionDiverged { step: usize, input: f64 },
     /// The computation produced a non-finite number (never returned as a result).
     #[error("the computation produced a non-finite number; the input is numerically degenerate")]
     NotFiniteResult,

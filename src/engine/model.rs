@@ -44,6 +44,17 @@ pub struct Joint {
     pub bodies: [BodyId; 2],
     /// The joint's point in the reference configuration.
     pub at: [f64; 2],
+    pub friction: Option<Friction>,
+}
+
+/// Coulomb friction of a joint: a revolute joint resists with a couple
+/// μ·r·|R| (r the pin radius, R the reaction force); a prismatic or
+/// pin-in-slot joint with a force μ·|N| along the slide (N the normal reaction).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Friction {
+    pub mu: f64,
+    /// Pin radius (revolute joints), m.
+    pub radius: f64,
 }
 
 /// A driven joint: its relative rotation (revolute) or displacement along the

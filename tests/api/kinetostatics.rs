@@ -171,10 +171,8 @@ async fn k5_differential_gear_train_with_two_inputs() {
 /// I* = I_G + mR² + MR² sin²φ = 0.07 + 0.05 sin²φ, M* = F·dx/dφ = 10 sin²φ,
 /// T = ½ dI*/dφ ω² − M* = 5 sin φ cos φ − 10 sin²φ; mean T = −5 N·m, which
 /// is the energy balance: the driver's work over a turn equals −∫M* dφ = −10π J.
-#[tokio::test]
-async fn scotch_yoke_matches_its_closed_form() {
-    let app = TestApp::new().await;
-    let body = json!({
+fn scotch_yoke() -> Value {
+    json!({
         "mechanism": {
             "points": {"O": [0, 0], "A": [0.1, 0]},
             "bodies": [
@@ -189,8 +187,13 @@ async fn scotch_yoke_matches_its_closed_form() {
         },
         "input": {"joint": "O", "speed": 10, "steps": 16},
         "loads": [{"type": "force", "body": "yoke", "at": "A", "direction": [1, 0], "magnitude": {"expr": "-100*sin(phi)"}}]
-    });
-    let r = post(&app, &body).await["result"].clone();
+    })
+}
+
+#[tokio::test]
+async fn scotch_yoke_matches_its_closed_form() {
+    let app = TestApp::new().await;
+    let r = post(&app, &scotch_yoke()).await["result"].clone();
     for step in r["steps"].as_array().unwrap() {
         let phi = step["input"].as_f64().unwrap();
         let (s, c) = phi.sin_cos();
@@ -301,4 +304,32 @@ async fn a_redundant_crank_flags_the_reactions_and_keeps_the_driving_torque() {
         assert_eq!(reaction["determinate"], false, "{}", step["reactions"]);
         assert!(reaction["fx"].is_null());
     }
+}
+
+/// Coulomb friction, scotch yoke with gravity. In the guide (μ = 0.2) the
+/// normal force is the yoke's weight (the slot's force is horizontal), so the
+/// driver supplies μ·M·g·|v|/ω = 0.2·5·9.81·0.1·|sin φ| more. At the crank
+/// bearing (μ = 0.1, pin radius 0.02 m) a couple μ·r·|R_O| opposes the turn;
+/// it leaves R_O unchanged, so T grows by 0.002·|R_O| of the frictionless run.
+#[tokio::test]
+async fn joint_friction_adds_the_work_it_dissipates() {
+    let app = TestApp::new().await;
+    let mut plain = scotch_yoke();
+    plain["mechanism"]["gravity"] = json!([0, -9.81]);
+    let mut guide = plain.clone();
+    guide["mechanism"]["joints"][1]["friction"] = json!({"mu": 0.2});
+    let mut bearing = plain.clone();
+    bearing["mechanism"]["joints"][0]["friction"] = json!({"mu": 0.1, "radius": "20 mm"});
+    let (p, g, b) = (post(&app, &plain).await, post(&app, &guide).await, post(&app, &bearing).await);
+    let steps = |j: &Value| j["result"]["steps"].as_array().unwrap().clone();
+    for ((sp, sg), sb) in steps(&p).iter().zip(steps(&g)).zip(steps(&b)) {
+        let phi = sp["input"].as_f64().unwrap();
+        let t = |s: &Value| s["driving"].as_f64().unwrap();
+        let extra = t(&sg) - t(sp);
+        assert!((extra - 0.981 * phi.sin().abs()).abs() < 1e-9, "guide friction at {phi}: {extra}");
+        let r_o = sp["reactions"][0]["fx"].as_f64().unwrap().hypot(sp["reactions"][0]["fy"].as_f64().unwrap());
+        assert!((t(&sb) - t(sp) - 0.002 * r_o).abs() < 1e-9, "bearing friction at {phi}");
+    }
+    assert!(g["result"]["accuracy"]["max_friction_iterations"].as_u64().unwrap() >= 1);
+    assert!(g["result"]["summary"]["virtual_power_residual"].as_f64().unwrap() < 1e-12);
 }

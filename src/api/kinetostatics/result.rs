@@ -110,6 +110,8 @@ pub struct KinetostaticsAccuracy {
     /// Largest |Φ(q)| left by Newton–Raphson, m or rad.
     pub max_constraint_residual: f64,
     pub max_newton_iterations: usize,
+    /// Largest number of fixed-point iterations of joint friction (0 without friction).
+    pub max_friction_iterations: usize,
     pub method: String,
 }
 
@@ -196,6 +198,7 @@ impl KinetostaticsResult {
                 virtual_power_residual: sum.virtual_power_residual,
                 max_constraint_residual: s.max_constraint_residual,
                 max_newton_iterations: s.max_iterations,
+                max_friction_iterations: s.steps.iter().map(|st| st.friction_iterations).max().unwrap_or(0),
                 method: METHOD.into(),
             },
             warnings,

@@ -22,15 +22,7 @@ pub enum Load {
 /// Generalized applied forces Q at a configuration (velocities `qd` for dampers).
 pub fn applied_forces(m: &Mechanism, loads: &[Load], q: &[f64], qd: &[f64], phi: f64) -> DVector<f64> {
     let mut qv = DVector::zeros(m.n_coordinates());
-    // Force f at point `at` of body b, plus a couple.
-    let mut apply = |b: BodyId, at: [f64; 2], f: [f64; 2], couple: f64| {
-        if let Some(c) = m.column(b) {
-            let arm = rotate(q[c + 2], m.local(b, at));
-            qv[c] += f[0];
-            qv[c + 1] += f[1];
-            qv[c + 2] += cross(arm, f) + couple;
-        }
-    };
+    let mut apply = |b: BodyId, at: [f64; 2], f: [f64; 2], couple: f64| add_force(m, q, &mut qv, b, at, f, couple);
     for (b, body) in m.bodies.iter().enumerate() {
         apply(b, body.cg, [body.mass * m.gravity[0], body.mass * m.gravity[1]], 0.0);
     }
@@ -74,4 +66,14 @@ pub fn point_motion(m: &Mechanism, q: &[f64], qd: &[f64], (b, p): (BodyId, [f64;
     let s = m.local(b, p);
     let (a, ds) = (rotate(q[c + 2], s), rotate_d(q[c + 2], s));
     ([q[c] + a[0], q[c + 1] + a[1]], [qd[c] + ds[0] * qd[c + 2], qd[c + 1] + ds[1] * qd[c + 2]])
+}
+
+/// Adds to Q a force f at point `at` (reference coordinates) of body b, plus a couple.
+pub fn add_force(m: &Mechanism, q: &[f64], qv: &mut DVector<f64>, b: BodyId, at: [f64; 2], f: [f64; 2], couple: f64) {
+    if let Some(c) = m.column(b) {
+        let arm = rotate(q[c + 2], m.local(b, at));
+        qv[c] += f[0];
+        qv[c + 1] += f[1];
+        qv[c + 2] += cross(arm, f) + couple;
+    }
 }

@@ -11,6 +11,7 @@
 //! single input independently: with g = dq/dφ (Φ_q g = e_driver),
 //! T = gᵀ(M q̈ − Q); and I* = gᵀMg, M* = gᵀQ (Zhukovsky).
 
+mod friction;
 mod loads;
 mod summary;
 
@@ -83,6 +84,8 @@ pub struct Step {
     pub energy_shares: Option<Vec<f64>>,
     pub condition: f64,
     pub kinematics: Option<Motion>,
+    /// Fixed-point iterations of joint friction (0 without friction).
+    pub friction_iterations: usize,
     /// A singular position: no driving action, reaction or reduced quantity is computed.
     pub singular: bool,
 }
@@ -143,11 +146,12 @@ fn step(
             energy_shares: None,
             condition: c.condition,
             kinematics: None,
+            friction_iterations: 0,
             singular: true,
         });
     }
     let phi = inputs[0][0];
-    let qv = applied_forces(m, loads, &c.q, &c.qd, phi);
+    let (qv, friction_iterations) = with_friction(m, c, applied_forces(m, loads, &c.q, &c.qd, phi), k, phi)?;
     let inertial = mass_times(m, &c.qdd) - &qv;
     let single = m.drivers.len() == 1;
     let g = if single { motion(m, &c.q, &[[phi, 1.0, 0.0]]).map(|(g, _, _)| g) } else { None };
@@ -189,8 +193,35 @@ fn step(
         energy_shares,
         condition: c.condition,
         kinematics: outputs.kinematics.then(|| Motion { q: c.q.clone(), qd: c.qd.clone(), qdd: c.qdd.clone() }),
+        friction_iterations,
         singular: false,
     })
+}
+
+/// Q plus the joints' friction forces, iterated to a fixed point with the reactions.
+fn with_friction(
+    m: &Mechanism,
+    c: &Configuration,
+    q_applied: DVector<f64>,
+    step: usize,
+    input: f64,
+) -> Result<(DVector<f64>, usize), EngineError> {
+    if !friction::present(m) {
+        return Ok((q_applied, 0));
+    }
+    let mq = mass_times(m, &c.qdd);
+    let scale = q_applied.amax().max(mq.amax()).max(f64::MIN_POSITIVE);
+    let mut qf = DVector::zeros(q_applied.len());
+    for iteration in 1..=friction::MAX_ITERATIONS {
+        let (_, reactions) = multipliers(m, c, &(&mq - &q_applied - &qf), Some(&Vec::new()), step, input)?;
+        let next = friction::forces(m, c, &reactions);
+        let change = (&next - &qf).amax();
+        qf = next;
+        if change <= 1e-13 * scale {
+            return Ok((q_applied + qf, iteration));
+        }
+    }
+    Err(EngineError::FrictionDiverged { step, input })
 }
 
 /// λ from Φ_qᵀλ = −(M q̈ − Q): driving actions and, if asked, every reaction.

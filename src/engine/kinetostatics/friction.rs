@@ -1,0 +1,71 @@
+//! Coulomb friction in the joints, which makes the kinetostatic problem
+//! nonlinear: the friction forces depend on the reactions they change. Solved
+//! by fixed-point iteration on Q_f (generalized friction forces):
+//!
+//! ```text
+//! Φ_qᵀλ_k = Q + Q_f(λ_{k−1}) − M q̈,   until |Q_f,k − Q_f,k−1| ≤ tol·|Q|
+//! ```
+//!
+//! Revolute: couple −μ·r·|R|·sign(ω₂ − ω₁) on the second body (and its
+//! opposite on the first). Prismatic and pin-in-slot: force −μ·|N|·sign(v)
+//! along the slide at the joint point, v the sliding speed of the second body.
+//! Where the joint does not move (sign 0) there is no friction (static
+//! friction is not determined by kinetostatics).
+
+use super::Reaction;
+use super::loads::add_force;
+use crate::engine::kinematics::Configuration;
+use crate::engine::model::{JointKind, Mechanism, dot, perp, rotate, rotate_d};
+use nalgebra::DVector;
+
+/// Fixed-point iterations allowed per position.
+pub const MAX_ITERATIONS: usize = 100;
+
+/// Whether any joint has friction.
+pub fn present(m: &Mechanism) -> bool {
+    m.joints.iter().any(|j| j.friction.is_some_and(|f| f.mu > 0.0))
+}
+
+fn sign(v: f64) -> f64 {
+    if v > 0.0 {
+        1.0
+    } else if v < 0.0 {
+        -1.0
+    } else {
+        0.0
+    }
+}
+
+/// Q_f for the given reactions (one per joint, in joint order).
+pub fn forces(m: &Mechanism, c: &Configuration, reactions: &[Reaction]) -> DVector<f64> {
+    let mut qf = DVector::zeros(m.n_coordinates());
+    let pose = |b: usize| m.column(b).map_or((0.0, 0.0), |col| (c.q[col + 2], c.qd[col + 2]));
+    let velocity = |b: usize, at: [f64; 2]| {
+        m.column(b).map_or([0.0, 0.0], |col| {
+            let v = rotate_d(c.q[col + 2], m.local(b, at));
+            [c.qd[col] + v[0] * c.qd[col + 2], c.qd[col + 1] + v[1] * c.qd[col + 2]]
+        })
+    };
+    for (joint, r) in m.joints.iter().zip(reactions) {
+        let Some(f) = joint.friction else { continue };
+        let [i, j] = joint.bodies;
+        match joint.kind {
+            JointKind::Revolute => {
+                let couple = -f.mu * f.radius * r.fx.hypot(r.fy) * sign(pose(j).1 - pose(i).1);
+                add_force(m, &c.q, &mut qf, j, joint.at, [0.0, 0.0], couple);
+                add_force(m, &c.q, &mut qf, i, joint.at, [0.0, 0.0], -couple);
+            }
+            JointKind::Prismatic { axis } | JointKind::PinSlot { axis } => {
+                let u = rotate(pose(i).0, axis);
+                let normal = dot(perp(u), [r.fx, r.fy]).abs();
+                let (vj, vi) = (velocity(j, joint.at), velocity(i, joint.at));
+                let slide = sign(dot(u, [vj[0] - vi[0], vj[1] - vi[1]]));
+                let force = [-f.mu * normal * slide * u[0], -f.mu * normal * slide * u[1]];
+                add_force(m, &c.q, &mut qf, j, joint.at, force, 0.0);
+                add_force(m, &c.q, &mut qf, i, joint.at, [-force[0], -force[1]], 0.0);
+            }
+            JointKind::Gear { .. } => {}
+        }
+    }
+    qf
+}
