@@ -24,6 +24,8 @@ pub struct Configuration {
     pub q: Vec<f64>,
     pub qd: Vec<f64>,
     pub qdd: Vec<f64>,
+    /// Velocity coefficients g = dq/dφ (one input only).
+    pub g: Option<Vec<f64>>,
     /// Condition number of Φ_q (2-norm).
     pub condition: f64,
     pub iterations: usize,
@@ -111,15 +113,24 @@ pub fn sweep(m: &Mechanism, positions: &[Vec<[f64; 3]>]) -> Result<Vec<Configura
             Err(_) => return Err(failure.unwrap_or(EngineError::Singular { step, input: inputs[0][0] })),
         };
         failure = None;
-        let motion_now = motion(m, &q, inputs);
-        let cond = motion_now.as_ref().map_or(f64::INFINITY, |(_, _, sys)| condition(&sys.jacobian));
-        match motion_now {
-            Some((qd, qdd, _)) if cond <= SINGULAR_CONDITION => {
-                if m.drivers.len() == 1 {
-                    coefficients = motion(m, &q, &[[inputs[0][0], 1.0, 0.0]]).map(|(g, h, _)| (g, h, inputs[0][0]));
-                }
+        // One input: g = dq/dφ and h = d²q/dφ² give q̇ = gω and q̈ = gα + hω²
+        // (γ is quadratic in q̇), and they are the next step's predictor.
+        let single = m.drivers.len() == 1;
+        let solved = if single { motion(m, &q, &[[inputs[0][0], 1.0, 0.0]]) } else { motion(m, &q, inputs) };
+        let cond = solved.as_ref().map_or(f64::INFINITY, |(_, _, sys)| condition(&sys.jacobian));
+        match solved {
+            Some((a, b, _)) if cond <= SINGULAR_CONDITION => {
+                let (qd, qdd, g) = if single {
+                    let [_, w, alpha] = inputs[0];
+                    let qd = a.iter().map(|g| g * w).collect();
+                    let qdd = a.iter().zip(&b).map(|(g, h)| g * alpha + h * w * w).collect();
+                    coefficients = Some((a.clone(), b, inputs[0][0]));
+                    (qd, qdd, Some(a))
+                } else {
+                    (a, b, None)
+                };
                 base = q.clone();
-                out.push(Configuration { q, qd, qdd, condition: cond, iterations, residual, singular: false });
+                out.push(Configuration { q, qd, qdd, g, condition: cond, iterations, residual, singular: false });
             }
             _ => out.push(Configuration { iterations, residual, ..Configuration::singular_at(q, cond) }),
         }
@@ -133,7 +144,8 @@ pub fn sweep(m: &Mechanism, positions: &[Vec<[f64; 3]>]) -> Result<Vec<Configura
 impl Configuration {
     fn singular_at(q: Vec<f64>, condition: f64) -> Self {
         let n = q.len();
-        Self { q, qd: vec![0.0; n], qdd: vec![0.0; n], condition, iterations: 0, residual: f64::NAN, singular: true }
+        let (qd, qdd) = (vec![0.0; n], vec![0.0; n]);
+        Self { q, qd, qdd, g: None, condition, iterations: 0, residual: f64::NAN, singular: true }
     }
 }
 

@@ -20,7 +20,7 @@ pub use summary::Summary;
 
 use super::EngineError;
 use super::constraints::{State, evaluate, joint_offsets};
-use super::kinematics::{Configuration, motion, solve_linear, sweep};
+use super::kinematics::{Configuration, solve_linear, sweep};
 use super::mobility::{Mobility, mobility};
 use super::model::{BodyId, Mechanism, cross, rotate};
 use nalgebra::DVector;
@@ -154,9 +154,9 @@ fn step(
     let (qv, friction_iterations) = with_friction(m, c, applied_forces(m, loads, &c.q, &c.qd, phi), k, phi)?;
     let inertial = mass_times(m, &c.qdd) - &qv;
     let single = m.drivers.len() == 1;
-    let g = if single { motion(m, &c.q, &[[phi, 1.0, 0.0]]).map(|(g, _, _)| g) } else { None };
-    let driving_virtual_power = g.as_ref().map(|g| g.iter().zip(inertial.iter()).map(|(a, b)| a * b).sum::<f64>());
-    let (reduced_inertia, reduced_torque) = match (&g, outputs.reduced) {
+    let g = c.g.as_ref();
+    let driving_virtual_power = g.map(|g| g.iter().zip(inertial.iter()).map(|(a, b)| a * b).sum::<f64>());
+    let (reduced_inertia, reduced_torque) = match (g, outputs.reduced) {
         (Some(g), true) => {
             let mg = mass_times(m, g);
             (
@@ -166,7 +166,7 @@ fn step(
         }
         _ => (None, None),
     };
-    let energy_shares = match (&g, reduced_inertia) {
+    let energy_shares = match (g, reduced_inertia) {
         (Some(g), Some(total)) if total > 0.0 => Some(
             (0..g.len() / 3)
                 .map(|b| {

@@ -1,0 +1,81 @@
+//! Engine timings: `cargo bench`. Prints wall time per job or per step (the
+//! median of several runs) on this machine; no assertions (benchmarks are not
+//! tests). Shows what computing only what is asked buys.
+
+use mechdyn::engine::expr::Expr;
+use mechdyn::engine::flywheel::{FlywheelProblem, Load as TorqueLoad, TorqueItem, solve as flywheel};
+use mechdyn::engine::function::{Function, Segment};
+use mechdyn::engine::kinetostatics::{Load, Outputs, solve};
+use mechdyn::engine::samples::offset_slider_crank;
+use std::f64::consts::PI;
+use std::hint::black_box;
+use std::time::Instant;
+
+/// Median wall time of `runs` calls, in microseconds.
+fn median_us(runs: usize, mut f: impl FnMut()) -> f64 {
+    let mut t: Vec<f64> = (0..runs)
+        .map(|_| {
+            let start = Instant::now();
+            f();
+            start.elapsed().as_secs_f64() * 1e6
+        })
+        .collect();
+    t.sort_by(f64::total_cmp);
+    t[runs / 2]
+}
+
+fn p103(check: bool, inertia: Function) -> FlywheelProblem {
+    let load = Function::Segments(vec![Segment {
+        from: 0.0,
+        to: PI,
+        expr: Expr::compile("-500*sin(phi)", &["phi"]).unwrap(),
+    }]);
+    FlywheelProblem {
+        period: 2.0 * PI,
+        mean_speed: 2.0 * PI,
+        irregularity: 0.04,
+        torques: vec![
+            TorqueItem { name: "load".into(), load: TorqueLoad::Given(load), ratio: 1.0, label: "load".into() },
+            TorqueItem { name: "motor".into(), load: TorqueLoad::Balance, ratio: 1.0, label: "motor".into() },
+        ],
+        reduced_inertia: inertia,
+        reduced_inertia_label: "I*".into(),
+        existing_inertia: 0.0,
+        flywheel_ratio: 1.0,
+        disk: None,
+        tolerance: 1e-9,
+        check,
+        samples: 0,
+    }
+}
+
+fn main() {
+    println!("| job | what | time |");
+    println!("|---|---|---|");
+    let variable = || Function::Expr(Expr::compile("5*sin(phi)^2", &["phi"]).unwrap());
+    for (what, p) in [
+        ("P.103, I* = 5 sin²φ, exact + time check", p103(true, variable())),
+        ("P.103, I* = 5 sin²φ, exact, no check", p103(false, variable())),
+        ("P.103, I* constant (closed form), no check", p103(false, Function::Constant(5.0))),
+    ] {
+        let t = median_us(51, || {
+            black_box(flywheel(&p).unwrap());
+        });
+        println!("| flywheel | {what} | {t:.0} µs/job |");
+    }
+    let m = offset_slider_crank();
+    let b = m.joints[2].at;
+    let gas = Function::Expr(Expr::compile("-8000*exp(3*(cos(phi - 0.35) - 1))", &["phi"]).unwrap());
+    let loads = vec![Load::Force { body: 3, at: b, direction: [1.0, 0.0], magnitude: gas }];
+    let n = 3600;
+    let positions: Vec<Vec<[f64; 3]>> = (0..n).map(|k| vec![[2.0 * PI * k as f64 / n as f64, 150.0, 0.0]]).collect();
+    for (what, outputs) in [
+        ("all reactions + I*, M* + virtual-power check", Outputs { reactions: true, reduced: true, kinematics: false }),
+        ("driving torque only (virtual power)", Outputs { reactions: false, reduced: false, kinematics: false }),
+    ] {
+        let t = median_us(5, || {
+            black_box(solve(&m, &loads, &positions, outputs).unwrap());
+        });
+        println!("| kinetostatics | slider-crank, 3600 steps, {what} | {:.2} µs/step |", t / n as f64);
+    }
+}
