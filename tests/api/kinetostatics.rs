@@ -333,3 +333,40 @@ async fn joint_friction_adds_the_work_it_dissipates() {
     assert!(g["result"]["accuracy"]["max_friction_iterations"].as_u64().unwrap() >= 1);
     assert!(g["result"]["summary"]["virtual_power_residual"].as_f64().unwrap() < 1e-12);
 }
+
+/// Scissor lift of seed 002 (exam problem, excerpt in the seed): platform 9m,
+/// two bars of mass m and length 2L crossed at their midpoints F, bar DE at
+/// α = 30° to the horizontal, the platform descending at constant v, driven by
+/// the horizontal piston AB at B. Printed answer (virtual power):
+/// F_AB = −√3·(10mg + 8mv²/(27L)). With m = 10 kg, L = 0.5 m, v = 0.3 m/s:
+/// −1700.0718 N. The piston's motion follows from y_G = 2L sin α, x_B = 2L cos α:
+/// ẋ_B = v tan α = v/√3, ẍ_B = −v²/(2L cos³α).
+#[tokio::test]
+async fn scissor_lift_piston_force_matches_the_printed_answer() {
+    let app = TestApp::new().await;
+    let (m, l, v, g) = (10.0f64, 0.5f64, 0.3f64, 9.81f64);
+    let c30 = 30f64.to_radians().cos();
+    let bar = |name: &str| json!({"name": name, "mass": m, "inertia": m * l * l / 3.0, "cg": "F"});
+    let body = json!({
+        "mechanism": {
+            "points": {"D": [0, 0], "E": [2.0 * l * c30, l], "B": [2.0 * l * c30, 0], "C": [0, l], "F": [l * c30, l / 2.0]},
+            "bodies": [bar("DE"), bar("BC"), {"name": "platform", "mass": 9.0 * m, "inertia": 1.0, "cg": [l * c30, l]}, {"name": "block"}],
+            "joints": [
+                {"name": "D", "type": "revolute", "bodies": ["ground", "DE"], "at": "D"},
+                {"name": "F", "type": "revolute", "bodies": ["DE", "BC"], "at": "F"},
+                {"name": "C", "type": "revolute", "bodies": ["BC", "platform"], "at": "C"},
+                {"name": "E", "type": "pin_slot", "bodies": ["platform", "DE"], "at": "E", "axis": [1, 0]},
+                {"name": "B", "type": "revolute", "bodies": ["block", "BC"], "at": "B"},
+                {"name": "piston", "type": "prismatic", "bodies": ["ground", "block"], "at": "B", "axis": [1, 0]}
+            ],
+            "gravity": [0, -g]
+        },
+        "input": {"joint": "piston", "speed": v / 3f64.sqrt(), "acceleration": -v * v / (2.0 * l * c30.powi(3)), "start": 0, "end": 0.01, "steps": 1}
+    });
+    let r = post(&app, &body).await["result"].clone();
+    assert_eq!(r["dof"], 1);
+    let expected = -(3f64.sqrt()) * (10.0 * m * g + 8.0 * m * v * v / (27.0 * l));
+    close(&r["steps"][0]["driving"], expected, 1e-12, "F_AB (printed −√3(10mg + 8mv²/27L))");
+    close(&r["steps"][0]["kinematics"][2]["vy"], -v, 1e-12, "the platform descends at v");
+    close(&r["steps"][0]["kinematics"][2]["ay"], 0.0, 1e-12, "at constant speed");
+}
