@@ -444,3 +444,56 @@ async fn a_four_bar_approaching_its_toggle_reports_it() {
     );
     assert!(conditions.windows(2).rev().take(20).all(|w| w[1] > w[0]), "rising towards the toggle");
 }
+
+/// A spring (k = 2000 N/m, free length 0.15 m) and a damper (c = 30 N·s/m)
+/// between the tip A of a massless crank r = 0.1 m and the ground point
+/// S = (0, 0.2), ω = 5 rad/s. With L = |A − S| and L' = dL/dφ = −r·d·cos φ / L
+/// (d = 0.2), the driving torque is T = k(L − L₀)L' + c·ω·L'² (closed form).
+#[tokio::test]
+async fn springs_and_dampers_load_the_driver() {
+    let app = TestApp::new().await;
+    let (r, d, k, l0, c, w) = (0.1f64, 0.2f64, 2000.0f64, 0.15f64, 30.0f64, 5.0f64);
+    let body = json!({
+        "mechanism": {
+            "points": {"O": [0, 0], "A": [r, 0], "S": [0, d]},
+            "bodies": [{"name": "crank"}],
+            "joints": [{"name": "O", "type": "revolute", "bodies": ["ground", "crank"], "at": "O"}]
+        },
+        "input": {"joint": "O", "speed": w, "steps": 24},
+        "loads": [
+            {"type": "spring", "a": ["crank", "A"], "b": ["ground", "S"], "stiffness": "2 kN/m", "free_length": "150 mm"},
+            {"type": "damper", "a": ["crank", "A"], "b": ["ground", "S"], "coefficient": c}
+        ]
+    });
+    let res = post(&app, &body).await["result"].clone();
+    for step in res["steps"].as_array().unwrap() {
+        let p = step["input"].as_f64().unwrap();
+        let length = (r * p.cos()).hypot(r * p.sin() - d);
+        let dl = -r * d * p.cos() / length;
+        let t = k * (length - l0) * dl + c * w * dl * dl;
+        assert!((step["driving"].as_f64().unwrap() - t).abs() < 1e-9, "T at {p}: {} vs {t}", step["driving"]);
+    }
+}
+
+/// A motion law: the crank's speed given as a Function of its angle,
+/// ω(φ) = 10 + 2 sin φ, so α = ω·dω/dφ = 2(10 + 2 sin φ) cos φ. A disk of
+/// 0.5 kg·m² on the crank needs T = 0.5·α (closed form).
+#[tokio::test]
+async fn a_speed_law_gives_the_acceleration_omega_domega_dphi() {
+    let app = TestApp::new().await;
+    let body = json!({
+        "mechanism": {
+            "points": {"O": [0, 0]},
+            "bodies": [{"name": "disk", "mass": 4, "inertia": 0.5, "cg": "O"}],
+            "joints": [{"name": "O", "type": "revolute", "bodies": ["ground", "disk"], "at": "O"}]
+        },
+        "input": {"joint": "O", "speed": {"expr": "10 + 2*sin(phi)"}, "steps": 12}
+    });
+    let res = post(&app, &body).await["result"].clone();
+    for step in res["steps"].as_array().unwrap() {
+        let p = step["input"].as_f64().unwrap();
+        let t = 0.5 * 2.0 * (10.0 + 2.0 * p.sin()) * p.cos();
+        assert!((step["driving"].as_f64().unwrap() - t).abs() < 1e-12, "T at {p}");
+        close(&step["kinematics"][0]["omega"], 10.0 + 2.0 * p.sin(), 1e-12, "ω(φ)");
+    }
+}
