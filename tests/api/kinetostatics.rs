@@ -497,3 +497,56 @@ async fn a_speed_law_gives_the_acceleration_omega_domega_dphi() {
         close(&step["kinematics"][0]["omega"], 10.0 + 2.0 * p.sin(), 1e-12, "ω(φ)");
     }
 }
+
+/// The two-loop crank / slotted lever / slider mechanism of the course notes
+/// (P.77): crank O1B = r about O1 = (d, 0), block 3 at B sliding along the
+/// lever O2A (pivot O2 at the origin, length a), block 5 at A sliding in a
+/// horizontal slot of body 6, which slides vertically (y = a sin θ). P.77's
+/// closed form (Zhukovsky), with s² = r² + d² + 2rd cos φ and
+/// tan θ = r sin φ/(d + r cos φ):
+/// I* = I_G2 + r²m₃ + (r²/s²)(I_G3 + I_G4 + m₆x² + a²(m₄/4 + m₅))·cos²(θ − φ),
+/// M* = −F·x·(r/s)·cos(θ − φ) for a weight F on body 6, x = a cos θ.
+/// (The printed ẏ line omits the factor x that its M* formula has; the formula
+/// also neglects block 5's own rotary inertia, so I_G5 = 0 here.)
+#[tokio::test]
+async fn the_two_loop_mechanism_of_p77_matches_its_closed_form() {
+    let app = TestApp::new().await;
+    let (d, r, a) = (0.3f64, 0.1f64, 0.5f64);
+    let (i2, m3, i3, m4, i4, m5, m6, f) = (0.02, 0.5, 0.001, 2.0, 2.0 * a * a / 12.0, 0.3, 4.0, 100.0);
+    let body = json!({
+        "mechanism": {
+            "points": {"O1": [d, 0], "O2": [0, 0], "B": [d + r, 0], "A": [a, 0]},
+            "bodies": [
+                {"name": "crank", "mass": 1, "inertia": i2, "cg": "O1"},
+                {"name": "block3", "mass": m3, "inertia": i3, "cg": "B"},
+                {"name": "lever", "mass": m4, "inertia": i4, "cg": [a / 2.0, 0]},
+                {"name": "block5", "mass": m5, "inertia": 0, "cg": "A"},
+                {"name": "slider6", "mass": m6, "inertia": 0.1, "cg": [a, 0.2]}
+            ],
+            "joints": [
+                {"name": "O1", "type": "revolute", "bodies": ["ground", "crank"], "at": "O1"},
+                {"name": "B", "type": "revolute", "bodies": ["crank", "block3"], "at": "B"},
+                {"name": "slot4", "type": "prismatic", "bodies": ["lever", "block3"], "at": "B", "axis": [1, 0]},
+                {"name": "O2", "type": "revolute", "bodies": ["ground", "lever"], "at": "O2"},
+                {"name": "A", "type": "revolute", "bodies": ["lever", "block5"], "at": "A"},
+                {"name": "slot6", "type": "prismatic", "bodies": ["slider6", "block5"], "at": "A", "axis": [1, 0]},
+                {"name": "guide6", "type": "prismatic", "bodies": ["ground", "slider6"], "at": [a, 0.2], "axis": [0, 1]}
+            ]
+        },
+        "input": {"joint": "O1", "speed": 10, "steps": 24},
+        "loads": [{"type": "force", "body": "slider6", "at": [a, 0.2], "direction": [0, -1], "magnitude": f}]
+    });
+    let res = post(&app, &body).await["result"].clone();
+    assert_eq!((res["dof"].as_u64(), res["grubler"]["mobility"].as_i64()), (Some(1), Some(1)));
+    for step in res["steps"].as_array().unwrap() {
+        let p = step["input"].as_f64().unwrap();
+        let s = (r * r + d * d + 2.0 * r * d * p.cos()).sqrt();
+        let th = (r * p.sin()).atan2(d + r * p.cos());
+        let x = a * th.cos();
+        let c2 = (th - p).cos().powi(2);
+        let istar = i2 + r * r * m3 + r * r / (s * s) * (i3 + i4 + m6 * x * x + a * a * (m4 / 4.0 + m5)) * c2;
+        close(&step["reduced_inertia"], istar, 1e-9, "I* (P.77)");
+        let mstar = -f * x * r / s * (th - p).cos();
+        assert!((step["reduced_torque"].as_f64().unwrap() - mstar).abs() < 1e-9 * f * a, "M* at {p}");
+    }
+}
