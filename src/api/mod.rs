@@ -126,3 +126,16 @@ pub fn engine_error(e: crate::engine::EngineError, fallback: &str) -> FieldError
     };
     FieldError::at(pointer, e.to_string())
 }
+
+/// The converted problem, or every error: the body's unknown fields first,
+/// then those of the conversion.
+pub fn validated<T>(mut unknown: Vec<FieldError>, converted: Result<T, Vec<FieldError>>) -> Result<T, ApiError> {
+    match converted {
+        Ok(p) if unknown.is_empty() => Ok(p),
+        Ok(_) => Err(ApiError::Invalid(unknown)),
+        Err(more) => {
+            unknown.extend(more);
+            Err(ApiError::Invalid(unknown))
+        }
+    }
+}

@@ -10,7 +10,7 @@ pub use result::{
 
 use super::json::JsonBody;
 use super::problem::{ApiError, FieldError, Problem};
-use super::{AppState, engine_error, jobs};
+use super::{AppState, engine_error, jobs, validated};
 use crate::engine::flywheel::solve;
 use axum::extract::State;
 use axum::response::Response;
@@ -33,17 +33,8 @@ pub async fn create(State(state): State<AppState>, body: JsonBody<FlywheelReques
 }
 
 /// Validates and solves a request (also used by `mechdyn solve flywheel`).
-pub fn compute(request: &FlywheelRequest, mut errors: Vec<FieldError>) -> Result<FlywheelResult, ApiError> {
-    let problem = request.to_problem();
-    match problem {
-        Ok(p) if errors.is_empty() => {
-            let solution = solve(&p).map_err(|e| ApiError::Invalid(vec![engine_error(e, "/torques")]))?;
-            Ok(FlywheelResult::new(solution, p.torques.iter().map(|t| t.name.clone())))
-        }
-        Ok(_) => Err(ApiError::Invalid(errors)),
-        Err(more) => {
-            errors.extend(more);
-            Err(ApiError::Invalid(errors))
-        }
-    }
+pub fn compute(request: &FlywheelRequest, unknown: Vec<FieldError>) -> Result<FlywheelResult, ApiError> {
+    let p = validated(unknown, request.to_problem())?;
+    let solution = solve(&p).map_err(|e| ApiError::Invalid(vec![engine_error(e, "/torques")]))?;
+    Ok(FlywheelResult::new(solution, p.torques.iter().map(|t| t.name.clone())))
 }

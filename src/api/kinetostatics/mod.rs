@@ -1,15 +1,17 @@
 //! `POST /v1/kinetostatics`: driving actions and joint reactions of a driven mechanism.
 
+mod loads;
 mod request;
 mod result;
 
+pub use loads::{LoadDto, LoadType};
 pub(crate) use request::machine_parts;
-pub use request::{InputDto, Inputs, KinetostaticsRequest, LoadDto, LoadType, OutputKind};
+pub use request::{InputDto, Inputs, KinetostaticsRequest, OutputKind};
 pub use result::{KinetostaticsResult, csv_table};
 
 use super::json::JsonBody;
 use super::problem::{ApiError, FieldError, Problem};
-use super::{AppState, engine_error, jobs};
+use super::{AppState, engine_error, jobs, validated};
 use crate::engine::kinetostatics::solve;
 use axum::extract::State;
 use axum::response::Response;
@@ -31,15 +33,8 @@ pub async fn create(State(state): State<AppState>, body: JsonBody<KinetostaticsR
 }
 
 /// Validates and solves a request (also used by `mechdyn solve kinetostatics`).
-pub fn compute(request: &KinetostaticsRequest, mut errors: Vec<FieldError>) -> Result<KinetostaticsResult, ApiError> {
-    let problem = match request.to_problem() {
-        Ok(p) if errors.is_empty() => p,
-        Ok(_) => return Err(ApiError::Invalid(errors)),
-        Err(more) => {
-            errors.extend(more);
-            return Err(ApiError::Invalid(errors));
-        }
-    };
+pub fn compute(request: &KinetostaticsRequest, unknown: Vec<FieldError>) -> Result<KinetostaticsResult, ApiError> {
+    let problem = validated(unknown, request.to_problem())?;
     let solution = solve(&problem.mechanism, &problem.loads, &problem.positions, problem.outputs)
         .map_err(|e| ApiError::Invalid(vec![engine_error(e, "/input")]))?;
     let joint_names: Vec<String> = problem.mechanism.joints.iter().map(|j| j.name.clone()).collect();

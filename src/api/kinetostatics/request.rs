@@ -1,6 +1,7 @@
 //! `POST /v1/kinetostatics` request and its conversion into an engine problem.
 
-use crate::api::mechanism::{MechanismDto, PointRef, body_id};
+use super::loads::{LoadDto, convert_loads};
+use crate::api::mechanism::MechanismDto;
 use crate::api::problem::FieldError;
 use crate::api::quantity::{Errors, FunctionDto, Quantity};
 use crate::engine::function::{Function, Side};
@@ -18,8 +19,6 @@ use utoipa::{PartialSchema, ToSchema};
 /// Most positions in one job.
 pub const MAX_STEPS: usize = 100_000;
 const DEFAULT_STEPS: usize = 360;
-/// Most loads in one job.
-pub const MAX_LOADS: usize = 500;
 
 /// A kinetostatic (inverse dynamics) problem: a mechanism, its driven input(s) and its loads.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
@@ -115,47 +114,6 @@ impl ToSchema for Inputs {
     }
 }
 
-/// Load types.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
-#[serde(rename_all = "lowercase")]
-pub enum LoadType {
-    Force,
-    Torque,
-    Spring,
-    Damper,
-}
-
-/// A load. `force`: body, at, direction (fixed in the ground), magnitude (Function);
-/// `torque`: body, value (Function); `spring`: a, b ([body, point]), stiffness,
-/// free_length; `damper`: a, b, coefficient. Functions take `phi`, the first input's coordinate.
-#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
-pub struct LoadDto {
-    #[serde(rename = "type")]
-    pub kind: LoadType,
-    pub body: Option<String>,
-    #[schema(value_type = Option<PointRef>)]
-    pub at: Option<PointRef>,
-    #[schema(min_items = 2, max_items = 2)]
-    pub direction: Option<Vec<f64>>,
-    #[schema(value_type = Option<FunctionDto>)]
-    pub magnitude: Option<FunctionDto>,
-    #[schema(value_type = Option<FunctionDto>)]
-    pub value: Option<FunctionDto>,
-    /// [body, point]
-    #[schema(value_type = Option<Vec<Object>>, min_items = 2, max_items = 2)]
-    pub a: Option<(String, PointRef)>,
-    #[schema(value_type = Option<Vec<Object>>, min_items = 2, max_items = 2)]
-    pub b: Option<(String, PointRef)>,
-    /// N/m
-    #[schema(value_type = Option<Quantity>)]
-    pub stiffness: Option<Quantity>,
-    #[schema(value_type = Option<Quantity>)]
-    pub free_length: Option<Quantity>,
-    /// N·s/m
-    #[schema(value_type = Option<Quantity>)]
-    pub coefficient: Option<Quantity>,
-}
-
 /// The validated problem, ready for the engine.
 pub struct Problem {
     pub mechanism: Mechanism,
@@ -212,22 +170,6 @@ impl KinetostaticsRequest {
     }
 }
 
-/// Converts a list of loads (pointers under `at`, e.g. "/loads").
-pub(crate) fn convert_loads(
-    e: &mut Errors,
-    list: &[LoadDto],
-    mech: &MechanismDto,
-    names: &[String],
-    period: f64,
-    at: &str,
-) -> Vec<Load> {
-    if list.len() > MAX_LOADS {
-        e.push(at, format!("at most {MAX_LOADS} loads"));
-        return Vec::new();
-    }
-    list.iter().enumerate().filter_map(|(k, l)| load(e, l, mech, names, period, &format!("{at}/{k}"))).collect()
-}
-
 /// The mechanism, its loads and a revolute driver for a flywheel's `machine`
 /// (pointers under `at`).
 pub(crate) fn machine_parts(
@@ -252,93 +194,6 @@ pub(crate) fn machine_parts(
     let loads = convert_loads(e, loads, mech, &c.body_names, period, &format!("{at}/loads"));
     mechanism.drivers = vec![Driver { joint: joint?, reference: reference? }];
     Some((mechanism, loads))
-}
-
-fn point_of(e: &mut Errors, p: &PointRef, dto: &MechanismDto, at: &str) -> Option<[f64; 2]> {
-    match p {
-        PointRef::Coords(c) if c.iter().all(|v| v.is_finite()) => Some(*c),
-        PointRef::Coords(_) => e.fail(at, "coordinates must be finite"),
-        PointRef::Name(n) => match dto.points.as_ref().and_then(|ps| ps.get(n)) {
-            Some(c) => Some(*c),
-            None => e.fail(at, format!("unknown point '{n}'")),
-        },
-    }
-}
-
-fn moving_body(e: &mut Errors, names: &[String], name: &str, at: &str) -> Option<usize> {
-    match body_id(names, name) {
-        Some(0) => e.fail(at, "a load on the ground does nothing; name a moving body"),
-        Some(b) => Some(b),
-        None => e.fail(at, format!("unknown body '{name}'")),
-    }
-}
-
-/// Builds one load, checking that it has exactly the fields of its type.
-fn load(e: &mut Errors, l: &LoadDto, mech: &MechanismDto, names: &[String], period: f64, at: &str) -> Option<Load> {
-    let present = [
-        ("body", l.body.is_some()),
-        ("at", l.at.is_some()),
-        ("direction", l.direction.is_some()),
-        ("magnitude", l.magnitude.is_some()),
-        ("value", l.value.is_some()),
-        ("a", l.a.is_some()),
-        ("b", l.b.is_some()),
-        ("stiffness", l.stiffness.is_some()),
-        ("free_length", l.free_length.is_some()),
-        ("coefficient", l.coefficient.is_some()),
-    ];
-    let fields: &[&str] = match l.kind {
-        LoadType::Force => &["body", "at", "direction", "magnitude"],
-        LoadType::Torque => &["body", "value"],
-        LoadType::Spring => &["a", "b", "stiffness", "free_length"],
-        LoadType::Damper => &["a", "b", "coefficient"],
-    };
-    let before = e.0.len();
-    for (name, given) in present {
-        match (fields.contains(&name), given) {
-            (true, false) => e.push(at, format!("a {:?} load needs \"{name}\"", l.kind).to_lowercase()),
-            (false, true) => e.push(&format!("{at}/{name}"), "does not apply to this load type"),
-            _ => {}
-        }
-    }
-    if e.0.len() > before {
-        return None;
-    }
-    let ends = |e: &mut Errors, side: &str, v: &(String, PointRef)| {
-        let b = body_id(names, &v.0).or_else(|| e.fail(&format!("{at}/{side}/0"), format!("unknown body '{}'", v.0)));
-        let p = point_of(e, &v.1, mech, &format!("{at}/{side}/1"));
-        Some((b?, p?))
-    };
-    match l.kind {
-        LoadType::Force => {
-            let body = moving_body(e, names, l.body.as_deref()?, &format!("{at}/body"));
-            let point = point_of(e, l.at.as_ref()?, mech, &format!("{at}/at"));
-            let direction = match l.direction.as_deref() {
-                Some([x, y]) if x.is_finite() && y.is_finite() && x.hypot(*y) > 0.0 => {
-                    Some([x / x.hypot(*y), y / x.hypot(*y)])
-                }
-                _ => e.fail(&format!("{at}/direction"), "must be a finite, non-zero vector [x, y]"),
-            };
-            let magnitude = e.function(l.magnitude.as_ref()?, Dim::FORCE, period, &format!("{at}/magnitude"));
-            Some(Load::Force { body: body?, at: point?, direction: direction?, magnitude: magnitude? })
-        }
-        LoadType::Torque => {
-            let body = moving_body(e, names, l.body.as_deref()?, &format!("{at}/body"));
-            let value = e.function(l.value.as_ref()?, Dim::TORQUE, period, &format!("{at}/value"));
-            Some(Load::Torque { body: body?, value: value? })
-        }
-        LoadType::Spring => {
-            let (a, b) = (ends(e, "a", l.a.as_ref()?), ends(e, "b", l.b.as_ref()?));
-            let k = e.quantity(l.stiffness.as_ref()?, Dim::STIFFNESS, &format!("{at}/stiffness"));
-            let l0 = e.quantity(l.free_length.as_ref()?, Dim::LENGTH, &format!("{at}/free_length"));
-            Some(Load::Spring { a: a?, b: b?, stiffness: k?, free_length: l0? })
-        }
-        LoadType::Damper => {
-            let (a, b) = (ends(e, "a", l.a.as_ref()?), ends(e, "b", l.b.as_ref()?));
-            let c = e.quantity(l.coefficient.as_ref()?, Dim::DAMPING, &format!("{at}/coefficient"));
-            Some(Load::Damper { a: a?, b: b?, coefficient: c? })
-        }
-    }
 }
 
 /// Drivers and the positions (coordinate, speed, acceleration per input) of every step.
