@@ -2,7 +2,7 @@
 //! conversion into the engine's model, with every error under its pointer.
 
 use super::quantity::{Errors, Quantity};
-use crate::engine::model::{Body, BodyId, Friction, Joint, JointKind, Mechanism};
+use crate::engine::model::{Body, BodyId, Friction, Joint, JointKind, Mechanism, Pitch};
 use crate::units::Dim;
 use serde::de::{self, Deserializer, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
@@ -116,7 +116,7 @@ pub struct JointDto {
     pub internal: Option<bool>,
     /// Gear: the carrier body (default ground).
     pub carrier: Option<String>,
-    /// Gear module (m): reported tooth force at the pitch point (not yet computed).
+    /// Gear module (m): with `teeth`, the reaction is the tooth force at the pitch point.
     #[schema(value_type = Option<Quantity>)]
     pub module: Option<Quantity>,
     #[schema(value_type = Option<Quantity>)]
@@ -243,6 +243,11 @@ impl MechanismDto {
                 joints.push(Joint { name: j.name.clone(), kind, bodies: [b0, b1], at: at_point, friction });
             }
         }
+        for (k, j) in self.joints.iter().enumerate() {
+            if j.module.is_some() {
+                self.pitch(e, k, &mut joints, &format!("{at}/joints/{k}"));
+            }
+        }
         let gravity = match self.gravity.as_deref() {
             None => [0.0, 0.0],
             Some([gx, gy]) if gx.is_finite() && gy.is_finite() => [*gx, *gy],
@@ -252,6 +257,50 @@ impl MechanismDto {
             mechanism: Mechanism { bodies, joints, drivers: Vec::new(), gravity },
             body_names: names,
         })
+    }
+
+    /// Sets the pitch geometry of gear joint `k` (given a module): pitch radius of the
+    /// second gear m·z₂/2 and the gears' centres, the points of their bearings.
+    fn pitch(&self, e: &mut Errors, k: usize, joints: &mut [Joint], at: &str) {
+        let dto = &self.joints[k];
+        let Some(index) = joints.iter().position(|j| j.name == dto.name) else { return };
+        let JointKind::Gear { carrier, .. } = joints[index].kind else { return };
+        let module = dto.module.as_ref().and_then(|q| e.positive(q, Dim::LENGTH, &format!("{at}/module")));
+        let Some(&[z1, z2]) = dto.teeth.as_deref() else {
+            e.push(at, "a gear with a module needs \"teeth\": [z1, z2]");
+            return;
+        };
+        let alpha = match &dto.pressure_angle {
+            Some(q) => e.angle(q, &format!("{at}/pressure_angle")),
+            None => Some(20f64.to_radians()),
+        };
+        // A gear's centre: its revolute joint to the carrier, else to the ground, else any.
+        let centre = |gear: BodyId| {
+            let bearing = |other: Option<BodyId>| {
+                joints.iter().find_map(|j| {
+                    let mine = j.bodies.contains(&gear) && other.is_none_or(|o| j.bodies.contains(&o));
+                    (j.kind == JointKind::Revolute && mine).then_some(j.at)
+                })
+            };
+            bearing(Some(carrier)).or_else(|| bearing(Some(0))).or_else(|| bearing(None))
+        };
+        let bodies = joints[index].bodies;
+        let (Some(c1), Some(c2)) = (centre(bodies[0]), centre(bodies[1])) else {
+            e.push(at, "a gear with a module needs a revolute joint (its bearing) on each gear, to find its centre");
+            return;
+        };
+        let (Some(module), Some(alpha)) = (module, alpha) else { return };
+        let internal = dto.internal.unwrap_or(false);
+        let pitch = Pitch {
+            centers: [c1, c2],
+            radius: module * z2 / 2.0,
+            pressure_angle: alpha,
+            second_is_ring: internal && z2 > z1,
+            internal,
+        };
+        if let JointKind::Gear { pitch: p, .. } = &mut joints[index].kind {
+            *p = Some(pitch);
+        }
     }
 
     /// The point of the first joint that names this body (the cg of a massless link).
@@ -320,7 +369,7 @@ fn joint_kind(e: &mut Errors, j: &JointDto, names: &[String], at: &str) -> Optio
                 }
                 _ => e.fail(at, "a gear needs a finite non-zero \"ratio\" or \"teeth\": [z1, z2] (positive)"),
             };
-            Some(JointKind::Gear { ratio: ratio?, carrier: carrier? })
+            Some(JointKind::Gear { ratio: ratio?, carrier: carrier?, pitch: None })
         }
     }
 }

@@ -137,7 +137,7 @@ pub fn evaluate(m: &Mechanism, s: &State) -> System {
                 b.projection(row + 1, joint.bodies, joint.at, perp(*axis), 0.0);
             }
             JointKind::PinSlot { axis } => b.projection(row, joint.bodies, joint.at, perp(*axis), 0.0),
-            JointKind::Gear { ratio, carrier } => {
+            JointKind::Gear { ratio, carrier, .. } => {
                 b.angles(row, &[(j, 1.0), (i, -ratio), (*carrier, ratio - 1.0)], 0.0);
             }
         }

@@ -33,8 +33,22 @@ pub enum JointKind {
     Prismatic { axis: [f64; 2] },
     /// `at` of the second body moves along `axis` fixed in the first; rotation free.
     PinSlot { axis: [f64; 2] },
-    /// ω₂ − ω_c = k·(ω₁ − ω_c).
-    Gear { ratio: f64, carrier: BodyId },
+    /// ω₂ − ω_c = k·(ω₁ − ω_c); with `pitch`, the reaction is the tooth force.
+    Gear { ratio: f64, carrier: BodyId, pitch: Option<Pitch> },
+}
+
+/// Pitch geometry of a mesh, for the tooth force at the pitch point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pitch {
+    /// Centres of the two gears (reference coordinates, points of each gear).
+    pub centers: [[f64; 2]; 2],
+    /// Pitch radius of the second gear, m.
+    pub radius: f64,
+    pub pressure_angle: f64,
+    /// The second gear is the ring of an internal mesh.
+    pub second_is_ring: bool,
+    /// The mesh is internal.
+    pub internal: bool,
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -85,7 +85,7 @@ pub fn four_bar() -> Mechanism {
 /// internal ring (120) on a carrier, all about O; planet pin at 0.09 m.
 /// Driven by the carrier and the ring.
 pub fn planetary_train() -> Mechanism {
-    let gear = |ratio: f64| JointKind::Gear { ratio, carrier: 2 };
+    let gear = |ratio: f64| JointKind::Gear { ratio, carrier: 2, pitch: None };
     Mechanism {
         bodies: vec![
             body("ground", 0.0, 0.0, [0.0, 0.0]),

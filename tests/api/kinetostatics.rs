@@ -550,3 +550,37 @@ async fn the_two_loop_mechanism_of_p77_matches_its_closed_form() {
         assert!((step["reduced_torque"].as_f64().unwrap() - mstar).abs() < 1e-9 * f * a, "M* at {p}");
     }
 }
+
+/// K5 with the module (2 mm) given: the gear reactions become tooth forces at
+/// the pitch points. Both meshes of the massless planet carry the case's
+/// tangential force T1/R1 = 15/0.06 = 250 N, so with 20° teeth each tooth
+/// force is 250/cos 20° = 266.04 N, and it acts at the pitch radius (its
+/// moment about the planet's centre is 250 N × 0.03 m).
+#[tokio::test]
+async fn gear_reactions_are_tooth_forces_when_the_module_is_given() {
+    let (app, c) = (TestApp::new().await, case("K5_differential_gear_train"));
+    let ft = c["expected"]["tangential_tooth_force_N"].as_f64().unwrap();
+    let mut body = request("k5_differential");
+    body["mechanism"]["joints"][4]["module"] = json!("2 mm");
+    body["mechanism"]["joints"][5]["module"] = json!("2 mm");
+    let r = post(&app, &body).await["result"].clone();
+    for step in r["steps"].as_array().unwrap() {
+        for mesh in [4, 5] {
+            let reaction = &step["reactions"][mesh];
+            let f = reaction["fx"].as_f64().unwrap().hypot(reaction["fy"].as_f64().unwrap());
+            assert!((f - ft / 20f64.to_radians().cos()).abs() < 1e-9, "{reaction}");
+            assert_eq!(reaction["moment"], 0.0);
+        }
+    }
+    // At the first step the planet's centre is at (0.09, 0) and the sun-planet
+    // pitch point at (0.06, 0): the tooth force on the planet is 250 N along y
+    // and 250·tan 20° = 90.99 N along +x (pushing the planet off the sun).
+    let first = &r["steps"][0]["reactions"][4];
+    assert!((first["fy"].as_f64().unwrap().abs() - ft).abs() < 1e-9, "{first}");
+    assert!((first["fx"].as_f64().unwrap() - ft * 20f64.to_radians().tan()).abs() < 1e-9, "{first}");
+    let mut missing = request("k5_differential");
+    missing["mechanism"]["joints"][4]["module"] = json!("2 mm");
+    missing["mechanism"]["joints"][4].as_object_mut().unwrap().remove("teeth");
+    missing["mechanism"]["joints"][4]["ratio"] = json!(-2);
+    assert_eq!(errors(&app, &missing).await, ["/mechanism/joints/4"]);
+}

@@ -22,7 +22,7 @@ use super::EngineError;
 use super::constraints::{State, evaluate, joint_offsets};
 use super::kinematics::{Configuration, solve_linear, sweep};
 use super::mobility::{Mobility, mobility};
-use super::model::{BodyId, Mechanism, cross, rotate};
+use super::model::{BodyId, JointKind, Mechanism, Pitch, cross, perp, rotate};
 use nalgebra::DVector;
 
 /// What to compute at every position.
@@ -258,8 +258,33 @@ fn multipliers(
             let arm = m.column(b).map_or([0.0; 2], |col| rotate(c.q[col + 2], m.local(b, joint.at)));
             let moment = mg - cross(arm, [fx, fy]);
             let determinate = !indeterminate.contains(&k);
+            if let JointKind::Gear { pitch: Some(pitch), .. } = &joint.kind {
+                let [tx, ty] = tooth_force(m, &c.q, [i, j], pitch, sign * moment);
+                return Reaction { joint: k, on: j, by: i, fx: tx, fy: ty, moment: 0.0, determinate };
+            }
             Reaction { joint: k, on: j, by: i, fx: sign * fx, fy: sign * fy, moment: sign * moment, determinate }
         })
         .collect();
     Ok((driving, reactions))
+}
+
+/// The tooth force on the second gear at the pitch point, from the mesh's
+/// couple on it: tangential M₂/r₂, radial |M₂/r₂|·tan α pushing the teeth apart
+/// (towards the gear's centre; outwards for the ring of an internal mesh).
+fn tooth_force(m: &Mechanism, q: &[f64], [i, j]: [BodyId; 2], pitch: &Pitch, couple: f64) -> [f64; 2] {
+    let zero = [0.0; 2];
+    let (c1, _) = point_motion(m, q, &vec![0.0; q.len()], (i, pitch.centers[0]));
+    let (c2, _) = point_motion(m, q, &vec![0.0; q.len()], (j, pitch.centers[1]));
+    let d = [c1[0] - c2[0], c1[1] - c2[1]];
+    let length = d[0].hypot(d[1]);
+    if length == 0.0 {
+        return zero;
+    }
+    // w: from the second gear's centre to the pitch point.
+    let away = pitch.internal && !pitch.second_is_ring;
+    let w = if away { [-d[0] / length, -d[1] / length] } else { [d[0] / length, d[1] / length] };
+    let t = perp(w);
+    let tangential = couple / pitch.radius;
+    let radial = tangential.abs() * pitch.pressure_angle.tan() * if pitch.second_is_ring { 1.0 } else { -1.0 };
+    [tangential * t[0] + radial * w[0], tangential * t[1] + radial * w[1]]
 }
