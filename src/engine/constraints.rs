@@ -171,7 +171,10 @@ pub fn nu(m: &Mechanism, inputs: &[[f64; 3]]) -> DVector<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::engine::samples::{actuated_arm, four_bar, offset_slider_crank, planetary_train, scotch_yoke};
+    use crate::engine::samples::{
+        actuated_arm, four_bar, offset_slider_crank, planetary_train, scissor_lift, scotch_yoke, slider_crank,
+        slotted_lever,
+    };
 
     /// Every sample, covering every joint and driver type, at a displaced state.
     fn cases() -> Vec<(&'static str, Mechanism, Vec<f64>, Vec<f64>)> {
@@ -181,6 +184,9 @@ mod tests {
             ("four-bar", four_bar()),
             ("planetary train", planetary_train()),
             ("actuated arm", actuated_arm()),
+            ("slider-crank r/l = 0.95", slider_crank(0.095, 0.1)),
+            ("slotted lever", slotted_lever()),
+            ("scissor lift", scissor_lift()),
         ];
         samples
             .into_iter()

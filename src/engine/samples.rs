@@ -130,3 +130,82 @@ pub fn actuated_arm() -> Mechanism {
         gravity: [0.0, -9.81],
     }
 }
+
+/// A centred slider-crank: crank r, rod l, piston of 3 kg on the x axis,
+/// massless crank and rod, drawn at φ = 0.
+pub fn slider_crank(r: f64, l: f64) -> Mechanism {
+    let b = [r + l, 0.0];
+    Mechanism {
+        bodies: vec![
+            body("ground", 0.0, 0.0, [0.0, 0.0]),
+            body("crank", 0.0, 0.0, [0.0, 0.0]),
+            body("rod", 0.0, 0.0, [r, 0.0]),
+            body("piston", 3.0, 0.0, b),
+        ],
+        joints: vec![
+            joint("O", JointKind::Revolute, [0, 1], [0.0, 0.0]),
+            joint("A", JointKind::Revolute, [1, 2], [r, 0.0]),
+            joint("B", JointKind::Revolute, [2, 3], b),
+            joint("guide", JointKind::Prismatic { axis: [1.0, 0.0] }, [0, 3], b),
+        ],
+        drivers: vec![Driver { joint: 0, reference: 0.0 }],
+        gravity: [0.0, 0.0],
+    }
+}
+
+/// The crank / slotted lever / slider six-bar of the course notes (P.77):
+/// crank O1B = 0.1 m about O1 = (0.3, 0); block 3 at B slides along the lever
+/// O2A (O2 at the origin, 0.5 m); block 5 at A slides in a horizontal slot of
+/// body 6, which slides vertically.
+pub fn slotted_lever() -> Mechanism {
+    let (d, r, a) = (0.3, 0.1, 0.5);
+    Mechanism {
+        bodies: vec![
+            body("ground", 0.0, 0.0, [0.0, 0.0]),
+            body("crank", 1.0, 0.02, [d, 0.0]),
+            body("block3", 0.5, 0.001, [d + r, 0.0]),
+            body("lever", 2.0, 2.0 * a * a / 12.0, [a / 2.0, 0.0]),
+            body("block5", 0.3, 0.0, [a, 0.0]),
+            body("slider6", 4.0, 0.1, [a, 0.2]),
+        ],
+        joints: vec![
+            joint("O1", JointKind::Revolute, [0, 1], [d, 0.0]),
+            joint("B", JointKind::Revolute, [1, 2], [d + r, 0.0]),
+            joint("slot4", JointKind::Prismatic { axis: [1.0, 0.0] }, [3, 2], [d + r, 0.0]),
+            joint("O2", JointKind::Revolute, [0, 3], [0.0, 0.0]),
+            joint("A", JointKind::Revolute, [3, 4], [a, 0.0]),
+            joint("slot6", JointKind::Prismatic { axis: [1.0, 0.0] }, [5, 4], [a, 0.0]),
+            joint("guide6", JointKind::Prismatic { axis: [0.0, 1.0] }, [0, 5], [a, 0.2]),
+        ],
+        drivers: vec![Driver { joint: 0, reference: 0.0 }],
+        gravity: [0.0, 0.0],
+    }
+}
+
+/// The scissor lift of seed 002 at α = 30°: bars DE and BC (10 kg, 1 m)
+/// crossed at their midpoints F, platform 90 kg pinned at C and sliding on E,
+/// a block at B on the ground driven by the horizontal piston.
+pub fn scissor_lift() -> Mechanism {
+    let (l, c30) = (0.5, 3f64.sqrt() / 2.0);
+    let f = [l * c30, l / 2.0];
+    let (e, b, c) = ([2.0 * l * c30, l], [2.0 * l * c30, 0.0], [0.0, l]);
+    Mechanism {
+        bodies: vec![
+            body("ground", 0.0, 0.0, [0.0, 0.0]),
+            body("DE", 10.0, 10.0 * l * l / 3.0, f),
+            body("BC", 10.0, 10.0 * l * l / 3.0, f),
+            body("platform", 90.0, 1.0, [l * c30, l]),
+            body("block", 0.0, 0.0, b),
+        ],
+        joints: vec![
+            joint("D", JointKind::Revolute, [0, 1], [0.0, 0.0]),
+            joint("F", JointKind::Revolute, [1, 2], f),
+            joint("C", JointKind::Revolute, [2, 3], c),
+            joint("E", JointKind::PinSlot { axis: [1.0, 0.0] }, [3, 1], e),
+            joint("B", JointKind::Revolute, [4, 2], b),
+            joint("piston", JointKind::Prismatic { axis: [1.0, 0.0] }, [0, 4], b),
+        ],
+        drivers: vec![Driver { joint: 5, reference: 0.0 }],
+        gravity: [0.0, -9.81],
+    }
+}

@@ -138,3 +138,16 @@ fn a_prismatic_input_gives_the_same_force_both_ways() {
     assert!(solution.summary.virtual_power_residual.unwrap() < 1e-12, "{:?}", solution.summary);
     assert!(solution.steps.iter().all(|s| s.driving[0] > 0.0), "the actuator pushes the arm up");
 }
+
+/// The scissor-lift sample (seed 002) solved at the engine level: the piston
+/// force is the printed −√3(10mg + 8mv²/(27L)) with m = 10 kg, L = 0.5 m,
+/// v = 0.3 m/s (same problem as the API test, built from the shared sample).
+#[test]
+fn scissor_lift_sample_gives_the_printed_piston_force() {
+    let (m, l, v, g) = (10.0f64, 0.5f64, 0.3f64, 9.81f64);
+    let c30 = 3f64.sqrt() / 2.0;
+    let positions = vec![vec![[0.0, v / 3f64.sqrt(), -v * v / (2.0 * l * c30.powi(3))]]];
+    let s = solve(&mechdyn::engine::samples::scissor_lift(), &[], &positions, all()).unwrap();
+    let expected = -(3f64.sqrt()) * (10.0 * m * g + 8.0 * m * v * v / (27.0 * l));
+    close(s.steps[0].driving[0], expected, 1.0, "F_AB");
+}
