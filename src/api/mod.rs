@@ -119,9 +119,11 @@ pub fn engine_error(e: crate::engine::EngineError, fallback: &str) -> FieldError
     use crate::engine::EngineError as E;
     let pointer = match &e {
         E::NotFinite { function, .. } | E::NegativeInertia { function, .. } => function.clone(),
-        E::NotSteady { .. } | E::NewtonDiverged { .. } | E::Singular { .. } | E::FrictionDiverged { .. } => {
-            fallback.into()
-        }
+        E::NotSteady { .. }
+        | E::NewtonDiverged { .. }
+        | E::Singular { .. }
+        | E::FrictionDiverged { .. }
+        | E::DofMismatch { .. } => fallback.into(),
         E::NotFiniteResult => String::new(),
     };
     FieldError::at(pointer, e.to_string())

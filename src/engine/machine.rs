@@ -53,6 +53,10 @@ pub struct Machine {
 impl Machine {
     /// Assembles the mechanism around one period of its (single) input.
     pub fn new(mechanism: Mechanism, loads: Vec<Load>, speed: f64, period: f64) -> Result<Self, EngineError> {
+        let dof = super::mobility::mobility(&mechanism, &mechanism.reference_q()).dof;
+        if dof != 1 {
+            return Err(EngineError::DofMismatch { dof, inputs: 1 });
+        }
         let positions: Vec<Vec<[f64; 3]>> =
             (0..ANCHORS).map(|k| vec![[period * k as f64 / ANCHORS as f64, 1.0, 0.0]]).collect();
         let anchors = sweep(&mechanism, &positions)?

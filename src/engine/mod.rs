@@ -43,6 +43,12 @@ pub enum EngineError {
         "the mechanism is at a singular position at step {step} (input {input}): the constraint Jacobian loses rank"
     )]
     Singular { step: usize, input: f64 },
+    /// The inputs do not match the degrees of freedom (a body left free, or inputs that conflict).
+    #[error(
+        "the mechanism has {dof} degree(s) of freedom but {inputs} input(s): give one input per degree of \
+         freedom (a body with too few joints moves freely; too many inputs conflict)"
+    )]
+    DofMismatch { dof: usize, inputs: usize },
     /// The friction iteration did not settle (friction too large for the mechanism to move).
     #[error(
         "joint friction does not settle at input {input} (step {step}): the friction coefficients are too large \

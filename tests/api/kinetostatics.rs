@@ -584,3 +584,17 @@ async fn gear_reactions_are_tooth_forces_when_the_module_is_given() {
     missing["mechanism"]["joints"][4]["ratio"] = json!(-2);
     assert_eq!(errors(&app, &missing).await, ["/mechanism/joints/4"]);
 }
+
+/// Without the rod–piston pin the rod swings on the crank and the piston slides
+/// on its own: 3 DOF for 1 input. A 422 says so, not a least-squares answer.
+#[tokio::test]
+async fn inputs_must_match_the_degrees_of_freedom() {
+    let app = TestApp::new().await;
+    let mut body = request("k1_offset_slider_crank");
+    let joints = body["mechanism"]["joints"].as_array_mut().unwrap();
+    joints.retain(|j| j["name"] != "B");
+    let r = app.post("/v1/kinetostatics", &body).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let message = r.json()["errors"][0]["message"].as_str().unwrap().to_string();
+    assert!(message.contains("3 degree(s) of freedom but 1 input"), "{message}");
+}

@@ -110,7 +110,11 @@ pub fn solve(
     outputs: Outputs,
 ) -> Result<Solution, EngineError> {
     let configurations = sweep(m, positions)?;
-    let mobility = mobility(m, &configurations.first().map_or_else(|| m.reference_q(), |c| c.q.clone()));
+    let regular = configurations.iter().find(|c| !c.singular);
+    let mobility = mobility(m, &regular.map_or_else(|| m.reference_q(), |c| c.q.clone()));
+    if mobility.dof != m.drivers.len() {
+        return Err(EngineError::DofMismatch { dof: mobility.dof, inputs: m.drivers.len() });
+    }
     let steps = configurations
         .iter()
         .zip(positions)
