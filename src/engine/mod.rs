@@ -6,6 +6,7 @@
 //! them ([`EngineError`]).
 
 pub mod constraints;
+pub mod dynamics;
 pub mod expr;
 pub mod flywheel;
 pub mod function;

@@ -1,3 +1,4 @@
 //! Engine-level golden tests against the reference cases in tests/fixtures/cases.
 
+mod dynamics;
 mod kinetostatics;
