@@ -131,7 +131,8 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
     let slope = p.inertia.derivative();
     for k in 0..=256 {
         let phi = p.period * k as f64 / 256.0;
-        if !(p.inertia.eval(phi, Side::Right) > 0.0) {
+        let i = p.inertia.eval(phi, Side::Right);
+        if i.is_nan() || i <= 0.0 {
             return Err(DynamicsError::NonPositiveInertia { phi });
         }
     }
