@@ -34,7 +34,7 @@ pub enum Command {
     Openapi,
     /// Solve a request file without a server and print the result (same validation as the API).
     Solve {
-        /// Job kind: flywheel or kinetostatics.
+        /// Job kind: flywheel, kinetostatics or dynamics.
         kind: String,
         /// Request JSON file ("-" for standard input).
         file: PathBuf,

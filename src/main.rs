@@ -102,7 +102,10 @@ fn solve(kind: &str, file: &std::path::Path) -> ExitCode {
         "kinetostatics" => mechdyn::api::json::parse::<api::kinetostatics::KinetostaticsRequest>(raw)
             .and_then(|body| api::kinetostatics::compute(&body.value, body.unknown))
             .map(|r| serde_json::to_string_pretty(&r).unwrap_or_default()),
-        other => return fail(&format!("unknown kind '{other}' (known: flywheel, kinetostatics)")),
+        "dynamics" => mechdyn::api::json::parse::<api::dynamics::DynamicsRequest>(raw)
+            .and_then(|body| api::dynamics::compute(&body.value, body.unknown))
+            .map(|r| serde_json::to_string_pretty(&r).unwrap_or_default()),
+        other => return fail(&format!("unknown kind '{other}' (known: flywheel, kinetostatics, dynamics)")),
     };
     match output {
         Ok(json) => {

@@ -220,6 +220,7 @@ fn to_csv(kind: &str, result: &str) -> Result<String, ApiError> {
     let (header, rows) = match kind {
         "flywheel" => super::flywheel::csv_table(&value),
         "kinetostatics" => super::kinetostatics::csv_table(&value),
+        "dynamics" => super::dynamics::csv_table(&value),
         _ => (Vec::new(), Vec::new()),
     };
     let mut w = csv::Writer::from_writer(Vec::new());

@@ -4,6 +4,7 @@
 //! an engine problem collecting every error with its JSON pointer, run the
 //! engine off the async workers, store the job ([`jobs::create`]).
 
+pub mod dynamics;
 pub mod flywheel;
 pub mod jobs;
 pub mod json;
@@ -48,16 +49,18 @@ expressions 2000 characters and 64 levels of nesting; tables 100000 rows; 1000 s
 100 torques; 100000 result samples; 200 bodies and joints, 500 loads and 100000 steps per mechanism \
 (422 beyond them)."
     ),
-    paths(flywheel::create, kinetostatics::create, jobs::get, jobs::list, jobs::csv, healthz),
+    paths(flywheel::create, kinetostatics::create, dynamics::create, jobs::get, jobs::list, jobs::csv, healthz),
     components(schemas(
         Problem, FieldError, Health,
         flywheel::FlywheelRequest, flywheel::FlywheelResult,
         kinetostatics::KinetostaticsRequest, kinetostatics::KinetostaticsResult,
+        dynamics::DynamicsRequest, dynamics::DynamicsResult,
         quantity::Quantity, quantity::FunctionDto, quantity::FunctionSpec
     )),
     tags(
         (name = "flywheel", description = "Flywheel design for a machine in steady state"),
         (name = "kinetostatics", description = "Inverse dynamics of planar mechanisms"),
+        (name = "dynamics", description = "Direct dynamics: motion under given actions"),
         (name = "jobs", description = "Stored computations"),
         (name = "service", description = "Health"),
     )
@@ -74,6 +77,7 @@ pub fn router(state: AppState, body_limit: usize) -> Router {
     Router::new()
         .route("/v1/flywheel", post(flywheel::create))
         .route("/v1/kinetostatics", post(kinetostatics::create))
+        .route("/v1/dynamics", post(dynamics::create))
         .route("/v1/jobs", get(jobs::list))
         .route("/v1/jobs/{id}", get(jobs::get))
         .route("/v1/jobs/{id}/result.csv", get(jobs::csv))

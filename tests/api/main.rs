@@ -2,6 +2,7 @@
 
 mod cases;
 mod cli;
+mod dynamics;
 mod errors;
 mod helpers;
 mod jobs;

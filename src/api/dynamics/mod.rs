@@ -1,0 +1,263 @@
+//! `POST /v1/dynamics`: the motion of a 1-DOF machine under given actions
+//! (reduced form).
+
+use super::json::JsonBody;
+use super::problem::{ApiError, FieldError, Problem};
+use super::quantity::{Errors, FunctionDto, Quantity};
+use super::{AppState, jobs, validated};
+use crate::engine::dynamics::{DynamicsSolution, End, EventKind, ReducedProblem, solve};
+use crate::engine::function::Function;
+use crate::units::Dim;
+use axum::extract::State;
+use axum::response::Response;
+use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
+use utoipa::ToSchema;
+
+/// Longest simulated time, s.
+pub const MAX_DURATION: f64 = 1e5;
+const DEFAULT_SAMPLES: usize = 201;
+
+/// A 1-DOF machine in reduced form and its start: exactly one of `duration` and `until_angle`.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[schema(example = json!({
+    "torques": [{"name": "motor and yoke", "value": {"expr": "15 - 20*sin(phi)^2"}}],
+    "reduced_inertia": {"expr": "0.07 + 0.05*sin(phi)^2"},
+    "initial": {"angle": 0, "speed": 0},
+    "until_angle": "720 deg"
+}))]
+pub struct DynamicsRequest {
+    /// Torques on the machine (Functions of `phi`), positive when they drive it.
+    #[schema(min_items = 1, max_items = 100)]
+    pub torques: Vec<DynamicsTorque>,
+    /// I*(φ) > 0.
+    #[schema(value_type = FunctionDto)]
+    pub reduced_inertia: FunctionDto,
+    pub initial: Option<Initial>,
+    /// Simulated time, s.
+    #[schema(value_type = Option<Quantity>)]
+    pub duration: Option<Quantity>,
+    /// Stop when the angle reaches this value.
+    #[schema(value_type = Option<Quantity>)]
+    pub until_angle: Option<Quantity>,
+    /// With `until_angle`: give up (cleanly, with the reason) after this time (default 60 s).
+    #[schema(value_type = Option<Quantity>)]
+    pub max_duration: Option<Quantity>,
+    /// Period of the Functions in `phi` (default 2π).
+    #[schema(value_type = Option<Quantity>)]
+    pub period: Option<Quantity>,
+    /// Requested relative accuracy (default 1e-9).
+    #[schema(minimum = 1e-14, maximum = 1e-2)]
+    pub tolerance: Option<f64>,
+    /// Output points, evenly spaced in time, both ends included (default 201).
+    #[schema(minimum = 2, maximum = 100000)]
+    pub samples: Option<usize>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct DynamicsTorque {
+    #[schema(max_length = 200)]
+    pub name: String,
+    #[schema(value_type = FunctionDto)]
+    pub value: FunctionDto,
+    /// ω of its shaft / ω of the reference shaft (default 1).
+    pub ratio: Option<f64>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct Initial {
+    #[schema(value_type = Option<Quantity>)]
+    pub angle: Option<Quantity>,
+    #[schema(value_type = Option<Quantity>)]
+    pub speed: Option<Quantity>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct SampleDto {
+    pub t: f64,
+    pub angle: f64,
+    pub speed: f64,
+    pub acceleration: f64,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct EventDto {
+    /// "turn" (a multiple of 2π crossed, either direction) or "end".
+    pub kind: String,
+    pub angle: f64,
+    pub t: f64,
+    pub speed: f64,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct DynamicsAccuracy {
+    /// (W − ΔT)/max(|W|, |ΔT|, T₀, T_end): the work of the torques (by quadrature
+    /// over the angle) against the change of kinetic energy.
+    pub energy_residual: f64,
+    pub steps: usize,
+    pub function_evaluations: usize,
+    pub method: String,
+}
+
+/// Result of a dynamics job (SI units).
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct DynamicsResult {
+    pub samples: Vec<SampleDto>,
+    pub events: Vec<EventDto>,
+    pub energy_residual: f64,
+    pub accuracy: DynamicsAccuracy,
+    pub warnings: Vec<String>,
+}
+
+/// Integrates I*(φ)φ̈ + ½I*'(φ)φ̇² = M*(φ) from the initial state.
+#[utoipa::path(post, path = "/v1/dynamics", tag = "dynamics", request_body = DynamicsRequest,
+    responses(
+        (status = 201, description = "Job computed and stored; `result` is a DynamicsResult", body = jobs::Job,
+            headers(("Location" = String, description = "/v1/jobs/{id}"))),
+        (status = 400, description = "Body is not valid JSON", body = Problem, content_type = "application/problem+json"),
+        (status = 413, description = "Body larger than the limit (default 1 MiB)", body = Problem, content_type = "application/problem+json"),
+        (status = 415, description = "Content type is not application/json", body = Problem, content_type = "application/problem+json"),
+        (status = 422, description = "Not a valid problem; `errors` has a JSON pointer for every invalid field", body = Problem, content_type = "application/problem+json"),
+    ))]
+pub async fn create(State(state): State<AppState>, body: JsonBody<DynamicsRequest>) -> Result<Response, ApiError> {
+    let JsonBody { value, raw, unknown } = body;
+    jobs::create(&state, "dynamics", raw, move || compute(&value, unknown)).await
+}
+
+/// Validates and solves a request (also used by `mechdyn solve dynamics`).
+pub fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>) -> Result<DynamicsResult, ApiError> {
+    let p = validated(unknown, request.to_problem())?;
+    let s = solve(&p).map_err(|e| ApiError::Invalid(vec![FieldError::at("/reduced_inertia", e.to_string())]))?;
+    Ok(DynamicsResult::from(s))
+}
+
+impl DynamicsRequest {
+    fn to_problem(&self) -> Result<ReducedProblem, Vec<FieldError>> {
+        let mut e = Errors::default();
+        let period = match &self.period {
+            Some(q) => {
+                e.angle(q, "/period").filter(|p| *p > 0.0).or_else(|| e.fail("/period", "must be greater than 0"))
+            }
+            None => Some(2.0 * PI),
+        };
+        let pd = period.unwrap_or(2.0 * PI);
+        if self.torques.is_empty() || self.torques.len() > 100 {
+            e.push("/torques", "must hold 1 to 100 items");
+        }
+        let torques: Vec<Option<(Function, f64)>> = self
+            .torques
+            .iter()
+            .enumerate()
+            .map(|(i, t)| {
+                let ratio = match t.ratio {
+                    Some(k) if !(k.is_finite() && k != 0.0) => {
+                        e.fail(&format!("/torques/{i}/ratio"), "must be a finite, non-zero number")
+                    }
+                    k => Some(k.unwrap_or(1.0)),
+                };
+                let f = e.function(&t.value, Dim::TORQUE, pd, &format!("/torques/{i}/value"));
+                Some((f?, ratio?))
+            })
+            .collect();
+        let inertia = e.function(&self.reduced_inertia, Dim::INERTIA, pd, "/reduced_inertia");
+        let initial = self.initial.as_ref();
+        let angle0 = initial.and_then(|i| i.angle.as_ref()).map_or(Some(0.0), |q| e.angle(q, "/initial/angle"));
+        let speed0 = initial
+            .and_then(|i| i.speed.as_ref())
+            .map_or(Some(0.0), |q| e.quantity(q, Dim::ANGULAR_SPEED, "/initial/speed"));
+        let end = self.end(&mut e, angle0.unwrap_or(0.0));
+        let tolerance = match self.tolerance {
+            Some(t) if !(1e-14..=1e-2).contains(&t) => e.fail("/tolerance", "must be between 1e-14 and 1e-2"),
+            t => Some(t.unwrap_or(1e-9)),
+        };
+        let samples = match self.samples {
+            Some(n) if !(2..=100_000).contains(&n) => e.fail("/samples", "must be 2 to 100000"),
+            n => Some(n.unwrap_or(DEFAULT_SAMPLES)),
+        };
+        let torques: Option<Vec<_>> = torques.into_iter().collect();
+        match (period, torques, inertia, angle0, speed0, end, tolerance, samples) {
+            (
+                Some(period),
+                Some(torques),
+                Some(inertia),
+                Some(angle0),
+                Some(speed0),
+                Some(end),
+                Some(tolerance),
+                Some(samples),
+            ) if e.0.is_empty() => {
+                Ok(ReducedProblem { torques, inertia, period, angle0, speed0, end, tolerance, samples })
+            }
+            _ => Err(e.0),
+        }
+    }
+
+    fn end(&self, e: &mut Errors, angle0: f64) -> Option<End> {
+        let time = |e: &mut Errors, q: &Quantity, at: &str| {
+            e.positive(q, Dim::TIME, at)
+                .filter(|t| *t <= MAX_DURATION)
+                .or_else(|| e.fail(at, format!("must be at most {MAX_DURATION} s")))
+        };
+        match (&self.duration, &self.until_angle) {
+            (Some(d), None) => time(e, d, "/duration").map(End::Duration),
+            (None, Some(a)) => {
+                let angle = e.angle(a, "/until_angle")?;
+                if angle == angle0 {
+                    return e.fail("/until_angle", "must differ from the initial angle");
+                }
+                let max_time = match &self.max_duration {
+                    Some(q) => time(e, q, "/max_duration")?,
+                    None => 60.0,
+                };
+                Some(End::UntilAngle { angle, max_time })
+            }
+            _ => e.fail("", "give exactly one of \"duration\" and \"until_angle\""),
+        }
+    }
+}
+
+impl From<DynamicsSolution> for DynamicsResult {
+    fn from(s: DynamicsSolution) -> Self {
+        Self {
+            samples: s
+                .samples
+                .iter()
+                .map(|x| SampleDto { t: x.t, angle: x.angle, speed: x.speed, acceleration: x.acceleration })
+                .collect(),
+            events: s
+                .events
+                .iter()
+                .map(|v| EventDto {
+                    kind: if v.kind == EventKind::End { "end" } else { "turn" }.into(),
+                    angle: v.angle,
+                    t: v.t,
+                    speed: v.speed,
+                })
+                .collect(),
+            energy_residual: s.energy_residual,
+            accuracy: DynamicsAccuracy {
+                energy_residual: s.energy_residual,
+                steps: s.steps,
+                function_evaluations: s.evaluations,
+                method: "Dormand-Prince 5(4) with dense output, events located by Brent's method on it; \
+                         work by adaptive quadrature over the angle"
+                    .into(),
+            },
+            warnings: s.stopped.into_iter().collect(),
+        }
+    }
+}
+
+/// CSV of a stored dynamics result: one row per sample.
+pub fn csv_table(result: &serde_json::Value) -> (Vec<String>, Vec<Vec<String>>) {
+    let columns =
+        [("t", "t_s"), ("angle", "angle_rad"), ("speed", "speed_rad_s"), ("acceleration", "acceleration_rad_s2")];
+    let header = columns.iter().map(|c| c.1.to_string()).collect();
+    let rows = result["samples"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .map(|row| columns.iter().map(|c| row[c.0].to_string()).collect())
+        .collect();
+    (header, rows)
+}

@@ -1,0 +1,77 @@
+//! Direct dynamics through the HTTP API: reference case D1 and clean endings.
+
+use crate::helpers::{TestApp, case, close};
+use axum::http::StatusCode;
+use serde_json::{Value, json};
+
+fn d1(end: Value) -> Value {
+    let mut body = json!({
+        "torques": [{"name": "motor 15 N*m, yoke load 200 N", "value": {"expr": "15 - 20*sin(phi)^2"}}],
+        "reduced_inertia": {"expr": "sin(phi)^2/20 + 7/100"},
+        "initial": {"angle": 0, "speed": "0 rpm"}
+    });
+    for (k, v) in end.as_object().unwrap() {
+        body[k] = v.clone();
+    }
+    body
+}
+
+/// D1 (scotch yoke from rest, constant torque): the turns at 2π and 4π, and
+/// the state every 0.05 s, against the case's closed form at 1e-9.
+#[tokio::test]
+async fn d1_scotch_yoke_start_up_through_the_api() {
+    let (app, c) = (TestApp::new().await, case("D1_scotch_yoke_from_rest_constant_torque"));
+    let r = app.post("/v1/dynamics", &d1(json!({"until_angle": "720 deg"}))).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let job = r.json();
+    let events = job["result"]["events"].as_array().unwrap().clone();
+    let rows = &c["expected"]["at_angle"].as_array().unwrap()[5..7];
+    for (e, row) in events.iter().filter(|e| e["kind"] == "turn").zip(rows) {
+        close(&e["t"], row["time_s"].as_f64().unwrap(), 1e-9, "t at the turn");
+        close(&e["speed"], row["omega_rad_s"].as_f64().unwrap(), 1e-9, "ω at the turn");
+    }
+    assert_eq!(events.last().unwrap()["kind"], "end");
+    assert!(job["result"]["energy_residual"].as_f64().unwrap().abs() < 1e-9);
+    let r = app.post("/v1/dynamics", &d1(json!({"duration": "1 s", "samples": 21}))).await;
+    let samples = r.json()["result"]["samples"].as_array().unwrap().clone();
+    for row in c["expected"]["at_time"].as_array().unwrap() {
+        let t = row["time_s"].as_f64().unwrap();
+        let s = samples.iter().find(|s| (s["t"].as_f64().unwrap() - t).abs() < 1e-12).unwrap();
+        close(&s["angle"], row["angle_rad"].as_f64().unwrap(), 1e-9, "angle");
+        close(&s["speed"], row["omega_rad_s"].as_f64().unwrap(), 1e-9, "speed");
+    }
+    let csv = app.get(&format!("/v1/jobs/{}/result.csv", job["id"].as_str().unwrap())).await.text;
+    assert!(csv.starts_with("t_s,angle_rad,speed_rad_s,acceleration_rad_s2"));
+}
+
+/// A motor too weak to reach the next dead centre: M* = 5 − 20 sin²φ from rest
+/// stops near φ = 0.948 (where sin 2φ = φ) and swings back. Asked for 2π, the run
+/// ends cleanly at `max_duration` with the reason.
+#[tokio::test]
+async fn a_start_up_that_never_arrives_ends_with_the_reason() {
+    let app = TestApp::new().await;
+    let mut body = d1(json!({"until_angle": "2*pi", "max_duration": "5 s"}));
+    body["torques"][0]["value"] = json!({"expr": "5 - 20*sin(phi)^2"});
+    body["reduced_inertia"] = json!(0.1);
+    let r = app.post("/v1/dynamics", &body).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let result = r.json()["result"].clone();
+    assert!(result["warnings"][0].as_str().unwrap().contains("not reached"), "{}", result["warnings"]);
+    let max_angle =
+        result["samples"].as_array().unwrap().iter().map(|s| s["angle"].as_f64().unwrap()).fold(0.0, f64::max);
+    assert!((max_angle - 0.9477).abs() < 0.01, "{max_angle}");
+}
+
+#[tokio::test]
+async fn the_end_condition_and_the_inertia_are_checked() {
+    let app = TestApp::new().await;
+    let both = d1(json!({"duration": 1, "until_angle": 3}));
+    let r = app.post("/v1/dynamics", &both).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY);
+    assert_eq!(r.json()["errors"][0]["pointer"], "");
+    let mut negative = d1(json!({"duration": 1}));
+    negative["reduced_inertia"] = json!({"expr": "sin(phi)"});
+    let r = app.post("/v1/dynamics", &negative).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY);
+    assert_eq!(r.json()["errors"][0]["pointer"], "/reduced_inertia");
+}
