@@ -223,13 +223,26 @@ impl Errors {
 
     /// A function of `phi` with values of dimension `dim`, over [0, period].
     pub fn function(&mut self, f: &FunctionDto, dim: Dim, period: f64, at: &str) -> Option<Function> {
+        self.function_of(f, dim, period, at, &["phi"])
+    }
+
+    /// A function whose expressions may read `variables` (`phi` first; then
+    /// `omega` and `t` where a job integrates in time).
+    pub fn function_of(
+        &mut self,
+        f: &FunctionDto,
+        dim: Dim,
+        period: f64,
+        at: &str,
+        variables: &[&str],
+    ) -> Option<Function> {
         match f {
             FunctionDto::Constant(q) => self.quantity(q, dim, at).map(Function::Constant),
-            FunctionDto::Spec(spec) => self.function_spec(spec, dim, period, at),
+            FunctionDto::Spec(spec) => self.function_spec(spec, dim, period, at, variables),
         }
     }
 
-    fn function_spec(&mut self, s: &FunctionSpec, dim: Dim, period: f64, at: &str) -> Option<Function> {
+    fn function_spec(&mut self, s: &FunctionSpec, dim: Dim, period: f64, at: &str, vars: &[&str]) -> Option<Function> {
         let scale = match &s.unit {
             Some(u) => match units::unit_factor(u, dim) {
                 Ok(k) => k,
@@ -241,8 +254,10 @@ impl Errors {
             self.push(&format!("{at}/interpolation"), "applies to a table only");
         }
         match (&s.expr, &s.segments, &s.table) {
-            (Some(e), None, None) => self.expr(e, &format!("{at}/expr")).map(|e| Function::Expr(e.scaled(scale))),
-            (None, Some(segs), None) => self.segments(segs, scale, period, &format!("{at}/segments")),
+            (Some(e), None, None) => {
+                self.expr_of(e, &format!("{at}/expr"), vars).map(|e| Function::Expr(e.scaled(scale)))
+            }
+            (None, Some(segs), None) => self.segments(segs, scale, period, &format!("{at}/segments"), vars),
             (None, None, Some(t)) => {
                 let interp = s.interpolation.unwrap_or(InterpolationDto::Linear);
                 self.table(t, interp, scale, period, &format!("{at}/table"))
@@ -252,13 +267,17 @@ impl Errors {
     }
 
     pub fn expr(&mut self, src: &str, at: &str) -> Option<Expr> {
-        match Expr::compile(src, &["phi"]) {
+        self.expr_of(src, at, &["phi"])
+    }
+
+    fn expr_of(&mut self, src: &str, at: &str, variables: &[&str]) -> Option<Expr> {
+        match Expr::compile(src, variables) {
             Ok(e) => Some(e),
             Err(e) => self.fail(at, format!("expression does not parse: {e}")),
         }
     }
 
-    fn segments(&mut self, segs: &[SegmentDto], scale: f64, period: f64, at: &str) -> Option<Function> {
+    fn segments(&mut self, segs: &[SegmentDto], scale: f64, period: f64, at: &str, vars: &[&str]) -> Option<Function> {
         if segs.is_empty() || segs.len() > MAX_SEGMENTS {
             return self.fail(at, format!("must hold 1 to {MAX_SEGMENTS} segments"));
         }
@@ -268,7 +287,7 @@ impl Errors {
             let p = format!("{at}/{i}");
             let from = self.angle(&s.from, &format!("{p}/from"));
             let to = self.angle(&s.to, &format!("{p}/to"));
-            let expr = self.expr(&s.expr, &format!("{p}/expr"));
+            let expr = self.expr_of(&s.expr, &format!("{p}/expr"), vars);
             let (Some(from), Some(to), Some(expr)) = (from, to, expr) else { continue };
             if from < -slack || to > period + slack {
                 self.push(&p, format!("segment [{from}, {to}] must lie inside [0, period = {period}]"));

@@ -5,11 +5,13 @@
 //! ```
 //!
 //! integrated in time with Dormand–Prince 5(4) from (φ₀, ω₀). Functions are
-//! periodic in φ (reduced to [0, period)). Events — every multiple of 2π
+//! periodic in φ (reduced to [0, period)); expressions may also read `omega`
+//! and `t`. Events — every multiple of 2π
 //! crossed in either direction, and the end angle — are located on the
 //! dense output by Brent's method, not at the nearest step. Energy check:
-//! the work W = ∫M* dφ (quadrature over the angle travelled) against the
-//! change of kinetic energy ΔT = ½I*ω² − ½I*₀ω₀².
+//! the work W = ∫M* dφ (quadrature over the angle travelled when M* depends
+//! on φ only, else the integrated power ∫M*ω dt) against the change of
+//! kinetic energy ΔT = ½I*ω² − ½I*₀ω₀².
 
 use super::function::{Function, Side};
 use super::numeric::ode::{Dopri5, Step};
@@ -92,16 +94,18 @@ impl ReducedProblem {
         phi.rem_euclid(self.period)
     }
 
-    fn torque(&self, phi: f64) -> f64 {
+    /// M*(φ, ω, t).
+    fn torque(&self, t: f64, phi: f64, omega: f64) -> f64 {
         let u = self.reduce(phi);
-        self.torques.iter().map(|(f, k)| k * f.eval(u, Side::Right)).sum()
+        self.torques.iter().map(|(f, k)| k * f.eval_at(u, Side::Right, [omega, t])).sum()
     }
 
-    /// (φ̇, φ̈) = (ω, (M* − ½I*'ω²)/I*).
-    fn rhs(&self, slope: &Function, y: &[f64; 2]) -> [f64; 2] {
+    /// (φ̇, φ̈, Ẇ) = (ω, (M* − ½I*'ω²)/I*, M*·ω): W is the work of the actions.
+    fn rhs(&self, slope: &Function, t: f64, y: &[f64; 3]) -> [f64; 3] {
         let u = self.reduce(y[0]);
         let i = self.inertia.eval(u, Side::Right);
-        [y[1], (self.torque(y[0]) - 0.5 * slope.eval(u, Side::Right) * y[1] * y[1]) / i]
+        let m = self.torque(t, y[0], y[1]);
+        [y[1], (m - 0.5 * slope.eval(u, Side::Right) * y[1] * y[1]) / i, m * y[1]]
     }
 
     fn kinetic(&self, phi: f64, omega: f64) -> f64 {
@@ -136,11 +140,11 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
             return Err(DynamicsError::NonPositiveInertia { phi });
         }
     }
-    let mut f = |_t: f64, y: &[f64; 2]| p.rhs(&slope, y);
+    let mut f = |t: f64, y: &[f64; 3]| p.rhs(&slope, t, y);
     let rtol = (0.01 * p.tolerance).clamp(1e-13, 1e-4);
     let scale = p.speed0.abs().max(1.0);
-    let mut ode = Dopri5::new(&mut f, 0.0, [p.angle0, p.speed0], rtol, rtol * scale, f64::INFINITY);
-    let mut steps: Vec<Step<2>> = Vec::new();
+    let mut ode = Dopri5::new(&mut f, 0.0, [p.angle0, p.speed0, 0.0], rtol, rtol * scale, f64::INFINITY);
+    let mut steps: Vec<Step<3>> = Vec::new();
     let mut events = Vec::new();
     let mut stopped = None;
     let t_end = loop {
@@ -157,7 +161,13 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
     events.retain(|e| e.kind == EventKind::End || e.t <= t_end);
     let samples = sample(p, &slope, &steps, t_end);
     let (first, last) = (samples[0], samples[samples.len() - 1]);
-    let w = p.work(first.angle, last.angle);
+    // Position-only actions: their work by quadrature over the angle (independent
+    // of the integrator); otherwise the integrated power.
+    let w = if p.torques.iter().any(|(f, _)| f.uses_state()) {
+        steps.last().map_or(0.0, |s| s.at(t_end)[2])
+    } else {
+        p.work(first.angle, last.angle)
+    };
     let dt = p.kinetic(last.angle, last.speed) - p.kinetic(first.angle, first.speed);
     let denom = w.abs().max(dt.abs()).max(p.kinetic(first.angle, first.speed)).max(p.kinetic(last.angle, last.speed));
     Ok(DynamicsSolution {
@@ -170,12 +180,12 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
     })
 }
 
-fn ode_time(steps: &[Step<2>]) -> f64 {
+fn ode_time(steps: &[Step<3>]) -> f64 {
     steps.last().map_or(0.0, |s| s.t1)
 }
 
 /// Multiples of 2π crossed during the step, in either direction.
-fn turns(step: &Step<2>, events: &mut Vec<Event>) {
+fn turns(step: &Step<3>, events: &mut Vec<Event>) {
     let (a, b) = (step.y0[0], step.y1[0]);
     let (ka, kb) = ((a / (2.0 * PI)).floor() as i64, (b / (2.0 * PI)).floor() as i64);
     let crossed: Vec<i64> = if kb > ka { (ka + 1..=kb).collect() } else { (kb + 1..=ka).rev().collect() };
@@ -190,7 +200,7 @@ fn turns(step: &Step<2>, events: &mut Vec<Event>) {
 }
 
 /// The end time if the run ends in this step.
-fn finished(p: &ReducedProblem, step: &Step<2>, events: &mut Vec<Event>, stopped: &mut Option<String>) -> Option<f64> {
+fn finished(p: &ReducedProblem, step: &Step<3>, events: &mut Vec<Event>, stopped: &mut Option<String>) -> Option<f64> {
     let end = |t: f64, events: &mut Vec<Event>| {
         let y = step.at(t);
         events.push(Event { kind: EventKind::End, angle: y[0], t, speed: y[1] });
@@ -213,7 +223,7 @@ fn finished(p: &ReducedProblem, step: &Step<2>, events: &mut Vec<Event>, stopped
 }
 
 /// Evenly spaced samples in time, both ends included, from the dense output.
-fn sample(p: &ReducedProblem, slope: &Function, steps: &[Step<2>], t_end: f64) -> Vec<Sample> {
+fn sample(p: &ReducedProblem, slope: &Function, steps: &[Step<3>], t_end: f64) -> Vec<Sample> {
     let n = p.samples.max(2);
     let mut k = 0;
     (0..n)
@@ -223,7 +233,7 @@ fn sample(p: &ReducedProblem, slope: &Function, steps: &[Step<2>], t_end: f64) -
                 k += 1;
             }
             let y = steps[k].at(t.min(steps[k].t1));
-            Sample { t, angle: y[0], speed: y[1], acceleration: p.rhs(slope, &y)[1] }
+            Sample { t, angle: y[0], speed: y[1], acceleration: p.rhs(slope, t, &y)[1] }
         })
         .collect()
 }

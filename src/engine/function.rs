@@ -206,19 +206,26 @@ fn tridiagonal(a: &[f64], b: &[f64], c: &[f64], r: &[f64]) -> Vec<f64> {
 impl Function {
     /// Value at φ; at a breakpoint, the limit from `side`.
     pub fn eval(&self, phi: f64, side: Side) -> f64 {
+        self.eval_at(phi, side, [0.0, 0.0])
+    }
+
+    /// Value at φ with the expression variables `omega` and `t` (variables 1
+    /// and 2, where a job integrates in time) set to `state`.
+    pub fn eval_at(&self, phi: f64, side: Side, state: [f64; 2]) -> f64 {
+        let vars = [phi, state[0], state[1]];
         match self {
             Self::Constant(c) => *c,
-            Self::Expr(e) => e.eval(&[phi]),
+            Self::Expr(e) => e.eval(&vars),
             Self::Segments(segs) => segs
                 .iter()
                 .find(|s| match side {
                     Side::Right => s.from <= phi && phi < s.to,
                     Side::Left => s.from < phi && phi <= s.to,
                 })
-                .map_or(0.0, |s| s.expr.eval(&[phi])),
+                .map_or(0.0, |s| s.expr.eval(&vars)),
             Self::Table(t) => t.eval(phi, side),
             Self::Machine(m, what) => m.eval(phi, *what),
-            Self::Sum(fs) => fs.iter().map(|f| f.eval(phi, side)).sum(),
+            Self::Sum(fs) => fs.iter().map(|f| f.eval_at(phi, side, state)).sum(),
         }
     }
 
@@ -235,6 +242,17 @@ impl Function {
             Self::Table(t) => t.eval_frozen(phi, anchor),
             Self::Machine(m, what) => m.eval(phi, *what),
             Self::Sum(fs) => fs.iter().map(|f| f.eval_frozen(phi, anchor)).sum(),
+        }
+    }
+
+    /// Whether the function reads `omega` or `t` (then it is not a function of φ alone).
+    pub fn uses_state(&self) -> bool {
+        let expr = |e: &Expr| e.uses(1) || e.uses(2);
+        match self {
+            Self::Expr(e) => expr(e),
+            Self::Segments(segs) => segs.iter().any(|s| expr(&s.expr)),
+            Self::Sum(fs) => fs.iter().any(Function::uses_state),
+            _ => false,
         }
     }
 

@@ -75,3 +75,22 @@ async fn the_end_condition_and_the_inertia_are_checked() {
     assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY);
     assert_eq!(r.json()["errors"][0]["pointer"], "/reduced_inertia");
 }
+
+/// Actions that depend on the speed and on time. From rest with I* = 2:
+/// M* = 3 − 0.5·omega gives ω = 6(1 − e^(−t/4)), φ = 6(t − 4(1 − e^(−t/4)));
+/// M* = 2t with I* = 1 gives ω = t², φ = t³/3 (closed forms), at t = 2 s.
+#[tokio::test]
+async fn actions_may_depend_on_speed_and_time() {
+    let app = TestApp::new().await;
+    let run = |torque: &str, inertia: f64| json!({"torques": [{"name": "m", "value": {"expr": torque}}], "reduced_inertia": inertia, "duration": 2, "samples": 3});
+    let r = app.post("/v1/dynamics", &run("3 - 0.5*omega", 2.0)).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let end = r.json()["result"]["samples"][2].clone();
+    let decay = (-0.5f64).exp();
+    close(&end["speed"], 6.0 * (1.0 - decay), 1e-9, "ω(2)");
+    close(&end["angle"], 6.0 * (2.0 - 4.0 * (1.0 - decay)), 1e-9, "φ(2)");
+    assert!(r.json()["result"]["energy_residual"].as_f64().unwrap().abs() < 1e-9);
+    let end = app.post("/v1/dynamics", &run("2*t", 1.0)).await.json()["result"]["samples"][2].clone();
+    close(&end["speed"], 4.0, 1e-9, "ω(2) = t²");
+    close(&end["angle"], 8.0 / 3.0, 1e-9, "φ(2) = t³/3");
+}

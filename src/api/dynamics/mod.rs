@@ -27,7 +27,8 @@ const DEFAULT_SAMPLES: usize = 201;
     "until_angle": "720 deg"
 }))]
 pub struct DynamicsRequest {
-    /// Torques on the machine (Functions of `phi`), positive when they drive it.
+    /// Torques on the machine, positive when they drive it: Functions whose
+    /// expressions may read `phi` (reduced to the period), `omega` and `t`.
     #[schema(min_items = 1, max_items = 100)]
     pub torques: Vec<DynamicsTorque>,
     /// I*(φ) > 0.
@@ -155,7 +156,8 @@ impl DynamicsRequest {
                     }
                     k => Some(k.unwrap_or(1.0)),
                 };
-                let f = e.function(&t.value, Dim::TORQUE, pd, &format!("/torques/{i}/value"));
+                let f =
+                    e.function_of(&t.value, Dim::TORQUE, pd, &format!("/torques/{i}/value"), &["phi", "omega", "t"]);
                 Some((f?, ratio?))
             })
             .collect();

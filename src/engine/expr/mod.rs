@@ -54,6 +54,11 @@ impl Expr {
         self.root.eval(vars)
     }
 
+    /// Whether the expression reads variable number `var`.
+    pub fn uses(&self, var: usize) -> bool {
+        self.root.uses(var)
+    }
+
     /// The value when the expression reads no variable.
     pub fn constant(&self) -> Option<f64> {
         match self.root {

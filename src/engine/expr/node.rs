@@ -121,7 +121,7 @@ impl Node {
     pub fn eval(&self, vars: &[f64]) -> f64 {
         match self {
             Const(c) => *c,
-            Var(i) => vars[*i],
+            Var(i) => vars.get(*i).copied().unwrap_or(0.0),
             Neg(a) => -a.eval(vars),
             Add(a, c) => a.eval(vars) + c.eval(vars),
             Sub(a, c) => a.eval(vars) - c.eval(vars),
