@@ -10,6 +10,7 @@ pub mod dynamics;
 pub mod expr;
 pub mod flywheel;
 pub mod function;
+pub mod gears;
 pub mod kinematics;
 pub mod kinetostatics;
 pub mod machine;

@@ -4,6 +4,7 @@ mod cases;
 mod cli;
 mod dynamics;
 mod errors;
+mod gears;
 mod helpers;
 mod jobs;
 mod kinetostatics;

@@ -1,0 +1,132 @@
+//! `POST /v1/gears/geometry`: involute spur gear radii and tooth thickness.
+
+use super::json::JsonBody;
+use super::problem::{ApiError, FieldError, Problem};
+use super::quantity::{Errors, Quantity};
+use super::{AppState, jobs, validated};
+use crate::engine::gears::Gear;
+use crate::units::Dim;
+use axum::extract::State;
+use axum::response::Response;
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+/// A standard involute spur gear.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[schema(example = json!({"module": "4 mm", "teeth": 30}))]
+pub struct GearRequest {
+    #[schema(value_type = Quantity)]
+    pub module: Quantity,
+    #[schema(minimum = 1)]
+    pub teeth: f64,
+    /// Default 20°.
+    #[schema(value_type = Option<Quantity>)]
+    pub pressure_angle: Option<Quantity>,
+    /// In modules (default 1).
+    pub addendum: Option<f64>,
+    /// In modules (default 1.25).
+    pub dedendum: Option<f64>,
+    /// An internal gear (ring), default false.
+    pub internal: Option<bool>,
+    /// Radius at which to give the tooth thickness (default: the tip circle).
+    #[schema(value_type = Option<Quantity>)]
+    pub radius: Option<Quantity>,
+}
+
+/// Radii and tooth thickness, m and rad.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct GearResult {
+    pub pitch_radius: f64,
+    pub base_radius: f64,
+    /// Tip (addendum) circle: outside the pitch circle, inside it for an internal gear.
+    pub tip_radius: f64,
+    pub root_radius: f64,
+    /// πm/2.
+    pub thickness_at_pitch: f64,
+    pub thickness_radius: f64,
+    /// Pressure angle of the involute at `thickness_radius`.
+    pub thickness_pressure_angle: f64,
+    /// e_T = R_T[e_A/R_A + 2(inv φ_A − inv φ_T)].
+    pub thickness: f64,
+    pub warnings: Vec<String>,
+}
+
+/// Radii (pitch, base, tip, root) and the tooth thickness on any circle.
+#[utoipa::path(post, path = "/v1/gears/geometry", tag = "gears", request_body = GearRequest,
+    responses(
+        (status = 201, description = "Job computed and stored; `result` is a GearResult", body = jobs::Job,
+            headers(("Location" = String, description = "/v1/jobs/{id}"))),
+        (status = 400, description = "Body is not valid JSON", body = Problem, content_type = "application/problem+json"),
+        (status = 413, description = "Body larger than the limit (default 1 MiB)", body = Problem, content_type = "application/problem+json"),
+        (status = 415, description = "Content type is not application/json", body = Problem, content_type = "application/problem+json"),
+        (status = 422, description = "Not a valid problem; `errors` has a JSON pointer for every invalid field", body = Problem, content_type = "application/problem+json"),
+    ))]
+pub async fn create(State(state): State<AppState>, body: JsonBody<GearRequest>) -> Result<Response, ApiError> {
+    let JsonBody { value, raw, unknown } = body;
+    jobs::create(&state, "gears", raw, move || compute(&value, unknown)).await
+}
+
+/// Validates and computes a request.
+pub fn compute(request: &GearRequest, unknown: Vec<FieldError>) -> Result<GearResult, ApiError> {
+    let (gear, radius) = validated(unknown, request.to_gear())?;
+    let radii = gear.radii();
+    let at = radius.unwrap_or(radii.tip);
+    let Some(t) = gear.thickness_at(at) else {
+        let message = format!("{at} m is inside the base circle ({} m): there is no involute there", radii.base);
+        return Err(ApiError::Invalid(vec![FieldError::at(if radius.is_some() { "/radius" } else { "" }, message)]));
+    };
+    let warnings = if t.thickness <= 0.0 {
+        vec![format!("the tooth is pointed before {at} m: its thickness there would be {:.6e} m", t.thickness)]
+    } else {
+        Vec::new()
+    };
+    Ok(GearResult {
+        pitch_radius: radii.pitch,
+        base_radius: radii.base,
+        tip_radius: radii.tip,
+        root_radius: radii.root,
+        thickness_at_pitch: std::f64::consts::PI * gear.module / 2.0,
+        thickness_radius: t.radius,
+        thickness_pressure_angle: t.pressure_angle,
+        thickness: t.thickness,
+        warnings,
+    })
+}
+
+impl GearRequest {
+    fn to_gear(&self) -> Result<(Gear, Option<f64>), Vec<FieldError>> {
+        let mut e = Errors::default();
+        let module = e.positive(&self.module, Dim::LENGTH, "/module");
+        if !(self.teeth.is_finite() && self.teeth >= 1.0 && self.teeth <= 10_000.0) {
+            e.push("/teeth", "must be a number from 1 to 10000");
+        }
+        let pressure_angle = match &self.pressure_angle {
+            Some(q) => e
+                .angle(q, "/pressure_angle")
+                .filter(|a| *a > 0.0 && *a < 1.5)
+                .or_else(|| e.fail("/pressure_angle", "must be between 0 and 1.5 rad")),
+            None => Some(20f64.to_radians()),
+        };
+        let share = |e: &mut Errors, v: Option<f64>, default: f64, at: &str| match v {
+            Some(x) if !(x.is_finite() && (0.0..=5.0).contains(&x)) => e.fail(at, "must be between 0 and 5 modules"),
+            x => Some(x.unwrap_or(default)),
+        };
+        let addendum = share(&mut e, self.addendum, 1.0, "/addendum");
+        let dedendum = share(&mut e, self.dedendum, 1.25, "/dedendum");
+        let radius = self.radius.as_ref().map(|q| e.positive(q, Dim::LENGTH, "/radius"));
+        match (module, pressure_angle, addendum, dedendum) {
+            (Some(module), Some(pressure_angle), Some(addendum), Some(dedendum)) if e.0.is_empty() => Ok((
+                Gear {
+                    module,
+                    teeth: self.teeth,
+                    pressure_angle,
+                    addendum,
+                    dedendum,
+                    internal: self.internal.unwrap_or(false),
+                },
+                radius.flatten(),
+            )),
+            _ => Err(e.0),
+        }
+    }
+}

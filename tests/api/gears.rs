@@ -1,0 +1,30 @@
+//! Gear calculators through the HTTP API.
+
+use crate::helpers::{TestApp, case, close};
+use axum::http::StatusCode;
+use serde_json::json;
+
+/// Involute geometry of reference case K5's question 3 (seed 002): module
+/// 4 mm, 30 teeth, 20°: pitch radius 60 mm, tip 64 mm, thickness at the tip
+/// e_T = R_T[e_A/R_A + 2(inv φ_A − inv φ_T)] = 2.9496 mm at φ_T = 28.2414°;
+/// and the internal ring of K5 (module 2 mm, 120 teeth): tip circle 118 mm,
+/// root 122.5 mm. Tolerance 1e-12 (the case's values are closed forms).
+#[tokio::test]
+async fn involute_gear_geometry_of_k5() {
+    let (app, c) = (TestApp::new().await, case("K5_differential_gear_train"));
+    let q3 = &c["expected"]["tooth_thickness_question3"];
+    let r = app.post("/v1/gears/geometry", &json!({"module": "4 mm", "teeth": 30})).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let g = r.json()["result"].clone();
+    close(&g["pitch_radius"], q3["pitch_radius_mm"].as_f64().unwrap() / 1000.0, 1e-12, "pitch radius");
+    close(&g["tip_radius"], q3["tip_radius_mm"].as_f64().unwrap() / 1000.0, 1e-12, "tip radius");
+    close(&g["thickness"], q3["thickness_at_tip_mm"].as_f64().unwrap() / 1000.0, 1e-12, "thickness at the tip");
+    close(&g["thickness_pressure_angle"], q3["pressure_angle_at_tip_deg"].as_f64().unwrap().to_radians(), 1e-12, "φ_T");
+    let ring = &c["expected"]["wheel4_internal"];
+    let g = app.post("/v1/gears/geometry", &json!({"module": "2 mm", "teeth": 120, "internal": true})).await.json()["result"].clone();
+    close(&g["tip_radius"], ring["addendum_circle_radius_mm"].as_f64().unwrap() / 1000.0, 1e-12, "ring tip circle");
+    close(&g["root_radius"], ring["dedendum_circle_radius_mm"].as_f64().unwrap() / 1000.0, 1e-12, "ring root circle");
+    close(&g["base_radius"], ring["base_radius_mm"].as_f64().unwrap() / 1000.0, 1e-12, "ring base circle");
+    let r = app.post("/v1/gears/geometry", &json!({"module": "4 mm", "teeth": 30, "radius": "50 mm"})).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "below the base circle: {}", r.text);
+}
