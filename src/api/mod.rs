@@ -5,6 +5,7 @@
 //! engine off the async workers, store the job ([`jobs::create`]).
 
 pub mod dynamics;
+pub mod equivalent;
 pub mod flywheel;
 pub mod gears;
 pub mod jobs;
@@ -50,13 +51,14 @@ expressions 2000 characters and 64 levels of nesting; tables 100000 rows; 1000 s
 100 torques; 100000 result samples; 200 bodies and joints, 500 loads and 100000 steps per mechanism \
 (422 beyond them)."
     ),
-    paths(flywheel::create, kinetostatics::create, dynamics::create, gears::create, jobs::get, jobs::list, jobs::csv, healthz),
+    paths(flywheel::create, kinetostatics::create, dynamics::create, gears::create, equivalent::create, jobs::get, jobs::list, jobs::csv, healthz),
     components(schemas(
         Problem, FieldError, Health,
         flywheel::FlywheelRequest, flywheel::FlywheelResult,
         kinetostatics::KinetostaticsRequest, kinetostatics::KinetostaticsResult,
         dynamics::DynamicsRequest, dynamics::DynamicsResult,
         gears::GearRequest, gears::GearResult,
+        equivalent::EquivalentRequest, equivalent::EquivalentResult,
         quantity::Quantity, quantity::FunctionDto, quantity::FunctionSpec
     )),
     tags(
@@ -64,6 +66,7 @@ expressions 2000 characters and 64 levels of nesting; tables 100000 rows; 1000 s
         (name = "kinetostatics", description = "Inverse dynamics of planar mechanisms"),
         (name = "dynamics", description = "Direct dynamics: motion under given actions"),
         (name = "gears", description = "Gear calculators"),
+        (name = "calculators", description = "Smaller calculators of the course"),
         (name = "jobs", description = "Stored computations"),
         (name = "service", description = "Health"),
     )
@@ -82,6 +85,7 @@ pub fn router(state: AppState, body_limit: usize) -> Router {
         .route("/v1/kinetostatics", post(kinetostatics::create))
         .route("/v1/dynamics", post(dynamics::create))
         .route("/v1/gears/geometry", post(gears::create))
+        .route("/v1/equivalent-masses", post(equivalent::create))
         .route("/v1/jobs", get(jobs::list))
         .route("/v1/jobs/{id}", get(jobs::get))
         .route("/v1/jobs/{id}/result.csv", get(jobs::csv))

@@ -7,6 +7,7 @@
 
 pub mod constraints;
 pub mod dynamics;
+pub mod equivalent;
 pub mod expr;
 pub mod flywheel;
 pub mod function;

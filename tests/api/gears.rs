@@ -28,3 +28,25 @@ async fn involute_gear_geometry_of_k5() {
     let r = app.post("/v1/gears/geometry", &json!({"module": "4 mm", "teeth": 30, "radius": "50 mm"})).await;
     assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "below the base circle: {}", r.text);
 }
+
+/// The three-mass equivalent of a bar (course notes ch. 1 §5): m = 3 kg,
+/// I_G = 0.09 kg·m², ends A and B 0.2 m and 0.4 m from G: m_A = 0.75,
+/// m_B = 0.375, m_G = 1.875 kg (closed form). Two points alone cannot be
+/// completely equivalent, and the answer says so.
+#[tokio::test]
+async fn equivalent_masses_of_a_bar() {
+    let app = TestApp::new().await;
+    let body =
+        json!({"mass": "3 kg", "inertia": 0.09, "cg": [0.2, 0], "points": {"A": [0, 0], "B": [0.6, 0], "G": [0.2, 0]}});
+    let r = app.post("/v1/equivalent-masses", &body).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let m = r.json()["result"].clone();
+    close(&m["masses"]["A"], 0.75, 1e-12, "m_A");
+    close(&m["masses"]["B"], 0.375, 1e-12, "m_B");
+    close(&m["masses"]["G"], 1.875, 1e-12, "m_G");
+    assert_eq!((m["complete"].as_bool(), m["unique"].as_bool()), (Some(true), Some(true)));
+    let two = json!({"mass": 3, "inertia": 0.09, "cg": [0.2, 0], "points": {"A": [0, 0], "B": [0.6, 0]}});
+    let m = app.post("/v1/equivalent-masses", &two).await.json()["result"].clone();
+    assert_eq!(m["complete"], false);
+    assert!(!m["warnings"].as_array().unwrap().is_empty());
+}

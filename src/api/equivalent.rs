@@ -1,0 +1,109 @@
+//! `POST /v1/equivalent-masses`: point masses equivalent to a rigid link.
+
+use super::json::JsonBody;
+use super::problem::{ApiError, FieldError, Problem};
+use super::quantity::{Errors, Quantity};
+use super::{AppState, jobs, validated};
+use crate::engine::equivalent::equivalent_masses;
+use crate::units::Dim;
+use axum::extract::State;
+use axum::response::Response;
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+use utoipa::ToSchema;
+
+/// A link (mass, inertia about its centre of mass G, G) and the points where
+/// the masses go (at most 20; include G itself for the three-mass bar).
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[schema(example = json!({"mass": 3, "inertia": 0.09, "cg": [0.2, 0], "points": {"A": [0, 0], "B": [0.6, 0], "G": [0.2, 0]}}))]
+pub struct EquivalentRequest {
+    #[schema(value_type = Quantity)]
+    pub mass: Quantity,
+    #[schema(value_type = Quantity)]
+    pub inertia: Quantity,
+    /// G, m.
+    #[schema(min_items = 2, max_items = 2)]
+    pub cg: Vec<f64>,
+    /// Named points, m.
+    #[schema(value_type = Object)]
+    pub points: BTreeMap<String, [f64; 2]>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct EquivalentResult {
+    /// Mass at each point, kg.
+    pub masses: BTreeMap<String, f64>,
+    /// Mass, centre of mass and inertia all match (completely equivalent).
+    pub complete: bool,
+    /// The points determine the masses (otherwise a minimum-norm set is given).
+    pub unique: bool,
+    /// Largest relative residual of the four conditions.
+    pub residual: f64,
+    pub warnings: Vec<String>,
+}
+
+/// Masses at the given points with the link's mass, centre of mass and inertia.
+#[utoipa::path(post, path = "/v1/equivalent-masses", tag = "calculators", request_body = EquivalentRequest,
+    responses(
+        (status = 201, description = "Job computed and stored; `result` is an EquivalentResult", body = jobs::Job,
+            headers(("Location" = String, description = "/v1/jobs/{id}"))),
+        (status = 400, description = "Body is not valid JSON", body = Problem, content_type = "application/problem+json"),
+        (status = 413, description = "Body larger than the limit (default 1 MiB)", body = Problem, content_type = "application/problem+json"),
+        (status = 415, description = "Content type is not application/json", body = Problem, content_type = "application/problem+json"),
+        (status = 422, description = "Not a valid problem; `errors` has a JSON pointer for every invalid field", body = Problem, content_type = "application/problem+json"),
+    ))]
+pub async fn create(State(state): State<AppState>, body: JsonBody<EquivalentRequest>) -> Result<Response, ApiError> {
+    let JsonBody { value, raw, unknown } = body;
+    jobs::create(&state, "equivalent_masses", raw, move || compute(&value, unknown)).await
+}
+
+/// Validates and computes a request.
+pub fn compute(request: &EquivalentRequest, unknown: Vec<FieldError>) -> Result<EquivalentResult, ApiError> {
+    let (mass, inertia, points) = validated(unknown, request.validate())?;
+    let e = equivalent_masses(mass, inertia, &points);
+    let complete = e.residual <= 1e-9;
+    let mut warnings = Vec::new();
+    if !complete {
+        warnings.push(format!("no masses at these points match mass, centre of mass and inertia together; the least-squares fit leaves a relative residual of {:.3e}", e.residual));
+    }
+    if !e.unique {
+        warnings.push("the points do not determine the masses; the smallest set (minimum norm) is given".into());
+    }
+    Ok(EquivalentResult {
+        masses: request.points.keys().cloned().zip(e.masses).collect(),
+        complete,
+        unique: e.unique,
+        residual: e.residual,
+        warnings,
+    })
+}
+
+/// Mass, inertia and the points relative to G.
+type Link = (f64, f64, Vec<[f64; 2]>);
+
+impl EquivalentRequest {
+    fn validate(&self) -> Result<Link, Vec<FieldError>> {
+        let mut e = Errors::default();
+        let mass = e.positive(&self.mass, Dim::MASS, "/mass");
+        let inertia = e
+            .quantity(&self.inertia, Dim::INERTIA, "/inertia")
+            .filter(|i| *i >= 0.0)
+            .or_else(|| e.fail("/inertia", "must not be negative"));
+        let cg = match self.cg.as_slice() {
+            [x, y] if x.is_finite() && y.is_finite() => Some([*x, *y]),
+            _ => e.fail("/cg", "must be [x, y], finite"),
+        };
+        if self.points.is_empty() || self.points.len() > 20 {
+            e.push("/points", "give 1 to 20 points");
+        }
+        if let Some(name) = self.points.iter().find(|(_, p)| !p.iter().all(|v| v.is_finite())).map(|(n, _)| n) {
+            e.push(&format!("/points/{}", super::json::escape(name)), "coordinates must be finite");
+        }
+        match (mass, inertia, cg) {
+            (Some(m), Some(i), Some(g)) if e.0.is_empty() => {
+                Ok((m, i, self.points.values().map(|p| [p[0] - g[0], p[1] - g[1]]).collect()))
+            }
+            _ => Err(e.0),
+        }
+    }
+}
