@@ -48,6 +48,25 @@ pub struct Problem {
     pub errors: Vec<FieldError>,
 }
 
+/// The error answers of every `POST` of a job, for the OpenAPI document.
+#[derive(utoipa::IntoResponses)]
+#[allow(dead_code)]
+pub enum PostErrors {
+    /// Body is not valid JSON
+    #[response(status = 400, content_type = "application/problem+json")]
+    MalformedJson(Problem),
+    /// Body larger than the limit (default 1 MiB)
+    #[response(status = 413, content_type = "application/problem+json")]
+    TooLarge(Problem),
+    /// Content type is not application/json
+    #[response(status = 415, content_type = "application/problem+json")]
+    UnsupportedMediaType(Problem),
+    /// Not a valid problem (an invalid field, a mechanism that cannot be assembled, a cycle
+    /// not in steady state, ...); `errors` has a JSON pointer for every invalid field
+    #[response(status = 422, content_type = "application/problem+json")]
+    Invalid(Problem),
+}
+
 /// Everything a handler can fail with.
 #[derive(Debug, thiserror::Error)]
 pub enum ApiError {

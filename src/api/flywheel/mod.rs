@@ -9,7 +9,7 @@ pub use result::{
 };
 
 use super::json::JsonBody;
-use super::problem::{ApiError, FieldError, Problem};
+use super::problem::{ApiError, FieldError, PostErrors};
 use super::{AppState, engine_error, jobs, validated};
 use crate::engine::flywheel::solve;
 use axum::extract::State;
@@ -22,10 +22,7 @@ use axum::response::Response;
     responses(
         (status = 201, description = "Job computed and stored; `result` is a FlywheelResult", body = jobs::Job,
             headers(("Location" = String, description = "/v1/jobs/{id}"))),
-        (status = 400, description = "Body is not valid JSON", body = Problem, content_type = "application/problem+json"),
-        (status = 413, description = "Body larger than the limit (default 1 MiB)", body = Problem, content_type = "application/problem+json"),
-        (status = 415, description = "Content type is not application/json", body = Problem, content_type = "application/problem+json"),
-        (status = 422, description = "Not a valid problem; `errors` has a JSON pointer for every invalid field", body = Problem, content_type = "application/problem+json"),
+        PostErrors,
     ))]
 pub async fn create(State(state): State<AppState>, body: JsonBody<FlywheelRequest>) -> Result<Response, ApiError> {
     let JsonBody { value, raw, unknown } = body;
