@@ -266,10 +266,6 @@ impl Errors {
         }
     }
 
-    pub fn expr(&mut self, src: &str, at: &str) -> Option<Expr> {
-        self.expr_of(src, at, &["phi"])
-    }
-
     fn expr_of(&mut self, src: &str, at: &str, variables: &[&str]) -> Option<Expr> {
         match Expr::compile(src, variables) {
             Ok(e) => Some(e),

@@ -26,6 +26,8 @@ pub struct Configuration {
     pub qdd: Vec<f64>,
     /// Velocity coefficients g = dq/dφ (one input only).
     pub g: Option<Vec<f64>>,
+    /// Φ_q here, kept for the multipliers (empty at a singular position).
+    pub jacobian: DMatrix<f64>,
     /// Condition number of Φ_q (2-norm).
     pub condition: f64,
     pub iterations: usize,
@@ -77,11 +79,18 @@ pub fn assemble(m: &Mechanism, q: &mut [f64], inputs: &[[f64; 3]], step: usize) 
 /// Velocities and accelerations at an assembled q.
 pub fn motion(m: &Mechanism, q: &[f64], inputs: &[[f64; 3]]) -> Option<(Vec<f64>, Vec<f64>, System)> {
     let sys = evaluate(m, &State { q, qd: None, inputs });
-    let qd = solve_linear(&sys.jacobian, &nu(m, inputs))?;
-    let qd: Vec<f64> = qd.iter().copied().collect();
-    let sys = evaluate(m, &State { q, qd: Some(&qd), inputs });
-    let qdd = solve_linear(&sys.jacobian, &sys.gamma)?;
-    Some((qd, qdd.iter().copied().collect(), sys))
+    // One factorisation for the velocity and the acceleration.
+    let lu = sys.jacobian.is_square().then(|| sys.jacobian.clone().lu());
+    let solve = |b: &DVector<f64>| {
+        lu.as_ref()
+            .and_then(|lu| lu.solve(b))
+            .filter(|x| x.iter().all(|v| v.is_finite()))
+            .or_else(|| solve_linear(&sys.jacobian, b))
+    };
+    let qd: Vec<f64> = solve(&nu(m, inputs))?.iter().copied().collect();
+    let with_speed = evaluate(m, &State { q, qd: Some(&qd), inputs });
+    let qdd = solve(&with_speed.gamma)?;
+    Some((qd, qdd.iter().copied().collect(), with_speed))
 }
 
 /// The configurations along the given input positions, starting from the
@@ -119,7 +128,7 @@ pub fn sweep(m: &Mechanism, positions: &[Vec<[f64; 3]>]) -> Result<Vec<Configura
         let solved = if single { motion(m, &q, &[[inputs[0][0], 1.0, 0.0]]) } else { motion(m, &q, inputs) };
         let cond = solved.as_ref().map_or(f64::INFINITY, |(_, _, sys)| condition(&sys.jacobian));
         match solved {
-            Some((a, b, _)) if cond <= SINGULAR_CONDITION => {
+            Some((a, b, sys)) if cond <= SINGULAR_CONDITION => {
                 let (qd, qdd, g) = if single {
                     let [_, w, alpha] = inputs[0];
                     let qd = a.iter().map(|g| g * w).collect();
@@ -130,7 +139,18 @@ pub fn sweep(m: &Mechanism, positions: &[Vec<[f64; 3]>]) -> Result<Vec<Configura
                     (a, b, None)
                 };
                 base = q.clone();
-                out.push(Configuration { q, qd, qdd, g, condition: cond, iterations, residual, singular: false });
+                let jacobian = sys.jacobian;
+                out.push(Configuration {
+                    q,
+                    qd,
+                    qdd,
+                    g,
+                    jacobian,
+                    condition: cond,
+                    iterations,
+                    residual,
+                    singular: false,
+                });
             }
             _ => out.push(Configuration { iterations, residual, ..Configuration::singular_at(q, cond) }),
         }
@@ -145,7 +165,8 @@ impl Configuration {
     fn singular_at(q: Vec<f64>, condition: f64) -> Self {
         let n = q.len();
         let (qd, qdd) = (vec![0.0; n], vec![0.0; n]);
-        Self { q, qd, qdd, g: None, condition, iterations: 0, residual: f64::NAN, singular: true }
+        let jacobian = DMatrix::zeros(0, 0);
+        Self { q, qd, qdd, g: None, jacobian, condition, iterations: 0, residual: f64::NAN, singular: true }
     }
 }
 

@@ -19,7 +19,7 @@ pub use loads::{Load, applied_forces, point_motion};
 pub use summary::Summary;
 
 use super::EngineError;
-use super::constraints::{State, evaluate, joint_offsets};
+use super::constraints::joint_offsets;
 use super::kinematics::{Configuration, solve_linear, sweep};
 use super::mobility::{Mobility, mobility};
 use super::model::{BodyId, JointKind, Mechanism, Pitch, cross, perp, rotate};
@@ -237,8 +237,7 @@ fn multipliers(
     step: usize,
     input: f64,
 ) -> Result<(Vec<f64>, Vec<Reaction>), EngineError> {
-    let inputs: Vec<[f64; 3]> = vec![[input, 0.0, 0.0]; m.drivers.len()];
-    let jac = evaluate(m, &State { q: &c.q, qd: None, inputs: &inputs }).jacobian;
+    let jac = &c.jacobian;
     let lambda = solve_linear(&jac.transpose(), &(-inertial)).ok_or(EngineError::Singular { step, input })?;
     let first_driver = lambda.len() - m.drivers.len();
     let driving = (first_driver..lambda.len()).map(|r| -lambda[r]).collect();
