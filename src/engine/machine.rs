@@ -110,7 +110,10 @@ impl Machine {
             d -= self.period;
         }
         let mut q: Vec<f64> = (0..q0.len()).map(|i| q0[i] + g0[i] * d + 0.5 * h0[i] * d * d).collect();
-        let unit = [[u, 1.0, 0.0]];
+        // The input measured from the anchor (u − period just below a full
+        // turn): the same configuration, and Newton starts next to it instead
+        // of a whole turn away, where it may settle on the other branch.
+        let unit = [[at + d, 1.0, 0.0]];
         assemble(&self.mechanism, &mut q, &unit, 0).ok()?;
         let (g, h, _) = motion(&self.mechanism, &q, &unit)?;
         let m = &self.mechanism;
@@ -121,7 +124,7 @@ impl Machine {
         let inertia = (0..g.len()).map(|k| mass(k) * g[k] * g[k]).sum();
         let slope = 2.0 * (0..g.len()).map(|k| mass(k) * g[k] * h[k]).sum::<f64>();
         let qd: Vec<f64> = g.iter().map(|v| v * self.speed).collect();
-        let qv = applied_forces(m, &self.loads, &q, &qd, u);
+        let qv = applied_forces(m, &self.loads, &q, &qd, u, [self.speed, 0.0]);
         let torque = g.iter().zip(qv.iter()).map(|(a, b)| a * b).sum();
         Some([inertia, slope, torque])
     }
@@ -140,6 +143,19 @@ mod tests {
             let fd = (m.eval(phi + 1e-6, Reduced::Inertia) - m.eval(phi - 1e-6, Reduced::Inertia)) / 2e-6;
             let an = m.eval(phi, Reduced::InertiaSlope);
             assert!((fd - an).abs() < 1e-8, "{phi}: {an} vs {fd}");
+        }
+    }
+
+    /// Just below a full turn the nearest anchor is φ = 0: I* there must
+    /// continue I*(δ) − 2δ·I*'(0) (to O(δ³)), the same branch of assembly.
+    #[test]
+    fn the_functions_are_continuous_across_the_full_turn() {
+        let period = 2.0 * std::f64::consts::PI;
+        let m = Machine::new(offset_slider_crank(), Vec::new(), 0.0, period).unwrap();
+        for delta in [1e-3, 5e-3] {
+            let below = m.eval(period - delta, Reduced::Inertia);
+            let taylor = m.eval(delta, Reduced::Inertia) - 2.0 * delta * m.eval(0.0, Reduced::InertiaSlope);
+            assert!((below - taylor).abs() < 1e-4 * delta * delta, "δ = {delta}: {below} vs {taylor}");
         }
     }
 }

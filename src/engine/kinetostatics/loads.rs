@@ -4,7 +4,8 @@ use crate::engine::function::{Function, Side};
 use crate::engine::model::{BodyId, Mechanism, cross, rotate, rotate_d};
 use nalgebra::DVector;
 
-/// A load on a body; functions take the first input coordinate φ.
+/// A load on a body; functions take the first input coordinate φ (and, in
+/// direct dynamics, its speed ω and the time t).
 #[derive(Clone, Debug)]
 pub enum Load {
     /// A force of signed `magnitude` along the unit `direction` (fixed in the
@@ -19,8 +20,9 @@ pub enum Load {
     Damper { a: (BodyId, [f64; 2]), b: (BodyId, [f64; 2]), coefficient: f64 },
 }
 
-/// Generalized applied forces Q at a configuration (velocities `qd` for dampers).
-pub fn applied_forces(m: &Mechanism, loads: &[Load], q: &[f64], qd: &[f64], phi: f64) -> DVector<f64> {
+/// Generalized applied forces Q at a configuration (velocities `qd` for
+/// dampers), with the loads' functions at φ and `[ω, t]`.
+pub fn applied_forces(m: &Mechanism, loads: &[Load], q: &[f64], qd: &[f64], phi: f64, state: [f64; 2]) -> DVector<f64> {
     let mut qv = DVector::zeros(m.n_coordinates());
     let mut apply = |b: BodyId, at: [f64; 2], f: [f64; 2], couple: f64| add_force(m, q, &mut qv, b, at, f, couple);
     for (b, body) in m.bodies.iter().enumerate() {
@@ -29,10 +31,12 @@ pub fn applied_forces(m: &Mechanism, loads: &[Load], q: &[f64], qd: &[f64], phi:
     for load in loads {
         match load {
             Load::Force { body, at, direction, magnitude } => {
-                let f = magnitude.eval(phi, Side::Right);
+                let f = magnitude.eval_at(phi, Side::Right, state);
                 apply(*body, *at, [f * direction[0], f * direction[1]], 0.0);
             }
-            Load::Torque { body, value } => apply(*body, [0.0, 0.0], [0.0, 0.0], value.eval(phi, Side::Right)),
+            Load::Torque { body, value } => {
+                apply(*body, [0.0, 0.0], [0.0, 0.0], value.eval_at(phi, Side::Right, state))
+            }
             Load::Spring { a, b, stiffness, free_length } => {
                 let (u, length, _) = line(m, q, qd, *a, *b);
                 let t = stiffness * (length - free_length);

@@ -23,7 +23,7 @@ use super::constraints::joint_offsets;
 use super::kinematics::{Configuration, solve_linear, sweep};
 use super::mobility::{Mobility, mobility};
 use super::model::{BodyId, JointKind, Mechanism, Pitch, cross, perp, rotate};
-use nalgebra::DVector;
+use nalgebra::{DMatrix, DVector};
 
 /// What to compute at every position.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -91,7 +91,7 @@ pub struct Step {
 }
 
 /// M·v with M = diag(m, m, I_G).
-fn mass_times(m: &Mechanism, v: &[f64]) -> DVector<f64> {
+pub(crate) fn mass_times(m: &Mechanism, v: &[f64]) -> DVector<f64> {
     DVector::from_iterator(
         v.len(),
         v.iter().enumerate().map(|(k, x)| {
@@ -155,7 +155,8 @@ fn step(
         });
     }
     let phi = inputs[0][0];
-    let (qv, friction_iterations) = with_friction(m, c, applied_forces(m, loads, &c.q, &c.qd, phi), k, phi)?;
+    let (qv, friction_iterations) =
+        with_friction(m, c, applied_forces(m, loads, &c.q, &c.qd, phi, [inputs[0][1], 0.0]), k, phi)?;
     let inertial = mass_times(m, &c.qdd) - &qv;
     let single = m.drivers.len() == 1;
     let g = c.g.as_ref();
@@ -242,9 +243,20 @@ fn multipliers(
     let first_driver = lambda.len() - m.drivers.len();
     let driving = (first_driver..lambda.len()).map(|r| -lambda[r]).collect();
     let Some(indeterminate) = reactions_with else { return Ok((driving, Vec::new())) };
+    Ok((driving, reactions(m, &c.q, jac, &lambda, indeterminate)))
+}
+
+/// Every joint's reaction from the multipliers λ of Φ_qᵀλ = Q − M q̈ (the
+/// joints' rows first in Φ_q), flagged where `indeterminate` lists the joint.
+pub fn reactions(
+    m: &Mechanism,
+    q: &[f64],
+    jac: &DMatrix<f64>,
+    lambda: &DVector<f64>,
+    indeterminate: &[usize],
+) -> Vec<Reaction> {
     let offsets = joint_offsets(m);
-    let reactions = m
-        .joints
+    m.joints
         .iter()
         .enumerate()
         .map(|(k, joint)| {
@@ -258,17 +270,16 @@ fn multipliers(
             // On the second body, or minus the action on the first when the second is the ground.
             let (b, sign) = if j != 0 { (j, 1.0) } else { (i, -1.0) };
             let [fx, fy, mg] = force_on(b);
-            let arm = m.column(b).map_or([0.0; 2], |col| rotate(c.q[col + 2], m.local(b, joint.at)));
+            let arm = m.column(b).map_or([0.0; 2], |col| rotate(q[col + 2], m.local(b, joint.at)));
             let moment = mg - cross(arm, [fx, fy]);
             let determinate = !indeterminate.contains(&k);
             if let JointKind::Gear { pitch: Some(pitch), .. } = &joint.kind {
-                let [tx, ty] = tooth_force(m, &c.q, [i, j], pitch, sign * moment);
+                let [tx, ty] = tooth_force(m, q, [i, j], pitch, sign * moment);
                 return Reaction { joint: k, on: j, by: i, fx: tx, fy: ty, moment: 0.0, determinate };
             }
             Reaction { joint: k, on: j, by: i, fx: sign * fx, fy: sign * fy, moment: sign * moment, determinate }
         })
-        .collect();
-    Ok((driving, reactions))
+        .collect()
 }
 
 /// The tooth force on the second gear at the pitch point, from the mesh's
