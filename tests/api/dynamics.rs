@@ -1,6 +1,6 @@
 //! Direct dynamics through the HTTP API: reference case D1 and clean endings.
 
-use crate::helpers::{TestApp, case, close};
+use crate::helpers::{TestApp, case, close, request};
 use axum::http::StatusCode;
 use serde_json::{Value, json};
 
@@ -93,4 +93,79 @@ async fn actions_may_depend_on_speed_and_time() {
     let end = app.post("/v1/dynamics", &run("2*t", 1.0)).await.json()["result"]["samples"][2].clone();
     close(&end["speed"], 4.0, 1e-9, "ω(2) = t²");
     close(&end["angle"], 8.0 / 3.0, 1e-9, "φ(2) = t³/3");
+}
+
+/// D1's scotch yoke as a `machine` with its crank free (the README's
+/// example): 15 N·m on the crank, 200 sin φ N along +x on the yoke, from
+/// rest, with `end` replacing the fixture's end condition.
+fn d1_machine(end: Value) -> Value {
+    let mut body = request("d1_scotch_yoke_machine");
+    if !end.as_object().unwrap().is_empty() {
+        body.as_object_mut().unwrap().remove("until_angle");
+    }
+    for (k, v) in end.as_object().unwrap() {
+        body[k] = v.clone();
+    }
+    body
+}
+
+/// The case's closed-form turn times at 1e-8 (the same physics as the
+/// reduced form above), every sample's input state, the reactions, and the
+/// constraint drift reported.
+#[tokio::test]
+async fn d1_as_a_machine_through_the_api() {
+    let (app, c) = (TestApp::new().await, case("D1_scotch_yoke_from_rest_constant_torque"));
+    let r = app.post("/v1/dynamics", &d1_machine(json!({}))).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let result = r.json()["result"].clone();
+    let rows = &c["expected"]["at_angle"].as_array().unwrap()[5..7];
+    let turns: Vec<_> = result["events"].as_array().unwrap().iter().filter(|e| e["kind"] == "turn").cloned().collect();
+    assert_eq!(turns.len(), 2);
+    for (e, row) in turns.iter().zip(rows) {
+        close(&e["t"], row["time_s"].as_f64().unwrap(), 1e-8, "t at the turn");
+        close(&e["speed"], row["omega_rad_s"].as_f64().unwrap(), 1e-8, "ω at the turn");
+    }
+    let machine = &result["machine"];
+    assert_eq!(machine["dof"], 1);
+    let last = &machine["samples"][10];
+    close(&last["inputs"][0]["angle"], 4.0 * std::f64::consts::PI, 1e-9, "the end angle");
+    assert_eq!(last["reactions"].as_array().unwrap().len(), 3, "{last}");
+    assert!(last["constraint_residual"].as_f64().unwrap() < 1e-9);
+    assert!(result["accuracy"]["constraint_drift"].as_f64().unwrap() < 1e-9);
+    assert!(result["energy_residual"].as_f64().unwrap().abs() < 1e-8);
+}
+
+/// Machine-form mistakes answer 422 at the field: friction, a motion law as
+/// the initial speed, a kinetostatic field, the first input's state given
+/// twice, two forms at once, and a mechanism with more freedom than inputs.
+#[tokio::test]
+async fn machine_form_errors_point_at_the_field() {
+    let app = TestApp::new().await;
+    let mut body = d1_machine(json!({"duration": 1}));
+    body["machine"]["mechanism"]["joints"][0]["friction"] = json!({"mu": 0.1, "radius": 0.01});
+    body.as_object_mut().unwrap().remove("initial");
+    body["machine"]["input"]["speed"] = json!({"expr": "10 + phi"});
+    body["machine"]["input"]["steps"] = json!(10);
+    let r = app.post("/v1/dynamics", &body).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let pointers: Vec<String> =
+        r.json()["errors"].as_array().unwrap().iter().map(|e| e["pointer"].as_str().unwrap().to_string()).collect();
+    for p in ["/machine/mechanism/joints/0/friction", "/machine/input/speed", "/machine/input/steps"] {
+        assert!(pointers.contains(&p.to_string()), "{p} in {pointers:?}");
+    }
+    let mut twice = d1_machine(json!({"duration": 1}));
+    twice["machine"]["input"]["start"] = json!("10 deg");
+    let r = app.post("/v1/dynamics", &twice).await;
+    assert_eq!(r.json()["errors"][0]["pointer"], "/initial", "{}", r.text);
+    let mut both = d1_machine(json!({"duration": 1}));
+    both["reduced_inertia"] = json!(0.1);
+    let r = app.post("/v1/dynamics", &both).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert_eq!(r.json()["errors"][0]["pointer"], "");
+    let mut loose = d1_machine(json!({"duration": 1}));
+    loose["machine"]["mechanism"]["joints"].as_array_mut().unwrap().pop();
+    let r = app.post("/v1/dynamics", &loose).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert_eq!(r.json()["errors"][0]["pointer"], "/machine/input", "{}", r.text);
+    assert!(r.text.contains("2 degree(s) of freedom"), "{}", r.text);
 }

@@ -27,6 +27,7 @@ fn problem(end: End, samples: usize) -> ReducedProblem {
         end,
         tolerance: 1e-9,
         samples,
+        budget: None,
     }
 }
 

@@ -2,3 +2,4 @@
 
 mod dynamics;
 mod kinetostatics;
+mod mechanism_dynamics;

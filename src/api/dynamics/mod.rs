@@ -1,24 +1,33 @@
-//! `POST /v1/dynamics`: the motion of a 1-DOF machine under given actions
-//! (reduced form).
+//! `POST /v1/dynamics`: the motion of a machine under given actions, in
+//! reduced form (1 DOF) or as a mechanism (any DOF, see [`machine`]).
+
+mod machine;
 
 use super::json::JsonBody;
 use super::problem::{ApiError, FieldError, PostErrors};
 use super::quantity::{Errors, FunctionDto, Quantity};
 use super::{AppState, jobs, validated};
-use crate::engine::dynamics::{DynamicsSolution, End, EventKind, ReducedProblem, solve};
+use crate::engine::dynamics::mechanism::{self, MechanismProblem};
+use crate::engine::dynamics::{DynamicsError, DynamicsSolution, End, EventKind, ReducedProblem, solve};
 use crate::engine::function::Function;
 use crate::units::Dim;
 use axum::extract::State;
 use axum::response::Response;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
+use std::time::Duration;
 use utoipa::ToSchema;
 
+pub use machine::{DynamicsMachine, InputState, MachineDynamics, MachineSample};
+
+/// Wall-clock budget of one dynamics job: a run over it is stopped and answered 422.
+pub const BUDGET: Duration = Duration::from_secs(20);
 /// Longest simulated time, s.
 pub const MAX_DURATION: f64 = 1e5;
 const DEFAULT_SAMPLES: usize = 201;
 
-/// A 1-DOF machine in reduced form and its start: exactly one of `duration` and `until_angle`.
+/// A machine — in reduced form (`torques` and `reduced_inertia`) or as a
+/// mechanism (`machine`) — and its start: exactly one of `duration` and `until_angle`.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 #[schema(example = json!({
     "torques": [{"name": "motor and yoke", "value": {"expr": "15 - 20*sin(phi)^2"}}],
@@ -27,13 +36,17 @@ const DEFAULT_SAMPLES: usize = 201;
     "until_angle": "720 deg"
 }))]
 pub struct DynamicsRequest {
-    /// Torques on the machine, positive when they drive it: Functions whose
-    /// expressions may read `phi` (reduced to the period), `omega` and `t`.
-    #[schema(min_items = 1, max_items = 100)]
+    /// Reduced form: torques on the machine, positive when they drive it:
+    /// Functions whose expressions may read `phi` (reduced to the period),
+    /// `omega` and `t`.
+    #[serde(default)]
+    #[schema(max_items = 100)]
     pub torques: Vec<DynamicsTorque>,
-    /// I*(φ) > 0.
-    #[schema(value_type = FunctionDto)]
-    pub reduced_inertia: FunctionDto,
+    /// Reduced form: I*(φ) > 0.
+    #[schema(value_type = Option<FunctionDto>)]
+    pub reduced_inertia: Option<FunctionDto>,
+    /// Mechanism form, instead of `torques` and `reduced_inertia`.
+    pub machine: Option<DynamicsMachine>,
     pub initial: Option<Initial>,
     /// Simulated time, s.
     #[schema(value_type = Option<Quantity>)]
@@ -47,7 +60,8 @@ pub struct DynamicsRequest {
     /// Period of the Functions in `phi` (default 2π).
     #[schema(value_type = Option<Quantity>)]
     pub period: Option<Quantity>,
-    /// Requested relative accuracy (default 1e-9).
+    /// Requested relative accuracy (default 1e-9). With a `machine`, positions
+    /// are held to it relative to the mechanism's size.
     #[schema(minimum = 1e-14, maximum = 1e-2)]
     pub tolerance: Option<f64>,
     /// Output points, evenly spaced in time, both ends included (default 201).
@@ -97,6 +111,10 @@ pub struct DynamicsAccuracy {
     pub energy_residual: f64,
     pub steps: usize,
     pub function_evaluations: usize,
+    /// Mechanism form: the largest constraint violation |Φ| (m or rad)
+    /// removed by the projection after a step.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub constraint_drift: Option<f64>,
     pub method: String,
 }
 
@@ -107,10 +125,14 @@ pub struct DynamicsResult {
     pub events: Vec<EventDto>,
     pub energy_residual: f64,
     pub accuracy: DynamicsAccuracy,
+    /// Mechanism form: every input, the reactions and the constraint residual at the samples.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub machine: Option<MachineDynamics>,
     pub warnings: Vec<String>,
 }
 
-/// Integrates I*(φ)φ̈ + ½I*'(φ)φ̇² = M*(φ) from the initial state.
+/// Integrates I*(φ)φ̈ + ½I*'(φ)φ̇² = M*(φ, ω, t), or a mechanism's equations
+/// of motion, from the initial state.
 #[utoipa::path(post, path = "/v1/dynamics", tag = "dynamics", request_body = DynamicsRequest,
     responses(
         (status = 201, description = "Job computed and stored; `result` is a DynamicsResult", body = jobs::Job,
@@ -124,13 +146,41 @@ pub async fn create(State(state): State<AppState>, body: JsonBody<DynamicsReques
 
 /// Validates and solves a request (also used by `mechdyn solve dynamics`).
 pub fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>) -> Result<DynamicsResult, ApiError> {
-    let p = validated(unknown, request.to_problem())?;
-    let s = solve(&p).map_err(|e| ApiError::Invalid(vec![FieldError::at("/reduced_inertia", e.to_string())]))?;
-    Ok(DynamicsResult::from(s))
+    match validated(unknown, request.to_problem())? {
+        Problem::Reduced(p) => Ok(DynamicsResult::from(solve(&p).map_err(invalid)?)),
+        Problem::Machine(p, joints, bodies) => {
+            let s = mechanism::solve(&p).map_err(invalid)?;
+            let mut result = DynamicsResult::from(s.solution.clone());
+            result.accuracy.constraint_drift = Some(s.drift);
+            result.accuracy.method = "Dormand-Prince 5(4) on the index-1 equations of motion [M Φ_qᵀ; Φ_q 0], \
+                                      the state projected onto Φ = 0 and Φ_q·q̇ = 0 after every step; \
+                                      events by Brent's method on the dense output; work as the integrated power"
+                .into();
+            result.machine = Some(MachineDynamics::new(&s, &joints, &bodies));
+            Ok(result)
+        }
+    }
+}
+
+/// A failed integration as a 422 at the field it comes from.
+fn invalid(e: DynamicsError) -> ApiError {
+    let pointer = match e {
+        DynamicsError::NonPositiveInertia { .. } => "/reduced_inertia",
+        DynamicsError::Initial { .. } => "/machine/input",
+        DynamicsError::Integration { .. } | DynamicsError::Budget { .. } => "",
+    };
+    ApiError::Invalid(vec![FieldError::at(pointer, e.to_string())])
+}
+
+/// A validated request.
+enum Problem {
+    Reduced(ReducedProblem),
+    /// With the joint and body names.
+    Machine(MechanismProblem, Vec<String>, Vec<String>),
 }
 
 impl DynamicsRequest {
-    fn to_problem(&self) -> Result<ReducedProblem, Vec<FieldError>> {
+    fn to_problem(&self) -> Result<Problem, Vec<FieldError>> {
         let mut e = Errors::default();
         let period = match &self.period {
             Some(q) => {
@@ -139,6 +189,34 @@ impl DynamicsRequest {
             None => Some(2.0 * PI),
         };
         let pd = period.unwrap_or(2.0 * PI);
+        let tolerance = match self.tolerance {
+            Some(t) if !(1e-14..=1e-2).contains(&t) => e.fail("/tolerance", "must be between 1e-14 and 1e-2"),
+            t => Some(t.unwrap_or(1e-9)),
+        };
+        let samples = match self.samples {
+            Some(n) if !(2..=100_000).contains(&n) => e.fail("/samples", "must be 2 to 100000"),
+            n => Some(n.unwrap_or(DEFAULT_SAMPLES)),
+        };
+        let reduced = !self.torques.is_empty() || self.reduced_inertia.is_some();
+        let problem = match (&self.machine, reduced) {
+            (Some(m), false) => self.machine_problem(&mut e, m, pd),
+            (None, true) => self.reduced_problem(&mut e, pd),
+            _ => e.fail("", "give either \"machine\" or the reduced form \"torques\" with \"reduced_inertia\""),
+        };
+        match (problem, period, tolerance, samples) {
+            (Some(mut problem), Some(period), Some(tolerance), Some(samples)) if e.0.is_empty() => {
+                match &mut problem {
+                    Problem::Reduced(p) => (p.period, p.tolerance, p.samples) = (period, tolerance, samples),
+                    Problem::Machine(p, ..) => (p.period, p.tolerance, p.samples) = (period, tolerance, samples),
+                }
+                Ok(problem)
+            }
+            _ => Err(e.0),
+        }
+    }
+
+    /// The reduced form (period, tolerance and samples are set by the caller).
+    fn reduced_problem(&self, e: &mut Errors, period: f64) -> Option<Problem> {
         if self.torques.is_empty() || self.torques.len() > 100 {
             e.push("/torques", "must hold 1 to 100 items");
         }
@@ -153,42 +231,58 @@ impl DynamicsRequest {
                     }
                     k => Some(k.unwrap_or(1.0)),
                 };
-                let f =
-                    e.function_of(&t.value, Dim::TORQUE, pd, &format!("/torques/{i}/value"), &["phi", "omega", "t"]);
+                let f = e.function_of(
+                    &t.value,
+                    Dim::TORQUE,
+                    period,
+                    &format!("/torques/{i}/value"),
+                    &["phi", "omega", "t"],
+                );
                 Some((f?, ratio?))
             })
             .collect();
-        let inertia = e.function(&self.reduced_inertia, Dim::INERTIA, pd, "/reduced_inertia");
+        let inertia = match &self.reduced_inertia {
+            Some(f) => e.function(f, Dim::INERTIA, period, "/reduced_inertia"),
+            None => e.fail("", "the reduced form needs \"reduced_inertia\""),
+        };
         let initial = self.initial.as_ref();
         let angle0 = initial.and_then(|i| i.angle.as_ref()).map_or(Some(0.0), |q| e.angle(q, "/initial/angle"));
         let speed0 = initial
             .and_then(|i| i.speed.as_ref())
             .map_or(Some(0.0), |q| e.quantity(q, Dim::ANGULAR_SPEED, "/initial/speed"));
-        let end = self.end(&mut e, angle0.unwrap_or(0.0));
-        let tolerance = match self.tolerance {
-            Some(t) if !(1e-14..=1e-2).contains(&t) => e.fail("/tolerance", "must be between 1e-14 and 1e-2"),
-            t => Some(t.unwrap_or(1e-9)),
-        };
-        let samples = match self.samples {
-            Some(n) if !(2..=100_000).contains(&n) => e.fail("/samples", "must be 2 to 100000"),
-            n => Some(n.unwrap_or(DEFAULT_SAMPLES)),
-        };
+        let end = self.end(e, angle0.unwrap_or(0.0));
         let torques: Option<Vec<_>> = torques.into_iter().collect();
-        match (period, torques, inertia, angle0, speed0, end, tolerance, samples) {
-            (
-                Some(period),
-                Some(torques),
-                Some(inertia),
-                Some(angle0),
-                Some(speed0),
-                Some(end),
-                Some(tolerance),
-                Some(samples),
-            ) if e.0.is_empty() => {
-                Ok(ReducedProblem { torques, inertia, period, angle0, speed0, end, tolerance, samples })
-            }
-            _ => Err(e.0),
-        }
+        Some(Problem::Reduced(ReducedProblem {
+            torques: torques?,
+            inertia: inertia?,
+            period,
+            angle0: angle0?,
+            speed0: speed0?,
+            end: end?,
+            tolerance: 0.0,
+            samples: 0,
+            budget: Some(BUDGET),
+        }))
+    }
+
+    /// The mechanism form (period, tolerance and samples are set by the caller).
+    fn machine_problem(&self, e: &mut Errors, m: &DynamicsMachine, period: f64) -> Option<Problem> {
+        let parts = m.convert(e, self.initial.as_ref(), period);
+        let angle0 = parts.as_ref().and_then(|p| p.initial.first()).map_or(0.0, |s| s[0]);
+        let end = self.end(e, angle0)?;
+        let parts = parts?;
+        let problem = MechanismProblem {
+            mechanism: parts.mechanism,
+            loads: parts.loads,
+            period,
+            initial: parts.initial,
+            end,
+            tolerance: 0.0,
+            samples: 0,
+            budget: Some(BUDGET),
+            reactions: m.reactions.unwrap_or(true),
+        };
+        Some(Problem::Machine(problem, parts.joint_names, parts.body_names))
     }
 
     fn end(&self, e: &mut Errors, angle0: f64) -> Option<End> {
@@ -238,10 +332,12 @@ impl From<DynamicsSolution> for DynamicsResult {
                 energy_residual: s.energy_residual,
                 steps: s.steps,
                 function_evaluations: s.evaluations,
+                constraint_drift: None,
                 method: "Dormand-Prince 5(4) with dense output, events located by Brent's method on it; \
                          work by adaptive quadrature over the angle"
                     .into(),
             },
+            machine: None,
             warnings: s.stopped.into_iter().collect(),
         }
     }

@@ -59,12 +59,16 @@ pub(crate) fn convert_loads(
     names: &[String],
     period: f64,
     at: &str,
+    variables: &[&str],
 ) -> Vec<Load> {
     if list.len() > MAX_LOADS {
         e.push(at, format!("at most {MAX_LOADS} loads"));
         return Vec::new();
     }
-    list.iter().enumerate().filter_map(|(k, l)| load(e, l, mech, names, period, &format!("{at}/{k}"))).collect()
+    list.iter()
+        .enumerate()
+        .filter_map(|(k, l)| load(e, l, mech, names, period, &format!("{at}/{k}"), variables))
+        .collect()
 }
 
 fn point_of(e: &mut Errors, p: &PointRef, dto: &MechanismDto, at: &str) -> Option<[f64; 2]> {
@@ -87,7 +91,16 @@ fn moving_body(e: &mut Errors, names: &[String], name: &str, at: &str) -> Option
 }
 
 /// Builds one load, checking that it has exactly the fields of its type.
-fn load(e: &mut Errors, l: &LoadDto, mech: &MechanismDto, names: &[String], period: f64, at: &str) -> Option<Load> {
+/// One load; its Functions' expressions may read `variables`.
+fn load(
+    e: &mut Errors,
+    l: &LoadDto,
+    mech: &MechanismDto,
+    names: &[String],
+    period: f64,
+    at: &str,
+    variables: &[&str],
+) -> Option<Load> {
     let present = [
         ("body", l.body.is_some()),
         ("at", l.at.is_some()),
@@ -132,12 +145,13 @@ fn load(e: &mut Errors, l: &LoadDto, mech: &MechanismDto, names: &[String], peri
                 }
                 _ => e.fail(&format!("{at}/direction"), "must be a finite, non-zero vector [x, y]"),
             };
-            let magnitude = e.function(l.magnitude.as_ref()?, Dim::FORCE, period, &format!("{at}/magnitude"));
+            let magnitude =
+                e.function_of(l.magnitude.as_ref()?, Dim::FORCE, period, &format!("{at}/magnitude"), variables);
             Some(Load::Force { body: body?, at: point?, direction: direction?, magnitude: magnitude? })
         }
         LoadType::Torque => {
             let body = moving_body(e, names, l.body.as_deref()?, &format!("{at}/body"));
-            let value = e.function(l.value.as_ref()?, Dim::TORQUE, period, &format!("{at}/value"));
+            let value = e.function_of(l.value.as_ref()?, Dim::TORQUE, period, &format!("{at}/value"), variables);
             Some(Load::Torque { body: body?, value: value? })
         }
         LoadType::Spring => {

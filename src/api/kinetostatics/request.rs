@@ -150,6 +150,7 @@ impl KinetostaticsRequest {
             &c.body_names,
             period,
             "/loads",
+            &["phi"],
         );
         if !e.0.is_empty() {
             return Err(e.0);
@@ -191,7 +192,7 @@ pub(crate) fn machine_parts(
         Some(q) => e.angle(q, &format!("{at}/input/reference")),
         None => Some(0.0),
     };
-    let loads = convert_loads(e, loads, mech, &c.body_names, period, &format!("{at}/loads"));
+    let loads = convert_loads(e, loads, mech, &c.body_names, period, &format!("{at}/loads"), &["phi"]);
     mechanism.drivers = vec![Driver { joint: joint?, reference: reference? }];
     Some((mechanism, loads))
 }

@@ -44,6 +44,22 @@ pub struct ReactionDto {
     pub determinate: bool,
 }
 
+impl ReactionDto {
+    /// The engine's reaction with its joint and body names.
+    pub fn new(r: &Reaction, joint_names: &[String], body_names: &[String]) -> Self {
+        let v = |x: f64| r.determinate.then_some(x);
+        Self {
+            joint: joint_names[r.joint].clone(),
+            on: body_names[r.on].clone(),
+            by: body_names[r.by].clone(),
+            fx: v(r.fx),
+            fy: v(r.fy),
+            moment: v(r.moment),
+            determinate: r.determinate,
+        }
+    }
+}
+
 /// Position, velocity and acceleration of a body's centre of mass and rotation.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct BodyMotion {
@@ -208,18 +224,7 @@ impl KinetostaticsResult {
 
 fn step_dto(s: &Step, p: &Problem, joint_names: &[String]) -> StepDto {
     let names = &p.body_names;
-    let reaction = |r: &Reaction| {
-        let v = |x: f64| r.determinate.then_some(x);
-        ReactionDto {
-            joint: joint_names[r.joint].clone(),
-            on: names[r.on].clone(),
-            by: names[r.by].clone(),
-            fx: v(r.fx),
-            fy: v(r.fy),
-            moment: v(r.moment),
-            determinate: r.determinate,
-        }
-    };
+    let reaction = |r: &Reaction| ReactionDto::new(r, joint_names, names);
     StepDto {
         input: Scalars::of(&s.input),
         driving: (p.want_driving && !s.singular).then(|| Scalars::of(&s.driving)),

@@ -13,7 +13,7 @@
 
 use super::cycle::Cycle;
 use crate::engine::function::Side;
-use crate::engine::numeric::ode::{Dopri5, OdeError, Step};
+use crate::engine::numeric::ode::{Dopri5, OdeError, Rhs, Step};
 use crate::engine::numeric::roots::brent;
 
 /// What the time simulation measured.
@@ -34,7 +34,7 @@ pub struct Check {
 const MAX_STEPS: usize = 400_000;
 
 pub(crate) fn simulate(cycle: &Cycle, inertia: f64, omega0: f64, omega_a: f64, rtol: f64) -> Result<Check, OdeError> {
-    let mut state = [0.0, omega0];
+    let mut state = vec![0.0, omega0];
     let (mut t, mut w_max, mut w_min) = (0.0, omega0, omega0);
     let (mut steps, mut evaluations) = (0, 0);
     let h_max = cycle.period / omega_a / 16.0;
@@ -47,15 +47,17 @@ pub(crate) fn simulate(cycle: &Cycle, inertia: f64, omega0: f64, omega_a: f64, r
             (w_max, w_min) = (w_max.max(state[1]), w_min.min(state[1]));
         }
         let anchor = 0.5 * (start + end);
-        let mut rhs = |_t: f64, y: &[f64; 2]| {
+        let mut rhs = |_t: f64, y: &[f64], dy: &mut [f64]| {
             let total = inertia + cycle.inertia.eval_frozen(y[0], anchor);
             let slope = cycle.inertia_slope.as_ref().map_or(0.0, |s| s.eval_frozen(y[0], anchor));
-            [y[1], (cycle.torque_frozen(y[0], anchor) - 0.5 * slope * y[1] * y[1]) / total]
+            dy[0] = y[1];
+            dy[1] = (cycle.torque_frozen(y[0], anchor) - 0.5 * slope * y[1] * y[1]) / total;
         };
-        let mut ode = Dopri5::new(&mut rhs, t, state, rtol, rtol * omega_a.max(cycle.period), h_max);
+        let mut ode = Dopri5::new(&mut rhs, t, state.clone(), rtol, vec![rtol * omega_a.max(cycle.period); 2], h_max);
         loop {
             let step = ode.step(&mut rhs, MAX_STEPS)?;
-            let t_end = if step.y1[0] >= end { brent(|s| step.at(s)[0] - end, step.t0, step.t1, 0.0) } else { step.t1 };
+            let t_end =
+                if step.y1[0] >= end { brent(|s| step.component(s, 0) - end, step.t0, step.t1, 0.0) } else { step.t1 };
             for omega in extremes(&step, t_end, &mut rhs) {
                 (w_max, w_min) = (w_max.max(omega), w_min.min(omega));
             }
@@ -86,13 +88,17 @@ pub(crate) fn simulate(cycle: &Cycle, inertia: f64, omega0: f64, omega_a: f64, r
 
 /// ω at the end of the step (cut at `t_end`) and at an interior extremum,
 /// where φ̈ changes sign, located on the dense output.
-fn extremes(step: &Step<2>, t_end: f64, rhs: &mut impl FnMut(f64, &[f64; 2]) -> [f64; 2]) -> Vec<f64> {
-    let mut out = vec![step.at(t_end)[1]];
-    let mut accel = |s: f64| rhs(s, &step.at(s))[1];
+fn extremes(step: &Step, t_end: f64, rhs: &mut impl Rhs) -> Vec<f64> {
+    let mut out = vec![step.component(t_end, 1)];
+    let mut dy = [0.0; 2];
+    let mut accel = |s: f64| {
+        rhs(s, &step.at(s), &mut dy);
+        dy[1]
+    };
     let (a0, a1) = (step.f0[1], accel(t_end));
     if a0 * a1 < 0.0 {
         let ts = brent(&mut accel, step.t0, t_end, 0.0);
-        out.push(step.at(ts)[1]);
+        out.push(step.component(ts, 1));
     }
     out
 }

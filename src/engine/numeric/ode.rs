@@ -1,32 +1,38 @@
 //! Dormand–Prince 5(4) explicit Runge–Kutta with step-size control and
-//! Hairer's 4th-order continuous extension (dense output), for small
-//! non-stiff systems y' = f(t, y) of fixed size N.
+//! Hairer's 4th-order continuous extension (dense output), for non-stiff
+//! systems y' = f(t, y); f writes dy/dt into its third argument.
 //!
 //! The caller drives the steps and locates its own events on the dense output
-//! ([`Step::at`]), restarting with [`Dopri5::restart`] after a discontinuity.
+//! ([`Step::at`]), restarting with [`Dopri5::restart`] after a discontinuity
+//! or moving the state with [`Dopri5::project`] (e.g. onto constraints).
 //! Reference: Hairer, Nørsett, Wanner, *Solving ODEs I*, §II.5 and DOPRI5.
 
 /// One accepted step from `t0` to `t1` with its interpolation data.
 #[derive(Clone, Debug)]
-pub struct Step<const N: usize> {
+pub struct Step {
     pub t0: f64,
     pub t1: f64,
-    pub y0: [f64; N],
-    pub y1: [f64; N],
+    pub y0: Vec<f64>,
+    pub y1: Vec<f64>,
     /// dy/dt at t0 and t1.
-    pub f0: [f64; N],
-    pub f1: [f64; N],
-    rcont: [[f64; N]; 4],
+    pub f0: Vec<f64>,
+    pub f1: Vec<f64>,
+    rcont: [Vec<f64>; 4],
 }
 
-impl<const N: usize> Step<N> {
+impl Step {
     /// Dense-output state at t ∈ [t0, t1].
-    pub fn at(&self, t: f64) -> [f64; N] {
+    pub fn at(&self, t: f64) -> Vec<f64> {
+        (0..self.y0.len()).map(|i| self.component(t, i)).collect()
+    }
+
+    /// One component of the dense output at t.
+    pub fn component(&self, t: f64, i: usize) -> f64 {
         let h = self.t1 - self.t0;
         let th = if h == 0.0 { 0.0 } else { (t - self.t0) / h };
         let th1 = 1.0 - th;
         let [r2, r3, r4, r5] = &self.rcont;
-        std::array::from_fn(|i| self.y0[i] + th * (r2[i] + th1 * (r3[i] + th * (r4[i] + th1 * r5[i]))))
+        self.y0[i] + th * (r2[i] + th1 * (r3[i] + th * (r4[i] + th1 * r5[i])))
     }
 }
 
@@ -42,14 +48,18 @@ pub enum OdeError {
 }
 
 /// Stepper state: current time, state, derivative (FSAL) and next step size.
-pub struct Dopri5<const N: usize> {
+pub struct Dopri5 {
     pub rtol: f64,
-    pub atol: f64,
+    /// Absolute tolerance per component.
+    pub atol: Vec<f64>,
     pub h_max: f64,
     t: f64,
-    y: [f64; N],
-    f: [f64; N],
+    y: Vec<f64>,
+    f: Vec<f64>,
     h: f64,
+    /// Stage derivatives k₁…k₇ and a stage state, reused from step to step.
+    k: [Vec<f64>; 7],
+    ys: Vec<f64>,
     /// Accepted and rejected steps, and evaluations of f.
     pub accepted: usize,
     pub rejected: usize,
@@ -80,40 +90,59 @@ const D: [f64; 7] = [
     69997945.0 / 29380423.0,
 ];
 
-impl<const N: usize> Dopri5<N> {
+/// The right-hand side: f(t, y, dy/dt).
+pub trait Rhs: FnMut(f64, &[f64], &mut [f64]) {}
+impl<F: FnMut(f64, &[f64], &mut [f64])> Rhs for F {}
+
+impl Dopri5 {
     /// A stepper at (t, y) with tolerances and the largest step allowed.
-    pub fn new(
-        f: &mut impl FnMut(f64, &[f64; N]) -> [f64; N],
-        t: f64,
-        y: [f64; N],
-        rtol: f64,
-        atol: f64,
-        h_max: f64,
-    ) -> Self {
-        let mut s = Self { rtol, atol, h_max, t, y, f: [0.0; N], h: 0.0, accepted: 0, rejected: 0, evaluations: 0 };
+    pub fn new(f: &mut impl Rhs, t: f64, y: Vec<f64>, rtol: f64, atol: Vec<f64>, h_max: f64) -> Self {
+        let n = y.len();
+        let mut s = Self {
+            rtol,
+            atol,
+            h_max,
+            t,
+            y: vec![0.0; n],
+            f: vec![0.0; n],
+            h: 0.0,
+            k: std::array::from_fn(|_| vec![0.0; n]),
+            ys: vec![0.0; n],
+            accepted: 0,
+            rejected: 0,
+            evaluations: 0,
+        };
         s.restart(f, t, y);
         s
     }
 
+    /// Time and state reached.
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+
     /// Restarts at (t, y), e.g. after a discontinuity of f, with a fresh first step.
-    pub fn restart(&mut self, f: &mut impl FnMut(f64, &[f64; N]) -> [f64; N], t: f64, y: [f64; N]) {
+    pub fn restart(&mut self, f: &mut impl Rhs, t: f64, y: Vec<f64>) {
         self.t = t;
         self.y = y;
-        self.f = f(t, &y);
+        f(t, &self.y, &mut self.f);
         self.evaluations += 1;
-        let sc: [f64; N] = std::array::from_fn(|i| self.atol + self.rtol * y[i].abs());
-        let d0 = rms::<N>(&std::array::from_fn(|i| y[i] / sc[i]));
-        let d1 = rms::<N>(&std::array::from_fn(|i| self.f[i] / sc[i]));
+        let sc = |i: usize| self.atol[i] + self.rtol * self.y[i].abs();
+        let d0 = rms(self.y.iter().enumerate().map(|(i, v)| v / sc(i)));
+        let d1 = rms(self.f.iter().enumerate().map(|(i, v)| v / sc(i)));
         let h0 = if d0 < 1e-5 || d1 < 1e-5 { 1e-6 } else { 0.01 * d0 / d1 };
         self.h = h0.min(self.h_max);
     }
 
+    /// Replaces the state at the current time (a projection), keeping the step size.
+    pub fn project(&mut self, f: &mut impl Rhs, y: Vec<f64>) {
+        self.y = y;
+        f(self.t, &self.y, &mut self.f);
+        self.evaluations += 1;
+    }
+
     /// Takes one accepted step (retrying with smaller steps as needed).
-    pub fn step(
-        &mut self,
-        f: &mut impl FnMut(f64, &[f64; N]) -> [f64; N],
-        max_steps: usize,
-    ) -> Result<Step<N>, OdeError> {
+    pub fn step(&mut self, f: &mut impl Rhs, max_steps: usize) -> Result<Step, OdeError> {
         loop {
             if self.accepted + self.rejected >= max_steps {
                 return Err(OdeError::TooManySteps { steps: max_steps });
@@ -122,11 +151,9 @@ impl<const N: usize> Dopri5<N> {
             if h.abs() <= 8.0 * f64::EPSILON * self.t.abs().max(1e-300) {
                 return Err(OdeError::StepTooSmall { t: self.t });
             }
-            let k = self.stages(f, h);
-            let y1: [f64; N] = std::array::from_fn(|i| self.y[i] + h * (0..6).map(|j| A[6][j] * k[j][i]).sum::<f64>());
-            let f1 = f(self.t + h, &y1);
-            self.evaluations += 1;
-            if !f1.iter().chain(y1.iter()).all(|v| v.is_finite()) {
+            self.stages(f, h);
+            let finite = self.ys.iter().chain(self.k[6].iter()).all(|v| v.is_finite());
+            if !finite {
                 self.rejected += 1;
                 self.h *= 0.25;
                 if self.rejected > max_steps / 2 {
@@ -134,10 +161,10 @@ impl<const N: usize> Dopri5<N> {
                 }
                 continue;
             }
-            let err = self.error_norm(&k, &f1, &y1, h);
+            let err = self.error_norm(h);
             let factor = (0.9 * err.powf(-0.2)).clamp(0.2, 10.0);
             if err <= 1.0 {
-                let step = self.accept(&k, y1, f1, h);
+                let step = self.accept(h);
                 self.h = (h * factor).min(self.h_max);
                 return Ok(step);
             }
@@ -146,41 +173,53 @@ impl<const N: usize> Dopri5<N> {
         }
     }
 
-    fn stages(&mut self, f: &mut impl FnMut(f64, &[f64; N]) -> [f64; N], h: f64) -> [[f64; N]; 6] {
-        let mut k = [[0.0; N]; 6];
-        k[0] = self.f;
-        for s in 1..6 {
-            let ys: [f64; N] = std::array::from_fn(|i| self.y[i] + h * (0..s).map(|j| A[s][j] * k[j][i]).sum::<f64>());
-            k[s] = f(self.t + C[s] * h, &ys);
+    /// k₁…k₇; leaves y₁ (the 5th-order solution) in `ys` and f(t + h, y₁) in k₇.
+    fn stages(&mut self, f: &mut impl Rhs, h: f64) {
+        self.k[0].copy_from_slice(&self.f);
+        for s in 1..7 {
+            for i in 0..self.y.len() {
+                self.ys[i] = self.y[i] + h * (0..s).map(|j| A[s][j] * self.k[j][i]).sum::<f64>();
+            }
+            let (_, rest) = self.k.split_at_mut(s);
+            f(self.t + C[s] * h, &self.ys, &mut rest[0]);
         }
-        self.evaluations += 5;
-        k
+        self.evaluations += 6;
     }
 
-    fn error_norm(&self, k: &[[f64; N]; 6], f1: &[f64; N], y1: &[f64; N], h: f64) -> f64 {
-        rms::<N>(&std::array::from_fn(|i| {
-            let e = h * ((0..6).map(|j| E[j] * k[j][i]).sum::<f64>() + E[6] * f1[i]);
-            e / (self.atol + self.rtol * self.y[i].abs().max(y1[i].abs()))
+    fn error_norm(&self, h: f64) -> f64 {
+        rms((0..self.y.len()).map(|i| {
+            let e = h * (0..7).map(|j| E[j] * self.k[j][i]).sum::<f64>();
+            e / (self.atol[i] + self.rtol * self.y[i].abs().max(self.ys[i].abs()))
         }))
     }
 
-    fn accept(&mut self, k: &[[f64; N]; 6], y1: [f64; N], f1: [f64; N], h: f64) -> Step<N> {
-        let y0 = self.y;
-        let ydiff: [f64; N] = std::array::from_fn(|i| y1[i] - y0[i]);
-        let bspl: [f64; N] = std::array::from_fn(|i| h * k[0][i] - ydiff[i]);
-        let r4: [f64; N] = std::array::from_fn(|i| ydiff[i] - h * f1[i] - bspl[i]);
-        let r5: [f64; N] = std::array::from_fn(|i| h * ((0..6).map(|j| D[j] * k[j][i]).sum::<f64>() + D[6] * f1[i]));
-        let step = Step { t0: self.t, t1: self.t + h, y0, y1, f0: k[0], f1, rcont: [ydiff, bspl, r4, r5] };
+    fn accept(&mut self, h: f64) -> Step {
+        let n = self.y.len();
+        let (y0, y1, k) = (&self.y, &self.ys, &self.k);
+        let ydiff: Vec<f64> = (0..n).map(|i| y1[i] - y0[i]).collect();
+        let bspl: Vec<f64> = (0..n).map(|i| h * k[0][i] - ydiff[i]).collect();
+        let r4: Vec<f64> = (0..n).map(|i| ydiff[i] - h * k[6][i] - bspl[i]).collect();
+        let r5: Vec<f64> = (0..n).map(|i| h * (0..7).map(|j| D[j] * k[j][i]).sum::<f64>()).collect();
+        let step = Step {
+            t0: self.t,
+            t1: self.t + h,
+            y0: y0.clone(),
+            y1: y1.clone(),
+            f0: k[0].clone(),
+            f1: k[6].clone(),
+            rcont: [ydiff, bspl, r4, r5],
+        };
         self.t += h;
-        self.y = y1;
-        self.f = f1;
+        self.y.copy_from_slice(&step.y1);
+        self.f.copy_from_slice(&step.f1);
         self.accepted += 1;
         step
     }
 }
 
-fn rms<const N: usize>(v: &[f64; N]) -> f64 {
-    (v.iter().map(|x| x * x).sum::<f64>() / N as f64).sqrt()
+fn rms(v: impl ExactSizeIterator<Item = f64>) -> f64 {
+    let n = v.len().max(1);
+    (v.map(|x| x * x).sum::<f64>() / n as f64).sqrt()
 }
 
 #[cfg(test)]
@@ -191,13 +230,17 @@ mod tests {
     /// ends and on the dense output between them.
     #[test]
     fn harmonic_oscillator_matches_the_closed_form() {
-        let mut f = |_t: f64, y: &[f64; 2]| [y[1], -4.0 * y[0]];
-        let mut s = Dopri5::new(&mut f, 0.0, [1.0, 0.0], 1e-11, 1e-13, 0.5);
+        let mut f = |_t: f64, y: &[f64], dy: &mut [f64]| {
+            dy[0] = y[1];
+            dy[1] = -4.0 * y[0];
+        };
+        let mut s = Dopri5::new(&mut f, 0.0, vec![1.0, 0.0], 1e-11, vec![1e-13; 2], 0.5);
         let mut worst: f64 = 0.0;
         while let Ok(step) = s.step(&mut f, 100_000) {
             for th in [0.0, 0.3, 0.7, 1.0] {
                 let t = step.t0 + th * (step.t1 - step.t0);
                 worst = worst.max((step.at(t)[0] - (2.0 * t).cos()).abs());
+                assert_eq!(step.at(t)[1], step.component(t, 1));
             }
             if step.t1 > 6.6 {
                 break;

@@ -1,0 +1,177 @@
+//! The `machine` form of `POST /v1/dynamics`: a planar mechanism whose input
+//! joints are free, integrated in its own coordinates (any number of DOF).
+
+use super::Initial;
+use crate::api::kinetostatics::{InputDto, Inputs, LoadDto, ReactionDto, convert_loads};
+use crate::api::mechanism::MechanismDto;
+use crate::api::quantity::{Errors, FunctionDto};
+use crate::engine::dynamics::mechanism::MechanismSolution;
+use crate::engine::kinetostatics::Load;
+use crate::engine::model::{Driver, JointKind, Mechanism};
+use crate::units::Dim;
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+/// A mechanism with free input joints, and its loads.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct DynamicsMachine {
+    pub mechanism: MechanismDto,
+    /// The revolute joint(s) whose relative angles are the coordinates, one per
+    /// degree of freedom (a list for several). Each input's `start` and
+    /// `speed` (a constant) are its state at t = 0 (default 0; `initial` may
+    /// give the first input's instead); `reference` as in kinetostatics;
+    /// `acceleration`, `end` and `steps` do not apply.
+    pub input: Inputs,
+    /// Loads as in kinetostatics; their Functions may read `phi` (the first
+    /// input's angle reduced to the period), `omega` (its speed) and `t`.
+    /// Joint friction is not supported in dynamics.
+    #[schema(max_items = 500)]
+    pub loads: Option<Vec<LoadDto>>,
+    /// Report the joint reactions at every sample (default true).
+    pub reactions: Option<bool>,
+}
+
+/// The converted machine: model, loads, initial state and names.
+pub(super) struct Parts {
+    pub mechanism: Mechanism,
+    pub loads: Vec<Load>,
+    pub initial: Vec<[f64; 2]>,
+    pub joint_names: Vec<String>,
+    pub body_names: Vec<String>,
+}
+
+impl DynamicsMachine {
+    pub(super) fn convert(&self, e: &mut Errors, initial: Option<&Initial>, period: f64) -> Option<Parts> {
+        let c = self.mechanism.convert(e, "/machine/mechanism")?;
+        let mut mechanism = c.mechanism;
+        for (k, j) in mechanism.joints.iter().enumerate() {
+            if j.friction.is_some() {
+                e.push(
+                    &format!("/machine/mechanism/joints/{k}/friction"),
+                    "joint friction is not supported in dynamics",
+                );
+            }
+        }
+        let (inputs, many) = match &self.input {
+            Inputs::One(i) => (vec![i.as_ref().clone()], false),
+            Inputs::Many(v) => (v.clone(), true),
+        };
+        if inputs.is_empty() || inputs.len() > 10 {
+            e.push("/machine/input", "give 1 to 10 inputs");
+        }
+        let mut drivers = Vec::new();
+        let mut states = Vec::new();
+        for (k, input) in inputs.iter().enumerate() {
+            let at = if many { format!("/machine/input/{k}") } else { "/machine/input".into() };
+            let given = if k == 0 { initial } else { None };
+            if let Some((driver, state)) = free_input(e, &mechanism, input, given, &at) {
+                drivers.push(driver);
+                states.push(state);
+            }
+        }
+        mechanism.drivers = drivers;
+        let loads = self.loads.as_deref().unwrap_or_default();
+        let loads =
+            convert_loads(e, loads, &self.mechanism, &c.body_names, period, "/machine/loads", &["phi", "omega", "t"]);
+        let joint_names = mechanism.joints.iter().map(|j| j.name.clone()).collect();
+        e.0.is_empty().then_some(Parts { mechanism, loads, initial: states, joint_names, body_names: c.body_names })
+    }
+}
+
+/// The driver and initial [angle, speed] of one free input.
+fn free_input(
+    e: &mut Errors,
+    m: &Mechanism,
+    input: &InputDto,
+    initial: Option<&Initial>,
+    at: &str,
+) -> Option<(Driver, [f64; 2])> {
+    let unused = [
+        ("acceleration", input.acceleration.is_some()),
+        ("end", input.end.is_some()),
+        ("steps", input.steps.is_some()),
+    ];
+    for (name, _) in unused.iter().filter(|u| u.1) {
+        e.push(&format!("{at}/{name}"), "does not apply to dynamics (the motion is the result)");
+    }
+    let joint = match m.joints.iter().position(|j| j.name == input.joint) {
+        Some(j) if m.joints[j].kind == JointKind::Revolute => Some(j),
+        Some(_) => e.fail(&format!("{at}/joint"), "a dynamics input must be a revolute joint"),
+        None => e.fail(&format!("{at}/joint"), format!("unknown joint '{}'", input.joint)),
+    };
+    let reference = input.reference.as_ref().map_or(Some(0.0), |q| e.angle(q, &format!("{at}/reference")));
+    let from_initial = initial.is_some_and(|i| i.angle.is_some() || i.speed.is_some());
+    if from_initial && (input.start.is_some() || input.speed.is_some()) {
+        e.push("/initial", "give the first input's state once: in \"initial\" or in its \"start\"/\"speed\"");
+    }
+    let angle = match (initial.and_then(|i| i.angle.as_ref()), &input.start) {
+        (Some(q), _) => e.angle(q, "/initial/angle"),
+        (None, Some(q)) => e.angle(q, &format!("{at}/start")),
+        (None, None) => Some(0.0),
+    };
+    let speed = match (initial.and_then(|i| i.speed.as_ref()), &input.speed) {
+        (Some(q), _) => e.quantity(q, Dim::ANGULAR_SPEED, "/initial/speed"),
+        (None, Some(FunctionDto::Constant(q))) => e.quantity(q, Dim::ANGULAR_SPEED, &format!("{at}/speed")),
+        (None, Some(FunctionDto::Spec(_))) => {
+            e.fail(&format!("{at}/speed"), "must be a constant: the input's speed at t = 0")
+        }
+        (None, None) => Some(0.0),
+    };
+    Some((Driver { joint: joint?, reference: reference? }, [angle?, speed?]))
+}
+
+/// One input's state at a sample.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct InputState {
+    /// rad (relative angle of the input joint from its reference).
+    pub angle: f64,
+    pub speed: f64,
+    pub acceleration: f64,
+}
+
+/// The mechanism at one sample (the same instants as `samples`).
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct MachineSample {
+    pub t: f64,
+    /// Every input, in the order given.
+    pub inputs: Vec<InputState>,
+    /// Joint reactions (the force body `by` exerts on body `on`), when asked.
+    pub reactions: Vec<ReactionDto>,
+    /// Largest |Φ| of the joint constraints at the sample, m or rad.
+    pub constraint_residual: f64,
+}
+
+/// What the mechanism form adds to a dynamics result.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct MachineDynamics {
+    /// Degrees of freedom at the start (one input each).
+    pub dof: usize,
+    /// Constraints that repeat others (their reactions are then not determinate).
+    pub redundant_constraints: usize,
+    pub samples: Vec<MachineSample>,
+}
+
+impl MachineDynamics {
+    pub(super) fn new(s: &MechanismSolution, joint_names: &[String], body_names: &[String]) -> Self {
+        let samples = s
+            .details
+            .iter()
+            .zip(&s.solution.samples)
+            .map(|(d, x)| MachineSample {
+                t: x.t,
+                inputs: d
+                    .inputs
+                    .iter()
+                    .map(|[angle, speed, acceleration]| InputState {
+                        angle: *angle,
+                        speed: *speed,
+                        acceleration: *acceleration,
+                    })
+                    .collect(),
+                reactions: d.reactions.iter().map(|r| ReactionDto::new(r, joint_names, body_names)).collect(),
+                constraint_residual: d.constraint_residual,
+            })
+            .collect();
+        Self { dof: s.mobility.dof, redundant_constraints: s.mobility.redundant_constraints, samples }
+    }
+}

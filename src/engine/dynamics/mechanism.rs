@@ -1,0 +1,304 @@
+//! Direct dynamics of a planar mechanism of any DOF in dependent (body)
+//! coordinates q, as the index-1 form of the equations of motion:
+//!
+//! ```text
+//! [ M  Φ_qᵀ ] [ q̈ ]   [ Q(q, q̇, t) ]
+//! [ Φ_q  0  ] [ λ ] = [ γ(q, q̇)    ]
+//! ```
+//!
+//! with state y = (q, q̇, W), W the work of the applied loads (Ẇ = Qᵀq̇).
+//! Φ here holds the joints only: the inputs named by the problem's drivers
+//! are free, and serve to report the motion (coordinate φ, speed ω) and to
+//! set the initial state. After every accepted step the state is projected
+//! back onto Φ = 0 and Φ_q q̇ = 0 (minimum-norm Newton corrections), so
+//! the drift stays at the step's local error instead of growing with time;
+//! the largest violation removed is reported. The multipliers λ give the
+//! joint reactions at the samples (−Φ_qᵀλ are the constraint forces).
+//! Redundant constraints make the matrix singular in λ only: the
+//! minimum-norm solution (SVD) is used then and those reactions are flagged.
+
+use super::{DynamicsError, DynamicsSolution, End, Model, Sample, Settings, energy_residual, run, sample_states};
+use crate::engine::constraints::{State, System, evaluate};
+use crate::engine::kinematics::sweep;
+use crate::engine::kinetostatics::{Load, Reaction, applied_forces, reactions};
+use crate::engine::mobility::{Mobility, mobility};
+use crate::engine::model::Mechanism;
+use nalgebra::{DMatrix, DVector};
+use std::time::Duration;
+
+/// A validated mechanism problem in SI units.
+#[derive(Clone, Debug)]
+pub struct MechanismProblem {
+    /// The mechanism; its drivers name the input joints (free here).
+    pub mechanism: Mechanism,
+    pub loads: Vec<Load>,
+    /// Period of the loads' functions in φ.
+    pub period: f64,
+    /// Coordinate and speed of every input at t = 0.
+    pub initial: Vec<[f64; 2]>,
+    pub end: End,
+    pub tolerance: f64,
+    pub samples: usize,
+    pub budget: Option<Duration>,
+    /// Compute the joint reactions at the samples.
+    pub reactions: bool,
+}
+
+/// The mechanism at one sample.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MechanismSample {
+    /// Coordinate, speed and acceleration of every input.
+    pub inputs: Vec<[f64; 3]>,
+    pub reactions: Vec<Reaction>,
+    /// |Φ| at the sample (dense output, before any projection).
+    pub constraint_residual: f64,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct MechanismSolution {
+    /// The first input's motion, events and checks.
+    pub solution: DynamicsSolution,
+    pub details: Vec<MechanismSample>,
+    pub mobility: Mobility,
+    /// Largest |Φ| removed by a projection after a step.
+    pub drift: f64,
+}
+
+struct Dae<'a> {
+    p: &'a MechanismProblem,
+    /// Coordinates n and joint rows r.
+    n: usize,
+    r: usize,
+    mass: Vec<f64>,
+    redundant: bool,
+    /// Position tolerance of the projection, m.
+    tol: f64,
+}
+
+/// q̈, λ, Q and the system at a state.
+struct Accelerations {
+    qdd: DVector<f64>,
+    lambda: DVector<f64>,
+    forces: DVector<f64>,
+    sys: System,
+}
+
+impl Dae<'_> {
+    /// Φ, Φ_q and γ of the joints and of the inputs' coordinate functions
+    /// (rows r.., where Φ is φ itself: the drivers evaluated at input 0).
+    fn system(&self, q: &[f64], qd: Option<&[f64]>) -> System {
+        let zeros = vec![[0.0; 3]; self.p.mechanism.drivers.len()];
+        evaluate(&self.p.mechanism, &State { q, qd, inputs: &zeros })
+    }
+
+    fn accelerations(&self, t: f64, q: &[f64], qd: &[f64]) -> Option<Accelerations> {
+        let (n, r) = (self.n, self.r);
+        let sys = self.system(q, Some(qd));
+        let jac = sys.jacobian.rows(0, r);
+        let phi = sys.phi[r].rem_euclid(self.p.period);
+        let omega = (sys.jacobian.row(r) * DVector::from_column_slice(qd))[0];
+        let forces = applied_forces(&self.p.mechanism, &self.p.loads, q, qd, phi, [omega, t]);
+        let mut a = DMatrix::zeros(n + r, n + r);
+        for (i, m) in self.mass.iter().enumerate() {
+            a[(i, i)] = *m;
+        }
+        a.view_mut((0, n), (n, r)).copy_from(&jac.transpose());
+        a.view_mut((n, 0), (r, n)).copy_from(&jac);
+        let mut b = DVector::zeros(n + r);
+        b.rows_mut(0, n).copy_from(&forces);
+        b.rows_mut(n, r).copy_from(&sys.gamma.rows(0, r));
+        let x = if self.redundant { least_squares(a, &b)? } else { a.lu().solve(&b)? };
+        x.iter().all(|v| v.is_finite()).then(|| Accelerations {
+            qdd: x.rows(0, n).into_owned(),
+            lambda: x.rows(n, r).into_owned(),
+            forces,
+            sys,
+        })
+    }
+
+    /// The minimum-norm x with J x = b (J the joints' rows).
+    fn min_norm(&self, jac: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
+        if !self.redundant
+            && let Some(ch) = (jac * jac.transpose()).cholesky()
+        {
+            return Some(jac.transpose() * ch.solve(b));
+        }
+        least_squares(jac.clone(), b)
+    }
+
+    fn kinetic(&self, qd: &[f64]) -> f64 {
+        0.5 * self.mass.iter().zip(qd).map(|(m, v)| m * v * v).sum::<f64>()
+    }
+}
+
+fn least_squares(a: DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
+    let svd = a.svd(true, true);
+    let tol = 1e-12 * svd.singular_values.max();
+    svd.solve(b, tol).ok()
+}
+
+impl Model for Dae<'_> {
+    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+        let n = self.n;
+        let (q, qd) = (&y[..n], &y[n..2 * n]);
+        match self.accelerations(t, q, qd) {
+            Some(acc) => {
+                dy[..n].copy_from_slice(qd);
+                dy[n..2 * n].copy_from_slice(acc.qdd.as_slice());
+                dy[2 * n] = acc.forces.dot(&DVector::from_column_slice(qd));
+            }
+            // A singular matrix: the stepper rejects the step and retries smaller.
+            None => dy.fill(f64::NAN),
+        }
+    }
+
+    fn angle(&self, y: &[f64]) -> f64 {
+        self.system(&y[..self.n], None).phi[self.r]
+    }
+
+    fn speed(&self, y: &[f64]) -> f64 {
+        let n = self.n;
+        let sys = self.system(&y[..n], None);
+        (sys.jacobian.row(self.r) * DVector::from_column_slice(&y[n..2 * n]))[0]
+    }
+
+    fn project(&self, y: &mut [f64]) -> f64 {
+        let (n, r) = (self.n, self.r);
+        let mut removed = 0.0f64;
+        for _ in 0..8 {
+            let sys = self.system(&y[..n], None);
+            let (jac, phi) = (sys.jacobian.rows(0, r).into_owned(), sys.phi.rows(0, r).into_owned());
+            let violation = phi.amax();
+            removed = removed.max(violation);
+            if violation <= self.tol {
+                let v = &jac * DVector::from_column_slice(&y[n..2 * n]);
+                if let Some(dv) = self.min_norm(&jac, &(-v)) {
+                    y[n..2 * n].iter_mut().zip(dv.iter()).for_each(|(a, d)| *a += d);
+                }
+                break;
+            }
+            let Some(dq) = self.min_norm(&jac, &(-phi)) else { break };
+            y[..n].iter_mut().zip(dq.iter()).for_each(|(a, d)| *a += d);
+        }
+        removed
+    }
+}
+
+/// Integrates the mechanism from its initial state.
+pub fn solve(p: &MechanismProblem) -> Result<MechanismSolution, DynamicsError> {
+    let m = &p.mechanism;
+    let initial = |reason: String| DynamicsError::Initial { reason };
+    let inputs: Vec<[f64; 3]> = p.initial.iter().map(|[a, w]| [*a, *w, 0.0]).collect();
+    let start = sweep(m, &[inputs]).map_err(|e| initial(e.to_string()))?.remove(0);
+    if start.singular {
+        return Err(initial("the start is a singular position of the inputs (a dead centre or toggle)".into()));
+    }
+    let mobility = mobility(m, &start.q);
+    if mobility.dof != m.drivers.len() {
+        return Err(initial(format!(
+            "the mechanism has {} degree(s) of freedom but {} input(s) name its coordinates",
+            mobility.dof,
+            m.drivers.len()
+        )));
+    }
+    let n = m.n_coordinates();
+    let mass: Vec<f64> =
+        (0..n).map(|k| if k % 3 == 2 { m.bodies[k / 3 + 1].inertia } else { m.bodies[k / 3 + 1].mass }).collect();
+    let length = characteristic_length(m);
+    let dae = Dae {
+        p,
+        n,
+        r: evaluate(m, &State { q: &start.q, qd: None, inputs: &vec![[0.0; 3]; m.drivers.len()] }).phi.len()
+            - m.drivers.len(),
+        mass,
+        redundant: mobility.redundant_constraints > 0,
+        tol: 1e-12 * length,
+    };
+    let settings = settings(p, &start.q, &start.qd, length);
+    let mut y0 = start.q.clone();
+    y0.extend(&start.qd);
+    y0.push(0.0);
+    let run = run(&dae, y0, &settings)?;
+    let states = sample_states(&run.steps, run.t_end, p.samples);
+    let mut details = Vec::with_capacity(states.len());
+    let mut samples = Vec::with_capacity(states.len());
+    for (t, y) in &states {
+        let detail = sample(&dae, &mobility, *t, y)?;
+        let [angle, speed, acceleration] = detail.inputs[0];
+        samples.push(Sample { t: *t, angle, speed, acceleration });
+        details.push(detail);
+    }
+    let (first, last) = (&states[0].1, &states[states.len() - 1].1);
+    let work = last[2 * n];
+    let solution = DynamicsSolution {
+        samples,
+        events: run.events,
+        energy_residual: energy_residual(work, dae.kinetic(&first[n..2 * n]), dae.kinetic(&last[n..2 * n])),
+        steps: run.attempted,
+        evaluations: run.evaluations,
+        stopped: run.stopped,
+    };
+    Ok(MechanismSolution { solution, details, mobility, drift: run.drift })
+}
+
+/// Tolerances: relative `tolerance`/100 on every component; absolute on
+/// positions relative to the mechanism's size L, on angles in rad, on
+/// velocities relative to L·Ω with Ω the largest of 1 rad/s, √(|g|/L) and
+/// the initial angular speeds.
+fn settings(p: &MechanismProblem, q: &[f64], qd: &[f64], length: f64) -> Settings {
+    let n = q.len();
+    let g = p.mechanism.gravity[0].hypot(p.mechanism.gravity[1]);
+    let spin = (0..n / 3).map(|b| qd[3 * b + 2].abs()).fold(0.0, f64::max);
+    let rate = 1.0f64.max((g / length).sqrt()).max(spin);
+    let rtol = (0.01 * p.tolerance).clamp(1e-13, 1e-4);
+    let scale = |k: usize| {
+        let angle = k % 3 == 2;
+        match (k < n, angle) {
+            (true, true) => 1.0,
+            (true, false) => length,
+            (false, true) => rate,
+            (false, false) => length * rate,
+        }
+    };
+    let mut atol: Vec<f64> = (0..2 * n).map(|k| rtol * scale(k)).collect();
+    atol.push(f64::INFINITY);
+    Settings { end: p.end, rtol, atol, budget: p.budget }
+}
+
+/// The span of the drawn points and centres of mass (at least 1 mm).
+fn characteristic_length(m: &Mechanism) -> f64 {
+    let points = m.bodies.iter().map(|b| b.cg).chain(m.joints.iter().map(|j| j.at));
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in points {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    (hi[0] - lo[0]).hypot(hi[1] - lo[1]).max(1e-3)
+}
+
+/// Inputs, reactions and constraint residual at a sampled state.
+fn sample(dae: &Dae, mobility: &Mobility, t: f64, y: &[f64]) -> Result<MechanismSample, DynamicsError> {
+    let (n, r) = (dae.n, dae.r);
+    let (q, qd) = (&y[..n], &y[n..2 * n]);
+    let acc = dae.accelerations(t, q, qd).ok_or_else(|| DynamicsError::Integration {
+        t,
+        reason: "the equations of motion are singular here (a singular position)".into(),
+    })?;
+    let sys = &acc.sys;
+    let inputs = (r..sys.phi.len())
+        .map(|row| {
+            let jrow = sys.jacobian.row(row);
+            let speed = (jrow * DVector::from_column_slice(qd))[0];
+            [sys.phi[row], speed, (jrow * &acc.qdd)[0] - sys.gamma[row]]
+        })
+        .collect();
+    let reactions = if dae.p.reactions {
+        let jac = sys.jacobian.rows(0, r).into_owned();
+        reactions(&dae.p.mechanism, q, &jac, &acc.lambda, &mobility.indeterminate_joints)
+    } else {
+        Vec::new()
+    };
+    Ok(MechanismSample { inputs, reactions, constraint_residual: sys.phi.rows(0, r).amax() })
+}

@@ -1,0 +1,229 @@
+//! Direct dynamics: the motion of a machine under given actions.
+//!
+//! Two models share one integrator (Dormand–Prince 5(4) with dense output,
+//! [`run`]): the reduced 1-DOF equation ([`reduced`]) and a planar mechanism
+//! of any DOF in dependent coordinates ([`mechanism`]). Events — every
+//! multiple of 2π the first input coordinate φ crosses, in either
+//! direction, and the end angle — are located on the dense output by
+//! Brent's method, not at the nearest step. A run ends at its duration, at
+//! its end angle, or cleanly (with the reason) when the end angle is not
+//! reached in time; it fails with [`DynamicsError`] when the integration
+//! cannot go on or the compute budget runs out.
+
+pub mod mechanism;
+pub mod reduced;
+
+pub use reduced::{ReducedProblem, solve};
+
+use super::numeric::ode::{Dopri5, Step};
+use super::numeric::roots::brent;
+use std::f64::consts::PI;
+use std::time::{Duration, Instant};
+
+/// When the run ends.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum End {
+    Duration(f64),
+    /// Until φ reaches this angle (the end is then an event), or `max_time` passes.
+    UntilAngle {
+        angle: f64,
+        max_time: f64,
+    },
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sample {
+    pub t: f64,
+    pub angle: f64,
+    pub speed: f64,
+    pub acceleration: f64,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EventKind {
+    /// φ crossed a multiple of 2π.
+    Turn,
+    End,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Event {
+    pub kind: EventKind,
+    pub angle: f64,
+    pub t: f64,
+    pub speed: f64,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct DynamicsSolution {
+    pub samples: Vec<Sample>,
+    pub events: Vec<Event>,
+    /// (W − ΔT)/max(|W|, |ΔT|, T₀, T_end).
+    pub energy_residual: f64,
+    pub steps: usize,
+    pub evaluations: usize,
+    /// Why the run stopped early (e.g. the end angle was not reached in time).
+    pub stopped: Option<String>,
+}
+
+/// Why the motion cannot be computed.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum DynamicsError {
+    #[error("the reduced inertia is not positive at phi = {phi} rad")]
+    NonPositiveInertia { phi: f64 },
+    #[error("the integration failed at t = {t} s: {reason}")]
+    Integration { t: f64, reason: String },
+    #[error(
+        "the compute budget of {seconds} s ran out at t = {t} s of simulated time after {steps} steps; \
+         the motion is too fast for the tolerance (a stiff spring?) or the run too long: \
+         ask for a shorter run or a looser tolerance"
+    )]
+    Budget { seconds: f64, t: f64, steps: usize },
+    #[error("the initial state cannot be assembled: {reason}")]
+    Initial { reason: String },
+}
+
+/// What the integrator needs from a model with state y.
+pub(crate) trait Model {
+    /// dy/dt.
+    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]);
+    /// The first input coordinate φ and its speed.
+    fn angle(&self, y: &[f64]) -> f64;
+    fn speed(&self, y: &[f64]) -> f64;
+    /// Moves an accepted state back onto the model's invariants (e.g. the
+    /// constraints); returns the largest violation removed.
+    fn project(&self, _y: &mut [f64]) -> f64 {
+        0.0
+    }
+}
+
+/// How to integrate.
+#[derive(Clone, Debug)]
+pub(crate) struct Settings {
+    pub end: End,
+    pub rtol: f64,
+    pub atol: Vec<f64>,
+    pub budget: Option<Duration>,
+}
+
+/// The accepted steps up to the end time, with the events.
+pub(crate) struct Run {
+    pub steps: Vec<Step>,
+    pub events: Vec<Event>,
+    pub t_end: f64,
+    pub stopped: Option<String>,
+    pub attempted: usize,
+    pub evaluations: usize,
+    /// Largest constraint violation removed by a projection.
+    pub drift: f64,
+}
+
+const MAX_STEPS: usize = 2_000_000;
+
+/// Integrates the model from y₀ at t = 0 until the end condition.
+pub(crate) fn run(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Run, DynamicsError> {
+    let started = Instant::now();
+    let mut f = |t: f64, y: &[f64], dy: &mut [f64]| model.rhs(t, y, dy);
+    let mut ode = Dopri5::new(&mut f, 0.0, y0, s.rtol, s.atol.clone(), f64::INFINITY);
+    let (mut steps, mut events, mut stopped, mut drift) = (Vec::new(), Vec::new(), None, 0.0f64);
+    let t_end = loop {
+        let step = ode
+            .step(&mut f, MAX_STEPS)
+            .map_err(|e| DynamicsError::Integration { t: ode.t(), reason: e.to_string() })?;
+        turns(model, &step, &mut events);
+        if let Some(t) = finished(model, s.end, &step, &mut events, &mut stopped) {
+            steps.push(step);
+            break t;
+        }
+        let mut y = step.y1.clone();
+        let removed = model.project(&mut y);
+        if removed > 0.0 {
+            drift = drift.max(removed);
+            ode.project(&mut f, y);
+        }
+        steps.push(step);
+        if let Some(budget) = s.budget
+            && steps.len() % 64 == 0
+            && started.elapsed() > budget
+        {
+            let steps = ode.accepted + ode.rejected;
+            return Err(DynamicsError::Budget { seconds: budget.as_secs_f64(), t: ode.t(), steps });
+        }
+    };
+    events.retain(|e| e.kind == EventKind::End || e.t <= t_end);
+    Ok(Run {
+        steps,
+        events,
+        t_end,
+        stopped,
+        attempted: ode.accepted + ode.rejected,
+        evaluations: ode.evaluations,
+        drift,
+    })
+}
+
+/// Multiples of 2π crossed during the step, in either direction.
+fn turns(model: &impl Model, step: &Step, events: &mut Vec<Event>) {
+    let (a, b) = (model.angle(&step.y0), model.angle(&step.y1));
+    let (ka, kb) = ((a / (2.0 * PI)).floor() as i64, (b / (2.0 * PI)).floor() as i64);
+    let crossed: Vec<i64> = if kb > ka { (ka + 1..=kb).collect() } else { (kb + 1..=ka).rev().collect() };
+    for k in crossed {
+        let target = 2.0 * PI * k as f64;
+        if target == a {
+            continue;
+        }
+        let t = brent(|s| model.angle(&step.at(s)) - target, step.t0, step.t1, 0.0);
+        events.push(Event { kind: EventKind::Turn, angle: target, t, speed: model.speed(&step.at(t)) });
+    }
+}
+
+/// The end time if the run ends in this step.
+fn finished(
+    model: &impl Model,
+    end: End,
+    step: &Step,
+    events: &mut Vec<Event>,
+    stopped: &mut Option<String>,
+) -> Option<f64> {
+    let close = |t: f64, events: &mut Vec<Event>| {
+        let y = step.at(t);
+        events.push(Event { kind: EventKind::End, angle: model.angle(&y), t, speed: model.speed(&y) });
+        Some(t)
+    };
+    let (a0, a1) = (model.angle(&step.y0), model.angle(&step.y1));
+    match end {
+        End::Duration(d) if step.t1 >= d => close(d, events),
+        End::UntilAngle { angle, .. } if (a0 - angle) * (a1 - angle) <= 0.0 && a1 != a0 => {
+            let t = brent(|s| model.angle(&step.at(s)) - angle, step.t0, step.t1, 0.0);
+            close(t, events)
+        }
+        End::UntilAngle { angle, max_time } if step.t1 >= max_time => {
+            *stopped = Some(format!("the angle {angle} rad was not reached within {max_time} s"));
+            close(max_time, events)
+        }
+        _ => None,
+    }
+}
+
+/// n instants evenly spaced over [0, t_end], both ends included, each with
+/// the dense-output state there.
+pub(crate) fn sample_states(steps: &[Step], t_end: f64, n: usize) -> Vec<(f64, Vec<f64>)> {
+    let n = n.max(2);
+    let mut k = 0;
+    (0..n)
+        .map(|i| {
+            let t = t_end * i as f64 / (n - 1) as f64;
+            while k + 1 < steps.len() && steps[k].t1 < t {
+                k += 1;
+            }
+            (t, steps[k].at(t.min(steps[k].t1)))
+        })
+        .collect()
+}
+
+/// (W − ΔT)/max(|W|, |ΔT|, T₀, T_end).
+pub(crate) fn energy_residual(work: f64, t0: f64, t1: f64) -> f64 {
+    let dt = t1 - t0;
+    let denom = work.abs().max(dt.abs()).max(t0).max(t1);
+    if denom > 0.0 { (work - dt) / denom } else { 0.0 }
+}
