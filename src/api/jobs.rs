@@ -16,7 +16,8 @@ use std::time::Instant;
 use utoipa::{IntoParams, ToSchema};
 
 /// Kinds of job, as used in `kind` and `GET /v1/jobs?kind=`.
-pub const KINDS: &[&str] = &["flywheel", "kinetostatics", "dynamics", "rotor", "gears", "equivalent_masses"];
+pub const KINDS: &[&str] =
+    &["flywheel", "kinetostatics", "dynamics", "rotor", "gears", "gear_train", "equivalent_masses"];
 /// Largest page of the jobs list.
 pub const MAX_LIMIT: i64 = 100;
 
@@ -140,7 +141,7 @@ pub async fn get(State(state): State<AppState>, Path(id): Path<String>) -> Resul
 #[allow(dead_code)]
 pub struct ListParams {
     /// Only jobs of this kind.
-    #[param(pattern = "^(flywheel|kinetostatics|dynamics|rotor|gears|equivalent_masses)$")]
+    #[param(pattern = "^(flywheel|kinetostatics|dynamics|rotor|gears|gear_train|equivalent_masses)$")]
     kind: Option<String>,
     /// Page size, 1 to 100 (default 50).
     #[param(minimum = 1, maximum = 100)]

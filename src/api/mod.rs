@@ -7,6 +7,7 @@
 pub mod dynamics;
 pub mod equivalent;
 pub mod flywheel;
+pub mod gear_train;
 pub mod gears;
 pub mod jobs;
 pub mod json;
@@ -51,13 +52,14 @@ expressions 2000 characters and 64 levels of nesting; tables 100000 rows; 1000 s
 100 torques; 100000 result samples; 200 bodies and joints, 500 loads and 100000 steps per mechanism \
 (422 beyond them)."
     ),
-    paths(flywheel::create, kinetostatics::create, dynamics::create, gears::create, equivalent::create, jobs::get, jobs::list, jobs::csv, healthz),
+    paths(flywheel::create, kinetostatics::create, dynamics::create, gears::create, gear_train::create, equivalent::create, jobs::get, jobs::list, jobs::csv, healthz),
     components(schemas(
         Problem, FieldError, Health,
         flywheel::FlywheelRequest, flywheel::FlywheelResult,
         kinetostatics::KinetostaticsRequest, kinetostatics::KinetostaticsResult,
         dynamics::DynamicsRequest, dynamics::DynamicsResult,
         gears::GearRequest, gears::GearResult,
+        gear_train::TrainRequest, gear_train::TrainResult,
         equivalent::EquivalentRequest, equivalent::EquivalentResult,
         quantity::Quantity, quantity::FunctionDto, quantity::FunctionSpec
     )),
@@ -86,6 +88,7 @@ pub fn router(state: AppState, body_limit: usize) -> Router {
         .route("/v1/dynamics", post(dynamics::create))
         .route("/v1/gears/geometry", post(gears::create))
         .route("/v1/equivalent-masses", post(equivalent::create))
+        .route("/v1/gears/train", post(gear_train::create))
         .route("/v1/jobs", get(jobs::list))
         .route("/v1/jobs/{id}", get(jobs::get))
         .route("/v1/jobs/{id}/result.csv", get(jobs::csv))

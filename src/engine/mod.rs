@@ -11,6 +11,7 @@ pub mod equivalent;
 pub mod expr;
 pub mod flywheel;
 pub mod function;
+pub mod gear_train;
 pub mod gears;
 pub mod kinematics;
 pub mod kinetostatics;

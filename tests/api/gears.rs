@@ -50,3 +50,49 @@ async fn equivalent_masses_of_a_bar() {
     assert_eq!(m["complete"], false);
     assert!(!m["warnings"].as_array().unwrap().is_empty());
 }
+
+/// K5 (seed 002's differential): sun 1 (60 teeth), planets 3 (30) on
+/// carrier 2, internal ring 4 (120); ω₁ = 100 rpm, ω₂ = 50 rpm, 15 N·m on 1.
+/// The case's trusted values (closed forms, confirmed there by a
+/// tooth-force method): ω₃ = −50 rpm, ω₄ = 25 rpm, T₄ = 30 N·m,
+/// T₂ = −45 N·m, at 1e-12; the coaxial train's torques sum to zero.
+#[tokio::test]
+async fn k5_differential_train_speeds_and_torques() {
+    let (app, c) = (TestApp::new().await, case("K5_differential_gear_train"));
+    let body = json!({
+        "members": ["1", "2", "3", "4"],
+        "meshes": [
+            {"a": "1", "teeth_a": 60, "b": "3", "teeth_b": 30, "carrier": "2"},
+            {"a": "3", "teeth_a": 30, "b": "4", "teeth_b": 120, "carrier": "2", "internal": true}
+        ],
+        "speeds": [{"member": "1", "speed": "100 rpm"}, {"member": "2", "speed": "50 rpm"}],
+        "torques": [{"member": "1", "torque": "15 N*m"}],
+        "unknown_torques": ["2", "4"]
+    });
+    let r = app.post("/v1/gears/train", &body).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let result = r.json()["result"].clone();
+    let x = &c["expected"];
+    let rpm = std::f64::consts::PI / 30.0;
+    let m = |k: usize| result["members"][k].clone();
+    assert_eq!(result["dof"], 2);
+    close(&m(2)["speed"], x["omega3_rpm"].as_f64().unwrap() * rpm, 1e-12, "ω₃");
+    close(&m(3)["speed"], x["omega4_rpm"].as_f64().unwrap() * rpm, 1e-12, "ω₄");
+    close(&m(3)["torque"], x["torque_on_wheel4_Nm"].as_f64().unwrap(), 1e-12, "T₄");
+    close(&m(1)["torque"], x["torque_on_carrier2_Nm"].as_f64().unwrap(), 1e-12, "T₂");
+    let sum: f64 = (0..4).map(|k| m(k)["torque"].as_f64().unwrap()).sum();
+    assert!(sum.abs() < 1e-10, "torque balance {sum}");
+    assert!(result["power_residual"].as_f64().unwrap().abs() < 1e-12);
+
+    // One speed for a 2-DOF train, an unknown member: 422 at the field.
+    let mut short = body.clone();
+    short["speeds"].as_array_mut().unwrap().pop();
+    let r = app.post("/v1/gears/train", &short).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert_eq!(r.json()["errors"][0]["pointer"], "/speeds");
+    assert!(r.text.contains("2 degree(s) of freedom"), "{}", r.text);
+    let mut typo = body.clone();
+    typo["meshes"][1]["carrier"] = json!("carrier");
+    let r = app.post("/v1/gears/train", &typo).await;
+    assert_eq!(r.json()["errors"][0]["pointer"], "/meshes/1/carrier", "{}", r.text);
+}

@@ -1,0 +1,214 @@
+//! `POST /v1/gears/train`: speeds (Willis) and torques (virtual power) of an
+//! ordinary or epicyclic gear train.
+
+use super::json::JsonBody;
+use super::problem::{ApiError, FieldError, PostErrors};
+use super::quantity::{Errors, Quantity};
+use super::{AppState, jobs, validated};
+use crate::engine::gear_train::{Mesh, Train, TrainError};
+use crate::units::Dim;
+use axum::extract::State;
+use axum::response::Response;
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+const MAX_MEMBERS: usize = 100;
+
+/// Seed 002's differential: sun 1 (60 teeth), planets 3 (30) on carrier 2,
+/// ring 4 (120, internal); 1 and 2 turn at 100 and 50 rpm, 15 N·m on 1.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[schema(example = json!({
+    "members": ["1", "2", "3", "4"],
+    "meshes": [
+        {"a": "1", "teeth_a": 60, "b": "3", "teeth_b": 30, "carrier": "2"},
+        {"a": "3", "teeth_a": 30, "b": "4", "teeth_b": 120, "carrier": "2", "internal": true}
+    ],
+    "speeds": [{"member": "1", "speed": "100 rpm"}, {"member": "2", "speed": "50 rpm"}],
+    "torques": [{"member": "1", "torque": "15 N*m"}],
+    "unknown_torques": ["2", "4"]
+}))]
+pub struct TrainRequest {
+    /// Names of the moving members (shafts with their wheels, carriers);
+    /// `ground` is the frame.
+    #[schema(min_items = 1, max_items = 100)]
+    pub members: Vec<String>,
+    #[schema(min_items = 1, max_items = 100)]
+    pub meshes: Vec<MeshDto>,
+    /// As many as the train has degrees of freedom.
+    pub speeds: Vec<GivenSpeed>,
+    /// Known external torques (default none).
+    pub torques: Option<Vec<GivenTorque>>,
+    /// Members whose external torque keeps the motion steady, as many as the
+    /// degrees of freedom (default none: speeds only).
+    pub unknown_torques: Option<Vec<String>>,
+}
+
+/// Wheel a (on member `a`) meshing with wheel b, axes held by `carrier`.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct MeshDto {
+    pub a: String,
+    #[schema(minimum = 1)]
+    pub teeth_a: f64,
+    pub b: String,
+    #[schema(minimum = 1)]
+    pub teeth_b: f64,
+    /// The member holding both axes (default `ground`: an ordinary mesh).
+    pub carrier: Option<String>,
+    /// Wheel b is an internal gear (ring); default false.
+    pub internal: Option<bool>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct GivenSpeed {
+    pub member: String,
+    #[schema(value_type = Quantity)]
+    pub speed: Quantity,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct GivenTorque {
+    pub member: String,
+    #[schema(value_type = Quantity)]
+    pub torque: Quantity,
+}
+
+/// One member's motion and load (SI: rad/s, N·m, W).
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct MemberResult {
+    pub member: String,
+    pub speed: f64,
+    /// The external torque on it (given, found, or 0).
+    pub torque: f64,
+    pub power: f64,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct TrainResult {
+    /// Moving members minus independent mesh equations.
+    pub dof: usize,
+    pub members: Vec<MemberResult>,
+    /// Σ T·ω / max |T·ω| over the members (0 in exact arithmetic).
+    pub power_residual: f64,
+    pub method: String,
+}
+
+/// Speeds of every member (Willis) and the torques that keep it steady (virtual power).
+#[utoipa::path(post, path = "/v1/gears/train", tag = "gears", request_body = TrainRequest,
+    responses(
+        (status = 201, description = "Job computed and stored; `result` is a TrainResult", body = jobs::Job,
+            headers(("Location" = String, description = "/v1/jobs/{id}"))),
+        PostErrors,
+    ))]
+pub async fn create(State(state): State<AppState>, body: JsonBody<TrainRequest>) -> Result<Response, ApiError> {
+    let JsonBody { value, raw, unknown } = body;
+    jobs::create(&state, "gear_train", raw, move || compute(&value, unknown)).await
+}
+
+/// A validated train with its given speeds, torques and unknown torques.
+type Parts = (Train, Vec<(usize, f64)>, Vec<(usize, f64)>, Vec<usize>);
+
+/// Validates and solves a request.
+pub fn compute(request: &TrainRequest, unknown: Vec<FieldError>) -> Result<TrainResult, ApiError> {
+    let (train, speeds, torques, asked) = validated(unknown, request.to_train())?;
+    let s = train.solve(&speeds, &torques, &asked).map_err(|e| {
+        let at = match e {
+            TrainError::Speeds { .. } | TrainError::Inconsistent { .. } => "/speeds",
+            TrainError::Torques { .. } | TrainError::TorquesSingular => "/unknown_torques",
+        };
+        ApiError::Invalid(vec![FieldError::at(at, e.to_string())])
+    })?;
+    let members = request
+        .members
+        .iter()
+        .enumerate()
+        .map(|(k, name)| {
+            let (w, t) = (s.speeds[k + 1], s.torques[k + 1]);
+            MemberResult { member: name.clone(), speed: w, torque: t, power: t * w }
+        })
+        .collect();
+    Ok(TrainResult {
+        dof: s.dof,
+        members,
+        power_residual: s.power_residual,
+        method: "Willis' formula per mesh relative to its carrier; torques from virtual power over a basis \
+                 of the train's virtual motions (SVD null space)"
+            .into(),
+    })
+}
+
+impl TrainRequest {
+    fn to_train(&self) -> Result<Parts, Vec<FieldError>> {
+        let mut e = Errors::default();
+        if self.members.is_empty() || self.members.len() > MAX_MEMBERS {
+            e.push("/members", format!("give 1 to {MAX_MEMBERS} members"));
+        }
+        for (k, name) in self.members.iter().enumerate() {
+            if name == "ground" || self.members[..k].contains(name) {
+                e.push(&format!("/members/{k}"), format!("'{name}' is the frame or repeats a member"));
+            }
+        }
+        let member = |e: &mut Errors, name: &str, at: &str| -> Option<usize> {
+            if name == "ground" {
+                return Some(0);
+            }
+            match self.members.iter().position(|m| m == name) {
+                Some(k) => Some(k + 1),
+                None => e.fail(at, format!("unknown member '{name}' (or 'ground')")),
+            }
+        };
+        if self.meshes.is_empty() || self.meshes.len() > MAX_MEMBERS {
+            e.push("/meshes", format!("give 1 to {MAX_MEMBERS} meshes"));
+        }
+        let mut meshes = Vec::new();
+        for (k, m) in self.meshes.iter().enumerate() {
+            let at = format!("/meshes/{k}");
+            let teeth = |e: &mut Errors, z: f64, field: &str| {
+                (z.is_finite() && (1.0..=100_000.0).contains(&z))
+                    .then_some(z)
+                    .or_else(|| e.fail(&format!("{at}/{field}"), "must be a number of teeth from 1 to 100000"))
+            };
+            let (a, za) = (member(&mut e, &m.a, &format!("{at}/a")), teeth(&mut e, m.teeth_a, "teeth_a"));
+            let (b, zb) = (member(&mut e, &m.b, &format!("{at}/b")), teeth(&mut e, m.teeth_b, "teeth_b"));
+            let carrier = member(&mut e, m.carrier.as_deref().unwrap_or("ground"), &format!("{at}/carrier"));
+            if let (Some(a), Some(teeth_a), Some(b), Some(teeth_b), Some(carrier)) = (a, za, b, zb, carrier) {
+                if a == b || a == carrier || b == carrier {
+                    e.push(&at, "a mesh needs two different wheels on members other than its carrier");
+                }
+                meshes.push(Mesh { a, teeth_a, b, teeth_b, carrier, internal: m.internal.unwrap_or(false) });
+            }
+        }
+        let speeds = self.speeds.iter().map(|s| (&s.member, &s.speed));
+        let speeds = given(&mut e, "/speeds", speeds, Dim::ANGULAR_SPEED, &member);
+        let torques = self.torques.as_deref().unwrap_or_default().iter().map(|t| (&t.member, &t.torque));
+        let torques = given(&mut e, "/torques", torques, Dim::TORQUE, &member);
+        let asked: Vec<usize> = (self.unknown_torques.as_deref().unwrap_or_default().iter().enumerate())
+            .filter_map(|(k, name)| member(&mut e, name, &format!("/unknown_torques/{k}")))
+            .collect();
+        if asked.contains(&0) {
+            e.push("/unknown_torques", "the frame's torque is not an unknown of the train");
+        }
+        if !e.0.is_empty() {
+            return Err(e.0);
+        }
+        Ok((Train { members: self.members.len() + 1, meshes }, speeds, torques, asked))
+    }
+}
+
+/// (member, value) pairs under `at`, in SI.
+fn given<'a>(
+    e: &mut Errors,
+    at: &str,
+    items: impl Iterator<Item = (&'a String, &'a Quantity)>,
+    dim: Dim,
+    member: &dyn Fn(&mut Errors, &str, &str) -> Option<usize>,
+) -> Vec<(usize, f64)> {
+    let field = if dim == Dim::TORQUE { "torque" } else { "speed" };
+    items
+        .enumerate()
+        .filter_map(|(k, (name, q))| {
+            let m = member(e, name, &format!("{at}/{k}/member"));
+            let v = e.quantity(q, dim, &format!("{at}/{k}/{field}"));
+            Some((m?, v?))
+        })
+        .collect()
+}
