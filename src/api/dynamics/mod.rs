@@ -106,8 +106,9 @@ pub struct EventDto {
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct DynamicsAccuracy {
-    /// (W − ΔT)/max(|W|, |ΔT|, T₀, T_end): the work of the torques (by quadrature
-    /// over the angle) against the change of kinetic energy.
+    /// (W − ΔT)/max(|W|, |ΔT|, T₀, T_end): the work of the actions against
+    /// the change of kinetic energy. W is a quadrature over the angle when the
+    /// reduced actions depend on φ only, else the integrated power.
     pub energy_residual: f64,
     pub steps: usize,
     pub function_evaluations: usize,
