@@ -15,6 +15,7 @@ pub mod kinetostatics;
 pub mod mechanism;
 pub mod problem;
 pub mod quantity;
+pub mod rotor;
 
 use crate::store::Store;
 use axum::extract::{DefaultBodyLimit, State};
@@ -52,7 +53,7 @@ expressions 2000 characters and 64 levels of nesting; tables 100000 rows; 1000 s
 100 torques; 100000 result samples; 200 bodies and joints, 500 loads and 100000 steps per mechanism \
 (422 beyond them)."
     ),
-    paths(flywheel::create, kinetostatics::create, dynamics::create, gears::create, gear_train::create, equivalent::create, jobs::get, jobs::list, jobs::csv, healthz),
+    paths(flywheel::create, kinetostatics::create, dynamics::create, gears::create, gear_train::create, equivalent::create, rotor::create, jobs::get, jobs::list, jobs::csv, healthz),
     components(schemas(
         Problem, FieldError, Health,
         flywheel::FlywheelRequest, flywheel::FlywheelResult,
@@ -61,6 +62,7 @@ expressions 2000 characters and 64 levels of nesting; tables 100000 rows; 1000 s
         gears::GearRequest, gears::GearResult,
         gear_train::TrainRequest, gear_train::TrainResult,
         equivalent::EquivalentRequest, equivalent::EquivalentResult,
+        rotor::RotorRequest, rotor::RotorResult,
         quantity::Quantity, quantity::FunctionDto, quantity::FunctionSpec
     )),
     tags(
@@ -89,6 +91,7 @@ pub fn router(state: AppState, body_limit: usize) -> Router {
         .route("/v1/gears/geometry", post(gears::create))
         .route("/v1/equivalent-masses", post(equivalent::create))
         .route("/v1/gears/train", post(gear_train::create))
+        .route("/v1/rotor", post(rotor::create))
         .route("/v1/jobs", get(jobs::list))
         .route("/v1/jobs/{id}", get(jobs::get))
         .route("/v1/jobs/{id}/result.csv", get(jobs::csv))

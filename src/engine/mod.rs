@@ -19,6 +19,7 @@ pub mod machine;
 pub mod mobility;
 pub mod model;
 pub mod numeric;
+pub mod rotor;
 pub mod samples;
 
 /// Why a problem has no answer.

@@ -8,4 +8,5 @@ mod gears;
 mod helpers;
 mod jobs;
 mod kinetostatics;
+mod rotor;
 mod seed_exams;

@@ -3,3 +3,4 @@
 mod dynamics;
 mod kinetostatics;
 mod mechanism_dynamics;
+mod rotor;

@@ -1,0 +1,290 @@
+//! `POST /v1/rotor`: a rigid body on a frame turning about a fixed axis on
+//! two bearings — momentum, kinetic energy, driving and gyroscopic moments,
+//! and the bearing reactions (dynamic, static, total; rotating and fixed axes).
+
+use super::json::JsonBody;
+use super::problem::{ApiError, FieldError, PostErrors};
+use super::quantity::{Errors, Quantity};
+use super::{AppState, jobs, validated};
+use crate::engine::rotor::{Rotor, RotorState, Support};
+use crate::units::Dim;
+use axum::extract::State;
+use axum::response::Response;
+use nalgebra::{Matrix3, Vector3};
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+const MAX_INSTANTS: usize = 10_000;
+
+/// The body (about its centre of mass G, in the frame's axes x'y'z', x' the
+/// bearings' axis), its spin relative to the frame, the bearings and the
+/// frame's motion. Exactly one of `angles` and `times` (default: 12 angles
+/// over a turn).
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[schema(example = json!({
+    "mass": "1.5 kg",
+    "inertia": {"xx": 0.00375, "yy": 0.0075, "zz": 0.00375},
+    "cg": [0, -0.04, 0.1],
+    "spin": [0, 20, 0],
+    "bearings": [-0.15, 0.15],
+    "gravity": [0, -9.8, 0],
+    "frame": {"speed": "10 rad/s"},
+    "angles": [0, "90 deg"]
+}))]
+pub struct RotorRequest {
+    #[schema(value_type = Quantity)]
+    pub mass: Quantity,
+    pub inertia: InertiaDto,
+    /// G from the origin O on the axis, m.
+    pub cg: [f64; 3],
+    /// The body's angular velocity relative to the frame, rad/s (default 0).
+    /// The body must be symmetric about it (its inertia stays constant in the frame).
+    pub spin: Option<[f64; 3]>,
+    /// x' of bearing D and of bearing E (E takes the axial thrust), m.
+    pub bearings: [f64; 2],
+    /// Gravity in the fixed axes (which coincide with x'y'z' at angle 0), m/s² (default [0, −9.81, 0]).
+    pub gravity: Option<[f64; 3]>,
+    pub frame: FrameDto,
+    pub angles: Option<Vec<Quantity>>,
+    pub times: Option<Vec<Quantity>>,
+}
+
+/// Moments and products of inertia about G in the frame's axes, kg·m²; the
+/// tensor is [[xx, −xy, −xz], [−xy, yy, −yz], [−xz, −yz, zz]] (products default 0).
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct InertiaDto {
+    pub xx: f64,
+    pub yy: f64,
+    pub zz: f64,
+    pub xy: Option<f64>,
+    pub xz: Option<f64>,
+    pub yz: Option<f64>,
+}
+
+/// The frame's motion about x: speed Ω₀ and angle φ₀ at t = 0, constant acceleration γ.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct FrameDto {
+    #[schema(value_type = Quantity)]
+    pub speed: Quantity,
+    #[schema(value_type = Option<Quantity>)]
+    pub acceleration: Option<Quantity>,
+    #[schema(value_type = Option<Quantity>)]
+    pub angle: Option<Quantity>,
+}
+
+/// Forces on D and E (N) and the driving moment about the axis (N·m).
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct SupportDto {
+    pub d: [f64; 3],
+    pub e: [f64; 3],
+    pub driving_moment: f64,
+}
+
+/// The bearing forces in one set of axes: due to the motion, to the weight, and both.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct ReactionsDto {
+    pub dynamic: SupportDto,
+    #[serde(rename = "static")]
+    pub static_: SupportDto,
+    pub total: SupportDto,
+}
+
+/// One instant. Vectors are in the rotating axes x'y'z' except `reactions_fixed`.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct RotorStateDto {
+    pub t: f64,
+    pub angle: f64,
+    pub speed: f64,
+    /// Q = m·V_G, N·s.
+    pub momentum: [f64; 3],
+    /// K about G and about O, kg·m²/s.
+    pub angular_momentum_g: [f64; 3],
+    pub angular_momentum_o: [f64; 3],
+    pub kinetic_energy: f64,
+    /// Ω i' × I_G·ω_r, N·m.
+    pub gyroscopic_moment: [f64; 3],
+    pub reactions: ReactionsDto,
+    pub reactions_fixed: ReactionsDto,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct RotorResult {
+    pub states: Vec<RotorStateDto>,
+    pub method: String,
+}
+
+/// The rotor at the requested angles or times.
+#[utoipa::path(post, path = "/v1/rotor", tag = "calculators", request_body = RotorRequest,
+    responses(
+        (status = 201, description = "Job computed and stored; `result` is a RotorResult", body = jobs::Job,
+            headers(("Location" = String, description = "/v1/jobs/{id}"))),
+        PostErrors,
+    ))]
+pub async fn create(State(state): State<AppState>, body: JsonBody<RotorRequest>) -> Result<Response, ApiError> {
+    let JsonBody { value, raw, unknown } = body;
+    jobs::create(&state, "rotor", raw, move || compute(&value, unknown)).await
+}
+
+/// Validates and computes a request.
+pub fn compute(request: &RotorRequest, unknown: Vec<FieldError>) -> Result<RotorResult, ApiError> {
+    let (rotor, times) = validated(unknown, request.to_rotor())?;
+    let states = times.iter().map(|t| state_dto(&rotor.at(*t))).collect();
+    Ok(RotorResult {
+        states,
+        method: "Newton F = [dQ/dt]_rel + Ω×Q and Euler M_G = [dK_G/dt]_rel + Ω×K_G in the frame's axes; \
+                 bearing forces and driving moment from the six equilibrium equations, closed form"
+            .into(),
+    })
+}
+
+fn state_dto(s: &RotorState) -> RotorStateDto {
+    let v = |x: Vector3<f64>| [x.x, x.y, x.z];
+    let support = |s: &Support| SupportDto { d: v(s.d), e: v(s.e), driving_moment: s.driving_moment };
+    let fixed =
+        |f: &[Vector3<f64>; 2], s: &Support| SupportDto { d: v(f[0]), e: v(f[1]), driving_moment: s.driving_moment };
+    RotorStateDto {
+        t: s.t,
+        angle: s.angle,
+        speed: s.speed,
+        momentum: v(s.momentum),
+        angular_momentum_g: v(s.angular_momentum_g),
+        angular_momentum_o: v(s.angular_momentum_o),
+        kinetic_energy: s.kinetic_energy,
+        gyroscopic_moment: v(s.gyroscopic_moment),
+        reactions: ReactionsDto {
+            dynamic: support(&s.dynamic),
+            static_: support(&s.static_),
+            total: support(&s.total),
+        },
+        reactions_fixed: ReactionsDto {
+            dynamic: fixed(&s.dynamic_fixed, &s.dynamic),
+            static_: fixed(&s.static_fixed, &s.static_),
+            total: fixed(&s.total_fixed, &s.total),
+        },
+    }
+}
+
+impl RotorRequest {
+    fn to_rotor(&self) -> Result<(Rotor, Vec<f64>), Vec<FieldError>> {
+        let mut e = Errors::default();
+        let mass = e.positive(&self.mass, Dim::MASS, "/mass");
+        let inertia = self.inertia(&mut e);
+        let spin = Vector3::from(self.spin.unwrap_or_default());
+        let gravity = Vector3::from(self.gravity.unwrap_or([0.0, -9.81, 0.0]));
+        let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
+        for (at, ok) in
+            [("/cg", finite(&self.cg)), ("/spin", finite(spin.as_slice())), ("/gravity", finite(gravity.as_slice()))]
+        {
+            if !ok {
+                e.push(at, "components must be finite numbers");
+            }
+        }
+        let [xd, xe] = self.bearings;
+        if !(xd.is_finite() && xe.is_finite() && xd != xe) {
+            e.push("/bearings", "two different, finite positions along the axis");
+        }
+        if let Some(i) = inertia
+            && !symmetric_about(&i, &spin)
+        {
+            e.push("/spin", "the body must be symmetric about its spin axis (its inertia would change in the frame)");
+        }
+        let f = &self.frame;
+        let speed = e.quantity(&f.speed, Dim::ANGULAR_SPEED, "/frame/speed");
+        let acceleration = f
+            .acceleration
+            .as_ref()
+            .map_or(Some(0.0), |q| e.quantity(q, Dim::ANGULAR_ACCELERATION, "/frame/acceleration"));
+        let angle = f.angle.as_ref().map_or(Some(0.0), |q| e.angle(q, "/frame/angle"));
+        let (Some(mass), Some(inertia), Some(speed), Some(acceleration), Some(angle)) =
+            (mass, inertia, speed, acceleration, angle)
+        else {
+            return Err(e.0);
+        };
+        let rotor = Rotor {
+            mass,
+            inertia,
+            cg: Vector3::from(self.cg),
+            spin,
+            bearings: self.bearings,
+            gravity,
+            speed,
+            acceleration,
+            angle,
+        };
+        let times = self.times(&mut e, &rotor);
+        if !e.0.is_empty() {
+            return Err(e.0);
+        }
+        Ok((rotor, times))
+    }
+
+    fn inertia(&self, e: &mut Errors) -> Option<Matrix3<f64>> {
+        let d = &self.inertia;
+        let (xy, xz, yz) = (d.xy.unwrap_or(0.0), d.xz.unwrap_or(0.0), d.yz.unwrap_or(0.0));
+        let i = Matrix3::new(d.xx, -xy, -xz, -xy, d.yy, -yz, -xz, -yz, d.zz);
+        if !i.iter().all(|v| v.is_finite()) {
+            return e.fail("/inertia", "must be finite numbers");
+        }
+        let eig = i.symmetric_eigenvalues();
+        let scale = i.trace().abs().max(f64::MIN_POSITIVE);
+        // Principal moments of a body: non-negative and each at most the sum of the other two.
+        let physical = eig.iter().all(|l| *l >= -1e-12 * scale)
+            && (0..3).all(|k| eig[k] <= eig[(k + 1) % 3] + eig[(k + 2) % 3] + 1e-12 * scale);
+        if !physical {
+            return e.fail("/inertia", format!("principal moments {eig:?} are not those of a body"));
+        }
+        Some(i)
+    }
+
+    /// The instants asked for: `times`, or the times the frame reaches `angles`.
+    fn times(&self, e: &mut Errors, r: &Rotor) -> Vec<f64> {
+        let default: Vec<Quantity> = (0..12).map(|k| Quantity::Number(k as f64 * std::f64::consts::PI / 6.0)).collect();
+        let (list, field) = match (&self.angles, &self.times) {
+            (Some(a), None) => (a, "angles"),
+            (None, Some(t)) => (t, "times"),
+            (None, None) => (&default, "angles"),
+            _ => return e.fail("", "give at most one of \"angles\" and \"times\"").unwrap_or_default(),
+        };
+        if list.is_empty() || list.len() > MAX_INSTANTS {
+            e.push(&format!("/{field}"), format!("give 1 to {MAX_INSTANTS} values"));
+        }
+        let mut out = Vec::new();
+        for (k, q) in list.iter().enumerate() {
+            let at = format!("/{field}/{k}");
+            let t = if field == "times" {
+                e.quantity(q, Dim::TIME, &at)
+            } else {
+                e.angle(q, &at)
+                    .and_then(|phi| time_at(r, phi).or_else(|| e.fail(&at, "the frame never reaches this angle")))
+            };
+            out.extend(t);
+        }
+        out
+    }
+}
+
+/// The first t ≥ 0 with φ₀ + Ω₀t + ½γt² = φ.
+fn time_at(r: &Rotor, phi: f64) -> Option<f64> {
+    let (w, g, d) = (r.speed, r.acceleration, phi - r.angle);
+    if g == 0.0 {
+        return (w != 0.0 && d / w >= 0.0).then(|| d / w);
+    }
+    let disc = w * w + 2.0 * g * d;
+    if disc < 0.0 {
+        return None;
+    }
+    [(-w + disc.sqrt()) / g, (-w - disc.sqrt()) / g].into_iter().filter(|t| *t >= 0.0).reduce(f64::min)
+}
+
+/// I·s ∥ s and I isotropic in the plane normal to s (true when s = 0).
+fn symmetric_about(i: &Matrix3<f64>, spin: &Vector3<f64>) -> bool {
+    if spin.norm() == 0.0 {
+        return true;
+    }
+    let s = spin.normalize();
+    let p = Matrix3::identity() - s * s.transpose();
+    let lambda = s.dot(&(i * s));
+    let mu = 0.5 * (i.trace() - lambda);
+    let tol = 1e-9 * i.trace().abs().max(f64::MIN_POSITIVE);
+    (i * s - lambda * s).norm() <= tol && (p * i * p - mu * p).norm() <= tol
+}
