@@ -34,7 +34,7 @@ pub enum Command {
     Openapi,
     /// Solve a request file without a server and print the result (same validation as the API).
     Solve {
-        /// Job kind: flywheel, kinetostatics or dynamics.
+        /// Job kind: flywheel, kinetostatics, dynamics, gears, gear_train, equivalent_masses or rotor.
         kind: String,
         /// Request JSON file ("-" for standard input).
         file: PathBuf,

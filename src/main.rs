@@ -96,16 +96,14 @@ fn solve(kind: &str, file: &std::path::Path) -> ExitCode {
         return fail(&format!("cannot read {}: {e}", file.display()));
     }
     let output = match kind {
-        "flywheel" => mechdyn::api::json::parse::<api::flywheel::FlywheelRequest>(raw)
-            .and_then(|body| api::flywheel::compute(&body.value, body.unknown))
-            .map(|r| serde_json::to_string_pretty(&r).unwrap_or_default()),
-        "kinetostatics" => mechdyn::api::json::parse::<api::kinetostatics::KinetostaticsRequest>(raw)
-            .and_then(|body| api::kinetostatics::compute(&body.value, body.unknown))
-            .map(|r| serde_json::to_string_pretty(&r).unwrap_or_default()),
-        "dynamics" => mechdyn::api::json::parse::<api::dynamics::DynamicsRequest>(raw)
-            .and_then(|body| api::dynamics::compute(&body.value, body.unknown))
-            .map(|r| serde_json::to_string_pretty(&r).unwrap_or_default()),
-        other => return fail(&format!("unknown kind '{other}' (known: flywheel, kinetostatics, dynamics)")),
+        "flywheel" => computed(raw, api::flywheel::compute),
+        "kinetostatics" => computed(raw, api::kinetostatics::compute),
+        "dynamics" => computed(raw, api::dynamics::compute),
+        "gears" => computed(raw, api::gears::compute),
+        "gear_train" => computed(raw, api::gear_train::compute),
+        "equivalent_masses" => computed(raw, api::equivalent::compute),
+        "rotor" => computed(raw, api::rotor::compute),
+        other => return fail(&format!("unknown kind '{other}' (known: {})", SOLVE_KINDS.join(", "))),
     };
     match output {
         Ok(json) => {
@@ -117,6 +115,19 @@ fn solve(kind: &str, file: &std::path::Path) -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// The kinds `solve` knows, named as the jobs' kinds.
+const SOLVE_KINDS: &[&str] =
+    &["flywheel", "kinetostatics", "dynamics", "gears", "gear_train", "equivalent_masses", "rotor"];
+
+/// Parses a request of type T and computes it as the API would, as pretty JSON.
+fn computed<T: serde::de::DeserializeOwned, R: serde::Serialize>(
+    raw: String,
+    compute: fn(&T, Vec<api::problem::FieldError>) -> Result<R, api::problem::ApiError>,
+) -> Result<String, api::problem::ApiError> {
+    let body = mechdyn::api::json::parse::<T>(raw)?;
+    compute(&body.value, body.unknown).map(|r| serde_json::to_string_pretty(&r).unwrap_or_default())
 }
 
 fn fail(message: &str) -> ExitCode {

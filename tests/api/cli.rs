@@ -50,3 +50,16 @@ fn solve_kinetostatics_prints_the_result() {
     let t = r["steps"][1]["driving"].as_f64().unwrap();
     assert!((t - -228.491215292969).abs() < 1e-6, "{t}");
 }
+
+/// Every calculator is solvable offline: the README's mechanism-dynamics
+/// example reaches 4π (its `until_angle`), to the printed digits of the API.
+#[test]
+fn solve_knows_every_job_kind() {
+    let out = mechdyn(&["solve", "dynamics", "tests/fixtures/requests/d1_scotch_yoke_machine.json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let r: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let end = r["events"].as_array().unwrap().last().unwrap()["angle"].as_f64().unwrap();
+    assert!((end - 4.0 * std::f64::consts::PI).abs() < 1e-9, "{end}");
+    let out = mechdyn(&["solve", "rotr", "tests/fixtures/requests/p103_slider.json"]);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("gear_train, equivalent_masses, rotor"));
+}
