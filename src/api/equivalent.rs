@@ -43,7 +43,7 @@ pub struct EquivalentResult {
 }
 
 /// Masses at the given points with the link's mass, centre of mass and inertia.
-#[utoipa::path(post, path = "/v1/equivalent-masses", tag = "calculators", request_body = EquivalentRequest,
+#[utoipa::path(post, path = "/v1/equivalent-masses", operation_id = "create_equivalent_masses_job", tag = "calculators", request_body = EquivalentRequest,
     responses(
         (status = 201, description = "Job computed and stored; `result` is an EquivalentResult", body = jobs::Job,
             headers(("Location" = String, description = "/v1/jobs/{id}"))),

@@ -52,7 +52,7 @@ pub struct GearResult {
 }
 
 /// Radii (pitch, base, tip, root) and the tooth thickness on any circle.
-#[utoipa::path(post, path = "/v1/gears/geometry", tag = "gears", request_body = GearRequest,
+#[utoipa::path(post, path = "/v1/gears/geometry", operation_id = "create_gear_geometry_job", tag = "gears", request_body = GearRequest,
     responses(
         (status = 201, description = "Job computed and stored; `result` is a GearResult", body = jobs::Job,
             headers(("Location" = String, description = "/v1/jobs/{id}"))),

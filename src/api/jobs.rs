@@ -124,7 +124,7 @@ fn now_rfc3339() -> String {
 }
 
 /// Reads a job.
-#[utoipa::path(get, path = "/v1/jobs/{id}", tag = "jobs",
+#[utoipa::path(get, path = "/v1/jobs/{id}", operation_id = "get_job", tag = "jobs",
     params(("id" = String, Path, description = "Job id")),
     responses(
         (status = 200, description = "The job", body = Job),
@@ -152,7 +152,7 @@ pub struct ListParams {
 }
 
 /// Lists jobs, newest first, a page at a time.
-#[utoipa::path(get, path = "/v1/jobs", tag = "jobs", params(ListParams),
+#[utoipa::path(get, path = "/v1/jobs", operation_id = "list_jobs", tag = "jobs", params(ListParams),
     responses(
         (status = 200, description = "A page of jobs", body = JobList),
         (status = 400, description = "Invalid query parameters", body = Problem, content_type = "application/problem+json"),
@@ -198,7 +198,7 @@ fn list_params(q: &HashMap<String, String>) -> Result<(Option<String>, i64, Opti
 }
 
 /// The job's tabular result as CSV: one row per sample, header with units.
-#[utoipa::path(get, path = "/v1/jobs/{id}/result.csv", tag = "jobs",
+#[utoipa::path(get, path = "/v1/jobs/{id}/result.csv", operation_id = "get_job_result_csv", tag = "jobs",
     params(("id" = String, Path, description = "Job id")),
     responses(
         (status = 200, description = "CSV table", body = String, content_type = "text/csv"),

@@ -45,8 +45,10 @@ pub const DEFAULT_BODY_LIMIT: usize = 1 << 20;
 #[openapi(
     info(
         title = "mechdyn",
-        description = "Machine-dynamics calculations: flywheels (approximate and exact Wittenbauer methods) and \
-kinetostatics of planar mechanisms, with every job stored and readable later.\n\nQuantities are SI numbers or \"VALUE UNIT\" strings \
+        description = "Machine-dynamics calculations: kinetostatics (inverse dynamics) of planar mechanisms, \
+flywheels (approximate and exact Wittenbauer methods), direct dynamics (reduced 1-DOF form or a mechanism of \
+any DOF), rigid rotors on two bearings, and the gear and equivalent-mass calculators of the course; every job \
+is stored and readable later.\n\nQuantities are SI numbers or \"VALUE UNIT\" strings \
 (\"300 rpm\", \"3200 ft*lbf\", \"20 slug*ft^2\"); results are SI. Errors are application/problem+json \
 with a JSON pointer for every invalid field.\n\nLimits: request body 1 MiB (configurable, 413); \
 expressions 2000 characters and 64 levels of nesting; tables 100000 rows; 1000 segments per function; \

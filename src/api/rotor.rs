@@ -114,7 +114,7 @@ pub struct RotorResult {
 }
 
 /// The rotor at the requested angles or times.
-#[utoipa::path(post, path = "/v1/rotor", tag = "calculators", request_body = RotorRequest,
+#[utoipa::path(post, path = "/v1/rotor", operation_id = "create_rotor_job", tag = "calculators", request_body = RotorRequest,
     responses(
         (status = 201, description = "Job computed and stored; `result` is a RotorResult", body = jobs::Job,
             headers(("Location" = String, description = "/v1/jobs/{id}"))),

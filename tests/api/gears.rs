@@ -1,6 +1,6 @@
 //! Gear calculators through the HTTP API.
 
-use crate::helpers::{TestApp, case, close};
+use crate::helpers::{TestApp, case, close, example};
 use axum::http::StatusCode;
 use serde_json::json;
 
@@ -59,16 +59,8 @@ async fn equivalent_masses_of_a_bar() {
 #[tokio::test]
 async fn k5_differential_train_speeds_and_torques() {
     let (app, c) = (TestApp::new().await, case("K5_differential_gear_train"));
-    let body = json!({
-        "members": ["1", "2", "3", "4"],
-        "meshes": [
-            {"a": "1", "teeth_a": 60, "b": "3", "teeth_b": 30, "carrier": "2"},
-            {"a": "3", "teeth_a": 30, "b": "4", "teeth_b": 120, "carrier": "2", "internal": true}
-        ],
-        "speeds": [{"member": "1", "speed": "100 rpm"}, {"member": "2", "speed": "50 rpm"}],
-        "torques": [{"member": "1", "torque": "15 N*m"}],
-        "unknown_torques": ["2", "4"]
-    });
+    // The documented example of `TrainRequest` is this train.
+    let body = example("TrainRequest");
     let r = app.post("/v1/gears/train", &body).await;
     assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
     let result = r.json()["result"].clone();

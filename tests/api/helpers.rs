@@ -94,6 +94,15 @@ pub fn request(name: &str) -> Value {
     fixture(&format!("requests/{name}.json"))
 }
 
+/// The example of a component schema in the served OpenAPI document (what
+/// a user of the interactive docs sends first).
+pub fn example(schema: &str) -> Value {
+    let doc = serde_json::to_value(mechdyn::api::openapi()).unwrap();
+    let found = doc["components"]["schemas"][schema]["example"].clone();
+    assert!(found.is_object(), "the schema {schema} has no example");
+    found
+}
+
 /// A reference case from tests/fixtures/cases.
 pub fn case(name: &str) -> Value {
     fixture(&format!("cases/{name}.json"))

@@ -4,6 +4,7 @@ mod cases;
 mod cli;
 mod dynamics;
 mod errors;
+mod examples;
 mod gears;
 mod helpers;
 mod jobs;

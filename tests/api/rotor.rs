@@ -1,21 +1,15 @@
 //! The rigid rotor of seed 003 through the HTTP API (the engine's tests in
 //! tests/engine/rotor.rs quote the seed's printed answers and its slips).
 
-use crate::helpers::{TestApp, close};
+use crate::helpers::{TestApp, close, example};
 use axum::http::StatusCode;
 use serde_json::{Value, json};
 
+/// Seed 003's disk (the documented example of `RotorRequest`): 1.5 kg,
+/// G at (0, −0.04, 0.1) m, spinning at 20 rad/s about y' in a frame turning
+/// at 10 rad/s, bearings at x' = ∓0.15 m, at 0° and 90°.
 fn seed_disk() -> Value {
-    json!({
-        "mass": "1.5 kg",
-        "inertia": {"xx": 0.00375, "yy": 0.0075, "zz": 0.00375},
-        "cg": [0, -0.04, 0.1],
-        "spin": [0, 20, 0],
-        "bearings": [-0.15, 0.15],
-        "gravity": [0, -9.8, 0],
-        "frame": {"speed": "10 rad/s"},
-        "angles": [0, "90 deg"]
-    })
+    example("RotorRequest")
 }
 
 /// At φ = 0: Y'_D = 5.35, Y'_E = 15.35, Z' = −7.5 N, the gyroscopic moment

@@ -134,7 +134,7 @@ pub struct DynamicsResult {
 
 /// Integrates I*(φ)φ̈ + ½I*'(φ)φ̇² = M*(φ, ω, t), or a mechanism's equations
 /// of motion, from the initial state.
-#[utoipa::path(post, path = "/v1/dynamics", tag = "dynamics", request_body = DynamicsRequest,
+#[utoipa::path(post, path = "/v1/dynamics", operation_id = "create_dynamics_job", tag = "dynamics", request_body = DynamicsRequest,
     responses(
         (status = 201, description = "Job computed and stored; `result` is a DynamicsResult", body = jobs::Job,
             headers(("Location" = String, description = "/v1/jobs/{id}"))),
@@ -180,44 +180,54 @@ enum Problem {
     Machine(MechanismProblem, Vec<String>, Vec<String>),
 }
 
+/// The settings both forms share, validated (defaults stand in for invalid
+/// values: the errors then discard the problem).
+struct Common {
+    period: f64,
+    tolerance: f64,
+    samples: usize,
+}
+
 impl DynamicsRequest {
     fn to_problem(&self) -> Result<Problem, Vec<FieldError>> {
         let mut e = Errors::default();
-        let period = match &self.period {
-            Some(q) => {
-                e.angle(q, "/period").filter(|p| *p > 0.0).or_else(|| e.fail("/period", "must be greater than 0"))
-            }
-            None => Some(2.0 * PI),
-        };
-        let pd = period.unwrap_or(2.0 * PI);
-        let tolerance = match self.tolerance {
-            Some(t) if !(1e-14..=1e-2).contains(&t) => e.fail("/tolerance", "must be between 1e-14 and 1e-2"),
-            t => Some(t.unwrap_or(1e-9)),
-        };
-        let samples = match self.samples {
-            Some(n) if !(2..=100_000).contains(&n) => e.fail("/samples", "must be 2 to 100000"),
-            n => Some(n.unwrap_or(DEFAULT_SAMPLES)),
-        };
+        let c = self.common(&mut e);
         let reduced = !self.torques.is_empty() || self.reduced_inertia.is_some();
         let problem = match (&self.machine, reduced) {
-            (Some(m), false) => self.machine_problem(&mut e, m, pd),
-            (None, true) => self.reduced_problem(&mut e, pd),
+            (Some(m), false) => self.machine_problem(&mut e, m, &c),
+            (None, true) => self.reduced_problem(&mut e, &c),
             _ => e.fail("", "give either \"machine\" or the reduced form \"torques\" with \"reduced_inertia\""),
         };
-        match (problem, period, tolerance, samples) {
-            (Some(mut problem), Some(period), Some(tolerance), Some(samples)) if e.0.is_empty() => {
-                match &mut problem {
-                    Problem::Reduced(p) => (p.period, p.tolerance, p.samples) = (period, tolerance, samples),
-                    Problem::Machine(p, ..) => (p.period, p.tolerance, p.samples) = (period, tolerance, samples),
-                }
-                Ok(problem)
-            }
+        match problem {
+            Some(problem) if e.0.is_empty() => Ok(problem),
             _ => Err(e.0),
         }
     }
 
-    /// The reduced form (period, tolerance and samples are set by the caller).
-    fn reduced_problem(&self, e: &mut Errors, period: f64) -> Option<Problem> {
+    fn common(&self, e: &mut Errors) -> Common {
+        let period = match &self.period {
+            Some(q) => {
+                e.angle(q, "/period").filter(|p| *p > 0.0).or_else(|| e.fail("/period", "must be greater than 0"))
+            }
+            None => None,
+        };
+        let tolerance = match self.tolerance {
+            Some(t) if !(1e-14..=1e-2).contains(&t) => e.fail("/tolerance", "must be between 1e-14 and 1e-2"),
+            t => t,
+        };
+        let samples = match self.samples {
+            Some(n) if !(2..=100_000).contains(&n) => e.fail("/samples", "must be 2 to 100000"),
+            n => n,
+        };
+        Common {
+            period: period.unwrap_or(2.0 * PI),
+            tolerance: tolerance.unwrap_or(1e-9),
+            samples: samples.unwrap_or(DEFAULT_SAMPLES),
+        }
+    }
+
+    fn reduced_problem(&self, e: &mut Errors, c: &Common) -> Option<Problem> {
+        let period = c.period;
         if self.torques.is_empty() || self.torques.len() > 100 {
             e.push("/torques", "must hold 1 to 100 items");
         }
@@ -260,26 +270,25 @@ impl DynamicsRequest {
             angle0: angle0?,
             speed0: speed0?,
             end: end?,
-            tolerance: 0.0,
-            samples: 0,
+            tolerance: c.tolerance,
+            samples: c.samples,
             budget: Some(BUDGET),
         }))
     }
 
-    /// The mechanism form (period, tolerance and samples are set by the caller).
-    fn machine_problem(&self, e: &mut Errors, m: &DynamicsMachine, period: f64) -> Option<Problem> {
-        let parts = m.convert(e, self.initial.as_ref(), period);
+    fn machine_problem(&self, e: &mut Errors, m: &DynamicsMachine, c: &Common) -> Option<Problem> {
+        let parts = m.convert(e, self.initial.as_ref(), c.period);
         let angle0 = parts.as_ref().and_then(|p| p.initial.first()).map_or(0.0, |s| s[0]);
         let end = self.end(e, angle0)?;
         let parts = parts?;
         let problem = MechanismProblem {
             mechanism: parts.mechanism,
             loads: parts.loads,
-            period,
+            period: c.period,
             initial: parts.initial,
             end,
-            tolerance: 0.0,
-            samples: 0,
+            tolerance: c.tolerance,
+            samples: c.samples,
             budget: Some(BUDGET),
             reactions: m.reactions.unwrap_or(true),
         };

@@ -18,7 +18,7 @@ use axum::response::Response;
 /// Designs a flywheel: balance torque, lobes of M*, energy fluctuation, and the
 /// inertia by the approximate and the exact (Wittenbauer) method, checked by a
 /// time simulation.
-#[utoipa::path(post, path = "/v1/flywheel", tag = "flywheel", request_body = FlywheelRequest,
+#[utoipa::path(post, path = "/v1/flywheel", operation_id = "create_flywheel_job", tag = "flywheel", request_body = FlywheelRequest,
     responses(
         (status = 201, description = "Job computed and stored; `result` is a FlywheelResult", body = jobs::Job,
             headers(("Location" = String, description = "/v1/jobs/{id}"))),

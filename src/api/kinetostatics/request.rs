@@ -22,6 +22,26 @@ const DEFAULT_STEPS: usize = 360;
 
 /// A kinetostatic (inverse dynamics) problem: a mechanism, its driven input(s) and its loads.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[schema(example = json!({
+    "mechanism": {
+        "points": {"O": [0, 0], "A": [0.08, 0], "B": [0.37933, 0.02]},
+        "bodies": [
+            {"name": "crank", "mass": "2 kg", "inertia": 0.004, "cg": [0.02, 0]},
+            {"name": "rod", "mass": 1.2, "inertia": 0.012, "cg": [0.1698, 0.006]},
+            {"name": "piston", "mass": 0.9, "inertia": 0.001, "cg": "B"}
+        ],
+        "joints": [
+            {"name": "O", "type": "revolute", "bodies": ["ground", "crank"], "at": "O"},
+            {"name": "A", "type": "revolute", "bodies": ["crank", "rod"], "at": "A"},
+            {"name": "B", "type": "revolute", "bodies": ["rod", "piston"], "at": "B"},
+            {"name": "guide", "type": "prismatic", "bodies": ["ground", "piston"], "at": "B", "axis": [1, 0]}
+        ],
+        "gravity": [0, -9.81]
+    },
+    "input": {"joint": "O", "speed": "1500 rpm", "start": 0, "end": "360 deg", "steps": 36},
+    "loads": [{"type": "force", "body": "piston", "at": "B", "direction": [1, 0],
+               "magnitude": {"expr": "-8000*exp(3*(cos(phi - 0.35) - 1))"}}]
+}))]
 pub struct KinetostaticsRequest {
     pub mechanism: MechanismDto,
     /// One input, or a list of inputs (one per degree of freedom, sharing `steps`).

@@ -130,8 +130,11 @@ pub(crate) fn run(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Run,
         let step = ode
             .step(&mut f, MAX_STEPS)
             .map_err(|e| DynamicsError::Integration { t: ode.t(), reason: e.to_string() })?;
-        turns(model, &step, &mut events);
-        if let Some(t) = finished(model, s.end, &step, &mut events, &mut stopped) {
+        // φ at both ends of the step, evaluated once: for a mechanism each
+        // evaluation assembles the constraints.
+        let span = (model.angle(&step.y0), model.angle(&step.y1));
+        turns(model, &step, span, &mut events);
+        if let Some(t) = finished(model, s.end, &step, span, &mut events, &mut stopped) {
             steps.push(step);
             break t;
         }
@@ -163,8 +166,7 @@ pub(crate) fn run(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Run,
 }
 
 /// Multiples of 2π crossed during the step, in either direction.
-fn turns(model: &impl Model, step: &Step, events: &mut Vec<Event>) {
-    let (a, b) = (model.angle(&step.y0), model.angle(&step.y1));
+fn turns(model: &impl Model, step: &Step, (a, b): (f64, f64), events: &mut Vec<Event>) {
     let (ka, kb) = ((a / (2.0 * PI)).floor() as i64, (b / (2.0 * PI)).floor() as i64);
     let crossed: Vec<i64> = if kb > ka { (ka + 1..=kb).collect() } else { (kb + 1..=ka).rev().collect() };
     for k in crossed {
@@ -182,6 +184,7 @@ fn finished(
     model: &impl Model,
     end: End,
     step: &Step,
+    (a0, a1): (f64, f64),
     events: &mut Vec<Event>,
     stopped: &mut Option<String>,
 ) -> Option<f64> {
@@ -190,7 +193,6 @@ fn finished(
         events.push(Event { kind: EventKind::End, angle: model.angle(&y), t, speed: model.speed(&y) });
         Some(t)
     };
-    let (a0, a1) = (model.angle(&step.y0), model.angle(&step.y1));
     match end {
         End::Duration(d) if step.t1 >= d => close(d, events),
         End::UntilAngle { angle, .. } if (a0 - angle) * (a1 - angle) <= 0.0 && a1 != a0 => {
