@@ -9,5 +9,6 @@ mod gears;
 mod helpers;
 mod jobs;
 mod kinetostatics;
+mod robot_arm;
 mod rotor;
 mod seed_exams;
