@@ -1,5 +1,6 @@
 //! Integration tests through the real router and a real SQLite file.
 
+mod andrews;
 mod cases;
 mod cli;
 mod dynamics;
