@@ -6,6 +6,7 @@ mod cli;
 mod dynamics;
 mod errors;
 mod examples;
+mod four_bars;
 mod gears;
 mod helpers;
 mod jobs;

@@ -148,6 +148,13 @@ pub struct MachineDynamics {
     pub dof: usize,
     /// Constraints that repeat others (their reactions are then not determinate).
     pub redundant_constraints: usize,
+    /// Times (s) at which the integration met the joint Jacobian within 1e-5
+    /// (relative singular value) of losing rank — a singular position, such
+    /// as a parallelogram lying flat, passed at close range. There the motion
+    /// along the fold was held (the mechanism stays on its branch) and the
+    /// reactions of the joints involved are not determinate. Singular
+    /// positions the steps passed over at a distance are not listed.
+    pub near_singular: Vec<f64>,
     pub samples: Vec<MachineSample>,
 }
 
@@ -172,6 +179,11 @@ impl MachineDynamics {
                 constraint_residual: d.constraint_residual,
             })
             .collect();
-        Self { dof: s.mobility.dof, redundant_constraints: s.mobility.redundant_constraints, samples }
+        Self {
+            dof: s.mobility.dof,
+            redundant_constraints: s.mobility.redundant_constraints,
+            near_singular: s.near_singular.clone(),
+            samples,
+        }
     }
 }

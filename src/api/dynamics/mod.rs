@@ -155,8 +155,17 @@ pub fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>) -> Result<Dy
             result.accuracy.constraint_drift = Some(s.drift);
             result.accuracy.method = "Dormand-Prince 5(4) on the index-1 equations of motion [M Φ_qᵀ; Φ_q 0], \
                                       the state projected onto Φ = 0 and Φ_q·q̇ = 0 after every step; \
-                                      events by Brent's method on the dense output; work as the integrated power"
+                                      rows of Φ_q within 1e-5 of dependence held at singular positions, \
+                                      dependent ones dropped; events by Brent's method on the dense output; \
+                                      work as the integrated power"
                 .into();
+            if let Some(t) = s.near_singular.first() {
+                result.warnings.push(format!(
+                    "the motion passed close to singular positions (the joint Jacobian nearly lost rank) {} time(s), \
+                     the first at t ≈ {t:.6} s: the mechanism was kept on its branch; see machine.near_singular",
+                    s.near_singular.len()
+                ));
+            }
             result.machine = Some(MachineDynamics::new(&s, &joints, &bodies));
             Ok(result)
         }

@@ -17,13 +17,15 @@
 //! Redundant constraints make the matrix singular in λ only: the
 //! minimum-norm solution (SVD) is used then and those reactions are flagged.
 
+use super::rows::Rows;
 use super::{DynamicsError, DynamicsSolution, End, Model, Sample, Settings, energy_residual, run, sample_states};
-use crate::engine::constraints::{State, System, evaluate};
+use crate::engine::constraints::{State, System, evaluate, joint_offsets};
 use crate::engine::kinematics::sweep;
 use crate::engine::kinetostatics::{Load, Reaction, applied_forces, reactions};
 use crate::engine::mobility::{Mobility, mobility};
 use crate::engine::model::Mechanism;
 use nalgebra::{DMatrix, DVector};
+use std::cell::RefCell;
 use std::time::Duration;
 
 /// A validated mechanism problem in SI units.
@@ -62,6 +64,10 @@ pub struct MechanismSolution {
     pub mobility: Mobility,
     /// Largest |Φ| removed by a projection after a step.
     pub drift: f64,
+    /// Times at which the integration met Φ_q within τ of losing rank and
+    /// held the fold motion (see [`super::rows`]): singular positions passed
+    /// at close range (one time per cluster of evaluations).
+    pub near_singular: Vec<f64>,
 }
 
 struct Dae<'a> {
@@ -70,9 +76,12 @@ struct Dae<'a> {
     n: usize,
     r: usize,
     mass: Vec<f64>,
-    redundant: bool,
+    /// Column scale of Φ_q for [`Rows`]: 1 for x, y and 1/L for angles.
+    scale: Vec<f64>,
     /// Position tolerance of the projection, m.
     tol: f64,
+    /// Times of the evaluations that held a fold.
+    held_at: RefCell<Vec<f64>>,
 }
 
 /// q̈, λ, Q and the system at a state.
@@ -81,6 +90,7 @@ struct Accelerations {
     lambda: DVector<f64>,
     forces: DVector<f64>,
     sys: System,
+    rows: Rows,
 }
 
 impl Dae<'_> {
@@ -94,47 +104,44 @@ impl Dae<'_> {
     fn accelerations(&self, t: f64, q: &[f64], qd: &[f64]) -> Option<Accelerations> {
         let (n, r) = (self.n, self.r);
         let sys = self.system(q, Some(qd));
-        let jac = sys.jacobian.rows(0, r);
+        let jac = sys.jacobian.rows(0, r).into_owned();
+        let rows = Rows::of(&jac, &self.scale);
+        if rows.holds() {
+            self.held_at.borrow_mut().push(t);
+        }
+        let jac = rows.motion(jac);
+        let k = jac.nrows();
         let phi = sys.phi[r].rem_euclid(self.p.period);
         let omega = (sys.jacobian.row(r) * DVector::from_column_slice(qd))[0];
         let forces = applied_forces(&self.p.mechanism, &self.p.loads, q, qd, phi, [omega, t]);
-        let mut a = DMatrix::zeros(n + r, n + r);
+        let mut a = DMatrix::zeros(n + k, n + k);
         for (i, m) in self.mass.iter().enumerate() {
             a[(i, i)] = *m;
         }
-        a.view_mut((0, n), (n, r)).copy_from(&jac.transpose());
-        a.view_mut((n, 0), (r, n)).copy_from(&jac);
-        let mut b = DVector::zeros(n + r);
+        a.view_mut((0, n), (n, k)).copy_from(&jac.transpose());
+        a.view_mut((n, 0), (k, n)).copy_from(&jac);
+        let mut b = DVector::zeros(n + k);
         b.rows_mut(0, n).copy_from(&forces);
-        b.rows_mut(n, r).copy_from(&sys.gamma.rows(0, r));
-        let x = if self.redundant { least_squares(a, &b)? } else { a.lu().solve(&b)? };
+        b.rows_mut(n, k).copy_from(&rows.gamma(sys.gamma.rows(0, r).into_owned()));
+        let x = a.lu().solve(&b)?;
         x.iter().all(|v| v.is_finite()).then(|| Accelerations {
             qdd: x.rows(0, n).into_owned(),
-            lambda: x.rows(n, r).into_owned(),
+            lambda: rows.multipliers(x.rows(n, k).into_owned()),
             forces,
             sys,
+            rows,
         })
     }
 
-    /// The minimum-norm x with J x = b (J the joints' rows).
-    fn min_norm(&self, jac: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
-        if !self.redundant
-            && let Some(ch) = (jac * jac.transpose()).cholesky()
-        {
-            return Some(jac.transpose() * ch.solve(b));
-        }
-        least_squares(jac.clone(), b)
+    /// The minimum-norm x with J x = b, J of full row rank.
+    fn min_norm(jac: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
+        let ch = (jac * jac.transpose()).cholesky()?;
+        Some(jac.transpose() * ch.solve(b))
     }
 
     fn kinetic(&self, qd: &[f64]) -> f64 {
         0.5 * self.mass.iter().zip(qd).map(|(m, v)| m * v * v).sum::<f64>()
     }
-}
-
-fn least_squares(a: DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
-    let svd = a.svd(true, true);
-    let tol = 1e-12 * svd.singular_values.max();
-    svd.solve(b, tol).ok()
 }
 
 impl Model for Dae<'_> {
@@ -168,16 +175,19 @@ impl Model for Dae<'_> {
         for _ in 0..8 {
             let sys = self.system(&y[..n], None);
             let (jac, phi) = (sys.jacobian.rows(0, r).into_owned(), sys.phi.rows(0, r).into_owned());
-            let violation = phi.amax();
-            removed = removed.max(violation);
-            if violation <= self.tol {
+            removed = removed.max(phi.amax());
+            // A held or dropped combination is not corrected in position.
+            let rows = Rows::of(&jac, &self.scale);
+            let (motion, jac, phi) = (rows.motion(jac.clone()), rows.positions(jac), rows.position_residual(phi));
+            if phi.amax() <= self.tol {
+                let jac = motion;
                 let v = &jac * DVector::from_column_slice(&y[n..2 * n]);
-                if let Some(dv) = self.min_norm(&jac, &(-v)) {
+                if let Some(dv) = Self::min_norm(&jac, &(-v)) {
                     y[n..2 * n].iter_mut().zip(dv.iter()).for_each(|(a, d)| *a += d);
                 }
                 break;
             }
-            let Some(dq) = self.min_norm(&jac, &(-phi)) else { break };
+            let Some(dq) = Self::min_norm(&jac, &(-phi)) else { break };
             y[..n].iter_mut().zip(dq.iter()).for_each(|(a, d)| *a += d);
         }
         removed
@@ -211,8 +221,9 @@ pub fn solve(p: &MechanismProblem) -> Result<MechanismSolution, DynamicsError> {
         r: evaluate(m, &State { q: &start.q, qd: None, inputs: &vec![[0.0; 3]; m.drivers.len()] }).phi.len()
             - m.drivers.len(),
         mass,
-        redundant: mobility.redundant_constraints > 0,
+        scale: (0..n).map(|k| if k % 3 == 2 { 1.0 / length } else { 1.0 }).collect(),
         tol: 1e-12 * length,
+        held_at: RefCell::new(Vec::new()),
     };
     let settings = settings(p, &start.q, &start.qd, length);
     let mut y0 = start.q.clone();
@@ -238,7 +249,21 @@ pub fn solve(p: &MechanismProblem) -> Result<MechanismSolution, DynamicsError> {
         evaluations: run.evaluations,
         stopped: run.stopped,
     };
-    Ok(MechanismSolution { solution, details, mobility, drift: run.drift })
+    let near_singular = clusters(&dae.held_at.borrow(), run.t_end);
+    Ok(MechanismSolution { solution, details, mobility, drift: run.drift, near_singular })
+}
+
+/// The first time of each cluster of held evaluations (gaps over t_end/1000 apart).
+fn clusters(held_at: &[f64], t_end: f64) -> Vec<f64> {
+    let mut times = held_at.to_vec();
+    times.sort_by(f64::total_cmp);
+    let mut out: Vec<f64> = Vec::new();
+    for (k, t) in times.iter().enumerate() {
+        if k == 0 || t - times[k - 1] > t_end / 1000.0 {
+            out.push(*t);
+        }
+    }
+    out
 }
 
 /// Tolerances: relative `tolerance`/100 on every component; absolute on
@@ -296,7 +321,16 @@ fn sample(dae: &Dae, mobility: &Mobility, t: f64, y: &[f64]) -> Result<Mechanism
         .collect();
     let reactions = if dae.p.reactions {
         let jac = sys.jacobian.rows(0, r).into_owned();
-        reactions(&dae.p.mechanism, q, &jac, &acc.lambda, &mobility.indeterminate_joints)
+        let m = &dae.p.mechanism;
+        let offsets = joint_offsets(m);
+        let indeterminate: Vec<usize> = (0..m.joints.len())
+            .filter(|&j| {
+                mobility.indeterminate_joints.contains(&j)
+                    || (offsets[j]..offsets[j] + Mechanism::joint_rows(&m.joints[j].kind))
+                        .any(|row| acc.rows.touches_loose(row))
+            })
+            .collect();
+        reactions(m, q, &jac, &acc.lambda, &indeterminate)
     } else {
         Vec::new()
     };

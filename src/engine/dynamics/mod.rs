@@ -12,6 +12,7 @@
 
 pub mod mechanism;
 pub mod reduced;
+mod rows;
 
 pub use reduced::{ReducedProblem, solve};
 
