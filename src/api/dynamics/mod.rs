@@ -102,6 +102,11 @@ pub struct EventDto {
     pub angle: f64,
     pub t: f64,
     pub speed: f64,
+    /// Reduced form with actions of φ only: the time of the event by the
+    /// energy form t = ∫dφ/ω, ω from ½I*ω² = T₀ + ∫M*dφ (nested quadratures,
+    /// no differential equation), while the motion has not turned back.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub t_energy_form: Option<f64>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
@@ -110,6 +115,10 @@ pub struct DynamicsAccuracy {
     /// the change of kinetic energy. W is a quadrature over the angle when the
     /// reduced actions depend on φ only, else the integrated power.
     pub energy_residual: f64,
+    /// The largest |t − t_energy_form| over the events (s), when any has one:
+    /// an independent measure of the integration's error.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub energy_form_time_difference: Option<f64>,
     pub steps: usize,
     pub function_evaluations: usize,
     /// Mechanism form: the largest constraint violation |Φ| (m or rad)
@@ -339,16 +348,24 @@ impl From<DynamicsSolution> for DynamicsResult {
             events: s
                 .events
                 .iter()
-                .map(|v| EventDto {
+                .enumerate()
+                .map(|(k, v)| EventDto {
                     kind: if v.kind == EventKind::End { "end" } else { "turn" }.into(),
                     angle: v.angle,
                     t: v.t,
                     speed: v.speed,
+                    t_energy_form: s.energy_times.get(k).copied().flatten(),
                 })
                 .collect(),
             energy_residual: s.energy_residual,
             accuracy: DynamicsAccuracy {
                 energy_residual: s.energy_residual,
+                energy_form_time_difference: s
+                    .events
+                    .iter()
+                    .zip(&s.energy_times)
+                    .filter_map(|(e, t)| t.map(|t| (e.t - t).abs()))
+                    .reduce(f64::max),
                 steps: s.steps,
                 function_evaluations: s.evaluations,
                 constraint_drift: None,

@@ -244,6 +244,7 @@ pub fn solve(p: &MechanismProblem) -> Result<MechanismSolution, DynamicsError> {
     let solution = DynamicsSolution {
         samples,
         events: run.events,
+        energy_times: Vec::new(),
         energy_residual: energy_residual(work, dae.kinetic(&first[n..2 * n]), dae.kinetic(&last[n..2 * n])),
         steps: run.attempted,
         evaluations: run.evaluations,

@@ -10,6 +10,7 @@
 //! reached in time; it fails with [`DynamicsError`] when the integration
 //! cannot go on or the compute budget runs out.
 
+mod energy_form;
 pub mod mechanism;
 pub mod reduced;
 mod rows;
@@ -59,6 +60,9 @@ pub struct Event {
 pub struct DynamicsSolution {
     pub samples: Vec<Sample>,
     pub events: Vec<Event>,
+    /// Reduced form with actions of φ only: each event's time by the energy
+    /// form t = ∫dφ/ω (None once the motion has turned back); else empty.
+    pub energy_times: Vec<Option<f64>>,
     /// (W − ΔT)/max(|W|, |ΔT|, T₀, T_end).
     pub energy_residual: f64,
     pub steps: usize,

@@ -8,8 +8,10 @@
 //! [0, period)); expressions may also read `omega` and `t`. Energy check:
 //! the work W = ∫M* dφ (quadrature over the angle travelled when M* depends
 //! on φ only, else the integrated power ∫M*ω dt) against the change of
-//! kinetic energy ΔT = ½I*ω² − ½I*₀ω₀².
+//! kinetic energy ΔT = ½I*ω² − ½I*₀ω₀². With actions of φ only, the
+//! events are also timed by the energy form ([`super::energy_form`]).
 
+use super::energy_form;
 use super::{DynamicsError, DynamicsSolution, End, Model, Sample, Settings, energy_residual, run, sample_states};
 use crate::engine::function::{Function, Side};
 use std::time::Duration;
@@ -71,7 +73,7 @@ impl ReducedProblem {
     }
 
     /// ∫ M* dφ from a to b, across periods.
-    fn work(&self, a: f64, b: f64) -> f64 {
+    pub(super) fn work(&self, a: f64, b: f64) -> f64 {
         let (lo, hi, sign) = if a <= b { (a, b, 1.0) } else { (b, a, -1.0) };
         let mut total = 0.0f64;
         let mut x = lo;
@@ -113,13 +115,23 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
     let (first, last) = (samples[0], samples[samples.len() - 1]);
     // Position-only actions: their work by quadrature over the angle (independent
     // of the integrator); otherwise the integrated power.
-    let w = if p.torques.iter().any(|(f, _)| f.uses_state()) {
-        run.steps.last().map_or(0.0, |s| s.component(run.t_end, 2))
-    } else {
+    let position_only = !p.torques.iter().any(|(f, _)| f.uses_state());
+    let w = if position_only {
         p.work(first.angle, last.angle)
+    } else {
+        run.steps.last().map_or(0.0, |s| s.component(run.t_end, 2))
+    };
+    let energy_times = if position_only {
+        // The first step whose end moves against the first event's direction.
+        let d = run.events.first().map_or(0.0, |e| (e.angle - p.angle0).signum());
+        let reversal = run.steps.iter().find(|s| s.y1[1] * d <= 0.0).map_or(f64::INFINITY, |s| s.t0);
+        energy_form::event_times(p, &run.events, reversal)
+    } else {
+        Vec::new()
     };
     Ok(DynamicsSolution {
         samples,
+        energy_times,
         energy_residual: energy_residual(w, p.kinetic(first.angle, first.speed), p.kinetic(last.angle, last.speed)),
         events: run.events,
         steps: run.attempted,
