@@ -22,6 +22,16 @@ pub struct Cli {
     /// Largest accepted request body, bytes.
     #[arg(long, env = "MECHDYN_MAX_BODY_BYTES", default_value_t = crate::api::DEFAULT_BODY_LIMIT, global = true)]
     pub max_body_bytes: usize,
+    /// Wall-clock compute budget of a dynamics job, seconds (a run over it is answered 422).
+    #[arg(long, env = "MECHDYN_JOB_SECONDS", default_value_t = 20.0, value_parser = positive_seconds, global = true)]
+    pub job_seconds: f64,
+}
+
+fn positive_seconds(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(v) if v > 0.0 && v <= 86_400.0 => Ok(v),
+        _ => Err(format!("{s:?} is not a number of seconds in (0, 86400]")),
+    }
 }
 
 #[derive(Subcommand, Debug)]

@@ -38,7 +38,8 @@ fn serve(cli: &Cli) -> ExitCode {
 
 async fn run(cli: &Cli) -> Result<(), String> {
     let store = Store::open(&cli.database).await.map_err(|e| format!("database {}: {e}", cli.database))?;
-    let app = api::router(AppState { store }, cli.max_body_bytes);
+    let state = AppState { job_budget: std::time::Duration::from_secs_f64(cli.job_seconds), ..AppState::new(store) };
+    let app = api::router(state, cli.max_body_bytes);
     let listener = tokio::net::TcpListener::bind(&cli.addr).await.map_err(|e| format!("bind {}: {e}", cli.addr))?;
     let local = listener.local_addr().map_err(|e| e.to_string())?;
     tracing::info!(addr = %local, database = %cli.database, "mechdyn listening; docs at http://{local}/docs");

@@ -24,6 +24,7 @@ use axum::routing::{get, post};
 use axum::{Extension, Json, Router};
 use problem::{ApiError, FieldError, Problem};
 use serde::Serialize;
+use std::time::Duration;
 use tower_http::trace::{DefaultMakeSpan, DefaultOnResponse, TraceLayer};
 use tracing::Level;
 use utoipa::{OpenApi, ToSchema};
@@ -33,6 +34,15 @@ use utoipa_swagger_ui::SwaggerUi;
 #[derive(Clone)]
 pub struct AppState {
     pub store: Store,
+    /// Wall-clock compute budget of a dynamics job.
+    pub job_budget: Duration,
+}
+
+impl AppState {
+    /// The state with the default limits.
+    pub fn new(store: Store) -> Self {
+        Self { store, job_budget: dynamics::BUDGET }
+    }
 }
 
 /// Path of the health check (also probed by `mechdyn healthcheck`).
@@ -53,7 +63,7 @@ is stored and readable later.\n\nQuantities are SI numbers or \"VALUE UNIT\" str
 with a JSON pointer for every invalid field.\n\nLimits: request body 1 MiB (configurable, 413); \
 expressions 2000 characters and 64 levels of nesting; tables 100000 rows; 1000 segments per function; \
 100 torques; 100000 result samples; 200 bodies and joints, 500 loads and 100000 steps per mechanism \
-(422 beyond them)."
+(422 beyond them); a dynamics job's compute budget 20 s (configurable; 422 with the reason)."
     ),
     paths(flywheel::create, kinetostatics::create, dynamics::create, gears::create, gear_train::create, equivalent::create, rotor::create, jobs::get, jobs::list, jobs::csv, healthz),
     components(schemas(

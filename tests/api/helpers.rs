@@ -36,13 +36,23 @@ impl TestApp {
         let dir = tempfile::tempdir().unwrap();
         let url = format!("sqlite://{}/sub/jobs.db", dir.path().display());
         let store = Store::open(&url).await.unwrap();
-        Self { app: router(AppState { store }, limit), url, _dir: dir }
+        Self { app: router(AppState::new(store), limit), url, _dir: dir }
     }
 
     /// The same database opened again, as after a restart.
     pub async fn restart(self) -> Self {
         let store = Store::open(&self.url).await.unwrap();
-        Self { app: router(AppState { store }, mechdyn::api::DEFAULT_BODY_LIMIT), ..self }
+        Self { app: router(AppState::new(store), mechdyn::api::DEFAULT_BODY_LIMIT), ..self }
+    }
+
+    /// A fresh app whose dynamics jobs have this compute budget.
+    pub async fn with_job_budget(budget: std::time::Duration) -> Self {
+        let app = Self::new().await;
+        let store = Store::open(&app.url).await.unwrap();
+        Self {
+            app: router(AppState { job_budget: budget, ..AppState::new(store) }, mechdyn::api::DEFAULT_BODY_LIMIT),
+            ..app
+        }
     }
 
     pub async fn send(&self, req: Request<Body>) -> Reply {

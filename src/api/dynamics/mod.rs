@@ -20,7 +20,8 @@ use utoipa::ToSchema;
 
 pub use machine::{DynamicsMachine, InputState, MachineDynamics, MachineSample};
 
-/// Wall-clock budget of one dynamics job: a run over it is stopped and answered 422.
+/// Default wall-clock budget of one dynamics job (`--job-seconds`): a run
+/// over it is stopped and answered 422.
 pub const BUDGET: Duration = Duration::from_secs(20);
 /// Longest simulated time, s.
 pub const MAX_DURATION: f64 = 1e5;
@@ -151,12 +152,22 @@ pub struct DynamicsResult {
     ))]
 pub async fn create(State(state): State<AppState>, body: JsonBody<DynamicsRequest>) -> Result<Response, ApiError> {
     let JsonBody { value, raw, unknown } = body;
-    jobs::create(&state, "dynamics", raw, move || compute(&value, unknown)).await
+    let budget = state.job_budget;
+    jobs::create(&state, "dynamics", raw, move || compute_within(&value, unknown, budget)).await
 }
 
-/// Validates and solves a request (also used by `mechdyn solve dynamics`).
+/// Validates and solves a request within the default budget (`mechdyn solve dynamics`).
 pub fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>) -> Result<DynamicsResult, ApiError> {
-    match validated(unknown, request.to_problem())? {
+    compute_within(request, unknown, BUDGET)
+}
+
+/// Validates and solves a request, stopping the integration after `budget`.
+pub fn compute_within(
+    request: &DynamicsRequest,
+    unknown: Vec<FieldError>,
+    budget: Duration,
+) -> Result<DynamicsResult, ApiError> {
+    match validated(unknown, request.to_problem(budget))? {
         Problem::Reduced(p) => Ok(DynamicsResult::from(solve(&p).map_err(invalid)?)),
         Problem::Machine(p, joints, bodies) => {
             let s = mechanism::solve(&p).map_err(invalid)?;
@@ -204,12 +215,13 @@ struct Common {
     period: f64,
     tolerance: f64,
     samples: usize,
+    budget: Duration,
 }
 
 impl DynamicsRequest {
-    fn to_problem(&self) -> Result<Problem, Vec<FieldError>> {
+    fn to_problem(&self, budget: Duration) -> Result<Problem, Vec<FieldError>> {
         let mut e = Errors::default();
-        let c = self.common(&mut e);
+        let c = self.common(&mut e, budget);
         let reduced = !self.torques.is_empty() || self.reduced_inertia.is_some();
         let problem = match (&self.machine, reduced) {
             (Some(m), false) => self.machine_problem(&mut e, m, &c),
@@ -222,7 +234,7 @@ impl DynamicsRequest {
         }
     }
 
-    fn common(&self, e: &mut Errors) -> Common {
+    fn common(&self, e: &mut Errors, budget: Duration) -> Common {
         let period = match &self.period {
             Some(q) => {
                 e.angle(q, "/period").filter(|p| *p > 0.0).or_else(|| e.fail("/period", "must be greater than 0"))
@@ -241,6 +253,7 @@ impl DynamicsRequest {
             period: period.unwrap_or(2.0 * PI),
             tolerance: tolerance.unwrap_or(1e-9),
             samples: samples.unwrap_or(DEFAULT_SAMPLES),
+            budget,
         }
     }
 
@@ -290,7 +303,7 @@ impl DynamicsRequest {
             end: end?,
             tolerance: c.tolerance,
             samples: c.samples,
-            budget: Some(BUDGET),
+            budget: Some(c.budget),
         }))
     }
 
@@ -307,7 +320,7 @@ impl DynamicsRequest {
             end,
             tolerance: c.tolerance,
             samples: c.samples,
-            budget: Some(BUDGET),
+            budget: Some(c.budget),
             reactions: m.reactions.unwrap_or(true),
         };
         Some(Problem::Machine(problem, parts.joint_names, parts.body_names))
