@@ -120,6 +120,11 @@ pub struct DynamicsAccuracy {
     /// an independent measure of the integration's error.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub energy_form_time_difference: Option<f64>,
+    /// Σ over the steps of the integrator's local error estimate of the angle,
+    /// rad (for a mechanism, the largest over its bodies' angles): a
+    /// first-order estimate of the global error that ignores its growth or
+    /// decay along the motion.
+    pub estimated_error: f64,
     pub steps: usize,
     pub function_evaluations: usize,
     /// Mechanism form: the largest constraint violation |Φ| (m or rad)
@@ -379,6 +384,7 @@ impl From<DynamicsSolution> for DynamicsResult {
                     .zip(&s.energy_times)
                     .filter_map(|(e, t)| t.map(|t| (e.t - t).abs()))
                     .reduce(f64::max),
+                estimated_error: s.estimated_error,
                 steps: s.steps,
                 function_evaluations: s.evaluations,
                 constraint_drift: None,

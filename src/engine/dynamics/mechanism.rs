@@ -248,6 +248,7 @@ pub fn solve(p: &MechanismProblem) -> Result<MechanismSolution, DynamicsError> {
         energy_residual: energy_residual(work, dae.kinetic(&first[n..2 * n]), dae.kinetic(&last[n..2 * n])),
         steps: run.attempted,
         evaluations: run.evaluations,
+        estimated_error: (0..n / 3).map(|b| run.local_errors[3 * b + 2]).fold(0.0, f64::max),
         stopped: run.stopped,
     };
     let near_singular = clusters(&dae.held_at.borrow(), run.t_end);

@@ -67,6 +67,10 @@ pub struct DynamicsSolution {
     pub energy_residual: f64,
     pub steps: usize,
     pub evaluations: usize,
+    /// Σ over the steps of the local error estimate of the angle (rad; for a
+    /// mechanism the largest over its bodies' angles): a first-order
+    /// estimate of the global error that ignores its growth or decay.
+    pub estimated_error: f64,
     /// Why the run stopped early (e.g. the end angle was not reached in time).
     pub stopped: Option<String>,
 }
@@ -121,6 +125,8 @@ pub(crate) struct Run {
     pub evaluations: usize,
     /// Largest constraint violation removed by a projection.
     pub drift: f64,
+    /// Σ of the local error estimates of each state component.
+    pub local_errors: Vec<f64>,
 }
 
 const MAX_STEPS: usize = 2_000_000;
@@ -167,6 +173,7 @@ pub(crate) fn run(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Run,
         attempted: ode.accepted + ode.rejected,
         evaluations: ode.evaluations,
         drift,
+        local_errors: ode.local_errors.clone(),
     })
 }
 

@@ -136,6 +136,7 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
         events: run.events,
         steps: run.attempted,
         evaluations: run.evaluations,
+        estimated_error: run.local_errors[0],
         stopped: run.stopped,
     })
 }

@@ -64,6 +64,10 @@ pub struct Dopri5 {
     pub accepted: usize,
     pub rejected: usize,
     pub evaluations: usize,
+    /// Σ over the accepted steps of each component's embedded error estimate
+    /// |y₅ − y₄|: a first-order estimate of the global error (it ignores how
+    /// errors grow or decay along the solution).
+    pub local_errors: Vec<f64>,
 }
 
 const C: [f64; 7] = [0.0, 0.2, 0.3, 0.8, 8.0 / 9.0, 1.0, 1.0];
@@ -111,6 +115,7 @@ impl Dopri5 {
             accepted: 0,
             rejected: 0,
             evaluations: 0,
+            local_errors: vec![0.0; n],
         };
         s.restart(f, t, y);
         s
@@ -164,6 +169,9 @@ impl Dopri5 {
             let err = self.error_norm(h);
             let factor = (0.9 * err.powf(-0.2)).clamp(0.2, 10.0);
             if err <= 1.0 {
+                for i in 0..self.y.len() {
+                    self.local_errors[i] += (h * (0..7).map(|j| E[j] * self.k[j][i]).sum::<f64>()).abs();
+                }
                 let step = self.accept(h);
                 self.h = (h * factor).min(self.h_max);
                 return Ok(step);
