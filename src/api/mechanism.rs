@@ -136,23 +136,9 @@ pub struct FrictionDto {
     pub radius: Option<Quantity>,
 }
 
-/// A planar mechanism drawn in one assembled configuration.
+/// A planar mechanism drawn in one assembled configuration (see the
+/// example of KinetostaticsRequest).
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
-#[schema(example = json!({
-    "points": {"O": [0, 0], "A": [0.08, 0], "B": [0.37933, 0.02]},
-    "bodies": [
-        {"name": "crank", "mass": 2.0, "inertia": 0.004, "cg": [0.02, 0]},
-        {"name": "rod", "mass": 1.2, "inertia": 0.012, "cg": [0.1698, 0.006]},
-        {"name": "piston", "mass": 0.9, "inertia": 0.001, "cg": "B"}
-    ],
-    "joints": [
-        {"name": "O", "type": "revolute", "bodies": ["ground", "crank"], "at": "O"},
-        {"name": "A", "type": "revolute", "bodies": ["crank", "rod"], "at": "A"},
-        {"name": "B", "type": "revolute", "bodies": ["rod", "piston"], "at": "B"},
-        {"name": "guide", "type": "prismatic", "bodies": ["ground", "piston"], "at": "B", "axis": [1, 0]}
-    ],
-    "gravity": [0, -9.81]
-}))]
 pub struct MechanismDto {
     /// Named points (m) in the drawn configuration.
     #[schema(value_type = Object)]
