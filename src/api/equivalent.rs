@@ -82,10 +82,8 @@ impl EquivalentRequest {
     fn validate(&self) -> Result<Link, Vec<FieldError>> {
         let mut e = Errors::default();
         let mass = e.positive(&self.mass, Dim::MASS, "/mass");
-        let inertia = e
-            .quantity(&self.inertia, Dim::INERTIA, "/inertia")
-            .filter(|i| *i >= 0.0)
-            .or_else(|| e.fail("/inertia", "must not be negative"));
+        let inertia = e.quantity(&self.inertia, Dim::INERTIA, "/inertia");
+        let inertia = e.require(inertia, |i| i >= 0.0, "/inertia", "must not be negative");
         let cg = match self.cg.as_slice() {
             [x, y] if x.is_finite() && y.is_finite() => Some([*x, *y]),
             _ => e.fail("/cg", "must be [x, y], finite"),

@@ -98,10 +98,10 @@ impl GearRequest {
             e.push("/teeth", "must be a number from 1 to 10000");
         }
         let pressure_angle = match &self.pressure_angle {
-            Some(q) => e
-                .angle(q, "/pressure_angle")
-                .filter(|a| *a > 0.0 && *a < 1.5)
-                .or_else(|| e.fail("/pressure_angle", "must be between 0 and 1.5 rad")),
+            Some(q) => {
+                let a = e.angle(q, "/pressure_angle");
+                e.require(a, |a| a > 0.0 && a < 1.5, "/pressure_angle", "must be between 0 and 1.5 rad")
+            }
             None => Some(20f64.to_radians()),
         };
         let share = |e: &mut Errors, v: Option<f64>, default: f64, at: &str| match v {

@@ -216,6 +216,15 @@ impl Errors {
         if v > 0.0 { Some(v) } else { self.fail(at, "must be greater than 0") }
     }
 
+    /// A value already read (None: its error is recorded) that must also pass
+    /// `ok`; one message per field.
+    pub fn require(&mut self, v: Option<f64>, ok: impl Fn(f64) -> bool, at: &str, message: &str) -> Option<f64> {
+        match v? {
+            v if ok(v) => Some(v),
+            _ => self.fail(at, message),
+        }
+    }
+
     pub fn fail<T>(&mut self, at: &str, message: impl Into<String>) -> Option<T> {
         self.push(at, message);
         None

@@ -87,6 +87,12 @@ async fn the_end_condition_and_the_inertia_are_checked() {
     let r = app.post("/v1/dynamics", &negative).await;
     assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY);
     assert_eq!(r.json()["errors"][0]["pointer"], "/reduced_inertia");
+    // One message per invalid field, the one that applies.
+    let r = app.post("/v1/dynamics", &d1(json!({"duration": "-1 s", "period": "3 kg"}))).await;
+    let errors = r.json()["errors"].clone();
+    assert_eq!(errors.as_array().unwrap().len(), 2, "{errors}");
+    assert_eq!((errors[0]["pointer"].as_str(), errors[1]["pointer"].as_str()), (Some("/period"), Some("/duration")));
+    assert!(errors[1]["message"].as_str().unwrap().contains("greater than 0"), "{errors}");
 }
 
 /// Actions that depend on the speed and on time. From rest with I* = 2:

@@ -242,7 +242,8 @@ impl DynamicsRequest {
     fn common(&self, e: &mut Errors, budget: Duration) -> Common {
         let period = match &self.period {
             Some(q) => {
-                e.angle(q, "/period").filter(|p| *p > 0.0).or_else(|| e.fail("/period", "must be greater than 0"))
+                let p = e.angle(q, "/period");
+                e.require(p, |p| p > 0.0, "/period", "must be greater than 0")
             }
             None => None,
         };
@@ -333,9 +334,8 @@ impl DynamicsRequest {
 
     fn end(&self, e: &mut Errors, angle0: f64) -> Option<End> {
         let time = |e: &mut Errors, q: &Quantity, at: &str| {
-            e.positive(q, Dim::TIME, at)
-                .filter(|t| *t <= MAX_DURATION)
-                .or_else(|| e.fail(at, format!("must be at most {MAX_DURATION} s")))
+            let t = e.positive(q, Dim::TIME, at);
+            e.require(t, |t| t <= MAX_DURATION, at, &format!("must be at most {MAX_DURATION} s"))
         };
         match (&self.duration, &self.until_angle) {
             (Some(d), None) => time(e, d, "/duration").map(End::Duration),
