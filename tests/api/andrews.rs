@@ -14,7 +14,7 @@
 //! The service sees a drawing: every point placed by the published
 //! parameters at the published initial angles (checked to close at E).
 
-use crate::helpers::{TestApp, close};
+use crate::helpers::{TestApp, close, request};
 use axum::http::StatusCode;
 use serde_json::{Value, json};
 
@@ -159,6 +159,8 @@ const SCIPY: State = State {
 #[tokio::test]
 async fn a03_andrews_squeezer_matches_the_test_set_reference_at_30_ms() {
     let app = TestApp::new().await;
+    // The fixture (for benches and users) is this request, bit for bit.
+    assert_eq!(request("a03_andrews_squeezer"), squeezer());
     let r = app.post("/v1/dynamics", &squeezer()).await;
     assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
     let result = r.json()["result"].clone();
