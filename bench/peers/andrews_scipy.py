@@ -7,7 +7,8 @@ by SciPy's DOP853. A second method for tests/api/andrews.rs, which builds the
 same mechanism as bodies and joints and integrates it in the service.
 
     python3 -m venv .venv && .venv/bin/pip install numpy scipy
-    .venv/bin/python bench/peers/andrews_scipy.py
+    .venv/bin/python bench/peers/andrews_scipy.py                    # the reference values
+    .venv/bin/python bench/peers/andrews_scipy.py --work-precision   # timings, JSON lines
 """
 
 import numpy as np
@@ -109,9 +110,36 @@ Q0 = [-0.0617138900142764496358948458001, 0.0, 0.455279819163070380255912382449,
       0.222668390165885884674473185609, 0.487364979543842550225598953530,
       -0.222668390165885884674473185609, 1.23054744454982119249735015568]
 
-if __name__ == "__main__":
+def reference():
+    """The state at 0.03 s at rtol 1e-11 and 1e-13 (the values in tests/api/andrews.rs)."""
     y0 = np.concatenate([Q0, np.zeros(7)])
     for rtol in (1e-11, 1e-13):
         y = solve_ivp(rhs, (0.0, 0.03), y0, method="DOP853", rtol=rtol, atol=rtol * 1e-2).y[:, -1]
         lam = [float(v) for v in accelerations(y)[1]]
         print(f"rtol {rtol:g}: beta {float(y[0])!r}, beta' {float(y[7])!r}, lambda {lam}")
+
+
+def work_precision():
+    """One JSON line per method and tolerance: the error of beta at 0.03 s
+    against the rtol-1e-13 reference, the best wall time of 3 runs, and the
+    right-hand-side evaluations (for benches/work_precision.rs)."""
+    import json
+    import time
+
+    beta_ref = 15.810771195153972
+    y0 = np.concatenate([Q0, np.zeros(7)])
+    for method, tols in (("DOP853", (1e-4, 1e-6, 1e-8, 1e-10)), ("Radau", (1e-4, 1e-6, 1e-8))):
+        for rtol in tols:
+            best, sol = float("inf"), None
+            for _ in range(3):
+                start = time.perf_counter()
+                sol = solve_ivp(rhs, (0.0, 0.03), y0, method=method, rtol=rtol, atol=rtol * 1e-2)
+                best = min(best, time.perf_counter() - start)
+            error = abs(float(sol.y[0, -1]) - beta_ref)
+            print(json.dumps({"peer": f"SciPy {method}", "rtol": rtol, "error": error, "seconds": best, "evaluations": int(sol.nfev)}))
+
+
+if __name__ == "__main__":
+    import sys
+
+    work_precision() if "--work-precision" in sys.argv else reference()
