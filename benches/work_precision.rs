@@ -13,6 +13,7 @@
 //! service's own tightest run to 2e-14).
 
 use mechdyn::api::dynamics::{DynamicsRequest, DynamicsResult, compute};
+use mechdyn::api::kinetostatics::{self, KinetostaticsRequest, Scalars};
 use plotters::prelude::*;
 use serde_json::{Value, json};
 use std::fmt::Write as _;
@@ -87,18 +88,22 @@ fn a03(tolerance: f64) -> Point {
     }
 }
 
-/// The SciPy peer's points, or why there are none.
-fn scipy() -> Result<Vec<Point>, String> {
-    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/bench/peers/andrews_scipy.py");
+/// A peer script's standard output, or why there is none.
+fn run_peer(script: &str, args: &[&str]) -> Result<String, String> {
+    let script = format!("{}/bench/peers/{script}", env!("CARGO_MANIFEST_DIR"));
     let venv = concat!(env!("CARGO_MANIFEST_DIR"), "/.venv/bin/python");
     let python = if std::path::Path::new(venv).exists() { venv } else { "python3" };
-    let out =
-        Command::new(python).arg(script).arg("--work-precision").output().map_err(|e| format!("{python}: {e}"))?;
+    let out = Command::new(python).arg(&script).args(args).output().map_err(|e| format!("{python}: {e}"))?;
     if !out.status.success() {
         let err = String::from_utf8_lossy(&out.stderr);
         return Err(format!("{python} {script} failed: {}", err.lines().last().unwrap_or("")));
     }
-    let text = String::from_utf8_lossy(&out.stdout);
+    Ok(String::from_utf8_lossy(&out.stdout).into_owned())
+}
+
+/// The SciPy peer's points, or why there are none.
+fn scipy() -> Result<Vec<Point>, String> {
+    let text = run_peer("andrews_scipy.py", &["--work-precision"])?;
     Ok(text
         .lines()
         .filter_map(|line| serde_json::from_str::<Value>(line).ok())
@@ -122,6 +127,50 @@ fn time_at(peer: &[Point], error: f64) -> Option<f64> {
         let f = (x - w[0].0) / (w[1].0 - w[0].0);
         (w[0].1 + f * (w[1].1 - w[0].1)).exp()
     })
+}
+
+/// K1 at 3600 positions with every reaction and the virtual-power check,
+/// against the NumPy peer (driving torque only): a markdown paragraph.
+fn kinetostatics_section() -> String {
+    let mut body = fixture("requests/k1_offset_slider_crank.json");
+    body["input"]["steps"] = json!(3600);
+    let request: KinetostaticsRequest = serde_json::from_value(body).expect("request");
+    let mut best = f64::INFINITY;
+    let mut torques = Vec::new();
+    for _ in 0..5 {
+        let start = Instant::now();
+        let r = kinetostatics::compute(&request, Vec::new()).expect("solved");
+        best = best.min(start.elapsed().as_secs_f64());
+        torques = r.steps.iter().map(|s| if let Some(Scalars::One(t)) = s.driving { t } else { f64::NAN }).collect();
+    }
+    let mut text = format!(
+        "## Kinetostatics: K1, 3600 positions\n\nmechdyn, every joint reaction, I*, M* and the virtual-power check: \
+         {:.3} ms ({:.2} µs per position).\n",
+        best * 1e3,
+        best * 1e6 / 3600.0
+    );
+    match run_peer("kinetostatics_numpy.py", &["3600"])
+        .and_then(|t| serde_json::from_str::<Value>(&t).map_err(|e| e.to_string()))
+    {
+        Ok(peer) => {
+            let seconds = peer["seconds"].as_f64().unwrap_or(f64::NAN);
+            let want: Vec<f64> =
+                peer["torque"].as_array().map_or(Vec::new(), |v| v.iter().filter_map(Value::as_f64).collect());
+            let scale = want.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            let gap = torques.iter().zip(&want).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max) / scale;
+            let _ = writeln!(
+                text,
+                "NumPy peer (closed-form kinematics and numpy.linalg.solve per position, driving torque only): \
+                 {:.1} ms; mechdyn is {:.0}× faster; largest difference of the driving torques {gap:.1e} of the largest.",
+                seconds * 1e3,
+                seconds / best
+            );
+        }
+        Err(why) => {
+            let _ = writeln!(text, "The NumPy peer was skipped: {why}.");
+        }
+    }
+    text
 }
 
 fn machine() -> String {
@@ -215,6 +264,8 @@ fn main() {
             "\nThe SciPy peer was skipped: {why}. Install it with `python3 -m venv .venv && .venv/bin/pip install numpy scipy`."
         );
     }
+    doc.push('\n');
+    doc.push_str(&kinetostatics_section());
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/docs");
     let _ = std::fs::create_dir_all(dir);
     if let Err(e) = plot(&points, &format!("{dir}/work_precision_dynamics.svg")) {

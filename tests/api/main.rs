@@ -11,6 +11,7 @@ mod gears;
 mod helpers;
 mod jobs;
 mod kinetostatics;
+mod peers;
 mod robot_arm;
 mod rotor;
 mod seed_exams;

@@ -8,7 +8,7 @@ pub(crate) use loads::convert_loads;
 pub use loads::{LoadDto, LoadType};
 pub(crate) use request::machine_parts;
 pub use request::{InputDto, Inputs, KinetostaticsRequest, OutputKind};
-pub use result::{KinetostaticsResult, ReactionDto, csv_table};
+pub use result::{KinetostaticsResult, ReactionDto, Scalars, csv_table};
 
 use super::json::JsonBody;
 use super::problem::{ApiError, FieldError, PostErrors};
