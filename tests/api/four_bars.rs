@@ -29,7 +29,7 @@ fn speed(theta: f64) -> f64 {
     (OMEGA0 * OMEGA0 + 2.0 * (potential(PI / 2.0) - potential(theta)) / inertia).sqrt()
 }
 
-/// ∫ dθ/θ̇ from a to b: 400 panels of 5-point Gauss–Legendre (θ̇ > 4 rad/s
+/// ∫ dθ/θ̇ from a to b: 400 panels of 5-point Gauss–Legendre (θ̇ ≥ 6 rad/s
 /// and smooth, so far below 1e-12).
 fn time(a: f64, b: f64) -> f64 {
     let nodes = [
