@@ -14,8 +14,8 @@
 //! the drift stays at the step's local error instead of growing with time;
 //! the largest violation removed is reported. The multipliers λ give the
 //! joint reactions at the samples (−Φ_qᵀλ are the constraint forces).
-//! Redundant constraints make the matrix singular in λ only: the
-//! minimum-norm solution (SVD) is used then and those reactions are flagged.
+//! Redundant constraints, and the nearly dependent rows at a singular
+//! position, are handled by [`super::rows`]: those reactions are flagged.
 
 use super::rows::Rows;
 use super::{DynamicsError, DynamicsSolution, End, Model, Sample, Settings, energy_residual, run, sample_states};
@@ -178,16 +178,16 @@ impl Model for Dae<'_> {
             removed = removed.max(phi.amax());
             // A held or dropped combination is not corrected in position.
             let rows = Rows::of(&jac, &self.scale);
-            let (motion, jac, phi) = (rows.motion(jac.clone()), rows.positions(jac), rows.position_residual(phi));
+            let phi = rows.position_residual(phi);
             if phi.amax() <= self.tol {
-                let jac = motion;
+                let jac = rows.motion(jac);
                 let v = &jac * DVector::from_column_slice(&y[n..2 * n]);
                 if let Some(dv) = Self::min_norm(&jac, &(-v)) {
                     y[n..2 * n].iter_mut().zip(dv.iter()).for_each(|(a, d)| *a += d);
                 }
                 break;
             }
-            let Some(dq) = Self::min_norm(&jac, &(-phi)) else { break };
+            let Some(dq) = Self::min_norm(&rows.positions(jac), &(-phi)) else { break };
             y[..n].iter_mut().zip(dq.iter()).for_each(|(a, d)| *a += d);
         }
         removed
