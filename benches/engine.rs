@@ -1,6 +1,8 @@
-//! Engine timings: `cargo bench`. Prints wall time per job or per step (the
-//! median of several runs) on this machine; no assertions (benchmarks are not
-//! tests). Shows what computing only what is asked buys.
+//! Engine timings: `cargo bench --bench engine [-- flywheel|kinetostatics]`.
+//! Prints wall time per job or per step (the fastest of several runs: this
+//! shared machine adds ±30 % of noise, never removes time) on this machine;
+//! no assertions (benchmarks are not tests). Shows what computing only what
+//! is asked buys.
 
 use mechdyn::engine::expr::Expr;
 use mechdyn::engine::flywheel::{FlywheelProblem, Load as TorqueLoad, TorqueItem, solve as flywheel};
@@ -11,17 +13,21 @@ use std::f64::consts::PI;
 use std::hint::black_box;
 use std::time::Instant;
 
-/// Median wall time of `runs` calls, in microseconds.
-fn median_us(runs: usize, mut f: impl FnMut()) -> f64 {
-    let mut t: Vec<f64> = (0..runs)
+/// Fastest wall time of `runs` calls, in microseconds.
+fn best_us(runs: usize, mut f: impl FnMut()) -> f64 {
+    (0..runs)
         .map(|_| {
             let start = Instant::now();
             f();
             start.elapsed().as_secs_f64() * 1e6
         })
-        .collect();
-    t.sort_by(f64::total_cmp);
-    t[runs / 2]
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Whether the command line (after `--`) selects this group; none selects all.
+fn selected(group: &str) -> bool {
+    let args: Vec<String> = std::env::args().skip(1).filter(|a| !a.starts_with('-')).collect();
+    args.is_empty() || args.iter().any(|a| group.contains(a.as_str()))
 }
 
 fn p103(check: bool, inertia: Function) -> FlywheelProblem {
@@ -52,17 +58,29 @@ fn p103(check: bool, inertia: Function) -> FlywheelProblem {
 fn main() {
     println!("| job | what | time |");
     println!("|---|---|---|");
+    if selected("flywheel") {
+        flywheels();
+    }
+    if selected("kinetostatics") {
+        kinetostatics();
+    }
+}
+
+fn flywheels() {
     let variable = || Function::Expr(Expr::compile("5*sin(phi)^2", &["phi"]).unwrap());
     for (what, p) in [
         ("P.103, I* = 5 sin²φ, exact + time check", p103(true, variable())),
         ("P.103, I* = 5 sin²φ, exact, no check", p103(false, variable())),
         ("P.103, I* constant (closed form), no check", p103(false, Function::Constant(5.0))),
     ] {
-        let t = median_us(51, || {
+        let t = best_us(51, || {
             black_box(flywheel(&p).unwrap());
         });
         println!("| flywheel | {what} | {t:.0} µs/job |");
     }
+}
+
+fn kinetostatics() {
     let m = offset_slider_crank();
     let b = m.joints[2].at;
     let gas = Function::Expr(Expr::compile("-8000*exp(3*(cos(phi - 0.35) - 1))", &["phi"]).unwrap());
@@ -73,7 +91,7 @@ fn main() {
         ("all reactions + I*, M* + virtual-power check", Outputs { reactions: true, reduced: true, kinematics: false }),
         ("driving torque only (virtual power)", Outputs { reactions: false, reduced: false, kinematics: false }),
     ] {
-        let t = median_us(5, || {
+        let t = best_us(15, || {
             black_box(solve(&m, &loads, &positions, outputs).unwrap());
         });
         println!("| kinetostatics | slider-crank, 3600 steps, {what} | {:.2} µs/step |", t / n as f64);

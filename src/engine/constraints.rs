@@ -7,7 +7,7 @@
 //! the first body, a "projection" row is eᵀd: the normal of a slide
 //! (prismatic, pin-in-slot) or the axis of a driven prismatic joint.
 
-use super::model::{BodyId, JointKind, Mechanism, dot, perp, rotate, rotate_d};
+use super::model::{BodyId, JointKind, Mechanism, dot, perp};
 use nalgebra::{DMatrix, DVector};
 
 /// Φ, Φ_q and γ at one state.
@@ -47,10 +47,23 @@ pub fn joint_offsets(m: &Mechanism) -> Vec<usize> {
 struct Builder<'a> {
     m: &'a Mechanism,
     s: &'a State<'a>,
+    /// (sin θ, cos θ) of every body, ground first: one evaluation each.
+    trig: Vec<(f64, f64)>,
     sys: System,
 }
 
 impl Builder<'_> {
+    /// A(θ_b)·s.
+    fn rot(&self, b: BodyId, s: [f64; 2]) -> [f64; 2] {
+        let (sn, cs) = self.trig[b];
+        [cs * s[0] - sn * s[1], sn * s[0] + cs * s[1]]
+    }
+
+    /// B(θ_b)·s = A(θ_b)·(−s_y, s_x).
+    fn rot_d(&self, b: BodyId, s: [f64; 2]) -> [f64; 2] {
+        self.rot(b, [-s[1], s[0]])
+    }
+
     fn pose(&self, b: BodyId) -> ([f64; 2], f64) {
         match self.m.column(b) {
             Some(c) => ([self.s.q[c], self.s.q[c + 1]], self.s.q[c + 2]),
@@ -75,8 +88,8 @@ impl Builder<'_> {
 
     /// Point `s` of body b: position, velocity.
     fn point(&self, b: BodyId, s: [f64; 2]) -> ([f64; 2], [f64; 2]) {
-        let ((r, th), (rd, thd)) = (self.pose(b), self.rates(b));
-        let (a, bs) = (rotate(th, s), rotate_d(th, s));
+        let ((r, _), (rd, thd)) = (self.pose(b), self.rates(b));
+        let (a, bs) = (self.rot(b, s), self.rot_d(b, s));
         ([r[0] + a[0], r[1] + a[1]], [rd[0] + bs[0] * thd, rd[1] + bs[1] * thd])
     }
 
@@ -84,10 +97,9 @@ impl Builder<'_> {
     fn revolute(&mut self, row: usize, [i, j]: [BodyId; 2], at: [f64; 2]) {
         let (si, sj) = (self.m.local(i, at), self.m.local(j, at));
         let ((pi, _), (pj, _)) = (self.point(i, si), self.point(j, sj));
-        let ((_, ti), (_, tj)) = (self.pose(i), self.pose(j));
         let ((_, wi), (_, wj)) = (self.rates(i), self.rates(j));
-        let (bi, bj) = (rotate_d(ti, si), rotate_d(tj, sj));
-        let (ai, aj) = (rotate(ti, si), rotate(tj, sj));
+        let (bi, bj) = (self.rot_d(i, si), self.rot_d(j, sj));
+        let (ai, aj) = (self.rot(i, si), self.rot(j, sj));
         for k in 0..2 {
             self.sys.phi[row + k] = pi[k] - pj[k];
             let e = if k == 0 { [1.0, 0.0] } else { [0.0, 1.0] };
@@ -101,14 +113,13 @@ impl Builder<'_> {
     fn projection(&mut self, row: usize, [i, j]: [BodyId; 2], at: [f64; 2], e0: [f64; 2], target: f64) {
         let (si, sj) = (self.m.local(i, at), self.m.local(j, at));
         let ((pi, vi), (pj, vj)) = (self.point(i, si), self.point(j, sj));
-        let ((_, ti), (_, tj)) = (self.pose(i), self.pose(j));
         let ((_, wi), (_, wj)) = (self.rates(i), self.rates(j));
         let (d, dd) = ([pj[0] - pi[0], pj[1] - pi[1]], [vj[0] - vi[0], vj[1] - vi[1]]);
-        let (e, de) = (rotate(ti, e0), rotate_d(ti, e0));
+        let (e, de) = (self.rot(i, e0), self.rot_d(i, e0));
         self.sys.phi[row] = dot(e, d) - target;
-        self.add(row, i, [-e[0], -e[1]], dot(de, d) - dot(e, rotate_d(ti, si)));
-        self.add(row, j, e, dot(e, rotate_d(tj, sj)));
-        let (ai, aj) = (rotate(ti, si), rotate(tj, sj));
+        self.add(row, i, [-e[0], -e[1]], dot(de, d) - dot(e, self.rot_d(i, si)));
+        self.add(row, j, e, dot(e, self.rot_d(j, sj)));
+        let (ai, aj) = (self.rot(i, si), self.rot(j, sj));
         let centripetal = [ai[0] * wi * wi - aj[0] * wj * wj, ai[1] * wi * wi - aj[1] * wj * wj];
         self.sys.gamma[row] = dot(e, d) * wi * wi - 2.0 * wi * dot(de, dd) - dot(e, centripetal);
     }
@@ -126,7 +137,8 @@ impl Builder<'_> {
 pub fn evaluate(m: &Mechanism, s: &State) -> System {
     let (rows, n) = (n_rows(m), m.n_coordinates());
     let sys = System { phi: DVector::zeros(rows), jacobian: DMatrix::zeros(rows, n), gamma: DVector::zeros(rows) };
-    let mut b = Builder { m, s, sys };
+    let trig = (0..m.bodies.len()).map(|b| m.column(b).map_or((0.0, 1.0), |c| s.q[c + 2].sin_cos())).collect();
+    let mut b = Builder { m, s, trig, sys };
     let mut row = 0;
     for joint in &m.joints {
         let [i, j] = joint.bodies;

@@ -8,6 +8,7 @@
 use super::EngineError;
 use super::constraints::{State, System, evaluate, nu};
 use super::model::Mechanism;
+use super::numeric::dense::Lu;
 use nalgebra::{DMatrix, DVector};
 
 /// Newton iterations allowed per position.
@@ -26,9 +27,13 @@ pub struct Configuration {
     pub qdd: Vec<f64>,
     /// Velocity coefficients g = dq/dφ (one input only).
     pub g: Option<Vec<f64>>,
-    /// Φ_q here, kept for the multipliers (empty at a singular position).
+    /// Φ_q here, kept for the reactions (empty at a singular position).
     pub jacobian: DMatrix<f64>,
-    /// Condition number of Φ_q (2-norm).
+    /// LU of Φ_q when it is square, for the multipliers (Φ_qᵀλ = b).
+    pub lu: Option<Lu>,
+    /// Condition number of Φ_q: κ₁ = ‖Φ_q‖₁‖Φ_q⁻¹‖₁ when it is square (the
+    /// 1-norm, LAPACK's measure, within a factor n of the 2-norm one), else
+    /// the 2-norm σ_max/σ_min.
     pub condition: f64,
     pub iterations: usize,
     pub residual: f64,
@@ -40,10 +45,11 @@ pub struct Configuration {
 /// Solves A x = b: LU when A is square and regular, else least squares (SVD).
 pub fn solve_linear(a: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
     if a.is_square()
-        && let Some(x) = a.clone().lu().solve(b)
+        && let Some(lu) = Lu::new(a)
+        && let x = lu.solve(b.as_slice())
         && x.iter().all(|v| v.is_finite())
     {
-        return Some(x);
+        return Some(DVector::from_vec(x));
     }
     let svd = a.clone().svd(true, true);
     let tol = 1e-12 * svd.singular_values.max();
@@ -57,8 +63,14 @@ pub fn condition(a: &DMatrix<f64>) -> f64 {
     if min > 0.0 { max / min } else { f64::INFINITY }
 }
 
-/// Newton–Raphson from `q` to Φ = 0 at the given inputs.
-pub fn assemble(m: &Mechanism, q: &mut [f64], inputs: &[[f64; 3]], step: usize) -> Result<(usize, f64), EngineError> {
+/// Newton–Raphson from `q` to Φ = 0 at the given inputs: the iterations,
+/// the final |Φ|∞ and Φ, Φ_q there.
+pub fn assemble(
+    m: &Mechanism,
+    q: &mut [f64],
+    inputs: &[[f64; 3]],
+    step: usize,
+) -> Result<(usize, f64, System), EngineError> {
     let scale = 1.0 + q.iter().fold(0.0f64, |a, v| a.max(v.abs()));
     let tol = 1e-13 * scale;
     let mut residual = f64::INFINITY;
@@ -66,7 +78,7 @@ pub fn assemble(m: &Mechanism, q: &mut [f64], inputs: &[[f64; 3]], step: usize) 
         let sys = evaluate(m, &State { q, qd: None, inputs });
         residual = sys.phi.amax();
         if residual <= tol {
-            return Ok((iteration, residual));
+            return Ok((iteration, residual, sys));
         }
         let Some(dq) = solve_linear(&sys.jacobian, &(-&sys.phi)) else { break };
         for (v, d) in q.iter_mut().zip(dq.iter()) {
@@ -76,21 +88,35 @@ pub fn assemble(m: &Mechanism, q: &mut [f64], inputs: &[[f64; 3]], step: usize) 
     Err(EngineError::NewtonDiverged { step, input: inputs.first().map_or(0.0, |i| i[0]), residual })
 }
 
-/// Velocities and accelerations at an assembled q.
-pub fn motion(m: &Mechanism, q: &[f64], inputs: &[[f64; 3]]) -> Option<(Vec<f64>, Vec<f64>, System)> {
-    let sys = evaluate(m, &State { q, qd: None, inputs });
+/// Velocities and accelerations at an assembled q, with Φ_q's factorisation.
+pub struct Solved {
+    pub qd: Vec<f64>,
+    pub qdd: Vec<f64>,
+    pub sys: System,
+    /// LU of Φ_q when it is square and regular.
+    pub lu: Option<Lu>,
+}
+
+impl Solved {
+    /// The 2-norm condition number of Φ_q.
+    fn condition(&self) -> f64 {
+        condition(&self.sys.jacobian)
+    }
+}
+
+/// Velocities and accelerations at a q assembled by [`assemble`], which
+/// gave `sys` there (Φ_q does not depend on the input speeds).
+pub fn motion(m: &Mechanism, q: &[f64], inputs: &[[f64; 3]], sys: System) -> Option<Solved> {
     // One factorisation for the velocity and the acceleration.
-    let lu = sys.jacobian.is_square().then(|| sys.jacobian.clone().lu());
-    let solve = |b: &DVector<f64>| {
-        lu.as_ref()
-            .and_then(|lu| lu.solve(b))
-            .filter(|x| x.iter().all(|v| v.is_finite()))
-            .or_else(|| solve_linear(&sys.jacobian, b))
+    let lu = if sys.jacobian.is_square() { Lu::new(&sys.jacobian) } else { None };
+    let solve = |b: &DVector<f64>| match &lu {
+        Some(lu) => Some(lu.solve(b.as_slice())).filter(|x| x.iter().all(|v| v.is_finite())),
+        None => solve_linear(&sys.jacobian, b).map(|x| x.as_slice().to_vec()),
     };
-    let qd: Vec<f64> = solve(&nu(m, inputs))?.iter().copied().collect();
+    let qd = solve(&nu(m, inputs))?;
     let with_speed = evaluate(m, &State { q, qd: Some(&qd), inputs });
     let qdd = solve(&with_speed.gamma)?;
-    Some((qd, qdd.iter().copied().collect(), with_speed))
+    Some(Solved { qd, qdd, sys: with_speed, lu })
 }
 
 /// The configurations along the given input positions, starting from the
@@ -110,7 +136,7 @@ pub fn sweep(m: &Mechanism, positions: &[Vec<[f64; 3]>]) -> Result<Vec<Configura
             let d = inputs[0][0] - from;
             q.iter_mut().enumerate().for_each(|(k, v)| *v += g[k] * d + 0.5 * h[k] * d * d);
         }
-        let (iterations, residual) = match assemble(m, &mut q, inputs, step) {
+        let (iterations, residual, sys) = match assemble(m, &mut q, inputs, step) {
             Ok(r) => r,
             // One position that will not assemble between two that do is a
             // singular point passed; two in a row is a position out of reach.
@@ -125,10 +151,10 @@ pub fn sweep(m: &Mechanism, positions: &[Vec<[f64; 3]>]) -> Result<Vec<Configura
         // One input: g = dq/dφ and h = d²q/dφ² give q̇ = gω and q̈ = gα + hω²
         // (γ is quadratic in q̇), and they are the next step's predictor.
         let single = m.drivers.len() == 1;
-        let solved = if single { motion(m, &q, &[[inputs[0][0], 1.0, 0.0]]) } else { motion(m, &q, inputs) };
-        let cond = solved.as_ref().map_or(f64::INFINITY, |(_, _, sys)| condition(&sys.jacobian));
+        let solved = if single { motion(m, &q, &[[inputs[0][0], 1.0, 0.0]], sys) } else { motion(m, &q, inputs, sys) };
+        let cond = solved.as_ref().map_or(f64::INFINITY, Solved::condition);
         match solved {
-            Some((a, b, sys)) if cond <= SINGULAR_CONDITION => {
+            Some(Solved { qd: a, qdd: b, sys, lu }) if cond <= SINGULAR_CONDITION => {
                 let (qd, qdd, g) = if single {
                     let [_, w, alpha] = inputs[0];
                     let qd = a.iter().map(|g| g * w).collect();
@@ -146,6 +172,7 @@ pub fn sweep(m: &Mechanism, positions: &[Vec<[f64; 3]>]) -> Result<Vec<Configura
                     qdd,
                     g,
                     jacobian,
+                    lu,
                     condition: cond,
                     iterations,
                     residual,
@@ -166,7 +193,7 @@ impl Configuration {
         let n = q.len();
         let (qd, qdd) = (vec![0.0; n], vec![0.0; n]);
         let jacobian = DMatrix::zeros(0, 0);
-        Self { q, qd, qdd, g: None, jacobian, condition, iterations: 0, residual: f64::NAN, singular: true }
+        Self { q, qd, qdd, g: None, jacobian, lu: None, condition, iterations: 0, residual: f64::NAN, singular: true }
     }
 }
 

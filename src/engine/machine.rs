@@ -12,7 +12,7 @@
 //! see the true functions, not an interpolation of a coarse grid.
 
 use super::EngineError;
-use super::kinematics::{assemble, motion, sweep};
+use super::kinematics::{Solved, assemble, motion, sweep};
 use super::kinetostatics::{Load, applied_forces};
 use super::model::Mechanism;
 use std::sync::Mutex;
@@ -114,8 +114,8 @@ impl Machine {
         // turn): the same configuration, and Newton starts next to it instead
         // of a whole turn away, where it may settle on the other branch.
         let unit = [[at + d, 1.0, 0.0]];
-        assemble(&self.mechanism, &mut q, &unit, 0).ok()?;
-        let (g, h, _) = motion(&self.mechanism, &q, &unit)?;
+        let (_, _, sys) = assemble(&self.mechanism, &mut q, &unit, 0).ok()?;
+        let Solved { qd: g, qdd: h, .. } = motion(&self.mechanism, &q, &unit, sys)?;
         let m = &self.mechanism;
         let mass = |k: usize| {
             let b = &m.bodies[k / 3 + 1];

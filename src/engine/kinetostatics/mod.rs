@@ -239,7 +239,10 @@ fn multipliers(
     input: f64,
 ) -> Result<(Vec<f64>, Vec<Reaction>), EngineError> {
     let jac = &c.jacobian;
-    let lambda = solve_linear(&jac.transpose(), &(-inertial)).ok_or(EngineError::Singular { step, input })?;
+    let lambda = match &c.lu {
+        Some(lu) => -DVector::from_vec(lu.solve_transposed(inertial.as_slice())),
+        None => solve_linear(&jac.transpose(), &(-inertial)).ok_or(EngineError::Singular { step, input })?,
+    };
     let first_driver = lambda.len() - m.drivers.len();
     let driving = (first_driver..lambda.len()).map(|r| -lambda[r]).collect();
     let Some(indeterminate) = reactions_with else { return Ok((driving, Vec::new())) };
