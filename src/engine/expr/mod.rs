@@ -11,8 +11,10 @@
 
 mod node;
 mod parse;
+mod program;
 
 use node::Node;
+use program::Program;
 
 /// Longest accepted expression, in characters.
 pub const MAX_LENGTH: usize = 2000;
@@ -31,6 +33,8 @@ pub struct ExprError {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Expr {
     root: Node,
+    /// The same in postfix order, unless too deep for its stack.
+    program: Option<Program>,
 }
 
 impl Expr {
@@ -44,14 +48,20 @@ impl Expr {
                 message: format!("expression has {length} characters; the maximum is {MAX_LENGTH}"),
             });
         }
-        let root = parse::Parser::parse(source, variables, MAX_DEPTH)?.fold();
-        Ok(Self { root })
+        Ok(Self::from_root(parse::Parser::parse(source, variables, MAX_DEPTH)?.fold()))
+    }
+
+    fn from_root(root: Node) -> Self {
+        Self { program: Program::new(&root), root }
     }
 
     /// Value for the variable values `vars` (same order as at compilation).
     #[inline]
     pub fn eval(&self, vars: &[f64]) -> f64 {
-        self.root.eval(vars)
+        match &self.program {
+            Some(p) => p.eval(vars),
+            None => self.root.eval(vars),
+        }
     }
 
     /// Whether the expression reads variable number `var`.
@@ -69,7 +79,7 @@ impl Expr {
 
     /// Derivative with respect to variable number `var`.
     pub fn derivative(&self, var: usize) -> Self {
-        Self { root: self.root.derivative(var).fold() }
+        Self::from_root(self.root.derivative(var).fold())
     }
 
     /// `k · self`.
@@ -77,7 +87,7 @@ impl Expr {
         if k == 1.0 {
             return self;
         }
-        Self { root: Node::Mul(Box::new(Node::Const(k)), Box::new(self.root)).fold() }
+        Self::from_root(Node::Mul(Box::new(Node::Const(k)), Box::new(self.root)).fold())
     }
 }
 

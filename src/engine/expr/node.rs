@@ -46,7 +46,7 @@ impl Fn1 {
         })
     }
 
-    fn apply(self, x: f64) -> f64 {
+    pub(crate) fn apply(self, x: f64) -> f64 {
         match self {
             Self::Sin => x.sin(),
             Self::Cos => x.cos(),
@@ -83,7 +83,7 @@ impl Fn2 {
         })
     }
 
-    fn apply(self, a: f64, b: f64) -> f64 {
+    pub(crate) fn apply(self, a: f64, b: f64) -> f64 {
         match self {
             Self::Atan2 => a.atan2(b),
             Self::Min => a.min(b),
@@ -263,6 +263,6 @@ fn d1(f: Fn1, u: &Node) -> Node {
 }
 
 /// `a^b` with integer powers computed exactly (so `(-2)^3 = -8`).
-fn pow(a: f64, e: f64) -> f64 {
+pub(crate) fn pow(a: f64, e: f64) -> f64 {
     if e == e.trunc() && e.abs() <= 64.0 { a.powi(e as i32) } else { a.powf(e) }
 }

@@ -36,6 +36,8 @@ pub(crate) struct Cycle<'a> {
 pub(crate) struct Samples {
     /// Per piece: angles (ends included) and M* there (one-sided at the ends).
     pub pieces: Vec<(Vec<f64>, Vec<f64>)>,
+    /// Per piece: I*'(φ) at the same angles (empty when I* is constant).
+    pub slopes: Vec<Vec<f64>>,
     /// ∫|M*| dφ estimated from the samples: the scale of the works.
     pub abs_work: f64,
     pub max_abs_torque: f64,
@@ -86,20 +88,22 @@ impl<'a> Cycle<'a> {
     /// the function) or a negative reduced inertia.
     pub fn sample(&self) -> Result<Samples, EngineError> {
         let mut pieces = Vec::with_capacity(self.pieces.len());
+        let mut slopes = Vec::with_capacity(self.pieces.len());
         let (mut abs_work, mut max_abs_torque) = (0.0, 0.0f64);
         for w in self.pieces.windows(2) {
             let (a, b) = (w[0], w[1]);
             let n = ((SAMPLES_PER_PERIOD as f64 * (b - a) / self.period).ceil() as usize).max(8);
             let xs: Vec<f64> = (0..=n).map(|j| a + (b - a) * j as f64 / n as f64).collect();
             let mut ys = Vec::with_capacity(n + 1);
+            let mut ss = Vec::with_capacity(if self.inertia_slope.is_some() { n + 1 } else { 0 });
             for (j, &x) in xs.iter().enumerate() {
                 let side = if j == n { Side::Left } else { Side::Right };
                 let m = self.torque(x, side);
                 if !m.is_finite() {
                     return Err(self.not_finite(x, side));
                 }
-                let i = self.inertia_at(x, side);
-                if !(i.is_finite() && self.slope_at(x, side).is_finite()) {
+                let (i, slope) = (self.inertia_at(x, side), self.slope_at(x, side));
+                if !(i.is_finite() && slope.is_finite()) {
                     return Err(EngineError::NotFinite { function: self.inertia_label.into(), phi: x });
                 }
                 if i < 0.0 {
@@ -107,11 +111,15 @@ impl<'a> Cycle<'a> {
                 }
                 max_abs_torque = max_abs_torque.max(m.abs());
                 ys.push(m);
+                if self.inertia_slope.is_some() {
+                    ss.push(slope);
+                }
             }
             abs_work += ys.windows(2).map(|p| 0.5 * (p[0].abs() + p[1].abs())).sum::<f64>() * (b - a) / n as f64;
             pieces.push((xs, ys));
+            slopes.push(ss);
         }
-        Ok(Samples { pieces, abs_work, max_abs_torque })
+        Ok(Samples { pieces, slopes, abs_work, max_abs_torque })
     }
 
     fn not_finite(&self, phi: f64, side: Side) -> EngineError {

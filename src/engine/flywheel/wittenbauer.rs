@@ -88,16 +88,14 @@ fn general_candidates(cycle: &Cycle, samples: &Samples, kappa: f64, ks: [f64; 2]
     }
     let zero = ZERO_FRACTION * kappa * samples.max_abs_torque;
     for k in ks {
-        for (xs, ms) in &samples.pieces {
+        for ((xs, ms), slopes) in samples.pieces.iter().zip(&samples.slopes) {
             let anchor = 0.5 * (xs[0] + xs[xs.len() - 1]);
             let slope = cycle.inertia_slope.as_ref();
             let mut g =
                 |x: f64| k * slope.map_or(0.0, |s| s.eval_frozen(x, anchor)) - kappa * cycle.torque_frozen(x, anchor);
-            let gs: Vec<f64> = xs
-                .iter()
-                .zip(ms)
-                .map(|(&x, &m)| k * slope.map_or(0.0, |s| s.eval_frozen(x, anchor)) - kappa * m)
-                .collect();
+            // The samples' one-sided values are the piece's own formula at its ends.
+            let gs: Vec<f64> =
+                ms.iter().enumerate().map(|(j, &m)| k * slopes.get(j).copied().unwrap_or(0.0) - kappa * m).collect();
             let (mut current, mut out) = (0.0, Vec::<SignChange>::new());
             scan_sign_changes(&mut g, xs, &gs, zero, &mut current, &mut out);
             at.extend(out.iter().map(|c| (c.at, Side::Right)));
