@@ -1,10 +1,11 @@
-//! Work-precision of direct dynamics: `cargo bench --bench work_precision`
-//! (or `cargo bench`). For each reference problem it sweeps the requested
+//! Work-precision against peers: `cargo bench --bench work_precision` (or
+//! `cargo bench`). For each reference problem it sweeps the requested
 //! tolerance, measures the error against a trusted value and the engine's
-//! wall time, runs the SciPy peer on the same problem when Python with
-//! SciPy is at hand (skipped with a message otherwise), and writes
-//! docs/BENCHMARKS.md with the table and docs/work_precision_dynamics.svg.
-//! No assertions: benchmarks are not tests.
+//! wall time, runs the Python peer (bench/peers/) on the same problem when
+//! Python with NumPy and SciPy is at hand (skipped with a message
+//! otherwise), and writes docs/BENCHMARKS.md with the tables and
+//! docs/work_precision_*.svg. Direct dynamics here, kinetostatics and the
+//! flywheel in their modules. No assertions: benchmarks are not tests.
 //!
 //! Problems: D1 (P.81's scotch yoke from rest, reduced form; error = the
 //! largest |t − t_closed form| over the turns, s) and IFToMM A03 (Andrews'
@@ -12,8 +13,10 @@
 //! bench/peers/andrews_scipy.py at rtol 1e-13, which agrees with the
 //! service's own tightest run to 2e-14).
 
+mod flywheel;
+mod kinetostatics;
+
 use mechdyn::api::dynamics::{DynamicsRequest, DynamicsResult, compute};
-use mechdyn::api::kinetostatics::{self, KinetostaticsRequest, Scalars};
 use plotters::prelude::*;
 use serde_json::{Value, json};
 use std::fmt::Write as _;
@@ -25,15 +28,15 @@ const BETA_REF: f64 = 15.810_771_195_153_972;
 
 /// One point of a work-precision curve.
 #[derive(Clone, Debug)]
-struct Point {
-    series: String,
-    tolerance: f64,
-    error: f64,
-    seconds: f64,
-    evaluations: u64,
+pub struct Point {
+    pub series: String,
+    pub tolerance: f64,
+    pub error: f64,
+    pub seconds: f64,
+    pub evaluations: u64,
 }
 
-fn fixture(path: &str) -> Value {
+pub fn fixture(path: &str) -> Value {
     let full = format!("{}/tests/fixtures/{path}", env!("CARGO_MANIFEST_DIR"));
     serde_json::from_str(&std::fs::read_to_string(full).expect("fixture")).expect("fixture JSON")
 }
@@ -89,7 +92,7 @@ fn a03(tolerance: f64) -> Point {
 }
 
 /// A peer script's standard output, or why there is none.
-fn run_peer(script: &str, args: &[&str]) -> Result<String, String> {
+pub fn run_peer(script: &str, args: &[&str]) -> Result<String, String> {
     let script = format!("{}/bench/peers/{script}", env!("CARGO_MANIFEST_DIR"));
     let venv = concat!(env!("CARGO_MANIFEST_DIR"), "/.venv/bin/python");
     let python = if std::path::Path::new(venv).exists() { venv } else { "python3" };
@@ -129,50 +132,6 @@ fn time_at(peer: &[Point], error: f64) -> Option<f64> {
     })
 }
 
-/// K1 at 3600 positions with every reaction and the virtual-power check,
-/// against the NumPy peer (driving torque only): a markdown paragraph.
-fn kinetostatics_section() -> String {
-    let mut body = fixture("requests/k1_offset_slider_crank.json");
-    body["input"]["steps"] = json!(3600);
-    let request: KinetostaticsRequest = serde_json::from_value(body).expect("request");
-    let mut best = f64::INFINITY;
-    let mut torques = Vec::new();
-    for _ in 0..5 {
-        let start = Instant::now();
-        let r = kinetostatics::compute(&request, Vec::new()).expect("solved");
-        best = best.min(start.elapsed().as_secs_f64());
-        torques = r.steps.iter().map(|s| if let Some(Scalars::One(t)) = s.driving { t } else { f64::NAN }).collect();
-    }
-    let mut text = format!(
-        "## Kinetostatics: K1, 3600 positions\n\nmechdyn, every joint reaction, I*, M* and the virtual-power check: \
-         {:.3} ms ({:.2} µs per position).\n",
-        best * 1e3,
-        best * 1e6 / 3600.0
-    );
-    match run_peer("kinetostatics_numpy.py", &["3600"])
-        .and_then(|t| serde_json::from_str::<Value>(&t).map_err(|e| e.to_string()))
-    {
-        Ok(peer) => {
-            let seconds = peer["seconds"].as_f64().unwrap_or(f64::NAN);
-            let want: Vec<f64> =
-                peer["torque"].as_array().map_or(Vec::new(), |v| v.iter().filter_map(Value::as_f64).collect());
-            let scale = want.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-            let gap = torques.iter().zip(&want).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max) / scale;
-            let _ = writeln!(
-                text,
-                "NumPy peer (closed-form kinematics and numpy.linalg.solve per position, driving torque only): \
-                 {:.1} ms; mechdyn is {:.0}× faster; largest difference of the driving torques {gap:.1e} of the largest.",
-                seconds * 1e3,
-                seconds / best
-            );
-        }
-        Err(why) => {
-            let _ = writeln!(text, "The NumPy peer was skipped: {why}.");
-        }
-    }
-    text
-}
-
 fn machine() -> String {
     let cpu = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
@@ -186,13 +145,14 @@ fn machine() -> String {
     format!("{cpu}, {cores} cores available; release build; single-threaded engine")
 }
 
-fn plot(points: &[Point], path: &str) -> Result<(), Box<dyn std::error::Error>> {
+/// A log-log plot of wall time against error, one line per series.
+fn plot(points: &[Point], title: &str, path: &str) -> Result<(), Box<dyn std::error::Error>> {
     let root = SVGBackend::new(path, (720, 480)).into_drawing_area();
     root.fill(&WHITE)?;
     let (emin, emax) = points.iter().fold((f64::INFINITY, 0.0f64), |(a, b), p| (a.min(p.error), b.max(p.error)));
     let (tmin, tmax) = points.iter().fold((f64::INFINITY, 0.0f64), |(a, b), p| (a.min(p.seconds), b.max(p.seconds)));
     let mut chart = ChartBuilder::on(&root)
-        .caption("Direct dynamics: error against wall time", ("sans-serif", 18))
+        .caption(title, ("sans-serif", 18))
         .margin(12)
         .x_label_area_size(40)
         .y_label_area_size(60)
@@ -265,10 +225,15 @@ fn main() {
         );
     }
     doc.push('\n');
-    doc.push_str(&kinetostatics_section());
+    doc.push_str(&kinetostatics::section());
+    doc.push('\n');
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/docs");
     let _ = std::fs::create_dir_all(dir);
-    if let Err(e) = plot(&points, &format!("{dir}/work_precision_dynamics.svg")) {
+    doc.push('\n');
+    doc.push_str(&flywheel::section(dir));
+    if let Err(e) =
+        plot(&points, "Direct dynamics: error against wall time", &format!("{dir}/work_precision_dynamics.svg"))
+    {
         eprintln!("plot: {e}");
     }
     std::fs::write(format!("{dir}/BENCHMARKS.md"), &doc).expect("write docs/BENCHMARKS.md");

@@ -7,15 +7,17 @@ use axum::http::StatusCode;
 use serde_json::{Value, json};
 use std::process::Command;
 
-/// Runs a peer script with its arguments; None (and a message) when there is no Python with NumPy.
+/// Runs a peer script with its arguments; None (and a message) when there
+/// is no Python with NumPy and SciPy.
 fn peer(script: &str, args: &[&str]) -> Option<Value> {
     let root = env!("CARGO_MANIFEST_DIR");
     let venv = format!("{root}/.venv/bin/python");
     let python = if std::path::Path::new(&venv).exists() { venv } else { "python3".into() };
-    let has_numpy = Command::new(&python).args(["-c", "import numpy"]).output().is_ok_and(|o| o.status.success());
+    let has_numpy =
+        Command::new(&python).args(["-c", "import numpy, scipy"]).output().is_ok_and(|o| o.status.success());
     if !has_numpy {
         eprintln!(
-            "skipped: no Python with NumPy ({python}); `python3 -m venv .venv && .venv/bin/pip install numpy scipy`"
+            "skipped: no Python with NumPy and SciPy ({python}); `python3 -m venv .venv && .venv/bin/pip install numpy scipy`"
         );
         return None;
     }
@@ -46,4 +48,24 @@ async fn the_numpy_kinetostatics_peer_gives_the_same_driving_torque() {
         let got = s["driving"].as_f64().unwrap();
         assert!((got - w).abs() <= 1e-10 * scale, "at φ = {}: {got} vs {w}", s["input"]);
     }
+}
+
+/// F1 (P.103): the SciPy flywheel peer (quad + brentq at 1e-10) and the
+/// service give the same approximate and exact inertia to 1e-10 relative;
+/// both agree with the case's I_exact = 353.52142732201185 kg·m² (closed
+/// form and nested brentq) to 1e-10.
+#[tokio::test]
+async fn the_scipy_flywheel_peer_gives_the_same_inertias() {
+    let Some(peer) = peer("flywheel_scipy.py", &[]) else { return };
+    let app = TestApp::new().await;
+    let r = app.post("/v1/flywheel", &request("p103_slider")).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let result = r.json()["result"].clone();
+    let rel = |a: f64, b: f64| (a - b).abs() / b.abs();
+    for key in ["inertia_approximate", "inertia_exact"] {
+        let (ours, theirs) = (result[key].as_f64().unwrap(), peer[key].as_f64().unwrap());
+        assert!(rel(ours, theirs) < 1e-10, "{key}: {ours} vs the peer's {theirs}");
+    }
+    let reference = 353.521_427_322_011_85;
+    assert!(rel(peer["inertia_exact"].as_f64().unwrap(), reference) < 1e-10, "{}", peer["inertia_exact"]);
 }
