@@ -14,6 +14,7 @@
 //! service's own tightest run to 2e-14).
 
 mod flywheel;
+mod http;
 mod kinetostatics;
 
 use mechdyn::api::dynamics::{DynamicsRequest, DynamicsResult, compute};
@@ -218,6 +219,19 @@ fn main() {
             p.evaluations
         );
     }
+    let ratios: Vec<f64> = points
+        .iter()
+        .filter(|p| p.series.starts_with("mechdyn A03"))
+        .filter_map(|p| time_at(&radau, p.error).map(|t| t / p.seconds))
+        .collect();
+    if let (Some(lo), Some(hi)) = (ratios.iter().copied().reduce(f64::min), ratios.iter().copied().reduce(f64::max)) {
+        let verdict = if lo >= 20.0 { "met" } else { "missed" };
+        let _ = writeln!(
+            doc,
+            "\n**Targets**: ≥ 20× SciPy Radau at equal error on A03: {lo:.0}–{hi:.0}× where Radau reaches the same \
+             error: {verdict}. ≥ 2× Exudyn on a slider-crank: not measured yet (no Exudyn peer in bench/peers/)."
+        );
+    }
     if let Err(why) = &peer {
         let _ = writeln!(
             doc,
@@ -231,6 +245,8 @@ fn main() {
     let _ = std::fs::create_dir_all(dir);
     doc.push('\n');
     doc.push_str(&flywheel::section(dir));
+    doc.push('\n');
+    doc.push_str(&http::section());
     if let Err(e) =
         plot(&points, "Direct dynamics: error against wall time", &format!("{dir}/work_precision_dynamics.svg"))
     {

@@ -91,29 +91,16 @@ where
     .map_err(|e| ApiError::Internal(format!("engine task: {e}")))?;
     let result = serde_json::to_string(&result?).map_err(|e| ApiError::Internal(e.to_string()))?;
     let id = uuid::Uuid::new_v4().to_string();
-    let created_at = now_rfc3339();
-    let engine_us = i64::try_from(elapsed.as_micros()).unwrap_or(i64::MAX);
-    let engine_version = env!("CARGO_PKG_VERSION");
     let row = NewJob {
-        id: &id,
-        kind,
-        created_at: &created_at,
-        request: &request,
-        result: &result,
-        engine_us,
-        engine_version,
-    };
-    state.store.insert(&row).await?;
-    let job = Job::from_row(JobRow {
-        seq: 0,
         id: id.clone(),
         kind: kind.into(),
-        created_at,
+        created_at: now_rfc3339(),
         request,
         result,
-        engine_us,
-        engine_version: engine_version.into(),
-    })?;
+        engine_us: i64::try_from(elapsed.as_micros()).unwrap_or(i64::MAX),
+        engine_version: env!("CARGO_PKG_VERSION").into(),
+    };
+    let job = Job::from_row(state.store.insert(row).await?)?;
     Ok((StatusCode::CREATED, [(header::LOCATION, format!("/v1/jobs/{id}"))], Json(job)).into_response())
 }
 

@@ -8,6 +8,7 @@ mod errors;
 mod examples;
 mod four_bars;
 mod gears;
+mod group_commit;
 mod helpers;
 mod jobs;
 mod kinetostatics;
