@@ -95,7 +95,7 @@ pub fn section(dir: &str) -> String {
          (closed form and nested brentq). mechdyn without the time-simulation check and the sampled table (the second \
          table shows what they cost); the SciPy peer uses scipy.integrate.quad and scipy.optimize.brentq on the same 1024-point bracketing \
          grid. Times are the best of several runs of the whole job.\n\n![flywheel](work_precision_flywheel.svg)\n\n\
-         | series | tolerance | relative error | wall time | function evaluations | ratio |\n|---|---|---|---|---|---|\n",
+         | series | tolerance | relative error | wall time | function evaluations (mechdyn: in quadratures only) | ratio |\n|---|---|---|---|---|---|\n",
     );
     let peer = peer();
     let theirs = peer.as_ref().map_or(Vec::new(), Clone::clone);
