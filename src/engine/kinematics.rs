@@ -8,8 +8,7 @@
 use super::EngineError;
 use super::constraints::{State, System, evaluate, nu};
 use super::model::Mechanism;
-use super::numeric::dense::Lu;
-use nalgebra::{DMatrix, DVector};
+use nalgebra::{DMatrix, DVector, Dyn, LU};
 
 /// Newton iterations allowed per position.
 const MAX_ITERATIONS: usize = 30;
@@ -30,10 +29,8 @@ pub struct Configuration {
     /// Φ_q here, kept for the reactions (empty at a singular position).
     pub jacobian: DMatrix<f64>,
     /// LU of Φ_q when it is square, for the multipliers (Φ_qᵀλ = b).
-    pub lu: Option<Lu>,
-    /// Condition number of Φ_q: κ₁ = ‖Φ_q‖₁‖Φ_q⁻¹‖₁ when it is square (the
-    /// 1-norm, LAPACK's measure, within a factor n of the 2-norm one), else
-    /// the 2-norm σ_max/σ_min.
+    pub lu: Option<LU<f64, Dyn, Dyn>>,
+    /// Condition number of Φ_q (2-norm).
     pub condition: f64,
     pub iterations: usize,
     pub residual: f64,
@@ -45,15 +42,23 @@ pub struct Configuration {
 /// Solves A x = b: LU when A is square and regular, else least squares (SVD).
 pub fn solve_linear(a: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
     if a.is_square()
-        && let Some(lu) = Lu::new(a)
-        && let x = lu.solve(b.as_slice())
+        && let Some(x) = a.clone().lu().solve(b)
         && x.iter().all(|v| v.is_finite())
     {
-        return Some(DVector::from_vec(x));
+        return Some(x);
     }
     let svd = a.clone().svd(true, true);
     let tol = 1e-12 * svd.singular_values.max();
     svd.solve(b, tol).ok()
+}
+
+/// y with Aᵀy = b from the LU of A (P A = L U, so Aᵀ = Uᵀ Lᵀ P): the
+/// multipliers from the factors the velocities used, without factoring Aᵀ.
+pub fn solve_transposed(lu: &LU<f64, Dyn, Dyn>, b: &DVector<f64>) -> Option<DVector<f64>> {
+    let w = lu.u().tr_solve_upper_triangular(b)?;
+    let mut y = lu.l().tr_solve_lower_triangular(&w)?;
+    lu.p().inv_permute_rows(&mut y);
+    y.iter().all(|v| v.is_finite()).then_some(y)
 }
 
 /// 2-norm condition number σ_max/σ_min of a matrix with at least as many rows as columns.
@@ -93,29 +98,24 @@ pub struct Solved {
     pub qd: Vec<f64>,
     pub qdd: Vec<f64>,
     pub sys: System,
-    /// LU of Φ_q when it is square and regular.
-    pub lu: Option<Lu>,
-}
-
-impl Solved {
-    /// The 2-norm condition number of Φ_q.
-    fn condition(&self) -> f64 {
-        condition(&self.sys.jacobian)
-    }
+    /// LU of Φ_q when it is square.
+    pub lu: Option<LU<f64, Dyn, Dyn>>,
 }
 
 /// Velocities and accelerations at a q assembled by [`assemble`], which
 /// gave `sys` there (Φ_q does not depend on the input speeds).
 pub fn motion(m: &Mechanism, q: &[f64], inputs: &[[f64; 3]], sys: System) -> Option<Solved> {
     // One factorisation for the velocity and the acceleration.
-    let lu = if sys.jacobian.is_square() { Lu::new(&sys.jacobian) } else { None };
-    let solve = |b: &DVector<f64>| match &lu {
-        Some(lu) => Some(lu.solve(b.as_slice())).filter(|x| x.iter().all(|v| v.is_finite())),
-        None => solve_linear(&sys.jacobian, b).map(|x| x.as_slice().to_vec()),
+    let lu = sys.jacobian.is_square().then(|| sys.jacobian.clone().lu());
+    let solve = |b: &DVector<f64>| {
+        lu.as_ref()
+            .and_then(|lu| lu.solve(b))
+            .filter(|x| x.iter().all(|v| v.is_finite()))
+            .or_else(|| solve_linear(&sys.jacobian, b))
     };
-    let qd = solve(&nu(m, inputs))?;
+    let qd: Vec<f64> = solve(&nu(m, inputs))?.iter().copied().collect();
     let with_speed = evaluate(m, &State { q, qd: Some(&qd), inputs });
-    let qdd = solve(&with_speed.gamma)?;
+    let qdd = solve(&with_speed.gamma)?.iter().copied().collect();
     Some(Solved { qd, qdd, sys: with_speed, lu })
 }
 
@@ -152,7 +152,7 @@ pub fn sweep(m: &Mechanism, positions: &[Vec<[f64; 3]>]) -> Result<Vec<Configura
         // (γ is quadratic in q̇), and they are the next step's predictor.
         let single = m.drivers.len() == 1;
         let solved = if single { motion(m, &q, &[[inputs[0][0], 1.0, 0.0]], sys) } else { motion(m, &q, inputs, sys) };
-        let cond = solved.as_ref().map_or(f64::INFINITY, Solved::condition);
+        let cond = solved.as_ref().map_or(f64::INFINITY, |s| condition(&s.sys.jacobian));
         match solved {
             Some(Solved { qd: a, qdd: b, sys, lu }) if cond <= SINGULAR_CONDITION => {
                 let (qd, qdd, g) = if single {
@@ -214,4 +214,22 @@ fn approach(m: &Mechanism, q: &mut [f64], target: &[[f64; 3]]) -> Result<(), Eng
         assemble(m, q, &inputs, 0)?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The transposed solve from A's factors equals a solve with Aᵀ's own
+    /// (a 7×7 matrix with zeros on the diagonal, so rows are exchanged).
+    #[test]
+    fn the_transposed_solve_matches_factoring_the_transpose() {
+        let a =
+            DMatrix::from_fn(7, 7, |i, j| if i == j { 0.0 } else { ((3 * i + 5 * j) as f64).sin() + 0.1 * i as f64 });
+        let b = DVector::from_fn(7, |k, _| (k as f64).cos());
+        let ours = solve_transposed(&a.clone().lu(), &b).unwrap();
+        let reference = a.transpose().lu().solve(&b).unwrap();
+        assert!((&ours - &reference).amax() < 1e-12 * reference.amax(), "{ours} vs {reference}");
+        assert!((a.transpose() * &ours - &b).amax() < 1e-12);
+    }
 }

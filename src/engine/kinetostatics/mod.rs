@@ -20,7 +20,7 @@ pub use summary::Summary;
 
 use super::EngineError;
 use super::constraints::joint_offsets;
-use super::kinematics::{Configuration, solve_linear, sweep};
+use super::kinematics::{Configuration, solve_linear, solve_transposed, sweep};
 use super::mobility::{Mobility, mobility};
 use super::model::{BodyId, JointKind, Mechanism, Pitch, cross, perp, rotate};
 use nalgebra::{DMatrix, DVector};
@@ -239,10 +239,11 @@ fn multipliers(
     input: f64,
 ) -> Result<(Vec<f64>, Vec<Reaction>), EngineError> {
     let jac = &c.jacobian;
-    let lambda = match &c.lu {
-        Some(lu) => -DVector::from_vec(lu.solve_transposed(inertial.as_slice())),
-        None => solve_linear(&jac.transpose(), &(-inertial)).ok_or(EngineError::Singular { step, input })?,
-    };
+    let lambda =
+        c.lu.as_ref()
+            .and_then(|lu| solve_transposed(lu, &(-inertial)))
+            .or_else(|| solve_linear(&jac.transpose(), &(-inertial)))
+            .ok_or(EngineError::Singular { step, input })?;
     let first_driver = lambda.len() - m.drivers.len();
     let driving = (first_driver..lambda.len()).map(|r| -lambda[r]).collect();
     let Some(indeterminate) = reactions_with else { return Ok((driving, Vec::new())) };

@@ -1,7 +1,6 @@
-//! Numerical building blocks with no mechanics in them: small dense LU,
-//! quadrature, root finding and ODE integration.
+//! Numerical building blocks with no mechanics in them: quadrature, root
+//! finding and ODE integration.
 
-pub mod dense;
 pub mod ode;
 pub mod quadrature;
 pub mod roots;
