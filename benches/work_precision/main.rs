@@ -146,7 +146,9 @@ fn machine() -> String {
         })
         .unwrap_or_else(|| "unknown CPU".into());
     let cores = std::thread::available_parallelism().map_or(0, |n| n.get());
-    format!("{cpu}, {cores} cores available; release build; single-threaded engine")
+    format!(
+        "{cpu}, {cores} cores available (a shared virtual machine: the same run varies by ±30 % from one hour to the next); release build; single-threaded engine"
+    )
 }
 
 /// A log-log plot of wall time against error, one line per series.
