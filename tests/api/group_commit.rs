@@ -36,15 +36,16 @@ async fn waiting_jobs_are_committed_together() {
         let store = store.clone();
         tasks.spawn(async move { store.insert(job(k)).await.unwrap() });
     }
-    let mut seqs: Vec<i64> = tasks.join_all().await.iter().map(|row| row.seq).collect();
+    let rows = tasks.join_all().await;
+    let mut seqs: Vec<i64> = rows.iter().map(|row| row.seq).collect();
     seqs.sort_unstable();
     seqs.dedup();
     assert_eq!(seqs.len(), 64, "one seq per job");
     assert_eq!(store.commits(), 1, "64 waiting jobs, one transaction");
     let other = Store::open(&url).await.unwrap();
-    for k in 0..64 {
-        let row = other.get(&format!("job-{k}")).await.unwrap().expect("committed");
-        assert_eq!(row.request, format!("{{\"k\": {k}}}"));
+    for row in rows {
+        let stored = other.get(&row.id).await.unwrap().expect("committed");
+        assert_eq!(stored, row, "the row returned to the caller is the row stored");
     }
 }
 
