@@ -1,6 +1,7 @@
 //! Engine-level golden tests against the reference cases in tests/fixtures/cases.
 
 mod dynamics;
+mod elliptic;
 mod kinetostatics;
 mod mechanism_dynamics;
 mod rotor;

@@ -3,6 +3,7 @@
 //! reference: a closed form, the reduced form of the same mechanism, or the
 //! Lagrange equations integrated here on their own.
 
+use crate::elliptic::{complete_k, sn};
 use mechdyn::engine::dynamics::mechanism::{MechanismProblem, solve};
 use mechdyn::engine::dynamics::{DynamicsError, End, EventKind, ReducedProblem};
 use mechdyn::engine::expr::Expr;
@@ -148,37 +149,6 @@ fn pendulum() -> Mechanism {
         drivers: vec![Driver { joint: 0, reference: 0.0 }],
         gravity: [0.0, -9.81],
     }
-}
-
-/// K(k) = π / (2·AGM(1, √(1 − k²))).
-fn complete_k(k: f64) -> f64 {
-    let (mut a, mut b) = (1.0f64, (1.0 - k * k).sqrt());
-    // Quadratic convergence: 8 rounds reach round-off (a loop on |a − b|
-    // could cycle forever on the last ulp).
-    for _ in 0..8 {
-        (a, b) = (0.5 * (a + b), (a * b).sqrt());
-    }
-    PI / (2.0 * a)
-}
-
-/// Jacobi's sn(u, k) by the descending Landen transformation (Abramowitz &
-/// Stegun 16.4.2–3): a₀ = 1, b₀ = k', c₀ = k; aₙ, bₙ, cₙ the arithmetic and
-/// geometric means and half-differences; φ_N = 2ᴺa_N·u, then
-/// φₙ₋₁ = (φₙ + asin(cₙ/aₙ·sin φₙ))/2, sn = sin φ₀.
-fn sn(u: f64, k: f64) -> f64 {
-    let (mut a, mut b, mut c) = (vec![1.0f64], (1.0 - k * k).sqrt(), vec![k]);
-    while c.last().unwrap().abs() > 1e-17 && c.len() < 12 {
-        let an = *a.last().unwrap();
-        c.push(0.5 * (an - b));
-        a.push(0.5 * (an + b));
-        b = (an * b).sqrt();
-    }
-    let n = a.len() - 1;
-    let mut phi = 2f64.powi(n as i32) * a[n] * u;
-    for i in (1..=n).rev() {
-        phi = 0.5 * (phi + (c[i] / a[i] * phi.sin()).asin());
-    }
-    phi.sin()
 }
 
 /// Seed 004's double pendulum (point masses m₁, m₂ on massless rods l₁, l₂)
