@@ -70,12 +70,18 @@ fn gk15(f: &mut impl FnMut(f64) -> f64, a: f64, b: f64) -> (f64, f64) {
     if asc != 0.0 && err != 0.0 {
         err = asc * (200.0 * err / asc).powf(1.5).min(1.0);
     }
-    (k, err.max(50.0 * f64::EPSILON * k.abs()))
+    (k, err.max(roundoff(k)))
+}
+
+/// The error below which a panel cannot be refined: rounding in its 15 terms.
+fn roundoff(value: f64) -> f64 {
+    50.0 * f64::EPSILON * value.abs()
 }
 
 /// ∫ₐᵇ f dx to `abs_tol` (absolute) or `rel_tol` (relative), whichever is
-/// looser, bisecting the worst interval first; stops after `max_evaluations`
-/// and then reports the error it reached.
+/// looser, bisecting the worst interval first; stops after `max_evaluations`,
+/// or when even the worst interval is down to its rounding error (a tolerance
+/// below what double precision can give), and then reports the error it reached.
 pub fn integrate(
     mut f: impl FnMut(f64) -> f64,
     a: f64,
@@ -96,7 +102,8 @@ pub fn integrate(
         let done = error <= abs_tol.max(rel_tol * value.abs()) || !error.is_finite();
         let worst = (0..parts.len()).max_by(|&i, &j| parts[i].3.total_cmp(&parts[j].3));
         let width = worst.map_or(0.0, |w| (parts[w].1 - parts[w].0).abs());
-        if done || evaluations + 30 > max_evaluations || width < 1e-13 * (b - a).abs() {
+        let at_roundoff = worst.is_none_or(|w| parts[w].3 <= roundoff(parts[w].2));
+        if done || at_roundoff || evaluations + 30 > max_evaluations || width < 1e-13 * (b - a).abs() {
             return Integral { value, error, evaluations };
         }
         let (lo, hi, _, _) = parts.swap_remove(worst.unwrap_or(0));
@@ -139,5 +146,16 @@ mod tests {
     fn reversed_limits_change_the_sign() {
         let r = integrate(|x| x * x, 1.0, 0.0, 0.0, 1e-12, 1000);
         assert!((r.value + 1.0 / 3.0).abs() < 1e-15);
+    }
+
+    /// A tolerance below double precision's reach (here 1e-16 relative) stops
+    /// once every panel is down to its rounding error, instead of bisecting
+    /// until the evaluation cap: ∫₀^π 5 sin² = 5π/2 (closed form).
+    #[test]
+    fn a_tolerance_below_roundoff_stops_at_roundoff() {
+        let r = integrate(|x| 5.0 * x.sin().powi(2), 0.0, std::f64::consts::PI, 0.0, 1e-16, 200_000);
+        assert!((r.value - 2.5 * std::f64::consts::PI).abs() < 1e-14, "{r:?}");
+        assert!(r.evaluations < 1_000, "{r:?}");
+        assert!(r.error <= 1e-13, "{r:?}");
     }
 }
