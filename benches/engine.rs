@@ -4,6 +4,7 @@
 //! no assertions (benchmarks are not tests). Shows what computing only what
 //! is asked buys.
 
+use mechdyn::engine::Deadline;
 use mechdyn::engine::expr::Expr;
 use mechdyn::engine::flywheel::{FlywheelProblem, Load as TorqueLoad, TorqueItem, solve as flywheel};
 use mechdyn::engine::function::{Function, Segment};
@@ -52,6 +53,7 @@ fn p103(check: bool, inertia: Function) -> FlywheelProblem {
         tolerance: 1e-9,
         check,
         samples: 0,
+        deadline: Deadline::none(),
     }
 }
 
@@ -92,7 +94,7 @@ fn kinetostatics() {
         ("driving torque only (virtual power)", Outputs { reactions: false, reduced: false, kinematics: false }),
     ] {
         let t = best_us(15, || {
-            black_box(solve(&m, &loads, &positions, outputs).unwrap());
+            black_box(solve(&m, &loads, &positions, outputs, &Deadline::none()).unwrap());
         });
         println!("| kinetostatics | slider-crank, 3600 steps, {what} | {:.2} µs/step |", t / n as f64);
     }

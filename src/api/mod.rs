@@ -34,19 +34,23 @@ use utoipa_swagger_ui::SwaggerUi;
 #[derive(Clone)]
 pub struct AppState {
     pub store: Store,
-    /// Wall-clock compute budget of a dynamics job.
+    /// Wall-clock compute budget of a job.
     pub job_budget: Duration,
 }
 
 impl AppState {
     /// The state with the default limits.
     pub fn new(store: Store) -> Self {
-        Self { store, job_budget: dynamics::BUDGET }
+        Self { store, job_budget: DEFAULT_BUDGET }
     }
 }
 
 /// Path of the health check (also probed by `mechdyn healthcheck`).
 pub const HEALTH_PATH: &str = "/healthz";
+
+/// Default wall-clock budget of one job (`--job-seconds`): a job over it is
+/// stopped and answered 422 (`/problems/compute-budget`).
+pub const DEFAULT_BUDGET: Duration = Duration::from_secs(20);
 
 /// Default limit of a request body, bytes.
 pub const DEFAULT_BODY_LIMIT: usize = 1 << 20;
@@ -153,10 +157,19 @@ pub fn engine_error(e: crate::engine::EngineError, fallback: &str) -> FieldError
         | E::NewtonDiverged { .. }
         | E::Singular { .. }
         | E::FrictionDiverged { .. }
-        | E::DofMismatch { .. } => fallback.into(),
+        | E::DofMismatch { .. }
+        | E::BudgetExceeded { .. } => fallback.into(),
         E::NotFiniteResult => String::new(),
     };
     FieldError::at(pointer, e.to_string())
+}
+
+/// An engine error as the API's answer: over budget, or a 422 at its field.
+pub fn engine_failure(e: crate::engine::EngineError, fallback: &str) -> ApiError {
+    match e {
+        crate::engine::EngineError::BudgetExceeded { .. } => ApiError::OverBudget(e.to_string()),
+        e => ApiError::Invalid(vec![engine_error(e, fallback)]),
+    }
 }
 
 /// The converted problem, or every error: the body's unknown fields first,

@@ -62,7 +62,8 @@ pub enum PostErrors {
     #[response(status = 415, content_type = "application/problem+json")]
     UnsupportedMediaType(Problem),
     /// Not a valid problem (an invalid field, a mechanism that cannot be assembled, a cycle
-    /// not in steady state, ...); `errors` has a JSON pointer for every invalid field
+    /// not in steady state, ...; `errors` has a JSON pointer for every invalid field), or a job
+    /// stopped at its compute budget (type `/problems/compute-budget`)
     #[response(status = 422, content_type = "application/problem+json")]
     Invalid(Problem),
 }
@@ -86,6 +87,9 @@ pub enum ApiError {
     NoRoute,
     #[error("method not allowed")]
     MethodNotAllowed,
+    /// The job ran out of its compute budget and was stopped.
+    #[error("{0}")]
+    OverBudget(String),
     /// Logged; the client sees no details.
     #[error("internal error")]
     Internal(String),
@@ -106,6 +110,9 @@ impl ApiError {
             Self::NotFound(_) => (StatusCode::NOT_FOUND, "not-found", "Job not found"),
             Self::NoRoute => (StatusCode::NOT_FOUND, "not-found", "Not found"),
             Self::MethodNotAllowed => (StatusCode::METHOD_NOT_ALLOWED, "method-not-allowed", "Method not allowed"),
+            Self::OverBudget(_) => {
+                (StatusCode::UNPROCESSABLE_ENTITY, "compute-budget", "The job ran out of its compute budget")
+            }
             Self::Internal(_) => (StatusCode::INTERNAL_SERVER_ERROR, "internal", "Internal server error"),
         }
     }

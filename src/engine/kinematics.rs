@@ -5,9 +5,9 @@
 //! Acceleration: Φ_q q̈ = γ. With one input, g = dq/dφ (velocity
 //! coefficients) and h = d²q/dφ² give the predictor q + gΔφ + ½hΔφ².
 
-use super::EngineError;
 use super::constraints::{State, System, evaluate, nu};
 use super::model::Mechanism;
+use super::{Deadline, EngineError};
 use nalgebra::{DMatrix, DVector, Dyn, LU};
 
 /// Newton iterations allowed per position.
@@ -121,7 +121,11 @@ pub fn motion(m: &Mechanism, q: &[f64], inputs: &[[f64; 3]], sys: System) -> Opt
 
 /// The configurations along the given input positions, starting from the
 /// reference configuration and continuing from each position to the next.
-pub fn sweep(m: &Mechanism, positions: &[Vec<[f64; 3]>]) -> Result<Vec<Configuration>, EngineError> {
+pub fn sweep(
+    m: &Mechanism,
+    positions: &[Vec<[f64; 3]>],
+    deadline: &Deadline,
+) -> Result<Vec<Configuration>, EngineError> {
     let mut base = m.reference_q();
     if let Some(first) = positions.first() {
         approach(m, &mut base, first)?;
@@ -131,6 +135,7 @@ pub fn sweep(m: &Mechanism, positions: &[Vec<[f64; 3]>]) -> Result<Vec<Configura
     let mut coefficients: Option<(Vec<f64>, Vec<f64>, f64)> = None;
     let mut failure: Option<EngineError> = None;
     for (step, inputs) in positions.iter().enumerate() {
+        deadline.check(|| format!("the mechanism was assembled at {step} of {} positions", positions.len()))?;
         let mut q = base.clone();
         if let Some((g, h, from)) = &coefficients {
             let d = inputs[0][0] - from;

@@ -11,10 +11,10 @@
 //! nearest of a ring of anchor configurations, so quadrature and root finding
 //! see the true functions, not an interpolation of a coarse grid.
 
-use super::EngineError;
 use super::kinematics::{Solved, assemble, motion, sweep};
 use super::kinetostatics::{Load, applied_forces};
 use super::model::Mechanism;
+use super::{Deadline, EngineError};
 use std::sync::Mutex;
 
 /// Anchor configurations per period.
@@ -48,23 +48,31 @@ pub struct Machine {
     anchors: Vec<Anchor>,
     /// The last evaluation: I*, dI*/dφ and M* are usually asked at the same φ in turn.
     last: Mutex<Option<(f64, Option<[f64; 3]>)>>,
+    /// Past it, every evaluation is NaN (the caller reports the budget).
+    deadline: Deadline,
 }
 
 impl Machine {
     /// Assembles the mechanism around one period of its (single) input.
-    pub fn new(mechanism: Mechanism, loads: Vec<Load>, speed: f64, period: f64) -> Result<Self, EngineError> {
+    pub fn new(
+        mechanism: Mechanism,
+        loads: Vec<Load>,
+        speed: f64,
+        period: f64,
+        deadline: Deadline,
+    ) -> Result<Self, EngineError> {
         let dof = super::mobility::mobility(&mechanism, &mechanism.reference_q()).dof;
         if dof != 1 {
             return Err(EngineError::DofMismatch { dof, inputs: 1 });
         }
         let positions: Vec<Vec<[f64; 3]>> =
             (0..ANCHORS).map(|k| vec![[period * k as f64 / ANCHORS as f64, 1.0, 0.0]]).collect();
-        let anchors = sweep(&mechanism, &positions)?
+        let anchors = sweep(&mechanism, &positions, &deadline)?
             .into_iter()
             .zip(&positions)
             .map(|(c, p)| Anchor { phi: p[0][0], q: c.q, g: c.qd, h: c.qdd })
             .collect();
-        Ok(Self { mechanism, loads, speed, period, anchors, last: Mutex::new(None) })
+        Ok(Self { mechanism, loads, speed, period, anchors, last: Mutex::new(None), deadline })
     }
 
     /// The loads' breakpoints in (0, period), for the flywheel's pieces.
@@ -81,8 +89,12 @@ impl Machine {
         b
     }
 
-    /// I*, dI*/dφ or M* at φ; NaN where the mechanism cannot be assembled.
+    /// I*, dI*/dφ or M* at φ; NaN where the mechanism cannot be assembled
+    /// or once the deadline has passed.
     pub fn eval(&self, phi: f64, what: Reduced) -> f64 {
+        if self.deadline.expired() {
+            return f64::NAN;
+        }
         let cached = self.last.lock().ok().and_then(|l| l.filter(|(at, _)| *at == phi));
         let values = match cached {
             Some((_, v)) => v,
@@ -138,7 +150,8 @@ mod tests {
     /// dI*/dφ = 2gᵀMh against a central difference of I* (h = 1e-6).
     #[test]
     fn the_inertia_slope_matches_a_finite_difference() {
-        let m = Machine::new(offset_slider_crank(), Vec::new(), 0.0, 2.0 * std::f64::consts::PI).unwrap();
+        let m =
+            Machine::new(offset_slider_crank(), Vec::new(), 0.0, 2.0 * std::f64::consts::PI, Deadline::none()).unwrap();
         for phi in [0.3, 1.7, 4.0] {
             let fd = (m.eval(phi + 1e-6, Reduced::Inertia) - m.eval(phi - 1e-6, Reduced::Inertia)) / 2e-6;
             let an = m.eval(phi, Reduced::InertiaSlope);
@@ -151,7 +164,7 @@ mod tests {
     #[test]
     fn the_functions_are_continuous_across_the_full_turn() {
         let period = 2.0 * std::f64::consts::PI;
-        let m = Machine::new(offset_slider_crank(), Vec::new(), 0.0, period).unwrap();
+        let m = Machine::new(offset_slider_crank(), Vec::new(), 0.0, period, Deadline::none()).unwrap();
         for delta in [1e-3, 5e-3] {
             let below = m.eval(period - delta, Reduced::Inertia);
             let taylor = m.eval(delta, Reduced::Inertia) - 2.0 * delta * m.eval(0.0, Reduced::InertiaSlope);

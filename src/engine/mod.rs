@@ -6,6 +6,7 @@
 //! them ([`EngineError`]).
 
 pub mod constraints;
+pub mod deadline;
 pub mod dynamics;
 pub mod equivalent;
 pub mod expr;
@@ -21,6 +22,8 @@ pub mod model;
 pub mod numeric;
 pub mod rotor;
 pub mod samples;
+
+pub use deadline::Deadline;
 
 /// Why a problem has no answer.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -63,4 +66,10 @@ pub enum EngineError {
     /// The computation produced a non-finite number (never returned as a result).
     #[error("the computation produced a non-finite number; the input is numerically degenerate")]
     NotFiniteResult,
+    /// The job ran out of its wall-clock compute budget and was stopped.
+    #[error(
+        "the compute budget of {seconds} s ran out ({progress}); ask for fewer steps, samples or bodies, \
+         or a looser tolerance"
+    )]
+    BudgetExceeded { seconds: f64, progress: String },
 }

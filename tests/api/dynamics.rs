@@ -211,7 +211,8 @@ async fn a_job_over_its_compute_budget_is_stopped_with_the_reason() {
     let r = app.post("/v1/dynamics", &body).await;
     assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
     assert_eq!(r.content_type, "application/problem+json");
-    let message = r.json()["errors"][0]["message"].as_str().unwrap().to_string();
+    assert_eq!(r.json()["type"], "/problems/compute-budget", "{}", r.text);
+    let message = r.json()["detail"].as_str().unwrap().to_string();
     assert!(message.contains("compute budget of 0.3 s"), "{message}");
     let list = app.get("/v1/jobs").await.json();
     assert!(list["items"].as_array().unwrap().is_empty(), "{list}");

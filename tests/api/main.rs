@@ -12,6 +12,7 @@ mod group_commit;
 mod helpers;
 mod jobs;
 mod kinetostatics;
+mod limits;
 mod peers;
 mod robot_arm;
 mod rotor;

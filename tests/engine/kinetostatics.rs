@@ -4,6 +4,7 @@
 //! solution and a sympy closed-form energy method, agreeing to ~1e-15;
 //! tolerance 1e-9 relative (the case's), on the scale of the largest force.
 
+use mechdyn::engine::Deadline;
 use mechdyn::engine::expr::Expr;
 use mechdyn::engine::function::Function;
 use mechdyn::engine::kinetostatics::{Load, Outputs, Step, solve};
@@ -33,7 +34,7 @@ fn run(rows: &[Value], outputs: Outputs) -> Vec<Step> {
             ]]
         })
         .collect();
-    solve(&offset_slider_crank(), &gas_force(), &positions, outputs).unwrap().steps
+    solve(&offset_slider_crank(), &gas_force(), &positions, outputs, &Deadline::none()).unwrap().steps
 }
 
 fn all() -> Outputs {
@@ -105,7 +106,7 @@ fn k1_cycle_mean_and_rms_torque_and_the_virtual_power_residual() {
     let n = 4096;
     let positions: Vec<Vec<[f64; 3]>> =
         (0..n).map(|k| vec![[2.0 * std::f64::consts::PI * k as f64 / n as f64, 150.0, 0.0]]).collect();
-    let solution = solve(&offset_slider_crank(), &gas_force(), &positions, all()).unwrap();
+    let solution = solve(&offset_slider_crank(), &gas_force(), &positions, all(), &Deadline::none()).unwrap();
     let s = &solution.summary;
     close(s.mean_driving[0], c["expected"]["cycle_mean_torque_Nm"].as_f64().unwrap(), 1.0, "mean T");
     close(s.rms_driving[0], c["expected"]["cycle_rms_torque_Nm"].as_f64().unwrap(), 1.0, "rms T");
@@ -123,7 +124,7 @@ fn four_bar_driving_work_over_a_cycle_is_zero_under_gravity() {
     let n = 512;
     let positions: Vec<Vec<[f64; 3]>> =
         (0..n).map(|k| vec![[2.0 * std::f64::consts::PI * k as f64 / n as f64, 30.0, 0.0]]).collect();
-    let s = solve(&mechdyn::engine::samples::four_bar(), &[], &positions, all()).unwrap().summary;
+    let s = solve(&mechdyn::engine::samples::four_bar(), &[], &positions, all(), &Deadline::none()).unwrap().summary;
     assert!(s.mean_driving[0].abs() < 1e-10 * s.max_abs_driving[0], "{s:?}");
     assert!(s.virtual_power_residual.unwrap() < 1e-12);
 }
@@ -134,7 +135,7 @@ fn four_bar_driving_work_over_a_cycle_is_zero_under_gravity() {
 #[test]
 fn a_prismatic_input_gives_the_same_force_both_ways() {
     let positions: Vec<Vec<[f64; 3]>> = (0..20).map(|k| vec![[0.005 * k as f64, 0.2, 0.5]]).collect();
-    let solution = solve(&mechdyn::engine::samples::actuated_arm(), &[], &positions, all()).unwrap();
+    let solution = solve(&mechdyn::engine::samples::actuated_arm(), &[], &positions, all(), &Deadline::none()).unwrap();
     assert!(solution.summary.virtual_power_residual.unwrap() < 1e-12, "{:?}", solution.summary);
     assert!(solution.steps.iter().all(|s| s.driving[0] > 0.0), "the actuator pushes the arm up");
 }
@@ -147,7 +148,7 @@ fn scissor_lift_sample_gives_the_printed_piston_force() {
     let (m, l, v, g) = (10.0f64, 0.5f64, 0.3f64, 9.81f64);
     let c30 = 3f64.sqrt() / 2.0;
     let positions = vec![vec![[0.0, v / 3f64.sqrt(), -v * v / (2.0 * l * c30.powi(3))]]];
-    let s = solve(&mechdyn::engine::samples::scissor_lift(), &[], &positions, all()).unwrap();
+    let s = solve(&mechdyn::engine::samples::scissor_lift(), &[], &positions, all(), &Deadline::none()).unwrap();
     let expected = -(3f64.sqrt()) * (10.0 * m * g + 8.0 * m * v * v / (27.0 * l));
     close(s.steps[0].driving[0], expected, 1.0, "F_AB");
 }

@@ -4,6 +4,7 @@
 //! Lagrange equations integrated here on their own.
 
 use crate::elliptic::{complete_k, sn};
+use mechdyn::engine::Deadline;
 use mechdyn::engine::dynamics::mechanism::{MechanismProblem, solve};
 use mechdyn::engine::dynamics::{DynamicsError, End, EventKind, ReducedProblem};
 use mechdyn::engine::expr::Expr;
@@ -74,7 +75,7 @@ fn d1_as_a_mechanism_reaches_its_turns_at_the_closed_form_times() {
 fn slider_crank_matches_its_reduced_form() {
     let loads = vec![Load::Torque { body: 1, value: Function::Constant(2.0) }];
     let mech = solve(&problem(offset_slider_crank(), loads.clone(), vec![[0.0, 0.0]], End::Duration(1.0))).unwrap();
-    let machine = Arc::new(Machine::new(offset_slider_crank(), loads, 0.0, 2.0 * PI).unwrap());
+    let machine = Arc::new(Machine::new(offset_slider_crank(), loads, 0.0, 2.0 * PI, Deadline::none()).unwrap());
     let reduced = mechdyn::engine::dynamics::solve(&ReducedProblem {
         torques: vec![(Function::Machine(machine.clone(), Reduced::Torque), 1.0)],
         inertia: Function::Machine(machine, Reduced::Inertia),

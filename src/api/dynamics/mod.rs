@@ -20,9 +20,6 @@ use utoipa::ToSchema;
 
 pub use machine::{DynamicsMachine, InputState, MachineDynamics, MachineSample};
 
-/// Default wall-clock budget of one dynamics job (`--job-seconds`): a run
-/// over it is stopped and answered 422.
-pub const BUDGET: Duration = Duration::from_secs(20);
 /// Longest simulated time, s.
 pub const MAX_DURATION: f64 = 1e5;
 const DEFAULT_SAMPLES: usize = 201;
@@ -163,7 +160,7 @@ pub async fn create(State(state): State<AppState>, body: JsonBody<DynamicsReques
 
 /// Validates and solves a request within the default budget (`mechdyn solve dynamics`).
 pub fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>) -> Result<DynamicsResult, ApiError> {
-    compute_within(request, unknown, BUDGET)
+    compute_within(request, unknown, super::DEFAULT_BUDGET)
 }
 
 /// Validates and solves a request, stopping the integration after `budget`.
@@ -202,7 +199,8 @@ fn invalid(e: DynamicsError) -> ApiError {
     let pointer = match e {
         DynamicsError::NonPositiveInertia { .. } => "/reduced_inertia",
         DynamicsError::Initial { .. } => "/machine/input",
-        DynamicsError::Integration { .. } | DynamicsError::Budget { .. } => "",
+        DynamicsError::Budget { .. } => return ApiError::OverBudget(e.to_string()),
+        DynamicsError::Integration { .. } => "",
     };
     ApiError::Invalid(vec![FieldError::at(pointer, e.to_string())])
 }

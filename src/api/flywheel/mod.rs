@@ -10,10 +10,12 @@ pub use result::{
 
 use super::json::JsonBody;
 use super::problem::{ApiError, FieldError, PostErrors};
-use super::{AppState, engine_error, jobs, validated};
+use super::{AppState, engine_failure, jobs, validated};
+use crate::engine::Deadline;
 use crate::engine::flywheel::solve;
 use axum::extract::State;
 use axum::response::Response;
+use std::time::Duration;
 
 /// Designs a flywheel: balance torque, lobes of M*, energy fluctuation, and the
 /// inertia by the approximate and the exact (Wittenbauer) method, checked by a
@@ -26,12 +28,26 @@ use axum::response::Response;
     ))]
 pub async fn create(State(state): State<AppState>, body: JsonBody<FlywheelRequest>) -> Result<Response, ApiError> {
     let JsonBody { value, raw, unknown } = body;
-    jobs::create(&state, "flywheel", raw, move || compute(&value, unknown)).await
+    let budget = state.job_budget;
+    jobs::create(&state, "flywheel", raw, move || compute_within(&value, unknown, budget)).await
 }
 
-/// Validates and solves a request (also used by `mechdyn solve flywheel`).
+/// Validates and solves a request within the default budget (`mechdyn solve flywheel`).
 pub fn compute(request: &FlywheelRequest, unknown: Vec<FieldError>) -> Result<FlywheelResult, ApiError> {
-    let p = validated(unknown, request.to_problem())?;
-    let solution = solve(&p).map_err(|e| ApiError::Invalid(vec![engine_error(e, "/torques")]))?;
+    compute_within(request, unknown, super::DEFAULT_BUDGET)
+}
+
+/// Validates and solves a request, stopping after `budget`.
+pub fn compute_within(
+    request: &FlywheelRequest,
+    unknown: Vec<FieldError>,
+    budget: Duration,
+) -> Result<FlywheelResult, ApiError> {
+    let deadline = Deadline::after(budget);
+    let p = validated(unknown, request.to_problem(deadline)).map_err(|e| match deadline.expired() {
+        true => ApiError::OverBudget(deadline.exceeded("while assembling the machine".into()).to_string()),
+        false => e,
+    })?;
+    let solution = solve(&p).map_err(|e| engine_failure(e, "/torques"))?;
     Ok(FlywheelResult::new(solution, p.torques.iter().map(|t| t.name.clone())))
 }

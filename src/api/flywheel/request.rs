@@ -3,6 +3,7 @@
 use crate::api::kinetostatics::{InputDto, LoadDto, machine_parts};
 use crate::api::mechanism::MechanismDto;
 use crate::api::quantity::{Errors, FunctionDto, Quantity};
+use crate::engine::Deadline;
 use crate::engine::flywheel::{DiskSize, DiskSpec, FlywheelProblem, Load, TorqueItem};
 use crate::engine::function::Function;
 use crate::engine::machine::{Machine, Reduced};
@@ -116,8 +117,9 @@ pub struct DiskDto {
 }
 
 impl FlywheelRequest {
-    /// Validates the request, collecting every error under its pointer.
-    pub fn to_problem(&self) -> Result<FlywheelProblem, Vec<crate::api::problem::FieldError>> {
+    /// Validates the request, collecting every error under its pointer; a
+    /// machine is assembled within `deadline`, which the problem keeps.
+    pub fn to_problem(&self, deadline: Deadline) -> Result<FlywheelProblem, Vec<crate::api::problem::FieldError>> {
         let mut e = Errors::default();
         let period = match &self.period {
             Some(q) => e
@@ -136,7 +138,7 @@ impl FlywheelRequest {
             n => Some(n.unwrap_or(DEFAULT_SAMPLES)),
         };
         let p = period.unwrap_or(2.0 * PI);
-        let machine = self.machine(&mut e, p, speeds.map_or(0.0, |s| s.0));
+        let machine = self.machine(&mut e, p, speeds.map_or(0.0, |s| s.0), deadline);
         let mut torques = self.torques(&mut e, p, machine.is_some());
         let mut inertia = match &self.reduced_inertia {
             Some(f) => e.function(f, Dim::INERTIA, p, "/reduced_inertia"),
@@ -181,6 +183,7 @@ impl FlywheelRequest {
                 tolerance,
                 check: self.check.unwrap_or(true),
                 samples,
+                deadline,
             }),
             _ => Err(e.0),
         }
@@ -236,11 +239,11 @@ impl FlywheelRequest {
     }
 
     /// The machine's reduced quantities, solved around the period at the mean speed.
-    fn machine(&self, e: &mut Errors, period: f64, mean_speed: f64) -> Option<Arc<Machine>> {
+    fn machine(&self, e: &mut Errors, period: f64, mean_speed: f64, deadline: Deadline) -> Option<Arc<Machine>> {
         let m = self.machine.as_ref()?;
         let loads = m.loads.as_deref().unwrap_or_default();
         let (mechanism, loads) = machine_parts(e, &m.mechanism, &m.input, loads, period, "/machine")?;
-        match Machine::new(mechanism, loads, mean_speed, period) {
+        match Machine::new(mechanism, loads, mean_speed, period, deadline) {
             Ok(m) => Some(Arc::new(m)),
             Err(err) => e.fail("/machine", err.to_string()),
         }

@@ -12,10 +12,12 @@ pub use result::{KinetostaticsResult, ReactionDto, Scalars, csv_table};
 
 use super::json::JsonBody;
 use super::problem::{ApiError, FieldError, PostErrors};
-use super::{AppState, engine_error, jobs, validated};
+use super::{AppState, engine_failure, jobs, validated};
+use crate::engine::Deadline;
 use crate::engine::kinetostatics::solve;
 use axum::extract::State;
 use axum::response::Response;
+use std::time::Duration;
 
 /// Inverse dynamics over a range of input positions: driving torque or force,
 /// every joint reaction, reduced inertia and torque, checked by virtual power.
@@ -27,14 +29,25 @@ use axum::response::Response;
     ))]
 pub async fn create(State(state): State<AppState>, body: JsonBody<KinetostaticsRequest>) -> Result<Response, ApiError> {
     let JsonBody { value, raw, unknown } = body;
-    jobs::create(&state, "kinetostatics", raw, move || compute(&value, unknown)).await
+    let budget = state.job_budget;
+    jobs::create(&state, "kinetostatics", raw, move || compute_within(&value, unknown, budget)).await
 }
 
-/// Validates and solves a request (also used by `mechdyn solve kinetostatics`).
+/// Validates and solves a request within the default budget (`mechdyn solve kinetostatics`).
 pub fn compute(request: &KinetostaticsRequest, unknown: Vec<FieldError>) -> Result<KinetostaticsResult, ApiError> {
+    compute_within(request, unknown, super::DEFAULT_BUDGET)
+}
+
+/// Validates and solves a request, stopping after `budget`.
+pub fn compute_within(
+    request: &KinetostaticsRequest,
+    unknown: Vec<FieldError>,
+    budget: Duration,
+) -> Result<KinetostaticsResult, ApiError> {
+    let deadline = Deadline::after(budget);
     let problem = validated(unknown, request.to_problem())?;
-    let solution = solve(&problem.mechanism, &problem.loads, &problem.positions, problem.outputs)
-        .map_err(|e| ApiError::Invalid(vec![engine_error(e, "/input")]))?;
+    let solution = solve(&problem.mechanism, &problem.loads, &problem.positions, problem.outputs, &deadline)
+        .map_err(|e| engine_failure(e, "/input"))?;
     let joint_names: Vec<String> = problem.mechanism.joints.iter().map(|j| j.name.clone()).collect();
     Ok(KinetostaticsResult::new(solution, &problem, &joint_names))
 }

@@ -199,7 +199,7 @@ pub fn solve(p: &MechanismProblem) -> Result<MechanismSolution, DynamicsError> {
     let m = &p.mechanism;
     let initial = |reason: String| DynamicsError::Initial { reason };
     let inputs: Vec<[f64; 3]> = p.initial.iter().map(|[a, w]| [*a, *w, 0.0]).collect();
-    let start = sweep(m, &[inputs]).map_err(|e| initial(e.to_string()))?.remove(0);
+    let start = sweep(m, &[inputs], &crate::engine::Deadline::none()).map_err(|e| initial(e.to_string()))?.remove(0);
     if start.singular {
         return Err(initial("the start is a singular position of the inputs (a dead centre or toggle)".into()));
     }

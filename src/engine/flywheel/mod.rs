@@ -21,6 +21,7 @@ pub use check::Check;
 pub use lobes::Area;
 pub use solve::solve;
 
+use super::Deadline;
 use super::function::Function;
 
 /// How a torque item is given.
@@ -79,6 +80,8 @@ pub struct FlywheelProblem {
     pub check: bool,
     /// Rows of the sampled table (0: none), evenly spaced over [0, λ].
     pub samples: usize,
+    /// The compute budget, checked between the phases of the solution.
+    pub deadline: Deadline,
 }
 
 /// Flywheel inertia on its own shaft by both methods.

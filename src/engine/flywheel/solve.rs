@@ -19,7 +19,29 @@ samples per cycle and located by Brent's method; exact inertia from the extrema 
 check by Dormand-Prince 5(4) time integration of the equation of motion";
 
 /// Solves a flywheel problem; see the module docs of [`super`] for the symbols.
+/// A solution finished past the deadline is not returned: machine functions
+/// answer NaN once it has passed.
 pub fn solve(p: &FlywheelProblem) -> Result<FlywheelSolution, EngineError> {
+    let phase = std::cell::Cell::new("sampling M* and I*");
+    let d = &p.deadline;
+    let progress = || format!("stopped while {}", phase.get());
+    let solution = phases(p, &|next| {
+        d.check(progress)?;
+        phase.set(next);
+        Ok(())
+    });
+    match solution {
+        Ok(s) => d.check(|| "the solution was complete but late".into()).map(|()| s),
+        Err(e) => Err(d.explain(e, progress)),
+    }
+}
+
+/// The solution phase by phase; `next` is called between them with the name
+/// of the next one and stops the solution when it fails.
+fn phases(
+    p: &FlywheelProblem,
+    next: &dyn Fn(&'static str) -> Result<(), EngineError>,
+) -> Result<FlywheelSolution, EngineError> {
     let terms = p
         .torques
         .iter()
@@ -31,17 +53,21 @@ pub fn solve(p: &FlywheelProblem) -> Result<FlywheelSolution, EngineError> {
     let mut cycle = Cycle::new(terms, &p.reduced_inertia, &p.reduced_inertia_label, p.period, 0.1 * p.tolerance);
     let mut samples = cycle.sample()?;
     cycle.abs_tol_per_rad = 0.1 * p.tolerance * samples.abs_work.max(f64::MIN_POSITIVE) / p.period;
+    next("integrating the work of each torque")?;
     let (item_work, balance_torque, mut evaluations) = item_works(p, &mut cycle, &mut samples);
+    next("locating the crossings and lobes of M*")?;
     let lobes = lobes(&cycle, crossings(&cycle, &samples));
     let mut warnings = Vec::new();
     check_steady_state(p, &item_work, &lobes, &mut warnings)?;
     let (omega_a, eps) = (p.mean_speed, p.irregularity);
+    next("finding the exact inertia")?;
     let ex = exact(&cycle, &samples, &lobes, eps, omega_a);
     let inertia_approximate = lobes.energy_fluctuation / (eps * omega_a * omega_a);
     let flywheel = |i: f64| (i - p.existing_inertia) / (p.flywheel_ratio * p.flywheel_ratio);
     let flywheel_inertia = Pair { approximate: flywheel(inertia_approximate), exact: flywheel(ex.inertia) };
     let speed = SpeedLaw { cycle: &cycle, ex: &ex, omega_a };
     let omega_at_start = speed.omega(0.0, 0.0, Side::Right);
+    next("checking by time integration")?;
     let check = run_check(p, &cycle, &ex, omega_at_start, &mut warnings);
     if ex.degenerate {
         warnings.push(
@@ -51,6 +77,7 @@ pub fn solve(p: &FlywheelProblem) -> Result<FlywheelSolution, EngineError> {
     }
     let shaft_speed = p.flywheel_ratio.abs() * omega_a;
     let disk = p.disk.and_then(|d| size_disk(d, flywheel_inertia.exact, shaft_speed, &mut warnings));
+    next("sampling the table")?;
     let table = sample_table(p, &speed);
     let quadrature_error = lobes.quadrature.error + ex.quadrature.error + table.1;
     evaluations += lobes.quadrature.evaluations + ex.quadrature.evaluations;

@@ -1,9 +1,9 @@
 //! Engine-level flywheel tests against closed forms and the reference cases.
 
 use super::*;
-use crate::engine::EngineError;
 use crate::engine::expr::Expr;
 use crate::engine::function::{Function, Interpolation, Segment, Table};
+use crate::engine::{Deadline, EngineError};
 use std::f64::consts::PI;
 
 fn expr(s: &str) -> Function {
@@ -38,6 +38,7 @@ fn problem(torques: Vec<TorqueItem>, inertia: Function, omega: f64, eps: f64) ->
         tolerance: 1e-9,
         check: true,
         samples: 0,
+        deadline: Deadline::none(),
     }
 }
 

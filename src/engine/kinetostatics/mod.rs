@@ -18,11 +18,11 @@ mod summary;
 pub use loads::{Load, applied_forces, point_motion};
 pub use summary::Summary;
 
-use super::EngineError;
 use super::constraints::joint_offsets;
 use super::kinematics::{Configuration, solve_linear, solve_transposed, sweep};
 use super::mobility::{Mobility, mobility};
 use super::model::{BodyId, JointKind, Mechanism, Pitch, cross, perp, rotate};
+use super::{Deadline, EngineError};
 use nalgebra::{DMatrix, DVector};
 
 /// What to compute at every position.
@@ -108,8 +108,9 @@ pub fn solve(
     loads: &[Load],
     positions: &[Vec<[f64; 3]>],
     outputs: Outputs,
+    deadline: &Deadline,
 ) -> Result<Solution, EngineError> {
-    let configurations = sweep(m, positions)?;
+    let configurations = sweep(m, positions, deadline)?;
     let regular = configurations.iter().find(|c| !c.singular);
     let mobility = mobility(m, &regular.map_or_else(|| m.reference_q(), |c| c.q.clone()));
     if mobility.dof != m.drivers.len() {
@@ -119,7 +120,10 @@ pub fn solve(
         .iter()
         .zip(positions)
         .enumerate()
-        .map(|(k, (c, inputs))| step(m, loads, c, inputs, outputs, &mobility, k))
+        .map(|(k, (c, inputs))| {
+            deadline.check(|| format!("the actions were solved at {k} of {} positions", positions.len()))?;
+            step(m, loads, c, inputs, outputs, &mobility, k)
+        })
         .collect::<Result<Vec<_>, _>>()?;
     Ok(Solution {
         summary: Summary::new(&steps, m.joints.len()),
