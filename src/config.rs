@@ -22,7 +22,13 @@ pub struct Cli {
     /// Largest accepted request body, bytes.
     #[arg(long, env = "MECHDYN_MAX_BODY_BYTES", default_value_t = crate::api::DEFAULT_BODY_LIMIT, global = true)]
     pub max_body_bytes: usize,
-    /// Wall-clock compute budget of a dynamics job, seconds (a run over it is answered 422).
+    /// When set, every POST must carry `Authorization: Bearer <token>` (401 without it).
+    #[arg(long, env = "MECHDYN_API_TOKEN", hide_env_values = true, global = true)]
+    pub api_token: Option<String>,
+    /// Origins allowed to call the API from a browser (CORS), comma-separated; `*` for any.
+    #[arg(long, env = "MECHDYN_CORS_ORIGINS", value_delimiter = ',', global = true)]
+    pub cors_origins: Vec<String>,
+    /// Wall-clock compute budget of a job, seconds (a job over it is stopped and answered 422).
     #[arg(long, env = "MECHDYN_JOB_SECONDS", default_value_t = 20.0, value_parser = positive_seconds, global = true)]
     pub job_seconds: f64,
 }

@@ -39,7 +39,12 @@ fn serve(cli: &Cli) -> ExitCode {
 async fn run(cli: &Cli) -> Result<(), String> {
     let store = Store::open(&cli.database).await.map_err(|e| format!("database {}: {e}", cli.database))?;
     let state = AppState { job_budget: std::time::Duration::from_secs_f64(cli.job_seconds), ..AppState::new(store) };
-    let app = api::router(state, cli.max_body_bytes);
+    let settings = api::Settings {
+        body_limit: cli.max_body_bytes,
+        api_token: cli.api_token.clone().filter(|t| !t.is_empty()),
+        cors_origins: cli.cors_origins.iter().map(|o| o.trim().to_string()).filter(|o| !o.is_empty()).collect(),
+    };
+    let app = api::router(state, &settings);
     let listener = tokio::net::TcpListener::bind(&cli.addr).await.map_err(|e| format!("bind {}: {e}", cli.addr))?;
     let local = listener.local_addr().map_err(|e| e.to_string())?;
     tracing::info!(addr = %local, database = %cli.database, "mechdyn listening; docs at http://{local}/docs");

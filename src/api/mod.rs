@@ -13,20 +13,20 @@ pub mod jobs;
 pub mod json;
 pub mod kinetostatics;
 pub mod mechanism;
+pub mod middleware;
 pub mod problem;
 pub mod quantity;
 pub mod rotor;
 
 use crate::store::Store;
-use axum::extract::{DefaultBodyLimit, State};
+use axum::extract::State;
 use axum::http::StatusCode;
 use axum::routing::{get, post};
-use axum::{Extension, Json, Router};
+use axum::{Json, Router};
+pub use middleware::Settings;
 use problem::{ApiError, FieldError, Problem};
 use serde::Serialize;
 use std::time::Duration;
-use tower_http::trace::{DefaultMakeSpan, DefaultOnResponse, TraceLayer};
-use tracing::Level;
 use utoipa::{OpenApi, ToSchema};
 use utoipa_swagger_ui::SwaggerUi;
 
@@ -98,9 +98,9 @@ pub fn openapi() -> utoipa::openapi::OpenApi {
     ApiDoc::openapi()
 }
 
-/// The service's router with its middleware.
-pub fn router(state: AppState, body_limit: usize) -> Router {
-    Router::new()
+/// The service's router with its middleware ([`middleware::layered`]).
+pub fn router(state: AppState, settings: &Settings) -> Router {
+    let routes = Router::new()
         .route("/v1/flywheel", post(flywheel::create))
         .route("/v1/kinetostatics", post(kinetostatics::create))
         .route("/v1/dynamics", post(dynamics::create))
@@ -115,14 +115,8 @@ pub fn router(state: AppState, body_limit: usize) -> Router {
         .merge(SwaggerUi::new("/docs").url("/openapi.json", openapi()))
         .fallback(|| async { ApiError::NoRoute })
         .method_not_allowed_fallback(|| async { ApiError::MethodNotAllowed })
-        .layer(DefaultBodyLimit::max(body_limit))
-        .layer(Extension(json::BodyLimit(body_limit)))
-        .layer(
-            TraceLayer::new_for_http()
-                .make_span_with(DefaultMakeSpan::new().level(Level::INFO))
-                .on_response(DefaultOnResponse::new().level(Level::INFO)),
-        )
-        .with_state(state)
+        .with_state(state);
+    middleware::layered(routes, settings)
 }
 
 #[derive(Serialize, ToSchema)]

@@ -55,6 +55,9 @@ pub enum PostErrors {
     /// Body is not valid JSON
     #[response(status = 400, content_type = "application/problem+json")]
     MalformedJson(Problem),
+    /// The service was started with an API token (MECHDYN_API_TOKEN) and the request does not carry it
+    #[response(status = 401, content_type = "application/problem+json")]
+    Unauthorized(Problem),
     /// Body larger than the limit (default 1 MiB)
     #[response(status = 413, content_type = "application/problem+json")]
     TooLarge(Problem),
@@ -90,8 +93,10 @@ pub enum ApiError {
     /// The job ran out of its compute budget and was stopped.
     #[error("{0}")]
     OverBudget(String),
+    #[error("this service needs \"Authorization: Bearer <token>\" on every POST")]
+    Unauthorized,
     /// Logged; the client sees no details.
-    #[error("internal error")]
+    #[error("internal error; the x-request-id header of this answer finds it in the service's log")]
     Internal(String),
 }
 
@@ -113,6 +118,7 @@ impl ApiError {
             Self::OverBudget(_) => {
                 (StatusCode::UNPROCESSABLE_ENTITY, "compute-budget", "The job ran out of its compute budget")
             }
+            Self::Unauthorized => (StatusCode::UNAUTHORIZED, "unauthorized", "Missing or wrong bearer token"),
             Self::Internal(_) => (StatusCode::INTERNAL_SERVER_ERROR, "internal", "Internal server error"),
         }
     }
@@ -148,6 +154,10 @@ impl IntoResponse for ApiError {
         let problem = self.problem();
         let status = StatusCode::from_u16(problem.status).unwrap_or(StatusCode::INTERNAL_SERVER_ERROR);
         let body = serde_json::to_vec(&problem).unwrap_or_default();
-        (status, [(header::CONTENT_TYPE, "application/problem+json")], body).into_response()
+        let mut response = (status, [(header::CONTENT_TYPE, "application/problem+json")], body).into_response();
+        if matches!(self, Self::Unauthorized) {
+            response.headers_mut().insert(header::WWW_AUTHENTICATE, header::HeaderValue::from_static("Bearer"));
+        }
+        response
     }
 }

@@ -6,7 +6,7 @@ use crate::helpers::request;
 use axum::body::Body;
 use axum::http::{Request, StatusCode};
 use http_body_util::BodyExt;
-use mechdyn::api::{AppState, DEFAULT_BODY_LIMIT, router};
+use mechdyn::api::{AppState, Settings, router};
 use mechdyn::store::{NewJob, Store};
 use tokio::task::JoinSet;
 use tower::ServiceExt;
@@ -75,7 +75,7 @@ async fn concurrent_posts_are_all_stored_before_their_201() {
     let dir = tempfile::tempdir().unwrap();
     let url = format!("sqlite://{}/jobs.db", dir.path().display());
     let store = Store::open(&url).await.unwrap();
-    let app = router(AppState::new(store.clone()), DEFAULT_BODY_LIMIT);
+    let app = router(AppState::new(store.clone()), &Settings::default());
     let other = Store::open(&url).await.unwrap();
     let body = request("p113_pulley").to_string();
     let mut tasks = JoinSet::new();

@@ -3,7 +3,7 @@
 use axum::body::Body;
 use axum::http::{Request, StatusCode};
 use http_body_util::BodyExt;
-use mechdyn::api::{AppState, router};
+use mechdyn::api::{AppState, Settings, router};
 use mechdyn::store::Store;
 use serde_json::Value;
 use tower::ServiceExt;
@@ -18,6 +18,7 @@ pub struct Reply {
     pub status: StatusCode,
     pub content_type: String,
     pub location: Option<String>,
+    pub headers: axum::http::HeaderMap,
     pub text: String,
 }
 
@@ -33,26 +34,28 @@ impl TestApp {
     }
 
     pub async fn with_limit(limit: usize) -> Self {
+        Self::with_settings(&Settings::with_body_limit(limit)).await
+    }
+
+    /// A fresh app with this middleware configuration.
+    pub async fn with_settings(settings: &Settings) -> Self {
         let dir = tempfile::tempdir().unwrap();
         let url = format!("sqlite://{}/sub/jobs.db", dir.path().display());
         let store = Store::open(&url).await.unwrap();
-        Self { app: router(AppState::new(store), limit), url, _dir: dir }
+        Self { app: router(AppState::new(store), settings), url, _dir: dir }
     }
 
     /// The same database opened again, as after a restart.
     pub async fn restart(self) -> Self {
         let store = Store::open(&self.url).await.unwrap();
-        Self { app: router(AppState::new(store), mechdyn::api::DEFAULT_BODY_LIMIT), ..self }
+        Self { app: router(AppState::new(store), &Settings::default()), ..self }
     }
 
     /// A fresh app whose dynamics jobs have this compute budget.
     pub async fn with_job_budget(budget: std::time::Duration) -> Self {
         let app = Self::new().await;
         let store = Store::open(&app.url).await.unwrap();
-        Self {
-            app: router(AppState { job_budget: budget, ..AppState::new(store) }, mechdyn::api::DEFAULT_BODY_LIMIT),
-            ..app
-        }
+        Self { app: router(AppState { job_budget: budget, ..AppState::new(store) }, &Settings::default()), ..app }
     }
 
     pub async fn send(&self, req: Request<Body>) -> Reply {
@@ -61,8 +64,9 @@ impl TestApp {
         let header = |n: &str| res.headers().get(n).and_then(|v| v.to_str().ok()).map(str::to_string);
         let content_type = header("content-type").unwrap_or_default();
         let location = header("location");
+        let headers = res.headers().clone();
         let bytes = res.into_body().collect().await.unwrap().to_bytes();
-        Reply { status, content_type, location, text: String::from_utf8_lossy(&bytes).into_owned() }
+        Reply { status, content_type, location, headers, text: String::from_utf8_lossy(&bytes).into_owned() }
     }
 
     pub async fn post_raw(&self, path: &str, content_type: &str, body: impl Into<Body>) -> Reply {

@@ -16,4 +16,5 @@ mod limits;
 mod peers;
 mod robot_arm;
 mod rotor;
+mod security;
 mod seed_exams;

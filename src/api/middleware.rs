@@ -1,0 +1,133 @@
+//! The service's middleware, outermost first: a request id (`x-request-id`,
+//! a random UUID unless the client sent one, echoed on the answer), the
+//! request's log span carrying it, CORS for the origins configured, panics
+//! caught and answered 500 problem+json without internals, the optional
+//! bearer token every POST must carry, and the body limit.
+
+use super::json::BodyLimit;
+use super::problem::ApiError;
+use axum::Router;
+use axum::extract::{DefaultBodyLimit, Request};
+use axum::http::{HeaderName, HeaderValue, Method, header};
+use axum::middleware::{Next, from_fn};
+use axum::response::{IntoResponse, Response};
+use axum::{Extension, body::Body};
+use std::any::Any;
+use std::sync::Arc;
+use tower_http::catch_panic::CatchPanicLayer;
+use tower_http::cors::{AllowOrigin, CorsLayer};
+use tower_http::request_id::{MakeRequestUuid, PropagateRequestIdLayer, SetRequestIdLayer};
+use tower_http::trace::{DefaultOnResponse, TraceLayer};
+use tracing::Level;
+
+/// Header of the request id.
+pub const REQUEST_ID: &str = "x-request-id";
+
+/// What the middleware is configured with.
+#[derive(Clone, Debug)]
+pub struct Settings {
+    /// Largest accepted request body, bytes (413 beyond it).
+    pub body_limit: usize,
+    /// When set, every POST needs `Authorization: Bearer <token>` (401 without).
+    pub api_token: Option<String>,
+    /// Origins allowed by CORS (`*` for any); none: no CORS headers.
+    pub cors_origins: Vec<String>,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Self { body_limit: super::DEFAULT_BODY_LIMIT, api_token: None, cors_origins: Vec::new() }
+    }
+}
+
+impl Settings {
+    /// The defaults with another body limit.
+    pub fn with_body_limit(body_limit: usize) -> Self {
+        Self { body_limit, ..Self::default() }
+    }
+}
+
+/// `routes` with the service's middleware.
+pub fn layered(routes: Router, s: &Settings) -> Router {
+    let token: Option<Arc<str>> = s.api_token.as_deref().map(Arc::from);
+    let routes = routes
+        .layer(DefaultBodyLimit::max(s.body_limit))
+        .layer(Extension(BodyLimit(s.body_limit)))
+        .layer(from_fn(move |req, next| require_token(token.clone(), req, next)))
+        .layer(CatchPanicLayer::custom(panic_response));
+    let routes = match cors(&s.cors_origins) {
+        Some(cors) => routes.layer(cors),
+        None => routes,
+    };
+    let request_id = HeaderName::from_static(REQUEST_ID);
+    routes
+        .layer(PropagateRequestIdLayer::new(request_id.clone()))
+        .layer(TraceLayer::new_for_http().make_span_with(span).on_response(DefaultOnResponse::new().level(Level::INFO)))
+        .layer(SetRequestIdLayer::new(request_id, MakeRequestUuid))
+}
+
+fn span(req: &Request) -> tracing::Span {
+    let id = req.headers().get(REQUEST_ID).and_then(|v| v.to_str().ok()).unwrap_or("");
+    tracing::info_span!("request", method = %req.method(), uri = %req.uri(), request_id = %id)
+}
+
+/// A panic in a handler: logged (inside the request's span, so with its id)
+/// and answered 500 problem+json that tells nothing of it.
+fn panic_response(panic: Box<dyn Any + Send + 'static>) -> Response<Body> {
+    let message = panic
+        .downcast_ref::<String>()
+        .map(String::as_str)
+        .or_else(|| panic.downcast_ref::<&str>().copied())
+        .unwrap_or("(no message)");
+    ApiError::Internal(format!("handler panicked: {message}")).into_response()
+}
+
+fn cors(origins: &[String]) -> Option<CorsLayer> {
+    if origins.is_empty() {
+        return None;
+    }
+    let allow = if origins.iter().any(|o| o == "*") {
+        AllowOrigin::any()
+    } else {
+        AllowOrigin::list(origins.iter().filter_map(|o| HeaderValue::from_str(o).ok()))
+    };
+    Some(
+        CorsLayer::new()
+            .allow_origin(allow)
+            .allow_methods([Method::GET, Method::POST])
+            .allow_headers([header::CONTENT_TYPE, header::AUTHORIZATION])
+            .expose_headers([header::LOCATION, HeaderName::from_static(REQUEST_ID)]),
+    )
+}
+
+async fn require_token(token: Option<Arc<str>>, req: Request, next: Next) -> Response {
+    match token {
+        Some(t) if req.method() == Method::POST && !bearer_matches(req.headers().get(header::AUTHORIZATION), &t) => {
+            ApiError::Unauthorized.into_response()
+        }
+        _ => next.run(req).await,
+    }
+}
+
+/// `Authorization: Bearer <token>`, compared in time independent of where it differs.
+fn bearer_matches(value: Option<&HeaderValue>, token: &str) -> bool {
+    let Some(given) = value.and_then(|v| v.to_str().ok()).and_then(|v| v.strip_prefix("Bearer ")) else {
+        return false;
+    };
+    given.len() == token.len() && given.bytes().zip(token.bytes()).fold(0u8, |acc, (a, b)| acc | (a ^ b)) == 0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn only_the_exact_bearer_token_matches() {
+        let v = |s: &str| HeaderValue::from_str(s).unwrap();
+        assert!(bearer_matches(Some(&v("Bearer s3cret")), "s3cret"));
+        assert!(!bearer_matches(Some(&v("Bearer s3creT")), "s3cret"));
+        assert!(!bearer_matches(Some(&v("Bearer s3cret2")), "s3cret"));
+        assert!(!bearer_matches(Some(&v("Basic s3cret")), "s3cret"));
+        assert!(!bearer_matches(None, "s3cret"));
+    }
+}

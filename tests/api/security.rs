@@ -1,0 +1,102 @@
+//! Security basics through the real middleware: request ids, panics
+//! answered without internals, the optional bearer token, CORS.
+
+use crate::helpers::{TestApp, request};
+use axum::body::Body;
+use axum::http::{Request, StatusCode};
+use axum::routing::get;
+use mechdyn::api::Settings;
+use mechdyn::api::middleware::layered;
+
+async fn boom() -> &'static str {
+    panic!("secret detail: table jobs at src/store/mod.rs:42")
+}
+
+/// A handler that panics is answered 500 problem+json saying nothing of the
+/// panic, with the request id (logged with the panic) in `x-request-id`.
+#[tokio::test]
+async fn a_panicking_handler_is_answered_500_without_internals() {
+    let mut app = TestApp::new().await;
+    app.app = layered(axum::Router::new().route("/boom", get(boom)), &Settings::default());
+    let r = app.send(Request::get("/boom").header("x-request-id", "trace-me-42").body(Body::empty()).unwrap()).await;
+    assert_eq!(r.status, StatusCode::INTERNAL_SERVER_ERROR);
+    assert_eq!(r.content_type, "application/problem+json");
+    assert_eq!(r.json()["type"], "/problems/internal", "{}", r.text);
+    assert!(!r.text.contains("secret") && !r.text.contains("src/"), "{}", r.text);
+    assert_eq!(r.headers["x-request-id"], "trace-me-42");
+    // The service answers the next request as before.
+    let again = app.send(Request::get("/boom").body(Body::empty()).unwrap()).await;
+    assert_eq!(again.status, StatusCode::INTERNAL_SERVER_ERROR);
+}
+
+/// Every answer carries a request id: the client's own, or a fresh UUID.
+#[tokio::test]
+async fn every_answer_has_a_request_id() {
+    let app = TestApp::new().await;
+    let r = app.get("/healthz").await;
+    let id = r.headers["x-request-id"].to_str().unwrap();
+    assert!(uuid::Uuid::parse_str(id).is_ok(), "{id}");
+    let r = app.get("/v1/jobs/no-such-job").await;
+    assert_eq!(r.status, StatusCode::NOT_FOUND);
+    assert!(r.headers.contains_key("x-request-id"));
+}
+
+/// With a token configured, a POST without it (or with another) is 401
+/// problem+json with `WWW-Authenticate: Bearer` and stores nothing; with it,
+/// 201. Reads stay open.
+#[tokio::test]
+async fn the_api_token_guards_every_post() {
+    let settings = Settings { api_token: Some("s3cret-token".into()), ..Settings::default() };
+    let app = TestApp::with_settings(&settings).await;
+    let body = request("p103_slider").to_string();
+    let post = |auth: Option<&str>| {
+        let mut req = Request::post("/v1/flywheel").header("content-type", "application/json");
+        if let Some(a) = auth {
+            req = req.header("authorization", a);
+        }
+        req.body(Body::from(body.clone())).unwrap()
+    };
+    for auth in [None, Some("Bearer wrong"), Some("s3cret-token"), Some("Basic s3cret-token")] {
+        let r = app.send(post(auth)).await;
+        assert_eq!(r.status, StatusCode::UNAUTHORIZED, "{auth:?}: {}", r.text);
+        assert_eq!(r.content_type, "application/problem+json");
+        assert_eq!(r.headers["www-authenticate"], "Bearer");
+        assert_eq!(r.json()["type"], "/problems/unauthorized");
+    }
+    let list = app.get("/v1/jobs").await;
+    assert_eq!(list.status, StatusCode::OK);
+    assert!(list.json()["items"].as_array().unwrap().is_empty());
+    let r = app.send(post(Some("Bearer s3cret-token"))).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    assert_eq!(app.get(r.location.as_deref().unwrap()).await.status, StatusCode::OK);
+}
+
+/// CORS: a configured origin gets its preflight allowed and the headers a
+/// spreadsheet add-in reads exposed; another origin gets no CORS headers;
+/// without configuration there are none at all.
+#[tokio::test]
+async fn cors_allows_only_the_configured_origins() {
+    let preflight = |origin: &str| {
+        Request::options("/v1/flywheel")
+            .header("origin", origin)
+            .header("access-control-request-method", "POST")
+            .header("access-control-request-headers", "content-type")
+            .body(Body::empty())
+            .unwrap()
+    };
+    let settings = Settings { cors_origins: vec!["https://addin.example.org".into()], ..Settings::default() };
+    let app = TestApp::with_settings(&settings).await;
+    let r = app.send(preflight("https://addin.example.org")).await;
+    assert_eq!(r.headers["access-control-allow-origin"], "https://addin.example.org");
+    assert!(r.headers["access-control-allow-methods"].to_str().unwrap().contains("POST"));
+    let r = app.send(preflight("https://evil.example.com")).await;
+    assert!(!r.headers.contains_key("access-control-allow-origin"));
+    let get = Request::get("/healthz").header("origin", "https://addin.example.org").body(Body::empty()).unwrap();
+    let r = app.send(get).await;
+    assert_eq!(r.headers["access-control-allow-origin"], "https://addin.example.org");
+    assert!(r.headers["access-control-expose-headers"].to_str().unwrap().contains("location"));
+
+    let closed = TestApp::new().await;
+    let r = closed.send(preflight("https://addin.example.org")).await;
+    assert!(!r.headers.contains_key("access-control-allow-origin"));
+}
