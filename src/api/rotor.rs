@@ -36,16 +36,24 @@ pub struct RotorRequest {
     pub mass: Quantity,
     pub inertia: InertiaDto,
     /// G from the origin O on the axis, m.
+    #[schema(min_items = 3, max_items = 3)]
     pub cg: [f64; 3],
     /// The body's angular velocity relative to the frame, rad/s (default 0).
     /// The body must be symmetric about it (its inertia stays constant in the frame).
+    #[schema(min_items = 3, max_items = 3)]
     pub spin: Option<[f64; 3]>,
     /// x' of bearing D and of bearing E (E takes the axial thrust), m.
+    #[schema(min_items = 2, max_items = 2)]
     pub bearings: [f64; 2],
     /// Gravity in the fixed axes (which coincide with x'y'z' at angle 0), m/s² (default [0, −9.81, 0]).
+    #[schema(min_items = 3, max_items = 3)]
     pub gravity: Option<[f64; 3]>,
     pub frame: FrameDto,
+    /// Angles of the frame's turn at which to evaluate (not with `times`).
+    #[schema(min_items = 1, max_items = 10000)]
     pub angles: Option<Vec<Quantity>>,
+    /// Instants at which to evaluate (not with `angles`).
+    #[schema(min_items = 1, max_items = 10000)]
     pub times: Option<Vec<Quantity>>,
 }
 

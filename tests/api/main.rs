@@ -3,6 +3,7 @@
 mod andrews;
 mod cases;
 mod cli;
+mod crash;
 mod dynamics;
 mod errors;
 mod examples;
