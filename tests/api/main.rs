@@ -8,6 +8,7 @@ mod dynamics;
 mod errors;
 mod examples;
 mod four_bars;
+mod fuzz;
 mod gears;
 mod group_commit;
 mod helpers;
