@@ -38,7 +38,7 @@ fn serve(cli: &Cli) -> ExitCode {
 
 async fn run(cli: &Cli) -> Result<(), String> {
     let store = Store::open(&cli.database).await.map_err(|e| format!("database {}: {e}", cli.database))?;
-    let state = AppState { job_budget: std::time::Duration::from_secs_f64(cli.job_seconds), ..AppState::new(store) };
+    let state = AppState { limits: cli.limits(), ..AppState::new(store) };
     let settings = api::Settings {
         body_limit: cli.max_body_bytes,
         api_token: cli.api_token.clone().filter(|t| !t.is_empty()),

@@ -95,10 +95,10 @@ impl EquivalentRequest {
             e.push(&format!("/points/{}", super::json::escape(name)), "coordinates must be finite");
         }
         match (mass, inertia, cg) {
-            (Some(m), Some(i), Some(g)) if e.0.is_empty() => {
+            (Some(m), Some(i), Some(g)) if e.list.is_empty() => {
                 Ok((m, i, self.points.values().map(|p| [p[0] - g[0], p[1] - g[1]]).collect()))
             }
-            _ => Err(e.0),
+            _ => Err(e.list),
         }
     }
 }

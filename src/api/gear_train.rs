@@ -187,8 +187,8 @@ impl TrainRequest {
         if asked.contains(&0) {
             e.push("/unknown_torques", "the frame's torque is not an unknown of the train");
         }
-        if !e.0.is_empty() {
-            return Err(e.0);
+        if !e.list.is_empty() {
+            return Err(e.list);
         }
         Ok((Train { members: self.members.len() + 1, meshes }, speeds, torques, asked))
     }

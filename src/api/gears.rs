@@ -112,7 +112,7 @@ impl GearRequest {
         let dedendum = share(&mut e, self.dedendum, 1.25, "/dedendum");
         let radius = self.radius.as_ref().map(|q| e.positive(q, Dim::LENGTH, "/radius"));
         match (module, pressure_angle, addendum, dedendum) {
-            (Some(module), Some(pressure_angle), Some(addendum), Some(dedendum)) if e.0.is_empty() => Ok((
+            (Some(module), Some(pressure_angle), Some(addendum), Some(dedendum)) if e.list.is_empty() => Ok((
                 Gear {
                     module,
                     teeth: self.teeth,
@@ -123,7 +123,7 @@ impl GearRequest {
                 },
                 radius.flatten(),
             )),
-            _ => Err(e.0),
+            _ => Err(e.list),
         }
     }
 }

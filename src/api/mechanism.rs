@@ -161,7 +161,7 @@ pub struct Converted {
 impl MechanismDto {
     /// Converts to the engine model (without drivers), at pointer `at`.
     pub fn convert(&self, e: &mut Errors, at: &str) -> Option<Converted> {
-        let before = e.0.len();
+        let before = e.list.len();
         if self.bodies.len() > MAX_ITEMS || self.joints.len() > MAX_ITEMS {
             e.push(at, format!("at most {MAX_ITEMS} bodies and {MAX_ITEMS} joints"));
         }
@@ -239,7 +239,7 @@ impl MechanismDto {
             Some([gx, gy]) if gx.is_finite() && gy.is_finite() => [*gx, *gy],
             Some(_) => e.fail(&format!("{at}/gravity"), "must be [gx, gy], finite").unwrap_or([0.0; 2]),
         };
-        (e.0.len() == before).then(|| Converted {
+        (e.list.len() == before).then(|| Converted {
             mechanism: Mechanism { bodies, joints, drivers: Vec::new(), gravity },
             body_names: names,
         })

@@ -12,6 +12,7 @@ pub mod gears;
 pub mod jobs;
 pub mod json;
 pub mod kinetostatics;
+pub mod limits;
 pub mod mechanism;
 pub mod middleware;
 pub mod problem;
@@ -23,10 +24,10 @@ use axum::extract::State;
 use axum::http::StatusCode;
 use axum::routing::{get, post};
 use axum::{Json, Router};
+pub use limits::Limits;
 pub use middleware::Settings;
 use problem::{ApiError, FieldError, Problem};
 use serde::Serialize;
-use std::time::Duration;
 use utoipa::{OpenApi, ToSchema};
 use utoipa_swagger_ui::SwaggerUi;
 
@@ -34,23 +35,19 @@ use utoipa_swagger_ui::SwaggerUi;
 #[derive(Clone)]
 pub struct AppState {
     pub store: Store,
-    /// Wall-clock compute budget of a job.
-    pub job_budget: Duration,
+    /// What one request may ask, and the compute budget of a job.
+    pub limits: Limits,
 }
 
 impl AppState {
     /// The state with the default limits.
     pub fn new(store: Store) -> Self {
-        Self { store, job_budget: DEFAULT_BUDGET }
+        Self { store, limits: Limits::default() }
     }
 }
 
 /// Path of the health check (also probed by `mechdyn healthcheck`).
 pub const HEALTH_PATH: &str = "/healthz";
-
-/// Default wall-clock budget of one job (`--job-seconds`): a job over it is
-/// stopped and answered 422 (`/problems/compute-budget`).
-pub const DEFAULT_BUDGET: Duration = Duration::from_secs(20);
 
 /// Default limit of a request body, bytes.
 pub const DEFAULT_BODY_LIMIT: usize = 1 << 20;
@@ -64,10 +61,13 @@ flywheels (approximate and exact Wittenbauer methods), direct dynamics (reduced 
 any DOF), rigid rotors on two bearings, and the gear and equivalent-mass calculators of the course; every job \
 is stored and readable later.\n\nQuantities are SI numbers or \"VALUE UNIT\" strings \
 (\"300 rpm\", \"3200 ft*lbf\", \"20 slug*ft^2\"); results are SI. Errors are application/problem+json \
-with a JSON pointer for every invalid field.\n\nLimits: request body 1 MiB (configurable, 413); \
-expressions 2000 characters and 64 levels of nesting; tables 100000 rows; 1000 segments per function; \
-100 torques; 100000 result samples; 200 bodies and joints, 500 loads and 100000 steps per mechanism \
-(422 beyond them); a dynamics job's compute budget 20 s (configurable; 422 with the reason)."
+with a JSON pointer for every invalid field.\n\nLimits (the defaults; the service's operator may configure \
+each, see MECHDYN_* in the README): request body 1 MiB (413 beyond it); expressions 2000 characters and \
+64 levels of nesting; tables 100000 rows; 1000 segments per function; 100000 result samples; 100000 steps \
+per kinetostatics job (422 at the field beyond them); a job's compute budget 20 s (a job over it is stopped \
+and answered 422 /problems/compute-budget). Fixed: 100 torques; 200 bodies and joints and 500 loads per \
+mechanism. When the service has an API token (MECHDYN_API_TOKEN), every POST needs \
+\"Authorization: Bearer <token>\" (401 without it); every answer carries an x-request-id header."
     ),
     paths(flywheel::create, kinetostatics::create, dynamics::create, gears::create, gear_train::create, equivalent::create, rotor::create, jobs::get, jobs::list, jobs::csv, healthz),
     components(schemas(

@@ -1,6 +1,7 @@
 //! Wire forms of quantities and functions of the cycle angle, and their
 //! conversion to SI engine values with every error collected under its pointer.
 
+use super::limits::Limits;
 use super::problem::FieldError;
 use crate::engine::expr::Expr;
 use crate::engine::function::{Function, Interpolation, Segment, Table};
@@ -11,11 +12,6 @@ use std::fmt;
 use utoipa::openapi::RefOr;
 use utoipa::openapi::schema::{ObjectBuilder, OneOfBuilder, Schema, Type};
 use utoipa::{PartialSchema, ToSchema};
-
-/// Longest table accepted, in rows.
-pub const MAX_TABLE_ROWS: usize = 100_000;
-/// Most segments in one piecewise function.
-pub const MAX_SEGMENTS: usize = 1_000;
 
 /// A number (SI) or a `"VALUE UNIT"` string.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -172,13 +168,22 @@ impl ToSchema for FunctionDto {
     }
 }
 
-/// Collects (pointer, message) errors while converting a request.
+/// Collects (pointer, message) errors while converting a request, under
+/// the limits in force.
 #[derive(Default)]
-pub struct Errors(pub Vec<FieldError>);
+pub struct Errors {
+    pub list: Vec<FieldError>,
+    pub limits: Limits,
+}
 
 impl Errors {
+    /// No errors yet, under `limits`.
+    pub fn new(limits: &Limits) -> Self {
+        Self { list: Vec::new(), limits: limits.clone() }
+    }
+
     pub fn push(&mut self, pointer: &str, message: impl Into<String>) {
-        self.0.push(FieldError::at(pointer, message));
+        self.list.push(FieldError::at(pointer, message));
     }
 
     /// A quantity of the expected dimension, in SI.
@@ -276,15 +281,16 @@ impl Errors {
     }
 
     fn expr_of(&mut self, src: &str, at: &str, variables: &[&str]) -> Option<Expr> {
-        match Expr::compile(src, variables) {
+        match Expr::compile_within(src, variables, self.limits.expression_length, self.limits.expression_depth) {
             Ok(e) => Some(e),
             Err(e) => self.fail(at, format!("expression does not parse: {e}")),
         }
     }
 
     fn segments(&mut self, segs: &[SegmentDto], scale: f64, period: f64, at: &str, vars: &[&str]) -> Option<Function> {
-        if segs.is_empty() || segs.len() > MAX_SEGMENTS {
-            return self.fail(at, format!("must hold 1 to {MAX_SEGMENTS} segments"));
+        let max = self.limits.segments;
+        if segs.is_empty() || segs.len() > max {
+            return self.fail(at, format!("must hold 1 to {max} segments"));
         }
         let slack = 1e-12 * period;
         let mut out = Vec::with_capacity(segs.len());
@@ -313,8 +319,9 @@ impl Errors {
 
     fn table(&mut self, t: &TableDto, interp: InterpolationDto, scale: f64, period: f64, at: &str) -> Option<Function> {
         let n = t.angle.len();
-        if n == 0 || n > MAX_TABLE_ROWS {
-            return self.fail(&format!("{at}/angle"), format!("must hold 1 to {MAX_TABLE_ROWS} angles"));
+        let max = self.limits.table_rows;
+        if n == 0 || n > max {
+            return self.fail(&format!("{at}/angle"), format!("must hold 1 to {max} angles"));
         }
         if t.value.len() != n {
             return self.fail(at, format!("\"angle\" has {n} rows but \"value\" has {}", t.value.len()));

@@ -206,7 +206,7 @@ impl RotorRequest {
         let (Some(mass), Some(inertia), Some(speed), Some(acceleration), Some(angle)) =
             (mass, inertia, speed, acceleration, angle)
         else {
-            return Err(e.0);
+            return Err(e.list);
         };
         let rotor = Rotor {
             mass,
@@ -220,8 +220,8 @@ impl RotorRequest {
             angle,
         };
         let times = self.times(&mut e, &rotor);
-        if !e.0.is_empty() {
-            return Err(e.0);
+        if !e.list.is_empty() {
+            return Err(e.list);
         }
         Ok((rotor, times))
     }

@@ -3,6 +3,7 @@
 //! panic (proptest reports a panic as a failure, with the input shrunk).
 
 use crate::helpers::request;
+use mechdyn::api::Limits;
 use mechdyn::api::problem::ApiError;
 use mechdyn::api::{flywheel, json, kinetostatics};
 use mechdyn::engine::expr::Expr;
@@ -152,7 +153,10 @@ fn mutated(fixture: &'static str) -> impl Strategy<Value = String> {
     })
 }
 
-const BUDGET: Duration = Duration::from_secs(2);
+/// The default limits with a 2 s budget.
+fn limits() -> Limits {
+    Limits { budget: Duration::from_secs(2), ..Limits::default() }
+}
 
 /// Solved, or refused as the client's fault (an internal error is a bug).
 fn solved<T>(r: Result<T, ApiError>) -> bool {
@@ -188,7 +192,7 @@ fn run_mutations(fixture: &'static str, cases: u32, solve: impl Fn(String) -> Op
 fn any_mutated_mechanism_is_solved_or_refused() {
     let [solved, unparsed, refused] = run_mutations("k1_offset_slider_crank", 300, |body| {
         let b = json::parse::<kinetostatics::KinetostaticsRequest>(body).ok()?;
-        Some(solved(kinetostatics::compute_within(&b.value, b.unknown, BUDGET)))
+        Some(solved(kinetostatics::compute_within(&b.value, b.unknown, &limits())))
     });
     eprintln!("kinetostatics: {solved} solved, {unparsed} refused at parsing, {refused} refused by validation");
     assert!(solved > 0 && refused > 0, "{solved} solved, {refused} refused");
@@ -199,7 +203,7 @@ fn any_mutated_mechanism_is_solved_or_refused() {
 fn any_mutated_machine_flywheel_is_solved_or_refused() {
     let [solved, unparsed, refused] = run_mutations("p103_slider_machine", 200, |body| {
         let b = json::parse::<flywheel::FlywheelRequest>(body).ok()?;
-        Some(solved(flywheel::compute_within(&b.value, b.unknown, BUDGET)))
+        Some(solved(flywheel::compute_within(&b.value, b.unknown, &limits())))
     });
     eprintln!("machine flywheel: {solved} solved, {unparsed} refused at parsing, {refused} refused by validation");
     assert!(solved > 0 && refused > 0, "{solved} solved, {refused} refused");

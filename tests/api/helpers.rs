@@ -51,11 +51,16 @@ impl TestApp {
         Self { app: router(AppState::new(store), &Settings::default()), ..self }
     }
 
-    /// A fresh app whose dynamics jobs have this compute budget.
+    /// A fresh app whose jobs have this compute budget.
     pub async fn with_job_budget(budget: std::time::Duration) -> Self {
+        Self::with_limits(mechdyn::api::Limits { budget, ..Default::default() }).await
+    }
+
+    /// A fresh app with these limits on a request.
+    pub async fn with_limits(limits: mechdyn::api::Limits) -> Self {
         let app = Self::new().await;
         let store = Store::open(&app.url).await.unwrap();
-        Self { app: router(AppState { job_budget: budget, ..AppState::new(store) }, &Settings::default()), ..app }
+        Self { app: router(AppState { limits, ..AppState::new(store) }, &Settings::default()), ..app }
     }
 
     pub async fn send(&self, req: Request<Body>) -> Reply {

@@ -4,7 +4,7 @@
 
 use crate::helpers::{TestApp, request};
 use axum::http::StatusCode;
-use serde_json::Value;
+use serde_json::{Value, json};
 use std::time::Duration;
 
 /// K1 asked at 100000 crank positions (the largest number accepted).
@@ -62,4 +62,63 @@ async fn a_heavy_job_does_not_stall_the_health_check() {
     assert!(!heavy.is_finished(), "the heavy job should still be computing when /healthz answers");
     let status = heavy.await.unwrap();
     assert!(status == StatusCode::CREATED || status == StatusCode::UNPROCESSABLE_ENTITY, "{status}");
+}
+
+/// Small limits, as an operator may configure them.
+fn tight() -> mechdyn::api::Limits {
+    mechdyn::api::Limits {
+        steps: 10,
+        samples: 5,
+        table_rows: 3,
+        segments: 2,
+        expression_length: 20,
+        expression_depth: 3,
+        ..Default::default()
+    }
+}
+
+/// Each configured limit refuses the first request over it with 422 at the
+/// field and the limit in the message; the same requests pass the defaults.
+#[tokio::test]
+async fn each_configured_limit_is_enforced_at_its_field() {
+    let (tight_app, default_app) = (TestApp::with_limits(tight()).await, TestApp::new().await);
+    let mut k1 = request("k1_offset_slider_crank");
+    k1["input"]["steps"] = 11.into();
+    let r = tight_app.post("/v1/kinetostatics", &k1).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert_eq!(r.json()["errors"][0]["pointer"], "/input/steps");
+    assert!(r.json()["errors"][0]["message"].as_str().unwrap().contains("1 to 10"), "{}", r.text);
+    assert_eq!(default_app.post("/v1/kinetostatics", &k1).await.status, StatusCode::CREATED);
+
+    let base = request("p103_slider");
+    let edits: [(&str, Value, &str, &str); 5] = [
+        ("/samples", 6.into(), "/samples", "at most 5"),
+        (
+            "/torques/0/value",
+            json!({"segments": [{"from": 0, "to": 1, "expr": "1"}, {"from": 1, "to": 2, "expr": "2"}, {"from": 2, "to": 3, "expr": "-3"}]}),
+            "/torques/0/value",
+            "1 to 2 segments",
+        ),
+        (
+            "/torques/0/value",
+            json!({"table": {"angle": [0, 1, 2, 3], "value": [1, 2, -3, 1]}}),
+            "/torques/0/value/table/angle",
+            "1 to 3 angles",
+        ),
+        ("/reduced_inertia", json!({"expr": "5 + 0*phi + 0*phi + 1"}), "/reduced_inertia", "maximum is 20"),
+        ("/reduced_inertia", json!({"expr": "((((5))))"}), "/reduced_inertia", "nest"),
+    ];
+    for (at, value, pointer, message) in edits {
+        let mut body = base.clone();
+        match body.pointer_mut(at) {
+            Some(slot) => *slot = value,
+            None => body[&at[1..]] = value,
+        }
+        let errors = tight_app.flywheel_422(&body).await;
+        assert!(
+            errors.iter().any(|(p, m)| p.starts_with(pointer) && m.contains(message)),
+            "{at}: want {pointer} '{message}', got {errors:?}"
+        );
+        default_app.flywheel(&body).await;
+    }
 }

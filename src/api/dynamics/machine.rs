@@ -74,7 +74,7 @@ impl DynamicsMachine {
         let loads =
             convert_loads(e, loads, &self.mechanism, &c.body_names, period, "/machine/loads", &["phi", "omega", "t"]);
         let joint_names = mechanism.joints.iter().map(|j| j.name.clone()).collect();
-        e.0.is_empty().then_some(Parts { mechanism, loads, initial: states, joint_names, body_names: c.body_names })
+        e.list.is_empty().then_some(Parts { mechanism, loads, initial: states, joint_names, body_names: c.body_names })
     }
 }
 

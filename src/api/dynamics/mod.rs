@@ -4,6 +4,7 @@
 mod machine;
 
 use super::json::JsonBody;
+use super::limits::Limits;
 use super::problem::{ApiError, FieldError, PostErrors};
 use super::quantity::{Errors, FunctionDto, Quantity};
 use super::{AppState, jobs, validated};
@@ -154,22 +155,23 @@ pub struct DynamicsResult {
     ))]
 pub async fn create(State(state): State<AppState>, body: JsonBody<DynamicsRequest>) -> Result<Response, ApiError> {
     let JsonBody { value, raw, unknown } = body;
-    let budget = state.job_budget;
-    jobs::create(&state, "dynamics", raw, move || compute_within(&value, unknown, budget)).await
+    let limits = state.limits.clone();
+    jobs::create(&state, "dynamics", raw, move || compute_within(&value, unknown, &limits)).await
 }
 
-/// Validates and solves a request within the default budget (`mechdyn solve dynamics`).
+/// Validates and solves a request within the default limits (`mechdyn solve dynamics`).
 pub fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>) -> Result<DynamicsResult, ApiError> {
-    compute_within(request, unknown, super::DEFAULT_BUDGET)
+    compute_within(request, unknown, &Limits::default())
 }
 
-/// Validates and solves a request, stopping the integration after `budget`.
+/// Validates and solves a request within `limits`, stopping the integration
+/// when the compute budget runs out.
 pub fn compute_within(
     request: &DynamicsRequest,
     unknown: Vec<FieldError>,
-    budget: Duration,
+    limits: &Limits,
 ) -> Result<DynamicsResult, ApiError> {
-    match validated(unknown, request.to_problem(budget))? {
+    match validated(unknown, request.to_problem(limits))? {
         Problem::Reduced(p) => Ok(DynamicsResult::from(solve(&p).map_err(invalid)?)),
         Problem::Machine(p, joints, bodies) => {
             let s = mechanism::solve(&p).map_err(invalid)?;
@@ -222,9 +224,9 @@ struct Common {
 }
 
 impl DynamicsRequest {
-    fn to_problem(&self, budget: Duration) -> Result<Problem, Vec<FieldError>> {
-        let mut e = Errors::default();
-        let c = self.common(&mut e, budget);
+    fn to_problem(&self, limits: &Limits) -> Result<Problem, Vec<FieldError>> {
+        let mut e = Errors::new(limits);
+        let c = self.common(&mut e);
         let reduced = !self.torques.is_empty() || self.reduced_inertia.is_some();
         let problem = match (&self.machine, reduced) {
             (Some(m), false) => self.machine_problem(&mut e, m, &c),
@@ -232,12 +234,12 @@ impl DynamicsRequest {
             _ => e.fail("", "give either \"machine\" or the reduced form \"torques\" with \"reduced_inertia\""),
         };
         match problem {
-            Some(problem) if e.0.is_empty() => Ok(problem),
-            _ => Err(e.0),
+            Some(problem) if e.list.is_empty() => Ok(problem),
+            _ => Err(e.list),
         }
     }
 
-    fn common(&self, e: &mut Errors, budget: Duration) -> Common {
+    fn common(&self, e: &mut Errors) -> Common {
         let period = match &self.period {
             Some(q) => {
                 let p = e.angle(q, "/period");
@@ -249,15 +251,16 @@ impl DynamicsRequest {
             Some(t) if !(1e-14..=1e-2).contains(&t) => e.fail("/tolerance", "must be between 1e-14 and 1e-2"),
             t => t,
         };
+        let max = e.limits.samples;
         let samples = match self.samples {
-            Some(n) if !(2..=100_000).contains(&n) => e.fail("/samples", "must be 2 to 100000"),
+            Some(n) if !(2..=max).contains(&n) => e.fail("/samples", format!("must be 2 to {max}")),
             n => n,
         };
         Common {
             period: period.unwrap_or(2.0 * PI),
             tolerance: tolerance.unwrap_or(1e-9),
             samples: samples.unwrap_or(DEFAULT_SAMPLES),
-            budget,
+            budget: e.limits.budget,
         }
     }
 

@@ -9,13 +9,13 @@ pub use result::{
 };
 
 use super::json::JsonBody;
+use super::limits::Limits;
 use super::problem::{ApiError, FieldError, PostErrors};
 use super::{AppState, engine_failure, jobs, validated};
 use crate::engine::Deadline;
 use crate::engine::flywheel::solve;
 use axum::extract::State;
 use axum::response::Response;
-use std::time::Duration;
 
 /// Designs a flywheel: balance torque, lobes of M*, energy fluctuation, and the
 /// inertia by the approximate and the exact (Wittenbauer) method, checked by a
@@ -28,23 +28,23 @@ use std::time::Duration;
     ))]
 pub async fn create(State(state): State<AppState>, body: JsonBody<FlywheelRequest>) -> Result<Response, ApiError> {
     let JsonBody { value, raw, unknown } = body;
-    let budget = state.job_budget;
-    jobs::create(&state, "flywheel", raw, move || compute_within(&value, unknown, budget)).await
+    let limits = state.limits.clone();
+    jobs::create(&state, "flywheel", raw, move || compute_within(&value, unknown, &limits)).await
 }
 
-/// Validates and solves a request within the default budget (`mechdyn solve flywheel`).
+/// Validates and solves a request within the default limits (`mechdyn solve flywheel`).
 pub fn compute(request: &FlywheelRequest, unknown: Vec<FieldError>) -> Result<FlywheelResult, ApiError> {
-    compute_within(request, unknown, super::DEFAULT_BUDGET)
+    compute_within(request, unknown, &Limits::default())
 }
 
-/// Validates and solves a request, stopping after `budget`.
+/// Validates and solves a request within `limits`, stopping when the compute budget runs out.
 pub fn compute_within(
     request: &FlywheelRequest,
     unknown: Vec<FieldError>,
-    budget: Duration,
+    limits: &Limits,
 ) -> Result<FlywheelResult, ApiError> {
-    let deadline = Deadline::after(budget);
-    let p = validated(unknown, request.to_problem(deadline)).map_err(|e| match deadline.expired() {
+    let deadline = Deadline::after(limits.budget);
+    let p = validated(unknown, request.to_problem(limits, deadline)).map_err(|e| match deadline.expired() {
         true => ApiError::OverBudget(deadline.exceeded("while assembling the machine".into()).to_string()),
         false => e,
     })?;

@@ -1,6 +1,7 @@
 //! `POST /v1/flywheel` request and its conversion into an engine problem.
 
 use crate::api::kinetostatics::{InputDto, LoadDto, machine_parts};
+use crate::api::limits::Limits;
 use crate::api::mechanism::MechanismDto;
 use crate::api::quantity::{Errors, FunctionDto, Quantity};
 use crate::engine::Deadline;
@@ -17,8 +18,6 @@ use utoipa::ToSchema;
 pub const MAX_TORQUES: usize = 100;
 /// Longest torque name, in characters.
 pub const MAX_NAME: usize = 200;
-/// Most rows in the sampled table of the result.
-pub const MAX_SAMPLES: usize = 100_000;
 const DEFAULT_SAMPLES: usize = 361;
 
 /// A flywheel design problem. Give the speeds as exactly one of:
@@ -119,8 +118,12 @@ pub struct DiskDto {
 impl FlywheelRequest {
     /// Validates the request, collecting every error under its pointer; a
     /// machine is assembled within `deadline`, which the problem keeps.
-    pub fn to_problem(&self, deadline: Deadline) -> Result<FlywheelProblem, Vec<crate::api::problem::FieldError>> {
-        let mut e = Errors::default();
+    pub fn to_problem(
+        &self,
+        limits: &Limits,
+        deadline: Deadline,
+    ) -> Result<FlywheelProblem, Vec<crate::api::problem::FieldError>> {
+        let mut e = Errors::new(limits);
         let period = match &self.period {
             Some(q) => e
                 .angle(q, "/period")
@@ -133,7 +136,7 @@ impl FlywheelRequest {
             t => Some(t.unwrap_or(1e-9)),
         };
         let samples = match self.samples {
-            Some(n) if n > MAX_SAMPLES => e.fail("/samples", format!("must be at most {MAX_SAMPLES}")),
+            Some(n) if n > limits.samples => e.fail("/samples", format!("must be at most {}", limits.samples)),
             Some(1) => e.fail("/samples", "must be 0 (no table) or at least 2"),
             n => Some(n.unwrap_or(DEFAULT_SAMPLES)),
         };
@@ -170,7 +173,7 @@ impl FlywheelRequest {
                 Some(existing_inertia),
                 Some(flywheel_ratio),
                 Some(disk),
-            ) if e.0.is_empty() => Ok(FlywheelProblem {
+            ) if e.list.is_empty() => Ok(FlywheelProblem {
                 period,
                 mean_speed,
                 irregularity,
@@ -185,7 +188,7 @@ impl FlywheelRequest {
                 samples,
                 deadline,
             }),
-            _ => Err(e.0),
+            _ => Err(e.list),
         }
     }
 

@@ -119,7 +119,7 @@ fn load(
         LoadType::Spring => &["a", "b", "stiffness", "free_length"],
         LoadType::Damper => &["a", "b", "coefficient"],
     };
-    let before = e.0.len();
+    let before = e.list.len();
     for (name, given) in present {
         match (fields.contains(&name), given) {
             (true, false) => e.push(at, format!("a {:?} load needs \"{name}\"", l.kind).to_lowercase()),
@@ -127,7 +127,7 @@ fn load(
             _ => {}
         }
     }
-    if e.0.len() > before {
+    if e.list.len() > before {
         return None;
     }
     let ends = |e: &mut Errors, side: &str, v: &(String, PointRef)| {

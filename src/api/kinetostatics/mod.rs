@@ -11,13 +11,13 @@ pub use request::{InputDto, Inputs, KinetostaticsRequest, OutputKind};
 pub use result::{KinetostaticsResult, ReactionDto, Scalars, csv_table};
 
 use super::json::JsonBody;
+use super::limits::Limits;
 use super::problem::{ApiError, FieldError, PostErrors};
 use super::{AppState, engine_failure, jobs, validated};
 use crate::engine::Deadline;
 use crate::engine::kinetostatics::solve;
 use axum::extract::State;
 use axum::response::Response;
-use std::time::Duration;
 
 /// Inverse dynamics over a range of input positions: driving torque or force,
 /// every joint reaction, reduced inertia and torque, checked by virtual power.
@@ -29,23 +29,23 @@ use std::time::Duration;
     ))]
 pub async fn create(State(state): State<AppState>, body: JsonBody<KinetostaticsRequest>) -> Result<Response, ApiError> {
     let JsonBody { value, raw, unknown } = body;
-    let budget = state.job_budget;
-    jobs::create(&state, "kinetostatics", raw, move || compute_within(&value, unknown, budget)).await
+    let limits = state.limits.clone();
+    jobs::create(&state, "kinetostatics", raw, move || compute_within(&value, unknown, &limits)).await
 }
 
-/// Validates and solves a request within the default budget (`mechdyn solve kinetostatics`).
+/// Validates and solves a request within the default limits (`mechdyn solve kinetostatics`).
 pub fn compute(request: &KinetostaticsRequest, unknown: Vec<FieldError>) -> Result<KinetostaticsResult, ApiError> {
-    compute_within(request, unknown, super::DEFAULT_BUDGET)
+    compute_within(request, unknown, &Limits::default())
 }
 
-/// Validates and solves a request, stopping after `budget`.
+/// Validates and solves a request within `limits`, stopping when the compute budget runs out.
 pub fn compute_within(
     request: &KinetostaticsRequest,
     unknown: Vec<FieldError>,
-    budget: Duration,
+    limits: &Limits,
 ) -> Result<KinetostaticsResult, ApiError> {
-    let deadline = Deadline::after(budget);
-    let problem = validated(unknown, request.to_problem())?;
+    let deadline = Deadline::after(limits.budget);
+    let problem = validated(unknown, request.to_problem(limits))?;
     let solution = solve(&problem.mechanism, &problem.loads, &problem.positions, problem.outputs, &deadline)
         .map_err(|e| engine_failure(e, "/input"))?;
     let joint_names: Vec<String> = problem.mechanism.joints.iter().map(|j| j.name.clone()).collect();

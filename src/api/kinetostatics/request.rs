@@ -1,6 +1,7 @@
 //! `POST /v1/kinetostatics` request and its conversion into an engine problem.
 
 use super::loads::{LoadDto, convert_loads};
+use crate::api::limits::Limits;
 use crate::api::mechanism::MechanismDto;
 use crate::api::problem::FieldError;
 use crate::api::quantity::{Errors, FunctionDto, Quantity};
@@ -16,8 +17,6 @@ use utoipa::openapi::schema::{ArrayBuilder, OneOfBuilder, Schema};
 use utoipa::openapi::{Ref, RefOr};
 use utoipa::{PartialSchema, ToSchema};
 
-/// Most positions in one job.
-pub const MAX_STEPS: usize = 100_000;
 const DEFAULT_STEPS: usize = 360;
 
 /// A kinetostatic (inverse dynamics) problem: a mechanism, its driven input(s) and its loads.
@@ -147,13 +146,13 @@ pub struct Problem {
 }
 
 impl KinetostaticsRequest {
-    pub fn to_problem(&self) -> Result<Problem, Vec<FieldError>> {
-        let mut e = Errors::default();
+    pub fn to_problem(&self, limits: &Limits) -> Result<Problem, Vec<FieldError>> {
+        let mut e = Errors::new(limits);
         let converted = self.mechanism.convert(&mut e, "/mechanism");
         let outputs = self.outputs.clone().unwrap_or_else(|| {
             vec![OutputKind::Driving, OutputKind::Reactions, OutputKind::Kinematics, OutputKind::Reduced]
         });
-        let Some(c) = converted else { return Err(e.0) };
+        let Some(c) = converted else { return Err(e.list) };
         let mut mechanism = c.mechanism;
         let inputs = match &self.input {
             Inputs::One(i) => vec![(**i).clone()],
@@ -172,8 +171,8 @@ impl KinetostaticsRequest {
             "/loads",
             &["phi"],
         );
-        if !e.0.is_empty() {
-            return Err(e.0);
+        if !e.list.is_empty() {
+            return Err(e.list);
         }
         Ok(Problem {
             mechanism,
@@ -231,8 +230,9 @@ fn positions(
     if inputs.is_empty() || inputs.len() > 10 {
         e.push("/input", "give 1 to 10 inputs");
     }
-    if steps == 0 || steps > MAX_STEPS {
-        e.push(if many { "/input/0/steps" } else { "/input/steps" }, format!("must be 1 to {MAX_STEPS}"));
+    let max = e.limits.steps;
+    if steps == 0 || steps > max {
+        e.push(if many { "/input/0/steps" } else { "/input/steps" }, format!("must be 1 to {max}"));
     }
     for (k, input) in inputs.iter().enumerate() {
         let at = if many { format!("/input/{k}") } else { "/input".to_string() };

@@ -41,14 +41,26 @@ impl Expr {
     /// Parses `source` with the given variable names (their order is the order
     /// of the values passed to [`Expr::eval`]) and folds constant subtrees.
     pub fn compile(source: &str, variables: &[&str]) -> Result<Self, ExprError> {
+        Self::compile_within(source, variables, MAX_LENGTH, MAX_DEPTH)
+    }
+
+    /// [`Expr::compile`] with other limits on the length (characters) and the
+    /// nesting depth; the parser recurses once per level, so `max_depth`
+    /// bounds its stack.
+    pub fn compile_within(
+        source: &str,
+        variables: &[&str],
+        max_length: usize,
+        max_depth: usize,
+    ) -> Result<Self, ExprError> {
         let length = source.chars().count();
-        if length > MAX_LENGTH {
+        if length > max_length {
             return Err(ExprError {
-                position: MAX_LENGTH,
-                message: format!("expression has {length} characters; the maximum is {MAX_LENGTH}"),
+                position: max_length,
+                message: format!("expression has {length} characters; the maximum is {max_length}"),
             });
         }
-        Ok(Self::from_root(parse::Parser::parse(source, variables, MAX_DEPTH)?.fold()))
+        Ok(Self::from_root(parse::Parser::parse(source, variables, max_depth)?.fold()))
     }
 
     fn from_root(root: Node) -> Self {

@@ -1,0 +1,43 @@
+//! What one request may ask, each limit configurable (flags and environment
+//! variables in `config.rs`); beyond a limit the request is refused 422 with
+//! a pointer to the field, and a job over its compute budget is stopped.
+//! The OpenAPI document states the defaults.
+
+use std::time::Duration;
+
+/// Deepest expression nesting that may be configured: the parser recurses
+/// once per level, on the blocking pool's 2 MiB thread stacks.
+pub const MAX_EXPRESSION_DEPTH: usize = 256;
+
+/// Limits on one request.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Limits {
+    /// Wall-clock compute budget of a job.
+    pub budget: Duration,
+    /// Input positions of a kinetostatics job.
+    pub steps: usize,
+    /// Result samples of a flywheel or dynamics job.
+    pub samples: usize,
+    /// Rows of a table function.
+    pub table_rows: usize,
+    /// Segments of a piecewise function.
+    pub segments: usize,
+    /// Characters of an expression.
+    pub expression_length: usize,
+    /// Levels of nesting of an expression (at most [`MAX_EXPRESSION_DEPTH`]).
+    pub expression_depth: usize,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Self {
+            budget: Duration::from_secs(20),
+            steps: 100_000,
+            samples: 100_000,
+            table_rows: 100_000,
+            segments: 1_000,
+            expression_length: 2_000,
+            expression_depth: 64,
+        }
+    }
+}
