@@ -14,11 +14,28 @@ use std::time::{Duration, Instant};
 const SECONDS: u32 = 5;
 const CONNECTIONS: [u32; 3] = [1, 16, 64];
 
-/// The service on a free loopback port, killed on drop.
-struct Service {
+/// The service on a free loopback port, its log in its folder, killed on drop.
+pub struct Service {
     child: Child,
-    addr: String,
-    _dir: tempfile::TempDir,
+    pub addr: String,
+    dir: tempfile::TempDir,
+}
+
+impl Service {
+    /// Resident memory now and at its peak (VmRSS, VmHWM), MiB.
+    pub fn memory(&self) -> (f64, f64) {
+        let status = std::fs::read_to_string(format!("/proc/{}/status", self.child.id())).unwrap_or_default();
+        let mib = |key: &str| {
+            let kib = status.lines().find_map(|l| l.strip_prefix(key))?.split_whitespace().next()?.parse::<f64>();
+            kib.ok().map(|k| k / 1024.0)
+        };
+        (mib("VmRSS:").unwrap_or(f64::NAN), mib("VmHWM:").unwrap_or(f64::NAN))
+    }
+
+    /// What the service logged so far (at `warn` and above).
+    pub fn log(&self) -> String {
+        std::fs::read_to_string(self.dir.path().join("service.log")).unwrap_or_default()
+    }
 }
 
 impl Drop for Service {
@@ -28,18 +45,20 @@ impl Drop for Service {
     }
 }
 
-fn start() -> Result<Service, String> {
+pub fn start() -> Result<Service, String> {
     let port = TcpListener::bind("127.0.0.1:0").and_then(|l| l.local_addr()).map_err(|e| e.to_string())?.port();
     let addr = format!("127.0.0.1:{port}");
     let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
+    let log = std::fs::File::create(dir.path().join("service.log")).map_err(|e| e.to_string())?;
     let child = Command::new(env!("CARGO_BIN_EXE_mechdyn"))
         .env("MECHDYN_ADDR", &addr)
         .env("DATABASE_URL", format!("sqlite://{}/jobs.db", dir.path().display()))
         .env("RUST_LOG", "warn")
-        .stdout(Stdio::null())
+        .stdout(log)
+        .stderr(Stdio::null())
         .spawn()
         .map_err(|e| format!("mechdyn: {e}"))?;
-    let service = Service { child, addr, _dir: dir };
+    let service = Service { child, addr, dir };
     let deadline = Instant::now() + Duration::from_secs(20);
     while TcpStream::connect(&service.addr).is_err() {
         if Instant::now() > deadline {
@@ -139,6 +158,16 @@ pub fn section() -> String {
             }
         }
     }
+    let (_, peak) = service.memory();
+    let log = service.log();
+    let count = |needle: &str| log.lines().filter(|l| l.contains(needle)).count();
+    let _ = writeln!(
+        text,
+        "\nThe service's peak resident memory over these runs: {peak:.0} MiB; its log has {} errors and {} \
+         \"database is locked\" (at `warn`).",
+        count("ERROR"),
+        count("database is locked")
+    );
     if let Some((rate, p99)) = light {
         let verdict = if rate >= 5000.0 && p99 <= 20.0 { "met" } else { "missed" };
         let _ = writeln!(
