@@ -7,18 +7,41 @@ use axum::http::{Request, StatusCode};
 use axum::routing::get;
 use mechdyn::api::Settings;
 use mechdyn::api::middleware::layered;
+use std::sync::{Arc, Mutex};
 
 async fn boom() -> &'static str {
     panic!("secret detail: table jobs at src/store/mod.rs:42")
 }
 
+/// The log lines written while the guard lives (this thread only).
+#[derive(Clone, Default)]
+struct Log(Arc<Mutex<Vec<u8>>>);
+
+impl std::io::Write for Log {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        self.0.lock().unwrap().extend_from_slice(buf);
+        Ok(buf.len())
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
 /// A handler that panics is answered 500 problem+json saying nothing of the
-/// panic, with the request id (logged with the panic) in `x-request-id`.
+/// panic, with the request id in `x-request-id`; the log has the panic's
+/// message with that request id.
 #[tokio::test]
 async fn a_panicking_handler_is_answered_500_without_internals() {
+    let log = Log::default();
+    let writer = log.clone();
+    let subscriber = tracing_subscriber::fmt().with_ansi(false).with_writer(move || writer.clone()).finish();
+    let _guard = tracing::subscriber::set_default(subscriber);
     let mut app = TestApp::new().await;
     app.app = layered(axum::Router::new().route("/boom", get(boom)), &Settings::default());
     let r = app.send(Request::get("/boom").header("x-request-id", "trace-me-42").body(Body::empty()).unwrap()).await;
+    let logged = String::from_utf8(log.0.lock().unwrap().clone()).unwrap();
+    let line = logged.lines().find(|l| l.contains("handler panicked")).unwrap_or_else(|| panic!("{logged}"));
+    assert!(line.contains("request_id=trace-me-42") && line.contains("secret detail"), "{line}");
     assert_eq!(r.status, StatusCode::INTERNAL_SERVER_ERROR);
     assert_eq!(r.content_type, "application/problem+json");
     assert_eq!(r.json()["type"], "/problems/internal", "{}", r.text);
