@@ -92,6 +92,17 @@ fn main() {
     println!("wrote {path}");
 }
 
+/// Resident memory gained over each quarter of the run, MiB: flat memory
+/// gains nothing in the last quarters.
+fn quarters(samples: &[(u64, f64)]) -> String {
+    let n = samples.len();
+    if n < 8 {
+        return "too few samples".into();
+    }
+    let at = |k: usize| samples[(k * (n - 1)) / 4].1;
+    (0..4).map(|k| format!("{:+.1}", at(k + 1) - at(k))).collect::<Vec<_>>().join(", ") + " MiB"
+}
+
 fn report(seconds: u64, wrk: &str, idle: f64, samples: &[(u64, f64)], end: f64, peak: f64, log: &str) -> String {
     let field = |prefix: &str| {
         wrk.lines().find_map(|l| l.trim().strip_prefix(prefix).map(|v| v.trim().to_string())).unwrap_or_default()
@@ -118,6 +129,7 @@ fn report(seconds: u64, wrk: &str, idle: f64, samples: &[(u64, f64)], end: f64, 
         ("after 20 s of load", format!("{warm:.1} MiB")),
         ("at the end", format!("{end:.1} MiB")),
         ("peak (VmHWM)", format!("{peak:.1} MiB")),
+        ("growth over each quarter of the run", quarters(samples)),
     ];
     for (what, value) in rows {
         let value = if value.is_empty() { "none".to_string() } else { value };
