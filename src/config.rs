@@ -31,41 +31,47 @@ pub struct Cli {
     #[arg(long, env = "MECHDYN_CORS_ORIGINS", value_delimiter = ',', global = true)]
     pub cors_origins: Vec<String>,
     /// Wall-clock compute budget of a job, seconds (a job over it is stopped and answered 422).
-    #[arg(long, env = "MECHDYN_JOB_SECONDS", default_value_t = 20.0, value_parser = positive_seconds, global = true)]
+    #[arg(long, env = "MECHDYN_JOB_SECONDS", default_value_t = Limits::default().budget.as_secs_f64(), value_parser = positive_seconds, global = true)]
     pub job_seconds: f64,
-    /// Most input positions of a kinetostatics job [default: 100000].
-    #[arg(long, env = "MECHDYN_MAX_STEPS", value_parser = at_least_one, global = true)]
-    pub max_steps: Option<usize>,
-    /// Most result samples of a flywheel or dynamics job [default: 100000].
-    #[arg(long, env = "MECHDYN_MAX_SAMPLES", value_parser = at_least_one, global = true)]
-    pub max_samples: Option<usize>,
-    /// Most rows of a table function [default: 100000].
-    #[arg(long, env = "MECHDYN_MAX_TABLE_ROWS", value_parser = at_least_one, global = true)]
-    pub max_table_rows: Option<usize>,
-    /// Most segments of a piecewise function [default: 1000].
-    #[arg(long, env = "MECHDYN_MAX_SEGMENTS", value_parser = at_least_one, global = true)]
-    pub max_segments: Option<usize>,
-    /// Most characters of an expression [default: 2000].
-    #[arg(long, env = "MECHDYN_MAX_EXPRESSION_LENGTH", value_parser = at_least_one, global = true)]
-    pub max_expression_length: Option<usize>,
-    /// Most levels of nesting of an expression, 1 to 256 [default: 64].
-    #[arg(long, env = "MECHDYN_MAX_EXPRESSION_DEPTH", value_parser = clap::value_parser!(u16).range(1..=MAX_EXPRESSION_DEPTH as i64), global = true)]
-    pub max_expression_depth: Option<u16>,
+    /// Most input positions of a kinetostatics job.
+    #[arg(long, env = "MECHDYN_MAX_STEPS", default_value_t = Limits::default().steps, value_parser = at_least_one, global = true)]
+    pub max_steps: usize,
+    /// Most result samples of a flywheel or dynamics job.
+    #[arg(long, env = "MECHDYN_MAX_SAMPLES", default_value_t = Limits::default().samples, value_parser = at_least_one, global = true)]
+    pub max_samples: usize,
+    /// Most rows of a table function.
+    #[arg(long, env = "MECHDYN_MAX_TABLE_ROWS", default_value_t = Limits::default().table_rows, value_parser = at_least_one, global = true)]
+    pub max_table_rows: usize,
+    /// Most segments of a piecewise function.
+    #[arg(long, env = "MECHDYN_MAX_SEGMENTS", default_value_t = Limits::default().segments, value_parser = at_least_one, global = true)]
+    pub max_segments: usize,
+    /// Most characters of an expression.
+    #[arg(long, env = "MECHDYN_MAX_EXPRESSION_LENGTH", default_value_t = Limits::default().expression_length, value_parser = at_least_one, global = true)]
+    pub max_expression_length: usize,
+    /// Most levels of nesting of an expression, 1 to 256.
+    #[arg(long, env = "MECHDYN_MAX_EXPRESSION_DEPTH", default_value_t = Limits::default().expression_depth, value_parser = depth, global = true)]
+    pub max_expression_depth: usize,
 }
 
 impl Cli {
-    /// The limits on one request: the defaults, with those given replaced.
+    /// The limits on one request.
     pub fn limits(&self) -> Limits {
-        let d = Limits::default();
         Limits {
             budget: Duration::from_secs_f64(self.job_seconds),
-            steps: self.max_steps.unwrap_or(d.steps),
-            samples: self.max_samples.unwrap_or(d.samples),
-            table_rows: self.max_table_rows.unwrap_or(d.table_rows),
-            segments: self.max_segments.unwrap_or(d.segments),
-            expression_length: self.max_expression_length.unwrap_or(d.expression_length),
-            expression_depth: self.max_expression_depth.map_or(d.expression_depth, usize::from),
+            steps: self.max_steps,
+            samples: self.max_samples,
+            table_rows: self.max_table_rows,
+            segments: self.max_segments,
+            expression_length: self.max_expression_length,
+            expression_depth: self.max_expression_depth,
         }
+    }
+}
+
+fn depth(s: &str) -> Result<usize, String> {
+    match s.parse::<usize>() {
+        Ok(n) if (1..=MAX_EXPRESSION_DEPTH).contains(&n) => Ok(n),
+        _ => Err(format!("{s:?} is not a nesting depth from 1 to {MAX_EXPRESSION_DEPTH}")),
     }
 }
 
@@ -98,4 +104,22 @@ pub enum Command {
         /// Request JSON file ("-" for standard input).
         file: PathBuf,
     },
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// No flags and no environment: the limits are the service's defaults.
+    #[test]
+    fn without_flags_the_limits_are_the_defaults() {
+        let cli = Cli::try_parse_from(["mechdyn"]).unwrap();
+        if std::env::vars().all(|(k, _)| !k.starts_with("MECHDYN_")) {
+            assert_eq!(cli.limits(), Limits::default());
+        }
+        let cli = Cli::try_parse_from(["mechdyn", "--max-steps", "7", "--max-expression-depth", "256"]).unwrap();
+        assert_eq!((cli.limits().steps, cli.limits().expression_depth), (7, 256));
+        assert!(Cli::try_parse_from(["mechdyn", "--max-expression-depth", "257"]).is_err());
+        assert!(Cli::try_parse_from(["mechdyn", "--max-segments", "0"]).is_err());
+    }
 }
