@@ -24,6 +24,11 @@ impl Deadline {
         Self { start: Instant::now(), budget: None }
     }
 
+    /// The budget in seconds (infinite for none).
+    pub fn seconds(&self) -> f64 {
+        self.budget.map_or(f64::INFINITY, |b| b.as_secs_f64())
+    }
+
     pub fn expired(&self) -> bool {
         self.budget.is_some_and(|b| self.start.elapsed() > b)
     }

@@ -4,7 +4,8 @@
 //! ω² = 10(φ + sin 2φ)/I*(φ) and t = ∫dφ/ω; tolerance 1e-9 (the case's; the
 //! integration runs at 1e-11).
 
-use mechdyn::engine::dynamics::{End, EventKind, ReducedProblem, solve};
+use mechdyn::engine::Deadline;
+use mechdyn::engine::dynamics::{DynamicsError, End, EventKind, ReducedProblem, solve};
 use mechdyn::engine::expr::Expr;
 use mechdyn::engine::function::Function;
 use serde_json::Value;
@@ -27,7 +28,7 @@ fn problem(end: End, samples: usize) -> ReducedProblem {
         end,
         tolerance: 1e-9,
         samples,
-        budget: None,
+        deadline: Deadline::none(),
     }
 }
 
@@ -62,5 +63,19 @@ fn d1_state_at_given_times() {
         close(sample.angle, row["angle_rad"].as_f64().unwrap(), 1e-9, "angle");
         close(sample.speed, row["omega_rad_s"].as_f64().unwrap(), 1e-9, "speed");
         close(sample.acceleration, row["alpha_rad_s2"].as_f64().unwrap(), 1e-9, "acceleration");
+    }
+}
+
+/// The budget is read before every evaluation of dy/dt, not every 64 steps
+/// as before: a run whose budget has run out stops in its first step (one
+/// step attempted at most), however much a step costs.
+#[test]
+fn a_spent_budget_stops_the_integration_within_its_first_step() {
+    let mut p = problem(End::Duration(100.0), 11);
+    p.deadline = Deadline::after(std::time::Duration::ZERO);
+    std::thread::sleep(std::time::Duration::from_millis(2));
+    match solve(&p) {
+        Err(DynamicsError::Budget { t, steps, .. }) => assert!(t == 0.0 && steps <= 1, "t = {t}, steps = {steps}"),
+        other => panic!("expected the budget to run out: {other:?}"),
     }
 }

@@ -31,7 +31,7 @@ fn problem(mechanism: Mechanism, loads: Vec<Load>, initial: Vec<[f64; 2]>, end: 
         end,
         tolerance: 1e-10,
         samples: 21,
-        budget: None,
+        deadline: Deadline::none(),
         reactions: true,
     }
 }
@@ -85,7 +85,7 @@ fn slider_crank_matches_its_reduced_form() {
         end: End::Duration(1.0),
         tolerance: 1e-10,
         samples: 21,
-        budget: None,
+        deadline: Deadline::none(),
     })
     .unwrap();
     assert!(mech.solution.samples[20].angle > 4.0 * PI, "it turns: {:?}", mech.solution.samples[20]);
@@ -222,9 +222,22 @@ fn double_pendulum_matches_its_lagrange_equations() {
 fn a_stiff_spring_runs_out_of_its_budget_with_the_reason() {
     let mut p = problem(pendulum(), Vec::new(), vec![[0.0, 0.0]], End::Duration(100.0));
     p.loads = vec![Load::Spring { a: (1, [1.0, 0.0]), b: (0, [2.0, 0.0]), stiffness: 1e10, free_length: 0.9 }];
-    p.budget = Some(std::time::Duration::from_millis(300));
+    p.deadline = Deadline::after(std::time::Duration::from_millis(300));
     match solve(&p) {
         Err(DynamicsError::Budget { t, steps, .. }) => assert!(t < 100.0 && steps > 0, "t = {t}, steps = {steps}"),
+        other => panic!("expected the budget to run out: {other:?}"),
+    }
+}
+
+/// A mechanism whose budget is spent before it starts answers that the
+/// budget ran out (not that its start cannot be assembled).
+#[test]
+fn a_spent_budget_is_reported_as_such_before_the_first_step() {
+    let mut p = problem(pendulum(), Vec::new(), vec![[0.5, 0.0]], End::Duration(100.0));
+    p.deadline = Deadline::after(std::time::Duration::ZERO);
+    std::thread::sleep(std::time::Duration::from_millis(2));
+    match solve(&p) {
+        Err(DynamicsError::Budget { t, steps, .. }) => assert!(t == 0.0 && steps == 0, "t = {t}, steps = {steps}"),
         other => panic!("expected the budget to run out: {other:?}"),
     }
 }

@@ -7,7 +7,8 @@ use super::json::JsonBody;
 use super::limits::Limits;
 use super::problem::{ApiError, FieldError, PostErrors};
 use super::quantity::{Errors, FunctionDto, Quantity};
-use super::{AppState, jobs, validated};
+use super::{AppState, create, jobs, validated};
+use crate::engine::Deadline;
 use crate::engine::dynamics::mechanism::{self, MechanismProblem};
 use crate::engine::dynamics::{DynamicsError, DynamicsSolution, End, EventKind, ReducedProblem, solve};
 use crate::engine::function::Function;
@@ -16,7 +17,6 @@ use axum::extract::State;
 use axum::response::Response;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
-use std::time::Duration;
 use utoipa::ToSchema;
 
 pub use machine::{DynamicsMachine, InputState, MachineDynamics, MachineSample};
@@ -145,6 +145,13 @@ pub struct DynamicsResult {
     pub warnings: Vec<String>,
 }
 
+impl create::JobResult for DynamicsResult {
+    fn rows(&self) -> Option<create::Rows> {
+        let (field, count) = ("/samples".into(), self.samples.len());
+        Some(create::Rows { field, count, also: " (events: one per turn, fewer with a shorter run)" })
+    }
+}
+
 /// Integrates I*(φ)φ̈ + ½I*'(φ)φ̇² = M*(φ, ω, t), or a mechanism's equations
 /// of motion, from the initial state.
 #[utoipa::path(post, path = "/v1/dynamics", operation_id = "create_dynamics_job", tag = "dynamics", request_body = DynamicsRequest,
@@ -156,7 +163,7 @@ pub struct DynamicsResult {
 pub async fn create(State(state): State<AppState>, body: JsonBody<DynamicsRequest>) -> Result<Response, ApiError> {
     let JsonBody { value, raw, unknown } = body;
     let limits = state.limits.clone();
-    jobs::create(&state, "dynamics", raw, move || compute_within(&value, unknown, &limits)).await
+    create::create(&state, "dynamics", raw, move || compute_within(&value, unknown, &limits)).await
 }
 
 /// Validates and solves a request within the default limits (`mechdyn solve dynamics`).
@@ -220,7 +227,8 @@ struct Common {
     period: f64,
     tolerance: f64,
     samples: usize,
-    budget: Duration,
+    /// The job's compute budget, counted from the start of the conversion.
+    deadline: Deadline,
 }
 
 impl DynamicsRequest {
@@ -260,7 +268,7 @@ impl DynamicsRequest {
             period: period.unwrap_or(2.0 * PI),
             tolerance: tolerance.unwrap_or(1e-9),
             samples: samples.unwrap_or(DEFAULT_SAMPLES),
-            budget: e.limits.budget,
+            deadline: Deadline::after(e.limits.budget),
         }
     }
 
@@ -310,7 +318,7 @@ impl DynamicsRequest {
             end: end?,
             tolerance: c.tolerance,
             samples: c.samples,
-            budget: Some(c.budget),
+            deadline: c.deadline,
         }))
     }
 
@@ -327,7 +335,7 @@ impl DynamicsRequest {
             end,
             tolerance: c.tolerance,
             samples: c.samples,
-            budget: Some(c.budget),
+            deadline: c.deadline,
             reactions: m.reactions.unwrap_or(true),
         };
         Some(Problem::Machine(problem, parts.joint_names, parts.body_names))

@@ -19,6 +19,7 @@
 
 use super::rows::Rows;
 use super::{DynamicsError, DynamicsSolution, End, Model, Sample, Settings, energy_residual, run, sample_states};
+use crate::engine::Deadline;
 use crate::engine::constraints::{State, System, evaluate, joint_offsets};
 use crate::engine::kinematics::sweep;
 use crate::engine::kinetostatics::{Load, Reaction, applied_forces, reactions};
@@ -26,7 +27,6 @@ use crate::engine::mobility::{Mobility, mobility};
 use crate::engine::model::Mechanism;
 use nalgebra::{DMatrix, DVector};
 use std::cell::RefCell;
-use std::time::Duration;
 
 /// A validated mechanism problem in SI units.
 #[derive(Clone, Debug)]
@@ -41,7 +41,8 @@ pub struct MechanismProblem {
     pub end: End,
     pub tolerance: f64,
     pub samples: usize,
-    pub budget: Option<Duration>,
+    /// The job's compute budget.
+    pub deadline: Deadline,
     /// Compute the joint reactions at the samples.
     pub reactions: bool,
 }
@@ -199,7 +200,10 @@ pub fn solve(p: &MechanismProblem) -> Result<MechanismSolution, DynamicsError> {
     let m = &p.mechanism;
     let initial = |reason: String| DynamicsError::Initial { reason };
     let inputs: Vec<[f64; 3]> = p.initial.iter().map(|[a, w]| [*a, *w, 0.0]).collect();
-    let start = sweep(m, &[inputs], &crate::engine::Deadline::none()).map_err(|e| initial(e.to_string()))?.remove(0);
+    let over = |t: f64, steps: usize| DynamicsError::Budget { seconds: p.deadline.seconds(), t, steps };
+    let start = sweep(m, &[inputs], &p.deadline)
+        .map_err(|e| if p.deadline.expired() { over(0.0, 0) } else { initial(e.to_string()) })?
+        .remove(0);
     if start.singular {
         return Err(initial("the start is a singular position of the inputs (a dead centre or toggle)".into()));
     }
@@ -234,6 +238,9 @@ pub fn solve(p: &MechanismProblem) -> Result<MechanismSolution, DynamicsError> {
     let mut details = Vec::with_capacity(states.len());
     let mut samples = Vec::with_capacity(states.len());
     for (t, y) in &states {
+        if p.deadline.expired() {
+            return Err(over(run.t_end, run.attempted));
+        }
         let detail = sample(&dae, &mobility, *t, y)?;
         let [angle, speed, acceleration] = detail.inputs[0];
         samples.push(Sample { t: *t, angle, speed, acceleration });
@@ -289,7 +296,7 @@ fn settings(p: &MechanismProblem, q: &[f64], qd: &[f64], length: f64) -> Setting
     };
     let mut atol: Vec<f64> = (0..2 * n).map(|k| rtol * scale(k)).collect();
     atol.push(f64::INFINITY);
-    Settings { end: p.end, rtol, atol, budget: p.budget }
+    Settings { end: p.end, rtol, atol, deadline: p.deadline }
 }
 
 /// The span of the drawn points and centres of mass (at least 1 mm).

@@ -19,8 +19,8 @@ pub use reduced::{ReducedProblem, solve};
 
 use super::numeric::ode::{Dopri5, Step};
 use super::numeric::roots::brent;
+use crate::engine::Deadline;
 use std::f64::consts::PI;
-use std::time::{Duration, Instant};
 
 /// When the run ends.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -112,7 +112,10 @@ pub(crate) struct Settings {
     pub end: End,
     pub rtol: f64,
     pub atol: Vec<f64>,
-    pub budget: Option<Duration>,
+    /// The job's compute budget, read after every step and before every
+    /// evaluation of dy/dt (an evaluation after it answers NaN, so the step
+    /// in progress ends at once).
+    pub deadline: Deadline,
 }
 
 /// The accepted steps up to the end time, with the events.
@@ -133,14 +136,26 @@ const MAX_STEPS: usize = 2_000_000;
 
 /// Integrates the model from y₀ at t = 0 until the end condition.
 pub(crate) fn run(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Run, DynamicsError> {
-    let started = Instant::now();
-    let mut f = |t: f64, y: &[f64], dy: &mut [f64]| model.rhs(t, y, dy);
+    let deadline = s.deadline;
+    let mut f = |t: f64, y: &[f64], dy: &mut [f64]| {
+        if deadline.expired() { dy.fill(f64::NAN) } else { model.rhs(t, y, dy) }
+    };
+    let over = |ode: &Dopri5| DynamicsError::Budget {
+        seconds: deadline.seconds(),
+        t: ode.t(),
+        steps: ode.accepted,
+    };
     let mut ode = Dopri5::new(&mut f, 0.0, y0, s.rtol, s.atol.clone(), f64::INFINITY);
     let (mut steps, mut events, mut stopped, mut drift) = (Vec::new(), Vec::new(), None, 0.0f64);
     let t_end = loop {
-        let step = ode
-            .step(&mut f, MAX_STEPS)
-            .map_err(|e| DynamicsError::Integration { t: ode.t(), reason: e.to_string() })?;
+        if deadline.expired() {
+            return Err(over(&ode));
+        }
+        let step = ode.step(&mut f, MAX_STEPS);
+        if deadline.expired() {
+            return Err(over(&ode));
+        }
+        let step = step.map_err(|e| DynamicsError::Integration { t: ode.t(), reason: e.to_string() })?;
         // φ at both ends of the step, evaluated once: for a mechanism each
         // evaluation assembles the constraints.
         let span = (model.angle(&step.y0), model.angle(&step.y1));
@@ -156,13 +171,6 @@ pub(crate) fn run(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Run,
             ode.project(&mut f, y);
         }
         steps.push(step);
-        if let Some(budget) = s.budget
-            && steps.len() % 64 == 0
-            && started.elapsed() > budget
-        {
-            let steps = ode.accepted + ode.rejected;
-            return Err(DynamicsError::Budget { seconds: budget.as_secs_f64(), t: ode.t(), steps });
-        }
     };
     events.retain(|e| e.kind == EventKind::End || e.t <= t_end);
     Ok(Run {

@@ -13,8 +13,8 @@
 
 use super::energy_form;
 use super::{DynamicsError, DynamicsSolution, End, Model, Sample, Settings, energy_residual, run, sample_states};
+use crate::engine::Deadline;
 use crate::engine::function::{Function, Side};
-use std::time::Duration;
 
 /// A validated reduced problem in SI units.
 #[derive(Clone, Debug)]
@@ -28,8 +28,8 @@ pub struct ReducedProblem {
     pub end: End,
     pub tolerance: f64,
     pub samples: usize,
-    /// Wall-clock limit of the integration.
-    pub budget: Option<Duration>,
+    /// The job's compute budget.
+    pub deadline: Deadline,
 }
 
 struct Reduced<'a> {
@@ -102,7 +102,7 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
     let model = Reduced { p, slope: p.inertia.derivative() };
     let rtol = (0.01 * p.tolerance).clamp(1e-13, 1e-4);
     let atol = rtol * p.speed0.abs().max(1.0);
-    let settings = Settings { end: p.end, rtol, atol: vec![atol; 3], budget: p.budget };
+    let settings = Settings { end: p.end, rtol, atol: vec![atol; 3], deadline: p.deadline };
     let run = run(&model, vec![p.angle0, p.speed0, 0.0], &settings)?;
     let mut dy = [0.0; 3];
     let samples: Vec<Sample> = sample_states(&run.steps, run.t_end, p.samples)
@@ -129,6 +129,9 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
     } else {
         Vec::new()
     };
+    if p.deadline.expired() {
+        return Err(DynamicsError::Budget { seconds: p.deadline.seconds(), t: run.t_end, steps: run.attempted });
+    }
     Ok(DynamicsSolution {
         samples,
         energy_times,
