@@ -1,5 +1,6 @@
 //! Command line and environment settings.
 
+use crate::api::Capacity;
 use crate::api::limits::{Limits, MAX_EXPRESSION_DEPTH};
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -18,7 +19,7 @@ pub struct Cli {
     /// Address to listen on (serve) or to probe (healthcheck).
     #[arg(long, env = "MECHDYN_ADDR", default_value = DEFAULT_ADDR, global = true)]
     pub addr: String,
-    /// SQLite database URL.
+    /// Database URL: sqlite://PATH (the only scheme this version serves).
     #[arg(long, env = "DATABASE_URL", default_value = DEFAULT_DATABASE, global = true)]
     pub database: String,
     /// Largest accepted request body, bytes.
@@ -51,6 +52,21 @@ pub struct Cli {
     /// Most levels of nesting of an expression, 1 to 256.
     #[arg(long, env = "MECHDYN_MAX_EXPRESSION_DEPTH", default_value_t = Limits::default().expression_depth, value_parser = depth, global = true)]
     pub max_expression_depth: usize,
+    /// Largest result of a job as JSON, bytes (a request whose result would be larger is answered 422 saying what fits).
+    #[arg(long, env = "MECHDYN_MAX_RESULT_BYTES", default_value_t = Limits::default().result_bytes, value_parser = at_least_one, global = true)]
+    pub max_result_bytes: usize,
+    /// Jobs computing at once (default: the number of cores).
+    #[arg(long, env = "MECHDYN_JOBS", default_value_t = Capacity::default().jobs, value_parser = at_least_one, global = true)]
+    pub jobs: usize,
+    /// Jobs waiting to compute; beyond them a POST is answered 503 with Retry-After.
+    #[arg(long, env = "MECHDYN_QUEUE", default_value_t = Capacity::default().queue, global = true)]
+    pub queue: usize,
+    /// Bytes of answers carrying jobs held in memory at once (at least the largest result plus the largest body).
+    #[arg(long, env = "MECHDYN_ANSWER_MEMORY_BYTES", default_value_t = Capacity::default().memory, value_parser = at_least_one, global = true)]
+    pub answer_memory_bytes: usize,
+    /// Largest size of the SQLite database, bytes; beyond it POSTs are answered 507 (default: the disk's free space).
+    #[arg(long, env = "MECHDYN_MAX_DATABASE_BYTES", global = true)]
+    pub max_database_bytes: Option<u64>,
 }
 
 impl Cli {
@@ -64,7 +80,21 @@ impl Cli {
             segments: self.max_segments,
             expression_length: self.max_expression_length,
             expression_depth: self.max_expression_depth,
+            result_bytes: self.max_result_bytes,
         }
+    }
+
+    /// The sizes of admission control, checked against the limits: the
+    /// answer memory must hold the largest answer.
+    pub fn capacity(&self) -> Result<Capacity, String> {
+        let largest = self.max_result_bytes.saturating_add(self.max_body_bytes);
+        if self.answer_memory_bytes < largest {
+            return Err(format!(
+                "--answer-memory-bytes ({}) must be at least --max-result-bytes + --max-body-bytes ({largest})",
+                self.answer_memory_bytes
+            ));
+        }
+        Ok(Capacity { jobs: self.jobs, queue: self.queue, memory: self.answer_memory_bytes, ..Capacity::default() })
     }
 }
 

@@ -3,7 +3,7 @@
 use clap::Parser;
 use mechdyn::api::{self, AppState};
 use mechdyn::config::{Cli, Command};
-use mechdyn::store::Store;
+use mechdyn::store::{self, Store};
 use std::io::{IsTerminal, Read, Write};
 use std::process::ExitCode;
 use tracing_subscriber::EnvFilter;
@@ -37,8 +37,14 @@ fn serve(cli: &Cli) -> ExitCode {
 }
 
 async fn run(cli: &Cli) -> Result<(), String> {
-    let store = Store::open(&cli.database).await.map_err(|e| format!("database {}: {e}", cli.database))?;
-    let state = AppState { limits: cli.limits(), ..AppState::new(store) };
+    let shown = store::redact(&cli.database);
+    store::check_scheme(&cli.database).map_err(|e| e.to_string())?;
+    let capacity = cli.capacity()?;
+    let options = store::Options { max_bytes: cli.max_database_bytes };
+    let store = Store::open_with(&cli.database, &options)
+        .await
+        .map_err(|e| format!("database {shown}: {}", e.to_string().replace(&cli.database, &shown)))?;
+    let state = AppState { limits: cli.limits(), admission: api::Admission::new(capacity), ..AppState::new(store) };
     let settings = api::Settings {
         body_limit: cli.max_body_bytes,
         api_token: cli.api_token.clone().filter(|t| !t.is_empty()),
@@ -47,7 +53,7 @@ async fn run(cli: &Cli) -> Result<(), String> {
     let app = api::router(state, &settings);
     let listener = tokio::net::TcpListener::bind(&cli.addr).await.map_err(|e| format!("bind {}: {e}", cli.addr))?;
     let local = listener.local_addr().map_err(|e| e.to_string())?;
-    tracing::info!(addr = %local, database = %cli.database, "mechdyn listening; docs at http://{local}/docs");
+    tracing::info!(addr = %local, database = %shown, "mechdyn listening; docs at http://{local}/docs");
     axum::serve(listener, app).with_graceful_shutdown(shutdown_signal()).await.map_err(|e| e.to_string())?;
     tracing::info!("stopped");
     Ok(())

@@ -3,7 +3,7 @@
 use super::json::JsonBody;
 use super::problem::{ApiError, FieldError, PostErrors};
 use super::quantity::{Errors, Quantity};
-use super::{AppState, jobs, validated};
+use super::{AppState, create, jobs, validated};
 use crate::engine::equivalent::equivalent_masses;
 use crate::units::Dim;
 use axum::extract::State;
@@ -42,6 +42,8 @@ pub struct EquivalentResult {
     pub warnings: Vec<String>,
 }
 
+impl create::JobResult for EquivalentResult {}
+
 /// Masses at the given points with the link's mass, centre of mass and inertia.
 #[utoipa::path(post, path = "/v1/equivalent-masses", operation_id = "create_equivalent_masses_job", tag = "calculators", request_body = EquivalentRequest,
     responses(
@@ -51,7 +53,7 @@ pub struct EquivalentResult {
     ))]
 pub async fn create(State(state): State<AppState>, body: JsonBody<EquivalentRequest>) -> Result<Response, ApiError> {
     let JsonBody { value, raw, unknown } = body;
-    jobs::create(&state, "equivalent_masses", raw, move || compute(&value, unknown)).await
+    create::create(&state, "equivalent_masses", raw, move || compute(&value, unknown)).await
 }
 
 /// Validates and computes a request.

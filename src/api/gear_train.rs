@@ -4,7 +4,7 @@
 use super::json::JsonBody;
 use super::problem::{ApiError, FieldError, PostErrors};
 use super::quantity::{Errors, Quantity};
-use super::{AppState, jobs, validated};
+use super::{AppState, create, jobs, validated};
 use crate::engine::gear_train::{Mesh, Train, TrainError};
 use crate::units::Dim;
 use axum::extract::State;
@@ -92,6 +92,8 @@ pub struct TrainResult {
     pub method: String,
 }
 
+impl create::JobResult for TrainResult {}
+
 /// Speeds of every member (Willis) and the torques that keep it steady (virtual power).
 #[utoipa::path(post, path = "/v1/gears/train", operation_id = "create_gear_train_job", tag = "gears", request_body = TrainRequest,
     responses(
@@ -101,7 +103,7 @@ pub struct TrainResult {
     ))]
 pub async fn create(State(state): State<AppState>, body: JsonBody<TrainRequest>) -> Result<Response, ApiError> {
     let JsonBody { value, raw, unknown } = body;
-    jobs::create(&state, "gear_train", raw, move || compute(&value, unknown)).await
+    create::create(&state, "gear_train", raw, move || compute(&value, unknown)).await
 }
 
 /// A validated train with its given speeds, torques and unknown torques.

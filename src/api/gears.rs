@@ -3,7 +3,7 @@
 use super::json::JsonBody;
 use super::problem::{ApiError, FieldError, PostErrors};
 use super::quantity::{Errors, Quantity};
-use super::{AppState, jobs, validated};
+use super::{AppState, create, jobs, validated};
 use crate::engine::gears::Gear;
 use crate::units::Dim;
 use axum::extract::State;
@@ -51,6 +51,8 @@ pub struct GearResult {
     pub warnings: Vec<String>,
 }
 
+impl create::JobResult for GearResult {}
+
 /// Radii (pitch, base, tip, root) and the tooth thickness on any circle.
 #[utoipa::path(post, path = "/v1/gears/geometry", operation_id = "create_gear_geometry_job", tag = "gears", request_body = GearRequest,
     responses(
@@ -60,7 +62,7 @@ pub struct GearResult {
     ))]
 pub async fn create(State(state): State<AppState>, body: JsonBody<GearRequest>) -> Result<Response, ApiError> {
     let JsonBody { value, raw, unknown } = body;
-    jobs::create(&state, "gears", raw, move || compute(&value, unknown)).await
+    create::create(&state, "gears", raw, move || compute(&value, unknown)).await
 }
 
 /// Validates and computes a request.

@@ -1,18 +1,20 @@
-//! Jobs: created by the POST of each calculation, read back by id, listed,
-//! and exported as CSV.
+//! Jobs: created by the POST of each calculation (`create.rs`), read back
+//! by id, listed, and exported as CSV. A job is sent as the bytes stored, in
+//! pieces ([`Chunks`]), with its answer's memory reserved until it is sent.
 
 use super::AppState;
+use super::body::{Chunks, guarded};
 use super::problem::{ApiError, FieldError, Problem};
-use crate::store::{JobRow, NewJob};
-use axum::Json;
+use crate::store::{JobRow, Page};
+use axum::body::Body;
 use axum::extract::rejection::QueryRejection;
 use axum::extract::{Path, Query, State};
-use axum::http::{StatusCode, header};
+use axum::http::header;
 use axum::response::{IntoResponse, Response};
 use serde::Serialize;
 use serde_json::value::RawValue;
 use std::collections::HashMap;
-use std::time::Instant;
+use tokio::sync::OwnedSemaphorePermit;
 use utoipa::{IntoParams, ToSchema};
 
 /// Kinds of job, as used in `kind` and `GET /v1/jobs?kind=`.
@@ -47,21 +49,6 @@ pub struct Job {
     pub engine_version: String,
 }
 
-impl Job {
-    fn from_row(r: JobRow) -> Result<Self, ApiError> {
-        let raw = |s: String| RawValue::from_string(s).map_err(|e| ApiError::Internal(format!("stored JSON: {e}")));
-        Ok(Self {
-            id: r.id,
-            kind: r.kind,
-            created_at: r.created_at,
-            request: raw(r.request)?,
-            result: raw(r.result)?,
-            timing: Timing { engine_us: r.engine_us },
-            engine_version: r.engine_version,
-        })
-    }
-}
-
 /// A page of jobs, newest first.
 #[derive(Serialize, ToSchema)]
 pub struct JobList {
@@ -70,44 +57,33 @@ pub struct JobList {
     pub next: Option<String>,
 }
 
-/// Runs `compute` off the async workers, stores the job, and answers 201
-/// with the job and its `Location`.
-pub async fn create<R, F>(
-    state: &AppState,
-    kind: &'static str,
-    request: String,
-    compute: F,
-) -> Result<Response, ApiError>
-where
-    R: Serialize + Send + 'static,
-    F: FnOnce() -> Result<R, ApiError> + Send + 'static,
-{
-    let (result, elapsed) = tokio::task::spawn_blocking(move || {
-        let start = Instant::now();
-        let r = compute();
-        (r, start.elapsed())
-    })
-    .await
-    .map_err(|e| ApiError::Internal(format!("engine task: {e}")))?;
-    let result = serde_json::to_string(&result?).map_err(|e| ApiError::Internal(e.to_string()))?;
-    let id = uuid::Uuid::new_v4().to_string();
-    let row = NewJob {
-        id: id.clone(),
-        kind: kind.into(),
-        created_at: now_rfc3339(),
-        request,
-        result,
-        engine_us: i64::try_from(elapsed.as_micros()).unwrap_or(i64::MAX),
-        engine_version: env!("CARGO_PKG_VERSION").into(),
-    };
-    let job = Job::from_row(state.store.insert(row).await?)?;
-    Ok((StatusCode::CREATED, [(header::LOCATION, format!("/v1/jobs/{id}"))], Json(job)).into_response())
+/// Appends the job as JSON, in the order of [`Job`]'s fields: its request
+/// and result are the stored bytes themselves.
+pub fn job_chunks(r: &JobRow, out: &mut Chunks) {
+    let text = |s: &str| serde_json::to_string(s).unwrap_or_default();
+    out.push(format!(
+        "{{\"id\":{},\"kind\":{},\"created_at\":{},\"request\":",
+        text(&r.id),
+        text(&r.kind),
+        text(&r.created_at)
+    ));
+    out.push(r.request.clone());
+    out.push(&b",\"result\":"[..]);
+    out.push(r.result.clone());
+    out.push(format!(",\"timing\":{{\"engine_us\":{}}},\"engine_version\":{}}}", r.engine_us, text(&r.engine_version)));
 }
 
-fn now_rfc3339() -> String {
-    let format =
-        time::macros::format_description!("[year]-[month]-[day]T[hour]:[minute]:[second].[subsecond digits:6]Z");
-    time::OffsetDateTime::now_utc().format(&format).unwrap_or_default()
+/// A JSON answer of these chunks, holding `reserved` until it is sent.
+fn json_answer(body: Chunks, reserved: OwnedSemaphorePermit) -> Response {
+    ([(header::CONTENT_TYPE, "application/json")], guarded(Body::new(body), reserved)).into_response()
+}
+
+/// The memory of a stored job's answer reserved, then the job loaded.
+async fn load(state: &AppState, id: &str, factor: usize) -> Result<(JobRow, OwnedSemaphorePermit), ApiError> {
+    let size = state.store.size(id).await?.ok_or_else(|| ApiError::NotFound(id.into()))?;
+    let reserved = state.admission.memory(size.saturating_mul(factor) + 256).await?;
+    let row = state.store.get(id).await?.ok_or_else(|| ApiError::NotFound(id.into()))?;
+    Ok((row, reserved))
 }
 
 /// Reads a job.
@@ -117,9 +93,11 @@ fn now_rfc3339() -> String {
         (status = 200, description = "The job", body = Job),
         (status = 404, description = "No such job", body = Problem, content_type = "application/problem+json"),
     ))]
-pub async fn get(State(state): State<AppState>, Path(id): Path<String>) -> Result<Json<Job>, ApiError> {
-    let row = state.store.get(&id).await?.ok_or(ApiError::NotFound(id))?;
-    Ok(Json(Job::from_row(row)?))
+pub async fn get(State(state): State<AppState>, Path(id): Path<String>) -> Result<Response, ApiError> {
+    let (row, reserved) = load(&state, &id, 1).await?;
+    let mut body = Chunks::default();
+    job_chunks(&row, &mut body);
+    Ok(json_answer(body, reserved))
 }
 
 /// Query of the jobs list.
@@ -138,7 +116,8 @@ pub struct ListParams {
     before: Option<i64>,
 }
 
-/// Lists jobs, newest first, a page at a time.
+/// Lists jobs, newest first, a page at a time (shorter than `limit` when its
+/// jobs together would exceed the limit on a result; `next` goes on).
 #[utoipa::path(get, path = "/v1/jobs", operation_id = "list_jobs", tag = "jobs", params(ListParams),
     responses(
         (status = 200, description = "A page of jobs", body = JobList),
@@ -147,17 +126,33 @@ pub struct ListParams {
 pub async fn list(
     State(state): State<AppState>,
     query: Result<Query<HashMap<String, String>>, QueryRejection>,
-) -> Result<Json<JobList>, ApiError> {
+) -> Result<Response, ApiError> {
     let Query(q) = query.map_err(|e| ApiError::BadQuery(vec![FieldError::parameter("", e.body_text())]))?;
     let (kind, limit, before) = list_params(&q)?;
-    let rows = state.store.list(kind.as_deref(), before, limit).await?;
-    let next = (rows.len() as i64 == limit).then(|| {
+    let page_bytes = state.limits.result_bytes;
+    let mut reserved = state.admission.memory(page_bytes).await?;
+    let Page { rows, bytes, cut } = state.store.list(kind.as_deref(), before, limit, page_bytes).await?;
+    // A single job may exceed the page's share; reserve the rest of it too.
+    if bytes > page_bytes {
+        reserved.merge(state.admission.memory(bytes - page_bytes).await?);
+    } else if let Some(spare) = reserved.split(page_bytes - bytes.max(1)) {
+        drop(spare);
+    }
+    let next = (rows.len() as i64 == limit || cut).then(|| {
         let last = rows.last().map_or(0, |r| r.seq);
         let kind = kind.as_ref().map(|k| format!("kind={k}&")).unwrap_or_default();
         format!("/v1/jobs?{kind}limit={limit}&before={last}")
     });
-    let items = rows.into_iter().map(Job::from_row).collect::<Result<_, _>>()?;
-    Ok(Json(JobList { items, next }))
+    let mut body = Chunks::default();
+    body.push(&b"{\"items\":["[..]);
+    for (i, row) in rows.iter().enumerate() {
+        if i > 0 {
+            body.push(&b","[..]);
+        }
+        job_chunks(row, &mut body);
+    }
+    body.push(format!("],\"next\":{}}}", serde_json::to_string(&next).unwrap_or_else(|_| "null".into())));
+    Ok(json_answer(body, reserved))
 }
 
 fn list_params(q: &HashMap<String, String>) -> Result<(Option<String>, i64, Option<i64>), ApiError> {
@@ -192,19 +187,23 @@ fn list_params(q: &HashMap<String, String>) -> Result<(Option<String>, i64, Opti
         (status = 404, description = "No such job", body = Problem, content_type = "application/problem+json"),
     ))]
 pub async fn csv(State(state): State<AppState>, Path(id): Path<String>) -> Result<Response, ApiError> {
-    let row = state.store.get(&id).await?.ok_or_else(|| ApiError::NotFound(id.clone()))?;
+    // The result is read as a JSON tree (several times its text) and written again as CSV.
+    let (row, reserved) = load(&state, &id, CSV_MEMORY_FACTOR).await?;
     let body = to_csv(&row.kind, &row.result)?;
     let disposition = format!("attachment; filename=\"{}-{id}.csv\"", row.kind);
     Ok((
         [(header::CONTENT_TYPE, "text/csv; charset=utf-8".to_string()), (header::CONTENT_DISPOSITION, disposition)],
-        body,
+        guarded(Body::from(body), reserved),
     )
         .into_response())
 }
 
+/// Memory of a CSV answer per byte of the stored job: its JSON tree and the CSV text.
+const CSV_MEMORY_FACTOR: usize = 8;
+
 /// The CSV of a stored result: the table of its kind, header row with units.
-fn to_csv(kind: &str, result: &str) -> Result<String, ApiError> {
-    let value: serde_json::Value = serde_json::from_str(result).map_err(|e| ApiError::Internal(e.to_string()))?;
+fn to_csv(kind: &str, result: &[u8]) -> Result<String, ApiError> {
+    let value: serde_json::Value = serde_json::from_slice(result).map_err(|e| ApiError::Internal(e.to_string()))?;
     let (header, rows) = match kind {
         "flywheel" => super::flywheel::csv_table(&value),
         "kinetostatics" => super::kinetostatics::csv_table(&value),

@@ -2,17 +2,21 @@
 //! body limit, 400 for malformed JSON, 422 with a JSON pointer for every
 //! unknown field and for the first field of the wrong type.
 
+use super::body::drain;
 use super::problem::{ApiError, FieldError};
-use axum::body::Bytes;
+use axum::body::Body;
 use axum::extract::{FromRequest, Request};
 use axum::http::header;
+use bytes::{Bytes, BytesMut};
+use http_body::Body as _;
+use http_body_util::BodyExt;
 use serde::de::DeserializeOwned;
 
 /// A JSON body: the typed request, the body as sent, and its unknown fields.
 pub struct JsonBody<T> {
     pub value: T,
-    /// The body exactly as the client sent it (stored with the job).
-    pub raw: String,
+    /// The body exactly as the client sent it (stored with the job), UTF-8.
+    pub raw: Bytes,
     /// Fields the schema does not know, as errors (reported with the others).
     pub unknown: Vec<FieldError>,
 }
@@ -26,28 +30,48 @@ fn is_json(content_type: Option<&str>) -> bool {
 impl<S: Send + Sync, T: DeserializeOwned> FromRequest<S> for JsonBody<T> {
     type Rejection = ApiError;
 
-    async fn from_request(req: Request, state: &S) -> Result<Self, Self::Rejection> {
+    async fn from_request(req: Request, _: &S) -> Result<Self, Self::Rejection> {
         let content_type = req.headers().get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok());
         if !is_json(content_type) {
             return Err(ApiError::UnsupportedMediaType);
         }
         let limit = req.extensions().get::<BodyLimit>().map_or(usize::MAX, |l| l.0);
-        let bytes = Bytes::from_request(req, state).await.map_err(|e| {
-            if e.status() == axum::http::StatusCode::PAYLOAD_TOO_LARGE {
-                ApiError::PayloadTooLarge(limit)
-            } else {
-                ApiError::MalformedJson(e.body_text())
-            }
-        })?;
-        let raw =
-            String::from_utf8(bytes.to_vec()).map_err(|_| ApiError::MalformedJson("the body is not UTF-8".into()))?;
+        let raw = read_within(req.into_body(), limit).await?;
+        if std::str::from_utf8(&raw).is_err() {
+            return Err(ApiError::MalformedJson("the body is not UTF-8".into()));
+        }
         parse(raw)
     }
 }
 
+/// The whole body if it is at most `limit` bytes; else the rest is read and
+/// discarded (within bounds, see [`drain`]) and the answer is 413, so that a
+/// client still sending reads it.
+async fn read_within(body: Body, limit: usize) -> Result<Bytes, ApiError> {
+    let announced = body.size_hint().exact();
+    if announced.is_some_and(|n| n > limit as u64) {
+        drain(body, announced).await;
+        return Err(ApiError::PayloadTooLarge(limit));
+    }
+    let mut body = body;
+    let mut buf = BytesMut::new();
+    while let Some(frame) = body.frame().await {
+        let frame = frame.map_err(|e| ApiError::MalformedJson(format!("the body could not be read: {e}")))?;
+        if let Some(data) = frame.data_ref() {
+            if buf.len() + data.len() > limit {
+                drain(body, None).await;
+                return Err(ApiError::PayloadTooLarge(limit));
+            }
+            buf.extend_from_slice(data);
+        }
+    }
+    Ok(buf.freeze())
+}
+
 /// Parses a body already read: the same rules as the extractor (used by the CLI too).
-pub fn parse<T: DeserializeOwned>(raw: String) -> Result<JsonBody<T>, ApiError> {
-    let value: serde_json::Value = serde_json::from_str(&raw).map_err(|e| ApiError::MalformedJson(e.to_string()))?;
+pub fn parse<T: DeserializeOwned>(raw: impl Into<Bytes>) -> Result<JsonBody<T>, ApiError> {
+    let raw = raw.into();
+    let value: serde_json::Value = serde_json::from_slice(&raw).map_err(|e| ApiError::MalformedJson(e.to_string()))?;
     let mut unknown = Vec::new();
     let mut record = |path: serde_ignored::Path| unknown.push(FieldError::at(ignored_pointer(&path), "unknown field"));
     let result: Result<T, _> = serde_path_to_error::deserialize(serde_ignored::Deserializer::new(&value, &mut record));

@@ -26,6 +26,8 @@ pub struct Limits {
     pub expression_length: usize,
     /// Levels of nesting of an expression (at most [`MAX_EXPRESSION_DEPTH`]).
     pub expression_depth: usize,
+    /// Bytes of a job's result as JSON (and of a page of the jobs list).
+    pub result_bytes: usize,
 }
 
 impl Default for Limits {
@@ -38,6 +40,7 @@ impl Default for Limits {
             segments: 1_000,
             expression_length: 2_000,
             expression_depth: 64,
+            result_bytes: 16 << 20,
         }
     }
 }

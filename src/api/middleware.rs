@@ -2,8 +2,11 @@
 //! a random UUID unless the client sent one, echoed on the answer), the
 //! request's log span carrying it, CORS for the origins configured, panics
 //! caught and answered 500 problem+json without internals, the optional
-//! bearer token every POST must carry, and the body limit.
+//! bearer token every POST must carry, admission control (a slot per POST,
+//! 503 when none is free), and the body limit.
 
+use super::admission::Admission;
+use super::body::{drain, guarded};
 use super::json::BodyLimit;
 use super::problem::ApiError;
 use axum::Router;
@@ -17,7 +20,7 @@ use std::sync::Arc;
 use tower_http::catch_panic::CatchPanicLayer;
 use tower_http::cors::{AllowOrigin, CorsLayer};
 use tower_http::request_id::{MakeRequestUuid, PropagateRequestIdLayer, SetRequestIdLayer};
-use tower_http::trace::{DefaultOnResponse, TraceLayer};
+use tower_http::trace::{DefaultOnFailure, DefaultOnResponse, TraceLayer};
 use tracing::Level;
 
 /// Header of the request id.
@@ -48,11 +51,12 @@ impl Settings {
 }
 
 /// `routes` with the service's middleware.
-pub fn layered(routes: Router, s: &Settings) -> Router {
+pub fn layered(routes: Router, s: &Settings, admission: Admission) -> Router {
     let token: Option<Arc<str>> = s.api_token.as_deref().map(Arc::from);
     let routes = routes
         .layer(DefaultBodyLimit::max(s.body_limit))
         .layer(Extension(BodyLimit(s.body_limit)))
+        .layer(from_fn(move |req, next| admit(admission.clone(), req, next)))
         .layer(from_fn(move |req, next| require_token(token.clone(), req, next)))
         .layer(CatchPanicLayer::custom(panic_response));
     let routes = match cors(&s.cors_origins) {
@@ -62,7 +66,13 @@ pub fn layered(routes: Router, s: &Settings) -> Router {
     let request_id = HeaderName::from_static(REQUEST_ID);
     routes
         .layer(PropagateRequestIdLayer::new(request_id.clone()))
-        .layer(TraceLayer::new_for_http().make_span_with(span).on_response(DefaultOnResponse::new().level(Level::INFO)))
+        .layer(
+            TraceLayer::new_for_http()
+                .make_span_with(span)
+                .on_response(DefaultOnResponse::new().level(Level::INFO))
+                // 503 and 507 are conditions, logged as warnings; internal errors log their own error.
+                .on_failure(DefaultOnFailure::new().level(Level::WARN)),
+        )
         .layer(SetRequestIdLayer::new(request_id, MakeRequestUuid))
 }
 
@@ -107,6 +117,22 @@ async fn require_token(token: Option<Arc<str>>, req: Request, next: Next) -> Res
         }
         _ => next.run(req).await,
     }
+}
+
+/// A POST takes a slot of admission control before its body is read and
+/// keeps it until its answer has been sent; with none free it is answered
+/// 503 with `Retry-After` (after its body has been read and discarded, so
+/// the client reads the answer).
+async fn admit(admission: Admission, req: Request, next: Next) -> Response {
+    if req.method() != Method::POST {
+        return next.run(req).await;
+    }
+    let Some(slot) = admission.enter() else {
+        let announced = req.headers().get(header::CONTENT_LENGTH).and_then(|v| v.to_str().ok()?.parse().ok());
+        drain(req.into_body(), announced).await;
+        return admission.saturated("every job slot and queue place is taken").into_response();
+    };
+    next.run(req).await.map(|b| guarded(b, slot))
 }
 
 /// `Authorization: Bearer <token>`, compared in time independent of where it differs.

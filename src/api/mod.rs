@@ -2,8 +2,11 @@
 //!
 //! Handlers stay short: parse the body ([`json::JsonBody`]), convert it to
 //! an engine problem collecting every error with its JSON pointer, run the
-//! engine off the async workers, store the job ([`jobs::create`]).
+//! engine off the async workers, store the job ([`create::create`]).
 
+pub mod admission;
+pub mod body;
+pub mod create;
 pub mod dynamics;
 pub mod equivalent;
 pub mod flywheel;
@@ -20,6 +23,7 @@ pub mod quantity;
 pub mod rotor;
 
 use crate::store::Store;
+pub use admission::{Admission, Capacity};
 use axum::extract::State;
 use axum::http::StatusCode;
 use axum::routing::{get, post};
@@ -37,12 +41,14 @@ pub struct AppState {
     pub store: Store,
     /// What one request may ask, and the compute budget of a job.
     pub limits: Limits,
+    /// How many jobs compute and wait at once, and the memory of answers.
+    pub admission: Admission,
 }
 
 impl AppState {
-    /// The state with the default limits.
+    /// The state with the default limits and capacity.
     pub fn new(store: Store) -> Self {
-        Self { store, limits: Limits::default() }
+        Self { store, limits: Limits::default(), admission: Admission::default() }
     }
 }
 
@@ -115,8 +121,8 @@ pub fn router(state: AppState, settings: &Settings) -> Router {
         .merge(SwaggerUi::new("/docs").url("/openapi.json", openapi()))
         .fallback(|| async { ApiError::NoRoute })
         .method_not_allowed_fallback(|| async { ApiError::MethodNotAllowed })
-        .with_state(state);
-    middleware::layered(routes, settings)
+        .with_state(state.clone());
+    middleware::layered(routes, settings, state.admission)
 }
 
 #[derive(Serialize, ToSchema)]

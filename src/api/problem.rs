@@ -93,6 +93,18 @@ pub enum ApiError {
     /// The job ran out of its compute budget and was stopped.
     #[error("{0}")]
     OverBudget(String),
+    /// The result would exceed the limit on a result; `errors` say what would fit.
+    #[error("the result would be larger than the limit of {limit} bytes on a result")]
+    ResultTooLarge { limit: usize, errors: Vec<FieldError> },
+    /// Too many jobs computing or waiting, or too many large answers in flight.
+    #[error("the service is saturated ({reason}); retry after {retry_after} s")]
+    Saturated { reason: String, retry_after: u64 },
+    /// The database's storage is full: nothing was stored.
+    #[error("the job was computed but could not be stored: the service's storage is full; reads still work")]
+    StorageFull,
+    /// The database cannot be used at the moment (logged).
+    #[error("the database is unavailable; retry later")]
+    Unavailable(String),
     #[error("this service needs \"Authorization: Bearer <token>\" on every POST")]
     Unauthorized,
     /// Logged; the client sees no details.
@@ -118,6 +130,14 @@ impl ApiError {
             Self::OverBudget(_) => {
                 (StatusCode::UNPROCESSABLE_ENTITY, "compute-budget", "The job ran out of its compute budget")
             }
+            Self::ResultTooLarge { .. } => {
+                (StatusCode::UNPROCESSABLE_ENTITY, "result-too-large", "The result would be too large")
+            }
+            Self::Saturated { .. } => (StatusCode::SERVICE_UNAVAILABLE, "saturated", "The service is saturated"),
+            Self::StorageFull => (StatusCode::INSUFFICIENT_STORAGE, "storage-full", "The service's storage is full"),
+            Self::Unavailable(_) => {
+                (StatusCode::SERVICE_UNAVAILABLE, "database-unavailable", "The database is unavailable")
+            }
             Self::Unauthorized => (StatusCode::UNAUTHORIZED, "unauthorized", "Missing or wrong bearer token"),
             Self::Internal(_) => (StatusCode::INTERNAL_SERVER_ERROR, "internal", "Internal server error"),
         }
@@ -127,7 +147,7 @@ impl ApiError {
     pub fn problem(&self) -> Problem {
         let (status, kind, title) = self.parts();
         let errors = match self {
-            Self::Invalid(e) | Self::BadQuery(e) => e.clone(),
+            Self::Invalid(e) | Self::BadQuery(e) | Self::ResultTooLarge { errors: e, .. } => e.clone(),
             _ => Vec::new(),
         };
         Problem {
@@ -140,23 +160,38 @@ impl ApiError {
     }
 }
 
-impl From<sqlx::Error> for ApiError {
-    fn from(e: sqlx::Error) -> Self {
-        Self::Internal(format!("database: {e}"))
+impl From<crate::store::StoreError> for ApiError {
+    fn from(e: crate::store::StoreError) -> Self {
+        match e {
+            crate::store::StoreError::Full => Self::StorageFull,
+            crate::store::StoreError::Unavailable(why) => Self::Unavailable(why),
+        }
     }
 }
 
 impl IntoResponse for ApiError {
     fn into_response(self) -> Response {
-        if let Self::Internal(detail) = &self {
-            tracing::error!(%detail, "internal error");
+        match &self {
+            Self::Internal(detail) => tracing::error!(%detail, "internal error"),
+            Self::Unavailable(detail) => tracing::error!(%detail, "database unavailable"),
+            _ => {}
         }
         let problem = self.problem();
         let status = StatusCode::from_u16(problem.status).unwrap_or(StatusCode::INTERNAL_SERVER_ERROR);
         let body = serde_json::to_vec(&problem).unwrap_or_default();
         let mut response = (status, [(header::CONTENT_TYPE, "application/problem+json")], body).into_response();
-        if matches!(self, Self::Unauthorized) {
-            response.headers_mut().insert(header::WWW_AUTHENTICATE, header::HeaderValue::from_static("Bearer"));
+        let headers = response.headers_mut();
+        match self {
+            Self::Unauthorized => {
+                headers.insert(header::WWW_AUTHENTICATE, header::HeaderValue::from_static("Bearer"));
+            }
+            Self::Saturated { retry_after, .. } => {
+                headers.insert(header::RETRY_AFTER, header::HeaderValue::from(retry_after));
+            }
+            Self::Unavailable(_) => {
+                headers.insert(header::RETRY_AFTER, header::HeaderValue::from_static("5"));
+            }
+            _ => {}
         }
         response
     }

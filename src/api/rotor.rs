@@ -5,7 +5,7 @@
 use super::json::JsonBody;
 use super::problem::{ApiError, FieldError, PostErrors};
 use super::quantity::{Errors, Quantity};
-use super::{AppState, jobs, validated};
+use super::{AppState, create, jobs, validated};
 use crate::engine::rotor::{Rotor, RotorState, Support};
 use crate::units::Dim;
 use axum::extract::State;
@@ -121,6 +121,8 @@ pub struct RotorResult {
     pub method: String,
 }
 
+impl create::JobResult for RotorResult {}
+
 /// The rotor at the requested angles or times.
 #[utoipa::path(post, path = "/v1/rotor", operation_id = "create_rotor_job", tag = "calculators", request_body = RotorRequest,
     responses(
@@ -130,7 +132,7 @@ pub struct RotorResult {
     ))]
 pub async fn create(State(state): State<AppState>, body: JsonBody<RotorRequest>) -> Result<Response, ApiError> {
     let JsonBody { value, raw, unknown } = body;
-    jobs::create(&state, "rotor", raw, move || compute(&value, unknown)).await
+    create::create(&state, "rotor", raw, move || compute(&value, unknown)).await
 }
 
 /// Validates and computes a request.

@@ -1,14 +1,24 @@
 //! Jobs in SQLite (sqlx): nothing here knows about HTTP or the engine; jobs
-//! go in and come out as JSON text with their metadata.
+//! go in and come out as JSON text (shared [`Bytes`], so the text stored is
+//! the text served, never copied) with their metadata.
 //!
-//! Group commit: one writer task takes the jobs of concurrent requests off
-//! a channel and inserts all that are waiting in one statement (a multi-row
-//! INSERT; row by row in one transaction if that fails, so a bad row fails
-//! alone), then answers each caller. [`Store::insert`] returns only once the
+//! Group commit (`writer.rs`): one writer task takes the jobs of concurrent
+//! requests off a channel and inserts all that are waiting in one statement,
+//! then answers each caller. [`Store::insert`] returns only once the
 //! transaction holding its job has committed, so a job is stored before its
-//! `201` as before, and under load one commit serves many jobs (SQLite does
-//! a few thousand commits a second here; the batch amortises them).
+//! `201`, and under load one commit serves many jobs.
+//!
+//! Failures are sorted for the caller ([`StoreError`]): a full disk (or the
+//! configured size cap) is [`StoreError::Full`], a condition the service
+//! reports and recovers from when space returns; anything else the database
+//! cannot do is [`StoreError::Unavailable`].
 
+mod url;
+mod writer;
+
+pub use url::{SchemeError, check_scheme, redact};
+
+use bytes::Bytes;
 use sqlx::sqlite::{SqliteConnectOptions, SqliteJournalMode, SqlitePool, SqlitePoolOptions, SqliteSynchronous};
 use std::str::FromStr;
 use std::sync::Arc;
@@ -16,34 +26,82 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Duration;
 use tokio::sync::{mpsc, oneshot};
 
-/// Most jobs in one transaction.
-const MAX_BATCH: usize = 256;
-/// Jobs waiting for the writer before callers wait to hand theirs over.
-const QUEUE: usize = 4096;
-
 /// The migrations of `migrations/`, embedded in the binary.
 pub static MIGRATOR: sqlx::migrate::Migrator = sqlx::migrate!("./migrations");
 
+/// Why the store could not do what it was asked.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum StoreError {
+    /// The disk (or the database's configured size cap) is full: nothing was
+    /// written; reads still work, and writes do again once space returns.
+    #[error("the database's storage is full")]
+    Full,
+    /// The database could not be used (I/O error, closed, misconfigured).
+    #[error("database unavailable: {0}")]
+    Unavailable(String),
+}
+
+impl From<sqlx::Error> for StoreError {
+    fn from(e: sqlx::Error) -> Self {
+        if is_full(&e) { Self::Full } else { Self::Unavailable(e.to_string()) }
+    }
+}
+
+/// SQLITE_FULL (13): the disk, or `max_page_count`, is full.
+fn is_full(e: &sqlx::Error) -> bool {
+    match e {
+        sqlx::Error::Database(db) => {
+            db.code().and_then(|c| c.parse::<i32>().ok()).is_some_and(|c| c & 0xff == 13)
+                || db.message().contains("database or disk is full")
+        }
+        _ => false,
+    }
+}
+
 /// A stored job.
-#[derive(Clone, Debug, PartialEq, sqlx::FromRow)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct JobRow {
     pub seq: i64,
     pub id: String,
     pub kind: String,
     pub created_at: String,
-    pub request: String,
-    pub result: String,
+    /// The request body as sent (JSON text).
+    pub request: Bytes,
+    /// The result as served (JSON text).
+    pub result: Bytes,
     pub engine_us: i64,
     pub engine_version: String,
 }
 
-/// A job to store (its `seq` is assigned by the database).
+/// A job as SQLite returns it.
+#[derive(sqlx::FromRow)]
+struct Row {
+    seq: i64,
+    id: String,
+    kind: String,
+    created_at: String,
+    request: String,
+    result: String,
+    engine_us: i64,
+    engine_version: String,
+}
+
+impl From<Row> for JobRow {
+    fn from(r: Row) -> Self {
+        let Row { seq, id, kind, created_at, request, result, engine_us, engine_version } = r;
+        Self { seq, id, kind, created_at, request: request.into(), result: result.into(), engine_us, engine_version }
+    }
+}
+
+/// A job to store (its `seq` is assigned by the database). `request` and
+/// `result` must be UTF-8 JSON text.
+#[derive(Clone, Debug)]
 pub struct NewJob {
     pub id: String,
     pub kind: String,
     pub created_at: String,
-    pub request: String,
-    pub result: String,
+    pub request: Bytes,
+    pub result: Bytes,
     pub engine_us: i64,
     pub engine_version: String,
 }
@@ -53,10 +111,33 @@ impl NewJob {
         let NewJob { id, kind, created_at, request, result, engine_us, engine_version } = self;
         JobRow { seq, id, kind, created_at, request, result, engine_us, engine_version }
     }
+
+    /// Bytes of the request and the result together.
+    pub fn bytes(&self) -> usize {
+        self.request.len() + self.result.len()
+    }
 }
 
-/// A job handed to the writer, with where to send its stored row.
-type Pending = (NewJob, oneshot::Sender<Result<JobRow, String>>);
+/// A page of the jobs list.
+#[derive(Debug)]
+pub struct Page {
+    pub rows: Vec<JobRow>,
+    /// Bytes of their requests and results together.
+    pub bytes: usize,
+    /// Whether the page stopped at its size in bytes (more jobs follow).
+    pub cut: bool,
+}
+
+/// A job handed to the writer, with where to send its seq.
+type Pending = (NewJob, oneshot::Sender<Result<i64, StoreError>>);
+
+/// How the database is opened.
+#[derive(Clone, Debug, Default)]
+pub struct Options {
+    /// Largest size of the database file, bytes (SQLite's `max_page_count`);
+    /// beyond it inserts fail with [`StoreError::Full`]. None: the disk's.
+    pub max_bytes: Option<u64>,
+}
 
 #[derive(Clone)]
 pub struct Store {
@@ -67,24 +148,35 @@ pub struct Store {
 }
 
 impl Store {
-    /// Opens (creating the file and its folder if needed) the database at
-    /// `url`, in WAL mode, and applies the migrations.
+    /// Opens (creating the file and its folder if needed) the SQLite
+    /// database at `url`, in WAL mode, and applies the migrations.
     pub async fn open(url: &str) -> Result<Self, sqlx::Error> {
-        let options = SqliteConnectOptions::from_str(url)?
+        Self::open_with(url, &Options::default()).await
+    }
+
+    /// [`Store::open`] with options. A URL of another scheme than `sqlite:`
+    /// is refused (see [`url::check_scheme`]).
+    pub async fn open_with(url: &str, options: &Options) -> Result<Self, sqlx::Error> {
+        url::check_scheme(url).map_err(|e| sqlx::Error::Configuration(Box::new(e)))?;
+        let mut connect = SqliteConnectOptions::from_str(url)?
             .create_if_missing(true)
             .journal_mode(SqliteJournalMode::Wal)
             .synchronous(SqliteSynchronous::Normal)
             .busy_timeout(Duration::from_secs(10))
             .foreign_keys(true);
-        let file = options.get_filename();
+        if let Some(max) = options.max_bytes {
+            // SQLite's default page size, 4096 bytes (set before the first table).
+            connect = connect.page_size(4096).pragma("max_page_count", (max / 4096).max(1).to_string());
+        }
+        let file = connect.get_filename();
         if let Some(dir) = file.parent().filter(|d| !d.as_os_str().is_empty()) {
             std::fs::create_dir_all(dir).map_err(|e| sqlx::Error::Configuration(Box::new(e)))?;
         }
-        let pool = SqlitePoolOptions::new().max_connections(8).connect_with(options).await?;
+        let pool = SqlitePoolOptions::new().max_connections(8).connect_with(connect).await?;
         MIGRATOR.run(&pool).await?;
-        let (writer, queue) = mpsc::channel(QUEUE);
+        let (writer, queue) = mpsc::channel(writer::QUEUE);
         let commits = Arc::new(AtomicU64::new(0));
-        tokio::spawn(write_batches(pool.clone(), queue, commits.clone()));
+        tokio::spawn(writer::write_batches(pool.clone(), queue, commits.clone()));
         Ok(Self { pool, writer, commits })
     }
 
@@ -94,99 +186,76 @@ impl Store {
     }
 
     /// Inserts a job; its transaction has committed when this returns.
-    pub async fn insert(&self, job: NewJob) -> Result<JobRow, sqlx::Error> {
-        let stopped = || sqlx::Error::PoolClosed;
+    pub async fn insert(&self, job: NewJob) -> Result<JobRow, StoreError> {
+        let stopped = || StoreError::Unavailable("the store's writer has stopped".into());
         let (reply, stored) = oneshot::channel();
-        self.writer.send((job, reply)).await.map_err(|_| stopped())?;
-        stored.await.map_err(|_| stopped())?.map_err(sqlx::Error::Protocol)
+        self.writer.send((job.clone(), reply)).await.map_err(|_| stopped())?;
+        let seq = stored.await.map_err(|_| stopped())??;
+        Ok(job.stored(seq))
     }
 
-    pub async fn get(&self, id: &str) -> Result<Option<JobRow>, sqlx::Error> {
-        sqlx::query_as("SELECT * FROM jobs WHERE id = ?").bind(id).fetch_optional(&self.pool).await
+    pub async fn get(&self, id: &str) -> Result<Option<JobRow>, StoreError> {
+        let row: Option<Row> = sqlx::query_as(SELECT_ROW).bind(id).fetch_optional(&self.pool).await?;
+        Ok(row.map(JobRow::from))
     }
 
-    /// Up to `limit` jobs, newest first, of one kind or all, older than `before` (a seq).
-    pub async fn list(&self, kind: Option<&str>, before: Option<i64>, limit: i64) -> Result<Vec<JobRow>, sqlx::Error> {
-        sqlx::query_as("SELECT * FROM jobs WHERE (?1 IS NULL OR kind = ?1) AND seq < ?2 ORDER BY seq DESC LIMIT ?3")
-            .bind(kind)
-            .bind(before.unwrap_or(i64::MAX))
-            .bind(limit)
-            .fetch_all(&self.pool)
-            .await
+    /// Bytes of a job's request and result together, without loading them.
+    pub async fn size(&self, id: &str) -> Result<Option<usize>, StoreError> {
+        let bytes: Option<i64> =
+            sqlx::query_scalar("SELECT bytes FROM jobs WHERE id = ?").bind(id).fetch_optional(&self.pool).await?;
+        Ok(bytes.map(|b| usize::try_from(b).unwrap_or(0)))
+    }
+
+    /// Up to `limit` jobs, newest first, of one kind or all, older than
+    /// `before` (a seq), stopping before their requests and results together
+    /// exceed `max_bytes` (one job at least).
+    pub async fn list(
+        &self,
+        kind: Option<&str>,
+        before: Option<i64>,
+        limit: i64,
+        max_bytes: usize,
+    ) -> Result<Page, StoreError> {
+        let sizes: Vec<(i64, i64)> = sqlx::query_as(
+            "SELECT seq, bytes FROM jobs WHERE (?1 IS NULL OR kind = ?1) AND seq < ?2 ORDER BY seq DESC LIMIT ?3",
+        )
+        .bind(kind)
+        .bind(before.unwrap_or(i64::MAX))
+        .bind(limit)
+        .fetch_all(&self.pool)
+        .await?;
+        let (mut total, mut last, mut cut) = (0usize, None, false);
+        for (i, &(seq, bytes)) in sizes.iter().enumerate() {
+            let bytes = usize::try_from(bytes).unwrap_or(0);
+            if i > 0 && total + bytes > max_bytes {
+                cut = true;
+                break;
+            }
+            (total, last) = (total + bytes, Some(seq));
+        }
+        let Some(last) = last else { return Ok(Page { rows: Vec::new(), bytes: 0, cut }) };
+        let rows: Vec<Row> = sqlx::query_as(
+            "SELECT seq, id, kind, created_at, request, result, engine_us, engine_version FROM jobs \
+             WHERE (?1 IS NULL OR kind = ?1) AND seq < ?2 AND seq >= ?3 ORDER BY seq DESC",
+        )
+        .bind(kind)
+        .bind(before.unwrap_or(i64::MAX))
+        .bind(last)
+        .fetch_all(&self.pool)
+        .await?;
+        Ok(Page { rows: rows.into_iter().map(JobRow::from).collect(), bytes: total, cut })
     }
 
     /// Whether the database answers.
     pub async fn ping(&self) -> bool {
         sqlx::query("SELECT 1").execute(&self.pool).await.is_ok()
     }
-}
 
-/// The writer: every job waiting (up to [`MAX_BATCH`]) goes into one
-/// transaction; each caller gets its row once that has committed, or the error.
-async fn write_batches(pool: SqlitePool, mut queue: mpsc::Receiver<Pending>, commits: Arc<AtomicU64>) {
-    let mut batch = Vec::with_capacity(MAX_BATCH);
-    while queue.recv_many(&mut batch, MAX_BATCH).await > 0 {
-        let outcome = match insert_together(&pool, &batch).await {
-            Ok(seqs) => Ok(seqs.into_iter().map(Ok).collect()),
-            // One bad row fails the whole statement: insert them one by one.
-            Err(_) => insert_all(&pool, &batch).await,
-        };
-        match outcome {
-            Ok(seqs) => {
-                commits.fetch_add(1, Ordering::Relaxed);
-                for ((job, reply), seq) in batch.drain(..).zip(seqs) {
-                    let _ = reply.send(seq.map(|seq| job.stored(seq)).map_err(|e| e.to_string()));
-                }
-            }
-            Err(e) => {
-                let message = format!("commit failed: {e}");
-                for (_, reply) in batch.drain(..) {
-                    let _ = reply.send(Err(message.clone()));
-                }
-            }
-        }
+    /// SQLite's own check of the file (`PRAGMA integrity_check`): "ok" or what is wrong.
+    pub async fn integrity(&self) -> Result<String, StoreError> {
+        Ok(sqlx::query_scalar("PRAGMA integrity_check").fetch_one(&self.pool).await?)
     }
 }
 
-/// The whole batch as one multi-row INSERT (one statement: one round trip to
-/// SQLite's connection thread, and atomic): each job's seq, in batch order.
-async fn insert_together(pool: &SqlitePool, batch: &[Pending]) -> Result<Vec<i64>, sqlx::Error> {
-    let rows = vec!["(?, ?, ?, ?, ?, ?, ?)"; batch.len()].join(", ");
-    let sql = format!(
-        "INSERT INTO jobs (id, kind, created_at, request, result, engine_us, engine_version) VALUES {rows} \
-         RETURNING id, seq"
-    );
-    // Safe: the text is the fixed columns and one placeholder group per job; every value is bound.
-    let mut query = sqlx::query_as::<_, (String, i64)>(sqlx::AssertSqlSafe(sql));
-    for (j, _) in batch {
-        query = query.bind(&j.id).bind(&j.kind).bind(&j.created_at).bind(&j.request).bind(&j.result);
-        query = query.bind(j.engine_us).bind(&j.engine_version);
-    }
-    // RETURNING gives the rows in no promised order: match them by id.
-    let seqs: std::collections::HashMap<String, i64> = query.fetch_all(pool).await?.into_iter().collect();
-    batch.iter().map(|(j, _)| seqs.get(&j.id).copied().ok_or_else(|| sqlx::Error::RowNotFound)).collect()
-}
-
-/// One transaction, row by row: each job's seq, or why its own insert failed.
-async fn insert_all(pool: &SqlitePool, batch: &[Pending]) -> Result<Vec<Result<i64, sqlx::Error>>, sqlx::Error> {
-    let mut tx = pool.begin().await?;
-    let mut seqs = Vec::with_capacity(batch.len());
-    for (j, _) in batch {
-        let done = sqlx::query(
-            "INSERT INTO jobs (id, kind, created_at, request, result, engine_us, engine_version) \
-             VALUES (?, ?, ?, ?, ?, ?, ?)",
-        )
-        .bind(&j.id)
-        .bind(&j.kind)
-        .bind(&j.created_at)
-        .bind(&j.request)
-        .bind(&j.result)
-        .bind(j.engine_us)
-        .bind(&j.engine_version)
-        .execute(&mut *tx)
-        .await;
-        seqs.push(done.map(|d| d.last_insert_rowid()));
-    }
-    tx.commit().await?;
-    Ok(seqs)
-}
+const SELECT_ROW: &str =
+    "SELECT seq, id, kind, created_at, request, result, engine_us, engine_version FROM jobs WHERE id = ?";

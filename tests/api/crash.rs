@@ -15,7 +15,7 @@ const KILLS: usize = 8;
 const CLIENTS: usize = 4;
 
 /// One HTTP/1.1 exchange on a fresh connection: (status, body).
-fn http(port: u16, method: &str, path: &str, body: &str) -> std::io::Result<(u16, String)> {
+pub fn http(port: u16, method: &str, path: &str, body: &str) -> std::io::Result<(u16, String)> {
     let mut s = TcpStream::connect(("127.0.0.1", port))?;
     s.set_read_timeout(Some(Duration::from_secs(10)))?;
     let head = format!(
@@ -32,12 +32,12 @@ fn http(port: u16, method: &str, path: &str, body: &str) -> std::io::Result<(u16
     Ok((status, body))
 }
 
-fn free_port() -> u16 {
+pub fn free_port() -> u16 {
     TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port()
 }
 
 /// Starts the service on `db` and waits until /healthz answers.
-fn start(db: &str, port: u16) -> Child {
+pub fn start(db: &str, port: u16) -> Child {
     let child = Command::new(env!("CARGO_BIN_EXE_mechdyn"))
         .env("DATABASE_URL", db)
         .env("MECHDYN_ADDR", format!("127.0.0.1:{port}"))

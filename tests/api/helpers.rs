@@ -51,16 +51,21 @@ impl TestApp {
         Self { app: router(AppState::new(store), &Settings::default()), ..self }
     }
 
-    /// A fresh app whose jobs have this compute budget.
+    /// A fresh app whose jobs have this compute budget (and room for
+    /// results of any size, so that the budget is what stops them).
     pub async fn with_job_budget(budget: std::time::Duration) -> Self {
-        Self::with_limits(mechdyn::api::Limits { budget, ..Default::default() }).await
+        Self::with_limits(mechdyn::api::Limits { budget, result_bytes: 1 << 30, ..Default::default() }).await
     }
 
     /// A fresh app with these limits on a request.
     pub async fn with_limits(limits: mechdyn::api::Limits) -> Self {
-        let app = Self::new().await;
-        let store = Store::open(&app.url).await.unwrap();
-        Self { app: router(AppState { limits, ..AppState::new(store) }, &Settings::default()), ..app }
+        Self::new().await.reopened(|state| AppState { limits, ..state }).await
+    }
+
+    /// The same database served again with the state `change` makes of the default.
+    pub async fn reopened(self, change: impl FnOnce(AppState) -> AppState) -> Self {
+        let store = Store::open(&self.url).await.unwrap();
+        Self { app: router(change(AppState::new(store)), &Settings::default()), ..self }
     }
 
     pub async fn send(&self, req: Request<Body>) -> Reply {

@@ -122,3 +122,32 @@ async fn each_configured_limit_is_enforced_at_its_field() {
         default_app.flywheel(&body).await;
     }
 }
+
+/// What Python's urllib sends and then reads, through the real binary.
+fn urllib_post(port: u16, path: &str, megabytes: usize) -> String {
+    let script = format!(
+        "import urllib.request, urllib.error\n\
+         body = b'[' + b'0,' * ({megabytes} << 19) + b'0]'\n\
+         req = urllib.request.Request('http://127.0.0.1:{port}{path}', data=body, \
+         headers={{'Content-Type': 'application/json'}})\n\
+         try:\n    print(urllib.request.urlopen(req).status)\n\
+         except urllib.error.HTTPError as e:\n    print(e.code, e.headers['Content-Type'], e.read().decode())\n"
+    );
+    let out = std::process::Command::new("python3").args(["-c", &script]).output().expect("python3 runs");
+    format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr))
+}
+
+/// A 5 MB body from Python's urllib, which writes the whole body before it
+/// reads: the service reads and discards the excess, so the client gets
+/// the 413 problem instead of a broken pipe.
+#[test]
+fn a_client_that_sends_its_whole_body_first_reads_the_413() {
+    let dir = tempfile::tempdir().unwrap();
+    let port = crate::crash::free_port();
+    let mut child = crate::crash::start(&format!("sqlite://{}/jobs.db", dir.path().display()), port);
+    let said = urllib_post(port, "/v1/flywheel", 5);
+    child.kill().unwrap();
+    child.wait().unwrap();
+    assert!(said.starts_with("413 application/problem+json"), "{said}");
+    assert!(said.contains("/problems/payload-too-large"), "{said}");
+}

@@ -1,6 +1,7 @@
 //! Integration tests through the real router and a real SQLite file.
 
 mod andrews;
+mod capacity;
 mod cases;
 mod cli;
 mod crash;
@@ -20,3 +21,4 @@ mod robot_arm;
 mod rotor;
 mod security;
 mod seed_exams;
+mod storage;

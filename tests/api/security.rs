@@ -37,7 +37,7 @@ async fn a_panicking_handler_is_answered_500_without_internals() {
     let subscriber = tracing_subscriber::fmt().with_ansi(false).with_writer(move || writer.clone()).finish();
     let _guard = tracing::subscriber::set_default(subscriber);
     let mut app = TestApp::new().await;
-    app.app = layered(axum::Router::new().route("/boom", get(boom)), &Settings::default());
+    app.app = layered(axum::Router::new().route("/boom", get(boom)), &Settings::default(), Default::default());
     let r = app.send(Request::get("/boom").header("x-request-id", "trace-me-42").body(Body::empty()).unwrap()).await;
     let logged = String::from_utf8(log.0.lock().unwrap().clone()).unwrap();
     let line = logged.lines().find(|l| l.contains("handler panicked")).unwrap_or_else(|| panic!("{logged}"));

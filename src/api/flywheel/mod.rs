@@ -11,7 +11,7 @@ pub use result::{
 use super::json::JsonBody;
 use super::limits::Limits;
 use super::problem::{ApiError, FieldError, PostErrors};
-use super::{AppState, engine_failure, jobs, validated};
+use super::{AppState, create, engine_failure, jobs, validated};
 use crate::engine::Deadline;
 use crate::engine::flywheel::solve;
 use axum::extract::State;
@@ -29,7 +29,7 @@ use axum::response::Response;
 pub async fn create(State(state): State<AppState>, body: JsonBody<FlywheelRequest>) -> Result<Response, ApiError> {
     let JsonBody { value, raw, unknown } = body;
     let limits = state.limits.clone();
-    jobs::create(&state, "flywheel", raw, move || compute_within(&value, unknown, &limits)).await
+    create::create(&state, "flywheel", raw, move || compute_within(&value, unknown, &limits)).await
 }
 
 /// Validates and solves a request within the default limits (`mechdyn solve flywheel`).

@@ -117,6 +117,13 @@ pub struct FlywheelResult {
     pub samples: Vec<SampleDto>,
 }
 
+impl crate::api::create::JobResult for FlywheelResult {
+    fn rows(&self) -> Option<crate::api::create::Rows> {
+        let (field, count) = ("/samples".into(), self.samples.len());
+        Some(crate::api::create::Rows { field, count, also: " (0 for no table)" })
+    }
+}
+
 impl FlywheelResult {
     pub fn new(s: fw::FlywheelSolution, names: impl Iterator<Item = String>) -> Self {
         Self {

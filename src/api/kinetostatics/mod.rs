@@ -13,7 +13,7 @@ pub use result::{KinetostaticsResult, ReactionDto, Scalars, csv_table};
 use super::json::JsonBody;
 use super::limits::Limits;
 use super::problem::{ApiError, FieldError, PostErrors};
-use super::{AppState, engine_failure, jobs, validated};
+use super::{AppState, create, engine_failure, jobs, validated};
 use crate::engine::Deadline;
 use crate::engine::kinetostatics::solve;
 use axum::extract::State;
@@ -30,7 +30,7 @@ use axum::response::Response;
 pub async fn create(State(state): State<AppState>, body: JsonBody<KinetostaticsRequest>) -> Result<Response, ApiError> {
     let JsonBody { value, raw, unknown } = body;
     let limits = state.limits.clone();
-    jobs::create(&state, "kinetostatics", raw, move || compute_within(&value, unknown, &limits)).await
+    create::create(&state, "kinetostatics", raw, move || compute_within(&value, unknown, &limits)).await
 }
 
 /// Validates and solves a request within the default limits (`mechdyn solve kinetostatics`).
@@ -46,8 +46,28 @@ pub fn compute_within(
 ) -> Result<KinetostaticsResult, ApiError> {
     let deadline = Deadline::after(limits.budget);
     let problem = validated(unknown, request.to_problem(limits))?;
-    let solution = solve(&problem.mechanism, &problem.loads, &problem.positions, problem.outputs, &deadline)
-        .map_err(|e| engine_failure(e, "/input"))?;
     let joint_names: Vec<String> = problem.mechanism.joints.iter().map(|j| j.name.clone()).collect();
-    Ok(KinetostaticsResult::new(solution, &problem, &joint_names))
+    let solve_over = |positions: &[Vec<[f64; 3]>]| {
+        solve(&problem.mechanism, &problem.loads, positions, problem.outputs, &deadline)
+            .map(|s| KinetostaticsResult::new(s, &problem, &joint_names))
+            .map_err(|e| engine_failure(e, "/input"))
+    };
+    if problem.positions.len() > 2 {
+        refuse_if_too_large(solve_over(&problem.positions[..2])?, problem.positions.len(), limits.result_bytes)?;
+    }
+    solve_over(&problem.positions)
+}
+
+/// Estimates the size of the result of `steps` positions from the result of
+/// the first two (every step has the same fields; the second, away from the
+/// drawn position's round numbers, stands for the rest) and refuses the job
+/// before it is computed when that is over `limit`.
+fn refuse_if_too_large(first: KinetostaticsResult, steps: usize, limit: usize) -> Result<(), ApiError> {
+    let step = first.steps.get(1).map_or(0, |s| create::json_len(s) + 1);
+    let estimate = create::json_len(&first) + step * (steps - 2);
+    if estimate <= limit {
+        return Ok(());
+    }
+    let rows = create::JobResult::rows(&first).map(|r| create::Rows { count: steps, ..r });
+    Err(create::too_large(estimate, limit, rows, true))
 }

@@ -155,6 +155,14 @@ pub struct KinetostaticsResult {
     pub warnings: Vec<String>,
 }
 
+impl crate::api::create::JobResult for KinetostaticsResult {
+    fn rows(&self) -> Option<crate::api::create::Rows> {
+        let field = if self.inputs.len() > 1 { "/input/0/steps" } else { "/input/steps" };
+        let also = "; or ask for fewer \"outputs\" (every body's kinematics is the largest)";
+        Some(crate::api::create::Rows { field: field.into(), count: self.steps.len(), also })
+    }
+}
+
 const METHOD: &str = "body coordinates; Newton-Raphson assembly with second-order continuation; velocities and \
 accelerations from the constraint Jacobian; multipliers of Phi_q^T lambda = Q - M q'' for reactions and driving \
 actions, checked against virtual power";

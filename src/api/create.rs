@@ -1,0 +1,165 @@
+//! Creating a job: compute under admission control, serialise the result
+//! once within the limit on a result, store those bytes and answer with them.
+
+use super::AppState;
+use super::body::{Chunks, guarded};
+use super::jobs::job_chunks;
+use super::problem::{ApiError, FieldError};
+use crate::store::NewJob;
+use axum::body::Body;
+use axum::http::{StatusCode, header};
+use axum::response::{IntoResponse, Response};
+use bytes::Bytes;
+use serde::Serialize;
+use std::io;
+use std::time::Instant;
+
+/// What sets the size of a result: the request field that says how many rows
+/// it has, how many it has, and what else the user can ask less of.
+pub struct Rows {
+    /// JSON pointer of the field in the request, e.g. `/input/steps`.
+    pub field: String,
+    /// Rows the result has (or would have).
+    pub count: usize,
+    /// Another way to shrink it, e.g. "or fewer outputs"; may be empty.
+    pub also: &'static str,
+}
+
+/// A job's result: serialisable, and saying which request field sets its size.
+pub trait JobResult: Serialize {
+    fn rows(&self) -> Option<Rows> {
+        None
+    }
+}
+
+/// Runs `compute` once a compute slot is free, off the async workers,
+/// serialises its result within the limit, stores the job, and answers 201
+/// with the job and its `Location`; the same bytes are stored and sent.
+pub async fn create<R, F>(
+    state: &AppState,
+    kind: &'static str,
+    request: Bytes,
+    compute: F,
+) -> Result<Response, ApiError>
+where
+    R: JobResult + Send + 'static,
+    F: FnOnce() -> Result<R, ApiError> + Send + 'static,
+{
+    let computing = state.admission.compute().await?;
+    let limit = state.limits.result_bytes;
+    let (result, elapsed) = tokio::task::spawn_blocking(move || {
+        let start = Instant::now();
+        let r = compute();
+        let elapsed = start.elapsed();
+        (r.and_then(|r| serialized(&r, limit)), elapsed)
+    })
+    .await
+    .map_err(|e| ApiError::Internal(format!("engine task: {e}")))?;
+    state.admission.record(elapsed);
+    let job = NewJob {
+        id: uuid::Uuid::new_v4().to_string(),
+        kind: kind.into(),
+        created_at: now_rfc3339(),
+        request,
+        result: result?,
+        engine_us: i64::try_from(elapsed.as_micros()).unwrap_or(i64::MAX),
+        engine_version: env!("CARGO_PKG_VERSION").into(),
+    };
+    let reserved = state.admission.memory(job.bytes()).await?;
+    drop(computing);
+    let row = state.store.insert(job).await?;
+    let mut body = Chunks::default();
+    job_chunks(&row, &mut body);
+    let location = format!("/v1/jobs/{}", row.id);
+    let headers = [(header::CONTENT_TYPE, "application/json".to_string()), (header::LOCATION, location)];
+    Ok((StatusCode::CREATED, headers, guarded(Body::new(body), reserved)).into_response())
+}
+
+/// The result as JSON bytes, or a 422 when it would exceed `limit` bytes.
+fn serialized<R: JobResult>(result: &R, limit: usize) -> Result<Bytes, ApiError> {
+    let mut out = Bounded { buf: Vec::new(), limit };
+    match serde_json::to_writer(&mut out, result) {
+        Ok(()) => Ok(out.buf.into()),
+        Err(e) if e.is_io() => {
+            drop(out);
+            Err(too_large(json_len(result), limit, result.rows(), false))
+        }
+        Err(e) => Err(ApiError::Internal(format!("result: {e}"))),
+    }
+}
+
+/// The 422 of a result of `bytes` (estimated before computing, or measured)
+/// over `limit`, saying how many rows would fit.
+pub fn too_large(bytes: usize, limit: usize, rows: Option<Rows>, estimated: bool) -> ApiError {
+    let would = if estimated { "would be about" } else { "would be" };
+    let size = format!(
+        "the result {would} {} ({bytes} bytes), over the limit of {} on a result (MECHDYN_MAX_RESULT_BYTES)",
+        human(bytes),
+        human(limit)
+    );
+    let error = match rows {
+        Some(Rows { field, count, also }) if count > 0 => {
+            let per_row = bytes as f64 / count as f64;
+            let fit = ((limit as f64 * 0.95) / per_row).floor() as usize;
+            let name = field.rsplit('/').next().unwrap_or("rows").to_string();
+            let advice = format!("at {} each, {name} ≤ {fit} would fit{}", human(per_row as usize), also);
+            FieldError::at(field, format!("{size}; {advice}"))
+        }
+        _ => FieldError::at("", size),
+    };
+    ApiError::ResultTooLarge { limit, errors: vec![error] }
+}
+
+/// Bytes for people: 16 MiB, 140.2 MB.
+fn human(bytes: usize) -> String {
+    match bytes {
+        b if b >= 1 << 20 && b % (1 << 20) == 0 => format!("{} MiB", b >> 20),
+        b if b >= 1_000_000 => format!("{:.1} MB", b as f64 / 1e6),
+        b if b >= 1_000 => format!("{:.1} kB", b as f64 / 1e3),
+        b => format!("{b} B"),
+    }
+}
+
+/// A buffer that refuses to grow beyond `limit`.
+struct Bounded {
+    buf: Vec<u8>,
+    limit: usize,
+}
+
+impl io::Write for Bounded {
+    fn write(&mut self, data: &[u8]) -> io::Result<usize> {
+        if self.buf.len() + data.len() > self.limit {
+            return Err(io::Error::other("over the limit on a result"));
+        }
+        self.buf.extend_from_slice(data);
+        Ok(data.len())
+    }
+    fn flush(&mut self) -> io::Result<()> {
+        Ok(())
+    }
+}
+
+/// Bytes of `value` as JSON, counted without keeping them.
+pub fn json_len<T: Serialize + ?Sized>(value: &T) -> usize {
+    let mut count = Counter(0);
+    serde_json::to_writer(&mut count, value).map_or(usize::MAX, |()| count.0)
+}
+
+/// Counts bytes written, keeps none.
+struct Counter(usize);
+
+impl io::Write for Counter {
+    fn write(&mut self, data: &[u8]) -> io::Result<usize> {
+        self.0 += data.len();
+        Ok(data.len())
+    }
+    fn flush(&mut self) -> io::Result<()> {
+        Ok(())
+    }
+}
+
+fn now_rfc3339() -> String {
+    let format =
+        time::macros::format_description!("[year]-[month]-[day]T[hour]:[minute]:[second].[subsecond digits:6]Z");
+    time::OffsetDateTime::now_utc().format(&format).unwrap_or_default()
+}

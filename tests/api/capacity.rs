@@ -1,0 +1,154 @@
+//! Bounded memory: the limit on a result (refused 422 saying what would fit,
+//! estimated before computing where it can be), admission control (a POST
+//! beyond the jobs and the queue is answered 503 with Retry-After), answers
+//! that hold their memory until they are sent, and pages of the jobs list
+//! bounded in bytes.
+
+use crate::helpers::{TestApp, request};
+use axum::body::Body;
+use axum::http::{Request, StatusCode};
+use http_body_util::BodyExt;
+use mechdyn::api::{Admission, Capacity, Limits};
+use serde_json::Value;
+use std::time::Duration;
+use tower::ServiceExt;
+
+/// The number after `NAME ≤ ` in a too-large message.
+fn would_fit(message: &str, name: &str) -> usize {
+    let after = message.split(&format!("{name} ≤ ")).nth(1).unwrap_or_else(|| panic!("no advice: {message}"));
+    after.split(|c: char| !c.is_ascii_digit()).next().unwrap().parse().unwrap()
+}
+
+/// The problem of a 422 result-too-large at `pointer`: its message.
+fn too_large(r: &crate::helpers::Reply, pointer: &str) -> String {
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let p = r.json();
+    assert_eq!(p["type"], "/problems/result-too-large", "{p}");
+    assert_eq!(p["errors"][0]["pointer"], pointer, "{p}");
+    p["errors"][0]["message"].as_str().unwrap().to_string()
+}
+
+/// K1 at 3600 positions under a 200 kB limit: refused before computing with
+/// the number of steps that fits; that number is then accepted, within the
+/// limit; nothing was stored for the refusal.
+#[tokio::test]
+async fn a_kinetostatics_result_over_the_limit_is_refused_with_the_steps_that_fit() {
+    let limit = 200_000;
+    let app = TestApp::with_limits(Limits { result_bytes: limit, ..Limits::default() }).await;
+    let mut body = request("k1_offset_slider_crank");
+    body["input"]["steps"] = 3600.into();
+    let message = too_large(&app.post("/v1/kinetostatics", &body).await, "/input/steps");
+    assert!(message.contains("would be about") && message.contains("outputs"), "{message}");
+    assert!(app.get("/v1/jobs").await.json()["items"].as_array().unwrap().is_empty(), "nothing stored");
+    let fit = would_fit(&message, "steps");
+    assert!((10..3600).contains(&fit), "{message}");
+    body["input"]["steps"] = fit.into();
+    let r = app.post("/v1/kinetostatics", &body).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", &r.text[..r.text.len().min(400)]);
+    let result = serde_json::to_string(&r.json()["result"]).unwrap();
+    assert!(result.len() <= limit, "{} bytes", result.len());
+}
+
+/// A flywheel's table over the limit is found when the result is written
+/// (no estimate before): refused with the samples that fit, which then fit.
+#[tokio::test]
+async fn a_flywheel_table_over_the_limit_is_refused_with_the_samples_that_fit() {
+    let limit = 50_000;
+    let app = TestApp::with_limits(Limits { result_bytes: limit, ..Limits::default() }).await;
+    let mut body = request("p113_pulley");
+    body["samples"] = 5000.into();
+    let message = too_large(&app.post("/v1/flywheel", &body).await, "/samples");
+    let fit = would_fit(&message, "samples");
+    body["samples"] = fit.into();
+    let r = app.post("/v1/flywheel", &body).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    assert!(serde_json::to_string(&r.json()["result"]).unwrap().len() <= limit);
+}
+
+fn post(path: &str, body: Body) -> Request<Body> {
+    Request::post(path).header("content-type", "application/json").body(body).unwrap()
+}
+
+/// One job computing and no queue: while a POST holds the only slot (its
+/// body still arriving), another is answered 503 problem+json with
+/// Retry-After; once the first is done, POSTs are served again.
+#[tokio::test]
+async fn a_post_beyond_the_jobs_and_the_queue_is_answered_503_with_retry_after() {
+    let admission = Admission::new(Capacity { jobs: 1, queue: 0, ..Capacity::default() });
+    let app = TestApp::new().await.reopened(|s| mechdyn::api::AppState { admission, ..s }).await;
+    let (mut sender, slow) = http_body_util::channel::Channel::<bytes::Bytes>::new(1);
+    let first = tokio::spawn(app.app.clone().oneshot(post("/v1/flywheel", Body::new(slow))));
+    tokio::task::yield_now().await;
+    let mut second = app.post("/v1/flywheel", &request("p113_pulley")).await;
+    for _ in 0..100 {
+        if second.status == StatusCode::SERVICE_UNAVAILABLE {
+            break;
+        }
+        // The first request had not yet taken its slot: try again.
+        tokio::time::sleep(Duration::from_millis(10)).await;
+        second = app.post("/v1/flywheel", &request("p113_pulley")).await;
+    }
+    assert_eq!(second.status, StatusCode::SERVICE_UNAVAILABLE, "{}", second.text);
+    assert_eq!(second.content_type, "application/problem+json");
+    assert_eq!(second.json()["type"], "/problems/saturated", "{}", second.text);
+    let retry: u64 = second.headers["retry-after"].to_str().unwrap().parse().unwrap();
+    assert!((1..=60).contains(&retry), "Retry-After {retry}");
+    sender.send_data(request("p113_pulley").to_string().into()).await.unwrap();
+    drop(sender);
+    assert_eq!(first.await.unwrap().unwrap().status(), StatusCode::CREATED);
+    assert_eq!(app.post("/v1/flywheel", &request("p113_pulley")).await.status, StatusCode::CREATED);
+}
+
+/// An answer holds its memory until it has been sent: with room for one
+/// copy of a job, a second read waits while the first answer is unread,
+/// and is answered 503 once its wait is over; after the first answer has
+/// gone, reads are served again.
+#[tokio::test]
+async fn answers_hold_their_memory_until_sent() {
+    let app = TestApp::new().await;
+    let job = app.flywheel(&request("p113_pulley")).await;
+    let path = format!("/v1/jobs/{}", job["id"].as_str().unwrap());
+    let size =
+        serde_json::to_string(&job["request"]).unwrap().len() + serde_json::to_string(&job["result"]).unwrap().len();
+    let capacity = Capacity { memory: size * 3 / 2, wait: Duration::from_millis(200), ..Capacity::default() };
+    let app = app.reopened(|s| mechdyn::api::AppState { admission: Admission::new(capacity), ..s }).await;
+    let read = || app.app.clone().oneshot(Request::get(&path).body(Body::empty()).unwrap());
+    let unread = read().await.unwrap();
+    assert_eq!(unread.status(), StatusCode::OK);
+    let length: usize = unread.headers()["content-length"].to_str().unwrap().parse().unwrap();
+    let waiting = read().await.unwrap();
+    assert_eq!(waiting.status(), StatusCode::SERVICE_UNAVAILABLE);
+    assert!(waiting.headers().contains_key("retry-after"));
+    let sent = unread.into_body().collect().await.unwrap().to_bytes();
+    assert_eq!(sent.len(), length, "Content-Length is the body's length");
+    assert_eq!(read().await.unwrap().status(), StatusCode::OK);
+}
+
+/// A page of the jobs list stops before its jobs exceed the limit on a
+/// result (one job at least); `next` leads to the rest, and every job is
+/// listed once.
+#[tokio::test]
+async fn a_page_of_the_jobs_list_is_bounded_in_bytes() {
+    let probe = TestApp::new().await;
+    let one = probe.post("/v1/flywheel", &request("p113_pulley")).await.text.len();
+    let limit = one * 5 / 2;
+    let app = TestApp::with_limits(Limits { result_bytes: limit, ..Limits::default() }).await;
+    for _ in 0..5 {
+        app.flywheel(&request("p113_pulley")).await;
+    }
+    let (mut seen, mut next, mut pages) = (Vec::new(), Some("/v1/jobs".to_string()), 0);
+    while let Some(path) = next {
+        let page = app.get(&path).await;
+        assert!(page.text.len() <= limit + 200, "{} bytes over {limit}", page.text.len());
+        let page: Value = page.json();
+        let items = page["items"].as_array().unwrap();
+        assert!(!items.is_empty() || seen.len() == 5);
+        seen.extend(items.iter().map(|j| j["id"].as_str().unwrap().to_string()));
+        next = page["next"].as_str().map(str::to_string);
+        pages += 1;
+    }
+    seen.sort();
+    seen.dedup();
+    assert_eq!(seen.len(), 5, "every job once");
+    assert!(pages >= 3, "two jobs a page: {pages} pages");
+}

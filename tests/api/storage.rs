@@ -1,0 +1,154 @@
+//! A full disk is a condition, not a bug: the real binary on a real, small
+//! filesystem (a 3 MiB tmpfs in a mount namespace of its own, part of it
+//! taken by a ballast file) answers 507 `/problems/storage-full` once the
+//! disk is full, keeps serving reads and /healthz, loses no acknowledged
+//! job, and stores jobs again once space returns (the ballast removed).
+//! Also the size cap an operator can set (`--max-database-bytes`), and the
+//! refusal of a database URL this version cannot serve.
+
+use crate::helpers::request;
+use mechdyn::store::{NewJob, Options, Store, StoreError};
+use serde_json::Value;
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// One HTTP exchange with curl-like plainness: (status, body).
+fn http(port: u16, method: &str, path: &str, body: &str) -> (u16, String) {
+    crate::crash::http(port, method, path, body).unwrap_or((0, String::new()))
+}
+
+/// Whether this machine lets the test make a mount namespace with a tmpfs.
+fn can_mount() -> bool {
+    Command::new("unshare")
+        .args(["-m", "sh", "-c", "mount -t tmpfs -o size=1m tmpfs /mnt"])
+        .stderr(Stdio::null())
+        .status()
+        .is_ok_and(|s| s.success())
+}
+
+/// The service on a 3 MiB tmpfs holding `ballast_kib` of ballast.
+fn start_on_small_disk(dir: &str, port: u16, ballast_kib: usize) -> Child {
+    let script = format!(
+        "mount -t tmpfs -o size=3m tmpfs {dir} && dd if=/dev/zero of={dir}/ballast bs=1k count={ballast_kib} \
+         2>/dev/null && exec {bin}",
+        bin = env!("CARGO_BIN_EXE_mechdyn")
+    );
+    let child = Command::new("unshare")
+        .args(["-m", "sh", "-c", &script])
+        .env("DATABASE_URL", format!("sqlite://{dir}/jobs.db"))
+        .env("MECHDYN_ADDR", format!("127.0.0.1:{port}"))
+        .env("RUST_LOG", "warn")
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let started = Instant::now();
+    while http(port, "GET", "/healthz", "").0 != 200 {
+        assert!(started.elapsed() < Duration::from_secs(30), "the service did not start");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    child
+}
+
+#[test]
+fn a_full_disk_is_answered_507_and_writes_resume_when_space_returns() {
+    if !can_mount() {
+        eprintln!("skipped: this machine does not allow a tmpfs in a mount namespace (needs root)");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let dir = dir.path().display().to_string();
+    let port = crate::crash::free_port();
+    let mut child = start_on_small_disk(&dir, port, 1024);
+    let mut body = request("p113_pulley");
+    body["samples"] = 2000.into();
+    let body = body.to_string();
+    let mut stored: Vec<(String, Value)> = Vec::new();
+    let full = loop {
+        let (status, text) = http(port, "POST", "/v1/flywheel", &body);
+        if status != 201 {
+            break (status, text);
+        }
+        let job: Value = serde_json::from_str(&text).unwrap();
+        stored.push((job["id"].as_str().unwrap().to_string(), job["result"].clone()));
+        assert!(stored.len() < 1000, "3 MiB never filled up");
+    };
+    assert_eq!(full.0, 507, "{}", full.1);
+    let problem: Value = serde_json::from_str(&full.1).unwrap();
+    assert_eq!(problem["type"], "/problems/storage-full", "{problem}");
+    assert!(!stored.is_empty(), "some jobs fit before the disk filled");
+    // Reads and the health check go on; no acknowledged job is lost.
+    assert_eq!(http(port, "GET", "/healthz", "").0, 200);
+    assert_eq!(http(port, "POST", "/v1/flywheel", &body).0, 507, "still full");
+    let read_all = |stored: &[(String, Value)]| {
+        for (id, result) in stored {
+            let (status, text) = http(port, "GET", &format!("/v1/jobs/{id}"), "");
+            assert_eq!(status, 200, "{id}: {text}");
+            assert_eq!(&serde_json::from_str::<Value>(&text).unwrap()["result"], result, "{id}");
+        }
+    };
+    read_all(&stored);
+    // Space returns: the ballast goes; the next POST is stored.
+    let pid = child.id().to_string();
+    let freed = Command::new("nsenter").args(["-t", &pid, "-m", "rm", &format!("{dir}/ballast")]).status().unwrap();
+    assert!(freed.success());
+    let (status, text) = http(port, "POST", "/v1/flywheel", &body);
+    assert_eq!(status, 201, "{text}");
+    let job: Value = serde_json::from_str(&text).unwrap();
+    stored.push((job["id"].as_str().unwrap().to_string(), job["result"].clone()));
+    read_all(&stored);
+    eprintln!("{} jobs stored before the disk was full, all read back; writes resumed", stored.len() - 1);
+    child.kill().unwrap();
+    child.wait().unwrap();
+}
+
+fn job(k: usize, bytes: usize) -> NewJob {
+    NewJob {
+        id: format!("job-{k}"),
+        kind: "flywheel".into(),
+        created_at: "2026-11-23T00:00:00.000000Z".into(),
+        request: "{}".into(),
+        result: format!("\"{}\"", "x".repeat(bytes)).into(),
+        engine_us: 1,
+        engine_version: "test".into(),
+    }
+}
+
+/// `--max-database-bytes`: past the cap an insert fails as `Full` (the 507
+/// of the API), the jobs before it stay readable, and the file stays sound.
+#[tokio::test]
+async fn the_database_size_cap_refuses_inserts_as_full() {
+    let dir = tempfile::tempdir().unwrap();
+    let url = format!("sqlite://{}/jobs.db", dir.path().display());
+    let store = Store::open_with(&url, &Options { max_bytes: Some(256 << 10) }).await.unwrap();
+    let mut k = 0;
+    let error = loop {
+        match store.insert(job(k, 20_000)).await {
+            Ok(_) => k += 1,
+            Err(e) => break e,
+        }
+        assert!(k < 100, "256 KiB never filled up");
+    };
+    assert_eq!(error, StoreError::Full);
+    assert!(k > 0);
+    for i in 0..k {
+        assert!(store.get(&format!("job-{i}")).await.unwrap().is_some(), "job-{i}");
+    }
+    assert_eq!(store.integrity().await.unwrap(), "ok");
+}
+
+/// A PostgreSQL URL is refused at start with a clear message, and neither
+/// the message nor the log holds its password.
+#[test]
+fn another_database_scheme_stops_the_service_at_start_without_its_password() {
+    let out = Command::new(env!("CARGO_BIN_EXE_mechdyn"))
+        .env("DATABASE_URL", "postgres://user:s3cret@db/mechdyn")
+        .env("MECHDYN_ADDR", format!("127.0.0.1:{}", crate::crash::free_port()))
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let said = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    assert!(said.contains("scheme 'postgres'") && said.contains("SQLite"), "{said}");
+    assert!(said.contains("postgres://user:***@db/mechdyn"), "{said}");
+    assert!(!said.contains("s3cret"), "{said}");
+}
