@@ -33,10 +33,14 @@ pub fn equivalent_masses(mass: f64, inertia: f64, points: &[[f64; 2]]) -> Equiva
     let rank = svd.singular_values.iter().filter(|s| **s > tol).count();
     let x = svd.solve(&b, tol).unwrap_or_else(|_| DVector::zeros(n));
     let r = &a * &x - &b;
-    let scale = [mass.abs().max(f64::MIN_POSITIVE), 1.0, 1.0, inertia.abs().max(f64::MIN_POSITIVE)];
-    let length = points.iter().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max).max(f64::MIN_POSITIVE);
-    let residual =
-        (0..4).map(|k| r[k].abs() / if k == 1 || k == 2 { scale[0] * length } else { scale[k] }).fold(0.0, f64::max);
+    // Each condition against its own natural size: m, m·L and max(I_G, m·L²),
+    // L the farthest point from G (a link with I_G = 0 is measured by m·L²,
+    // not by I_G).
+    let length = points.iter().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max);
+    let m = mass.abs();
+    let scale = [m, m * length, m * length, inertia.abs().max(m * length * length)];
+    let relative = |k: usize| if r[k] == 0.0 { 0.0 } else { r[k].abs() / scale[k] };
+    let residual = (0..4).map(relative).fold(0.0, f64::max);
     Equivalent { masses: x.iter().copied().collect(), residual, unique: rank == n }
 }
 
@@ -54,6 +58,16 @@ mod tests {
             assert!((m - want).abs() < 1e-12, "{:?}", e.masses);
         }
         assert!(e.unique && e.residual < 1e-12);
+    }
+
+    /// A 3 kg link with I_G = 0 (a point mass) and points at A, 0.2 m from
+    /// G, and at G: all the mass at G matches exactly (m_G = 3, m_A = 0; by
+    /// hand), so the residual is at rounding level, not divided by I_G = 0.
+    #[test]
+    fn a_point_mass_link_is_matched_by_its_mass_at_g() {
+        let e = equivalent_masses(3.0, 0.0, &[[-0.2, 0.0], [0.0, 0.0]]);
+        assert!(e.masses[0].abs() < 1e-12 && (e.masses[1] - 3.0).abs() < 1e-12, "{:?}", e.masses);
+        assert!(e.residual < 1e-12, "{e:?}");
     }
 
     /// Two points cannot match mass, centre and inertia of any bar: the best
