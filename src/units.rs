@@ -120,6 +120,7 @@ const UNITS: &[(&str, f64, Dim)] = &[
     ("kW", 1e3, Dim::POWER),
     ("MW", 1e6, Dim::POWER),
     ("hp", 550.0 * FT * LBF, Dim::POWER),
+    ("%", 0.01, Dim::NONE),
 ];
 
 /// A value converted to SI, with its dimension.
@@ -179,14 +180,61 @@ fn parse_factor(text: &str) -> Result<(f64, Dim), UnitError> {
     if name == "1" {
         return Ok((1.0, Dim::NONE));
     }
-    let &(_, f, d) = UNITS.iter().find(|u| u.0 == name).ok_or_else(|| UnitError::Unknown(name.to_string()))?;
+    let &(_, f, d) = table_unit(name).ok_or_else(|| UnitError::Unknown(name.to_string()))?;
     Ok((f.powi(power.into()), d.pow(power)))
 }
 
-/// Parses `"VALUE"` (SI) or `"VALUE UNIT"`.
+/// A unit of the table by its name, or by the only name equal to it but for
+/// case (`RPM`, `Deg`, `KW`), unless the case of an m is what tells milli
+/// from mega (`MM`, `mn`, `MIN`: m or M followed by a unit's name).
+fn table_unit(name: &str) -> Option<&'static (&'static str, f64, Dim)> {
+    if let Some(u) = UNITS.iter().find(|u| u.0 == name) {
+        return Some(u);
+    }
+    let mut same = UNITS.iter().filter(|u| u.0.eq_ignore_ascii_case(name));
+    let found = same.next()?;
+    let milli_or_mega = found.0.starts_with(['m', 'M'])
+        && !name.starts_with(&found.0[..1])
+        && UNITS.iter().any(|u| u.0.eq_ignore_ascii_case(&found.0[1..]));
+    (same.next().is_none() && !milli_or_mega).then_some(found)
+}
+
+/// Length of the number at the start of `t`: sign, digits, point, exponent.
+fn number_length(t: &str) -> usize {
+    let b = t.as_bytes();
+    let digits = |mut i: usize| {
+        while i < b.len() && b[i].is_ascii_digit() {
+            i += 1;
+        }
+        i
+    };
+    let mut i = if b.first().is_some_and(|c| *c == b'+' || *c == b'-') { 1 } else { 0 };
+    i = digits(i);
+    if b.get(i) == Some(&b'.') {
+        i = digits(i + 1);
+    }
+    // An exponent only when digits follow it (`2e3`, not the `e` of a unit).
+    if b.get(i).is_some_and(|c| *c == b'e' || *c == b'E') {
+        let mut j = i + 1;
+        if b.get(j).is_some_and(|c| *c == b'+' || *c == b'-') {
+            j += 1;
+        }
+        if b.get(j).is_some_and(u8::is_ascii_digit) {
+            i = digits(j);
+        }
+    }
+    i
+}
+
+/// Parses `"VALUE"` (SI) or `"VALUE UNIT"`; the space may be left out
+/// (`"60rpm"`, `"4%"`).
 pub fn parse_quantity(text: &str) -> Result<Quantity, UnitError> {
     let t = text.trim();
-    let split = t.find(|c: char| c.is_whitespace()).unwrap_or(t.len());
+    let spaced = t.find(|c: char| c.is_whitespace()).unwrap_or(t.len());
+    let split = match number_length(t) {
+        n if n > 0 && n < spaced && t[..spaced].parse::<f64>().is_err() => n,
+        _ => spaced,
+    };
     let (number, unit) = t.split_at(split);
     let value: f64 = number.parse().map_err(|_| UnitError::Malformed(text.into()))?;
     if !value.is_finite() {
@@ -203,7 +251,7 @@ pub fn parse_quantity(text: &str) -> Result<Quantity, UnitError> {
 /// expected dimension.
 pub fn parse_as(text: &str, expected: Dim) -> Result<f64, UnitError> {
     let q = parse_quantity(text)?;
-    let bare = text.split_whitespace().nth(1).is_none();
+    let bare = text.trim().parse::<f64>().is_ok();
     if q.dim == expected || bare {
         Ok(q.si)
     } else {
@@ -267,6 +315,7 @@ mod tests {
             ("kW", 1000.0, Dim::POWER),
             ("MW", 1e6, Dim::POWER),
             ("hp", 745.699_871_582_270_2, Dim::POWER),
+            ("%", 0.01, Dim::NONE),
         ];
         assert_eq!(expect.len(), UNITS.len(), "every table unit has a test row");
         for &(name, si, dim) in expect {
@@ -309,6 +358,35 @@ mod tests {
             assert!(close(q.si, si), "{text}: {} vs {si}", q.si);
             assert_eq!(q.dim, dim, "{text}");
         }
+    }
+
+    /// As people write them: no space, any case where the case tells no
+    /// two units apart, and % for ratios (against the table's definitions).
+    #[test]
+    fn quantities_as_people_write_them() {
+        let cases: &[(&str, f64, Dim)] = &[
+            ("60rpm", 2.0 * PI, Dim::ANGULAR_SPEED),
+            ("60 RPM", 2.0 * PI, Dim::ANGULAR_SPEED),
+            ("60 Rpm", 2.0 * PI, Dim::ANGULAR_SPEED),
+            ("4 %", 0.04, Dim::NONE),
+            ("4%", 0.04, Dim::NONE),
+            ("1.5e3N*m", 1500.0, Dim::TORQUE),
+            ("-2.5E-1 KW", -250.0, Dim::POWER),
+            ("90DEG", PI / 2.0, Dim::ANGLE),
+            ("3 KG", 3.0, Dim::MASS),
+            ("2 Mn", 2e6, Dim::FORCE),
+        ];
+        for &(text, si, dim) in cases {
+            let q = parse_quantity(text).unwrap_or_else(|e| panic!("{text}: {e}"));
+            assert!(close(q.si, si), "{text}: {} vs {si}", q.si);
+            assert_eq!(q.dim, dim, "{text}");
+        }
+        // Milli or mega, when only the case of the m says which.
+        for text in ["2 mn", "3 MM", "1 MIN", "5 mj"] {
+            assert!(matches!(parse_quantity(text), Err(UnitError::Unknown(_))), "{text}");
+        }
+        assert_eq!(parse_as("4%", Dim::NONE).unwrap(), 0.04);
+        assert!(parse_as("4%", Dim::ANGULAR_SPEED).is_err());
     }
 
     #[test]

@@ -14,6 +14,8 @@ use utoipa::{PartialSchema, ToSchema};
 
 /// Most bodies, joints or points in one mechanism.
 pub const MAX_ITEMS: usize = 200;
+/// Longest name of a point, body or joint, in characters.
+pub const NAME_MAX_LENGTH: usize = 100;
 
 /// A point: the name of a point of `points`, or coordinates [x, y] in m.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -51,7 +53,7 @@ impl PartialSchema for PointRef {
             .item(
                 ObjectBuilder::new()
                     .schema_type(Type::String)
-                    .max_length(Some(100))
+                    .max_length(Some(NAME_MAX_LENGTH))
                     .description(Some("name of a point")),
             )
             .item(coords_schema())
@@ -172,6 +174,9 @@ impl MechanismDto {
         let point = |e: &mut Errors, p: &PointRef, ptr: &str| match p {
             PointRef::Coords(c) if c.iter().all(|v| v.is_finite()) => Some(*c),
             PointRef::Coords(_) => e.fail(ptr, "coordinates must be finite"),
+            PointRef::Name(n) if n.chars().count() > NAME_MAX_LENGTH => {
+                e.fail(ptr, format!("must be at most {NAME_MAX_LENGTH} characters"))
+            }
             PointRef::Name(n) => match points.get(n) {
                 Some(c) => Some(*c),
                 None => e.fail(ptr, format!("unknown point '{n}'")),
@@ -181,6 +186,7 @@ impl MechanismDto {
         let mut bodies = vec![Body { name: "ground".into(), mass: 0.0, inertia: 0.0, cg: [0.0, 0.0] }];
         for (k, b) in self.bodies.iter().enumerate() {
             let ptr = format!("{at}/bodies/{k}");
+            e.short(&b.name, NAME_MAX_LENGTH, &format!("{ptr}/name"));
             if names.contains(&b.name) {
                 e.push(&format!("{ptr}/name"), format!("duplicate body name '{}' (ground is implicit)", b.name));
             }
@@ -206,6 +212,7 @@ impl MechanismDto {
         let mut joints = Vec::with_capacity(self.joints.len());
         for (k, j) in self.joints.iter().enumerate() {
             let ptr = format!("{at}/joints/{k}");
+            e.short(&j.name, NAME_MAX_LENGTH, &format!("{ptr}/name"));
             if self.joints[..k].iter().any(|o| o.name == j.name) {
                 e.push(&format!("{ptr}/name"), format!("duplicate joint name '{}'", j.name));
             }

@@ -13,6 +13,11 @@ use utoipa::openapi::RefOr;
 use utoipa::openapi::schema::{ObjectBuilder, OneOfBuilder, Schema, Type};
 use utoipa::{PartialSchema, ToSchema};
 
+/// Longest quantity string, in characters (the schema's `maxLength`).
+pub const QUANTITY_MAX_LENGTH: usize = 200;
+/// Longest unit name of a function's `unit`, in characters.
+pub const UNIT_MAX_LENGTH: usize = 100;
+
 /// A number (SI) or a `"VALUE UNIT"` string.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(untagged)]
@@ -56,7 +61,7 @@ impl PartialSchema for Quantity {
             .item(
                 ObjectBuilder::new()
                     .schema_type(Type::String)
-                    .max_length(Some(200))
+                    .max_length(Some(QUANTITY_MAX_LENGTH))
                     .description(Some("\"VALUE UNIT\", e.g. \"300 rpm\", \"3200 ft*lbf\", \"20 slug*ft^2\"; angle fields also take constant expressions such as \"7*pi/4\""))
                     .examples(["300 rpm"]),
             )
@@ -186,8 +191,17 @@ impl Errors {
         self.list.push(FieldError::at(pointer, message));
     }
 
+    /// A string of at most `max` characters (the schema's `maxLength`).
+    pub fn short(&mut self, text: &str, max: usize, at: &str) -> Option<()> {
+        let n = text.chars().count();
+        if n <= max { Some(()) } else { self.fail(at, format!("must be at most {max} characters (has {n})")) }
+    }
+
     /// A quantity of the expected dimension, in SI.
     pub fn quantity(&mut self, q: &Quantity, dim: Dim, at: &str) -> Option<f64> {
+        if let Quantity::Text(s) = q {
+            self.short(s, QUANTITY_MAX_LENGTH, at)?;
+        }
         let value = match q {
             Quantity::Number(v) => Ok(*v),
             Quantity::Text(s) => units::parse_as(s, dim),
@@ -201,6 +215,9 @@ impl Errors {
 
     /// An angle: number (rad), angle quantity, or constant expression (`"7*pi/4"`).
     pub fn angle(&mut self, q: &Quantity, at: &str) -> Option<f64> {
+        if let Quantity::Text(s) = q {
+            self.short(s, QUANTITY_MAX_LENGTH, at)?;
+        }
         if let Quantity::Text(s) = q
             && units::parse_quantity(s).is_err()
         {
@@ -258,6 +275,9 @@ impl Errors {
 
     fn function_spec(&mut self, s: &FunctionSpec, dim: Dim, period: f64, at: &str, vars: &[&str]) -> Option<Function> {
         let scale = match &s.unit {
+            Some(u) if u.chars().count() > UNIT_MAX_LENGTH => {
+                return self.fail(&format!("{at}/unit"), format!("must be at most {UNIT_MAX_LENGTH} characters"));
+            }
             Some(u) => match units::unit_factor(u, dim) {
                 Ok(k) => k,
                 Err(e) => return self.fail(&format!("{at}/unit"), e.to_string()),

@@ -5,7 +5,8 @@
 //! Acceleration: Φ_q q̈ = γ. With one input, g = dq/dφ (velocity
 //! coefficients) and h = d²q/dφ² give the predictor q + gΔφ + ½hΔφ².
 
-use super::constraints::{State, System, evaluate, nu};
+use super::constraints::{State, System, evaluate, joint_offsets, nu};
+use super::mobility::mobility;
 use super::model::Mechanism;
 use super::{Deadline, EngineError};
 use nalgebra::{DMatrix, DVector, Dyn, LU};
@@ -90,7 +91,30 @@ pub fn assemble(
             *v += d;
         }
     }
-    Err(EngineError::NewtonDiverged { step, input: inputs.first().map_or(0.0, |i| i[0]), residual })
+    let joint = widest_gap(m, q, inputs);
+    Err(EngineError::NewtonDiverged { step, input: inputs.first().map_or(0.0, |i| i[0]), residual, joint })
+}
+
+/// The joint (or input) whose constraint rows are violated most at `q`.
+fn widest_gap(m: &Mechanism, q: &[f64], inputs: &[[f64; 3]]) -> String {
+    let phi = evaluate(m, &State { q, qd: None, inputs }).phi;
+    let offsets = joint_offsets(m);
+    let Some(row) = (0..phi.len()).max_by(|&a, &b| phi[a].abs().total_cmp(&phi[b].abs())) else { return String::new() };
+    match offsets.iter().rposition(|&o| o <= row) {
+        Some(j) if row < offsets[j] + Mechanism::joint_rows(&m.joints[j].kind) => format!("joint {}", m.joints[j].name),
+        _ => "the input".into(),
+    }
+}
+
+/// The error of positions that cannot be reached, or, when the joints leave
+/// the mechanism no freedom at all, that it is locked.
+fn unreachable(m: &Mechanism, e: EngineError) -> EngineError {
+    match e {
+        EngineError::NewtonDiverged { .. } if !m.drivers.is_empty() && mobility(m, &m.reference_q()).dof == 0 => {
+            EngineError::Locked { grubler: m.grubler().mobility }
+        }
+        e => e,
+    }
 }
 
 /// Velocities and accelerations at an assembled q, with Φ_q's factorisation.
@@ -128,7 +152,7 @@ pub fn sweep(
 ) -> Result<Vec<Configuration>, EngineError> {
     let mut base = m.reference_q();
     if let Some(first) = positions.first() {
-        approach(m, &mut base, first)?;
+        approach(m, &mut base, first).map_err(|e| unreachable(m, e))?;
     }
     let mut out: Vec<Configuration> = Vec::with_capacity(positions.len());
     // Velocity coefficients at the last regular position, for the predictor.
@@ -150,7 +174,9 @@ pub fn sweep(
                 out.push(Configuration::singular_at(q, f64::INFINITY));
                 continue;
             }
-            Err(_) => return Err(failure.unwrap_or(EngineError::Singular { step, input: inputs[0][0] })),
+            Err(_) => {
+                return Err(unreachable(m, failure.unwrap_or(EngineError::Singular { step, input: inputs[0][0] })));
+            }
         };
         failure = None;
         // One input: g = dq/dφ and h = d²q/dφ² give q̇ = gω and q̈ = gα + hω²
@@ -188,7 +214,7 @@ pub fn sweep(
         }
     }
     match failure {
-        Some(e) => Err(e),
+        Some(e) => Err(unreachable(m, e)),
         None => Ok(out),
     }
 }

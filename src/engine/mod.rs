@@ -40,12 +40,20 @@ pub enum EngineError {
          (largest lobe {largest_area} J); add a torque with \"balance\": true or correct the loads"
     )]
     NotSteady { net_work: f64, largest_area: f64 },
-    /// Newton–Raphson did not assemble the mechanism at an input position.
+    /// Newton–Raphson did not assemble the mechanism at an input position;
+    /// `joint` is where the gap stayed widest (the loop that does not close).
     #[error(
-        "the mechanism cannot be assembled at input {input} (step {step}): Newton-Raphson stopped with residual \
-         {residual:e}; the links cannot close there (e.g. a non-Grashof crank asked for a full turn)"
+        "the mechanism cannot be assembled at input {input} (step {step}): the loop through {joint} does not close \
+         (Newton-Raphson stopped {residual:.1e} short; e.g. a non-Grashof crank asked for a full turn)"
     )]
-    NewtonDiverged { step: usize, input: f64, residual: f64 },
+    NewtonDiverged { step: usize, input: f64, residual: f64, joint: String },
+    /// The joints leave no degree of freedom: a structure, which no input can move.
+    #[error(
+        "the mechanism is locked: its joints leave it no degree of freedom (0 by the rank of the joint Jacobian; \
+         Grübler's count 3(N - 1) - 2 P_I - P_II = {grubler}), so no input can move it; remove a joint or \
+         make one a slider"
+    )]
+    Locked { grubler: i64 },
     /// The constraint Jacobian is singular (a dead centre or toggle position the input cannot pass).
     #[error(
         "the mechanism is at a singular position at step {step} (input {input}): the constraint Jacobian loses rank"

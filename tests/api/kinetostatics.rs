@@ -134,7 +134,7 @@ async fn a_non_grashof_crank_asked_for_a_full_turn_is_422() {
     let r = app.post("/v1/kinetostatics", &body).await;
     assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
     let e = &r.json()["errors"][0];
-    assert_eq!(e["pointer"], "/input");
+    assert_eq!(e["pointer"], "/input/end", "a position along the range, short of its end");
     let message = e["message"].as_str().unwrap();
     assert!(
         message.contains("at input") && (message.contains("cannot be assembled") || message.contains("singular")),
@@ -163,6 +163,10 @@ async fn k5_differential_gear_train_with_two_inputs() {
         close(&bodies[2]["omega"], e["omega3_rpm"].as_f64().unwrap() * rpm, 1e-12, "ω planet");
         assert!(step["reduced_inertia"].is_null(), "I* is defined for one DOF only");
     }
+    // Virtual power, one equation per input's virtual motion, gives both
+    // torques again, independently of the multipliers.
+    let residual = r["summary"]["virtual_power_residual"].as_f64().expect("reported for two inputs");
+    assert!(residual < 1e-9, "virtual power residual {residual}");
 }
 
 /// Scotch yoke (course notes P.81 in closed form): crank R = 0.1 m (2 kg at its

@@ -22,3 +22,4 @@ mod rotor;
 mod security;
 mod seed_exams;
 mod storage;
+mod student;

@@ -53,7 +53,7 @@ fn check_rows(rows: &[Value], steps: &[Step]) {
         let scale = names.iter().map(|n| row["reactions"][n]["magnitude_N"].as_f64().unwrap()).fold(1.0, f64::max);
         close(s.driving[0], row["T_drive_Nm"].as_f64().unwrap(), scale * 0.1, &format!("{at}: T"));
         close(
-            s.driving_virtual_power.unwrap(),
+            s.driving_virtual_power[0],
             row["T_drive_Nm"].as_f64().unwrap(),
             scale * 0.1,
             &format!("{at}: T by virtual power"),

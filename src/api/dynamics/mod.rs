@@ -282,6 +282,7 @@ impl DynamicsRequest {
             .iter()
             .enumerate()
             .map(|(i, t)| {
+                e.short(&t.name, 200, &format!("/torques/{i}/name"));
                 let ratio = match t.ratio {
                     Some(k) if !(k.is_finite() && k != 0.0) => {
                         e.fail(&format!("/torques/{i}/ratio"), "must be a finite, non-zero number")

@@ -39,9 +39,9 @@ pub struct FlywheelRequest {
     /// ω_a = (ω_max + ω_min)/2 of the reference shaft.
     #[schema(value_type = Option<Quantity>)]
     pub mean_speed: Option<Quantity>,
-    /// ε = (ω_max − ω_min)/ω_a, in (0, 2).
-    #[schema(exclusive_minimum = 0.0, exclusive_maximum = 2.0)]
-    pub irregularity: Option<f64>,
+    /// ε = (ω_max − ω_min)/ω_a, in (0, 2): a number (0.04) or a percentage ("4 %").
+    #[schema(value_type = Option<Quantity>)]
+    pub irregularity: Option<Quantity>,
     #[schema(value_type = Option<Quantity>)]
     pub min_speed: Option<Quantity>,
     #[schema(value_type = Option<Quantity>)]
@@ -199,8 +199,13 @@ impl FlywheelRequest {
         let mean = q(e, &self.mean_speed, "/mean_speed");
         let min = q(e, &self.min_speed, "/min_speed");
         let max = q(e, &self.max_speed, "/max_speed");
-        let (mean, eps) = match (mean, self.irregularity, min, max) {
-            (Some(m), Some(eps), None, None) => (m?, eps),
+        // Read (and checked) before the others can end the reading early.
+        let irregularity = self.irregularity.as_ref().map(|q| {
+            let eps = e.quantity(q, Dim::NONE, "/irregularity");
+            e.require(eps, |v| v > 0.0 && v < 2.0, "/irregularity", "must be greater than 0 and less than 2")
+        });
+        let (mean, eps) = match (mean, irregularity, min, max) {
+            (Some(m), Some(eps), None, None) => (m?, eps?),
             (Some(m), None, Some(lo), None) => {
                 let (m, lo) = (m?, lo?);
                 if lo >= m {
@@ -223,9 +228,6 @@ impl FlywheelRequest {
                 );
             }
         };
-        if !(eps > 0.0 && eps < 2.0) {
-            return e.fail("/irregularity", format!("must be greater than 0 and less than 2 (got {eps})"));
-        }
         Some((mean, eps))
     }
 

@@ -2,6 +2,9 @@
 //! body limit, 400 for malformed JSON, 422 with a JSON pointer for every
 //! unknown field and for the first field of the wrong type.
 
+mod strict;
+mod words;
+
 use super::body::drain;
 use super::problem::{ApiError, FieldError};
 use axum::body::Body;
@@ -71,10 +74,12 @@ async fn read_within(body: Body, limit: usize) -> Result<Bytes, ApiError> {
 /// Parses a body already read: the same rules as the extractor (used by the CLI too).
 pub fn parse<T: DeserializeOwned>(raw: impl Into<Bytes>) -> Result<JsonBody<T>, ApiError> {
     let raw = raw.into();
-    let value: serde_json::Value = serde_json::from_slice(&raw).map_err(|e| ApiError::MalformedJson(e.to_string()))?;
+    let value: serde_json::Value =
+        serde_json::from_slice(&raw).map_err(|e| ApiError::MalformedJson(words::malformed(&e, &raw)))?;
     let mut unknown = Vec::new();
     let mut record = |path: serde_ignored::Path| unknown.push(FieldError::at(ignored_pointer(&path), "unknown field"));
-    let result: Result<T, _> = serde_path_to_error::deserialize(serde_ignored::Deserializer::new(&value, &mut record));
+    let strict = strict::Strict(&value);
+    let result: Result<T, _> = serde_path_to_error::deserialize(serde_ignored::Deserializer::new(strict, &mut record));
     match result {
         Ok(value) => Ok(JsonBody { value, raw, unknown }),
         Err(e) => {
@@ -124,7 +129,7 @@ fn type_error(e: &serde_path_to_error::Error<serde_json::Error>) -> FieldError {
         pointer = format!("{pointer}/{}", escape(field));
         return FieldError::at(pointer, "required field is missing");
     }
-    FieldError::at(pointer, message)
+    FieldError::at(pointer, words::plain(&message))
 }
 
 #[cfg(test)]

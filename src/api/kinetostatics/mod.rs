@@ -1,6 +1,7 @@
 //! `POST /v1/kinetostatics`: driving actions and joint reactions of a driven mechanism.
 
 mod loads;
+mod located;
 mod request;
 mod result;
 
@@ -13,7 +14,7 @@ pub use result::{KinetostaticsResult, ReactionDto, Scalars, csv_table};
 use super::json::JsonBody;
 use super::limits::Limits;
 use super::problem::{ApiError, FieldError, PostErrors};
-use super::{AppState, create, engine_failure, jobs, validated};
+use super::{AppState, create, jobs, validated};
 use crate::engine::Deadline;
 use crate::engine::kinetostatics::solve;
 use axum::extract::State;
@@ -50,7 +51,7 @@ pub fn compute_within(
     let solve_over = |positions: &[Vec<[f64; 3]>]| {
         solve(&problem.mechanism, &problem.loads, positions, problem.outputs, &deadline)
             .map(|s| KinetostaticsResult::new(s, &problem, &joint_names))
-            .map_err(|e| engine_failure(e, "/input"))
+            .map_err(|e| problem.written.explain(e))
     };
     if problem.positions.len() > 2 {
         refuse_if_too_large(solve_over(&problem.positions[..2])?, problem.positions.len(), limits.result_bytes)?;

@@ -1,6 +1,7 @@
 //! `POST /v1/kinetostatics` request and its conversion into an engine problem.
 
 use super::loads::{LoadDto, convert_loads};
+use super::located::Written;
 use crate::api::limits::Limits;
 use crate::api::mechanism::MechanismDto;
 use crate::api::problem::FieldError;
@@ -143,6 +144,8 @@ pub struct Problem {
     pub want_driving: bool,
     /// Per input: true for a prismatic (linear) input.
     pub linear: Vec<bool>,
+    /// How the first input was written, for errors at a position.
+    pub written: Written,
 }
 
 impl KinetostaticsRequest {
@@ -158,8 +161,14 @@ impl KinetostaticsRequest {
             Inputs::One(i) => vec![(**i).clone()],
             Inputs::Many(v) => v.clone(),
         };
-        let (drivers, positions, linear) =
-            positions(&mut e, &mechanism, &inputs, matches!(self.input, Inputs::Many(_)));
+        let many = matches!(self.input, Inputs::Many(_));
+        let (drivers, positions, linear) = positions(&mut e, &mechanism, &inputs, many);
+        let written = Written::new(
+            inputs.first(),
+            if many { "/input/0".into() } else { "/input".into() },
+            linear.first().copied().unwrap_or(false),
+            &positions,
+        );
         mechanism.drivers = drivers;
         let period = if linear.first().copied().unwrap_or(false) { 1.0 } else { 2.0 * PI };
         let loads = convert_loads(
@@ -186,6 +195,7 @@ impl KinetostaticsRequest {
             },
             want_driving: outputs.contains(&OutputKind::Driving),
             linear,
+            written,
         })
     }
 }

@@ -140,11 +140,7 @@ pub(crate) fn run(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Run,
     let mut f = |t: f64, y: &[f64], dy: &mut [f64]| {
         if deadline.expired() { dy.fill(f64::NAN) } else { model.rhs(t, y, dy) }
     };
-    let over = |ode: &Dopri5| DynamicsError::Budget {
-        seconds: deadline.seconds(),
-        t: ode.t(),
-        steps: ode.accepted,
-    };
+    let over = |ode: &Dopri5| DynamicsError::Budget { seconds: deadline.seconds(), t: ode.t(), steps: ode.accepted };
     let mut ode = Dopri5::new(&mut f, 0.0, y0, s.rtol, s.atol.clone(), f64::INFINITY);
     let (mut steps, mut events, mut stopped, mut drift) = (Vec::new(), Vec::new(), None, 0.0f64);
     let t_end = loop {

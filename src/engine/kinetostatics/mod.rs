@@ -7,9 +7,10 @@
 //! M = diag(m, m, I_G) per body, Q the applied generalized forces (gravity,
 //! forces at points, torques). The constraint forces on the bodies are
 //! −Φ_qᵀλ: the rows of a joint give its reaction, the row of a driver its
-//! driving action (−λ_d). Virtual power gives the driving action of a
-//! single input independently: with g = dq/dφ (Φ_q g = e_driver),
-//! T = gᵀ(M q̈ − Q); and I* = gᵀMg, M* = gᵀQ (Zhukovsky).
+//! driving action (−λ_d). Virtual power gives the driving action of every
+//! input independently, one equation per independent virtual motion: with
+//! g_i = ∂q/∂φ_i (Φ_q g_i = e_i, the row of driver i), T_i = g_iᵀ(M q̈ − Q);
+//! and, for one input, I* = gᵀMg, M* = gᵀQ (Zhukovsky).
 
 mod friction;
 mod loads;
@@ -74,8 +75,8 @@ pub struct Step {
     pub input: Vec<f64>,
     /// Driving action of each input on the second body of its joint.
     pub driving: Vec<f64>,
-    /// The same from virtual power (one input only).
-    pub driving_virtual_power: Option<f64>,
+    /// The same from virtual power, per input (empty where not computed).
+    pub driving_virtual_power: Vec<f64>,
     pub reactions: Vec<Reaction>,
     pub reduced_inertia: Option<f64>,
     pub reduced_torque: Option<f64>,
@@ -147,7 +148,7 @@ fn step(
         return Ok(Step {
             input: inputs.iter().map(|i| i[0]).collect(),
             driving: Vec::new(),
-            driving_virtual_power: None,
+            driving_virtual_power: Vec::new(),
             reactions: Vec::new(),
             reduced_inertia: None,
             reduced_torque: None,
@@ -164,7 +165,7 @@ fn step(
     let inertial = mass_times(m, &c.qdd) - &qv;
     let single = m.drivers.len() == 1;
     let g = c.g.as_ref();
-    let driving_virtual_power = g.map(|g| g.iter().zip(inertial.iter()).map(|(a, b)| a * b).sum::<f64>());
+    let driving_virtual_power = virtual_power(m, c, &inertial);
     let (reduced_inertia, reduced_torque) = match (g, outputs.reduced) {
         (Some(g), true) => {
             let mg = mass_times(m, g);
@@ -190,7 +191,7 @@ fn step(
     let (driving, reactions) = if outputs.reactions || !single {
         multipliers(m, c, &inertial, outputs.reactions.then_some(&mobility.indeterminate_joints), k, phi)?
     } else {
-        (vec![driving_virtual_power.unwrap_or(f64::NAN)], Vec::new())
+        (vec![driving_virtual_power.first().copied().unwrap_or(f64::NAN)], Vec::new())
     };
     Ok(Step {
         input: inputs.iter().map(|i| i[0]).collect(),
@@ -205,6 +206,24 @@ fn step(
         friction_iterations,
         singular: false,
     })
+}
+
+/// T_i = g_iᵀ(M q̈ − Q) for every input i, g_i = ∂q/∂φ_i solving Φ_q g_i = e_i
+/// (the velocity coefficients of one input are kept from the kinematics).
+fn virtual_power(m: &Mechanism, c: &Configuration, inertial: &DVector<f64>) -> Vec<f64> {
+    let power = |g: &[f64]| g.iter().zip(inertial.iter()).map(|(a, b)| a * b).sum::<f64>();
+    if let Some(g) = &c.g {
+        return vec![power(g)];
+    }
+    let rows = c.jacobian.nrows();
+    let first_driver = rows - m.drivers.len();
+    (first_driver..rows)
+        .map(|r| {
+            let e = DVector::from_fn(rows, |k, _| if k == r { 1.0 } else { 0.0 });
+            let g = c.lu.as_ref().and_then(|lu| lu.solve(&e)).or_else(|| solve_linear(&c.jacobian, &e));
+            g.map_or(f64::NAN, |g| power(g.as_slice()))
+        })
+        .collect()
 }
 
 /// Q plus the joints' friction forces, iterated to a fixed point with the reactions.

@@ -13,7 +13,7 @@ pub struct Summary {
     pub rms_driving: Vec<f64>,
     /// Largest reaction force magnitude per joint (None: not computed or indeterminate).
     pub max_reaction: Vec<Option<f64>>,
-    /// max |T_multipliers − T_virtual_power| / max |T| (one input, reactions computed).
+    /// max over the inputs of max |T_multipliers − T_virtual_power| / max |T| (where both are computed).
     pub virtual_power_residual: Option<f64>,
     /// Inputs where Φ_q is near-singular (condition number above [`NEAR_SINGULAR`]).
     pub near_singular: Vec<Vec<f64>>,
@@ -39,14 +39,24 @@ impl Summary {
                     .then(|| rs.iter().map(|r| r.fx.hypot(r.fy)).fold(0.0, f64::max))
             })
             .collect();
-        let scale = max_abs_driving.first().copied().unwrap_or(0.0);
-        let virtual_power_residual = steps
+        // Per input, against that input's largest driving action.
+        let compared: Vec<&Step> = steps
             .iter()
-            .filter(|s| !s.reactions.is_empty())
-            .map(|s| s.driving_virtual_power.map(|v| (v - s.driving[0]).abs()))
-            .collect::<Option<Vec<f64>>>()
-            .filter(|d| !d.is_empty())
-            .map(|d| d.into_iter().fold(0.0, f64::max) / if scale > 0.0 { scale } else { 1.0 });
+            .filter(|s| {
+                s.driving_virtual_power.len() == s.driving.len() && (s.driving.len() > 1 || !s.reactions.is_empty())
+            })
+            .collect();
+        let virtual_power_residual = (!compared.is_empty()).then(|| {
+            (0..n_inputs)
+                .map(|d| {
+                    let scale = if max_abs_driving[d] > 0.0 { max_abs_driving[d] } else { 1.0 };
+                    compared
+                        .iter()
+                        .map(|s| (s.driving_virtual_power[d] - s.driving[d]).abs() / scale)
+                        .fold(0.0, f64::max)
+                })
+                .fold(0.0, f64::max)
+        });
         Self {
             max_abs_driving,
             mean_driving,
