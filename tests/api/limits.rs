@@ -151,3 +151,16 @@ fn a_client_that_sends_its_whole_body_first_reads_the_413() {
     assert!(said.starts_with("413 application/problem+json"), "{said}");
     assert!(said.contains("/problems/payload-too-large"), "{said}");
 }
+
+/// A count of steps far beyond the limit (found by the fuzz test: the
+/// positions were laid out before the count was refused, and 10¹² of them
+/// did not fit in memory) is refused at its field, nothing allocated.
+#[tokio::test]
+async fn a_huge_count_of_steps_is_refused_before_anything_is_laid_out() {
+    let app = TestApp::new().await;
+    let mut body = request("k1_offset_slider_crank");
+    body["input"]["steps"] = 1_000_000_000_000u64.into();
+    let r = app.post("/v1/kinetostatics", &body).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert_eq!(r.json()["errors"][0]["pointer"], "/input/steps", "{}", r.text);
+}

@@ -267,9 +267,13 @@ fn positions(
             linear.push(prismatic);
         }
     }
-    let positions =
-        (0..steps).map(|s| ranges.iter().map(|r: &Range| r.at(s as f64 / steps as f64)).collect()).collect();
-    (drivers, if ranges.len() == inputs.len() { positions } else { Vec::new() }, linear)
+    // Only a valid count of steps is laid out (a count over the limit would not fit in memory).
+    let valid = ranges.len() == inputs.len() && (1..=max).contains(&steps);
+    let positions = match valid {
+        true => (0..steps).map(|s| ranges.iter().map(|r: &Range| r.at(s as f64 / steps as f64)).collect()).collect(),
+        false => Vec::new(),
+    };
+    (drivers, positions, linear)
 }
 
 struct Range {
