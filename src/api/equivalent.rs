@@ -47,7 +47,7 @@ impl create::JobResult for EquivalentResult {}
 /// Masses at the given points with the link's mass, centre of mass and inertia.
 #[utoipa::path(post, path = "/v1/equivalent-masses", operation_id = "create_equivalent_masses_job", tag = "calculators", request_body = EquivalentRequest,
     responses(
-        (status = 201, description = "Job computed and stored; `result` is an EquivalentResult", body = jobs::Job,
+        (status = 201, description = "Job computed and stored; `result` is an EquivalentResult", body = jobs::JobOf<EquivalentResult>,
             headers(("Location" = String, description = "/v1/jobs/{id}"))),
         PostErrors,
     ))]

@@ -97,7 +97,7 @@ impl create::JobResult for TrainResult {}
 /// Speeds of every member (Willis) and the torques that keep it steady (virtual power).
 #[utoipa::path(post, path = "/v1/gears/train", operation_id = "create_gear_train_job", tag = "gears", request_body = TrainRequest,
     responses(
-        (status = 201, description = "Job computed and stored; `result` is a TrainResult", body = jobs::Job,
+        (status = 201, description = "Job computed and stored; `result` is a TrainResult", body = jobs::JobOf<TrainResult>,
             headers(("Location" = String, description = "/v1/jobs/{id}"))),
         PostErrors,
     ))]

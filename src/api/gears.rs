@@ -56,7 +56,7 @@ impl create::JobResult for GearResult {}
 /// Radii (pitch, base, tip, root) and the tooth thickness on any circle.
 #[utoipa::path(post, path = "/v1/gears/geometry", operation_id = "create_gear_geometry_job", tag = "gears", request_body = GearRequest,
     responses(
-        (status = 201, description = "Job computed and stored; `result` is a GearResult", body = jobs::Job,
+        (status = 201, description = "Job computed and stored; `result` is a GearResult", body = jobs::JobOf<GearResult>,
             headers(("Location" = String, description = "/v1/jobs/{id}"))),
         PostErrors,
     ))]

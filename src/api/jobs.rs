@@ -4,7 +4,7 @@
 
 use super::AppState;
 use super::body::{Chunks, guarded};
-use super::problem::{ApiError, FieldError, Problem};
+use super::problem::{ApiError, FieldError, Problem, ReadErrors};
 use crate::store::{JobRow, Page};
 use axum::body::Body;
 use axum::extract::rejection::QueryRejection;
@@ -49,6 +49,25 @@ pub struct Job {
     pub engine_version: String,
 }
 
+/// A job of one kind, for the OpenAPI document (the answer of a POST): its
+/// `result` has that kind's schema. The same fields as [`Job`].
+#[derive(ToSchema)]
+#[allow(dead_code)]
+pub struct JobOf<R> {
+    /// Random UUID.
+    id: String,
+    kind: String,
+    /// RFC 3339, UTC.
+    created_at: String,
+    /// The request body exactly as sent.
+    #[schema(value_type = Object)]
+    request: (),
+    result: R,
+    timing: Timing,
+    /// Version of mechdyn that computed the result.
+    engine_version: String,
+}
+
 /// A page of jobs, newest first.
 #[derive(Serialize, ToSchema)]
 pub struct JobList {
@@ -91,7 +110,7 @@ async fn load(state: &AppState, id: &str, factor: usize) -> Result<(JobRow, Owne
     params(("id" = String, Path, description = "Job id")),
     responses(
         (status = 200, description = "The job", body = Job),
-        (status = 404, description = "No such job", body = Problem, content_type = "application/problem+json"),
+        ReadErrors,
     ))]
 pub async fn get(State(state): State<AppState>, Path(id): Path<String>) -> Result<Response, ApiError> {
     let (row, reserved) = load(&state, &id, 1).await?;
@@ -116,12 +135,19 @@ pub struct ListParams {
     before: Option<i64>,
 }
 
-/// Lists jobs, newest first, a page at a time (shorter than `limit` when its
-/// jobs together would exceed the limit on a result; `next` goes on).
+/// Lists jobs, newest first, a page at a time.
+///
+/// A page is shorter than `limit` when its jobs together would exceed the
+/// limit on a result; `next` then goes on from there.
 #[utoipa::path(get, path = "/v1/jobs", operation_id = "list_jobs", tag = "jobs", params(ListParams),
     responses(
         (status = 200, description = "A page of jobs", body = JobList),
-        (status = 400, description = "Invalid query parameters", body = Problem, content_type = "application/problem+json"),
+        (status = 400, description = "Invalid query parameters", body = Problem, content_type = "application/problem+json",
+            example = json!({"type": "/problems/invalid-query", "title": "Invalid query parameters", "status": 400,
+                "detail": "invalid query parameters", "errors": [{"parameter": "limit", "message": "must be an integer from 1 to 100"}]})),
+        (status = 503, description = "Too many large answers are being sent, or the database is unavailable: retry after `Retry-After` seconds",
+            body = Problem, content_type = "application/problem+json",
+            headers(("Retry-After" = u64, description = "Seconds to wait before retrying"))),
     ))]
 pub async fn list(
     State(state): State<AppState>,
@@ -184,7 +210,7 @@ fn list_params(q: &HashMap<String, String>) -> Result<(Option<String>, i64, Opti
     params(("id" = String, Path, description = "Job id")),
     responses(
         (status = 200, description = "CSV table", body = String, content_type = "text/csv"),
-        (status = 404, description = "No such job", body = Problem, content_type = "application/problem+json"),
+        ReadErrors,
     ))]
 pub async fn csv(State(state): State<AppState>, Path(id): Path<String>) -> Result<Response, ApiError> {
     // The result is read as a JSON tree (several times its text) and written again as CSV.

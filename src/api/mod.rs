@@ -9,6 +9,7 @@ pub mod body;
 pub mod create;
 pub mod dynamics;
 pub mod equivalent;
+pub mod examples;
 pub mod flywheel;
 pub mod gear_train;
 pub mod gears;
@@ -26,6 +27,7 @@ use crate::store::Store;
 pub use admission::{Admission, Capacity};
 use axum::extract::State;
 use axum::http::StatusCode;
+use axum::response::Redirect;
 use axum::routing::{get, post};
 use axum::{Json, Router};
 pub use limits::Limits;
@@ -33,7 +35,7 @@ pub use middleware::Settings;
 use problem::{ApiError, FieldError, Problem};
 use serde::Serialize;
 use utoipa::{OpenApi, ToSchema};
-use utoipa_swagger_ui::SwaggerUi;
+use utoipa_swagger_ui::{Config, SwaggerUi};
 
 /// Shared state of the handlers.
 #[derive(Clone)]
@@ -65,15 +67,19 @@ pub const DEFAULT_BODY_LIMIT: usize = 1 << 20;
         description = "Machine-dynamics calculations: kinetostatics (inverse dynamics) of planar mechanisms, \
 flywheels (approximate and exact Wittenbauer methods), direct dynamics (reduced 1-DOF form or a mechanism of \
 any DOF), rigid rotors on two bearings, and the gear and equivalent-mass calculators of the course; every job \
-is stored and readable later.\n\nQuantities are SI numbers or \"VALUE UNIT\" strings \
-(\"300 rpm\", \"3200 ft*lbf\", \"20 slug*ft^2\"); results are SI. Errors are application/problem+json \
-with a JSON pointer for every invalid field.\n\nLimits (the defaults; the service's operator may configure \
-each, see MECHDYN_* in the README): request body 1 MiB (413 beyond it); expressions 2000 characters and \
-64 levels of nesting; tables 100000 rows; 1000 segments per function; 100000 result samples; 100000 steps \
-per kinetostatics job (422 at the field beyond them); a job's compute budget 20 s (a job over it is stopped \
-and answered 422 /problems/compute-budget). Fixed: 100 torques; 200 bodies and joints and 500 loads per \
-mechanism. When the service has an API token (MECHDYN_API_TOKEN), every POST needs \
-\"Authorization: Bearer <token>\" (401 without it); every answer carries an x-request-id header."
+is stored and readable later.\n\nQuantities are SI numbers or `\"VALUE UNIT\"` strings \
+(`\"300 rpm\"`, `\"3200 ft*lbf\"`, `\"20 slug*ft^2\"`, `\"4 %\"`); results are SI. Errors are \
+`application/problem+json` with a JSON pointer for every invalid field.\n\nLimits (the defaults; the \
+service's operator may configure each, see `MECHDYN_*` in the README): request body 1 MiB (413 beyond it); \
+expressions 2000 characters and 64 levels of nesting; tables 100000 rows; 1000 segments per function; \
+100000 result samples; 100000 steps per kinetostatics job (422 at the field beyond them); a result of \
+16 MiB (422 `/problems/result-too-large`, saying which `steps` or `samples` would fit); a job's compute \
+budget 20 s (a job over it is stopped and answered 422 `/problems/compute-budget`). Fixed: 100 torques; \
+200 bodies and joints and 500 loads per mechanism.\n\nUnder load: as many jobs compute at once as the \
+service has cores, 64 more wait; beyond that a POST is answered 503 `/problems/saturated` with \
+`Retry-After`. A full disk is a 507 `/problems/storage-full` (reads go on). When the service has an API \
+token (`MECHDYN_API_TOKEN`), every POST needs `Authorization: Bearer <token>` (401 without it); every \
+answer carries an `x-request-id` header."
     ),
     paths(flywheel::create, kinetostatics::create, dynamics::create, gears::create, gear_train::create, equivalent::create, rotor::create, jobs::get, jobs::list, jobs::csv, healthz),
     components(schemas(
@@ -99,9 +105,17 @@ mechanism. When the service has an API token (MECHDYN_API_TOKEN), every POST nee
 )]
 pub struct ApiDoc;
 
-/// The OpenAPI document, as served at `/openapi.json`.
+/// The OpenAPI document, as served at `/openapi.json`: the types' schemas,
+/// and every POST's 201 example computed by the engine ([`examples`]).
 pub fn openapi() -> utoipa::openapi::OpenApi {
-    ApiDoc::openapi()
+    static DOC: std::sync::OnceLock<utoipa::openapi::OpenApi> = std::sync::OnceLock::new();
+    DOC.get_or_init(|| {
+        let doc = ApiDoc::openapi();
+        let Ok(mut value) = serde_json::to_value(&doc) else { return doc };
+        examples::add(&mut value);
+        serde_json::from_value(value).unwrap_or(doc)
+    })
+    .clone()
 }
 
 /// The service's router with its middleware ([`middleware::layered`]).
@@ -118,7 +132,13 @@ pub fn router(state: AppState, settings: &Settings) -> Router {
         .route("/v1/jobs/{id}", get(jobs::get))
         .route("/v1/jobs/{id}/result.csv", get(jobs::csv))
         .route(HEALTH_PATH, get(healthz))
-        .merge(SwaggerUi::new("/docs").url("/openapi.json", openapi()))
+        .route("/", get(|| async { Redirect::to("/docs/") }))
+        // The validator would send the document's URL to validator.swagger.io and show a broken image offline.
+        .merge(
+            SwaggerUi::new("/docs")
+                .url("/openapi.json", openapi())
+                .config(Config::new(["/openapi.json"]).validator_url("none")),
+        )
         .fallback(|| async { ApiError::NoRoute })
         .method_not_allowed_fallback(|| async { ApiError::MethodNotAllowed })
         .with_state(state.clone());

@@ -126,7 +126,7 @@ impl create::JobResult for RotorResult {}
 /// The rotor at the requested angles or times.
 #[utoipa::path(post, path = "/v1/rotor", operation_id = "create_rotor_job", tag = "calculators", request_body = RotorRequest,
     responses(
-        (status = 201, description = "Job computed and stored; `result` is a RotorResult", body = jobs::Job,
+        (status = 201, description = "Job computed and stored; `result` is a RotorResult", body = jobs::JobOf<RotorResult>,
             headers(("Location" = String, description = "/v1/jobs/{id}"))),
         PostErrors,
     ))]

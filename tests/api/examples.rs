@@ -35,7 +35,54 @@ async fn every_request_example_is_computed_and_stored() {
         assert_eq!(stored.json()["request"], body, "{path}: the stored request differs");
         let warnings: Vec<&Value> = job["result"]["warnings"].as_array().into_iter().flatten().collect();
         assert!(warnings.is_empty(), "{path}: the example warns {warnings:?}");
+        // The documented 201 shows this very result (its long arrays shortened).
+        let doc = serde_json::to_value(mechdyn::api::openapi()).unwrap();
+        let shown = &doc["paths"][&path]["post"]["responses"]["201"]["content"]["application/json"]["example"];
+        assert_eq!(shown["request"], body, "{path}");
+        assert_eq!(shown["kind"], job["kind"], "{path}");
+        let mut result = job["result"].clone();
+        shorten(&mut result, 3);
+        assert_eq!(shown["result"], result, "{path}: the documented result is not the computed one");
     }
+}
+
+fn shorten(v: &mut Value, keep: usize) {
+    match v {
+        Value::Array(items) => {
+            items.truncate(keep);
+            items.iter_mut().for_each(|i| shorten(i, keep));
+        }
+        Value::Object(map) => map.values_mut().for_each(|i| shorten(i, keep)),
+        _ => {}
+    }
+}
+
+/// Each error status of a POST has an example of its own, of its status.
+#[test]
+fn every_error_status_has_its_own_example() {
+    let doc = serde_json::to_value(mechdyn::api::openapi()).unwrap();
+    let responses = &doc["paths"]["/v1/flywheel"]["post"]["responses"];
+    for status in ["400", "401", "413", "415", "422", "503", "507"] {
+        let example = &responses[status]["content"]["application/problem+json"]["example"];
+        assert_eq!(example["status"].to_string(), status, "{status}: {example}");
+        if let Some(errors) = example["errors"].as_array() {
+            let detail = example["detail"].as_str().unwrap();
+            assert!(detail.starts_with(&errors.len().to_string()), "{detail} lists {} errors", errors.len());
+        }
+    }
+}
+
+/// The root leads to the docs, and the docs ask no outside validator.
+#[tokio::test]
+async fn the_root_leads_to_the_docs_which_need_no_outside_validator() {
+    let app = TestApp::new().await;
+    let root = app.get("/").await;
+    assert!(root.status.is_redirection(), "{}", root.status);
+    assert_eq!(root.headers["location"], "/docs/");
+    let page = app.get("/docs/").await;
+    assert_eq!(page.status, StatusCode::OK);
+    let init = app.get("/docs/swagger-initializer.js").await;
+    assert!(init.text.contains("\"validatorUrl\": \"none\""), "{}", init.text);
 }
 
 /// Client generators name a method after each operationId: they must differ.

@@ -156,7 +156,7 @@ impl create::JobResult for DynamicsResult {
 /// of motion, from the initial state.
 #[utoipa::path(post, path = "/v1/dynamics", operation_id = "create_dynamics_job", tag = "dynamics", request_body = DynamicsRequest,
     responses(
-        (status = 201, description = "Job computed and stored; `result` is a DynamicsResult", body = jobs::Job,
+        (status = 201, description = "Job computed and stored; `result` is a DynamicsResult", body = jobs::JobOf<DynamicsResult>,
             headers(("Location" = String, description = "/v1/jobs/{id}"))),
         PostErrors,
     ))]

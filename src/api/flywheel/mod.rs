@@ -22,7 +22,7 @@ use axum::response::Response;
 /// time simulation.
 #[utoipa::path(post, path = "/v1/flywheel", operation_id = "create_flywheel_job", tag = "flywheel", request_body = FlywheelRequest,
     responses(
-        (status = 201, description = "Job computed and stored; `result` is a FlywheelResult", body = jobs::Job,
+        (status = 201, description = "Job computed and stored; `result` is a FlywheelResult", body = jobs::JobOf<FlywheelResult>,
             headers(("Location" = String, description = "/v1/jobs/{id}"))),
         PostErrors,
     ))]

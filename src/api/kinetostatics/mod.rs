@@ -24,7 +24,7 @@ use axum::response::Response;
 /// every joint reaction, reduced inertia and torque, checked by virtual power.
 #[utoipa::path(post, path = "/v1/kinetostatics", operation_id = "create_kinetostatics_job", tag = "kinetostatics", request_body = KinetostaticsRequest,
     responses(
-        (status = 201, description = "Job computed and stored; `result` is a KinetostaticsResult", body = jobs::Job,
+        (status = 201, description = "Job computed and stored; `result` is a KinetostaticsResult", body = jobs::JobOf<KinetostaticsResult>,
             headers(("Location" = String, description = "/v1/jobs/{id}"))),
         PostErrors,
     ))]
