@@ -116,6 +116,7 @@ pub fn compute(request: &TrainRequest, unknown: Vec<FieldError>) -> Result<Train
         let at = match e {
             TrainError::Speeds { .. } | TrainError::Inconsistent { .. } => "/speeds",
             TrainError::Torques { .. } | TrainError::TorquesSingular => "/unknown_torques",
+            TrainError::Degenerate => "/meshes",
         };
         ApiError::Invalid(vec![FieldError::at(at, e.to_string())])
     })?;

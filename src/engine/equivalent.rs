@@ -6,6 +6,7 @@
 //! Σm_i |r_i|² = I_G. For a bar with masses at its ends A, B and at G:
 //! m_A = I_G/(l·r_A), m_B = I_G/(l·r_B), m_G = m − I_G/(r_A r_B).
 
+use super::numeric::svd::svd;
 use nalgebra::{DMatrix, DVector};
 
 /// The masses found, and how well and how uniquely they satisfy the conditions.
@@ -28,7 +29,10 @@ pub fn equivalent_masses(mass: f64, inertia: f64, points: &[[f64; 2]]) -> Equiva
         [1.0, p[0], p[1], p[0] * p[0] + p[1] * p[1]][r]
     });
     let b = DVector::from_column_slice(&[mass, 0.0, 0.0, inertia]);
-    let svd = a.clone().svd(true, true);
+    // The API passes finite values only; a decomposition that fails leaves no masses.
+    let Some(svd) = svd(a.clone(), true, true) else {
+        return Equivalent { masses: vec![0.0; n], residual: f64::INFINITY, unique: false };
+    };
     let tol = 1e-12 * svd.singular_values.max().max(f64::MIN_POSITIVE);
     let rank = svd.singular_values.iter().filter(|s| **s > tol).count();
     let x = svd.solve(&b, tol).unwrap_or_else(|_| DVector::zeros(n));

@@ -16,6 +16,7 @@
 //! A is a virtual motion, and Σ T_i ω*_i = 0 for each gives the unknown
 //! external torques T.
 
+use super::numeric::svd::svd;
 use nalgebra::{DMatrix, DVector};
 
 /// One mesh between two wheels.
@@ -63,6 +64,8 @@ pub enum TrainError {
     Torques { dof: usize, asked: usize },
     #[error("the unknown torques cannot be found: those members do not take independent power")]
     TorquesSingular,
+    #[error("the train's numbers overflow (teeth, ratios or speeds too large to compute with)")]
+    Degenerate,
 }
 
 impl Train {
@@ -94,7 +97,7 @@ impl Train {
     ) -> Result<TrainSolution, TrainError> {
         let a = self.matrix();
         let n = a.ncols();
-        let svd = a.clone().svd(false, true);
+        let svd = svd(a.clone(), false, true).ok_or(TrainError::Degenerate)?;
         let scale = svd.singular_values.max().max(1.0);
         let rank = svd.singular_values.iter().filter(|s| **s > 1e-10 * scale).count();
         let dof = n - rank;
@@ -104,7 +107,7 @@ impl Train {
             torques[*m] += t;
         }
         if !unknown.is_empty() {
-            self.torques(&null_space(&a, rank), unknown, &mut torques)?;
+            self.torques(&null_space(&a, rank).ok_or(TrainError::Degenerate)?, unknown, &mut torques)?;
         }
         let powers: Vec<f64> = torques.iter().zip(&speeds).map(|(t, w)| t * w).collect();
         let largest = powers.iter().fold(0.0f64, |m, p| m.max(p.abs()));
@@ -123,7 +126,7 @@ impl Train {
             rhs[a.nrows() + k] = *w;
         }
         let fail = TrainError::Speeds { dof, given: given.len() };
-        let svd = m.clone().svd(true, true);
+        let svd = svd(m.clone(), true, true).ok_or(TrainError::Degenerate)?;
         let scale = svd.singular_values.max().max(1.0);
         if svd.singular_values.iter().filter(|s| **s > 1e-10 * scale).count() < n {
             return Err(fail);
@@ -157,12 +160,12 @@ impl Train {
 /// An orthonormal basis of the null space of A (n × (n − rank)): the rows
 /// of Vᵀ past the rank (nalgebra sorts the singular values, largest first);
 /// A is padded with zero rows so that the SVD gives all n of them.
-fn null_space(a: &DMatrix<f64>, rank: usize) -> DMatrix<f64> {
+fn null_space(a: &DMatrix<f64>, rank: usize) -> Option<DMatrix<f64>> {
     let n = a.ncols();
     let mut square = DMatrix::zeros(n.max(a.nrows()), n);
     square.rows_mut(0, a.nrows()).copy_from(a);
-    let v_t = square.svd(false, true).v_t.expect("V requested");
-    DMatrix::from_fn(n, n - rank, |i, k| v_t[(rank + k, i)])
+    let v_t = svd(square, false, true)?.v_t?;
+    Some(DMatrix::from_fn(n, n - rank, |i, k| v_t[(rank + k, i)]))
 }
 
 #[cfg(test)]

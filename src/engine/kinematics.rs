@@ -8,6 +8,7 @@
 use super::constraints::{State, System, evaluate, joint_offsets, nu};
 use super::mobility::mobility;
 use super::model::Mechanism;
+use super::numeric::svd::{singular_values, svd};
 use super::{Deadline, EngineError};
 use nalgebra::{DMatrix, DVector, Dyn, LU};
 
@@ -48,7 +49,10 @@ pub fn solve_linear(a: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> 
     {
         return Some(x);
     }
-    let svd = a.clone().svd(true, true);
+    if !b.iter().all(|v| v.is_finite()) {
+        return None;
+    }
+    let svd = svd(a.clone(), true, true)?;
     let tol = 1e-12 * svd.singular_values.max();
     svd.solve(b, tol).ok()
 }
@@ -64,7 +68,7 @@ pub fn solve_transposed(lu: &LU<f64, Dyn, Dyn>, b: &DVector<f64>) -> Option<DVec
 
 /// 2-norm condition number σ_max/σ_min of a matrix with at least as many rows as columns.
 pub fn condition(a: &DMatrix<f64>) -> f64 {
-    let s = a.singular_values();
+    let Some(s) = singular_values(a) else { return f64::INFINITY };
     let (max, min) = (s.max(), s.min());
     if min > 0.0 { max / min } else { f64::INFINITY }
 }
@@ -250,6 +254,15 @@ fn approach(m: &Mechanism, q: &mut [f64], target: &[[f64; 3]]) -> Result<(), Eng
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A system holding NaN (a state gone bad) has no solution and returns at
+    /// once: nalgebra's own SVD never returns on it.
+    #[test]
+    fn a_system_with_nan_is_unsolvable_not_endless() {
+        let a = DMatrix::from_row_slice(3, 2, &[1.0, 0.0, f64::NAN, 1.0, 0.0, 2.0]);
+        assert!(solve_linear(&a, &DVector::from_element(3, 1.0)).is_none());
+        assert_eq!(condition(&a), f64::INFINITY);
+    }
 
     /// The transposed solve from A's factors equals a solve with Aᵀ's own
     /// (a 7×7 matrix with zeros on the diagonal, so rows are exchanged).

@@ -9,6 +9,7 @@
 
 use super::constraints::{State, evaluate, joint_offsets};
 use super::model::{Grubler, Mechanism};
+use super::numeric::svd::singular_values;
 use nalgebra::DMatrix;
 
 /// Relative size below which a singular value counts as zero.
@@ -27,7 +28,8 @@ fn rank(a: &DMatrix<f64>) -> usize {
     if a.nrows() == 0 || a.ncols() == 0 {
         return 0;
     }
-    let s = a.singular_values();
+    // A Jacobian that is not finite has no rank worth the name: none.
+    let Some(s) = singular_values(a) else { return 0 };
     let tol = RANK_TOLERANCE * s.max();
     s.iter().filter(|v| **v > tol).count()
 }

@@ -132,3 +132,22 @@ async fn a_quantity_longer_than_its_schema_allows_is_refused_at_its_field() {
     body["reduced_inertia"] = json!(format!("{} kg*m^2", "0".repeat(200)));
     assert_eq!(app.flywheel_422(&body).await[0].0, "/reduced_inertia");
 }
+
+/// An irregularity at the edge of double precision (1e-308, found by the
+/// fuzz test) overflows the inertia. Before, the NaN went on into the time
+/// check, where one SVD of a NaN Jacobian never returned; now the answer is
+/// a 422 at once. (A watchdog fails the test instead of hanging it.)
+#[test]
+fn an_irregularity_that_overflows_the_inertia_is_refused_not_hung() {
+    let (done, answer) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let mut body = request("p103_slider_machine");
+        body["irregularity"] = json!(1e-308);
+        let b = mechdyn::api::json::parse::<mechdyn::api::flywheel::FlywheelRequest>(body.to_string()).unwrap();
+        let _ = done.send(mechdyn::api::flywheel::compute(&b.value, b.unknown).map(|_| ()).map_err(|e| e.problem()));
+    });
+    let outcome = answer.recv_timeout(std::time::Duration::from_secs(120)).expect("answered, not hung");
+    let problem = outcome.expect_err("refused");
+    assert_eq!(problem.status, 422);
+    assert!(problem.errors[0].message.contains("non-finite"), "{problem:?}");
+}

@@ -23,6 +23,7 @@
 //! cheaply, whether any singular value can be that small; the SVD runs
 //! only then.
 
+use crate::engine::numeric::svd::svd;
 use nalgebra::{DMatrix, DVector};
 
 /// Relative singular value below which a combination of rows is held.
@@ -62,8 +63,11 @@ impl Rows {
         }
         // Left singular vectors: the thin SVD has them for every non-zero σ
         // (with more rows than coordinates the missing ones have σ = 0).
-        let svd = scaled.svd(true, false);
-        let (u, sigma) = (svd.u.expect("asked for U"), svd.singular_values);
+        // A Jacobian that is not finite (a state gone to NaN): keep every row, and the
+        // solve's NaN rejects the step.
+        let Some((Some(u), sigma)) = svd(scaled, true, false).map(|s| (s.u, s.singular_values)) else {
+            return Self::All;
+        };
         let top = sigma.max();
         let keep: Vec<usize> = (0..sigma.len()).filter(|&i| sigma[i] >= TAU * top).collect();
         let held: Vec<usize> =

@@ -63,6 +63,11 @@ fn phases(
     next("finding the exact inertia")?;
     let ex = exact(&cycle, &samples, &lobes, eps, omega_a);
     let inertia_approximate = lobes.energy_fluctuation / (eps * omega_a * omega_a);
+    // An irregularity or speed at the edge of double precision (ε = 1e-308) overflows
+    // the inertia: said here, not carried into the time check.
+    if !(inertia_approximate.is_finite() && ex.inertia.is_finite()) {
+        return Err(EngineError::NotFiniteResult);
+    }
     let flywheel = |i: f64| (i - p.existing_inertia) / (p.flywheel_ratio * p.flywheel_ratio);
     let flywheel_inertia = Pair { approximate: flywheel(inertia_approximate), exact: flywheel(ex.inertia) };
     let speed = SpeedLaw { cycle: &cycle, ex: &ex, omega_a };

@@ -1,6 +1,7 @@
 //! Numerical building blocks with no mechanics in them: quadrature, root
-//! finding and ODE integration.
+//! finding, ODE integration, and an SVD that always returns.
 
 pub mod ode;
 pub mod quadrature;
 pub mod roots;
+pub mod svd;
