@@ -1,14 +1,19 @@
-//! Bounded soak: `cargo bench --bench soak` (SOAK_SECONDS, default 180).
-//! The release service on a fresh SQLite file, 64 connections of `wrk` on
-//! loopback sending a mix of every job kind and reads for the whole run,
-//! its resident memory sampled every 5 s. Writes docs/SOAK.md: throughput,
-//! latency, non-2xx answers and socket errors, panics and "database is
-//! locked" in the service's log, and memory at start, after warm-up, at the
-//! end and at its peak. No assertions: benchmarks are not tests.
+//! Bounded soak: `cargo bench --bench soak` (SOAK_SECONDS, default 180;
+//! FLOOD_SECONDS, default 90). The release service on a fresh SQLite file,
+//! 64 connections of `wrk` on loopback sending a mix of every job kind and
+//! reads for the whole run, its resident memory sampled every 5 s; then the
+//! flood (`soak/flood.rs`): on a fresh service, the largest jobs the limits
+//! allow from 64 and from 256 connections. Writes docs/SOAK.md: throughput,
+//! latency, answers by status and socket errors, panics and "database is
+//! locked" in the service's log, and memory over time and at its peak. No
+//! assertions: benchmarks are not tests.
 
 #[allow(dead_code)]
 #[path = "work_precision/http.rs"]
 mod http;
+
+#[path = "soak/flood.rs"]
+mod flood;
 
 use serde_json::Value;
 use std::fmt::Write as _;
@@ -85,11 +90,33 @@ fn main() {
     let text = String::from_utf8_lossy(&out.stdout).into_owned();
     let (end, peak) = service.memory();
     let log = service.log();
-    let report = report(seconds, &text, idle, &samples, end, peak, &log);
+    drop(service);
+    let report = report(seconds, &text, idle, &samples, end, peak, &log) + &flood_report();
     println!("{report}");
     let path = format!("{}/docs/SOAK.md", env!("CARGO_MANIFEST_DIR"));
     std::fs::write(&path, report).expect("write docs/SOAK.md");
     println!("wrote {path}");
+}
+
+/// The flood at 64 and 256 connections, on a fresh service.
+fn flood_report() -> String {
+    let seconds: u64 = std::env::var("FLOOD_SECONDS").ok().and_then(|s| s.parse().ok()).unwrap_or(90);
+    let service = http::start().expect("the service starts");
+    let (requests, said) = flood::requests(&service.addr, fixture);
+    let mut s = format!(
+        "\n## Flood of the largest jobs\n\nOn a fresh service with the default limits (16 MiB per result, as many \
+         jobs computing as cores, 64 waiting, 256 MiB of answers in flight), `wrk` sends in turn the largest jobs \
+         of three kinds and reads of large results, first from 64 connections (the queue holds them all), then \
+         from 256 (beyond jobs + queue: the rest are refused 503 with Retry-After at once). The bound to meet: \
+         resident memory at most 1 GiB; every answer a 201, a 200 or a 503 with Retry-After.\n\n{said}"
+    );
+    for connections in [64, 256] {
+        s += &flood::run(&service, &requests, connections, seconds);
+    }
+    let log = service.log();
+    let count = |needle: &str| log.lines().filter(|l| l.contains(needle)).count();
+    let _ = writeln!(s, "Panics in the log: {}; errors in the log: {}.", count("panicked"), count("ERROR"));
+    s
 }
 
 /// Resident memory gained over each quarter of the run, MiB: flat memory
