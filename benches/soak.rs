@@ -105,7 +105,7 @@ fn flood_report() -> String {
     let (requests, said) = flood::requests(&service.addr, fixture);
     let mut s = format!(
         "\n## Flood of the largest jobs\n\nOn a fresh service with the default limits (16 MiB per result, as many \
-         jobs computing as cores, 64 waiting, 256 MiB of answers in flight), `wrk` sends in turn the largest jobs \
+         jobs computing as cores, 64 waiting, 128 MiB of answers in flight), `wrk` sends in turn the largest jobs \
          of three kinds and reads of large results, first from 64 connections (the queue holds them all), then \
          from 256 (beyond jobs + queue: the rest are refused 503 with Retry-After at once). The bound to meet: \
          resident memory at most 1 GiB; every answer a 201, a 200 or a 503 with Retry-After.\n\n{said}"

@@ -8,6 +8,13 @@ use std::io::{IsTerminal, Read, Write};
 use std::process::ExitCode;
 use tracing_subscriber::EnvFilter;
 
+/// mimalloc returns freed memory to the system soon after; glibc's malloc
+/// keeps it in per-thread arenas (up to 64 MiB each), and a flood of the
+/// largest jobs held 1.5 GiB resident for a live set under half that
+/// (docs/SOAK.md: 0.79 GiB peak with mimalloc).
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match &cli.command {

@@ -36,9 +36,15 @@ fn exchange(addr: &str, method: &str, path: &str, body: &str) -> (u16, String) {
     (status, text.split_once("\r\n\r\n").map_or(String::new(), |(_, b)| b.to_string()))
 }
 
+/// Sets the member at `pointer` (its parent object exists).
+fn set(body: &mut Value, pointer: &str, value: u64) {
+    let (parent, key) = pointer.rsplit_once('/').expect("a pointer");
+    body.pointer_mut(parent).and_then(Value::as_object_mut).expect("its parent").insert(key.into(), value.into());
+}
+
 /// `body` with the count at `pointer` set to the largest the service accepts.
 fn largest(addr: &str, path: &str, mut body: Value, pointer: &str) -> (Value, String) {
-    *body.pointer_mut(pointer).expect("count field") = 100_000.into();
+    set(&mut body, pointer, 100_000);
     let (status, text) = exchange(addr, "POST", path, &body.to_string());
     if status == 422 {
         let problem: Value = serde_json::from_str(&text).unwrap_or_default();
@@ -49,7 +55,7 @@ fn largest(addr: &str, path: &str, mut body: Value, pointer: &str) -> (Value, St
             .nth(1)
             .and_then(|m| m.split(|c: char| !c.is_ascii_digit()).next()?.parse::<u64>().ok())
             .unwrap_or(1000);
-        *body.pointer_mut(pointer).expect("count field") = fit.into();
+        set(&mut body, pointer, fit);
     }
     let (status, text) = exchange(addr, "POST", path, &body.to_string());
     let size = serde_json::from_str::<Value>(&text).map_or(0, |job| job["result"].to_string().len());

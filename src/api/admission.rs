@@ -39,7 +39,7 @@ impl Default for Capacity {
         Self {
             jobs: std::thread::available_parallelism().map_or(2, |n| n.get()),
             queue: 64,
-            memory: 256 << 20,
+            memory: 128 << 20,
             wait: Duration::from_secs(10),
         }
     }

@@ -79,7 +79,11 @@ where
 fn serialized<R: JobResult>(result: &R, limit: usize) -> Result<Bytes, ApiError> {
     let mut out = Bounded { buf: Vec::new(), limit };
     match serde_json::to_writer(&mut out, result) {
-        Ok(()) => Ok(out.buf.into()),
+        Ok(()) => {
+            // The buffer grew by doubling: give back the unused half before it is held in flight.
+            out.buf.shrink_to_fit();
+            Ok(out.buf.into())
+        }
         Err(e) if e.is_io() => {
             drop(out);
             Err(too_large(json_len(result), limit, result.rows(), false))

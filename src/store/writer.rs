@@ -1,6 +1,6 @@
-//! The group-commit writer: every job waiting on the channel (up to
-//! [`MAX_BATCH`]) goes into one multi-row INSERT; each caller gets its seq
-//! once that has committed, or the error.
+//! The group-commit writer: the jobs waiting on the channel (up to
+//! [`MAX_BATCH`] of them and [`MAX_BATCH_BYTES`]) go into one multi-row
+//! INSERT; each caller gets its seq once that has committed, or the error.
 //!
 //! When the batch fails because the storage is full, every job in it fails
 //! with [`StoreError::Full`] (nothing was written; the next batch tries
@@ -20,6 +20,10 @@ use tokio::sync::mpsc;
 
 /// Most jobs in one transaction.
 const MAX_BATCH: usize = 256;
+/// Most bytes of jobs in one statement (one job at least): binding copies
+/// each value twice (sqlx, then SQLite), so twelve 16 MB results waiting
+/// together cost 400 MB of copies in one statement.
+const MAX_BATCH_BYTES: usize = 32 << 20;
 /// Jobs waiting for the writer before callers wait to hand theirs over.
 pub const QUEUE: usize = 4096;
 
@@ -27,26 +31,45 @@ const INSERT: &str = "INSERT INTO jobs (id, kind, created_at, request, result, e
                       VALUES (?, ?, ?, ?, ?, ?, ?, ?)";
 
 pub async fn write_batches(pool: SqlitePool, mut queue: mpsc::Receiver<Pending>, commits: Arc<AtomicU64>) {
-    let mut batch = Vec::with_capacity(MAX_BATCH);
-    while queue.recv_many(&mut batch, MAX_BATCH).await > 0 {
-        let outcome = match insert_together(&pool, &batch).await {
-            Ok(seqs) => Ok(seqs.into_iter().map(Ok).collect()),
-            Err(StoreError::Full) => Err(StoreError::Full),
-            // One bad row fails the whole statement: insert them one by one.
-            Err(_) => insert_all(&pool, &batch).await,
-        };
-        match outcome {
-            Ok(seqs) => {
-                commits.fetch_add(1, Ordering::Relaxed);
-                for ((_, reply), seq) in batch.drain(..).zip(seqs) {
-                    let _ = reply.send(seq);
-                }
+    let mut waiting = Vec::with_capacity(MAX_BATCH);
+    while queue.recv_many(&mut waiting, MAX_BATCH).await > 0 {
+        while !waiting.is_empty() {
+            let take = within_bytes(&waiting);
+            let batch: Vec<Pending> = waiting.drain(..take).collect();
+            write(&pool, batch, &commits).await;
+        }
+    }
+}
+
+/// How many of the first jobs fit in [`MAX_BATCH_BYTES`] (one at least).
+fn within_bytes(jobs: &[Pending]) -> usize {
+    let mut total = 0;
+    let fit = jobs.iter().take_while(|(j, _)| {
+        total += j.bytes();
+        total <= MAX_BATCH_BYTES
+    });
+    fit.count().max(1)
+}
+
+/// One batch in one transaction; each caller answered.
+async fn write(pool: &SqlitePool, batch: Vec<Pending>, commits: &AtomicU64) {
+    let outcome = match insert_together(pool, &batch).await {
+        Ok(seqs) => Ok(seqs.into_iter().map(Ok).collect()),
+        Err(StoreError::Full) => Err(StoreError::Full),
+        // One bad row fails the whole statement: insert them one by one.
+        Err(_) => insert_all(pool, &batch).await,
+    };
+    match outcome {
+        Ok(seqs) => {
+            commits.fetch_add(1, Ordering::Relaxed);
+            for ((_, reply), seq) in batch.into_iter().zip(seqs) {
+                let _ = reply.send(seq);
             }
-            Err(e) => {
-                tracing::warn!(error = %e, jobs = batch.len(), "jobs not stored");
-                for (_, reply) in batch.drain(..) {
-                    let _ = reply.send(Err(e.clone()));
-                }
+        }
+        Err(e) => {
+            tracing::warn!(error = %e, jobs = batch.len(), "jobs not stored");
+            for (_, reply) in batch {
+                let _ = reply.send(Err(e.clone()));
             }
         }
     }
