@@ -61,6 +61,9 @@ pub struct Cli {
     /// Jobs waiting to compute; beyond them a POST is answered 503 with Retry-After.
     #[arg(long, env = "MECHDYN_QUEUE", default_value_t = Capacity::default().queue, global = true)]
     pub queue: usize,
+    /// Longest wait in the queue for a job to start computing, seconds (then 503 with Retry-After).
+    #[arg(long, env = "MECHDYN_QUEUE_SECONDS", default_value_t = Capacity::default().queue_wait.as_secs_f64(), value_parser = positive_seconds, global = true)]
+    pub queue_seconds: f64,
     /// Bytes of answers carrying jobs held in memory at once (at least the largest result plus the largest body).
     #[arg(long, env = "MECHDYN_ANSWER_MEMORY_BYTES", default_value_t = Capacity::default().memory, value_parser = at_least_one, global = true)]
     pub answer_memory_bytes: usize,
@@ -94,7 +97,13 @@ impl Cli {
                 self.answer_memory_bytes
             ));
         }
-        Ok(Capacity { jobs: self.jobs, queue: self.queue, memory: self.answer_memory_bytes, ..Capacity::default() })
+        Ok(Capacity {
+            jobs: self.jobs,
+            queue: self.queue,
+            memory: self.answer_memory_bytes,
+            queue_wait: Duration::from_secs_f64(self.queue_seconds),
+            ..Capacity::default()
+        })
     }
 }
 

@@ -6,11 +6,14 @@
 //!   request bodies held (slots × body limit).
 //! - **Compute** (`jobs`, default the number of cores): a job computes, and
 //!   its result is serialised, only while it holds one; the others wait in
-//!   the queue. This bounds the engine's working sets.
+//!   the queue, at most `queue_wait` (then 503). This bounds the engine's
+//!   working sets, and how long a client waits for a job to start.
 //! - **Memory** (`memory` bytes): every answer that carries a job (a POST's,
 //!   a read, a page of the list, a CSV) reserves its size before it is built
 //!   or loaded and keeps it until it has been sent. Waiting longer than
-//!   `wait` for it is a 503 with `Retry-After`.
+//!   `wait` for it is a 503 with `Retry-After`. A POST reserves the largest
+//!   result before it computes, and keeps only what its result takes after:
+//!   a job never computes to be refused for want of memory.
 //!
 //! `Retry-After` is the time the jobs ahead would take at the recent mean
 //! time per job (an exponential average), at least 1 s.
@@ -32,6 +35,8 @@ pub struct Capacity {
     pub memory: usize,
     /// Longest wait for memory before a 503.
     pub wait: Duration,
+    /// Longest wait in the queue for a job to start computing before a 503.
+    pub queue_wait: Duration,
 }
 
 impl Default for Capacity {
@@ -41,6 +46,7 @@ impl Default for Capacity {
             queue: 64,
             memory: 128 << 20,
             wait: Duration::from_secs(10),
+            queue_wait: Duration::from_secs(30),
         }
     }
 }
@@ -82,9 +88,13 @@ impl Admission {
         self.slots.clone().try_acquire_owned().ok()
     }
 
-    /// The right to compute, once a job ahead has finished.
+    /// The right to compute, once a job ahead has finished (waiting at most `queue_wait`).
     pub async fn compute(&self) -> Result<OwnedSemaphorePermit, ApiError> {
-        self.compute.clone().acquire_owned().await.map_err(|_| self.saturated("the service is stopping"))
+        match tokio::time::timeout(self.capacity.queue_wait, self.compute.clone().acquire_owned()).await {
+            Ok(Ok(permit)) => Ok(permit),
+            Ok(Err(_)) => Err(self.saturated("the service is stopping")),
+            Err(_) => Err(self.saturated("the jobs ahead in the queue did not finish in time")),
+        }
     }
 
     /// Reserves `bytes` of answer memory (at most the whole budget), waiting

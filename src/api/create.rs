@@ -47,6 +47,9 @@ where
 {
     let computing = state.admission.compute().await?;
     let limit = state.limits.result_bytes;
+    // The largest result is reserved before computing, so that no job is
+    // computed only to be refused for want of memory; the spare is given back.
+    let mut reserved = state.admission.memory(limit.saturating_add(request.len())).await?;
     let (result, elapsed) = tokio::task::spawn_blocking(move || {
         let start = Instant::now();
         let r = compute();
@@ -65,7 +68,9 @@ where
         engine_us: i64::try_from(elapsed.as_micros()).unwrap_or(i64::MAX),
         engine_version: env!("CARGO_PKG_VERSION").into(),
     };
-    let reserved = state.admission.memory(job.bytes()).await?;
+    if let Some(spare) = reserved.num_permits().checked_sub(job.bytes()).and_then(|n| reserved.split(n)) {
+        drop(spare);
+    }
     drop(computing);
     let row = state.store.insert(job).await?;
     let mut body = Chunks::default();

@@ -118,19 +118,7 @@ async fn invalid_mechanisms_are_named_field_by_field() {
 #[tokio::test]
 async fn a_non_grashof_crank_asked_for_a_full_turn_is_422() {
     let app = TestApp::new().await;
-    let body = json!({
-        "mechanism": {
-            "points": {"O2": [0, 0], "O4": [1, 0], "A": [0.6, 0], "B": [1.1, 0.24f64.sqrt()]},
-            "bodies": [{"name": "crank"}, {"name": "coupler"}, {"name": "rocker"}],
-            "joints": [
-                {"name": "O2", "type": "revolute", "bodies": ["ground", "crank"], "at": "O2"},
-                {"name": "A", "type": "revolute", "bodies": ["crank", "coupler"], "at": "A"},
-                {"name": "B", "type": "revolute", "bodies": ["coupler", "rocker"], "at": "B"},
-                {"name": "O4", "type": "revolute", "bodies": ["rocker", "ground"], "at": "O4"}
-            ]
-        },
-        "input": {"joint": "O2", "speed": "60 rpm", "steps": 360}
-    });
+    let body = crate::student::non_grashof(json!({"joint": "O2", "speed": "60 rpm", "steps": 360}));
     let r = app.post("/v1/kinetostatics", &body).await;
     assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
     let e = &r.json()["errors"][0];

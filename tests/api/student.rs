@@ -7,9 +7,10 @@ use crate::helpers::{TestApp, request};
 use axum::http::StatusCode;
 use serde_json::{Value, json};
 
-/// A non-Grashof four-bar (s + l = 0.5 + 1.0 > p + q = 0.6 + 0.7; the one of
-/// tests/api/kinetostatics.rs): its crank cannot reach 180°.
-fn non_grashof(input: Value) -> Value {
+/// A non-Grashof four-bar (s + l = 0.5 + 1.0 > p + q = 0.6 + 0.7): its crank
+/// cannot turn fully. Geometry: O2 (0, 0), O4 (1, 0), A (0.6, 0),
+/// B = (1.1, √0.24) so that AB = 0.7 and O4B = 0.5.
+pub fn non_grashof(input: Value) -> Value {
     json!({
         "mechanism": {
             "points": {"O2": [0, 0], "O4": [1, 0], "A": [0.6, 0], "B": [1.1, 0.24f64.sqrt()]},
