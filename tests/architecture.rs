@@ -39,6 +39,44 @@ fn the_engine_is_pure() {
     }
 }
 
+/// Every schema of the OpenAPI document has a name of its own: utoipa names
+/// a component after its type (or its `as = ...`), and two types of one
+/// name silently share one schema (the flywheel's samples were documented
+/// as the dynamics' ones).
+#[test]
+fn no_two_schemas_share_a_name() {
+    let mut files = Vec::new();
+    rust_files(&root().join("src/api"), &mut files);
+    let mut names: Vec<(String, String)> = Vec::new();
+    for file in files {
+        let text = std::fs::read_to_string(&file).unwrap();
+        let lines: Vec<&str> = text.lines().collect();
+        for (n, line) in lines.iter().enumerate() {
+            if !(line.contains("derive(") && line.contains("ToSchema")) {
+                continue;
+            }
+            let after = &lines[n + 1..lines.len().min(n + 12)];
+            let renamed = after
+                .iter()
+                .take_while(|l| l.trim_start().starts_with("#["))
+                .find_map(|l| l.split("as = ").nth(1).map(|r| r.trim_end_matches([')', ']']).to_string()));
+            let declared = after.iter().find_map(|l| {
+                let rest =
+                    l.trim_start().strip_prefix("pub struct ").or_else(|| l.trim_start().strip_prefix("pub enum "))?;
+                Some(rest.split(|c: char| !c.is_alphanumeric() && c != '_').next()?.to_string())
+            });
+            if let Some(name) = renamed.or(declared) {
+                names.push((name, format!("{}:{}", file.display(), n + 1)));
+            }
+        }
+    }
+    names.sort();
+    for pair in names.windows(2) {
+        assert_ne!(pair[0].0, pair[1].0, "two schemas named {}: {} and {}", pair[0].0, pair[0].1, pair[1].1);
+    }
+    assert!(names.len() > 30, "found only {} schemas", names.len());
+}
+
 /// The committed OpenAPI document is the one the code generates.
 /// Regenerate with `cargo run -- openapi > openapi/openapi.json`.
 #[test]

@@ -60,6 +60,11 @@ pub async fn create(State(state): State<AppState>, body: JsonBody<EquivalentRequ
 pub fn compute(request: &EquivalentRequest, unknown: Vec<FieldError>) -> Result<EquivalentResult, ApiError> {
     let (mass, inertia, points) = validated(unknown, request.validate())?;
     let e = equivalent_masses(mass, inertia, &points);
+    if !(e.residual.is_finite() && e.masses.iter().all(|m| m.is_finite())) {
+        let message =
+            "the points are too far from G to compute with (their squared distances overflow double precision)";
+        return Err(ApiError::Invalid(vec![FieldError::at("/points", message)]));
+    }
     let complete = e.residual <= 1e-9;
     let mut warnings = Vec::new();
     if !complete {

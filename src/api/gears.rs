@@ -69,11 +69,24 @@ pub async fn create(State(state): State<AppState>, body: JsonBody<GearRequest>) 
 pub fn compute(request: &GearRequest, unknown: Vec<FieldError>) -> Result<GearResult, ApiError> {
     let (gear, radius) = validated(unknown, request.to_gear())?;
     let radii = gear.radii();
+    // A module near the largest double (1e308) overflows the radii: refused, not answered as nulls.
+    let overflow = |v: f64| !(v.is_finite() && (v * 4.0).is_finite());
+    if [radii.pitch, radii.base, radii.tip, radii.root].into_iter().any(overflow) {
+        let message = format!("a module of {} m overflows the gear's radii (beyond double precision)", gear.module);
+        return Err(ApiError::Invalid(vec![FieldError::at("/module", message)]));
+    }
     let at = radius.unwrap_or(radii.tip);
     let Some(t) = gear.thickness_at(at) else {
         let message = format!("{at} m is inside the base circle ({} m): there is no involute there", radii.base);
         return Err(ApiError::Invalid(vec![FieldError::at(if radius.is_some() { "/radius" } else { "" }, message)]));
     };
+    if ![t.radius, t.thickness, t.pressure_angle].into_iter().all(f64::is_finite) {
+        let message = format!("the thickness at {at} m cannot be computed in double precision");
+        return Err(ApiError::Invalid(vec![FieldError::at(
+            if radius.is_some() { "/radius" } else { "/module" },
+            message,
+        )]));
+    }
     let warnings = if t.thickness <= 0.0 {
         vec![format!("the tooth is pointed before {at} m: its thickness there would be {:.6e} m", t.thickness)]
     } else {

@@ -1,4 +1,4 @@
-//! Gear calculators through the HTTP API.
+//! Gear calculators (and the equivalent-masses calculator) through the HTTP API.
 
 use crate::helpers::{TestApp, case, close, example};
 use axum::http::StatusCode;
@@ -87,4 +87,24 @@ async fn k5_differential_train_speeds_and_torques() {
     typo["meshes"][1]["carrier"] = json!("carrier");
     let r = app.post("/v1/gears/train", &typo).await;
     assert_eq!(r.json()["errors"][0]["pointer"], "/meshes/1/carrier", "{}", r.text);
+}
+
+/// A module near the largest double (found by schemathesis: 1.49e308 m)
+/// overflows the radii: a 422 at /module, never a 201 holding nulls.
+#[tokio::test]
+async fn a_module_that_overflows_the_radii_is_refused() {
+    let app = TestApp::new().await;
+    let r = app.post("/v1/gears/geometry", &serde_json::json!({"module": 1.487557489289481e308, "teeth": 1.0})).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert_eq!(r.json()["errors"][0]["pointer"], "/module");
+}
+
+/// Points 1e200 m from G square to infinity: a 422 at /points, never nulls.
+#[tokio::test]
+async fn equivalent_masses_at_overflowing_distances_are_refused() {
+    let app = TestApp::new().await;
+    let body = json!({"mass": 3, "inertia": 0.09, "cg": [0, 0], "points": {"A": [1e200, 0], "B": [-1e200, 0]}});
+    let r = app.post("/v1/equivalent-masses", &body).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert_eq!(r.json()["errors"][0]["pointer"], "/points");
 }

@@ -86,7 +86,9 @@ pub struct Initial {
     pub speed: Option<Quantity>,
 }
 
+/// One sample of the motion.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[schema(as = DynamicsSample)]
 pub struct SampleDto {
     pub t: f64,
     pub angle: f64,

@@ -68,6 +68,7 @@ pub struct ItemWork {
 
 /// One row of the sampled cycle (also the rows of the CSV export).
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[schema(as = FlywheelSample)]
 pub struct SampleDto {
     /// φ, rad
     pub angle: f64,

@@ -55,7 +55,16 @@ impl<'de> Deserializer<'de> for Strict<'de> {
                 _ => Err(de::Error::custom("a number out of range")),
             },
             Value::String(s) => visitor.visit_borrowed_str(s),
-            Value::Array(a) => visitor.visit_seq(Seq(a.iter())),
+            Value::Array(a) => {
+                // As serde_json does: an array longer than what was read (four numbers
+                // for [x, y, z]) is an error, not its first items.
+                let mut seq = Seq(a.iter());
+                let value = visitor.visit_seq(&mut seq)?;
+                match seq.0.len() {
+                    0 => Ok(value),
+                    _ => Err(de::Error::invalid_length(a.len(), &"fewer items")),
+                }
+            }
             Value::Object(m) => visitor.visit_map(Members::new(m)),
         }
     }
@@ -133,5 +142,31 @@ impl<'de> de::MapAccess<'de> for Members<'de> {
 
     fn size_hint(&self) -> Option<usize> {
         Some(self.iter.len())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde::Deserialize;
+
+    #[derive(Debug, Deserialize)]
+    #[allow(dead_code)]
+    struct Point {
+        at: [f64; 3],
+    }
+
+    fn read(v: Value) -> Result<Point, Error> {
+        Point::deserialize(Strict(&v))
+    }
+
+    /// Arrays of the right length only, and a struct only from an object.
+    #[test]
+    fn lengths_and_objects_are_enforced() {
+        assert!(read(serde_json::json!({"at": [1, 2, 3]})).is_ok());
+        let long = read(serde_json::json!({"at": [1, 2, 3, 4]})).unwrap_err().to_string();
+        assert!(long.contains("invalid length 4"), "{long}");
+        assert!(read(serde_json::json!({"at": [1, 2]})).is_err());
+        assert!(read(serde_json::json!([[1, 2, 3]])).is_err());
     }
 }
