@@ -111,3 +111,90 @@ fn the_dockerfile_agrees_with_the_code() {
     assert!(docker.contains("VOLUME [\"/data\"]") && docker.contains("DATABASE_URL=sqlite:///data/"));
     assert_eq!(mechdyn::api::HEALTH_PATH, "/healthz");
 }
+
+/// The engine's top-level modules (`src/engine/X.rs` or `src/engine/X/`)
+/// depend on each other without a cycle, so each can be read and tested
+/// from the bottom up (a function of φ knows nothing of mechanisms).
+#[test]
+fn the_engine_modules_have_no_cycle() {
+    let engine = root().join("src/engine");
+    let mut files = Vec::new();
+    rust_files(&engine, &mut files);
+    let mut edges: std::collections::BTreeMap<String, std::collections::BTreeSet<String>> = Default::default();
+    for file in &files {
+        let rel = file.strip_prefix(&engine).unwrap().with_extension("");
+        let mut module: Vec<String> = rel.iter().map(|c| c.to_string_lossy().into_owned()).collect();
+        if module.last().is_some_and(|m| m == "mod") {
+            module.pop();
+        }
+        let Some(top) = module.first().cloned().filter(|t| t != "mod") else { continue };
+        let text = std::fs::read_to_string(file).unwrap();
+        let code: String = text.lines().map(|l| l.split("//").next().unwrap_or("")).collect::<Vec<_>>().join("\n");
+        for target in engine_references(&code, &module) {
+            let is_module = engine.join(format!("{target}.rs")).exists() || engine.join(&target).is_dir();
+            if target != top && is_module {
+                edges.entry(top.clone()).or_default().insert(target);
+            }
+        }
+    }
+    // Depth-first search for a back edge.
+    fn visit<'a>(
+        node: &'a str,
+        edges: &'a std::collections::BTreeMap<String, std::collections::BTreeSet<String>>,
+        path: &mut Vec<&'a str>,
+        done: &mut std::collections::BTreeSet<&'a str>,
+    ) {
+        if let Some(at) = path.iter().position(|n| *n == node) {
+            panic!("engine modules form a cycle: {} -> {node}", path[at..].join(" -> "));
+        }
+        if !done.insert(node) {
+            return;
+        }
+        path.push(node);
+        for next in edges.get(node).into_iter().flatten() {
+            visit(next, edges, path, done);
+        }
+        path.pop();
+    }
+    let mut done = std::collections::BTreeSet::new();
+    for node in edges.keys() {
+        visit(node, &edges, &mut Vec::new(), &mut done);
+    }
+    assert!(edges.contains_key("machine"), "the scan found the machine's dependencies: {edges:?}");
+}
+
+/// Top-level engine modules that `code` (in engine module `module`) names
+/// through `super::…` or `crate::engine::…`, braces expanded one level.
+fn engine_references(code: &str, module: &[String]) -> Vec<String> {
+    let mut out = Vec::new();
+    let bytes = code.as_bytes();
+    let ident = |s: &str| s.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect::<String>();
+    for (i, _) in code.match_indices("super::").chain(code.match_indices("crate::engine::")) {
+        if i > 0 && (bytes[i - 1].is_ascii_alphanumeric() || bytes[i - 1] == b':') {
+            continue; // the tail of a longer path, counted from its start
+        }
+        let mut rest = &code[i..];
+        let mut depth = module.len();
+        if let Some(r) = rest.strip_prefix("crate::engine::") {
+            rest = r;
+            depth = 0;
+        }
+        while let Some(r) = rest.strip_prefix("super::") {
+            rest = r;
+            depth = depth.saturating_sub(1);
+        }
+        let heads: Vec<String> = if let Some(group) = rest.strip_prefix('{') {
+            let group = &group[..group.find('}').unwrap_or(group.len())];
+            group.split(',').map(|s| ident(s.trim())).collect()
+        } else {
+            vec![ident(rest)]
+        };
+        for head in heads.into_iter().filter(|h| !h.is_empty()) {
+            match depth {
+                0 => out.push(head),
+                _ => out.push(module[0].clone()),
+            }
+        }
+    }
+    out
+}

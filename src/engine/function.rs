@@ -9,7 +9,6 @@
 //! expressions by adaptive Gauss–Kronrod quadrature.
 
 use super::expr::Expr;
-use super::machine::{Machine, Reduced};
 use super::numeric::quadrature::{Integral, integrate};
 use std::sync::Arc;
 
@@ -51,6 +50,18 @@ pub struct Table {
     order: u8,
 }
 
+/// A function of φ computed by other means than a formula or a table (e.g.
+/// by assembling a mechanism at φ): only its values, slope and breakpoints
+/// are seen here, so this module knows nothing of what computes them.
+pub trait Curve: Send + Sync + std::fmt::Debug {
+    /// Value at φ (NaN where it cannot be computed).
+    fn eval(&self, phi: f64) -> f64;
+    /// dF/dφ, when it is available.
+    fn derivative(&self) -> Option<Arc<dyn Curve>>;
+    /// Angles where the function or its slope may jump.
+    fn breakpoints(&self) -> Vec<f64>;
+}
+
 /// A function of the cycle angle, in SI units.
 #[derive(Clone, Debug)]
 pub enum Function {
@@ -58,8 +69,9 @@ pub enum Function {
     Expr(Expr),
     Segments(Vec<Segment>),
     Table(Table),
-    /// A reduced quantity of a mechanism, evaluated by solving it at φ.
-    Machine(Arc<Machine>, Reduced),
+    /// A function computed elsewhere, seen only through its values (a
+    /// mechanism's reduced inertia or torque, solved at each φ).
+    Curve(Arc<dyn Curve>),
     /// The sum of several functions.
     Sum(Vec<Function>),
 }
@@ -224,7 +236,7 @@ impl Function {
                 })
                 .map_or(0.0, |s| s.expr.eval(&vars)),
             Self::Table(t) => t.eval(phi, side),
-            Self::Machine(m, what) => m.eval(phi, *what),
+            Self::Curve(c) => c.eval(phi),
             Self::Sum(fs) => fs.iter().map(|f| f.eval_at(phi, side, state)).sum(),
         }
     }
@@ -240,7 +252,7 @@ impl Function {
                 segs.iter().find(|s| s.from <= anchor && anchor < s.to).map_or(0.0, |s| s.expr.eval(&[phi]))
             }
             Self::Table(t) => t.eval_frozen(phi, anchor),
-            Self::Machine(m, what) => m.eval(phi, *what),
+            Self::Curve(c) => c.eval(phi),
             Self::Sum(fs) => fs.iter().map(|f| f.eval_frozen(phi, anchor)).sum(),
         }
     }
@@ -275,9 +287,8 @@ impl Function {
                 segs.iter().map(|s| Segment { from: s.from, to: s.to, expr: s.expr.derivative(0) }).collect(),
             ),
             Self::Table(t) => Self::Table(Table { order: t.order + 1, ..t.clone() }),
-            Self::Machine(m, Reduced::Inertia) => Self::Machine(m.clone(), Reduced::InertiaSlope),
             // Only I* is differentiated (for the equation of motion); others have no use for it.
-            Self::Machine(..) => Self::Constant(f64::NAN),
+            Self::Curve(c) => c.derivative().map_or(Self::Constant(f64::NAN), Self::Curve),
             Self::Sum(fs) => Self::Sum(fs.iter().map(Function::derivative).collect()),
         }
     }
@@ -288,7 +299,7 @@ impl Function {
             Self::Constant(_) | Self::Expr(_) => vec![],
             Self::Segments(segs) => segs.iter().flat_map(|s| [s.from, s.to]).collect(),
             Self::Table(t) => t.breakpoints().collect(),
-            Self::Machine(m, _) => m.breakpoints(),
+            Self::Curve(c) => c.breakpoints(),
             Self::Sum(fs) => fs.iter().flat_map(|f| f.breakpoints(period)).collect(),
         };
         b.retain(|x| *x > 0.0 && *x < period);
@@ -301,7 +312,7 @@ impl Function {
         match self {
             Self::Constant(c) => Integral { value: c * (b - a), ..Integral::default() },
             Self::Table(t) => Integral { value: t.integral(a, b), ..Integral::default() },
-            Self::Machine(m, what) => integrate(|x| m.eval(x, *what), a, b, abs_tol, rel_tol, MAX_EVALUATIONS),
+            Self::Curve(c) => integrate(|x| c.eval(x), a, b, abs_tol, rel_tol, MAX_EVALUATIONS),
             Self::Sum(fs) => {
                 let mut total = Integral::default();
                 for f in fs {

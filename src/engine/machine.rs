@@ -11,11 +11,12 @@
 //! nearest of a ring of anchor configurations, so quadrature and root finding
 //! see the true functions, not an interpolation of a coarse grid.
 
+use super::function::{Curve, Function};
 use super::kinematics::{Solved, assemble, motion, sweep};
 use super::kinetostatics::{Load, applied_forces};
 use super::model::Mechanism;
 use super::{Deadline, EngineError};
-use std::sync::Mutex;
+use std::sync::{Arc, Mutex};
 
 /// Anchor configurations per period.
 const ANCHORS: usize = 360;
@@ -26,6 +27,33 @@ pub enum Reduced {
     Inertia,
     InertiaSlope,
     Torque,
+}
+
+/// One reduced quantity of a machine as a function of φ.
+#[derive(Debug)]
+pub struct ReducedCurve {
+    pub machine: Arc<Machine>,
+    pub what: Reduced,
+}
+
+impl ReducedCurve {
+    /// `what` of `machine` as a function of φ.
+    pub fn function(machine: Arc<Machine>, what: Reduced) -> Function {
+        Function::Curve(Arc::new(Self { machine, what }))
+    }
+}
+
+impl Curve for ReducedCurve {
+    fn eval(&self, phi: f64) -> f64 {
+        self.machine.eval(phi, self.what)
+    }
+    fn derivative(&self) -> Option<Arc<dyn Curve>> {
+        let machine = self.machine.clone();
+        (self.what == Reduced::Inertia).then(|| Arc::new(ReducedCurve { machine, what: Reduced::InertiaSlope }) as _)
+    }
+    fn breakpoints(&self) -> Vec<f64> {
+        self.machine.breakpoints()
+    }
 }
 
 /// An assembled configuration q at φ with its velocity coefficients g and h.

@@ -10,7 +10,7 @@ use mechdyn::engine::dynamics::{DynamicsError, End, EventKind, ReducedProblem};
 use mechdyn::engine::expr::Expr;
 use mechdyn::engine::function::Function;
 use mechdyn::engine::kinetostatics::Load;
-use mechdyn::engine::machine::{Machine, Reduced};
+use mechdyn::engine::machine::{Machine, Reduced, ReducedCurve};
 use mechdyn::engine::model::{Body, Driver, Joint, JointKind, Mechanism};
 use mechdyn::engine::numeric::ode::Dopri5;
 use mechdyn::engine::samples::{offset_slider_crank, scotch_yoke};
@@ -77,8 +77,8 @@ fn slider_crank_matches_its_reduced_form() {
     let mech = solve(&problem(offset_slider_crank(), loads.clone(), vec![[0.0, 0.0]], End::Duration(1.0))).unwrap();
     let machine = Arc::new(Machine::new(offset_slider_crank(), loads, 0.0, 2.0 * PI, Deadline::none()).unwrap());
     let reduced = mechdyn::engine::dynamics::solve(&ReducedProblem {
-        torques: vec![(Function::Machine(machine.clone(), Reduced::Torque), 1.0)],
-        inertia: Function::Machine(machine, Reduced::Inertia),
+        torques: vec![(ReducedCurve::function(machine.clone(), Reduced::Torque), 1.0)],
+        inertia: ReducedCurve::function(machine, Reduced::Inertia),
         period: 2.0 * PI,
         angle0: 0.0,
         speed0: 0.0,

@@ -7,7 +7,7 @@ use crate::api::quantity::{Errors, FunctionDto, Quantity};
 use crate::engine::Deadline;
 use crate::engine::flywheel::{DiskSize, DiskSpec, FlywheelProblem, Load, TorqueItem};
 use crate::engine::function::Function;
-use crate::engine::machine::{Machine, Reduced};
+use crate::engine::machine::{Machine, Reduced, ReducedCurve};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -151,11 +151,11 @@ impl FlywheelRequest {
             let label = "/machine".to_string();
             t.push(TorqueItem {
                 name: "machine".into(),
-                load: Load::Given(Function::Machine(m.clone(), Reduced::Torque)),
+                load: Load::Given(ReducedCurve::function(m.clone(), Reduced::Torque)),
                 ratio: 1.0,
                 label,
             });
-            *i = Function::Sum(vec![i.clone(), Function::Machine(m, Reduced::Inertia)]);
+            *i = Function::Sum(vec![i.clone(), ReducedCurve::function(m, Reduced::Inertia)]);
         }
         let existing = match &self.existing_inertia {
             Some(q) => e.quantity(q, Dim::INERTIA, "/existing_inertia"),
