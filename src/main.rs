@@ -114,19 +114,13 @@ fn solve(kind: &str, file: &std::path::Path) -> ExitCode {
     if let Err(e) = read {
         return fail(&format!("cannot read {}: {e}", file.display()));
     }
-    let output = match kind {
-        "flywheel" => computed(raw, api::flywheel::compute),
-        "kinetostatics" => computed(raw, api::kinetostatics::compute),
-        "dynamics" => computed(raw, api::dynamics::compute),
-        "gears" => computed(raw, api::gears::compute),
-        "gear_train" => computed(raw, api::gear_train::compute),
-        "equivalent_masses" => computed(raw, api::equivalent::compute),
-        "rotor" => computed(raw, api::rotor::compute),
-        other => return fail(&format!("unknown kind '{other}' (known: {})", SOLVE_KINDS.join(", "))),
+    let Some(kind) = api::kind::find(kind) else {
+        return fail(&format!("unknown kind '{kind}' (known: {})", api::kind::names().join(", ")));
     };
-    match output {
+    match kind.solve(raw, &api::Limits::default()) {
         Ok(json) => {
-            println!("{json}");
+            let mut out = std::io::stdout().lock();
+            let _ = out.write_all(&json).and_then(|()| out.write_all(b"\n"));
             ExitCode::SUCCESS
         }
         Err(e) => {
@@ -134,19 +128,6 @@ fn solve(kind: &str, file: &std::path::Path) -> ExitCode {
             ExitCode::from(2)
         }
     }
-}
-
-/// The kinds `solve` knows, named as the jobs' kinds.
-const SOLVE_KINDS: &[&str] =
-    &["flywheel", "kinetostatics", "dynamics", "gears", "gear_train", "equivalent_masses", "rotor"];
-
-/// Parses a request of type T and computes it as the API would, as pretty JSON.
-fn computed<T: serde::de::DeserializeOwned, R: serde::Serialize>(
-    raw: String,
-    compute: fn(&T, Vec<api::problem::FieldError>) -> Result<R, api::problem::ApiError>,
-) -> Result<String, api::problem::ApiError> {
-    let body = mechdyn::api::json::parse::<T>(raw)?;
-    compute(&body.value, body.unknown).map(|r| serde_json::to_string_pretty(&r).unwrap_or_default())
 }
 
 fn fail(message: &str) -> ExitCode {

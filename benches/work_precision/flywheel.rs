@@ -6,7 +6,9 @@
 //! brentq; the peer at its tightest agrees to 1e-15).
 
 use crate::{Point, fixture, plot, run_peer, time_at};
-use mechdyn::api::flywheel::{FlywheelRequest, compute};
+use mechdyn::api::Limits;
+use mechdyn::api::flywheel::{Flywheel, FlywheelRequest};
+use mechdyn::api::kind::Kind;
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 use std::time::Instant;
@@ -21,7 +23,7 @@ fn mechdyn(body: &Value, runs: usize) -> (f64, f64, u64) {
     let mut last = None;
     for _ in 0..runs {
         let start = Instant::now();
-        let r = compute(&request, Vec::new()).expect("solved");
+        let r = Flywheel::compute(&request, Vec::new(), &Limits::default()).expect("solved");
         best = best.min(start.elapsed().as_secs_f64());
         last = Some(r);
     }

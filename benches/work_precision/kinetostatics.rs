@@ -1,6 +1,8 @@
 //! Kinetostatics: K1 at 3600 positions against the NumPy peer.
 
 use crate::{fixture, run_peer};
+use mechdyn::api::Limits;
+use mechdyn::api::kind::Kind;
 use mechdyn::api::kinetostatics::{self, KinetostaticsRequest, Scalars};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
@@ -26,7 +28,7 @@ fn timed(selections: &[Option<Value>]) -> (Vec<f64>, Vec<f64>) {
     for _ in 0..9 {
         for (k, request) in requests.iter().enumerate() {
             let start = Instant::now();
-            let r = kinetostatics::compute(request, Vec::new()).expect("solved");
+            let r = kinetostatics::Kinetostatics::compute(request, Vec::new(), &Limits::default()).expect("solved");
             best[k] = best[k].min(start.elapsed().as_secs_f64());
             if k == 0 {
                 torques =

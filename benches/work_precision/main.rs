@@ -20,7 +20,9 @@ mod kinetostatics;
 mod pendulum;
 mod slider_crank;
 
-use mechdyn::api::dynamics::{DynamicsRequest, DynamicsResult, compute};
+use mechdyn::api::Limits;
+use mechdyn::api::dynamics::{Dynamics, DynamicsRequest, DynamicsResult};
+use mechdyn::api::kind::Kind;
 use plotters::prelude::*;
 use serde_json::{Value, json};
 use std::fmt::Write as _;
@@ -52,7 +54,7 @@ pub fn timed(request: &Value, runs: usize) -> (f64, DynamicsResult) {
     let mut last = None;
     for _ in 0..runs {
         let start = Instant::now();
-        let result = compute(&request, Vec::new()).expect("solved");
+        let result = Dynamics::compute(&request, Vec::new(), &Limits::default()).expect("solved");
         best = best.min(start.elapsed().as_secs_f64());
         last = Some(result);
     }

@@ -4,9 +4,12 @@
 use super::AppState;
 use super::body::{Chunks, guarded};
 use super::jobs::job_chunks;
+use super::json::JsonBody;
+use super::kind::Kind;
 use super::problem::{ApiError, FieldError};
 use crate::store::NewJob;
 use axum::body::Body;
+use axum::extract::State;
 use axum::http::{StatusCode, header};
 use axum::response::{IntoResponse, Response};
 use bytes::Bytes;
@@ -30,6 +33,13 @@ pub trait JobResult: Serialize {
     fn rows(&self) -> Option<Rows> {
         None
     }
+}
+
+/// The POST of every kind: its body read strictly, computed and stored ([`create`]).
+pub async fn post<K: Kind>(State(state): State<AppState>, body: JsonBody<K::Request>) -> Result<Response, ApiError> {
+    let JsonBody { value, raw, unknown } = body;
+    let limits = state.limits.clone();
+    create(&state, K::NAME, raw, move || K::compute(&value, unknown, &limits)).await
 }
 
 /// Runs `compute` once a compute slot is free, off the async workers,

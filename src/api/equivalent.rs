@@ -1,13 +1,12 @@
 //! `POST /v1/equivalent-masses`: point masses equivalent to a rigid link.
 
-use super::json::JsonBody;
-use super::problem::{ApiError, FieldError, PostErrors};
+use super::kind::Kind;
+use super::limits::Limits;
+use super::problem::{ApiError, FieldError};
 use super::quantity::{Errors, Quantity};
-use super::{AppState, create, jobs, validated};
+use super::validated;
 use crate::engine::equivalent::equivalent_masses;
 use crate::units::Dim;
-use axum::extract::State;
-use axum::response::Response;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use utoipa::ToSchema;
@@ -42,22 +41,32 @@ pub struct EquivalentResult {
     pub warnings: Vec<String>,
 }
 
-impl create::JobResult for EquivalentResult {}
+impl super::create::JobResult for EquivalentResult {}
 
-/// Masses at the given points with the link's mass, centre of mass and inertia.
-#[utoipa::path(post, path = "/v1/equivalent-masses", operation_id = "create_equivalent_masses_job", tag = "calculators", request_body = EquivalentRequest,
-    responses(
-        (status = 201, description = "Job computed and stored; `result` is an EquivalentResult", body = jobs::JobOf<EquivalentResult>,
-            headers(("Location" = String, description = "/v1/jobs/{id}"))),
-        PostErrors,
-    ))]
-pub async fn create(State(state): State<AppState>, body: JsonBody<EquivalentRequest>) -> Result<Response, ApiError> {
-    let JsonBody { value, raw, unknown } = body;
-    create::create(&state, "equivalent_masses", raw, move || compute(&value, unknown)).await
+/// EquivalentMasses: `POST /v1/equivalent-masses`.
+pub struct EquivalentMasses;
+
+impl Kind for EquivalentMasses {
+    const NAME: &'static str = "equivalent_masses";
+    const PATH: &'static str = "/v1/equivalent-masses";
+    const OPERATION_ID: &'static str = "create_equivalent_masses_job";
+    const TAG: &'static str = "calculators";
+    const SUMMARY: &'static str = "Masses at the given points with the link's mass, centre of mass and inertia.";
+    const UNITS: &'static [(&'static str, &'static str)] = &[("/masses/*", "kg"), ("/residual", "1")];
+    type Request = EquivalentRequest;
+    type Result = EquivalentResult;
+
+    fn compute(
+        request: &EquivalentRequest,
+        unknown: Vec<FieldError>,
+        _limits: &Limits,
+    ) -> Result<EquivalentResult, ApiError> {
+        compute(request, unknown)
+    }
 }
 
 /// Validates and computes a request.
-pub fn compute(request: &EquivalentRequest, unknown: Vec<FieldError>) -> Result<EquivalentResult, ApiError> {
+fn compute(request: &EquivalentRequest, unknown: Vec<FieldError>) -> Result<EquivalentResult, ApiError> {
     let (mass, inertia, points) = validated(unknown, request.validate())?;
     let e = equivalent_masses(mass, inertia, &points);
     if !(e.residual.is_finite() && e.masses.iter().all(|m| m.is_finite())) {

@@ -1,14 +1,13 @@
 //! `POST /v1/gears/train`: speeds (Willis) and torques (virtual power) of an
 //! ordinary or epicyclic gear train.
 
-use super::json::JsonBody;
-use super::problem::{ApiError, FieldError, PostErrors};
+use super::kind::Kind;
+use super::limits::Limits;
+use super::problem::{ApiError, FieldError};
 use super::quantity::{Errors, Quantity};
-use super::{AppState, create, jobs, validated};
+use super::validated;
 use crate::engine::gear_train::{Mesh, Train, TrainError};
 use crate::units::Dim;
-use axum::extract::State;
-use axum::response::Response;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
@@ -92,25 +91,38 @@ pub struct TrainResult {
     pub method: String,
 }
 
-impl create::JobResult for TrainResult {}
+impl super::create::JobResult for TrainResult {}
 
-/// Speeds of every member (Willis) and the torques that keep it steady (virtual power).
-#[utoipa::path(post, path = "/v1/gears/train", operation_id = "create_gear_train_job", tag = "gears", request_body = TrainRequest,
-    responses(
-        (status = 201, description = "Job computed and stored; `result` is a TrainResult", body = jobs::JobOf<TrainResult>,
-            headers(("Location" = String, description = "/v1/jobs/{id}"))),
-        PostErrors,
-    ))]
-pub async fn create(State(state): State<AppState>, body: JsonBody<TrainRequest>) -> Result<Response, ApiError> {
-    let JsonBody { value, raw, unknown } = body;
-    create::create(&state, "gear_train", raw, move || compute(&value, unknown)).await
+/// GearTrain: `POST /v1/gears/train`.
+pub struct GearTrain;
+
+impl Kind for GearTrain {
+    const NAME: &'static str = "gear_train";
+    const PATH: &'static str = "/v1/gears/train";
+    const OPERATION_ID: &'static str = "create_gear_train_job";
+    const TAG: &'static str = "gears";
+    const SUMMARY: &'static str =
+        "Speeds of every member (Willis) and the torques that keep it steady (virtual power).";
+    const UNITS: &'static [(&'static str, &'static str)] = &[
+        ("/dof", "1"),
+        ("/members/*/power", "W"),
+        ("/members/*/speed", "rad/s"),
+        ("/members/*/torque", "N*m"),
+        ("/power_residual", "1"),
+    ];
+    type Request = TrainRequest;
+    type Result = TrainResult;
+
+    fn compute(request: &TrainRequest, unknown: Vec<FieldError>, _limits: &Limits) -> Result<TrainResult, ApiError> {
+        compute(request, unknown)
+    }
 }
 
 /// A validated train with its given speeds, torques and unknown torques.
 type Parts = (Train, Vec<(usize, f64)>, Vec<(usize, f64)>, Vec<usize>);
 
 /// Validates and solves a request.
-pub fn compute(request: &TrainRequest, unknown: Vec<FieldError>) -> Result<TrainResult, ApiError> {
+fn compute(request: &TrainRequest, unknown: Vec<FieldError>) -> Result<TrainResult, ApiError> {
     let (train, speeds, torques, asked) = validated(unknown, request.to_train())?;
     let s = train.solve(&speeds, &torques, &asked).map_err(|e| {
         let at = match e {

@@ -1,13 +1,12 @@
 //! `POST /v1/gears/geometry`: involute spur gear radii and tooth thickness.
 
-use super::json::JsonBody;
-use super::problem::{ApiError, FieldError, PostErrors};
+use super::kind::Kind;
+use super::limits::Limits;
+use super::problem::{ApiError, FieldError};
 use super::quantity::{Errors, Quantity};
-use super::{AppState, create, jobs, validated};
+use super::validated;
 use crate::engine::gears::Gear;
 use crate::units::Dim;
-use axum::extract::State;
-use axum::response::Response;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
@@ -51,22 +50,28 @@ pub struct GearResult {
     pub warnings: Vec<String>,
 }
 
-impl create::JobResult for GearResult {}
+impl super::create::JobResult for GearResult {}
 
-/// Radii (pitch, base, tip, root) and the tooth thickness on any circle.
-#[utoipa::path(post, path = "/v1/gears/geometry", operation_id = "create_gear_geometry_job", tag = "gears", request_body = GearRequest,
-    responses(
-        (status = 201, description = "Job computed and stored; `result` is a GearResult", body = jobs::JobOf<GearResult>,
-            headers(("Location" = String, description = "/v1/jobs/{id}"))),
-        PostErrors,
-    ))]
-pub async fn create(State(state): State<AppState>, body: JsonBody<GearRequest>) -> Result<Response, ApiError> {
-    let JsonBody { value, raw, unknown } = body;
-    create::create(&state, "gears", raw, move || compute(&value, unknown)).await
+/// Gears: `POST /v1/gears/geometry`.
+pub struct Gears;
+
+impl Kind for Gears {
+    const NAME: &'static str = "gears";
+    const PATH: &'static str = "/v1/gears/geometry";
+    const OPERATION_ID: &'static str = "create_gear_geometry_job";
+    const TAG: &'static str = "gears";
+    const SUMMARY: &'static str = "Radii (pitch, base, tip, root) and the tooth thickness on any circle.";
+    const UNITS: &'static [(&'static str, &'static str)] = &[("/thickness_pressure_angle", "rad"), ("/*", "m")];
+    type Request = GearRequest;
+    type Result = GearResult;
+
+    fn compute(request: &GearRequest, unknown: Vec<FieldError>, _limits: &Limits) -> Result<GearResult, ApiError> {
+        compute(request, unknown)
+    }
 }
 
 /// Validates and computes a request.
-pub fn compute(request: &GearRequest, unknown: Vec<FieldError>) -> Result<GearResult, ApiError> {
+fn compute(request: &GearRequest, unknown: Vec<FieldError>) -> Result<GearResult, ApiError> {
     let (gear, radius) = validated(unknown, request.to_gear())?;
     let radii = gear.radii();
     // A module near the largest double (1e308) overflows the radii: refused, not answered as nulls.

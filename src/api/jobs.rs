@@ -5,11 +5,13 @@
 use super::AppState;
 use super::body::{Chunks, guarded};
 use super::problem::{ApiError, FieldError, Problem, ReadErrors};
+use super::tables::{self, Angles};
+use super::{kind, parts};
 use crate::store::{JobRow, Page};
 use axum::body::Body;
 use axum::extract::rejection::QueryRejection;
 use axum::extract::{Path, Query, State};
-use axum::http::header;
+use axum::http::{HeaderMap, header};
 use axum::response::{IntoResponse, Response};
 use serde::Serialize;
 use serde_json::value::RawValue;
@@ -17,9 +19,6 @@ use std::collections::HashMap;
 use tokio::sync::OwnedSemaphorePermit;
 use utoipa::{IntoParams, ToSchema};
 
-/// Kinds of job, as used in `kind` and `GET /v1/jobs?kind=`.
-pub const KINDS: &[&str] =
-    &["flywheel", "kinetostatics", "dynamics", "rotor", "gears", "gear_train", "equivalent_masses"];
 /// Largest page of the jobs list.
 pub const MAX_LIMIT: i64 = 100;
 
@@ -98,7 +97,11 @@ fn json_answer(body: Chunks, reserved: OwnedSemaphorePermit) -> Response {
 }
 
 /// The memory of a stored job's answer reserved, then the job loaded.
-async fn load(state: &AppState, id: &str, factor: usize) -> Result<(JobRow, OwnedSemaphorePermit), ApiError> {
+pub(super) async fn load(
+    state: &AppState,
+    id: &str,
+    factor: usize,
+) -> Result<(JobRow, OwnedSemaphorePermit), ApiError> {
     let size = state.store.size(id).await?.ok_or_else(|| ApiError::NotFound(id.into()))?;
     let reserved = state.admission.memory(size.saturating_mul(factor) + 256).await?;
     let row = state.store.get(id).await?.ok_or_else(|| ApiError::NotFound(id.into()))?;
@@ -106,13 +109,30 @@ async fn load(state: &AppState, id: &str, factor: usize) -> Result<(JobRow, Owne
 }
 
 /// Reads a job.
+///
+/// With `Accept: text/csv` the answer is the job's main table as CSV, as
+/// `result.csv` gives it (`?angles=deg` for angles in degrees).
 #[utoipa::path(get, path = "/v1/jobs/{id}", operation_id = "get_job", tag = "jobs",
-    params(("id" = String, Path, description = "Job id")),
+    params(
+        ("id" = String, Path, description = "Job id"),
+        ("angles" = Option<String>, Query, description = "With `Accept: text/csv`: `rad` (default) or `deg`"),
+    ),
     responses(
-        (status = 200, description = "The job", body = Job),
+        (status = 200, description = "The job (JSON), or its table with `Accept: text/csv`",
+            content((Job = "application/json"), (String = "text/csv"))),
+        (status = 400, description = "An invalid query parameter", body = Problem, content_type = "application/problem+json"),
         ReadErrors,
     ))]
-pub async fn get(State(state): State<AppState>, Path(id): Path<String>) -> Result<Response, ApiError> {
+pub async fn get(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+    headers: HeaderMap,
+    q: Result<Query<HashMap<String, String>>, QueryRejection>,
+) -> Result<Response, ApiError> {
+    let q = parts::query(q, &["angles"])?;
+    if parts::wants(&headers, None, "text/csv") {
+        return csv_answer(&state, &id, q.get("angles")).await;
+    }
     let (row, reserved) = load(&state, &id, READ_MEMORY_FACTOR).await?;
     let mut body = Chunks::default();
     job_chunks(&row, &mut body);
@@ -124,8 +144,7 @@ pub async fn get(State(state): State<AppState>, Path(id): Path<String>) -> Resul
 #[into_params(parameter_in = Query)]
 #[allow(dead_code)]
 pub struct ListParams {
-    /// Only jobs of this kind.
-    #[param(pattern = "^(flywheel|kinetostatics|dynamics|rotor|gears|gear_train|equivalent_masses)$")]
+    /// Only jobs of this kind (the document lists them).
     kind: Option<String>,
     /// Page size, 1 to 100 (default 50).
     #[param(minimum = 1, maximum = 100)]
@@ -189,9 +208,9 @@ fn list_params(q: &HashMap<String, String>) -> Result<(Option<String>, i64, Opti
     }
     let kind = q.get("kind").cloned();
     if let Some(k) = &kind
-        && !KINDS.contains(&k.as_str())
+        && kind::find(k).is_none()
     {
-        errors.push(FieldError::parameter("kind", format!("must be one of {}", KINDS.join(", "))));
+        errors.push(FieldError::parameter("kind", format!("must be one of {}", kind::names().join(", "))));
     }
     let int = |name: &str, lo: i64, hi: i64, errors: &mut Vec<FieldError>| match q.get(name).map(|v| v.parse::<i64>()) {
         None => None,
@@ -207,18 +226,34 @@ fn list_params(q: &HashMap<String, String>) -> Result<(Option<String>, i64, Opti
 }
 
 /// The job's tabular result as CSV: one row per sample, header with units.
+///
+/// A kind without a table (or a job asked for none, e.g. `samples: 0`)
+/// answers its values instead, `pointer,value,unit`: never an empty body.
 #[utoipa::path(get, path = "/v1/jobs/{id}/result.csv", operation_id = "get_job_result_csv", tag = "jobs",
-    params(("id" = String, Path, description = "Job id")),
+    params(
+        ("id" = String, Path, description = "Job id"),
+        ("angles" = Option<String>, Query, description = "`rad` (default) or `deg`: angle columns in degrees, their header saying so"),
+    ),
     responses(
         (status = 200, description = "CSV table", body = String, content_type = "text/csv"),
+        (status = 400, description = "An invalid query parameter", body = Problem, content_type = "application/problem+json"),
         ReadErrors,
     ))]
-pub async fn csv(State(state): State<AppState>, Path(id): Path<String>) -> Result<Response, ApiError> {
-    // The result is read as a JSON tree (several times its text) and written again as CSV.
-    let (row, reserved) = load(&state, &id, CSV_MEMORY_FACTOR).await?;
-    // Off the async workers: a large result takes a fraction of a second to convert.
+pub async fn csv(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+    q: Result<Query<HashMap<String, String>>, QueryRejection>,
+) -> Result<Response, ApiError> {
+    let q = parts::query(q, &["angles"])?;
+    csv_answer(&state, &id, q.get("angles")).await
+}
+
+/// The CSV of a stored job ([`tables::result_csv`]), converted off the async workers.
+async fn csv_answer(state: &AppState, id: &str, angles: Option<&String>) -> Result<Response, ApiError> {
+    let angles = Angles::parse(angles).map_err(|e| ApiError::BadQuery(vec![e]))?;
+    let (row, result, reserved) = parts::result_tree(state, id).await?;
     let kind = row.kind.clone();
-    let body = tokio::task::spawn_blocking(move || to_csv(&kind, &row.result))
+    let body = tokio::task::spawn_blocking(move || tables::result_csv(kind::find(&kind), &result, angles))
         .await
         .map_err(|e| ApiError::Internal(format!("csv task: {e}")))??;
     let disposition = format!("attachment; filename=\"{}-{id}.csv\"", row.kind);
@@ -232,25 +267,6 @@ pub async fn csv(State(state): State<AppState>, Path(id): Path<String>) -> Resul
 /// Memory of a read per byte of the stored job: SQLite's copy of the value,
 /// sqlx's, and the answer's (measured: 64 readers of a 16 MB job).
 const READ_MEMORY_FACTOR: usize = 3;
-/// The same for a CSV answer: the read, the result as a JSON tree (about
-/// eight times its text) and the CSV text.
-const CSV_MEMORY_FACTOR: usize = 12;
-
-/// The CSV of a stored result: the table of its kind, header row with units.
-fn to_csv(kind: &str, result: &[u8]) -> Result<String, ApiError> {
-    let value: serde_json::Value = serde_json::from_slice(result).map_err(|e| ApiError::Internal(e.to_string()))?;
-    let (header, rows) = match kind {
-        "flywheel" => super::flywheel::csv_table(&value),
-        "kinetostatics" => super::kinetostatics::csv_table(&value),
-        "dynamics" => super::dynamics::csv_table(&value),
-        _ => (Vec::new(), Vec::new()),
-    };
-    let mut w = csv::Writer::from_writer(Vec::new());
-    let internal = |e: csv::Error| ApiError::Internal(e.to_string());
-    w.write_record(&header).map_err(internal)?;
-    for row in rows {
-        w.write_record(&row).map_err(internal)?;
-    }
-    let bytes = w.into_inner().map_err(|e| ApiError::Internal(e.to_string()))?;
-    String::from_utf8(bytes).map_err(|e| ApiError::Internal(e.to_string()))
-}
+/// The same for a CSV answer or a part of a result: the read, the result as
+/// a JSON tree (about eight times its text) and the CSV text.
+pub(super) const CSV_MEMORY_FACTOR: usize = 12;

@@ -15,26 +15,30 @@ pub mod gear_train;
 pub mod gears;
 pub mod jobs;
 pub mod json;
+pub mod kind;
 pub mod kinetostatics;
 pub mod limits;
 pub mod mechanism;
 pub mod middleware;
+pub mod parts;
 pub mod problem;
 pub mod quantity;
 pub mod rotor;
+pub mod tables;
 
 use crate::store::Store;
 pub use admission::{Admission, Capacity};
 use axum::extract::State;
 use axum::http::StatusCode;
 use axum::response::Redirect;
-use axum::routing::{get, post};
+use axum::routing::get;
 use axum::{Json, Router};
 pub use limits::Limits;
 pub use middleware::Settings;
 use problem::{ApiError, FieldError, Problem};
 use serde::Serialize;
 use utoipa::{OpenApi, ToSchema};
+use utoipa_axum::router::OpenApiRouter;
 use utoipa_swagger_ui::{Config, SwaggerUi};
 
 /// Shared state of the handlers.
@@ -81,18 +85,7 @@ service has cores, 64 more wait; beyond that a POST is answered 503 `/problems/s
 token (`MECHDYN_API_TOKEN`), every POST needs `Authorization: Bearer <token>` (401 without it); every \
 answer carries an `x-request-id` header."
     ),
-    paths(flywheel::create, kinetostatics::create, dynamics::create, gears::create, gear_train::create, equivalent::create, rotor::create, jobs::get, jobs::list, jobs::csv, healthz),
-    components(schemas(
-        Problem, FieldError, Health,
-        flywheel::FlywheelRequest, flywheel::FlywheelResult,
-        kinetostatics::KinetostaticsRequest, kinetostatics::KinetostaticsResult,
-        dynamics::DynamicsRequest, dynamics::DynamicsResult,
-        gears::GearRequest, gears::GearResult,
-        gear_train::TrainRequest, gear_train::TrainResult,
-        equivalent::EquivalentRequest, equivalent::EquivalentResult,
-        rotor::RotorRequest, rotor::RotorResult,
-        quantity::Quantity, quantity::FunctionDto, quantity::FunctionSpec
-    )),
+    components(schemas(Problem, FieldError, Health, quantity::Quantity, quantity::FunctionDto, quantity::FunctionSpec)),
     tags(
         (name = "flywheel", description = "Flywheel design for a machine in steady state"),
         (name = "kinetostatics", description = "Inverse dynamics of planar mechanisms"),
@@ -105,12 +98,43 @@ answer carries an `x-request-id` header."
 )]
 pub struct ApiDoc;
 
-/// The OpenAPI document, as served at `/openapi.json`: the types' schemas,
-/// and every POST's 201 example computed by the engine ([`examples`]).
+/// Every route of the service with its OpenAPI operation, from one list:
+/// each kind of the registry ([`kind::KINDS`]), then the generic reads.
+fn routes() -> OpenApiRouter<AppState> {
+    let mut routes = OpenApiRouter::with_openapi(ApiDoc::openapi());
+    for kind in kind::KINDS {
+        routes = routes.routes(kind.route());
+    }
+    routes
+        .routes(utoipa_axum::routes!(jobs::list))
+        .routes(utoipa_axum::routes!(jobs::get))
+        .routes(utoipa_axum::routes!(jobs::csv))
+        .routes(utoipa_axum::routes!(parts::values))
+        .routes(rest_of_path(utoipa_axum::routes!(parts::part), "pointer"))
+        .routes(utoipa_axum::routes!(healthz))
+}
+
+/// A route whose last path parameter takes the rest of the path (a JSON
+/// pointer with its `/`s): routed as `{*NAME}`, documented as `{NAME}`.
+fn rest_of_path(
+    (schemas, mut paths, method): utoipa_axum::router::UtoipaMethodRouter<AppState>,
+    name: &str,
+) -> utoipa_axum::router::UtoipaMethodRouter<AppState> {
+    let (from, to) = (format!("{{{name}}}"), format!("{{*{name}}}"));
+    let mut routed = utoipa::openapi::path::Paths::new();
+    for (path, item) in std::mem::take(&mut paths.paths) {
+        routed.paths.insert(path.replace(&from, &to), item);
+    }
+    (schemas, routed, method)
+}
+
+/// The OpenAPI document, as served at `/openapi.json`: the routes' operations
+/// and schemas, then what the registry adds ([`examples`]): every POST's 201
+/// example computed by the engine, the units of every result's fields.
 pub fn openapi() -> utoipa::openapi::OpenApi {
     static DOC: std::sync::OnceLock<utoipa::openapi::OpenApi> = std::sync::OnceLock::new();
     DOC.get_or_init(|| {
-        let doc = ApiDoc::openapi();
+        let (_, doc) = routes().split_for_parts();
         let Ok(mut value) = serde_json::to_value(&doc) else { return doc };
         examples::add(&mut value);
         serde_json::from_value(value).unwrap_or(doc)
@@ -120,18 +144,8 @@ pub fn openapi() -> utoipa::openapi::OpenApi {
 
 /// The service's router with its middleware ([`middleware::layered`]).
 pub fn router(state: AppState, settings: &Settings) -> Router {
-    let routes = Router::new()
-        .route("/v1/flywheel", post(flywheel::create))
-        .route("/v1/kinetostatics", post(kinetostatics::create))
-        .route("/v1/dynamics", post(dynamics::create))
-        .route("/v1/gears/geometry", post(gears::create))
-        .route("/v1/equivalent-masses", post(equivalent::create))
-        .route("/v1/gears/train", post(gear_train::create))
-        .route("/v1/rotor", post(rotor::create))
-        .route("/v1/jobs", get(jobs::list))
-        .route("/v1/jobs/{id}", get(jobs::get))
-        .route("/v1/jobs/{id}/result.csv", get(jobs::csv))
-        .route(HEALTH_PATH, get(healthz))
+    let (routes, _) = routes().split_for_parts();
+    let routes = routes
         .route("/", get(|| async { Redirect::to("/docs/") }))
         // The validator would send the document's URL to validator.swagger.io and show a broken image offline.
         .merge(

@@ -147,6 +147,8 @@ pub enum ApiError {
     BadQuery(Vec<FieldError>),
     #[error("no job with id '{0}'")]
     NotFound(String),
+    #[error("job '{id}' has no part of its result at '{pointer}'")]
+    NoPart { id: String, pointer: String },
     #[error("no such resource")]
     NoRoute,
     #[error("method not allowed")]
@@ -187,6 +189,7 @@ impl ApiError {
             Self::BadQuery(_) => (StatusCode::BAD_REQUEST, "invalid-query", "Invalid query parameters"),
             Self::NotFound(_) => (StatusCode::NOT_FOUND, "not-found", "Job not found"),
             Self::NoRoute => (StatusCode::NOT_FOUND, "not-found", "Not found"),
+            Self::NoPart { .. } => (StatusCode::NOT_FOUND, "no-such-part", "No such part of the result"),
             Self::MethodNotAllowed => (StatusCode::METHOD_NOT_ALLOWED, "method-not-allowed", "Method not allowed"),
             Self::OverBudget(_) => {
                 (StatusCode::UNPROCESSABLE_ENTITY, "compute-budget", "The job ran out of its compute budget")

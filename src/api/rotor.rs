@@ -2,14 +2,13 @@
 //! two bearings — momentum, kinetic energy, driving and gyroscopic moments,
 //! and the bearing reactions (dynamic, static, total; rotating and fixed axes).
 
-use super::json::JsonBody;
-use super::problem::{ApiError, FieldError, PostErrors};
+use super::kind::Kind;
+use super::limits::Limits;
+use super::problem::{ApiError, FieldError};
 use super::quantity::{Errors, Quantity};
-use super::{AppState, create, jobs, validated};
+use super::validated;
 use crate::engine::rotor::{Rotor, RotorState, Support};
 use crate::units::Dim;
-use axum::extract::State;
-use axum::response::Response;
 use nalgebra::{Matrix3, Vector3};
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
@@ -121,22 +120,40 @@ pub struct RotorResult {
     pub method: String,
 }
 
-impl create::JobResult for RotorResult {}
+impl super::create::JobResult for RotorResult {}
 
-/// The rotor at the requested angles or times.
-#[utoipa::path(post, path = "/v1/rotor", operation_id = "create_rotor_job", tag = "calculators", request_body = RotorRequest,
-    responses(
-        (status = 201, description = "Job computed and stored; `result` is a RotorResult", body = jobs::JobOf<RotorResult>,
-            headers(("Location" = String, description = "/v1/jobs/{id}"))),
-        PostErrors,
-    ))]
-pub async fn create(State(state): State<AppState>, body: JsonBody<RotorRequest>) -> Result<Response, ApiError> {
-    let JsonBody { value, raw, unknown } = body;
-    create::create(&state, "rotor", raw, move || compute(&value, unknown)).await
+/// RigidRotor: `POST /v1/rotor`.
+pub struct RigidRotor;
+
+impl Kind for RigidRotor {
+    const NAME: &'static str = "rotor";
+    const PATH: &'static str = "/v1/rotor";
+    const OPERATION_ID: &'static str = "create_rotor_job";
+    const TAG: &'static str = "calculators";
+    const SUMMARY: &'static str = "The rotor at the requested angles or times.";
+    const UNITS: &'static [(&'static str, &'static str)] = &[
+        ("/states/*/t", "s"),
+        ("/states/*/angle", "rad"),
+        ("/states/*/speed", "rad/s"),
+        ("/states/*/kinetic_energy", "J"),
+        ("/states/*/momentum/*", "kg*m/s"),
+        ("/states/*/angular_momentum_g/*", "kg*m^2/s"),
+        ("/states/*/angular_momentum_o/*", "kg*m^2/s"),
+        ("/states/*/gyroscopic_moment/*", "N*m"),
+        ("/states/*/*/*/driving_moment", "N*m"),
+        ("/states/*/*/*/d/*", "N"),
+        ("/states/*/*/*/e/*", "N"),
+    ];
+    type Request = RotorRequest;
+    type Result = RotorResult;
+
+    fn compute(request: &RotorRequest, unknown: Vec<FieldError>, _limits: &Limits) -> Result<RotorResult, ApiError> {
+        compute(request, unknown)
+    }
 }
 
 /// Validates and computes a request.
-pub fn compute(request: &RotorRequest, unknown: Vec<FieldError>) -> Result<RotorResult, ApiError> {
+fn compute(request: &RotorRequest, unknown: Vec<FieldError>) -> Result<RotorResult, ApiError> {
     let (rotor, times) = validated(unknown, request.to_rotor())?;
     let states = times.iter().map(|t| state_dto(&rotor.at(*t))).collect();
     Ok(RotorResult {

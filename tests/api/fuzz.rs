@@ -4,6 +4,7 @@
 
 use crate::helpers::request;
 use mechdyn::api::Limits;
+use mechdyn::api::kind::Kind;
 use mechdyn::api::problem::ApiError;
 use mechdyn::api::{flywheel, json, kinetostatics};
 use mechdyn::engine::expr::Expr;
@@ -192,7 +193,7 @@ fn run_mutations(fixture: &'static str, cases: u32, solve: impl Fn(String) -> Op
 fn any_mutated_mechanism_is_solved_or_refused() {
     let [solved, unparsed, refused] = run_mutations("k1_offset_slider_crank", 300, |body| {
         let b = json::parse::<kinetostatics::KinetostaticsRequest>(body).ok()?;
-        Some(solved(kinetostatics::compute_within(&b.value, b.unknown, &limits())))
+        Some(solved(kinetostatics::Kinetostatics::compute(&b.value, b.unknown, &limits())))
     });
     eprintln!("kinetostatics: {solved} solved, {unparsed} refused at parsing, {refused} refused by validation");
     assert!(solved > 0 && refused > 0, "{solved} solved, {refused} refused");
@@ -203,7 +204,7 @@ fn any_mutated_mechanism_is_solved_or_refused() {
 fn any_mutated_machine_flywheel_is_solved_or_refused() {
     let [solved, unparsed, refused] = run_mutations("p103_slider_machine", 200, |body| {
         let b = json::parse::<flywheel::FlywheelRequest>(body).ok()?;
-        Some(solved(flywheel::compute_within(&b.value, b.unknown, &limits())))
+        Some(solved(flywheel::Flywheel::compute(&b.value, b.unknown, &limits())))
     });
     eprintln!("machine flywheel: {solved} solved, {unparsed} refused at parsing, {refused} refused by validation");
     assert!(solved > 0 && refused > 0, "{solved} solved, {refused} refused");

@@ -16,6 +16,7 @@ mod helpers;
 mod jobs;
 mod kinetostatics;
 mod limits;
+mod parts;
 mod peers;
 mod robot_arm;
 mod rotor;

@@ -145,7 +145,15 @@ fn an_irregularity_that_overflows_the_inertia_is_refused_not_hung() {
         let mut body = request("p103_slider_machine");
         body["irregularity"] = json!(1e-308);
         let b = mechdyn::api::json::parse::<mechdyn::api::flywheel::FlywheelRequest>(body.to_string()).unwrap();
-        let _ = done.send(mechdyn::api::flywheel::compute(&b.value, b.unknown).map(|_| ()).map_err(|e| e.problem()));
+        let _ = done.send(
+            <mechdyn::api::flywheel::Flywheel as mechdyn::api::kind::Kind>::compute(
+                &b.value,
+                b.unknown,
+                &Default::default(),
+            )
+            .map(|_| ())
+            .map_err(|e| e.problem()),
+        );
     });
     let outcome = answer.recv_timeout(std::time::Duration::from_secs(120)).expect("answered, not hung");
     let problem = outcome.expect_err("refused");

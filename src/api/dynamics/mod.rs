@@ -3,19 +3,18 @@
 
 mod machine;
 
-use super::json::JsonBody;
+use super::kind::{Kind, Table};
 use super::limits::Limits;
-use super::problem::{ApiError, FieldError, PostErrors};
+use super::problem::{ApiError, FieldError};
 use super::quantity::{Errors, FunctionDto, Quantity};
-use super::{AppState, create, jobs, validated};
+use super::{create, validated};
 use crate::engine::Deadline;
 use crate::engine::dynamics::mechanism::{self, MechanismProblem};
 use crate::engine::dynamics::{DynamicsError, DynamicsSolution, End, EventKind, ReducedProblem, solve};
 use crate::engine::function::Function;
 use crate::units::Dim;
-use axum::extract::State;
-use axum::response::Response;
 use serde::{Deserialize, Serialize};
+use serde_json::Value;
 use std::f64::consts::PI;
 use utoipa::ToSchema;
 
@@ -147,39 +146,70 @@ pub struct DynamicsResult {
     pub warnings: Vec<String>,
 }
 
-impl create::JobResult for DynamicsResult {
+impl super::create::JobResult for DynamicsResult {
     fn rows(&self) -> Option<create::Rows> {
         let (field, count) = ("/samples".into(), self.samples.len());
         Some(create::Rows { field, count, also: " (events: one per turn, fewer with a shorter run)" })
     }
 }
 
-/// Integrates I*(φ)φ̈ + ½I*'(φ)φ̇² = M*(φ, ω, t), or a mechanism's equations
-/// of motion, from the initial state.
-#[utoipa::path(post, path = "/v1/dynamics", operation_id = "create_dynamics_job", tag = "dynamics", request_body = DynamicsRequest,
-    responses(
-        (status = 201, description = "Job computed and stored; `result` is a DynamicsResult", body = jobs::JobOf<DynamicsResult>,
-            headers(("Location" = String, description = "/v1/jobs/{id}"))),
-        PostErrors,
-    ))]
-pub async fn create(State(state): State<AppState>, body: JsonBody<DynamicsRequest>) -> Result<Response, ApiError> {
-    let JsonBody { value, raw, unknown } = body;
-    let limits = state.limits.clone();
-    create::create(&state, "dynamics", raw, move || compute_within(&value, unknown, &limits)).await
-}
+/// Dynamics: `POST /v1/dynamics`.
+pub struct Dynamics;
 
-/// Validates and solves a request within the default limits (`mechdyn solve dynamics`).
-pub fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>) -> Result<DynamicsResult, ApiError> {
-    compute_within(request, unknown, &Limits::default())
+impl Kind for Dynamics {
+    const NAME: &'static str = "dynamics";
+    const PATH: &'static str = "/v1/dynamics";
+    const OPERATION_ID: &'static str = "create_dynamics_job";
+    const TAG: &'static str = "dynamics";
+    const SUMMARY: &'static str =
+        "Integrates I*(φ)φ̈ + ½I*'(φ)φ̇² = M*(φ, ω, t), or a mechanism's equations of motion, from the initial state.";
+    const UNITS: &'static [(&'static str, &'static str)] = &[
+        ("/accuracy/constraint_drift", "m or rad"),
+        ("/accuracy/energy_form_time_difference", "s"),
+        ("/accuracy/energy_residual", "1"),
+        ("/accuracy/estimated_error", "rad"),
+        ("/accuracy/function_evaluations", "1"),
+        ("/accuracy/steps", "1"),
+        ("/energy_residual", "1"),
+        ("/events/*/angle", "rad"),
+        ("/events/*/speed", "rad/s"),
+        ("/events/*/t", "s"),
+        ("/events/*/t_energy_form", "s"),
+        ("/machine/dof", "1"),
+        ("/machine/near_singular/*", "s"),
+        ("/machine/redundant_constraints", "1"),
+        ("/machine/samples/*/constraint_residual", "m or rad"),
+        ("/machine/samples/*/inputs/*/angle", "rad"),
+        ("/machine/samples/*/inputs/*/speed", "rad/s"),
+        ("/machine/samples/*/inputs/*/acceleration", "rad/s^2"),
+        ("/machine/samples/*/reactions/*/fx", "N"),
+        ("/machine/samples/*/reactions/*/fy", "N"),
+        ("/machine/samples/*/reactions/*/moment", "N*m"),
+        ("/machine/samples/*/t", "s"),
+        ("/samples/*/acceleration", "rad/s^2"),
+        ("/samples/*/angle", "rad"),
+        ("/samples/*/speed", "rad/s"),
+        ("/samples/*/t", "s"),
+    ];
+    type Request = DynamicsRequest;
+    type Result = DynamicsResult;
+
+    fn compute(
+        request: &DynamicsRequest,
+        unknown: Vec<FieldError>,
+        limits: &Limits,
+    ) -> Result<DynamicsResult, ApiError> {
+        compute(request, unknown, limits)
+    }
+
+    fn table(result: &Value) -> Option<Table> {
+        Some(csv_table(result))
+    }
 }
 
 /// Validates and solves a request within `limits`, stopping the integration
 /// when the compute budget runs out.
-pub fn compute_within(
-    request: &DynamicsRequest,
-    unknown: Vec<FieldError>,
-    limits: &Limits,
-) -> Result<DynamicsResult, ApiError> {
+fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits) -> Result<DynamicsResult, ApiError> {
     match validated(unknown, request.to_problem(limits))? {
         Problem::Reduced(p) => Ok(DynamicsResult::from(solve(&p).map_err(invalid)?)),
         Problem::Machine(p, joints, bodies) => {

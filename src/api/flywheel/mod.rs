@@ -8,41 +8,81 @@ pub use result::{
     AccuracyDto, AreaDto, CSV_COLUMNS, CheckDto, DiskOut, FlywheelResult, InertiaPair, ItemWork, SampleDto, csv_table,
 };
 
-use super::json::JsonBody;
+use super::kind::{Kind, Table};
 use super::limits::Limits;
-use super::problem::{ApiError, FieldError, PostErrors};
-use super::{AppState, create, engine_failure, jobs, validated};
+use super::problem::{ApiError, FieldError};
+use super::{engine_failure, validated};
 use crate::engine::Deadline;
 use crate::engine::flywheel::solve;
-use axum::extract::State;
-use axum::response::Response;
+use serde_json::Value;
 
-/// Designs a flywheel: balance torque, lobes of M*, energy fluctuation, and the
-/// inertia by the approximate and the exact (Wittenbauer) method, checked by a
-/// time simulation.
-#[utoipa::path(post, path = "/v1/flywheel", operation_id = "create_flywheel_job", tag = "flywheel", request_body = FlywheelRequest,
-    responses(
-        (status = 201, description = "Job computed and stored; `result` is a FlywheelResult", body = jobs::JobOf<FlywheelResult>,
-            headers(("Location" = String, description = "/v1/jobs/{id}"))),
-        PostErrors,
-    ))]
-pub async fn create(State(state): State<AppState>, body: JsonBody<FlywheelRequest>) -> Result<Response, ApiError> {
-    let JsonBody { value, raw, unknown } = body;
-    let limits = state.limits.clone();
-    create::create(&state, "flywheel", raw, move || compute_within(&value, unknown, &limits)).await
-}
+/// Flywheel: `POST /v1/flywheel`.
+pub struct Flywheel;
 
-/// Validates and solves a request within the default limits (`mechdyn solve flywheel`).
-pub fn compute(request: &FlywheelRequest, unknown: Vec<FieldError>) -> Result<FlywheelResult, ApiError> {
-    compute_within(request, unknown, &Limits::default())
+impl Kind for Flywheel {
+    const NAME: &'static str = "flywheel";
+    const PATH: &'static str = "/v1/flywheel";
+    const OPERATION_ID: &'static str = "create_flywheel_job";
+    const TAG: &'static str = "flywheel";
+    const SUMMARY: &'static str = "Designs a flywheel: balance torque, lobes of M*, energy fluctuation, and the inertia by the approximate and the exact (Wittenbauer) method, checked by a time simulation.";
+    const UNITS: &'static [(&'static str, &'static str)] = &[
+        ("/accuracy/check_relative_difference", "1"),
+        ("/accuracy/estimated_relative_error", "1"),
+        ("/accuracy/function_evaluations", "1"),
+        ("/accuracy/quadrature_error", "J"),
+        ("/areas/*/from", "rad"),
+        ("/areas/*/to", "rad"),
+        ("/areas/*/work", "J"),
+        ("/balance_torque", "N*m"),
+        ("/check/cycle_time", "s"),
+        ("/check/irregularity", "1"),
+        ("/check/mean_speed", "rad/s"),
+        ("/check/omega_max", "rad/s"),
+        ("/check/omega_min", "rad/s"),
+        ("/check/periodicity_error", "1"),
+        ("/check/steps", "1"),
+        ("/crossings/*", "rad"),
+        ("/cumulative/*", "J"),
+        ("/disk/mass", "kg"),
+        ("/disk/radius", "m"),
+        ("/disk/rim_speed", "m/s"),
+        ("/disk/thickness", "m"),
+        ("/energy_fluctuation", "J"),
+        ("/flywheel_inertia/*", "kg*m^2"),
+        ("/inertia_approximate", "kg*m^2"),
+        ("/inertia_exact", "kg*m^2"),
+        ("/item_work/*/work", "J"),
+        ("/kinetic_energy_at_start", "J"),
+        ("/mean_power", "W"),
+        ("/omega_at_start", "rad/s"),
+        ("/omega_max", "rad/s"),
+        ("/omega_min", "rad/s"),
+        ("/phi_at_omega_max", "rad"),
+        ("/phi_at_omega_min", "rad"),
+        ("/samples/*/angle", "rad"),
+        ("/samples/*/reduced_inertia", "kg*m^2"),
+        ("/samples/*/reduced_torque", "N*m"),
+        ("/samples/*/speed", "rad/s"),
+        ("/samples/*/work", "J"),
+    ];
+    type Request = FlywheelRequest;
+    type Result = FlywheelResult;
+
+    fn compute(
+        request: &FlywheelRequest,
+        unknown: Vec<FieldError>,
+        limits: &Limits,
+    ) -> Result<FlywheelResult, ApiError> {
+        compute(request, unknown, limits)
+    }
+
+    fn table(result: &Value) -> Option<Table> {
+        Some(csv_table(result))
+    }
 }
 
 /// Validates and solves a request within `limits`, stopping when the compute budget runs out.
-pub fn compute_within(
-    request: &FlywheelRequest,
-    unknown: Vec<FieldError>,
-    limits: &Limits,
-) -> Result<FlywheelResult, ApiError> {
+fn compute(request: &FlywheelRequest, unknown: Vec<FieldError>, limits: &Limits) -> Result<FlywheelResult, ApiError> {
     let deadline = Deadline::after(limits.budget);
     let p = validated(unknown, request.to_problem(limits, deadline)).map_err(|e| match deadline.expired() {
         true => ApiError::OverBudget(deadline.exceeded("while assembling the machine".into()).to_string()),

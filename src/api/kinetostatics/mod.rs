@@ -11,36 +11,96 @@ pub(crate) use request::machine_parts;
 pub use request::{InputDto, Inputs, KinetostaticsRequest, OutputKind};
 pub use result::{KinetostaticsResult, ReactionDto, Scalars, csv_table};
 
-use super::json::JsonBody;
+use super::kind::{Kind, Table, unit_in};
 use super::limits::Limits;
-use super::problem::{ApiError, FieldError, PostErrors};
-use super::{AppState, create, jobs, validated};
+use super::problem::{ApiError, FieldError};
+use super::{create, validated};
 use crate::engine::Deadline;
 use crate::engine::kinetostatics::solve;
-use axum::extract::State;
-use axum::response::Response;
+use serde_json::Value;
 
-/// Inverse dynamics over a range of input positions: driving torque or force,
-/// every joint reaction, reduced inertia and torque, checked by virtual power.
-#[utoipa::path(post, path = "/v1/kinetostatics", operation_id = "create_kinetostatics_job", tag = "kinetostatics", request_body = KinetostaticsRequest,
-    responses(
-        (status = 201, description = "Job computed and stored; `result` is a KinetostaticsResult", body = jobs::JobOf<KinetostaticsResult>,
-            headers(("Location" = String, description = "/v1/jobs/{id}"))),
-        PostErrors,
-    ))]
-pub async fn create(State(state): State<AppState>, body: JsonBody<KinetostaticsRequest>) -> Result<Response, ApiError> {
-    let JsonBody { value, raw, unknown } = body;
-    let limits = state.limits.clone();
-    create::create(&state, "kinetostatics", raw, move || compute_within(&value, unknown, &limits)).await
-}
+/// Kinetostatics: `POST /v1/kinetostatics`.
+pub struct Kinetostatics;
 
-/// Validates and solves a request within the default limits (`mechdyn solve kinetostatics`).
-pub fn compute(request: &KinetostaticsRequest, unknown: Vec<FieldError>) -> Result<KinetostaticsResult, ApiError> {
-    compute_within(request, unknown, &Limits::default())
+impl Kind for Kinetostatics {
+    const NAME: &'static str = "kinetostatics";
+    const PATH: &'static str = "/v1/kinetostatics";
+    const OPERATION_ID: &'static str = "create_kinetostatics_job";
+    const TAG: &'static str = "kinetostatics";
+    const SUMMARY: &'static str = "Inverse dynamics over a range of input positions: driving torque or force, every joint reaction, reduced inertia and torque, checked by virtual power.";
+    const UNITS: &'static [(&'static str, &'static str)] = &[
+        ("/dof", "1"),
+        ("/grubler/*", "1"),
+        ("/redundant_constraints", "1"),
+        ("/steps/*/reduced_inertia", "@inertia"),
+        ("/steps/*/reduced_torque", "@torque"),
+        ("/steps/*/energy_contribution/*", "1"),
+        ("/steps/*/jacobian_condition", "1"),
+        ("/steps/*/kinematics/*/x", "m"),
+        ("/steps/*/kinematics/*/y", "m"),
+        ("/steps/*/kinematics/*/theta", "rad"),
+        ("/steps/*/kinematics/*/vx", "m/s"),
+        ("/steps/*/kinematics/*/vy", "m/s"),
+        ("/steps/*/kinematics/*/omega", "rad/s"),
+        ("/steps/*/kinematics/*/ax", "m/s^2"),
+        ("/steps/*/kinematics/*/ay", "m/s^2"),
+        ("/steps/*/kinematics/*/alpha", "rad/s^2"),
+        ("/steps/*/reactions/*/fx", "N"),
+        ("/steps/*/reactions/*/fy", "N"),
+        ("/steps/*/reactions/*/moment", "N*m"),
+        ("/summary/max_reaction/*", "N"),
+        ("/summary/virtual_power_residual", "1"),
+        ("/summary/max_jacobian_condition", "1"),
+        ("/accuracy/max_constraint_residual", "m or rad"),
+        ("/accuracy/max_newton_iterations", "1"),
+        ("/accuracy/max_friction_iterations", "1"),
+        ("/accuracy/virtual_power_residual", "1"),
+    ];
+    type Request = KinetostaticsRequest;
+    type Result = KinetostaticsResult;
+
+    fn compute(
+        request: &KinetostaticsRequest,
+        unknown: Vec<FieldError>,
+        limits: &Limits,
+    ) -> Result<KinetostaticsResult, ApiError> {
+        compute(request, unknown, limits)
+    }
+
+    fn table(result: &Value) -> Option<Table> {
+        Some(csv_table(result))
+    }
+
+    /// Inputs and driving actions are in the units of their input (m and N
+    /// for a slider, rad and N·m for a crank), as are I* and M* of the first.
+    fn unit(result: &Value, pointer: &[&str]) -> Option<String> {
+        let input = |k: usize, key: &str| result["inputs"][k][key].as_str().map(String::from);
+        let linear = input(0, "coordinate_unit").is_some_and(|u| u == "m");
+        let scalar = |rest: &[&str]| match rest {
+            [] => Some(0),
+            [k] => k.parse().ok(),
+            _ => None,
+        };
+        match pointer {
+            ["steps", _, "input", rest @ ..] => input(scalar(rest)?, "coordinate_unit"),
+            ["summary", "singular_inputs" | "near_singular_inputs", _, rest @ ..] => {
+                input(scalar(rest)?, "coordinate_unit")
+            }
+            ["steps", _, "driving", rest @ ..]
+            | ["summary", "max_abs_driving" | "mean_driving" | "rms_driving", rest @ ..] => {
+                input(scalar(rest)?, "driving_unit")
+            }
+            _ => match unit_in(Self::UNITS, pointer)? {
+                "@inertia" => Some(if linear { "kg" } else { "kg*m^2" }.into()),
+                "@torque" => Some(if linear { "N" } else { "N*m" }.into()),
+                u => Some(u.into()),
+            },
+        }
+    }
 }
 
 /// Validates and solves a request within `limits`, stopping when the compute budget runs out.
-pub fn compute_within(
+fn compute(
     request: &KinetostaticsRequest,
     unknown: Vec<FieldError>,
     limits: &Limits,

@@ -1,0 +1,186 @@
+//! A calculation kind, described once: its name and path, its request and
+//! result types, how it computes, its table and the units of its result's
+//! fields. Every generic feature (the POST, the OpenAPI operation, the CLI's
+//! `solve`, CSV, parts of a result with their units, the document's
+//! examples) is written once over [`Kind`] and reaches every kind through
+//! the registry ([`KINDS`]), never through a `match` on a kind's name.
+
+use super::create::JobResult;
+use super::limits::Limits;
+use super::problem::{ApiError, FieldError, PostErrors};
+use super::{AppState, dynamics, equivalent, flywheel, gear_train, gears, jobs, kinetostatics, rotor};
+use serde::de::DeserializeOwned;
+use serde_json::Value;
+use std::marker::PhantomData;
+use utoipa::openapi::path::{HttpMethod, OperationBuilder, Paths, PathsBuilder};
+use utoipa::openapi::request_body::RequestBodyBuilder;
+use utoipa::openapi::{ContentBuilder, HeaderBuilder, Ref, Required, ResponseBuilder, ResponsesBuilder};
+use utoipa::{PartialSchema, ToSchema};
+use utoipa_axum::router::UtoipaMethodRouter;
+
+/// A table of a result: the header (names with units, e.g. `angle_rad`)
+/// and the rows, as text.
+pub type Table = (Vec<String>, Vec<Vec<String>>);
+
+/// The unit of a dimensionless number (a ratio, a count, an error estimate).
+pub const DIMENSIONLESS: &str = "1";
+
+/// One calculation kind of the service.
+pub trait Kind: Send + Sync + 'static {
+    /// The jobs' `kind`, e.g. `flywheel`.
+    const NAME: &'static str;
+    /// Path of the POST that creates its jobs.
+    const PATH: &'static str;
+    /// `operationId` of that POST.
+    const OPERATION_ID: &'static str;
+    /// OpenAPI tag.
+    const TAG: &'static str;
+    /// What the POST computes, in one line.
+    const SUMMARY: &'static str;
+    /// Units of the result's numbers: a JSON pointer pattern (`*` stands for
+    /// any index or key) and the unit, [`DIMENSIONLESS`] for a pure number.
+    const UNITS: &'static [(&'static str, &'static str)];
+    type Request: DeserializeOwned + ToSchema + Send + 'static;
+    type Result: JobResult + ToSchema + Send + 'static;
+
+    /// Validates (`unknown`: the body's unknown fields, reported with the
+    /// conversion's errors) and computes a request within `limits`.
+    fn compute(request: &Self::Request, unknown: Vec<FieldError>, limits: &Limits) -> Result<Self::Result, ApiError>;
+
+    /// The main table of a stored result, for CSV; None when it has none.
+    fn table(_result: &Value) -> Option<Table> {
+        None
+    }
+
+    /// The unit of the number at `pointer` (split into tokens) of `result`.
+    /// Kinds whose units depend on the request (a force or a torque drives
+    /// a mechanism) override this and fall back to [`unit_in`].
+    fn unit(_result: &Value, pointer: &[&str]) -> Option<String> {
+        unit_in(Self::UNITS, pointer).map(String::from)
+    }
+}
+
+/// The unit of `pointer` in a table of patterns.
+pub fn unit_in(units: &'static [(&'static str, &'static str)], pointer: &[&str]) -> Option<&'static str> {
+    units.iter().find(|(pattern, _)| matches(pattern, pointer)).map(|(_, u)| *u)
+}
+
+fn matches(pattern: &str, pointer: &[&str]) -> bool {
+    let tokens: Vec<&str> = pattern.split('/').skip(1).collect();
+    tokens.len() == pointer.len() && tokens.iter().zip(pointer).all(|(p, t)| *p == "*" || p == t)
+}
+
+/// A kind seen without its types: what the registry holds.
+pub trait AnyKind: Send + Sync {
+    fn name(&self) -> &'static str;
+    fn path(&self) -> &'static str;
+    /// The POST's route with its OpenAPI operation and schemas.
+    fn route(&self) -> UtoipaMethodRouter<AppState>;
+    /// Parses and computes a JSON request as the POST would: the result's
+    /// JSON, the same bytes the service stores.
+    fn solve(&self, raw: String, limits: &Limits) -> Result<Vec<u8>, ApiError>;
+    fn request_schema(&self) -> String;
+    fn result_schema(&self) -> String;
+    fn units(&self) -> &'static [(&'static str, &'static str)];
+    fn table(&self, result: &Value) -> Option<Table>;
+    fn unit(&self, result: &Value, pointer: &[&str]) -> Option<String>;
+}
+
+/// A [`Kind`] in the registry.
+pub struct Registered<K>(PhantomData<fn() -> K>);
+
+impl<K: Kind> AnyKind for Registered<K> {
+    fn name(&self) -> &'static str {
+        K::NAME
+    }
+    fn path(&self) -> &'static str {
+        K::PATH
+    }
+    fn route(&self) -> UtoipaMethodRouter<AppState> {
+        let mut schemas = Vec::new();
+        K::Request::schemas(&mut schemas);
+        K::Result::schemas(&mut schemas);
+        schemas.push((K::Request::name().into(), K::Request::schema()));
+        schemas.push((K::Result::name().into(), K::Result::schema()));
+        schemas.push((job_schema::<K>(), jobs::JobOf::<K::Result>::schema()));
+        (schemas, operation::<K>(), axum::routing::post(super::create::post::<K>))
+    }
+    fn solve(&self, raw: String, limits: &Limits) -> Result<Vec<u8>, ApiError> {
+        let body = super::json::parse::<K::Request>(raw)?;
+        let result = K::compute(&body.value, body.unknown, limits)?;
+        serde_json::to_vec(&result).map_err(|e| ApiError::Internal(format!("result: {e}")))
+    }
+    fn request_schema(&self) -> String {
+        K::Request::name().into()
+    }
+    fn result_schema(&self) -> String {
+        K::Result::name().into()
+    }
+    fn units(&self) -> &'static [(&'static str, &'static str)] {
+        K::UNITS
+    }
+    fn table(&self, result: &Value) -> Option<Table> {
+        K::table(result)
+    }
+    fn unit(&self, result: &Value, pointer: &[&str]) -> Option<String> {
+        K::unit(result, pointer)
+    }
+}
+
+/// The POST's operation: the request's schema, the 201 job with this
+/// kind's result, and the errors every POST may answer.
+fn operation<K: Kind>() -> Paths {
+    let request = RequestBodyBuilder::new()
+        .content("application/json", ContentBuilder::new().schema(Some(Ref::from_schema_name(K::Request::name()))))
+        .required(Some(Required::True));
+    let created = ResponseBuilder::new()
+        .description(format!("Job computed and stored; `result` is {}", with_article(&K::Result::name())))
+        .header(
+            "Location",
+            HeaderBuilder::new().schema(Some(String::schema())).description(Some("/v1/jobs/{id}")).build(),
+        )
+        .content(
+            "application/json",
+            ContentBuilder::new().schema(Some(Ref::from_schema_name(job_schema::<K>()))).build(),
+        );
+    let responses = ResponsesBuilder::new().response("201", created).responses_from_into_responses::<PostErrors>();
+    let op = OperationBuilder::new()
+        .tag(K::TAG)
+        .summary(Some(K::SUMMARY))
+        .operation_id(Some(K::OPERATION_ID))
+        .request_body(Some(request.build()))
+        .responses(responses);
+    PathsBuilder::new().path(K::PATH, utoipa::openapi::PathItem::new(HttpMethod::Post, op)).build()
+}
+
+/// Name of the schema of a job of kind `K` (its `result` typed).
+fn job_schema<K: Kind>() -> String {
+    format!("JobOf_{}", K::Result::name())
+}
+
+/// "an EquivalentResult", "a FlywheelResult".
+fn with_article(name: &str) -> String {
+    let vowel = name.starts_with(['A', 'E', 'I', 'O', 'U']);
+    format!("{} {name}", if vowel { "an" } else { "a" })
+}
+
+/// Every kind of the service, in the order of the documentation.
+pub static KINDS: [&dyn AnyKind; 7] = [
+    &Registered::<flywheel::Flywheel>(PhantomData),
+    &Registered::<kinetostatics::Kinetostatics>(PhantomData),
+    &Registered::<dynamics::Dynamics>(PhantomData),
+    &Registered::<gears::Gears>(PhantomData),
+    &Registered::<gear_train::GearTrain>(PhantomData),
+    &Registered::<equivalent::EquivalentMasses>(PhantomData),
+    &Registered::<rotor::RigidRotor>(PhantomData),
+];
+
+/// The kind of this name.
+pub fn find(name: &str) -> Option<&'static dyn AnyKind> {
+    KINDS.iter().copied().find(|k| k.name() == name)
+}
+
+/// The kinds' names, for messages.
+pub fn names() -> Vec<&'static str> {
+    KINDS.iter().map(|k| k.name()).collect()
+}

@@ -1,0 +1,171 @@
+//! Parts of a stored job's result: one value by JSON pointer, answered as
+//! plain text for a spreadsheet's `WEBSERVICE()` in a unit of the client's
+//! choice, and every scalar with its unit (`/values`, JSON or CSV).
+
+use super::AppState;
+use super::body::guarded;
+use super::jobs::{CSV_MEMORY_FACTOR, load};
+use super::kind;
+use super::problem::{ApiError, FieldError, Problem, ReadErrors};
+use super::tables::{self, Angles, Values};
+use crate::store::JobRow;
+use axum::body::Body;
+use axum::extract::rejection::QueryRejection;
+use axum::extract::{Path, Query, State};
+use axum::http::{HeaderMap, header};
+use axum::response::{IntoResponse, Response};
+use serde_json::Value;
+use std::collections::HashMap;
+
+/// The query of a read: its parameters by name, each checked against `known`.
+pub fn query(
+    query: Result<Query<HashMap<String, String>>, QueryRejection>,
+    known: &[&str],
+) -> Result<HashMap<String, String>, ApiError> {
+    let Query(q) = query.map_err(|e| ApiError::BadQuery(vec![FieldError::parameter("", e.body_text())]))?;
+    let unknown: Vec<FieldError> = q
+        .keys()
+        .filter(|k| !known.contains(&k.as_str()))
+        .map(|k| FieldError::parameter(k, format!("unknown parameter (known: {})", known.join(", "))))
+        .collect();
+    if unknown.is_empty() { Ok(q) } else { Err(ApiError::BadQuery(unknown)) }
+}
+
+/// Whether the client asked for `mime` in `Accept` (or `?format=`).
+pub fn wants(headers: &HeaderMap, format: Option<&String>, mime: &str) -> bool {
+    let short = mime.rsplit('/').next().unwrap_or(mime);
+    if let Some(f) = format {
+        return f.eq_ignore_ascii_case(short);
+    }
+    headers.get_all(header::ACCEPT).iter().filter_map(|v| v.to_str().ok()).any(|v| v.contains(mime))
+}
+
+/// The stored result of a job as a JSON tree, with the memory it takes reserved.
+pub async fn result_tree(
+    state: &AppState,
+    id: &str,
+) -> Result<(JobRow, Value, tokio::sync::OwnedSemaphorePermit), ApiError> {
+    let (row, reserved) = load(state, id, CSV_MEMORY_FACTOR).await?;
+    let result = serde_json::from_slice(&row.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
+    Ok((row, result, reserved))
+}
+
+/// One part of a job's result, by JSON pointer.
+///
+/// A number, text, flag or null is answered alone as `text/plain` (numbers
+/// in shortest round-trip form), unless `Accept: application/json` asks for
+/// JSON; an object or an array is answered as JSON. `?unit=` converts a
+/// number to another unit of its dimension (`?unit=slug*ft^2`).
+#[utoipa::path(get, path = "/v1/jobs/{id}/result/{pointer}", operation_id = "get_job_result_part", tag = "jobs",
+    params(
+        ("id" = String, Path, description = "Job id"),
+        ("pointer" = String, Path, description = "JSON pointer into the result without its leading `/`: \
+            `inertia_exact`, `flywheel_inertia/exact`, `steps/90/driving` (RFC 6901: `~1` for a `/` in a key, `~0` for `~`)"),
+        ("unit" = Option<String>, Query, description = "Convert a number to this unit, e.g. `slug*ft^2`, `rpm`, `deg`, `%`"),
+    ),
+    responses(
+        (status = 200, description = "The value alone (text/plain), or JSON for an object or array or with `Accept: application/json`",
+            content((String = "text/plain", example = "353.52142732201156"), (Object = "application/json"))),
+        (status = 400, description = "A unit of the wrong dimension, a part without a unit, or an unknown query parameter",
+            body = Problem, content_type = "application/problem+json",
+            example = json!({"type": "/problems/invalid-query", "title": "Invalid query parameters", "status": 400,
+                "detail": "invalid query parameters",
+                "errors": [{"parameter": "unit", "message": "'rpm' is a unit of rad/s; the part at /inertia_exact is in kg*m^2"}]})),
+        ReadErrors,
+    ))]
+pub async fn part(
+    State(state): State<AppState>,
+    Path((id, pointer)): Path<(String, String)>,
+    headers: HeaderMap,
+    q: Result<Query<HashMap<String, String>>, QueryRejection>,
+) -> Result<Response, ApiError> {
+    let q = query(q, &["unit"])?;
+    let (row, result, _reserved) = result_tree(&state, &id).await?;
+    let tokens = tables::tokens(&pointer);
+    let pointer = format!("/{}", pointer.trim_start_matches('/'));
+    let Some(value) = tokens.iter().try_fold(&result, |v, t| step(v, t)) else {
+        return Err(ApiError::NoPart { id, pointer });
+    };
+    let kind = kind::find(&row.kind);
+    let value = match (q.get("unit"), value.as_f64()) {
+        (Some(target), Some(x)) => {
+            let refs: Vec<&str> = tokens.iter().map(String::as_str).collect();
+            let unit = kind.and_then(|k| k.unit(&result, &refs));
+            Value::from(tables::convert(x, unit.as_deref(), target, &pointer)?)
+        }
+        (Some(_), None) => {
+            let message = format!("the part at {pointer} is not a number: it has no unit to convert");
+            return Err(ApiError::BadQuery(vec![FieldError::parameter("unit", message)]));
+        }
+        (None, _) => value.clone(),
+    };
+    let json = value.is_object() || value.is_array() || wants(&headers, None, "application/json");
+    if json {
+        return Ok(([(header::CONTENT_TYPE, "application/json")], value.to_string()).into_response());
+    }
+    let text = match value.as_f64() {
+        Some(x) if !value.is_i64() && !value.is_u64() => tables::number_text(x),
+        _ => tables::cell(&value),
+    };
+    Ok(([(header::CONTENT_TYPE, "text/plain; charset=utf-8")], text).into_response())
+}
+
+/// The child of `v` at one pointer token: a key, or an array index written
+/// without leading zeros.
+fn step<'a>(v: &'a Value, token: &str) -> Option<&'a Value> {
+    match v {
+        Value::Object(map) => map.get(token),
+        Value::Array(items) if token == "0" || !token.starts_with('0') => items.get(token.parse::<usize>().ok()?),
+        _ => None,
+    }
+}
+
+/// Every scalar of a job's result with its unit.
+///
+/// JSON `{"values": [{"pointer", "value", "unit"}]}`, or CSV
+/// `pointer,value,unit` with `Accept: text/csv` (or `?format=csv`);
+/// `?angles=deg` gives angles in degrees.
+#[utoipa::path(get, path = "/v1/jobs/{id}/values", operation_id = "get_job_values", tag = "jobs",
+    params(
+        ("id" = String, Path, description = "Job id"),
+        ("format" = Option<String>, Query, description = "`json` (default) or `csv`; the same as `Accept: text/csv`"),
+        ("angles" = Option<String>, Query, description = "`rad` (default) or `deg`"),
+    ),
+    responses(
+        (status = 200, description = "Every scalar of the result",
+            content((Values = "application/json"), (String = "text/csv", example = "pointer,value,unit\n/inertia_exact,353.52142732201156,kg*m^2\n"))),
+        (status = 400, description = "An invalid query parameter", body = Problem, content_type = "application/problem+json"),
+        ReadErrors,
+    ))]
+pub async fn values(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+    headers: HeaderMap,
+    q: Result<Query<HashMap<String, String>>, QueryRejection>,
+) -> Result<Response, ApiError> {
+    let q = query(q, &["format", "angles"])?;
+    let angles = Angles::parse(q.get("angles")).map_err(|e| ApiError::BadQuery(vec![e]))?;
+    if let Some(f) = q.get("format").filter(|f| !["csv", "json"].contains(&f.to_ascii_lowercase().as_str())) {
+        return Err(ApiError::BadQuery(vec![FieldError::parameter("format", format!("'{f}': must be csv or json"))]));
+    }
+    let csv = wants(&headers, q.get("format"), "text/csv");
+    let (row, result, reserved) = result_tree(&state, &id).await?;
+    let kind = kind::find(&row.kind).ok_or_else(|| ApiError::Internal(format!("stored kind {}", row.kind)))?;
+    let (mime, text) = tokio::task::spawn_blocking(move || {
+        let mut values = tables::flatten(kind, &result);
+        if csv {
+            return tables::values_csv(values, angles).map(|t| ("text/csv; charset=utf-8", t));
+        }
+        if angles == Angles::Deg {
+            for s in values.iter_mut().filter(|s| s.unit.as_deref() == Some("rad")) {
+                s.value = s.value.as_f64().map_or(Value::Null, |x| x.to_degrees().into());
+                s.unit = Some("deg".into());
+            }
+        }
+        let text = serde_json::to_string(&Values { values }).map_err(|e| ApiError::Internal(e.to_string()))?;
+        Ok(("application/json", text))
+    })
+    .await
+    .map_err(|e| ApiError::Internal(format!("values task: {e}")))??;
+    Ok(([(header::CONTENT_TYPE, mime)], guarded(Body::from(text), reserved)).into_response())
+}

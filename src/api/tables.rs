@@ -1,0 +1,170 @@
+//! A stored result as text for spreadsheets: one value in a unit of the
+//! client's choice, every scalar flattened with its unit, and the CSV of a
+//! kind's table or of those values, with angles in degrees on request.
+//! Written once for every kind through the registry ([`AnyKind`]).
+
+use super::kind::{AnyKind, DIMENSIONLESS, Table};
+use super::problem::{ApiError, FieldError};
+use crate::units::{Dim, parse_unit};
+use serde::Serialize;
+use serde_json::Value;
+use utoipa::ToSchema;
+
+/// One scalar of a result.
+#[derive(Serialize, ToSchema)]
+pub struct Scalar {
+    /// JSON pointer relative to `result`, e.g. `/inertia_exact`.
+    pub pointer: String,
+    /// A number, string, boolean or null.
+    #[schema(value_type = Object)]
+    pub value: Value,
+    /// The unit of a number (`1`: dimensionless); null for a text, a flag or a name.
+    pub unit: Option<String>,
+}
+
+/// Every scalar of a result, flattened.
+#[derive(Serialize, ToSchema)]
+pub struct Values {
+    pub values: Vec<Scalar>,
+}
+
+/// How angle columns and values are written.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Angles {
+    Rad,
+    Deg,
+}
+
+impl Angles {
+    /// `?angles=rad|deg`, 400 otherwise.
+    pub fn parse(text: Option<&String>) -> Result<Self, FieldError> {
+        match text.map(|t| t.trim().to_ascii_lowercase()).as_deref() {
+            None | Some("rad") => Ok(Self::Rad),
+            Some("deg") => Ok(Self::Deg),
+            Some(_) => Err(FieldError::parameter("angles", "must be rad or deg")),
+        }
+    }
+}
+
+/// RFC 6901 tokens of a pointer (without its leading `/`), unescaped.
+pub fn tokens(pointer: &str) -> Vec<String> {
+    let pointer = pointer.strip_prefix('/').unwrap_or(pointer);
+    pointer.split('/').map(|t| t.replace("~1", "/").replace("~0", "~")).collect()
+}
+
+fn escape(token: &str) -> String {
+    token.replace('~', "~0").replace('/', "~1")
+}
+
+/// Every scalar of `result` in document order, with its unit.
+pub fn flatten(kind: &dyn AnyKind, result: &Value) -> Vec<Scalar> {
+    let mut out = Vec::new();
+    let mut path = Vec::new();
+    walk(kind, result, result, &mut path, &mut out);
+    out
+}
+
+fn walk(kind: &dyn AnyKind, root: &Value, v: &Value, path: &mut Vec<String>, out: &mut Vec<Scalar>) {
+    let mut child = |key: String, item: &Value, path: &mut Vec<String>| {
+        path.push(key);
+        walk(kind, root, item, path, out);
+        path.pop();
+    };
+    match v {
+        Value::Object(map) => map.iter().for_each(|(k, item)| child(k.clone(), item, path)),
+        Value::Array(items) => items.iter().enumerate().for_each(|(i, item)| child(i.to_string(), item, path)),
+        scalar => {
+            let tokens: Vec<&str> = path.iter().map(String::as_str).collect();
+            let unit = if scalar.is_number() { kind.unit(root, &tokens) } else { None };
+            let pointer = path.iter().map(|t| format!("/{}", escape(t))).collect();
+            out.push(Scalar { pointer, value: scalar.clone(), unit });
+        }
+    }
+}
+
+/// `value` (in `unit`, the field's own) converted to `target`; the errors
+/// name the query parameter `unit`.
+pub fn convert(value: f64, unit: Option<&str>, target: &str, pointer: &str) -> Result<f64, ApiError> {
+    let bad = |message: String| ApiError::BadQuery(vec![FieldError::parameter("unit", message)]);
+    let Some(unit) = unit else {
+        return Err(bad(format!("the part at {pointer} has no unit to convert")));
+    };
+    let own = if unit == DIMENSIONLESS { Ok((1.0, Dim::NONE)) } else { parse_unit(unit) };
+    let Ok((own_factor, own_dim)) = own else {
+        return Err(bad(format!("the part at {pointer} is in {unit}, which has no single unit to convert from")));
+    };
+    let (factor, dim) = match target.trim() {
+        "1" => (1.0, Dim::NONE),
+        t => parse_unit(t).map_err(|e| bad(format!("'{target}': {e}")))?,
+    };
+    if dim != own_dim {
+        let (found, expected) = (dim.si_name(), own_dim.si_name());
+        let own = if expected == unit { unit.to_string() } else { format!("{unit}, a unit of {expected}") };
+        return Err(bad(format!("'{target}' is a unit of {found}; the part at {pointer} is in {own}")));
+    }
+    Ok(value * own_factor / factor)
+}
+
+/// A number as a spreadsheet reads it: shortest round-trip form (`353.52142732201156`, `1e-7`).
+pub fn number_text(x: f64) -> String {
+    serde_json::Number::from_f64(x).map_or_else(String::new, |n| n.to_string())
+}
+
+/// The CSV of a kind's table, angle columns (`…_rad`) in degrees on request.
+pub fn table_csv(table: Table, angles: Angles) -> Result<String, ApiError> {
+    let (mut header, mut rows) = table;
+    if angles == Angles::Deg {
+        let columns: Vec<usize> = (0..header.len()).filter(|&c| header[c].ends_with("_rad")).collect();
+        for &c in &columns {
+            header[c] = format!("{}_deg", header[c].trim_end_matches("_rad"));
+            for row in &mut rows {
+                if let Some(x) = row.get(c).and_then(|cell| cell.parse::<f64>().ok()) {
+                    row[c] = number_text(x.to_degrees());
+                }
+            }
+        }
+    }
+    write_csv(std::iter::once(header).chain(rows))
+}
+
+/// The CSV `pointer,value,unit` of every scalar, angles in degrees on request.
+pub fn values_csv(values: Vec<Scalar>, angles: Angles) -> Result<String, ApiError> {
+    let header = ["pointer", "value", "unit"].map(String::from).to_vec();
+    let rows = values.into_iter().map(|s| {
+        let (value, unit) = match (s.value.as_f64(), s.unit.as_deref()) {
+            (Some(x), Some("rad")) if angles == Angles::Deg => (number_text(x.to_degrees()), "deg".to_string()),
+            (_, unit) => (cell(&s.value), unit.unwrap_or_default().to_string()),
+        };
+        vec![s.pointer, value, unit]
+    });
+    write_csv(std::iter::once(header).chain(rows))
+}
+
+/// A scalar as a CSV cell or a plain answer: text without quotes, null empty.
+pub fn cell(v: &Value) -> String {
+    match v {
+        Value::String(s) => s.clone(),
+        Value::Null => String::new(),
+        other => other.to_string(),
+    }
+}
+
+fn write_csv(records: impl Iterator<Item = Vec<String>>) -> Result<String, ApiError> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let internal = |e: csv::Error| ApiError::Internal(e.to_string());
+    for record in records {
+        w.write_record(&record).map_err(internal)?;
+    }
+    let bytes = w.into_inner().map_err(|e| ApiError::Internal(e.to_string()))?;
+    String::from_utf8(bytes).map_err(|e| ApiError::Internal(e.to_string()))
+}
+
+/// The CSV of a stored result: its kind's table, or its values when the
+/// kind has none (never an empty body).
+pub fn result_csv(kind: Option<&dyn AnyKind>, result: &Value, angles: Angles) -> Result<String, ApiError> {
+    let Some(kind) = kind else { return Err(ApiError::Internal("a stored job of an unknown kind".into())) };
+    match kind.table(result) {
+        Some(table) if !table.1.is_empty() => table_csv(table, angles),
+        _ => values_csv(flatten(kind, result), angles),
+    }
+}
