@@ -5,7 +5,7 @@ use super::AppState;
 use super::body::{Chunks, guarded};
 use super::jobs::job_chunks;
 use super::json::JsonBody;
-use super::kind::Kind;
+use super::kind::{self, Kind};
 use super::problem::{ApiError, FieldError};
 use crate::store::NewJob;
 use axum::body::Body;
@@ -33,13 +33,18 @@ pub trait JobResult: Serialize {
     fn rows(&self) -> Option<Rows> {
         None
     }
+    /// The result's `warnings`, for the kinds that have them.
+    fn warnings(&mut self) -> Option<&mut Vec<String>> {
+        None
+    }
 }
 
 /// The POST of every kind: its body read strictly, computed and stored ([`create`]).
 pub async fn post<K: Kind>(State(state): State<AppState>, body: JsonBody<K::Request>) -> Result<Response, ApiError> {
     let JsonBody { value, raw, unknown } = body;
     let limits = state.limits.clone();
-    create(&state, K::NAME, raw, move || K::compute(&value, unknown, &limits)).await
+    let request = raw.clone();
+    create(&state, K::NAME, raw, move || kind::compute::<K>(&value, unknown, &request, &limits)).await
 }
 
 /// Runs `compute` once a compute slot is free, off the async workers,

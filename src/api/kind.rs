@@ -60,6 +60,23 @@ pub trait Kind: Send + Sync + 'static {
     }
 }
 
+/// Computes a request of kind `K` as every way in does (the POST, the CLI):
+/// [`Kind::compute`], then the warnings of the request as sent (`raw`),
+/// such as constants no expression reads.
+pub fn compute<K: Kind>(
+    request: &K::Request,
+    unknown: Vec<FieldError>,
+    raw: &[u8],
+    limits: &Limits,
+) -> Result<K::Result, ApiError> {
+    let mut result = K::compute(request, unknown, limits)?;
+    if let Some(warnings) = result.warnings() {
+        let sent = serde_json::from_slice::<Value>(raw).unwrap_or_default();
+        warnings.extend(super::constants::unused(&sent));
+    }
+    Ok(result)
+}
+
 /// The unit of `pointer` in a table of patterns.
 pub fn unit_in(units: &'static [(&'static str, &'static str)], pointer: &[&str]) -> Option<&'static str> {
     units.iter().find(|(pattern, _)| matches(pattern, pointer)).map(|(_, u)| *u)
@@ -107,7 +124,7 @@ impl<K: Kind> AnyKind for Registered<K> {
     }
     fn solve(&self, raw: String, limits: &Limits) -> Result<Vec<u8>, ApiError> {
         let body = super::json::parse::<K::Request>(raw)?;
-        let result = K::compute(&body.value, body.unknown, limits)?;
+        let result = compute::<K>(&body.value, body.unknown, &body.raw, limits)?;
         serde_json::to_vec(&result).map_err(|e| ApiError::Internal(format!("result: {e}")))
     }
     fn request_schema(&self) -> String {

@@ -6,11 +6,13 @@
 
 pub mod admission;
 pub mod body;
+pub mod constants;
 pub mod create;
 pub mod dynamics;
 pub mod equivalent;
 pub mod examples;
 pub mod flywheel;
+pub mod function_csv;
 pub mod gear_train;
 pub mod gears;
 pub mod jobs;

@@ -114,6 +114,13 @@ pub struct FunctionSpec {
     /// Unit of the values (default SI), e.g. "ft*lbf".
     #[schema(max_length = 100)]
     pub unit: Option<String>,
+    /// Unit of a table's angles given as numbers (default rad), e.g. "deg".
+    #[schema(max_length = 100)]
+    pub angle_unit: Option<String>,
+    /// The table as CSV text: two columns, angle and value, an optional
+    /// header row (`,`, `;` or tab between columns; a decimal comma with `;`).
+    #[schema(max_length = 1048576, example = "phi_deg,torque\n0,0\n90,-500\n180,0\n270,0")]
+    pub csv: Option<String>,
 }
 
 /// A function of the cycle angle: a constant (number or quantity string) or an object.
@@ -173,18 +180,34 @@ impl ToSchema for FunctionDto {
     }
 }
 
+/// A table whose angles given as numbers are in a unit of `scale` rad.
+fn scaled_angles(t: &TableDto, scale: f64) -> TableDto {
+    let angle = t
+        .angle
+        .iter()
+        .map(|a| match a {
+            Quantity::Number(x) => Quantity::Number(x * scale),
+            text => text.clone(),
+        })
+        .collect();
+    TableDto { angle, value: t.value.clone() }
+}
+
 /// Collects (pointer, message) errors while converting a request, under
 /// the limits in force.
 #[derive(Default)]
 pub struct Errors {
     pub list: Vec<FieldError>,
     pub limits: Limits,
+    /// The request's `constants` in SI ([`super::constants::read`]): every
+    /// expression read afterwards may use them.
+    pub constants: Vec<(String, f64)>,
 }
 
 impl Errors {
     /// No errors yet, under `limits`.
     pub fn new(limits: &Limits) -> Self {
-        Self { list: Vec::new(), limits: limits.clone() }
+        Self { list: Vec::new(), limits: limits.clone(), constants: Vec::new() }
     }
 
     pub fn push(&mut self, pointer: &str, message: impl Into<String>) {
@@ -221,7 +244,8 @@ impl Errors {
         if let Quantity::Text(s) = q
             && units::parse_quantity(s).is_err()
         {
-            return match Expr::compile(s, &[]).map(|e| e.constant()) {
+            let (length, depth) = (self.limits.expression_length, self.limits.expression_depth);
+            return match Expr::compile_with(s, &[], &self.constants, length, depth).map(|e| e.constant()) {
                 Ok(Some(v)) if v.is_finite() => Some(v),
                 _ => self.fail(
                     at,
@@ -284,24 +308,53 @@ impl Errors {
             },
             None => 1.0,
         };
-        if s.interpolation.is_some() && s.table.is_none() {
+        let tabular = s.table.is_some() || s.csv.is_some();
+        if s.interpolation.is_some() && !tabular {
             self.push(&format!("{at}/interpolation"), "applies to a table only");
         }
-        match (&s.expr, &s.segments, &s.table) {
+        let angle_scale = match &s.angle_unit {
+            Some(_) if !tabular => return self.fail(&format!("{at}/angle_unit"), "applies to a table only"),
+            Some(u) if u.chars().count() > UNIT_MAX_LENGTH => {
+                return self.fail(&format!("{at}/angle_unit"), format!("must be at most {UNIT_MAX_LENGTH} characters"));
+            }
+            Some(u) => match units::unit_factor(u, Dim::ANGLE) {
+                Ok(k) => k,
+                Err(e) => return self.fail(&format!("{at}/angle_unit"), e.to_string()),
+            },
+            None => 1.0,
+        };
+        let csv = match &s.csv {
+            Some(text) => match super::function_csv::table(text, &format!("{at}/csv"), self.limits.table_rows) {
+                Ok(t) => Some(t),
+                Err(e) => return self.fail(e.pointer.as_deref().unwrap_or(at), e.message),
+            },
+            None => None,
+        };
+        let (table, table_at) = match (&s.table, &csv) {
+            (Some(t), None) => (Some(t), format!("{at}/table")),
+            (None, Some(t)) => (Some(t), format!("{at}/csv")),
+            (None, None) => (None, String::new()),
+            (Some(_), Some(_)) => {
+                return self.fail(at, "give exactly one of \"expr\", \"segments\", \"table\" or \"csv\"");
+            }
+        };
+        match (&s.expr, &s.segments, table) {
             (Some(e), None, None) => {
                 self.expr_of(e, &format!("{at}/expr"), vars).map(|e| Function::Expr(e.scaled(scale)))
             }
             (None, Some(segs), None) => self.segments(segs, scale, period, &format!("{at}/segments"), vars),
             (None, None, Some(t)) => {
                 let interp = s.interpolation.unwrap_or(InterpolationDto::Linear);
-                self.table(t, interp, scale, period, &format!("{at}/table"))
+                let t = scaled_angles(t, angle_scale);
+                self.table(&t, interp, scale, period, &table_at)
             }
-            _ => self.fail(at, "give exactly one of \"expr\", \"segments\" or \"table\""),
+            _ => self.fail(at, "give exactly one of \"expr\", \"segments\", \"table\" or \"csv\""),
         }
     }
 
     fn expr_of(&mut self, src: &str, at: &str, variables: &[&str]) -> Option<Expr> {
-        match Expr::compile_within(src, variables, self.limits.expression_length, self.limits.expression_depth) {
+        let (length, depth) = (self.limits.expression_length, self.limits.expression_depth);
+        match Expr::compile_with(src, variables, &self.constants, length, depth) {
             Ok(e) => Some(e),
             Err(e) => self.fail(at, format!("expression does not parse: {e}")),
         }

@@ -4,6 +4,7 @@ mod andrews;
 mod capacity;
 mod cases;
 mod cli;
+mod constants;
 mod crash;
 mod dynamics;
 mod errors;

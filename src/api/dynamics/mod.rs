@@ -8,6 +8,7 @@ use super::limits::Limits;
 use super::problem::{ApiError, FieldError};
 use super::quantity::{Errors, FunctionDto, Quantity};
 use super::{create, validated};
+use crate::api::constants::{self, Constants};
 use crate::engine::Deadline;
 use crate::engine::dynamics::mechanism::{self, MechanismProblem};
 use crate::engine::dynamics::{DynamicsError, DynamicsSolution, End, EventKind, ReducedProblem, solve};
@@ -34,6 +35,11 @@ const DEFAULT_SAMPLES: usize = 201;
     "until_angle": "720 deg"
 }))]
 pub struct DynamicsRequest {
+    /// Named values every expression of this request may read, e.g.
+    /// `{"F": "1200 N", "r": "0.1 m"}`: each a number (SI) or a quantity,
+    /// read in SI. A constant no expression reads is a warning.
+    #[schema(value_type = Option<std::collections::BTreeMap<String, Quantity>>)]
+    pub constants: Option<Constants>,
     /// Reduced form: torques on the machine, positive when they drive it:
     /// Functions whose expressions may read `phi` (reduced to the period),
     /// `omega` and `t`.
@@ -147,6 +153,9 @@ pub struct DynamicsResult {
 }
 
 impl super::create::JobResult for DynamicsResult {
+    fn warnings(&mut self) -> Option<&mut Vec<String>> {
+        Some(&mut self.warnings)
+    }
     fn rows(&self) -> Option<create::Rows> {
         let (field, count) = ("/samples".into(), self.samples.len());
         Some(create::Rows { field, count, also: " (events: one per turn, fewer with a shorter run)" })
@@ -266,6 +275,7 @@ struct Common {
 impl DynamicsRequest {
     fn to_problem(&self, limits: &Limits) -> Result<Problem, Vec<FieldError>> {
         let mut e = Errors::new(limits);
+        constants::read(self.constants.as_ref(), &mut e);
         let c = self.common(&mut e);
         let reduced = !self.torques.is_empty() || self.reduced_inertia.is_some();
         let problem = match (&self.machine, reduced) {

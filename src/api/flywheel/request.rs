@@ -1,5 +1,6 @@
 //! `POST /v1/flywheel` request and its conversion into an engine problem.
 
+use crate::api::constants::{self, Constants};
 use crate::api::kinetostatics::{InputDto, LoadDto, machine_parts};
 use crate::api::limits::Limits;
 use crate::api::mechanism::MechanismDto;
@@ -33,6 +34,11 @@ const DEFAULT_SAMPLES: usize = 361;
     "reduced_inertia": {"expr": "5*sin(phi)^2"}
 }))]
 pub struct FlywheelRequest {
+    /// Named values every expression of this request may read, e.g.
+    /// `{"F": "1200 N", "r": "0.1 m"}`: each a number (SI) or a quantity,
+    /// read in SI. A constant no expression reads is a warning.
+    #[schema(value_type = Option<std::collections::BTreeMap<String, Quantity>>)]
+    pub constants: Option<Constants>,
     /// Cycle length in rad of the reference shaft (default 2π; 4π for a four-stroke engine).
     #[schema(value_type = Option<Quantity>)]
     pub period: Option<Quantity>,
@@ -124,6 +130,7 @@ impl FlywheelRequest {
         deadline: Deadline,
     ) -> Result<FlywheelProblem, Vec<crate::api::problem::FieldError>> {
         let mut e = Errors::new(limits);
+        constants::read(self.constants.as_ref(), &mut e);
         let period = match &self.period {
             Some(q) => e
                 .angle(q, "/period")

@@ -119,6 +119,9 @@ pub struct FlywheelResult {
 }
 
 impl crate::api::create::JobResult for FlywheelResult {
+    fn warnings(&mut self) -> Option<&mut Vec<String>> {
+        Some(&mut self.warnings)
+    }
     fn rows(&self) -> Option<crate::api::create::Rows> {
         let (field, count) = ("/samples".into(), self.samples.len());
         Some(crate::api::create::Rows { field, count, also: " (0 for no table)" })

@@ -2,6 +2,7 @@
 
 use super::loads::{LoadDto, convert_loads};
 use super::located::Written;
+use crate::api::constants::{self, Constants};
 use crate::api::limits::Limits;
 use crate::api::mechanism::MechanismDto;
 use crate::api::problem::FieldError;
@@ -43,6 +44,11 @@ const DEFAULT_STEPS: usize = 360;
                "magnitude": {"expr": "-8000*exp(3*(cos(phi - 0.35) - 1))"}}]
 }))]
 pub struct KinetostaticsRequest {
+    /// Named values every expression of this request may read, e.g.
+    /// `{"F": "1200 N", "r": "0.1 m"}`: each a number (SI) or a quantity,
+    /// read in SI. A constant no expression reads is a warning.
+    #[schema(value_type = Option<std::collections::BTreeMap<String, Quantity>>)]
+    pub constants: Option<Constants>,
     pub mechanism: MechanismDto,
     /// One input, or a list of inputs (one per degree of freedom, sharing `steps`).
     #[schema(value_type = Inputs)]
@@ -151,6 +157,7 @@ pub struct Problem {
 impl KinetostaticsRequest {
     pub fn to_problem(&self, limits: &Limits) -> Result<Problem, Vec<FieldError>> {
         let mut e = Errors::new(limits);
+        constants::read(self.constants.as_ref(), &mut e);
         let converted = self.mechanism.convert(&mut e, "/mechanism");
         let outputs = self.outputs.clone().unwrap_or_else(|| {
             vec![OutputKind::Driving, OutputKind::Reactions, OutputKind::Kinematics, OutputKind::Reduced]

@@ -156,6 +156,9 @@ pub struct KinetostaticsResult {
 }
 
 impl crate::api::create::JobResult for KinetostaticsResult {
+    fn warnings(&mut self) -> Option<&mut Vec<String>> {
+        Some(&mut self.warnings)
+    }
     fn rows(&self) -> Option<crate::api::create::Rows> {
         let field = if self.inputs.len() > 1 { "/input/0/steps" } else { "/input/steps" };
         let also = "; or ask for fewer \"outputs\" (every body's kinematics is the largest)";

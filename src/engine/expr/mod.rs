@@ -29,6 +29,14 @@ pub struct ExprError {
     pub message: String,
 }
 
+/// Whether `name` is taken by the expression language itself: a variable
+/// of some job (`phi`, `t`, `omega`), a constant (`pi`, `e`) or a function.
+pub fn is_reserved(name: &str) -> bool {
+    ["phi", "t", "omega", "pi", "e"].contains(&name)
+        || node::Fn1::from_name(name).is_some()
+        || node::Fn2::from_name(name).is_some()
+}
+
 /// A compiled expression of named variables.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Expr {
@@ -53,6 +61,18 @@ impl Expr {
         max_length: usize,
         max_depth: usize,
     ) -> Result<Self, ExprError> {
+        Self::compile_with(source, variables, &[], max_length, max_depth)
+    }
+
+    /// [`Expr::compile_within`] where `constants` name values too (a
+    /// request's `constants`, in SI): each reads as its number.
+    pub fn compile_with(
+        source: &str,
+        variables: &[&str],
+        constants: &[(String, f64)],
+        max_length: usize,
+        max_depth: usize,
+    ) -> Result<Self, ExprError> {
         let length = source.chars().count();
         if length > max_length {
             return Err(ExprError {
@@ -60,7 +80,7 @@ impl Expr {
                 message: format!("expression has {length} characters; the maximum is {max_length}"),
             });
         }
-        Ok(Self::from_root(parse::Parser::parse(source, variables, max_depth)?.fold()))
+        Ok(Self::from_root(parse::Parser::parse(source, variables, constants, max_depth)?.fold()))
     }
 
     fn from_root(root: Node) -> Self {
@@ -106,6 +126,19 @@ impl Expr {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A constant reads as its value, folded: `F*sin(phi)` with F = 1200 is
+    /// 1200·sin φ (closed form at φ = π/6: 600); a variable of the same name wins.
+    #[test]
+    fn constants_read_as_their_values() {
+        let constants = [("F".to_string(), 1200.0), ("phi0".to_string(), 0.5)];
+        let e = Expr::compile_with("F*sin(phi) + 0*phi0", &["phi"], &constants, 100, 10).unwrap();
+        assert!((e.eval(&[std::f64::consts::PI / 6.0]) - 600.0).abs() < 1e-12);
+        assert_eq!(Expr::compile_with("F/2", &[], &constants, 100, 10).unwrap().constant(), Some(600.0));
+        let unknown = Expr::compile_with("G", &["phi"], &constants, 100, 10).unwrap_err();
+        assert!(unknown.message.contains("constants: F, phi0, pi, e"), "{}", unknown.message);
+        assert!(is_reserved("sin") && is_reserved("omega") && !is_reserved("F"));
+    }
 
     fn value(src: &str, x: f64) -> f64 {
         Expr::compile(src, &["x"]).unwrap().eval(&[x])

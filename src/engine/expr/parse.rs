@@ -88,13 +88,20 @@ pub(super) struct Parser<'a> {
     depth: usize,
     max_depth: usize,
     variables: &'a [&'a str],
+    /// Named values (a request's `constants`), read as numbers.
+    constants: &'a [(String, f64)],
     end: usize,
 }
 
 impl<'a> Parser<'a> {
-    pub(super) fn parse(src: &str, variables: &'a [&'a str], max_depth: usize) -> Result<Node, ExprError> {
+    pub(super) fn parse(
+        src: &str,
+        variables: &'a [&'a str],
+        constants: &'a [(String, f64)],
+        max_depth: usize,
+    ) -> Result<Node, ExprError> {
         let tokens = tokenize(src)?;
-        let mut p = Parser { tokens, next: 0, depth: 0, max_depth, variables, end: src.chars().count() };
+        let mut p = Parser { tokens, next: 0, depth: 0, max_depth, variables, constants, end: src.chars().count() };
         if p.tokens.is_empty() {
             return Err(ExprError { position: 0, message: "empty expression".into() });
         }
@@ -208,6 +215,9 @@ impl<'a> Parser<'a> {
         if let Some(i) = self.variables.iter().position(|v| *v == name) {
             return Ok(Node::Var(i));
         }
+        if let Some((_, value)) = self.constants.iter().find(|(n, _)| n == name) {
+            return Ok(Node::Const(*value));
+        }
         match name {
             "pi" => Ok(Node::Const(std::f64::consts::PI)),
             "e" => Ok(Node::Const(std::f64::consts::E)),
@@ -217,8 +227,9 @@ impl<'a> Parser<'a> {
             _ => Err(ExprError {
                 position: pos,
                 message: format!(
-                    "unknown name '{name}' (variables here: {}; constants: pi, e)",
-                    if self.variables.is_empty() { "none".to_string() } else { self.variables.join(", ") }
+                    "unknown name '{name}' (variables here: {}; constants: {})",
+                    if self.variables.is_empty() { "none".to_string() } else { self.variables.join(", ") },
+                    self.constants.iter().map(|(n, _)| n.as_str()).chain(["pi", "e"]).collect::<Vec<_>>().join(", ")
                 ),
             }),
         }

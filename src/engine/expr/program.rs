@@ -113,7 +113,7 @@ mod tests {
     use crate::engine::expr::parse::Parser;
 
     fn tree(source: &str) -> Node {
-        Parser::parse(source, &["phi", "t"], 64).unwrap().fold()
+        Parser::parse(source, &["phi", "t"], &[], 64).unwrap().fold()
     }
 
     /// The program gives the tree walk's value bit for bit, for every kind
@@ -148,7 +148,7 @@ mod tests {
     #[test]
     fn a_long_power_chain_is_too_deep_for_a_program() {
         let chain = vec!["1"; 40].join("^");
-        assert!(Program::new(&Parser::parse(&chain, &["phi"], 64).unwrap()).is_none());
+        assert!(Program::new(&Parser::parse(&chain, &["phi"], &[], 64).unwrap()).is_none());
         assert!(Program::new(&tree(&["phi"; 10].join("^"))).is_some());
     }
 }
