@@ -5,6 +5,8 @@ WORKDIR /src
 COPY Cargo.toml Cargo.lock ./
 COPY src ./src
 COPY migrations ./migrations
+# The built-in templates (the problem library) are compiled in.
+COPY library ./library
 # The manifest names the benchmarks: cargo cannot read it without their files.
 COPY benches ./benches
 RUN cargo build --release --locked --bin mechdyn \

@@ -110,6 +110,22 @@ fn the_dockerfile_agrees_with_the_code() {
     assert!(docker.contains(&format!("EXPOSE {port}")), "EXPOSE matches MECHDYN_ADDR's port {port}");
     assert!(docker.contains("VOLUME [\"/data\"]") && docker.contains("DATABASE_URL=sqlite:///data/"));
     assert_eq!(mechdyn::api::HEALTH_PATH, "/healthz");
+    // Every folder the code compiles in (include_str!) is copied into the build.
+    let mut files = Vec::new();
+    rust_files(&root().join("src"), &mut files);
+    for file in files {
+        let text = std::fs::read_to_string(&file).unwrap();
+        for included in text.split("include_str!(\"").skip(1).filter_map(|s| s.split('"').next()) {
+            let path = file.parent().unwrap().join(included).canonicalize().unwrap();
+            let top =
+                path.strip_prefix(root().canonicalize().unwrap()).unwrap().iter().next().unwrap().to_string_lossy();
+            assert!(
+                docker.contains(&format!("COPY {top} ./{top}")),
+                "{} includes {included}: COPY {top}",
+                file.display()
+            );
+        }
+    }
 }
 
 /// The engine's top-level modules (`src/engine/X.rs` or `src/engine/X/`)

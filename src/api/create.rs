@@ -7,7 +7,7 @@ use super::jobs::job_chunks;
 use super::json::JsonBody;
 use super::kind::{self, Kind};
 use super::problem::{ApiError, FieldError};
-use crate::store::NewJob;
+use crate::store::{JobRow, NewJob};
 use axum::body::Body;
 use axum::extract::State;
 use axum::http::{StatusCode, header};
@@ -16,6 +16,7 @@ use bytes::Bytes;
 use serde::Serialize;
 use std::io;
 use std::time::Instant;
+use tokio::sync::OwnedSemaphorePermit;
 
 /// What sets the size of a result: the request field that says how many rows
 /// it has, how many it has, and what else the user can ask less of.
@@ -60,6 +61,27 @@ where
     R: JobResult + Send + 'static,
     F: FnOnce() -> Result<R, ApiError> + Send + 'static,
 {
+    let (row, reserved) = compute_and_store(state, kind, request, None, compute).await?;
+    let mut body = Chunks::default();
+    job_chunks(&row, &mut body);
+    let location = format!("/v1/jobs/{}", row.id);
+    let headers = [(header::CONTENT_TYPE, "application/json".to_string()), (header::LOCATION, location)];
+    Ok((StatusCode::CREATED, headers, guarded(Body::new(body), reserved)).into_response())
+}
+
+/// The job of `compute`, stored (under `key`, for a template's parameters):
+/// the row, with the memory of its answer still reserved.
+pub async fn compute_and_store<R, F>(
+    state: &AppState,
+    kind: &'static str,
+    request: Bytes,
+    key: Option<String>,
+    compute: F,
+) -> Result<(JobRow, OwnedSemaphorePermit), ApiError>
+where
+    R: JobResult + Send + 'static,
+    F: FnOnce() -> Result<R, ApiError> + Send + 'static,
+{
     let computing = state.admission.compute().await?;
     let limit = state.limits.result_bytes;
     // The largest result is reserved before computing, so that no job is
@@ -82,17 +104,13 @@ where
         result: result?,
         engine_us: i64::try_from(elapsed.as_micros()).unwrap_or(i64::MAX),
         engine_version: env!("CARGO_PKG_VERSION").into(),
+        request_key: key,
     };
     if let Some(spare) = reserved.num_permits().checked_sub(job.bytes()).and_then(|n| reserved.split(n)) {
         drop(spare);
     }
     drop(computing);
-    let row = state.store.insert(job).await?;
-    let mut body = Chunks::default();
-    job_chunks(&row, &mut body);
-    let location = format!("/v1/jobs/{}", row.id);
-    let headers = [(header::CONTENT_TYPE, "application/json".to_string()), (header::LOCATION, location)];
-    Ok((StatusCode::CREATED, headers, guarded(Body::new(body), reserved)).into_response())
+    Ok((state.store.insert(job).await?, reserved))
 }
 
 /// The result as JSON bytes, or a 422 when it would exceed `limit` bytes.
@@ -182,7 +200,7 @@ impl io::Write for Counter {
     }
 }
 
-fn now_rfc3339() -> String {
+pub fn now_rfc3339() -> String {
     let format =
         time::macros::format_description!("[year]-[month]-[day]T[hour]:[minute]:[second].[subsecond digits:6]Z");
     time::OffsetDateTime::now_utc().format(&format).unwrap_or_default()

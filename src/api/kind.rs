@@ -9,9 +9,12 @@ use super::create::JobResult;
 use super::limits::Limits;
 use super::problem::{ApiError, FieldError, PostErrors};
 use super::{AppState, dynamics, equivalent, flywheel, gear_train, gears, jobs, kinetostatics, rotor};
+use crate::store::JobRow;
+use bytes::Bytes;
 use serde::de::DeserializeOwned;
 use serde_json::Value;
 use std::marker::PhantomData;
+use tokio::sync::OwnedSemaphorePermit;
 use utoipa::openapi::path::{HttpMethod, OperationBuilder, Paths, PathsBuilder};
 use utoipa::openapi::request_body::RequestBodyBuilder;
 use utoipa::openapi::{ContentBuilder, HeaderBuilder, Ref, Required, ResponseBuilder, ResponsesBuilder};
@@ -87,6 +90,10 @@ fn matches(pattern: &str, pointer: &[&str]) -> bool {
     tokens.len() == pointer.len() && tokens.iter().zip(pointer).all(|(p, t)| *p == "*" || p == t)
 }
 
+/// A job computed and stored, with the memory of its answer reserved.
+pub type StoredJob<'a> =
+    std::pin::Pin<Box<dyn std::future::Future<Output = Result<(JobRow, OwnedSemaphorePermit), ApiError>> + Send + 'a>>;
+
 /// A kind seen without its types: what the registry holds.
 pub trait AnyKind: Send + Sync {
     fn name(&self) -> &'static str;
@@ -96,6 +103,9 @@ pub trait AnyKind: Send + Sync {
     /// Parses and computes a JSON request as the POST would: the result's
     /// JSON, the same bytes the service stores.
     fn solve(&self, raw: String, limits: &Limits) -> Result<Vec<u8>, ApiError>;
+    /// Computes and stores the job of `request` (JSON text, as it will be
+    /// stored) under `key`: the row, with its answer's memory reserved.
+    fn job<'a>(&'a self, state: &'a AppState, request: Bytes, key: Option<String>) -> StoredJob<'a>;
     fn request_schema(&self) -> String;
     fn result_schema(&self) -> String;
     fn units(&self) -> &'static [(&'static str, &'static str)];
@@ -126,6 +136,15 @@ impl<K: Kind> AnyKind for Registered<K> {
         let body = super::json::parse::<K::Request>(raw)?;
         let result = compute::<K>(&body.value, body.unknown, &body.raw, limits)?;
         serde_json::to_vec(&result).map_err(|e| ApiError::Internal(format!("result: {e}")))
+    }
+    fn job<'a>(&'a self, state: &'a AppState, request: Bytes, key: Option<String>) -> StoredJob<'a> {
+        Box::pin(async move {
+            let body = super::json::parse::<K::Request>(request.clone())?;
+            let raw = request.clone();
+            let limits = state.limits.clone();
+            let compute = move || compute::<K>(&body.value, body.unknown, &raw, &limits);
+            super::create::compute_and_store(state, K::NAME, request, key, compute).await
+        })
     }
     fn request_schema(&self) -> String {
         K::Request::name().into()

@@ -27,6 +27,7 @@ pub mod problem;
 pub mod quantity;
 pub mod rotor;
 pub mod tables;
+pub mod templates;
 
 use crate::store::Store;
 pub use admission::{Admission, Capacity};
@@ -95,6 +96,7 @@ answer carries an `x-request-id` header."
         (name = "gears", description = "Gear calculators"),
         (name = "calculators", description = "Smaller calculators of the course"),
         (name = "jobs", description = "Stored computations"),
+        (name = "templates", description = "Problems with parameters: one number of a job by URL (a spreadsheet's WEBSERVICE), a parameter study as CSV"),
         (name = "service", description = "Health"),
     )
 )]
@@ -112,6 +114,11 @@ fn routes() -> OpenApiRouter<AppState> {
         .routes(utoipa_axum::routes!(jobs::get))
         .routes(utoipa_axum::routes!(jobs::csv))
         .routes(utoipa_axum::routes!(parts::values))
+        .routes(utoipa_axum::routes!(templates::list, templates::create))
+        .routes(utoipa_axum::routes!(templates::get))
+        .routes(utoipa_axum::routes!(templates::job))
+        .routes(utoipa_axum::routes!(templates::table))
+        .routes(rest_of_path(utoipa_axum::routes!(templates::result), "pointer"))
         .routes(rest_of_path(utoipa_axum::routes!(parts::part), "pointer"))
         .routes(utoipa_axum::routes!(healthz))
 }

@@ -81,16 +81,28 @@ pub async fn part(
 ) -> Result<Response, ApiError> {
     let q = query(q, &["unit"])?;
     let (row, result, _reserved) = result_tree(&state, &id).await?;
-    let tokens = tables::tokens(&pointer);
+    answer(&row, &result, &pointer, q.get("unit"), &headers)
+}
+
+/// The part of `result` (of job `row`) at `pointer`, converted to `unit`,
+/// as text or JSON as [`part`] says.
+pub fn answer(
+    row: &JobRow,
+    result: &Value,
+    pointer: &str,
+    unit: Option<&String>,
+    headers: &HeaderMap,
+) -> Result<Response, ApiError> {
+    let tokens = tables::tokens(pointer);
     let pointer = format!("/{}", pointer.trim_start_matches('/'));
-    let Some(value) = tokens.iter().try_fold(&result, |v, t| step(v, t)) else {
-        return Err(ApiError::NoPart { id, pointer });
+    let Some(value) = tokens.iter().try_fold(result, |v, t| step(v, t)) else {
+        return Err(ApiError::NoPart { id: row.id.clone(), pointer });
     };
     let kind = kind::find(&row.kind);
-    let value = match (q.get("unit"), value.as_f64()) {
+    let value = match (unit, value.as_f64()) {
         (Some(target), Some(x)) => {
             let refs: Vec<&str> = tokens.iter().map(String::as_str).collect();
-            let unit = kind.and_then(|k| k.unit(&result, &refs));
+            let unit = kind.and_then(|k| k.unit(result, &refs));
             Value::from(tables::convert(x, unit.as_deref(), target, &pointer)?)
         }
         (Some(_), None) => {
@@ -99,7 +111,7 @@ pub async fn part(
         }
         (None, _) => value.clone(),
     };
-    let json = value.is_object() || value.is_array() || wants(&headers, None, "application/json");
+    let json = value.is_object() || value.is_array() || wants(headers, None, "application/json");
     if json {
         return Ok(([(header::CONTENT_TYPE, "application/json")], value.to_string()).into_response());
     }

@@ -139,6 +139,8 @@ pub enum ApiError {
     MalformedJson(String),
     #[error("the content type must be application/json")]
     UnsupportedMediaType,
+    #[error("the content type must be text/csv or application/json")]
+    UnsupportedTable,
     #[error("the body is larger than the limit of {0} bytes")]
     PayloadTooLarge(usize),
     #[error("{} invalid field{}", .0.len(), if .0.len() == 1 { "" } else { "s" })]
@@ -149,6 +151,10 @@ pub enum ApiError {
     NotFound(String),
     #[error("job '{id}' has no part of its result at '{pointer}'")]
     NoPart { id: String, pointer: String },
+    #[error("no template with id '{0}' (GET /v1/templates lists them)")]
+    NoTemplate(String),
+    #[error("{0}")]
+    Conflict(String),
     #[error("no such resource")]
     NoRoute,
     #[error("method not allowed")]
@@ -182,6 +188,9 @@ impl ApiError {
             Self::UnsupportedMediaType => {
                 (StatusCode::UNSUPPORTED_MEDIA_TYPE, "unsupported-media-type", "Unsupported content type")
             }
+            Self::UnsupportedTable => {
+                (StatusCode::UNSUPPORTED_MEDIA_TYPE, "unsupported-media-type", "Unsupported content type")
+            }
             Self::PayloadTooLarge(_) => (StatusCode::PAYLOAD_TOO_LARGE, "payload-too-large", "Request body too large"),
             Self::Invalid(_) => {
                 (StatusCode::UNPROCESSABLE_ENTITY, "invalid-request", "The request is not a valid problem")
@@ -189,6 +198,8 @@ impl ApiError {
             Self::BadQuery(_) => (StatusCode::BAD_REQUEST, "invalid-query", "Invalid query parameters"),
             Self::NotFound(_) => (StatusCode::NOT_FOUND, "not-found", "Job not found"),
             Self::NoRoute => (StatusCode::NOT_FOUND, "not-found", "Not found"),
+            Self::NoTemplate(_) => (StatusCode::NOT_FOUND, "not-found", "Template not found"),
+            Self::Conflict(_) => (StatusCode::CONFLICT, "conflict", "The name is taken"),
             Self::NoPart { .. } => (StatusCode::NOT_FOUND, "no-such-part", "No such part of the result"),
             Self::MethodNotAllowed => (StatusCode::METHOD_NOT_ALLOWED, "method-not-allowed", "Method not allowed"),
             Self::OverBudget(_) => {

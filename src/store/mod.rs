@@ -104,11 +104,14 @@ pub struct NewJob {
     pub result: Bytes,
     pub engine_us: i64,
     pub engine_version: String,
+    /// The key of a job computed for a template's parameters
+    /// ([`Store::find_by_key`]); None for a job POSTed directly.
+    pub request_key: Option<String>,
 }
 
 impl NewJob {
     fn stored(self, seq: i64) -> JobRow {
-        let NewJob { id, kind, created_at, request, result, engine_us, engine_version } = self;
+        let NewJob { id, kind, created_at, request, result, engine_us, engine_version, .. } = self;
         JobRow { seq, id, kind, created_at, request, result, engine_us, engine_version }
     }
 
@@ -194,6 +197,34 @@ impl Store {
         Ok(job.stored(seq))
     }
 
+    /// The newest job stored under `key` whose request is `request`, byte for
+    /// byte (the key only narrows the search).
+    pub async fn find_by_key(&self, key: &str, request: &[u8]) -> Result<Option<JobRow>, StoreError> {
+        let rows: Vec<Row> = sqlx::query_as(SELECT_BY_KEY).bind(key).fetch_all(&self.pool).await?;
+        Ok(rows.into_iter().map(JobRow::from).find(|r| r.request.as_ref() == request))
+    }
+
+    /// Stores a template's JSON under `id`; false when the id is taken.
+    pub async fn insert_template(&self, id: &str, created_at: &str, body: &str) -> Result<bool, StoreError> {
+        let done = sqlx::query("INSERT INTO templates (id, created_at, body) VALUES (?, ?, ?) ON CONFLICT DO NOTHING")
+            .bind(id)
+            .bind(created_at)
+            .bind(body)
+            .execute(&self.pool)
+            .await?;
+        Ok(done.rows_affected() == 1)
+    }
+
+    /// A stored template's JSON.
+    pub async fn template(&self, id: &str) -> Result<Option<String>, StoreError> {
+        Ok(sqlx::query_scalar("SELECT body FROM templates WHERE id = ?").bind(id).fetch_optional(&self.pool).await?)
+    }
+
+    /// Every stored template's JSON, oldest first.
+    pub async fn templates(&self) -> Result<Vec<String>, StoreError> {
+        Ok(sqlx::query_scalar("SELECT body FROM templates ORDER BY created_at, id").fetch_all(&self.pool).await?)
+    }
+
     pub async fn get(&self, id: &str) -> Result<Option<JobRow>, StoreError> {
         let row: Option<Row> = sqlx::query_as(SELECT_ROW).bind(id).fetch_optional(&self.pool).await?;
         Ok(row.map(JobRow::from))
@@ -259,3 +290,5 @@ impl Store {
 
 const SELECT_ROW: &str =
     "SELECT seq, id, kind, created_at, request, result, engine_us, engine_version FROM jobs WHERE id = ?";
+const SELECT_BY_KEY: &str = "SELECT seq, id, kind, created_at, request, result, engine_us, engine_version FROM jobs \
+                             WHERE request_key = ? ORDER BY seq DESC LIMIT 8";

@@ -20,6 +20,7 @@ fn job(k: usize) -> NewJob {
         result: "{}".into(),
         engine_us: 1,
         engine_version: "test".into(),
+        request_key: None,
     }
 }
 

@@ -25,3 +25,4 @@ mod security;
 mod seed_exams;
 mod storage;
 mod student;
+mod templates;

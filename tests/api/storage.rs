@@ -111,6 +111,7 @@ fn job(k: usize, bytes: usize) -> NewJob {
         result: format!("\"{}\"", "x".repeat(bytes)).into(),
         engine_us: 1,
         engine_version: "test".into(),
+        request_key: None,
     }
 }
 

@@ -1,0 +1,114 @@
+//! A template's parameters put into its request: a value from a query
+//! string or a table cell (a number in the parameter's unit, or a quantity
+//! string such as `300 rpm`), checked against its range, then the request's
+//! key, under which the job it gives is stored and found again.
+
+use super::model::{Parameter, Template};
+use crate::api::problem::{ApiError, FieldError};
+use crate::units::{Dim, parse_quantity, parse_unit};
+use serde_json::Value;
+use sha2::{Digest, Sha256};
+use std::collections::HashMap;
+
+/// The template's request with `given` parameters set (the others at their
+/// defaults); unknown names and bad values are a 400 naming each.
+pub fn request_for(t: &Template, given: &HashMap<String, String>, ignore: &[&str]) -> Result<Value, ApiError> {
+    let mut request = t.request.clone();
+    let mut errors = Vec::new();
+    for (name, text) in given.iter().filter(|(k, _)| !ignore.contains(&k.as_str())) {
+        let Some(p) = t.parameters.get(name) else {
+            let known: Vec<&str> = t.parameters.keys().map(String::as_str).collect();
+            let message = format!("no parameter {name} in template {} (its parameters: {})", t.id, known.join(", "));
+            errors.push(FieldError::parameter(name, message));
+            continue;
+        };
+        match value_for(p, text) {
+            Ok(v) => match request.pointer_mut(&p.pointer) {
+                Some(slot) => *slot = v,
+                None => {
+                    errors.push(FieldError::parameter(name, format!("points at {}, not in the request", p.pointer)))
+                }
+            },
+            Err(why) => errors.push(FieldError::parameter(name, why)),
+        }
+    }
+    if errors.is_empty() { Ok(request) } else { Err(ApiError::BadQuery(errors)) }
+}
+
+/// The JSON value of a parameter given as `text`: SI when the parameter has
+/// a unit, else the number, or the quantity string for the field to read.
+pub fn value_for(p: &Parameter, text: &str) -> Result<Value, String> {
+    let text = text.trim();
+    let (factor, dim) = match &p.unit {
+        Some(u) => parse_unit(u).map_err(|e| format!("the parameter's unit {u}: {e}"))?,
+        None => (1.0, Dim::NONE),
+    };
+    let si = match text.parse::<f64>() {
+        Ok(x) if x.is_finite() => {
+            checked(p, x, text)?;
+            x * factor
+        }
+        Ok(_) => return Err("must be finite".into()),
+        Err(_) => {
+            let q = parse_quantity(text).map_err(|e| format!("'{text}' is neither a number nor a quantity: {e}"))?;
+            if p.unit.is_none() {
+                return checked(p, q.si, text).map(|()| Value::String(text.into()));
+            }
+            if q.dim != dim {
+                return Err(format!("'{text}' is in {}, where {} is expected", q.dim.si_name(), dim.si_name()));
+            }
+            checked(p, q.si / factor, text)?;
+            q.si
+        }
+    };
+    Ok(serde_json::Number::from_f64(si).map_or(Value::Null, Value::Number))
+}
+
+/// `x` (in the parameter's unit) within its range and choices.
+fn checked(p: &Parameter, x: f64, text: &str) -> Result<(), String> {
+    let unit = p.unit.as_deref().map(|u| format!(" {u}")).unwrap_or_default();
+    if let Some(min) = p.min.filter(|m| x < *m) {
+        return Err(format!("{text} is below the least value, {min}{unit}"));
+    }
+    if let Some(max) = p.max.filter(|m| x > *m) {
+        return Err(format!("{text} is above the largest value, {max}{unit}"));
+    }
+    if let Some(choices) = &p.choices {
+        let listed = choices.iter().any(|c| c.as_f64() == Some(x) || c.as_str() == Some(text));
+        if !listed {
+            let all: Vec<String> = choices.iter().map(|c| c.to_string()).collect();
+            return Err(format!("{text} is not one of {}", all.join(", ")));
+        }
+    }
+    Ok(())
+}
+
+/// The request as stored (canonical JSON: keys in order) and its key.
+pub fn keyed(kind: &str, request: &Value) -> (Vec<u8>, String) {
+    let bytes = serde_json::to_vec(request).unwrap_or_default();
+    let mut hash = Sha256::new();
+    for part in [kind.as_bytes(), b"\0", env!("CARGO_PKG_VERSION").as_bytes(), b"\0", &bytes] {
+        hash.update(part);
+    }
+    let key = hash.finalize().iter().map(|b| format!("{b:02x}")).collect();
+    (bytes, key)
+}
+
+/// Errors of a computed template request: those at a parameter's pointer
+/// also name the parameter.
+pub fn named(t: &Template, e: ApiError) -> ApiError {
+    let name = |errors: Vec<FieldError>| -> Vec<FieldError> {
+        errors
+            .into_iter()
+            .map(|mut f| {
+                let at = f.pointer.clone().unwrap_or_default();
+                f.parameter = t.parameters.iter().find(|(_, p)| at.starts_with(&p.pointer)).map(|(n, _)| n.clone());
+                f
+            })
+            .collect()
+    };
+    match e {
+        ApiError::Invalid(errors) => ApiError::Invalid(name(errors)),
+        other => other,
+    }
+}

@@ -1,0 +1,189 @@
+//! `/v1/templates`: problems with parameters. A spreadsheet's
+//! `WEBSERVICE()` reads one number of the job a template gives for its
+//! parameters (`GET /v1/templates/{id}/result/{pointer}?F=1200`); the same
+//! parameters find the stored job again instead of computing it; a whole
+//! parameter study is one `POST .../table` of CSV ([`table`]).
+
+mod apply;
+mod model;
+mod table;
+
+pub use model::{LIBRARY_FILES, NewTemplate, Parameter, RESERVED, Template, TemplateList, builtin};
+pub use table::{TableRequest, TableResponse, TableRow, study};
+
+use super::AppState;
+use super::body::Chunks;
+use super::jobs::job_chunks;
+use super::json::JsonBody;
+use super::kind;
+use super::parts::{self, result_tree};
+use super::problem::{ApiError, FieldError, Problem, ReadErrors};
+use crate::store::JobRow;
+use axum::body::Body;
+use axum::extract::rejection::QueryRejection;
+use axum::extract::{Path, Query, State};
+use axum::http::{HeaderMap, StatusCode, header};
+use axum::response::{IntoResponse, Response};
+use std::collections::HashMap;
+
+/// The template of this id: a built-in one, or one a client stored.
+pub async fn find(state: &AppState, id: &str) -> Result<Template, ApiError> {
+    if let Some(t) = builtin().iter().find(|t| t.id == id) {
+        return Ok(t.clone());
+    }
+    let missing = || ApiError::NoTemplate(id.to_string());
+    let body = state.store.template(id).await?.ok_or_else(missing)?;
+    serde_json::from_str(&body).map_err(|e| ApiError::Internal(format!("stored template {id}: {e}")))
+}
+
+/// The job `t` gives for `given` parameters: the stored one when these
+/// parameters were asked before (same engine version), else computed and
+/// stored under the request's key.
+pub async fn job_for(state: &AppState, t: &Template, given: &HashMap<String, String>) -> Result<JobRow, ApiError> {
+    let request = apply::request_for(t, given, RESERVED)?;
+    let (bytes, key) = apply::keyed(&t.kind, &request);
+    if let Some(row) = state.store.find_by_key(&key, &bytes).await? {
+        return Ok(row);
+    }
+    let kind = kind::find(&t.kind).ok_or_else(|| ApiError::Internal(format!("template kind {}", t.kind)))?;
+    let (row, _reserved) = kind.job(state, bytes.into(), Some(key)).await.map_err(|e| apply::named(t, e))?;
+    Ok(row)
+}
+
+/// Lists the templates: the built-in ones (the course's problems), then those clients stored.
+#[utoipa::path(get, path = "/v1/templates", operation_id = "list_templates", tag = "templates",
+    responses((status = 200, description = "Every template", body = TemplateList)))]
+pub async fn list(State(state): State<AppState>) -> Result<axum::Json<TemplateList>, ApiError> {
+    let mut items = builtin().to_vec();
+    for body in state.store.templates().await? {
+        items.extend(serde_json::from_str::<Template>(&body).ok());
+    }
+    Ok(axum::Json(TemplateList { items }))
+}
+
+/// Reads a template: its kind, request, and parameters with their units and ranges.
+#[utoipa::path(get, path = "/v1/templates/{id}", operation_id = "get_template", tag = "templates",
+    params(("id" = String, Path, description = "Template id, e.g. `p103-slider-flywheel`")),
+    responses((status = 200, description = "The template", body = Template), ReadErrors))]
+pub async fn get(State(state): State<AppState>, Path(id): Path<String>) -> Result<axum::Json<Template>, ApiError> {
+    Ok(axum::Json(find(&state, &id).await?))
+}
+
+/// The job a template gives for its parameters (`?NAME=VALUE&...`, the
+/// others at their defaults): the stored one when asked before, else computed and stored.
+#[utoipa::path(get, path = "/v1/templates/{id}/job", operation_id = "get_template_job", tag = "templates",
+    params(("id" = String, Path, description = "Template id"),
+        ("parameters" = Option<HashMap<String, String>>, Query, style = Form, explode,
+            description = "The template's parameters, e.g. `F=1200&eps=0.03`: a number in the parameter's unit, or a quantity (`300 rpm`)")),
+    responses(
+        (status = 200, description = "The job", body = super::jobs::Job),
+        (status = 400, description = "An unknown parameter or a value out of its range", body = Problem, content_type = "application/problem+json"),
+        (status = 422, description = "These parameters do not give a valid problem", body = Problem, content_type = "application/problem+json"),
+        ReadErrors,
+    ))]
+pub async fn job(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+    q: Result<Query<HashMap<String, String>>, QueryRejection>,
+) -> Result<Response, ApiError> {
+    let q = parameters(q)?;
+    let t = find(&state, &id).await?;
+    let row = job_for(&state, &t, &q).await?;
+    let mut body = Chunks::default();
+    job_chunks(&row, &mut body);
+    let location = format!("/v1/jobs/{}", row.id);
+    Ok((
+        [(header::CONTENT_TYPE, "application/json".to_string()), (header::CONTENT_LOCATION, location)],
+        Body::new(body),
+    )
+        .into_response())
+}
+
+/// One part of the result of the job a template gives for its parameters,
+/// as `/v1/jobs/{id}/result/{pointer}` answers it: what a spreadsheet's
+/// `=WEBSERVICE(".../v1/templates/p103-slider-flywheel/result/inertia_exact?F=1200")` reads.
+#[utoipa::path(get, path = "/v1/templates/{id}/result/{pointer}", operation_id = "get_template_result_part", tag = "templates",
+    params(("id" = String, Path, description = "Template id"),
+        ("pointer" = String, Path, description = "JSON pointer into the result without its leading `/`, e.g. `inertia_exact`"),
+        ("unit" = Option<String>, Query, description = "Convert a number to this unit, e.g. `slug*ft^2`"),
+        ("parameters" = Option<HashMap<String, String>>, Query, style = Form, explode,
+            description = "The template's parameters, e.g. `F=1200&eps=0.03`")),
+    responses(
+        (status = 200, description = "The value alone (text/plain), or JSON for an object or array",
+            content((String = "text/plain", example = "353.52142732201156"), (Object = "application/json"))),
+        (status = 400, description = "An unknown parameter, a value out of its range, or a unit of the wrong dimension",
+            body = Problem, content_type = "application/problem+json"),
+        (status = 422, description = "These parameters do not give a valid problem", body = Problem, content_type = "application/problem+json"),
+        ReadErrors,
+    ))]
+pub async fn result(
+    State(state): State<AppState>,
+    Path((id, pointer)): Path<(String, String)>,
+    headers: HeaderMap,
+    q: Result<Query<HashMap<String, String>>, QueryRejection>,
+) -> Result<Response, ApiError> {
+    let q = parameters(q)?;
+    let t = find(&state, &id).await?;
+    let row = job_for(&state, &t, &q).await?;
+    let (row, result, _reserved) = result_tree(&state, &row.id).await?;
+    parts::answer(&row, &result, &pointer, q.get("unit"), &headers)
+}
+
+fn parameters(q: Result<Query<HashMap<String, String>>, QueryRejection>) -> Result<HashMap<String, String>, ApiError> {
+    let Query(q) = q.map_err(|e| ApiError::BadQuery(vec![FieldError::parameter("", e.body_text())]))?;
+    Ok(q)
+}
+
+/// Creates a template: `request` is solved once (a template that cannot be
+/// solved is refused with the usual 422, its pointers under `/request`).
+#[utoipa::path(post, path = "/v1/templates", operation_id = "create_template", tag = "templates", request_body = NewTemplate,
+    responses(
+        (status = 201, description = "Template stored", body = Template,
+            headers(("Location" = String, description = "/v1/templates/{id}"))),
+        (status = 409, description = "A template of this name exists", body = Problem, content_type = "application/problem+json"),
+        super::problem::PostErrors,
+    ))]
+pub async fn create(State(state): State<AppState>, body: JsonBody<NewTemplate>) -> Result<Response, ApiError> {
+    let JsonBody { value, unknown, .. } = body;
+    let t = model::checked(value, unknown)?;
+    if builtin().iter().any(|b| b.id == t.id) {
+        return Err(ApiError::Conflict(format!("'{}' is a built-in template", t.id)));
+    }
+    let (bytes, key) = apply::keyed(&t.kind, &t.request);
+    let kind = kind::find(&t.kind).ok_or_else(|| ApiError::Internal(format!("kind {}", t.kind)))?;
+    let (_solved, _reserved) = kind.job(&state, bytes.into(), Some(key)).await.map_err(model::under_request)?;
+    let text = serde_json::to_string(&t).map_err(|e| ApiError::Internal(e.to_string()))?;
+    if !state.store.insert_template(&t.id, &super::create::now_rfc3339(), &text).await? {
+        return Err(ApiError::Conflict(format!("a template named '{}' exists", t.id)));
+    }
+    let location = format!("/v1/templates/{}", t.id);
+    let headers = [(header::CONTENT_TYPE, "application/json".to_string()), (header::LOCATION, location)];
+    Ok((StatusCode::CREATED, headers, text).into_response())
+}
+
+/// A parameter study: one variant per row of a CSV (or JSON) table.
+#[utoipa::path(post, path = "/v1/templates/{id}/table", operation_id = "post_template_table", tag = "templates",
+    params(("id" = String, Path, description = "Template id"),
+        ("values" = Option<String>, Query, description = "Comma-separated JSON pointers of the values to answer per row, e.g. `inertia_exact,energy_fluctuation`")),
+    request_body(description = "CSV: a header row of parameter names (optionally `name [unit]`), a row per variant; or JSON",
+        content((String = "text/csv", example = "F,eps\n1000,0.03\n1200,0.03\n"), (TableRequest = "application/json"))),
+    responses(
+        (status = 200, description = "A row per variant: the inputs, the values, the job and the error (empty, or why that row failed)",
+            content((String = "text/csv", example = "F,eps,inertia_exact,job,error\n1000,0.03,...\n"), (TableResponse = "application/json"))),
+        (status = 400, description = "An unknown column, a malformed table or `values`", body = Problem, content_type = "application/problem+json"),
+        (status = 415, description = "Neither text/csv nor application/json", body = Problem, content_type = "application/problem+json"),
+        ReadErrors,
+    ))]
+pub async fn table(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+    headers: HeaderMap,
+    q: Result<Query<HashMap<String, String>>, QueryRejection>,
+    body: axum::body::Bytes,
+) -> Result<Response, ApiError> {
+    let q = parts::query(q, &["values"])?;
+    let t = find(&state, &id).await?;
+    let (text, csv) = study(&state, &t, &headers, q.get("values"), &body).await?;
+    let mime = if csv { "text/csv; charset=utf-8" } else { "application/json" };
+    Ok(([(header::CONTENT_TYPE, mime)], text).into_response())
+}

@@ -1,0 +1,216 @@
+//! Templates: a complete request of a kind, with named parameters that
+//! point into it (RFC 6901), so that a spreadsheet varies a load or a speed
+//! by name. The built-in ones are the course's problems, kept in the
+//! repository's `library/` folder and compiled into the binary.
+
+use crate::api::problem::{ApiError, FieldError};
+use serde::{Deserialize, Serialize};
+use serde_json::Value;
+use std::collections::BTreeMap;
+use utoipa::ToSchema;
+
+/// Query names a parameter may not take (they mean something else in a template's URL).
+pub const RESERVED: &[&str] = &["unit", "values", "angles", "label", "format", "seed", "count"];
+
+/// One parameter of a template: where it goes in the request, its unit and range.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct Parameter {
+    /// JSON pointer into `request`; the value there is the parameter's default.
+    #[schema(example = "/constants/F", max_length = 1000)]
+    pub pointer: String,
+    /// Unit of a bare number given for this parameter (default SI), e.g. "rpm".
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(max_length = 100)]
+    pub unit: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(max_length = 2000)]
+    pub description: Option<String>,
+    /// Least value, in `unit`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub min: Option<f64>,
+    /// Largest value, in `unit`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max: Option<f64>,
+    /// Grid of the values a variant draws, in `unit`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub step: Option<f64>,
+    /// The only values allowed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(value_type = Option<Vec<Object>>)]
+    pub choices: Option<Vec<Value>>,
+}
+
+/// A problem with parameters.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct Template {
+    /// The template's name (a slug) or a random UUID.
+    #[schema(example = "p103-slider-flywheel")]
+    pub id: String,
+    /// The kind of job it gives, e.g. `flywheel`.
+    pub kind: String,
+    pub title: Option<String>,
+    /// Where the problem comes from (built-in templates).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub source: Option<String>,
+    /// A complete, valid request of that kind.
+    #[schema(value_type = Object)]
+    pub request: Value,
+    pub parameters: BTreeMap<String, Parameter>,
+    /// Shipped with the service (true) or created by a client.
+    #[serde(default)]
+    pub builtin: bool,
+}
+
+/// The body of `POST /v1/templates`.
+#[derive(Clone, Debug, Deserialize, ToSchema)]
+#[schema(example = json!({
+    "kind": "gears", "name": "my-gear", "title": "A spur gear",
+    "request": {"module": "4 mm", "teeth": 30},
+    "parameters": {"z": {"pointer": "/teeth", "description": "Number of teeth", "min": 12, "max": 200}}
+}))]
+pub struct NewTemplate {
+    #[schema(example = "flywheel")]
+    pub kind: String,
+    #[schema(value_type = Object)]
+    pub request: Value,
+    pub parameters: BTreeMap<String, Parameter>,
+    #[schema(max_length = 200)]
+    pub title: Option<String>,
+    /// A slug (lower-case letters, digits, `-`), unique: the template's id.
+    #[schema(max_length = 64, pattern = "^[a-z0-9][a-z0-9-]*$")]
+    pub name: Option<String>,
+}
+
+/// Every template, the built-in ones first.
+#[derive(Serialize, ToSchema)]
+pub struct TemplateList {
+    pub items: Vec<Template>,
+}
+
+/// The built-in templates, from `library/`.
+pub fn builtin() -> &'static [Template] {
+    static LIBRARY: std::sync::OnceLock<Vec<Template>> = std::sync::OnceLock::new();
+    LIBRARY.get_or_init(|| {
+        LIBRARY_FILES
+            .iter()
+            .filter_map(|(name, text)| match serde_json::from_str::<Template>(text) {
+                Ok(t) => Some(Template { builtin: true, ..t }),
+                Err(e) => {
+                    tracing::error!(file = name, error = %e, "a built-in template does not read");
+                    None
+                }
+            })
+            .collect()
+    })
+}
+
+/// The library's files, compiled in (a test checks that none is missing).
+pub const LIBRARY_FILES: &[(&str, &str)] = &[
+    ("p103-slider-flywheel.json", include_str!("../../../library/p103-slider-flywheel.json")),
+    ("p107-two-stroke-engine.json", include_str!("../../../library/p107-two-stroke-engine.json")),
+    ("punch-press-us.json", include_str!("../../../library/punch-press-us.json")),
+    ("offset-slider-crank.json", include_str!("../../../library/offset-slider-crank.json")),
+    ("four-bar.json", include_str!("../../../library/four-bar.json")),
+    ("scotch-yoke-startup.json", include_str!("../../../library/scotch-yoke-startup.json")),
+    ("rotor-disk.json", include_str!("../../../library/rotor-disk.json")),
+];
+
+/// A new template checked: its kind, name, parameters' names, pointers,
+/// units and ranges (every error at its pointer in the body).
+pub fn checked(t: NewTemplate, mut errors: Vec<FieldError>) -> Result<Template, ApiError> {
+    if crate::api::kind::find(&t.kind).is_none() {
+        let names = crate::api::kind::names().join(", ");
+        errors.push(FieldError::at("/kind", format!("unknown kind '{}' (known: {names})", t.kind)));
+    }
+    if !t.request.is_object() {
+        errors.push(FieldError::at("/request", "must be a request object of that kind"));
+    }
+    let slug = |n: &str| {
+        n.len() <= 64
+            && n.starts_with(|c: char| c.is_ascii_lowercase() || c.is_ascii_digit())
+            && n.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-')
+    };
+    if let Some(n) = t.name.as_deref().filter(|n| !slug(n)) {
+        errors.push(FieldError::at(
+            "/name",
+            format!("'{n}' is not a slug: lower-case letters, digits and -, at most 64"),
+        ));
+    }
+    if t.title.as_ref().is_some_and(|s| s.chars().count() > 200) {
+        errors.push(FieldError::at("/title", "must be at most 200 characters"));
+    }
+    if t.parameters.len() > 100 {
+        errors.push(FieldError::at("/parameters", "at most 100 parameters"));
+    }
+    for (name, p) in &t.parameters {
+        let at = format!("/parameters/{}", name.replace('~', "~0").replace('/', "~1"));
+        errors.extend(parameter_errors(name, p, &t.request, &at));
+    }
+    if !errors.is_empty() {
+        return Err(ApiError::Invalid(errors));
+    }
+    let id = t.name.clone().unwrap_or_else(|| uuid::Uuid::new_v4().to_string());
+    Ok(Template {
+        id,
+        kind: t.kind,
+        title: t.title,
+        source: None,
+        request: t.request,
+        parameters: t.parameters,
+        builtin: false,
+    })
+}
+
+fn parameter_errors(name: &str, p: &Parameter, request: &Value, at: &str) -> Vec<FieldError> {
+    let mut errors = Vec::new();
+    let word = !name.is_empty()
+        && name.len() <= 64
+        && name.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+    if !word {
+        errors.push(FieldError::at(
+            at,
+            format!("'{name}' is not a name: letters, digits and _, not starting with a digit"),
+        ));
+    } else if RESERVED.contains(&name) {
+        errors.push(FieldError::at(at, format!("'{name}' is reserved in a template's URL ({})", RESERVED.join(", "))));
+    }
+    match request.pointer(&p.pointer) {
+        Some(v) if v.is_number() || v.is_string() => {}
+        Some(_) => {
+            errors.push(FieldError::at(format!("{at}/pointer"), "must point at a number or a text of the request"))
+        }
+        None => errors.push(FieldError::at(format!("{at}/pointer"), format!("{} is not in the request", p.pointer))),
+    }
+    if let Some(u) = &p.unit
+        && let Err(e) = crate::units::parse_unit(u)
+    {
+        errors.push(FieldError::at(format!("{at}/unit"), e.to_string()));
+    }
+    if let (Some(lo), Some(hi)) = (p.min, p.max)
+        && lo > hi
+    {
+        errors.push(FieldError::at(at, format!("min {lo} is above max {hi}")));
+    }
+    if p.step.is_some_and(|s| !(s > 0.0 && s.is_finite())) {
+        errors.push(FieldError::at(format!("{at}/step"), "must be greater than 0"));
+    }
+    errors
+}
+
+/// A 422 of the template's request: its pointers under `/request`.
+pub fn under_request(e: ApiError) -> ApiError {
+    match e {
+        ApiError::Invalid(errors) => ApiError::Invalid(
+            errors
+                .into_iter()
+                .map(|mut f| {
+                    f.pointer = Some(format!("/request{}", f.pointer.unwrap_or_default()));
+                    f
+                })
+                .collect(),
+        ),
+        other => other,
+    }
+}

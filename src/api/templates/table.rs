@@ -1,0 +1,218 @@
+//! A parameter study in one request: a table of variants (CSV from a
+//! spreadsheet, or JSON), each row the template's job for that row's
+//! parameters, answered with the values asked for. A row that fails carries
+//! its error; the others are still computed.
+
+use super::model::Template;
+use super::{RESERVED, job_for};
+use crate::api::AppState;
+use crate::api::problem::{ApiError, FieldError};
+use crate::api::tables::{cell, tokens};
+use axum::http::{HeaderMap, header};
+use serde::{Deserialize, Serialize};
+use serde_json::Value;
+use std::collections::{BTreeMap, HashMap};
+use utoipa::ToSchema;
+
+/// Most variants in one study.
+pub const MAX_ROWS: usize = 1000;
+
+/// A study as JSON.
+#[derive(Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+#[schema(example = json!({"rows": [{"F": 1000}, {"F": "1.2 kN*m", "eps": "3 %"}], "values": ["inertia_exact"]}))]
+pub struct TableRequest {
+    /// One object of parameters per variant (a number in the parameter's unit, or a quantity string).
+    #[schema(value_type = Vec<HashMap<String, Object>>, max_items = 1000)]
+    pub rows: Vec<BTreeMap<String, Value>>,
+    /// JSON pointers into the result of the values to answer.
+    pub values: Vec<String>,
+}
+
+/// One variant of a study.
+#[derive(Serialize, ToSchema)]
+pub struct TableRow {
+    #[schema(value_type = HashMap<String, Object>)]
+    pub parameters: BTreeMap<String, Value>,
+    /// The values asked for, by pointer (as given).
+    #[schema(value_type = HashMap<String, Object>)]
+    pub values: BTreeMap<String, Value>,
+    /// The job's id, when it was computed.
+    pub job: Option<String>,
+    /// Why this row failed, or null.
+    pub error: Option<String>,
+}
+
+/// A study's answer as JSON.
+#[derive(Serialize, ToSchema)]
+pub struct TableResponse {
+    pub rows: Vec<TableRow>,
+}
+
+/// The study of `body` for template `t`: the answer's text and whether it is CSV.
+pub async fn study(
+    state: &AppState,
+    t: &Template,
+    headers: &HeaderMap,
+    values: Option<&String>,
+    body: &[u8],
+) -> Result<(String, bool), ApiError> {
+    let mime = headers.get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok()).unwrap_or("").to_ascii_lowercase();
+    let listed = |v: &String| v.split(',').map(|p| p.trim().to_string()).filter(|p| !p.is_empty()).collect();
+    if mime.starts_with("application/json") {
+        let request: TableRequest = serde_json::from_slice(body).map_err(|e| ApiError::MalformedJson(e.to_string()))?;
+        let pointers: Vec<String> =
+            if request.values.is_empty() { values.map(listed).unwrap_or_default() } else { request.values };
+        let rows = request.rows.iter().map(|r| r.iter().map(|(k, v)| (k.clone(), cell(v))).collect()).collect();
+        let results = run(state, t, rows, &pointers).await?;
+        let rows = request.rows.into_iter().zip(results).map(|(parameters, (values, job, error))| {
+            let values = pointers.iter().cloned().zip(values).collect();
+            TableRow { parameters, values, job, error }
+        });
+        let answer = TableResponse { rows: rows.collect() };
+        return Ok((serde_json::to_string(&answer).map_err(|e| ApiError::Internal(e.to_string()))?, false));
+    }
+    if !(mime.starts_with("text/csv") || mime.starts_with("text/plain")) {
+        return Err(ApiError::UnsupportedTable);
+    }
+    let pointers: Vec<String> = values.map(listed).unwrap_or_default();
+    let text = std::str::from_utf8(body).map_err(|_| bad("body", "the CSV is not UTF-8 text"))?;
+    let (header, rows) = read_csv(text)?;
+    let given = rows.iter().map(|r| parameters_of(&header, r)).collect();
+    let results = run(state, t, given, &pointers).await?;
+    let mut out = csv::Writer::from_writer(Vec::new());
+    let names = pointers.iter().map(|p| p.trim_start_matches('/').to_string());
+    let head: Vec<String> =
+        header.iter().map(|(raw, _, _)| raw.clone()).chain(names).chain(["job".into(), "error".into()]).collect();
+    let internal = |e: csv::Error| ApiError::Internal(e.to_string());
+    out.write_record(&head).map_err(internal)?;
+    for (row, (values, job, error)) in rows.iter().zip(results) {
+        let record = row
+            .iter()
+            .cloned()
+            .chain(values.iter().map(cell))
+            .chain([job.unwrap_or_default(), error.unwrap_or_default()]);
+        out.write_record(record.collect::<Vec<_>>()).map_err(internal)?;
+    }
+    let bytes = out.into_inner().map_err(|e| ApiError::Internal(e.to_string()))?;
+    Ok((String::from_utf8(bytes).map_err(|e| ApiError::Internal(e.to_string()))?, true))
+}
+
+fn bad(parameter: &str, message: impl Into<String>) -> ApiError {
+    ApiError::BadQuery(vec![FieldError::parameter(parameter, message)])
+}
+
+/// A header cell `name [unit]`: (as written, name, unit).
+type Column = (String, String, Option<String>);
+
+fn read_csv(text: &str) -> Result<(Vec<Column>, Vec<Vec<String>>), ApiError> {
+    let mut reader = csv::ReaderBuilder::new().trim(csv::Trim::All).flexible(true).from_reader(text.as_bytes());
+    let header: Vec<Column> = reader
+        .headers()
+        .map_err(|e| bad("body", format!("the CSV's header: {e}")))?
+        .iter()
+        .map(|h| match h.split_once('[') {
+            Some((name, unit)) => {
+                (h.to_string(), name.trim().to_string(), Some(unit.trim_end_matches(']').trim().to_string()))
+            }
+            None => (h.to_string(), h.to_string(), None),
+        })
+        .collect();
+    let mut rows = Vec::new();
+    for (i, record) in reader.records().enumerate() {
+        let record = record.map_err(|e| bad("body", format!("row {}: {e}", i + 1)))?;
+        if record.iter().all(str::is_empty) {
+            continue;
+        }
+        if record.len() != header.len() {
+            return Err(bad("body", format!("row {} has {} cells for {} columns", i + 1, record.len(), header.len())));
+        }
+        rows.push(record.iter().map(String::from).collect());
+        if rows.len() > MAX_ROWS {
+            return Err(bad("body", format!("more than {MAX_ROWS} rows in one study")));
+        }
+    }
+    Ok((header, rows))
+}
+
+/// A CSV row's parameters: a cell under `name [unit]` is the quantity `cell unit`; empty cells keep the default.
+fn parameters_of(header: &[Column], row: &[String]) -> HashMap<String, String> {
+    header
+        .iter()
+        .zip(row)
+        .filter(|(_, c)| !c.is_empty())
+        .map(|((_, name, unit), c)| (name.clone(), unit.as_ref().map_or_else(|| c.clone(), |u| format!("{c} {u}"))))
+        .collect()
+}
+
+/// Every row's values, job and error, in order.
+async fn run(
+    state: &AppState,
+    t: &Template,
+    rows: Vec<HashMap<String, String>>,
+    pointers: &[String],
+) -> Result<Vec<(Vec<Value>, Option<String>, Option<String>)>, ApiError> {
+    if pointers.is_empty() {
+        return Err(bad("values", "give the values to answer, e.g. ?values=inertia_exact,energy_fluctuation"));
+    }
+    if rows.len() > MAX_ROWS {
+        return Err(bad("body", format!("more than {MAX_ROWS} rows in one study")));
+    }
+    let unknown: Vec<FieldError> = rows
+        .iter()
+        .flat_map(|r| r.keys())
+        .filter(|k| !t.parameters.contains_key(*k) || RESERVED.contains(&k.as_str()))
+        .collect::<std::collections::BTreeSet<_>>()
+        .into_iter()
+        .map(|k| {
+            FieldError::parameter(k, format!("no parameter {k} in template {} (its parameters: {})", t.id, known(t)))
+        })
+        .collect();
+    if !unknown.is_empty() {
+        return Err(ApiError::BadQuery(unknown));
+    }
+    let mut out = Vec::with_capacity(rows.len());
+    for given in rows {
+        out.push(match job_for(state, t, &given).await {
+            Ok(row) => {
+                let result: Value = serde_json::from_slice(&row.result).unwrap_or_default();
+                (pointers.iter().map(|p| value_at(&result, p)).collect(), Some(row.id), None)
+            }
+            Err(e @ (ApiError::Saturated { .. } | ApiError::StorageFull | ApiError::Unavailable(_))) => return Err(e),
+            Err(e) => (vec![Value::Null; pointers.len()], None, Some(said(&e))),
+        });
+    }
+    Ok(out)
+}
+
+fn known(t: &Template) -> String {
+    t.parameters.keys().map(String::as_str).collect::<Vec<_>>().join(", ")
+}
+
+/// The value at `pointer` (leading `/` optional) as a table cell's value; null when absent.
+fn value_at(result: &Value, pointer: &str) -> Value {
+    let mut v = result;
+    for t in tokens(pointer) {
+        let next = match v {
+            Value::Object(m) => m.get(&t),
+            Value::Array(a) => t.parse::<usize>().ok().and_then(|i| a.get(i)),
+            _ => None,
+        };
+        match next {
+            Some(n) => v = n,
+            None => return Value::Null,
+        }
+    }
+    v.clone()
+}
+
+/// An error in one line for a table's `error` cell.
+fn said(e: &ApiError) -> String {
+    let p = e.problem();
+    let fields: Vec<String> = p
+        .errors
+        .iter()
+        .map(|f| format!("{}: {}", f.parameter.clone().or_else(|| f.pointer.clone()).unwrap_or_default(), f.message))
+        .collect();
+    if fields.is_empty() { p.detail } else { fields.join("; ") }
+}
