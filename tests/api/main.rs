@@ -16,6 +16,7 @@ mod group_commit;
 mod helpers;
 mod jobs;
 mod kinetostatics;
+mod libreoffice;
 mod limits;
 mod parts;
 mod peers;
