@@ -2,8 +2,8 @@
 //! joints are free, integrated in its own coordinates (any number of DOF).
 
 use super::Initial;
-use crate::api::kinetostatics::{InputDto, Inputs, LoadDto, ReactionDto, convert_loads};
 use crate::api::mechanism::MechanismDto;
+use crate::api::mechanism::{InputDto, Inputs, LoadDto, ReactionDto, convert_loads};
 use crate::api::quantity::{Errors, FunctionDto};
 use crate::engine::dynamics::mechanism::MechanismSolution;
 use crate::engine::kinetostatics::Load;

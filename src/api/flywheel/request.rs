@@ -1,9 +1,9 @@
 //! `POST /v1/flywheel` request and its conversion into an engine problem.
 
 use crate::api::constants::{self, Constants};
-use crate::api::kinetostatics::{InputDto, LoadDto, machine_parts};
 use crate::api::limits::Limits;
 use crate::api::mechanism::MechanismDto;
+use crate::api::mechanism::{InputDto, LoadDto, machine_parts};
 use crate::api::quantity::{Errors, FunctionDto, Quantity};
 use crate::engine::Deadline;
 use crate::engine::flywheel::{DiskSize, DiskSpec, FlywheelProblem, Load, TorqueItem};

@@ -3,7 +3,7 @@
 //! to the field that asked for it (`/input/start` for the first position,
 //! `/input/end` for one further along the range).
 
-use super::request::InputDto;
+use crate::api::mechanism::InputDto;
 use crate::api::problem::{ApiError, FieldError};
 use crate::api::quantity::Quantity;
 use crate::api::{engine_error, engine_failure};

@@ -1,15 +1,11 @@
 //! `POST /v1/kinetostatics`: driving actions and joint reactions of a driven mechanism.
 
-mod loads;
 mod located;
 mod request;
 mod result;
 
-pub(crate) use loads::convert_loads;
-pub use loads::{LoadDto, LoadType};
-pub(crate) use request::machine_parts;
-pub use request::{InputDto, Inputs, KinetostaticsRequest, OutputKind};
-pub use result::{KinetostaticsResult, ReactionDto, Scalars, csv_table};
+pub use request::{KinetostaticsRequest, OutputKind};
+pub use result::{KinetostaticsResult, Scalars, csv_table};
 
 use super::kind::{Kind, Table, unit_in};
 use super::limits::Limits;

@@ -1,23 +1,18 @@
 //! `POST /v1/kinetostatics` request and its conversion into an engine problem.
 
-use super::loads::{LoadDto, convert_loads};
 use super::located::Written;
 use crate::api::constants::{self, Constants};
 use crate::api::limits::Limits;
-use crate::api::mechanism::MechanismDto;
+use crate::api::mechanism::{InputDto, Inputs, LoadDto, MechanismDto, convert_loads};
 use crate::api::problem::FieldError;
-use crate::api::quantity::{Errors, FunctionDto, Quantity};
+use crate::api::quantity::{Errors, Quantity};
 use crate::engine::function::{Function, Side};
 use crate::engine::kinetostatics::{Load, Outputs};
 use crate::engine::model::{Driver, JointKind, Mechanism};
 use crate::units::Dim;
-use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
-use std::fmt;
-use utoipa::openapi::schema::{ArrayBuilder, OneOfBuilder, Schema};
-use utoipa::openapi::{Ref, RefOr};
-use utoipa::{PartialSchema, ToSchema};
+use utoipa::ToSchema;
 
 const DEFAULT_STEPS: usize = 360;
 
@@ -67,77 +62,6 @@ pub enum OutputKind {
     Reactions,
     Kinematics,
     Reduced,
-}
-
-/// A driven joint and the range of its coordinate.
-#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
-pub struct InputDto {
-    /// A revolute (crank) or prismatic (linear actuator) joint.
-    pub joint: String,
-    /// Speed (rad/s or m/s), or a Function of the coordinate (a motion law).
-    /// Required for kinetostatics; a flywheel's machine runs at its mean speed.
-    #[schema(value_type = Option<FunctionDto>)]
-    pub speed: Option<FunctionDto>,
-    /// Acceleration (rad/s² or m/s²); default 0, or ω·dω/dq for a motion law.
-    #[schema(value_type = Option<Quantity>)]
-    pub acceleration: Option<Quantity>,
-    /// First coordinate (default 0).
-    #[schema(value_type = Option<Quantity>)]
-    pub start: Option<Quantity>,
-    /// End of the range, excluded (default start + 2π for a revolute joint).
-    #[schema(value_type = Option<Quantity>)]
-    pub end: Option<Quantity>,
-    /// Number of positions start + k·(end − start)/steps, k = 0..steps−1 (default 360).
-    #[schema(minimum = 1, maximum = 100000)]
-    pub steps: Option<usize>,
-    /// Coordinate of the drawn configuration (default 0).
-    #[schema(value_type = Option<Quantity>)]
-    pub reference: Option<Quantity>,
-}
-
-/// One input or several.
-#[derive(Clone, Debug, Serialize)]
-#[serde(untagged)]
-pub enum Inputs {
-    One(Box<InputDto>),
-    Many(Vec<InputDto>),
-}
-
-struct InputsVisitor;
-
-impl<'de> Visitor<'de> for InputsVisitor {
-    type Value = Inputs;
-    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-        f.write_str("an input object or a list of them")
-    }
-    fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Inputs, A::Error> {
-        InputDto::deserialize(de::value::MapAccessDeserializer::new(map)).map(|i| Inputs::One(Box::new(i)))
-    }
-    fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Inputs, A::Error> {
-        Vec::<InputDto>::deserialize(de::value::SeqAccessDeserializer::new(seq)).map(Inputs::Many)
-    }
-}
-
-impl<'de> Deserialize<'de> for Inputs {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        d.deserialize_any(InputsVisitor)
-    }
-}
-
-impl PartialSchema for Inputs {
-    fn schema() -> RefOr<Schema> {
-        let one = || RefOr::Ref(Ref::from_schema_name("InputDto"));
-        OneOfBuilder::new()
-            .item(one())
-            .item(ArrayBuilder::new().items(one()).min_items(Some(1)).max_items(Some(10)))
-            .into()
-    }
-}
-impl ToSchema for Inputs {
-    fn schemas(schemas: &mut Vec<(String, RefOr<Schema>)>) {
-        schemas.push(("InputDto".into(), InputDto::schema()));
-        <InputDto as ToSchema>::schemas(schemas);
-    }
 }
 
 /// The validated problem, ready for the engine.
@@ -205,32 +129,6 @@ impl KinetostaticsRequest {
             written,
         })
     }
-}
-
-/// The mechanism, its loads and a revolute driver for a flywheel's `machine`
-/// (pointers under `at`).
-pub(crate) fn machine_parts(
-    e: &mut Errors,
-    mech: &MechanismDto,
-    input: &InputDto,
-    loads: &[LoadDto],
-    period: f64,
-    at: &str,
-) -> Option<(Mechanism, Vec<Load>)> {
-    let c = mech.convert(e, &format!("{at}/mechanism"))?;
-    let mut mechanism = c.mechanism;
-    let joint = match mechanism.joints.iter().position(|j| j.name == input.joint) {
-        Some(j) if mechanism.joints[j].kind == JointKind::Revolute => Some(j),
-        Some(_) => e.fail(&format!("{at}/input/joint"), "the flywheel's shaft must be a revolute joint"),
-        None => e.fail(&format!("{at}/input/joint"), format!("unknown joint '{}'", input.joint)),
-    };
-    let reference = match &input.reference {
-        Some(q) => e.angle(q, &format!("{at}/input/reference")),
-        None => Some(0.0),
-    };
-    let loads = convert_loads(e, loads, mech, &c.body_names, period, &format!("{at}/loads"), &["phi"]);
-    mechanism.drivers = vec![Driver { joint: joint?, reference: reference? }];
-    Some((mechanism, loads))
 }
 
 /// Drivers and the positions (coordinate, speed, acceleration per input) of every step.

@@ -1,6 +1,7 @@
 //! The `result` of a kinetostatics job, as stored and served, and its CSV table.
 
 use super::request::Problem;
+use crate::api::mechanism::ReactionDto;
 use crate::engine::kinetostatics::{Motion, Reaction, Solution, Step};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -29,35 +30,6 @@ pub struct GrublerDto {
     pub equations: i64,
     /// Reaction components 2·P_I + P_II plus one driving action per input.
     pub unknowns: i64,
-}
-
-/// The force body `by` exerts on body `on` at the joint (ground frame) and the
-/// couple about the joint point. Null when redundant constraints leave it undetermined.
-#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
-pub struct ReactionDto {
-    pub joint: String,
-    pub on: String,
-    pub by: String,
-    pub fx: Option<f64>,
-    pub fy: Option<f64>,
-    pub moment: Option<f64>,
-    pub determinate: bool,
-}
-
-impl ReactionDto {
-    /// The engine's reaction with its joint and body names.
-    pub fn new(r: &Reaction, joint_names: &[String], body_names: &[String]) -> Self {
-        let v = |x: f64| r.determinate.then_some(x);
-        Self {
-            joint: joint_names[r.joint].clone(),
-            on: body_names[r.on].clone(),
-            by: body_names[r.by].clone(),
-            fx: v(r.fx),
-            fy: v(r.fy),
-            moment: v(r.moment),
-            determinate: r.determinate,
-        }
-    }
 }
 
 /// Position, velocity and acceleration of a body's centre of mass and rotation.

@@ -1,6 +1,14 @@
 //! Wire form of a planar mechanism (named points, bodies, joints) and its
 //! conversion into the engine's model, with every error under its pointer.
 
+mod inputs;
+mod loads;
+mod reactions;
+
+pub use inputs::{InputDto, Inputs, machine_parts};
+pub use loads::{LoadDto, LoadType, MAX_LOADS, convert_loads};
+pub use reactions::ReactionDto;
+
 use super::quantity::{Errors, Quantity};
 use crate::engine::model::{Body, BodyId, Friction, Joint, JointKind, Mechanism, Pitch};
 use crate::units::Dim;

@@ -52,7 +52,7 @@ pub struct LoadDto {
 }
 
 /// Converts a list of loads (pointers under `at`, e.g. "/loads").
-pub(crate) fn convert_loads(
+pub fn convert_loads(
     e: &mut Errors,
     list: &[LoadDto],
     mech: &MechanismDto,
