@@ -123,6 +123,11 @@ fn jobs() -> Vec<(&'static str, &'static str, Value)> {
         ("flywheel F1, exact inertia only", "/v1/flywheel", light),
         ("flywheel F1, defaults (check, 361-row table)", "/v1/flywheel", fixture("requests/p103_slider.json")),
         ("kinetostatics K1, 360 steps, every reaction", "/v1/kinetostatics", k1),
+        (
+            "GET of a template's number, parameters asked before (the stored job: nothing computed)",
+            "/v1/templates/p103-slider-flywheel/result/inertia_exact?F=1200&eps=0.03",
+            Value::Null,
+        ),
     ]
 }
 

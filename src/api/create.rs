@@ -3,13 +3,10 @@
 
 use super::AppState;
 use super::body::{Chunks, guarded};
-use super::jobs::job_chunks;
-use super::json::JsonBody;
-use super::kind::{self, Kind};
+use super::job::job_chunks;
 use super::problem::{ApiError, FieldError};
 use crate::store::{JobRow, NewJob};
 use axum::body::Body;
-use axum::extract::State;
 use axum::http::{StatusCode, header};
 use axum::response::{IntoResponse, Response};
 use bytes::Bytes;
@@ -38,14 +35,6 @@ pub trait JobResult: Serialize {
     fn warnings(&mut self) -> Option<&mut Vec<String>> {
         None
     }
-}
-
-/// The POST of every kind: its body read strictly, computed and stored ([`create`]).
-pub async fn post<K: Kind>(State(state): State<AppState>, body: JsonBody<K::Request>) -> Result<Response, ApiError> {
-    let JsonBody { value, raw, unknown } = body;
-    let limits = state.limits.clone();
-    let request = raw.clone();
-    create(&state, K::NAME, raw, move || kind::compute::<K>(&value, unknown, &request, &limits)).await
 }
 
 /// Runs `compute` once a compute slot is free, off the async workers,

@@ -4,108 +4,27 @@
 
 use super::AppState;
 use super::body::{Chunks, guarded};
+use super::job::{Job, JobList, job_chunks};
+use super::kind;
 use super::problem::{ApiError, FieldError, Problem, ReadErrors};
+use super::read::{self, READ_MEMORY_FACTOR, load};
 use super::tables::{self, Angles};
-use super::{kind, parts};
-use crate::store::{JobRow, Page};
+use crate::store::Page;
 use axum::body::Body;
 use axum::extract::rejection::QueryRejection;
 use axum::extract::{Path, Query, State};
 use axum::http::{HeaderMap, header};
 use axum::response::{IntoResponse, Response};
-use serde::Serialize;
-use serde_json::value::RawValue;
 use std::collections::HashMap;
 use tokio::sync::OwnedSemaphorePermit;
-use utoipa::{IntoParams, ToSchema};
+use utoipa::IntoParams;
 
 /// Largest page of the jobs list.
 pub const MAX_LIMIT: i64 = 100;
 
-#[derive(Serialize, ToSchema)]
-pub struct Timing {
-    /// Wall time of the engine, microseconds.
-    pub engine_us: i64,
-}
-
-/// A stored computation: the request as sent, and its result.
-#[derive(Serialize, ToSchema)]
-pub struct Job {
-    /// Random UUID.
-    pub id: String,
-    #[schema(example = "flywheel")]
-    pub kind: String,
-    /// RFC 3339, UTC.
-    pub created_at: String,
-    /// The request body exactly as sent.
-    #[schema(value_type = Object)]
-    pub request: Box<RawValue>,
-    /// The result; its schema depends on `kind` (e.g. FlywheelResult).
-    #[schema(value_type = Object)]
-    pub result: Box<RawValue>,
-    pub timing: Timing,
-    /// Version of mechdyn that computed the result.
-    pub engine_version: String,
-}
-
-/// A job of one kind, for the OpenAPI document (the answer of a POST): its
-/// `result` has that kind's schema. The same fields as [`Job`].
-#[derive(ToSchema)]
-#[allow(dead_code)]
-pub struct JobOf<R> {
-    /// Random UUID.
-    id: String,
-    kind: String,
-    /// RFC 3339, UTC.
-    created_at: String,
-    /// The request body exactly as sent.
-    #[schema(value_type = Object)]
-    request: (),
-    result: R,
-    timing: Timing,
-    /// Version of mechdyn that computed the result.
-    engine_version: String,
-}
-
-/// A page of jobs, newest first.
-#[derive(Serialize, ToSchema)]
-pub struct JobList {
-    pub items: Vec<Job>,
-    /// Relative URL of the next page, or null on the last one.
-    pub next: Option<String>,
-}
-
-/// Appends the job as JSON, in the order of [`Job`]'s fields: its request
-/// and result are the stored bytes themselves.
-pub fn job_chunks(r: &JobRow, out: &mut Chunks) {
-    let text = |s: &str| serde_json::to_string(s).unwrap_or_default();
-    out.push(format!(
-        "{{\"id\":{},\"kind\":{},\"created_at\":{},\"request\":",
-        text(&r.id),
-        text(&r.kind),
-        text(&r.created_at)
-    ));
-    out.push(r.request.clone());
-    out.push(&b",\"result\":"[..]);
-    out.push(r.result.clone());
-    out.push(format!(",\"timing\":{{\"engine_us\":{}}},\"engine_version\":{}}}", r.engine_us, text(&r.engine_version)));
-}
-
 /// A JSON answer of these chunks, holding `reserved` until it is sent.
 fn json_answer(body: Chunks, reserved: OwnedSemaphorePermit) -> Response {
     ([(header::CONTENT_TYPE, "application/json")], guarded(Body::new(body), reserved)).into_response()
-}
-
-/// The memory of a stored job's answer reserved, then the job loaded.
-pub(super) async fn load(
-    state: &AppState,
-    id: &str,
-    factor: usize,
-) -> Result<(JobRow, OwnedSemaphorePermit), ApiError> {
-    let size = state.store.size(id).await?.ok_or_else(|| ApiError::NotFound(id.into()))?;
-    let reserved = state.admission.memory(size.saturating_mul(factor) + 256).await?;
-    let row = state.store.get(id).await?.ok_or_else(|| ApiError::NotFound(id.into()))?;
-    Ok((row, reserved))
 }
 
 /// Reads a job.
@@ -129,8 +48,8 @@ pub async fn get(
     headers: HeaderMap,
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
 ) -> Result<Response, ApiError> {
-    let q = parts::query(q, &["angles"])?;
-    if parts::wants(&headers, None, "text/csv") {
+    let q = read::query(q, &["angles"])?;
+    if read::wants(&headers, None, "text/csv") {
         return csv_answer(&state, &id, q.get("angles")).await;
     }
     let (row, reserved) = load(&state, &id, READ_MEMORY_FACTOR).await?;
@@ -244,14 +163,14 @@ pub async fn csv(
     Path(id): Path<String>,
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
 ) -> Result<Response, ApiError> {
-    let q = parts::query(q, &["angles"])?;
+    let q = read::query(q, &["angles"])?;
     csv_answer(&state, &id, q.get("angles")).await
 }
 
 /// The CSV of a stored job ([`tables::result_csv`]), converted off the async workers.
 async fn csv_answer(state: &AppState, id: &str, angles: Option<&String>) -> Result<Response, ApiError> {
     let angles = Angles::parse(angles).map_err(|e| ApiError::BadQuery(vec![e]))?;
-    let (row, result, reserved) = parts::result_tree(state, id).await?;
+    let (row, result, reserved) = read::result_tree(state, id).await?;
     let kind = row.kind.clone();
     let body = tokio::task::spawn_blocking(move || tables::result_csv(kind::find(&kind), &result, angles))
         .await
@@ -263,10 +182,3 @@ async fn csv_answer(state: &AppState, id: &str, angles: Option<&String>) -> Resu
     )
         .into_response())
 }
-
-/// Memory of a read per byte of the stored job: SQLite's copy of the value,
-/// sqlx's, and the answer's (measured: 64 readers of a 16 MB job).
-const READ_MEMORY_FACTOR: usize = 3;
-/// The same for a CSV answer or a part of a result: the read, the result as
-/// a JSON tree (about eight times its text) and the CSV text.
-pub(super) const CSV_MEMORY_FACTOR: usize = 12;

@@ -6,10 +6,13 @@
 //! the registry ([`KINDS`]), never through a `match` on a kind's name.
 
 use super::create::JobResult;
+use super::json::JsonBody;
 use super::limits::Limits;
 use super::problem::{ApiError, FieldError, PostErrors};
-use super::{AppState, dynamics, equivalent, flywheel, gear_train, gears, jobs, kinetostatics, rotor};
+use super::{AppState, dynamics, equivalent, flywheel, gear_train, gears, job, kinetostatics, rotor};
 use crate::store::JobRow;
+use axum::extract::State;
+use axum::response::Response;
 use bytes::Bytes;
 use serde::de::DeserializeOwned;
 use serde_json::Value;
@@ -61,6 +64,14 @@ pub trait Kind: Send + Sync + 'static {
     fn unit(_result: &Value, pointer: &[&str]) -> Option<String> {
         unit_in(Self::UNITS, pointer).map(String::from)
     }
+}
+
+/// The POST of every kind: its body read strictly, computed and stored ([`create`]).
+pub async fn post<K: Kind>(State(state): State<AppState>, body: JsonBody<K::Request>) -> Result<Response, ApiError> {
+    let JsonBody { value, raw, unknown } = body;
+    let limits = state.limits.clone();
+    let request = raw.clone();
+    super::create::create(&state, K::NAME, raw, move || compute::<K>(&value, unknown, &request, &limits)).await
 }
 
 /// Computes a request of kind `K` as every way in does (the POST, the CLI):
@@ -129,8 +140,8 @@ impl<K: Kind> AnyKind for Registered<K> {
         K::Result::schemas(&mut schemas);
         schemas.push((K::Request::name().into(), K::Request::schema()));
         schemas.push((K::Result::name().into(), K::Result::schema()));
-        schemas.push((job_schema::<K>(), jobs::JobOf::<K::Result>::schema()));
-        (schemas, operation::<K>(), axum::routing::post(super::create::post::<K>))
+        schemas.push((job_schema::<K>(), job::JobOf::<K::Result>::schema()));
+        (schemas, operation::<K>(), axum::routing::post(post::<K>))
     }
     fn solve(&self, raw: String, limits: &Limits) -> Result<Vec<u8>, ApiError> {
         let body = super::json::parse::<K::Request>(raw)?;

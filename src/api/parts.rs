@@ -4,9 +4,9 @@
 
 use super::AppState;
 use super::body::guarded;
-use super::jobs::{CSV_MEMORY_FACTOR, load};
 use super::kind;
 use super::problem::{ApiError, FieldError, Problem, ReadErrors};
+use super::read::{query, result_tree, wants};
 use super::tables::{self, Angles, Values};
 use crate::store::JobRow;
 use axum::body::Body;
@@ -16,39 +16,6 @@ use axum::http::{HeaderMap, header};
 use axum::response::{IntoResponse, Response};
 use serde_json::Value;
 use std::collections::HashMap;
-
-/// The query of a read: its parameters by name, each checked against `known`.
-pub fn query(
-    query: Result<Query<HashMap<String, String>>, QueryRejection>,
-    known: &[&str],
-) -> Result<HashMap<String, String>, ApiError> {
-    let Query(q) = query.map_err(|e| ApiError::BadQuery(vec![FieldError::parameter("", e.body_text())]))?;
-    let unknown: Vec<FieldError> = q
-        .keys()
-        .filter(|k| !known.contains(&k.as_str()))
-        .map(|k| FieldError::parameter(k, format!("unknown parameter (known: {})", known.join(", "))))
-        .collect();
-    if unknown.is_empty() { Ok(q) } else { Err(ApiError::BadQuery(unknown)) }
-}
-
-/// Whether the client asked for `mime` in `Accept` (or `?format=`).
-pub fn wants(headers: &HeaderMap, format: Option<&String>, mime: &str) -> bool {
-    let short = mime.rsplit('/').next().unwrap_or(mime);
-    if let Some(f) = format {
-        return f.eq_ignore_ascii_case(short);
-    }
-    headers.get_all(header::ACCEPT).iter().filter_map(|v| v.to_str().ok()).any(|v| v.contains(mime))
-}
-
-/// The stored result of a job as a JSON tree, with the memory it takes reserved.
-pub async fn result_tree(
-    state: &AppState,
-    id: &str,
-) -> Result<(JobRow, Value, tokio::sync::OwnedSemaphorePermit), ApiError> {
-    let (row, reserved) = load(state, id, CSV_MEMORY_FACTOR).await?;
-    let result = serde_json::from_slice(&row.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
-    Ok((row, result, reserved))
-}
 
 /// One part of a job's result, by JSON pointer.
 ///

@@ -13,11 +13,12 @@ pub use table::{TableRequest, TableResponse, TableRow, study};
 
 use super::AppState;
 use super::body::Chunks;
-use super::jobs::job_chunks;
+use super::job::job_chunks;
 use super::json::JsonBody;
 use super::kind;
-use super::parts::{self, result_tree};
+use super::parts;
 use super::problem::{ApiError, FieldError, Problem, ReadErrors};
+use super::read::{self, result_tree};
 use crate::store::JobRow;
 use axum::body::Body;
 use axum::extract::rejection::QueryRejection;
@@ -76,7 +77,7 @@ pub async fn get(State(state): State<AppState>, Path(id): Path<String>) -> Resul
         ("parameters" = Option<HashMap<String, String>>, Query, style = Form, explode,
             description = "The template's parameters, e.g. `F=1200&eps=0.03`: a number in the parameter's unit, or a quantity (`300 rpm`)")),
     responses(
-        (status = 200, description = "The job", body = super::jobs::Job),
+        (status = 200, description = "The job", body = super::job::Job),
         (status = 400, description = "An unknown parameter or a value out of its range", body = Problem, content_type = "application/problem+json"),
         (status = 422, description = "These parameters do not give a valid problem", body = Problem, content_type = "application/problem+json"),
         ReadErrors,
@@ -181,7 +182,7 @@ pub async fn table(
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
     body: axum::body::Bytes,
 ) -> Result<Response, ApiError> {
-    let q = parts::query(q, &["values"])?;
+    let q = read::query(q, &["values"])?;
     let t = find(&state, &id).await?;
     let (text, csv) = study(&state, &t, &headers, q.get("values"), &body).await?;
     let mime = if csv { "text/csv; charset=utf-8" } else { "application/json" };

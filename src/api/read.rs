@@ -1,0 +1,60 @@
+//! Reading stored jobs: the memory of the answer reserved before the job is
+//! loaded, and the checks every read's query shares.
+
+use super::AppState;
+use super::problem::{ApiError, FieldError};
+use crate::store::JobRow;
+use axum::extract::Query;
+use axum::extract::rejection::QueryRejection;
+use axum::http::{HeaderMap, header};
+use serde_json::Value;
+use std::collections::HashMap;
+use tokio::sync::OwnedSemaphorePermit;
+
+/// The memory of a stored job's answer reserved, then the job loaded.
+pub async fn load(state: &AppState, id: &str, factor: usize) -> Result<(JobRow, OwnedSemaphorePermit), ApiError> {
+    let size = state.store.size(id).await?.ok_or_else(|| ApiError::NotFound(id.into()))?;
+    let reserved = state.admission.memory(size.saturating_mul(factor) + 256).await?;
+    let row = state.store.get(id).await?.ok_or_else(|| ApiError::NotFound(id.into()))?;
+    Ok((row, reserved))
+}
+
+/// The query of a read: its parameters by name, each checked against `known`.
+pub fn query(
+    query: Result<Query<HashMap<String, String>>, QueryRejection>,
+    known: &[&str],
+) -> Result<HashMap<String, String>, ApiError> {
+    let Query(q) = query.map_err(|e| ApiError::BadQuery(vec![FieldError::parameter("", e.body_text())]))?;
+    let unknown: Vec<FieldError> = q
+        .keys()
+        .filter(|k| !known.contains(&k.as_str()))
+        .map(|k| FieldError::parameter(k, format!("unknown parameter (known: {})", known.join(", "))))
+        .collect();
+    if unknown.is_empty() { Ok(q) } else { Err(ApiError::BadQuery(unknown)) }
+}
+
+/// Whether the client asked for `mime` in `Accept` (or `?format=`).
+pub fn wants(headers: &HeaderMap, format: Option<&String>, mime: &str) -> bool {
+    let short = mime.rsplit('/').next().unwrap_or(mime);
+    if let Some(f) = format {
+        return f.eq_ignore_ascii_case(short);
+    }
+    headers.get_all(header::ACCEPT).iter().filter_map(|v| v.to_str().ok()).any(|v| v.contains(mime))
+}
+
+/// The stored result of a job as a JSON tree, with the memory it takes reserved.
+pub async fn result_tree(
+    state: &AppState,
+    id: &str,
+) -> Result<(JobRow, Value, tokio::sync::OwnedSemaphorePermit), ApiError> {
+    let (row, reserved) = load(state, id, CSV_MEMORY_FACTOR).await?;
+    let result = serde_json::from_slice(&row.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
+    Ok((row, result, reserved))
+}
+
+/// Memory of a read per byte of the stored job: SQLite's copy of the value,
+/// sqlx's, and the answer's (measured: 64 readers of a 16 MB job).
+pub const READ_MEMORY_FACTOR: usize = 3;
+/// The same for a CSV answer or a part of a result: the read, the result as
+/// a JSON tree (about eight times its text) and the CSV text.
+pub const CSV_MEMORY_FACTOR: usize = 12;
