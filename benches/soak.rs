@@ -23,7 +23,9 @@ use std::time::{Duration, Instant};
 const CONNECTIONS: u32 = 64;
 
 pub fn fixture(path: &str) -> Value {
-    let full = format!("{}/tests/fixtures/{path}", env!("CARGO_MANIFEST_DIR"));
+    // Requests live in the problem library; reference cases and seeds with the tests.
+    let folder = if path.starts_with("requests/") { "library" } else { "tests/fixtures" };
+    let full = format!("{}/{folder}/{path}", env!("CARGO_MANIFEST_DIR"));
     serde_json::from_str(&std::fs::read_to_string(full).expect("fixture")).expect("fixture JSON")
 }
 

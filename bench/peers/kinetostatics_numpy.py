@@ -4,7 +4,7 @@ way a NumPy user would: per crank position, closed-form kinematics and one
 and the joint reactions. The peer of the service's kinetostatics in
 benches/work_precision.rs and tests/api/peers.rs.
 
-Data (tests/fixtures/requests/k1_offset_slider_crank.json): crank OA
+Data (library/requests/k1_offset_slider_crank.json): crank OA
 r = 0.08 m at omega = 150 rad/s, rod AB L = 0.3 m, piston on y = e = 0.02 m;
 masses 2, 1.2, 0.9 kg; inertias 0.004, 0.012, 0.001 kg m^2; G1 at 0.02 m
 along the crank, G2 at 0.3 of AB from A, G3 at B; gravity -9.81 y; the gas

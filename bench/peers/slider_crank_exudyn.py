@@ -2,7 +2,7 @@
 would pick instead: the peer of the service's direct dynamics in
 benches/work_precision/ and tests/api/peers.rs.
 
-Model (tests/fixtures/requests/slider_crank_startup.json, the same numbers):
+Model (library/requests/slider_crank_startup.json, the same numbers):
 crank OA 0.5 m, 2 kg, I_G = 2/12 * 0.5^2, G at mid-length; rod AB 1 m,
 4 kg, I_G = 4/12 * 1^2, G at mid-length; slider 1 kg on the x axis; the
 crank and rod lie along +x at rest (outer dead centre); a constant torque of

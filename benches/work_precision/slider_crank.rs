@@ -1,5 +1,5 @@
 //! Direct dynamics against Exudyn: a slider-crank started from rest by a
-//! constant torque (tests/fixtures/requests/slider_crank_startup.json), 2 s;
+//! constant torque (library/requests/slider_crank_startup.json), 2 s;
 //! error = |φ(2 s) − φ_ref| of the crank, rad. φ_ref = 22.08917156994341 rad
 //! from the energy balance (bench/peers/slider_crank_exudyn.py: t(φ) = ∫dφ/ω
 //! with the closed-form I*, SciPy quad + brentq), independent of both

@@ -1,6 +1,6 @@
 //! The reference flywheel cases (tests/fixtures/cases, copied from the
 //! project's shared cases) through the HTTP API, at the tolerances each case
-//! gives. Requests are in tests/fixtures/requests, written as a user would.
+//! gives. Requests are in library/requests, written as a user would.
 
 use crate::helpers::{TestApp, all_close, case, close, request};
 use serde_json::{Value, json};

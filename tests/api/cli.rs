@@ -9,7 +9,7 @@ fn mechdyn(args: &[&str]) -> std::process::Output {
 /// `solve` prints the same result as the API: P.103's 348.99 kg·m² (textbook).
 #[test]
 fn solve_prints_the_result_without_a_server() {
-    let out = mechdyn(&["solve", "flywheel", "tests/fixtures/requests/p103_slider.json"]);
+    let out = mechdyn(&["solve", "flywheel", "library/requests/p103_slider.json"]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let r: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let i = r["inertia_approximate"].as_f64().unwrap();
@@ -44,7 +44,7 @@ fn openapi_prints_the_committed_document() {
 /// `solve kinetostatics` prints K1's driving torque at 30° (−228.4912 N·m, reference case).
 #[test]
 fn solve_kinetostatics_prints_the_result() {
-    let out = mechdyn(&["solve", "kinetostatics", "tests/fixtures/requests/k1_offset_slider_crank.json"]);
+    let out = mechdyn(&["solve", "kinetostatics", "library/requests/k1_offset_slider_crank.json"]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let r: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let t = r["steps"][1]["driving"].as_f64().unwrap();
@@ -55,11 +55,11 @@ fn solve_kinetostatics_prints_the_result() {
 /// example reaches 4π (its `until_angle`), to the printed digits of the API.
 #[test]
 fn solve_knows_every_job_kind() {
-    let out = mechdyn(&["solve", "dynamics", "tests/fixtures/requests/d1_scotch_yoke_machine.json"]);
+    let out = mechdyn(&["solve", "dynamics", "library/requests/d1_scotch_yoke_machine.json"]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let r: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let end = r["events"].as_array().unwrap().last().unwrap()["angle"].as_f64().unwrap();
     assert!((end - 4.0 * std::f64::consts::PI).abs() < 1e-9, "{end}");
-    let out = mechdyn(&["solve", "rotr", "tests/fixtures/requests/p103_slider.json"]);
+    let out = mechdyn(&["solve", "rotr", "library/requests/p103_slider.json"]);
     assert!(String::from_utf8_lossy(&out.stderr).contains("gear_train, equivalent_masses, rotor"));
 }

@@ -113,7 +113,7 @@ impl TestApp {
     }
 }
 
-/// A request fixture from tests/fixtures/requests.
+/// A request of the problem library (library/requests).
 pub fn request(name: &str) -> Value {
     fixture(&format!("requests/{name}.json"))
 }
@@ -133,7 +133,9 @@ pub fn case(name: &str) -> Value {
 }
 
 fn fixture(path: &str) -> Value {
-    let full = format!("{}/tests/fixtures/{path}", env!("CARGO_MANIFEST_DIR"));
+    // Requests live in the problem library; reference cases and seeds with the tests.
+    let folder = if path.starts_with("requests/") { "library" } else { "tests/fixtures" };
+    let full = format!("{}/{folder}/{path}", env!("CARGO_MANIFEST_DIR"));
     serde_json::from_str(&std::fs::read_to_string(&full).unwrap()).unwrap()
 }
 
