@@ -21,7 +21,7 @@ fn main() -> ExitCode {
         None | Some(Command::Serve) => serve(&cli),
         Some(Command::Healthcheck) => healthcheck(&cli.addr),
         Some(Command::Openapi) => {
-            println!("{}", api::openapi().to_pretty_json().unwrap_or_default());
+            println!("{}", api::openapi_json());
             ExitCode::SUCCESS
         }
         Some(Command::Solve { kind, file }) => solve(kind, file),

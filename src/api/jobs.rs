@@ -8,7 +8,7 @@ use super::job::{Job, JobList, job_chunks};
 use super::kind;
 use super::problem::{ApiError, FieldError, Problem, ReadErrors};
 use super::read::{self, READ_MEMORY_FACTOR, load};
-use super::tables::{self, Angles};
+use super::tables::{self, AngleUnit, Angles};
 use crate::store::Page;
 use axum::body::Body;
 use axum::extract::rejection::QueryRejection;
@@ -34,7 +34,7 @@ fn json_answer(body: Chunks, reserved: OwnedSemaphorePermit) -> Response {
 #[utoipa::path(get, path = "/v1/jobs/{id}", operation_id = "get_job", tag = "jobs",
     params(
         ("id" = String, Path, description = "Job id"),
-        ("angles" = Option<String>, Query, description = "With `Accept: text/csv`: `rad` (default) or `deg`"),
+        ("angles" = Option<AngleUnit>, Query, description = "With `Accept: text/csv`: `rad` (default) or `deg`"),
     ),
     responses(
         (status = 200, description = "The job (JSON), or its table with `Accept: text/csv`",
@@ -49,6 +49,7 @@ pub async fn get(
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
 ) -> Result<Response, ApiError> {
     let q = read::query(q, &["angles"])?;
+    Angles::parse(q.get("angles")).map_err(|e| ApiError::BadQuery(vec![e]))?;
     if read::wants(&headers, None, "text/csv") {
         return csv_answer(&state, &id, q.get("angles")).await;
     }
@@ -151,7 +152,7 @@ fn list_params(q: &HashMap<String, String>) -> Result<(Option<String>, i64, Opti
 #[utoipa::path(get, path = "/v1/jobs/{id}/result.csv", operation_id = "get_job_result_csv", tag = "jobs",
     params(
         ("id" = String, Path, description = "Job id"),
-        ("angles" = Option<String>, Query, description = "`rad` (default) or `deg`: angle columns in degrees, their header saying so"),
+        ("angles" = Option<AngleUnit>, Query, description = "`rad` (default) or `deg`: angle columns in degrees, their header saying so"),
     ),
     responses(
         (status = 200, description = "CSV table", body = String, content_type = "text/csv"),

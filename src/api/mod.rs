@@ -34,7 +34,7 @@ pub mod templates;
 use crate::store::Store;
 pub use admission::{Admission, Capacity};
 use axum::extract::State;
-use axum::http::StatusCode;
+use axum::http::{StatusCode, header};
 use axum::response::Redirect;
 use axum::routing::get;
 use axum::{Json, Router};
@@ -90,7 +90,10 @@ service has cores, 64 more wait; beyond that a POST is answered 503 `/problems/s
 token (`MECHDYN_API_TOKEN`), every POST needs `Authorization: Bearer <token>` (401 without it); every \
 answer carries an `x-request-id` header."
     ),
-    components(schemas(Problem, FieldError, Health, quantity::Quantity, quantity::FunctionDto, quantity::FunctionSpec)),
+    components(schemas(
+        Problem, FieldError, Health, quantity::Quantity, quantity::FunctionDto, quantity::FunctionSpec,
+        tables::AngleUnit, tables::Format
+    )),
     tags(
         (name = "flywheel", description = "Flywheel design for a machine in steady state"),
         (name = "kinetostatics", description = "Inverse dynamics of planar mechanisms"),
@@ -141,16 +144,26 @@ fn rest_of_path(
 
 /// The OpenAPI document, as served at `/openapi.json`: the routes' operations
 /// and schemas, then what the registry adds ([`examples`]): every POST's 201
-/// example computed by the engine, the units of every result's fields.
-pub fn openapi() -> utoipa::openapi::OpenApi {
-    static DOC: std::sync::OnceLock<utoipa::openapi::OpenApi> = std::sync::OnceLock::new();
+/// example computed by the engine, the units of every result's fields. Kept
+/// as JSON: utoipa's types cannot read back a schema that allows any value.
+pub fn openapi() -> serde_json::Value {
+    served().0.clone()
+}
+
+/// The document as `cargo run -- openapi` prints it and `/openapi.json` serves it.
+pub fn openapi_json() -> &'static str {
+    &served().1
+}
+
+fn served() -> &'static (serde_json::Value, String) {
+    static DOC: std::sync::OnceLock<(serde_json::Value, String)> = std::sync::OnceLock::new();
     DOC.get_or_init(|| {
         let (_, doc) = routes().split_for_parts();
-        let Ok(mut value) = serde_json::to_value(&doc) else { return doc };
+        let mut value = serde_json::to_value(&doc).unwrap_or_default();
         examples::add(&mut value);
-        serde_json::from_value(value).unwrap_or(doc)
+        let text = serde_json::to_string_pretty(&value).unwrap_or_default();
+        (value, text)
     })
-    .clone()
 }
 
 /// The service's router with its middleware ([`middleware::layered`]).
@@ -158,12 +171,9 @@ pub fn router(state: AppState, settings: &Settings) -> Router {
     let (routes, _) = routes().split_for_parts();
     let routes = routes
         .route("/", get(|| async { Redirect::to("/docs/") }))
+        .route("/openapi.json", get(|| async { ([(header::CONTENT_TYPE, "application/json")], openapi_json()) }))
         // The validator would send the document's URL to validator.swagger.io and show a broken image offline.
-        .merge(
-            SwaggerUi::new("/docs")
-                .url("/openapi.json", openapi())
-                .config(Config::new(["/openapi.json"]).validator_url("none")),
-        )
+        .merge(SwaggerUi::new("/docs").config(Config::new(["/openapi.json"]).validator_url("none")))
         .fallback(|| async { ApiError::NoRoute })
         .method_not_allowed_fallback(|| async { ApiError::MethodNotAllowed })
         .with_state(state.clone());

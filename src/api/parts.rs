@@ -7,7 +7,7 @@ use super::body::guarded;
 use super::kind;
 use super::problem::{ApiError, FieldError, Problem, ReadErrors};
 use super::read::{query, result_tree, wants};
-use super::tables::{self, Angles, Values};
+use super::tables::{self, AngleUnit, Angles, Format, Values};
 use crate::store::JobRow;
 use axum::body::Body;
 use axum::extract::rejection::QueryRejection;
@@ -32,7 +32,7 @@ use std::collections::HashMap;
     ),
     responses(
         (status = 200, description = "The value alone (text/plain), or JSON for an object or array or with `Accept: application/json`",
-            content((String = "text/plain", example = "353.52142732201156"), (Object = "application/json"))),
+            content((String = "text/plain", example = "353.52142732201156"), (serde_json::Value = "application/json"))),
         (status = 400, description = "A unit of the wrong dimension, a part without a unit, or an unknown query parameter",
             body = Problem, content_type = "application/problem+json",
             example = json!({"type": "/problems/invalid-query", "title": "Invalid query parameters", "status": 400,
@@ -48,7 +48,7 @@ pub async fn part(
 ) -> Result<Response, ApiError> {
     let q = query(q, &["unit"])?;
     let (row, result, _reserved) = result_tree(&state, &id).await?;
-    answer(&row, &result, &pointer, q.get("unit"), &headers)
+    answer(&row, &result, &pointer, q.get("unit").filter(|u| !u.trim().is_empty()), &headers)
 }
 
 /// The part of `result` (of job `row`) at `pointer`, converted to `unit`,
@@ -107,8 +107,8 @@ fn step<'a>(v: &'a Value, token: &str) -> Option<&'a Value> {
 #[utoipa::path(get, path = "/v1/jobs/{id}/values", operation_id = "get_job_values", tag = "jobs",
     params(
         ("id" = String, Path, description = "Job id"),
-        ("format" = Option<String>, Query, description = "`json` (default) or `csv`; the same as `Accept: text/csv`"),
-        ("angles" = Option<String>, Query, description = "`rad` (default) or `deg`"),
+        ("format" = Option<Format>, Query, description = "`json` (default) or `csv`; the same as `Accept: text/csv`"),
+        ("angles" = Option<AngleUnit>, Query, description = "`rad` (default) or `deg`"),
     ),
     responses(
         (status = 200, description = "Every scalar of the result",

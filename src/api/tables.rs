@@ -16,7 +16,6 @@ pub struct Scalar {
     /// JSON pointer relative to `result`, e.g. `/inertia_exact`.
     pub pointer: String,
     /// A number, string, boolean or null.
-    #[schema(value_type = Object)]
     pub value: Value,
     /// The unit of a number (`1`: dimensionless); null for a text, a flag or a name.
     pub unit: Option<String>,
@@ -26,6 +25,24 @@ pub struct Scalar {
 #[derive(Serialize, ToSchema)]
 pub struct Values {
     pub values: Vec<Scalar>,
+}
+
+/// How angles are written, `?angles=` (the OpenAPI document's enum).
+#[derive(ToSchema)]
+#[schema(rename_all = "lowercase")]
+#[allow(dead_code)]
+pub enum AngleUnit {
+    Rad,
+    Deg,
+}
+
+/// `?format=` of the values.
+#[derive(ToSchema)]
+#[schema(rename_all = "lowercase")]
+#[allow(dead_code)]
+pub enum Format {
+    Json,
+    Csv,
 }
 
 /// How angle columns and values are written.

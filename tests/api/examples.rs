@@ -112,3 +112,22 @@ async fn the_template_example_creates_a_template() {
     let job = app.get(&format!("{}/job", r.location.unwrap())).await;
     assert_eq!(job.status, StatusCode::OK, "{}", job.text);
 }
+
+/// The served document is the post-processed one (a failed round trip once
+/// served the bare one silently): every POST's 201 has its example, every
+/// result its units, and a route taking the rest of the path is documented
+/// with an ordinary parameter.
+#[tokio::test]
+async fn the_served_document_has_what_the_registry_adds() {
+    let app = TestApp::new().await;
+    let doc = app.get("/openapi.json").await.json();
+    assert_eq!(doc, mechdyn::api::openapi());
+    for kind in mechdyn::api::kind::KINDS {
+        let created = &doc["paths"][kind.path()]["post"]["responses"]["201"]["content"]["application/json"];
+        assert!(created["example"]["result"].is_object(), "{}: no example", kind.name());
+        assert!(doc["components"]["schemas"][kind.result_schema()]["x-units"].is_object(), "{}", kind.name());
+    }
+    let paths: Vec<&String> = doc["paths"].as_object().unwrap().keys().collect();
+    assert!(paths.iter().any(|p| *p == "/v1/jobs/{id}/result/{pointer}"), "{paths:?}");
+    assert!(paths.iter().all(|p| !p.contains("{*")), "{paths:?}");
+}

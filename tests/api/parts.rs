@@ -103,6 +103,11 @@ async fn bad_units_and_missing_parts_are_named() {
         assert_eq!(r.json()["type"], "/problems/no-such-part");
         assert!(r.json()["detail"].as_str().unwrap().contains(&format!("/{missing}")), "{}", r.text);
     }
+    for query in ["angles=grad", "angles=", "format=xml"] {
+        let r = app.get(&format!("{job}/values?{query}")).await;
+        assert_eq!(r.status, StatusCode::BAD_REQUEST, "{query}: {}", r.text);
+    }
+    assert_eq!(app.get(&format!("{job}?angles=null")).await.status, StatusCode::BAD_REQUEST);
     let no_job = app.get("/v1/jobs/0d1e5d8a-6a3c-4f4e-9a53-2f1c0b7e9d41/result/inertia_exact").await;
     assert_eq!(no_job.status, StatusCode::NOT_FOUND);
 }

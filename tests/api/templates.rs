@@ -195,7 +195,11 @@ async fn a_parameter_study_is_one_csv_in_one_csv_out() {
     let j = app.post("/v1/templates/p103-slider-flywheel/table", &json_body).await.json();
     assert_eq!(j["rows"][0]["values"]["inertia_exact"].as_f64().unwrap(), rows[1][2].parse::<f64>().unwrap());
     assert!(j["rows"][1]["error"].as_str().unwrap().contains("F:"), "{j}");
-    let unknown = app.post_raw(path, "text/csv", "G\n1\n").await;
-    assert_eq!(unknown.status, StatusCode::BAD_REQUEST);
-    assert_eq!(unknown.json()["errors"][0]["parameter"], "G");
+    for body in ["G\n1\n", "G\n", "true"] {
+        let unknown = app.post_raw(path, "text/csv", body).await;
+        assert_eq!(unknown.status, StatusCode::BAD_REQUEST, "{body}: {}", unknown.text);
+        assert!(unknown.json()["errors"][0]["message"].as_str().unwrap().contains("no parameter"), "{body}");
+    }
+    let nameless = app.get("/v1/templates/p103-slider-flywheel/job?=1").await;
+    assert_eq!(nameless.status, StatusCode::BAD_REQUEST);
 }

@@ -111,7 +111,7 @@ pub async fn job(
             description = "The template's parameters, e.g. `F=1200&eps=0.03`")),
     responses(
         (status = 200, description = "The value alone (text/plain), or JSON for an object or array",
-            content((String = "text/plain", example = "353.52142732201156"), (Object = "application/json"))),
+            content((String = "text/plain", example = "353.52142732201156"), (serde_json::Value = "application/json"))),
         (status = 400, description = "An unknown parameter, a value out of its range, or a unit of the wrong dimension",
             body = Problem, content_type = "application/problem+json"),
         (status = 422, description = "These parameters do not give a valid problem", body = Problem, content_type = "application/problem+json"),
@@ -127,11 +127,14 @@ pub async fn result(
     let t = find(&state, &id).await?;
     let row = job_for(&state, &t, &q).await?;
     let (row, result, _reserved) = result_tree(&state, &row.id).await?;
-    parts::answer(&row, &result, &pointer, q.get("unit"), &headers)
+    parts::answer(&row, &result, &pointer, q.get("unit").filter(|u| !u.trim().is_empty()), &headers)
 }
 
 fn parameters(q: Result<Query<HashMap<String, String>>, QueryRejection>) -> Result<HashMap<String, String>, ApiError> {
     let Query(q) = q.map_err(|e| ApiError::BadQuery(vec![FieldError::parameter("", e.body_text())]))?;
+    if q.contains_key("") {
+        return Err(ApiError::BadQuery(vec![FieldError::parameter("", "a parameter without a name (`?=...`)")]));
+    }
     Ok(q)
 }
 

@@ -37,7 +37,6 @@ pub struct Parameter {
     pub step: Option<f64>,
     /// The only values allowed.
     #[serde(skip_serializing_if = "Option::is_none")]
-    #[schema(value_type = Option<Vec<Object>>)]
     pub choices: Option<Vec<Value>>,
 }
 

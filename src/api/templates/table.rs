@@ -23,7 +23,7 @@ pub const MAX_ROWS: usize = 1000;
 #[schema(example = json!({"rows": [{"F": 1000}, {"F": "1.2 kN*m", "eps": "3 %"}], "values": ["inertia_exact"]}))]
 pub struct TableRequest {
     /// One object of parameters per variant (a number in the parameter's unit, or a quantity string).
-    #[schema(value_type = Vec<HashMap<String, Object>>, max_items = 1000)]
+    #[schema(max_items = 1000)]
     pub rows: Vec<BTreeMap<String, Value>>,
     /// JSON pointers into the result of the values to answer.
     pub values: Vec<String>,
@@ -32,10 +32,8 @@ pub struct TableRequest {
 /// One variant of a study.
 #[derive(Serialize, ToSchema)]
 pub struct TableRow {
-    #[schema(value_type = HashMap<String, Object>)]
     pub parameters: BTreeMap<String, Value>,
     /// The values asked for, by pointer (as given).
-    #[schema(value_type = HashMap<String, Object>)]
     pub values: BTreeMap<String, Value>,
     /// The job's id, when it was computed.
     pub job: Option<String>,
@@ -78,6 +76,14 @@ pub async fn study(
     let pointers: Vec<String> = values.map(listed).unwrap_or_default();
     let text = std::str::from_utf8(body).map_err(|_| bad("body", "the CSV is not UTF-8 text"))?;
     let (header, rows) = read_csv(text)?;
+    let unknown: Vec<FieldError> = header
+        .iter()
+        .filter(|(_, name, _)| !t.parameters.contains_key(name) || RESERVED.contains(&name.as_str()))
+        .map(|(_, name, _)| unknown_parameter(t, name))
+        .collect();
+    if !unknown.is_empty() {
+        return Err(ApiError::BadQuery(unknown));
+    }
     let given = rows.iter().map(|r| parameters_of(&header, r)).collect();
     let results = run(state, t, given, &pointers).await?;
     let mut out = csv::Writer::from_writer(Vec::new());
@@ -164,9 +170,7 @@ async fn run(
         .filter(|k| !t.parameters.contains_key(*k) || RESERVED.contains(&k.as_str()))
         .collect::<std::collections::BTreeSet<_>>()
         .into_iter()
-        .map(|k| {
-            FieldError::parameter(k, format!("no parameter {k} in template {} (its parameters: {})", t.id, known(t)))
-        })
+        .map(|k| unknown_parameter(t, k))
         .collect();
     if !unknown.is_empty() {
         return Err(ApiError::BadQuery(unknown));
@@ -185,8 +189,9 @@ async fn run(
     Ok(out)
 }
 
-fn known(t: &Template) -> String {
-    t.parameters.keys().map(String::as_str).collect::<Vec<_>>().join(", ")
+fn unknown_parameter(t: &Template, name: &str) -> FieldError {
+    let known = t.parameters.keys().map(String::as_str).collect::<Vec<_>>().join(", ");
+    FieldError::parameter(name, format!("no parameter {name} in template {} (its parameters: {known})", t.id))
 }
 
 /// The value at `pointer` (leading `/` optional) as a table cell's value; null when absent.
