@@ -13,6 +13,7 @@ pub mod equivalent;
 pub mod examples;
 pub mod flywheel;
 pub mod function_csv;
+pub mod function_read;
 pub mod gear_train;
 pub mod gears;
 pub mod job;

@@ -1,0 +1,135 @@
+//! The `result` of a dynamics job, as stored and served, and its CSV table.
+
+use super::MachineDynamics;
+use crate::api::create;
+use crate::engine::dynamics::{DynamicsSolution, EventKind};
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+/// One sample of the motion.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[schema(as = DynamicsSample)]
+pub struct SampleDto {
+    pub t: f64,
+    pub angle: f64,
+    pub speed: f64,
+    pub acceleration: f64,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct EventDto {
+    /// "turn" (a multiple of 2π crossed, either direction) or "end".
+    pub kind: String,
+    pub angle: f64,
+    pub t: f64,
+    pub speed: f64,
+    /// Reduced form with actions of φ only: the time of the event by the
+    /// energy form t = ∫dφ/ω, ω from ½I*ω² = T₀ + ∫M*dφ (nested quadratures,
+    /// no differential equation), while the motion has not turned back.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub t_energy_form: Option<f64>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct DynamicsAccuracy {
+    /// (W − ΔT)/max(|W|, |ΔT|, T₀, T_end): the work of the actions against
+    /// the change of kinetic energy. W is a quadrature over the angle when the
+    /// reduced actions depend on φ only, else the integrated power.
+    pub energy_residual: f64,
+    /// The largest |t − t_energy_form| over the events (s), when any has one:
+    /// an independent measure of the integration's error.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub energy_form_time_difference: Option<f64>,
+    /// Σ over the steps of the integrator's local error estimate of the angle,
+    /// rad (for a mechanism, the largest over its bodies' angles): a
+    /// first-order estimate of the global error that ignores its growth or
+    /// decay along the motion.
+    pub estimated_error: f64,
+    pub steps: usize,
+    pub function_evaluations: usize,
+    /// Mechanism form: the largest constraint violation |Φ| (m or rad)
+    /// removed by the projection after a step.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub constraint_drift: Option<f64>,
+    pub method: String,
+}
+
+/// Result of a dynamics job (SI units).
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct DynamicsResult {
+    pub samples: Vec<SampleDto>,
+    pub events: Vec<EventDto>,
+    pub energy_residual: f64,
+    pub accuracy: DynamicsAccuracy,
+    /// Mechanism form: every input, the reactions and the constraint residual at the samples.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub machine: Option<MachineDynamics>,
+    pub warnings: Vec<String>,
+}
+
+impl super::create::JobResult for DynamicsResult {
+    fn warnings(&mut self) -> Option<&mut Vec<String>> {
+        Some(&mut self.warnings)
+    }
+    fn rows(&self) -> Option<create::Rows> {
+        let (field, count) = ("/samples".into(), self.samples.len());
+        Some(create::Rows { field, count, also: " (events: one per turn, fewer with a shorter run)" })
+    }
+}
+
+impl From<DynamicsSolution> for DynamicsResult {
+    fn from(s: DynamicsSolution) -> Self {
+        Self {
+            samples: s
+                .samples
+                .iter()
+                .map(|x| SampleDto { t: x.t, angle: x.angle, speed: x.speed, acceleration: x.acceleration })
+                .collect(),
+            events: s
+                .events
+                .iter()
+                .enumerate()
+                .map(|(k, v)| EventDto {
+                    kind: if v.kind == EventKind::End { "end" } else { "turn" }.into(),
+                    angle: v.angle,
+                    t: v.t,
+                    speed: v.speed,
+                    t_energy_form: s.energy_times.get(k).copied().flatten(),
+                })
+                .collect(),
+            energy_residual: s.energy_residual,
+            accuracy: DynamicsAccuracy {
+                energy_residual: s.energy_residual,
+                energy_form_time_difference: s
+                    .events
+                    .iter()
+                    .zip(&s.energy_times)
+                    .filter_map(|(e, t)| t.map(|t| (e.t - t).abs()))
+                    .reduce(f64::max),
+                estimated_error: s.estimated_error,
+                steps: s.steps,
+                function_evaluations: s.evaluations,
+                constraint_drift: None,
+                method: "Dormand-Prince 5(4) with dense output, events located by Brent's method on it; \
+                         work by adaptive quadrature over the angle"
+                    .into(),
+            },
+            machine: None,
+            warnings: s.stopped.into_iter().collect(),
+        }
+    }
+}
+
+/// CSV of a stored dynamics result: one row per sample.
+pub fn csv_table(result: &serde_json::Value) -> (Vec<String>, Vec<Vec<String>>) {
+    let columns =
+        [("t", "t_s"), ("angle", "angle_rad"), ("speed", "speed_rad_s"), ("acceleration", "acceleration_rad_s2")];
+    let header = columns.iter().map(|c| c.1.to_string()).collect();
+    let rows = result["samples"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .map(|row| columns.iter().map(|c| row[c.0].to_string()).collect())
+        .collect();
+    (header, rows)
+}
