@@ -66,7 +66,7 @@ pub trait Kind: Send + Sync + 'static {
     }
 }
 
-/// The POST of every kind: its body read strictly, computed and stored ([`create`]).
+/// The POST of every kind: its body read strictly, computed and stored ([`super::create::create`]).
 pub async fn post<K: Kind>(State(state): State<AppState>, body: JsonBody<K::Request>) -> Result<Response, ApiError> {
     let JsonBody { value, raw, unknown } = body;
     let limits = state.limits.clone();
