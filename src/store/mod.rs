@@ -198,10 +198,14 @@ impl Store {
     }
 
     /// The newest job stored under `key` whose request is `request`, byte for
-    /// byte (the key only narrows the search).
+    /// byte (the key only narrows the search; only requests are compared,
+    /// so no result but the one found is read).
     pub async fn find_by_key(&self, key: &str, request: &[u8]) -> Result<Option<JobRow>, StoreError> {
-        let rows: Vec<Row> = sqlx::query_as(SELECT_BY_KEY).bind(key).fetch_all(&self.pool).await?;
-        Ok(rows.into_iter().map(JobRow::from).find(|r| r.request.as_ref() == request))
+        let candidates: Vec<(String, String)> = sqlx::query_as(SELECT_BY_KEY).bind(key).fetch_all(&self.pool).await?;
+        match candidates.into_iter().find(|(_, r)| r.as_bytes() == request) {
+            Some((id, _)) => self.get(&id).await,
+            None => Ok(None),
+        }
     }
 
     /// Stores a template's JSON under `id`; false when the id is taken.
@@ -290,5 +294,4 @@ impl Store {
 
 const SELECT_ROW: &str =
     "SELECT seq, id, kind, created_at, request, result, engine_us, engine_version FROM jobs WHERE id = ?";
-const SELECT_BY_KEY: &str = "SELECT seq, id, kind, created_at, request, result, engine_us, engine_version FROM jobs \
-                             WHERE request_key = ? ORDER BY seq DESC LIMIT 8";
+const SELECT_BY_KEY: &str = "SELECT id, request FROM jobs WHERE request_key = ? ORDER BY seq DESC LIMIT 8";
