@@ -32,12 +32,18 @@ impl std::io::Write for Log {
 /// message with that request id.
 #[tokio::test]
 async fn a_panicking_handler_is_answered_500_without_internals() {
+    let mut app = TestApp::new().await;
+    app.app = layered(axum::Router::new().route("/boom", get(boom)), &Settings::default(), Default::default());
+    // A first panic registers the span's and the events' callsites here,
+    // before this test's subscriber exists: setting it then asks each of
+    // them again. (Registered first by another test's thread, at the moment
+    // this subscriber was being set, a callsite could keep "never".)
+    let warm = app.send(Request::get("/boom").body(Body::empty()).unwrap()).await;
+    assert_eq!(warm.status, StatusCode::INTERNAL_SERVER_ERROR);
     let log = Log::default();
     let writer = log.clone();
     let subscriber = tracing_subscriber::fmt().with_ansi(false).with_writer(move || writer.clone()).finish();
     let _guard = tracing::subscriber::set_default(subscriber);
-    let mut app = TestApp::new().await;
-    app.app = layered(axum::Router::new().route("/boom", get(boom)), &Settings::default(), Default::default());
     let r = app.send(Request::get("/boom").header("x-request-id", "trace-me-42").body(Body::empty()).unwrap()).await;
     let logged = String::from_utf8(log.0.lock().unwrap().clone()).unwrap();
     let line = logged.lines().find(|l| l.contains("handler panicked")).unwrap_or_else(|| panic!("{logged}"));
