@@ -62,7 +62,7 @@ pub fn answer(
 ) -> Result<Response, ApiError> {
     let tokens = tables::tokens(pointer);
     let pointer = format!("/{}", pointer.trim_start_matches('/'));
-    let Some(value) = tokens.iter().try_fold(result, |v, t| step(v, t)) else {
+    let Some(value) = tables::at(result, &tokens) else {
         return Err(ApiError::NoPart { id: row.id.clone(), pointer });
     };
     let kind = kind::find(&row.kind);
@@ -87,16 +87,6 @@ pub fn answer(
         _ => tables::cell(&value),
     };
     Ok(([(header::CONTENT_TYPE, "text/plain; charset=utf-8")], text).into_response())
-}
-
-/// The child of `v` at one pointer token: a key, or an array index written
-/// without leading zeros.
-fn step<'a>(v: &'a Value, token: &str) -> Option<&'a Value> {
-    match v {
-        Value::Object(map) => map.get(token),
-        Value::Array(items) if token == "0" || !token.starts_with('0') => items.get(token.parse::<usize>().ok()?),
-        _ => None,
-    }
 }
 
 /// Every scalar of a job's result with its unit.

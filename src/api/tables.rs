@@ -69,6 +69,16 @@ pub fn tokens(pointer: &str) -> Vec<String> {
     pointer.split('/').map(|t| t.replace("~1", "/").replace("~0", "~")).collect()
 }
 
+/// The part of `v` at the RFC 6901 `tokens`: keys, and array indexes
+/// written without leading zeros.
+pub fn at<'a>(v: &'a Value, tokens: &[String]) -> Option<&'a Value> {
+    tokens.iter().try_fold(v, |v, token| match v {
+        Value::Object(map) => map.get(token),
+        Value::Array(items) if token == "0" || !token.starts_with('0') => items.get(token.parse::<usize>().ok()?),
+        _ => None,
+    })
+}
+
 fn escape(token: &str) -> String {
     token.replace('~', "~0").replace('/', "~1")
 }

@@ -7,7 +7,7 @@ use super::model::Template;
 use super::{RESERVED, job_for};
 use crate::api::AppState;
 use crate::api::problem::{ApiError, FieldError};
-use crate::api::tables::{cell, tokens};
+use crate::api::tables::{at, cell, tokens};
 use axum::http::{HeaderMap, header};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -196,19 +196,7 @@ fn unknown_parameter(t: &Template, name: &str) -> FieldError {
 
 /// The value at `pointer` (leading `/` optional) as a table cell's value; null when absent.
 fn value_at(result: &Value, pointer: &str) -> Value {
-    let mut v = result;
-    for t in tokens(pointer) {
-        let next = match v {
-            Value::Object(m) => m.get(&t),
-            Value::Array(a) => t.parse::<usize>().ok().and_then(|i| a.get(i)),
-            _ => None,
-        };
-        match next {
-            Some(n) => v = n,
-            None => return Value::Null,
-        }
-    }
-    v.clone()
+    at(result, &tokens(pointer)).cloned().unwrap_or(Value::Null)
 }
 
 /// An error in one line for a table's `error` cell.
