@@ -138,10 +138,43 @@ pub enum Command {
     Openapi,
     /// Solve a request file without a server and print the result (same validation as the API).
     Solve {
-        /// Job kind: flywheel, kinetostatics, dynamics, gears, gear_train, equivalent_masses or rotor.
+        /// Job kind: flywheel, kinetostatics, dynamics, gears, gear_train, equivalent_masses, rotor or check.
         kind: String,
         /// Request JSON file ("-" for standard input).
         file: PathBuf,
+        /// Print only the value at this JSON pointer of the result (e.g. inertia_exact), as GET .../result/{pointer} answers it.
+        #[arg(long)]
+        value: Option<String>,
+        /// Convert that value to this unit (e.g. slug*ft^2).
+        #[arg(long, requires = "value")]
+        unit: Option<String>,
+    },
+    /// Check answers without a server: a POST /v1/check body in, the check's result out.
+    Check {
+        /// The check's JSON ("-" for standard input).
+        file: PathBuf,
+    },
+    /// Grade a class without a server: print the CSV POST /v1/templates/{id}/grade answers.
+    Grade {
+        /// A built-in template's id, or a template's JSON file.
+        template: String,
+        /// The class CSV ("-" for standard input).
+        class: PathBuf,
+        /// Relative tolerance (default 0.01).
+        #[arg(long)]
+        relative: Option<String>,
+        /// Absolute tolerance, SI (default 0).
+        #[arg(long)]
+        absolute: Option<String>,
+        /// Significant figures (PrairieLearn's rule), replacing the relative tolerance.
+        #[arg(long)]
+        sigfigs: Option<String>,
+        /// Below it (SI) an expected value is compared absolutely (default 1e-12).
+        #[arg(long)]
+        zero_level: Option<String>,
+        /// Whether the feedback shows expected values: true (default) or false.
+        #[arg(long)]
+        reveal: Option<String>,
     },
 }
 

@@ -9,5 +9,6 @@
 pub mod api;
 pub mod config;
 pub mod engine;
+pub mod offline;
 pub mod store;
 pub mod units;

@@ -24,7 +24,20 @@ fn main() -> ExitCode {
             println!("{}", api::openapi_json());
             ExitCode::SUCCESS
         }
-        Some(Command::Solve { kind, file }) => solve(kind, file),
+        Some(Command::Solve { kind, file, value, unit }) => {
+            offline(file, |raw| mechdyn::offline::solve(kind, raw, value.as_deref(), unit.as_ref()))
+        }
+        Some(Command::Check { file }) => offline(file, mechdyn::offline::check),
+        Some(Command::Grade { template, class, relative, absolute, sigfigs, zero_level, reveal }) => {
+            let t = match mechdyn::offline::template(template) {
+                Ok(t) => t,
+                Err(e) => return fail(&e),
+            };
+            let options = [("relative", relative), ("absolute", absolute), ("sigfigs", sigfigs)];
+            let options = options.into_iter().chain([("zero_level", zero_level), ("reveal", reveal)]);
+            let query = options.filter_map(|(k, v)| Some((k.to_string(), v.clone()?))).collect();
+            offline(class, |csv| mechdyn::offline::grade(&t, &query, csv.as_bytes()).map(String::into_bytes))
+        }
     }
 }
 
@@ -104,7 +117,12 @@ fn healthcheck(addr: &str) -> ExitCode {
     }
 }
 
-fn solve(kind: &str, file: &std::path::Path) -> ExitCode {
+/// Runs an offline command on the text of `file` (`-`: standard input):
+/// its output and a newline on stdout, or the problem on stderr (exit 2).
+fn offline(
+    file: &std::path::Path,
+    run: impl FnOnce(String) -> Result<Vec<u8>, mechdyn::api::problem::ApiError>,
+) -> ExitCode {
     let mut raw = String::new();
     let read = if file.as_os_str() == "-" {
         std::io::stdin().read_to_string(&mut raw).map(|_| ())
@@ -114,13 +132,11 @@ fn solve(kind: &str, file: &std::path::Path) -> ExitCode {
     if let Err(e) = read {
         return fail(&format!("cannot read {}: {e}", file.display()));
     }
-    let Some(kind) = api::kind::find(kind) else {
-        return fail(&format!("unknown kind '{kind}' (known: {})", api::kind::names().join(", ")));
-    };
-    match kind.solve(raw, &api::Limits::default()) {
-        Ok(json) => {
-            let mut out = std::io::stdout().lock();
-            let _ = out.write_all(&json).and_then(|()| out.write_all(b"\n"));
+    match run(raw) {
+        Ok(out) => {
+            let mut stdout = std::io::stdout().lock();
+            let newline = if out.ends_with(b"\n") { &b""[..] } else { b"\n" };
+            let _ = stdout.write_all(&out).and_then(|()| stdout.write_all(newline));
             ExitCode::SUCCESS
         }
         Err(e) => {

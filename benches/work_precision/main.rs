@@ -15,6 +15,7 @@
 //! Exudyn slider-crank in `slider_crank.rs`.
 
 mod flywheel;
+mod grading;
 mod http;
 mod kinetostatics;
 mod pendulum;
@@ -191,6 +192,11 @@ fn plot(points: &[Point], title: &str, path: &str) -> Result<(), Box<dyn std::er
 }
 
 fn main() {
+    // `cargo bench --bench work_precision -- grading`: that section alone, printed, docs/ left as they are.
+    if std::env::args().any(|a| a == "grading") {
+        print!("{}", grading::section());
+        return;
+    }
     let mut points: Vec<Point> = TOLERANCES.iter().map(|t| d1(*t)).collect();
     points.extend(TOLERANCES.iter().map(|t| a03(*t)));
     points.extend(pendulum::points());
@@ -264,6 +270,8 @@ fn main() {
     doc.push_str(&flywheel::section(dir));
     doc.push('\n');
     doc.push_str(&http::section());
+    doc.push('\n');
+    doc.push_str(&grading::section());
     if let Err(e) =
         plot(&points, "Direct dynamics: error against wall time", &format!("{dir}/work_precision_dynamics.svg"))
     {

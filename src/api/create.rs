@@ -51,15 +51,21 @@ where
     F: FnOnce() -> Result<R, ApiError> + Send + 'static,
 {
     let (row, reserved) = compute_and_store(state, kind, request, None, compute).await?;
-    let mut body = Chunks::default();
-    job_chunks(&row, &mut body);
-    let location = format!("/v1/jobs/{}", row.id);
-    let headers = [(header::CONTENT_TYPE, "application/json".to_string()), (header::LOCATION, location)];
-    Ok((StatusCode::CREATED, headers, guarded(Body::new(body), reserved)).into_response())
+    Ok(created(&row, reserved))
 }
 
-/// The job of `compute`, stored (under `key`, for a template's parameters):
-/// the row, with the memory of its answer still reserved.
+/// The 201 of a stored job: the job, its `Location`, its memory held until sent.
+pub fn created(row: &JobRow, reserved: OwnedSemaphorePermit) -> Response {
+    let mut body = Chunks::default();
+    job_chunks(row, &mut body);
+    let location = format!("/v1/jobs/{}", row.id);
+    let headers = [(header::CONTENT_TYPE, "application/json".to_string()), (header::LOCATION, location)];
+    (StatusCode::CREATED, headers, guarded(Body::new(body), reserved)).into_response()
+}
+
+/// The job of `compute`, stored (under `key`, for a template's parameters;
+/// else with the request's `?label=`, [`super::label`]): the row, with the
+/// memory of its answer still reserved.
 pub async fn compute_and_store<R, F>(
     state: &AppState,
     kind: &'static str,
@@ -93,6 +99,7 @@ where
         result: result?,
         engine_us: i64::try_from(elapsed.as_micros()).unwrap_or(i64::MAX),
         engine_version: env!("CARGO_PKG_VERSION").into(),
+        label: if key.is_some() { None } else { super::label::current() },
         request_key: key,
     };
     if let Some(spare) = reserved.num_permits().checked_sub(job.bytes()).and_then(|n| reserved.split(n)) {

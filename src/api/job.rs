@@ -31,6 +31,9 @@ pub struct Job {
     pub timing: Timing,
     /// Version of mechdyn that computed the result.
     pub engine_version: String,
+    /// The label stored with the job (`?label=` on its POST); absent without one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub label: Option<String>,
 }
 
 /// A job of one kind, for the OpenAPI document (the answer of a POST): its
@@ -50,6 +53,8 @@ pub struct JobOf<R> {
     timing: Timing,
     /// Version of mechdyn that computed the result.
     engine_version: String,
+    /// The label stored with the job (`?label=` on its POST); absent without one.
+    label: Option<String>,
 }
 
 /// A page of jobs, newest first.
@@ -73,5 +78,9 @@ pub fn job_chunks(r: &JobRow, out: &mut Chunks) {
     out.push(r.request.clone());
     out.push(&b",\"result\":"[..]);
     out.push(r.result.clone());
-    out.push(format!(",\"timing\":{{\"engine_us\":{}}},\"engine_version\":{}}}", r.engine_us, text(&r.engine_version)));
+    out.push(format!(",\"timing\":{{\"engine_us\":{}}},\"engine_version\":{}", r.engine_us, text(&r.engine_version)));
+    match &r.label {
+        Some(label) => out.push(format!(",\"label\":{}}}", text(label))),
+        None => out.push(&b"}"[..]),
+    }
 }

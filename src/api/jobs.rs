@@ -9,7 +9,7 @@ use super::kind;
 use super::problem::{ApiError, FieldError, Problem, ReadErrors};
 use super::read::{self, READ_MEMORY_FACTOR, load};
 use super::tables::{self, AngleUnit, Angles};
-use crate::store::Page;
+use crate::store::{Filter, Page};
 use axum::body::Body;
 use axum::extract::rejection::QueryRejection;
 use axum::extract::{Path, Query, State};
@@ -66,6 +66,9 @@ pub async fn get(
 pub struct ListParams {
     /// Only jobs of this kind (the document lists them).
     kind: Option<String>,
+    /// Only jobs stored with this label (`?label=` on their POST).
+    #[param(max_length = 200)]
+    label: Option<String>,
     /// Page size, 1 to 100 (default 50).
     #[param(minimum = 1, maximum = 100)]
     limit: Option<i64>,
@@ -94,9 +97,13 @@ pub async fn list(
 ) -> Result<Response, ApiError> {
     let Query(q) = query.map_err(|e| ApiError::BadQuery(vec![FieldError::parameter("", e.body_text())]))?;
     let (kind, limit, before) = list_params(&q)?;
+    let label = q.get("label").cloned().map(super::label::checked).transpose()?;
     let page_bytes = state.limits.result_bytes;
     let mut reserved = state.admission.memory(READ_MEMORY_FACTOR * page_bytes).await?;
-    let Page { rows, bytes, cut } = state.store.list(kind.as_deref(), before, limit, page_bytes).await?;
+    let Page { rows, bytes, cut } = {
+        let filter = Filter { kind: kind.as_deref(), label: label.as_deref() };
+        state.store.list(&filter, before, limit, page_bytes).await?
+    };
     // A single job may exceed the page's share; reserve the rest of it too.
     let (held, needed) = (READ_MEMORY_FACTOR * page_bytes, READ_MEMORY_FACTOR * bytes.max(1));
     if needed > held {
@@ -106,8 +113,11 @@ pub async fn list(
     }
     let next = (rows.len() as i64 == limit || cut).then(|| {
         let last = rows.last().map_or(0, |r| r.seq);
-        let kind = kind.as_ref().map(|k| format!("kind={k}&")).unwrap_or_default();
-        format!("/v1/jobs?{kind}limit={limit}&before={last}")
+        let (limit, last) = (limit.to_string(), last.to_string());
+        let query =
+            [("kind", kind.as_deref()), ("label", label.as_deref()), ("limit", Some(&limit)), ("before", Some(&last))];
+        let query: Vec<(&str, &str)> = query.into_iter().filter_map(|(k, v)| Some((k, v?))).collect();
+        format!("/v1/jobs?{}", serde_urlencoded::to_string(query).unwrap_or_default())
     });
     let mut body = Chunks::default();
     body.push(&b"{\"items\":["[..]);
@@ -123,8 +133,8 @@ pub async fn list(
 
 fn list_params(q: &HashMap<String, String>) -> Result<(Option<String>, i64, Option<i64>), ApiError> {
     let mut errors = Vec::new();
-    for key in q.keys().filter(|k| !["kind", "limit", "before"].contains(&k.as_str())) {
-        errors.push(FieldError::parameter(key, "unknown parameter (known: kind, limit, before)"));
+    for key in q.keys().filter(|k| !["kind", "label", "limit", "before"].contains(&k.as_str())) {
+        errors.push(FieldError::parameter(key, "unknown parameter (known: kind, label, limit, before)"));
     }
     let kind = q.get("kind").cloned();
     if let Some(k) = &kind

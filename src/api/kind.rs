@@ -177,27 +177,35 @@ impl<K: Kind> AnyKind for Registered<K> {
 /// The POST's operation: the request's schema, the 201 job with this
 /// kind's result, and the errors every POST may answer.
 fn operation<K: Kind>() -> Paths {
+    let names = (K::Request::name().to_string(), K::Result::name().to_string());
+    operation_for(K::PATH, K::OPERATION_ID, K::TAG, K::SUMMARY, names)
+}
+
+/// The operation of a POST at `path` that answers 201 with a job whose
+/// `result` has schema `names.1`, for a body of schema `names.0`.
+pub fn operation_for(path: &str, id: &str, tag: &str, summary: &str, names: (String, String)) -> Paths {
+    let (request_name, result_name) = names;
     let request = RequestBodyBuilder::new()
-        .content("application/json", ContentBuilder::new().schema(Some(Ref::from_schema_name(K::Request::name()))))
+        .content("application/json", ContentBuilder::new().schema(Some(Ref::from_schema_name(&request_name))))
         .required(Some(Required::True));
     let created = ResponseBuilder::new()
-        .description(format!("Job computed and stored; `result` is {}", with_article(&K::Result::name())))
+        .description(format!("Job computed and stored; `result` is {}", with_article(&result_name)))
         .header(
             "Location",
             HeaderBuilder::new().schema(Some(String::schema())).description(Some("/v1/jobs/{id}")).build(),
         )
         .content(
             "application/json",
-            ContentBuilder::new().schema(Some(Ref::from_schema_name(job_schema::<K>()))).build(),
+            ContentBuilder::new().schema(Some(Ref::from_schema_name(format!("JobOf_{result_name}")))).build(),
         );
     let responses = ResponsesBuilder::new().response("201", created).responses_from_into_responses::<PostErrors>();
     let op = OperationBuilder::new()
-        .tag(K::TAG)
-        .summary(Some(K::SUMMARY))
-        .operation_id(Some(K::OPERATION_ID))
+        .tag(tag)
+        .summary(Some(summary))
+        .operation_id(Some(id))
         .request_body(Some(request.build()))
         .responses(responses);
-    PathsBuilder::new().path(K::PATH, utoipa::openapi::PathItem::new(HttpMethod::Post, op)).build()
+    PathsBuilder::new().path(path, utoipa::openapi::PathItem::new(HttpMethod::Post, op)).build()
 }
 
 /// Name of the schema of a job of kind `K` (its `result` typed).
@@ -211,8 +219,9 @@ fn with_article(name: &str) -> String {
     format!("{} {name}", if vowel { "an" } else { "a" })
 }
 
-/// Every kind of the service, in the order of the documentation.
-pub static KINDS: [&dyn AnyKind; 7] = [
+/// Every kind of the service, in the order of the documentation; `check`
+/// (answers checked against another job) last.
+pub static KINDS: [&dyn AnyKind; 8] = [
     &Registered::<flywheel::Flywheel>(PhantomData),
     &Registered::<kinetostatics::Kinetostatics>(PhantomData),
     &Registered::<dynamics::Dynamics>(PhantomData),
@@ -220,6 +229,7 @@ pub static KINDS: [&dyn AnyKind; 7] = [
     &Registered::<gear_train::GearTrain>(PhantomData),
     &Registered::<equivalent::EquivalentMasses>(PhantomData),
     &Registered::<rotor::RigidRotor>(PhantomData),
+    &super::check::CHECK,
 ];
 
 /// The kind of this name.

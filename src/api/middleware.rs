@@ -3,10 +3,13 @@
 //! request's log span carrying it, CORS for the origins configured, panics
 //! caught and answered 500 problem+json without internals, the optional
 //! bearer token every POST must carry, admission control (a slot per POST,
-//! 503 when none is free), and the body limit.
+//! 503 when none is free), a POST's `?label=` ([`super::label`]), its
+//! `Idempotency-Key` ([`super::idempotency`]), and the body limit.
 
+use super::AppState;
 use super::admission::Admission;
 use super::body::{drain, guarded};
+use super::idempotency::{InFlight, idempotent};
 use super::json::BodyLimit;
 use super::problem::ApiError;
 use axum::Router;
@@ -51,11 +54,14 @@ impl Settings {
 }
 
 /// `routes` with the service's middleware.
-pub fn layered(routes: Router, s: &Settings, admission: Admission) -> Router {
+pub fn layered(routes: Router, s: &Settings, state: AppState) -> Router {
     let token: Option<Arc<str>> = s.api_token.as_deref().map(Arc::from);
+    let (admission, limit, flight) = (state.admission.clone(), s.body_limit, InFlight::default());
     let routes = routes
         .layer(DefaultBodyLimit::max(s.body_limit))
         .layer(Extension(BodyLimit(s.body_limit)))
+        .layer(from_fn(move |req, next| idempotent(state.clone(), flight.clone(), limit, req, next)))
+        .layer(from_fn(super::label::labelled))
         .layer(from_fn(move |req, next| admit(admission.clone(), req, next)))
         .layer(from_fn(move |req, next| require_token(token.clone(), req, next)))
         .layer(CatchPanicLayer::custom(panic_response));
@@ -105,8 +111,16 @@ fn cors(origins: &[String]) -> Option<CorsLayer> {
         CorsLayer::new()
             .allow_origin(allow)
             .allow_methods([Method::GET, Method::POST])
-            .allow_headers([header::CONTENT_TYPE, header::AUTHORIZATION])
-            .expose_headers([header::LOCATION, HeaderName::from_static(REQUEST_ID)]),
+            .allow_headers([
+                header::CONTENT_TYPE,
+                header::AUTHORIZATION,
+                HeaderName::from_static(super::idempotency::HEADER),
+            ])
+            .expose_headers([
+                header::LOCATION,
+                HeaderName::from_static(REQUEST_ID),
+                HeaderName::from_static(super::idempotency::REPLAYED),
+            ]),
     )
 }
 

@@ -6,6 +6,7 @@
 
 pub mod admission;
 pub mod body;
+pub mod check;
 pub mod constants;
 pub mod create;
 pub mod dynamics;
@@ -16,11 +17,13 @@ pub mod function_csv;
 pub mod function_read;
 pub mod gear_train;
 pub mod gears;
+pub mod idempotency;
 pub mod job;
 pub mod jobs;
 pub mod json;
 pub mod kind;
 pub mod kinetostatics;
+pub mod label;
 pub mod limits;
 pub mod mechanism;
 pub mod middleware;
@@ -103,6 +106,7 @@ answer carries an `x-request-id` header."
         (name = "calculators", description = "Smaller calculators of the course"),
         (name = "jobs", description = "Stored computations"),
         (name = "templates", description = "Problems with parameters: one number of a job by URL (a spreadsheet's WEBSERVICE), a parameter study as CSV"),
+        (name = "grading", description = "Students' answers checked by the engine: tolerances as course platforms define them, feedback naming common slips, seeded per-student variants, a whole class in one CSV"),
         (name = "service", description = "Health"),
     )
 )]
@@ -124,6 +128,8 @@ fn routes() -> OpenApiRouter<AppState> {
         .routes(utoipa_axum::routes!(templates::get))
         .routes(utoipa_axum::routes!(templates::job))
         .routes(utoipa_axum::routes!(templates::table))
+        .routes(utoipa_axum::routes!(templates::variants))
+        .routes(utoipa_axum::routes!(templates::grade))
         .routes(rest_of_path(utoipa_axum::routes!(templates::result), "pointer"))
         .routes(rest_of_path(utoipa_axum::routes!(parts::part), "pointer"))
         .routes(utoipa_axum::routes!(healthz))
@@ -178,7 +184,7 @@ pub fn router(state: AppState, settings: &Settings) -> Router {
         .fallback(|| async { ApiError::NoRoute })
         .method_not_allowed_fallback(|| async { ApiError::MethodNotAllowed })
         .with_state(state.clone());
-    middleware::layered(routes, settings, state.admission)
+    middleware::layered(routes, settings, state)
 }
 
 #[derive(Serialize, ToSchema)]

@@ -60,12 +60,25 @@ pub fn answer(
     unit: Option<&String>,
     headers: &HeaderMap,
 ) -> Result<Response, ApiError> {
-    let tokens = tables::tokens(pointer);
-    let pointer = format!("/{}", pointer.trim_start_matches('/'));
-    let Some(value) = tables::at(result, &tokens) else {
+    let Some(value) = value_at(kind::find(&row.kind), result, pointer, unit)? else {
+        let pointer = format!("/{}", pointer.trim_start_matches('/'));
         return Err(ApiError::NoPart { id: row.id.clone(), pointer });
     };
-    let kind = kind::find(&row.kind);
+    let (mime, text) = text_of(&value, wants(headers, None, "application/json"));
+    Ok(([(header::CONTENT_TYPE, mime)], text).into_response())
+}
+
+/// The part of `result` (of `kind`) at `pointer` (leading `/` optional),
+/// converted to `unit`; None when there is none.
+pub fn value_at(
+    kind: Option<&dyn kind::AnyKind>,
+    result: &Value,
+    pointer: &str,
+    unit: Option<&String>,
+) -> Result<Option<Value>, ApiError> {
+    let tokens = tables::tokens(pointer);
+    let pointer = format!("/{}", pointer.trim_start_matches('/'));
+    let Some(value) = tables::at(result, &tokens) else { return Ok(None) };
     let value = match (unit, value.as_f64()) {
         (Some(target), Some(x)) => {
             let refs: Vec<&str> = tokens.iter().map(String::as_str).collect();
@@ -78,15 +91,20 @@ pub fn answer(
         }
         (None, _) => value.clone(),
     };
-    let json = value.is_object() || value.is_array() || wants(headers, None, "application/json");
-    if json {
-        return Ok(([(header::CONTENT_TYPE, "application/json")], value.to_string()).into_response());
+    Ok(Some(value))
+}
+
+/// A part as its answer's type and text: a scalar alone as text (numbers in
+/// shortest round-trip form), an object or array (or any, when `json`) as JSON.
+pub fn text_of(value: &Value, json: bool) -> (&'static str, String) {
+    if json || value.is_object() || value.is_array() {
+        return ("application/json", value.to_string());
     }
     let text = match value.as_f64() {
         Some(x) if !value.is_i64() && !value.is_u64() => tables::number_text(x),
-        _ => tables::cell(&value),
+        _ => tables::cell(value),
     };
-    Ok(([(header::CONTENT_TYPE, "text/plain; charset=utf-8")], text).into_response())
+    ("text/plain; charset=utf-8", text)
 }
 
 /// Every scalar of a job's result with its unit.

@@ -14,6 +14,7 @@ pub mod flywheel;
 pub mod function;
 pub mod gear_train;
 pub mod gears;
+pub mod grading;
 pub mod kinematics;
 pub mod kinetostatics;
 pub mod machine;
@@ -22,6 +23,7 @@ pub mod model;
 pub mod numeric;
 pub mod rotor;
 pub mod samples;
+pub mod variants;
 
 pub use deadline::Deadline;
 

@@ -13,9 +13,11 @@
 //! reports and recovers from when space returns; anything else the database
 //! cannot do is [`StoreError::Unavailable`].
 
+mod idempotency;
 mod url;
 mod writer;
 
+pub use idempotency::Answer;
 pub use url::{SchemeError, check_scheme, redact};
 
 use bytes::Bytes;
@@ -71,6 +73,8 @@ pub struct JobRow {
     pub result: Bytes,
     pub engine_us: i64,
     pub engine_version: String,
+    /// The label a client stored with the job (`?label=`).
+    pub label: Option<String>,
 }
 
 /// A job as SQLite returns it.
@@ -84,12 +88,14 @@ struct Row {
     result: String,
     engine_us: i64,
     engine_version: String,
+    label: Option<String>,
 }
 
 impl From<Row> for JobRow {
     fn from(r: Row) -> Self {
-        let Row { seq, id, kind, created_at, request, result, engine_us, engine_version } = r;
-        Self { seq, id, kind, created_at, request: request.into(), result: result.into(), engine_us, engine_version }
+        let Row { seq, id, kind, created_at, request, result, engine_us, engine_version, label } = r;
+        let (request, result) = (request.into(), result.into());
+        Self { seq, id, kind, created_at, request, result, engine_us, engine_version, label }
     }
 }
 
@@ -107,12 +113,14 @@ pub struct NewJob {
     /// The key of a job computed for a template's parameters
     /// ([`Store::find_by_key`]); None for a job POSTed directly.
     pub request_key: Option<String>,
+    /// A client's label (`?label=`, e.g. a student's id).
+    pub label: Option<String>,
 }
 
 impl NewJob {
     fn stored(self, seq: i64) -> JobRow {
-        let NewJob { id, kind, created_at, request, result, engine_us, engine_version, .. } = self;
-        JobRow { seq, id, kind, created_at, request, result, engine_us, engine_version }
+        let NewJob { id, kind, created_at, request, result, engine_us, engine_version, label, .. } = self;
+        JobRow { seq, id, kind, created_at, request, result, engine_us, engine_version, label }
     }
 
     /// Bytes of the request and the result together.
@@ -129,6 +137,13 @@ pub struct Page {
     pub bytes: usize,
     /// Whether the page stopped at its size in bytes (more jobs follow).
     pub cut: bool,
+}
+
+/// Which jobs a list holds: of one kind, of one label (None: any).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Filter<'a> {
+    pub kind: Option<&'a str>,
+    pub label: Option<&'a str>,
 }
 
 /// A job handed to the writer, with where to send its seq.
@@ -241,22 +256,24 @@ impl Store {
         Ok(bytes.map(|b| usize::try_from(b).unwrap_or(0)))
     }
 
-    /// Up to `limit` jobs, newest first, of one kind or all, older than
-    /// `before` (a seq), stopping before their requests and results together
-    /// exceed `max_bytes` (one job at least).
+    /// Up to `limit` jobs, newest first, of one kind or all (and of one
+    /// label or any), older than `before` (a seq), stopping before their
+    /// requests and results together exceed `max_bytes` (one job at least).
     pub async fn list(
         &self,
-        kind: Option<&str>,
+        filter: &Filter<'_>,
         before: Option<i64>,
         limit: i64,
         max_bytes: usize,
     ) -> Result<Page, StoreError> {
         let sizes: Vec<(i64, i64)> = sqlx::query_as(
-            "SELECT seq, bytes FROM jobs WHERE (?1 IS NULL OR kind = ?1) AND seq < ?2 ORDER BY seq DESC LIMIT ?3",
+            "SELECT seq, bytes FROM jobs WHERE (?1 IS NULL OR kind = ?1) AND (?4 IS NULL OR label = ?4) AND seq < ?2 \
+             ORDER BY seq DESC LIMIT ?3",
         )
-        .bind(kind)
+        .bind(filter.kind)
         .bind(before.unwrap_or(i64::MAX))
         .bind(limit)
+        .bind(filter.label)
         .fetch_all(&self.pool)
         .await?;
         let (mut total, mut last, mut cut) = (0usize, None, false);
@@ -270,12 +287,14 @@ impl Store {
         }
         let Some(last) = last else { return Ok(Page { rows: Vec::new(), bytes: 0, cut }) };
         let rows: Vec<Row> = sqlx::query_as(
-            "SELECT seq, id, kind, created_at, request, result, engine_us, engine_version FROM jobs \
-             WHERE (?1 IS NULL OR kind = ?1) AND seq < ?2 AND seq >= ?3 ORDER BY seq DESC",
+            "SELECT seq, id, kind, created_at, request, result, engine_us, engine_version, label FROM jobs \
+             WHERE (?1 IS NULL OR kind = ?1) AND (?4 IS NULL OR label = ?4) AND seq < ?2 AND seq >= ?3 \
+             ORDER BY seq DESC",
         )
-        .bind(kind)
+        .bind(filter.kind)
         .bind(before.unwrap_or(i64::MAX))
         .bind(last)
+        .bind(filter.label)
         .fetch_all(&self.pool)
         .await?;
         Ok(Page { rows: rows.into_iter().map(JobRow::from).collect(), bytes: total, cut })
@@ -293,5 +312,5 @@ impl Store {
 }
 
 const SELECT_ROW: &str =
-    "SELECT seq, id, kind, created_at, request, result, engine_us, engine_version FROM jobs WHERE id = ?";
+    "SELECT seq, id, kind, created_at, request, result, engine_us, engine_version, label FROM jobs WHERE id = ?";
 const SELECT_BY_KEY: &str = "SELECT id, request FROM jobs WHERE request_key = ? ORDER BY seq DESC LIMIT 8";

@@ -28,7 +28,7 @@ const MAX_BATCH_BYTES: usize = 32 << 20;
 pub const QUEUE: usize = 4096;
 
 const INSERT: &str = "INSERT INTO jobs (id, kind, created_at, request, result, engine_us, engine_version, bytes, \
-                      request_key) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)";
+                      request_key, label) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)";
 
 pub async fn write_batches(pool: SqlitePool, mut queue: mpsc::Receiver<Pending>, commits: Arc<AtomicU64>) {
     let mut waiting = Vec::with_capacity(MAX_BATCH);
@@ -83,9 +83,9 @@ fn text(b: &bytes::Bytes) -> &str {
 /// The whole batch as one multi-row INSERT (one statement: one round trip to
 /// SQLite's connection thread, and atomic): each job's seq, in batch order.
 async fn insert_together(pool: &SqlitePool, batch: &[Pending]) -> Result<Vec<i64>, StoreError> {
-    let rows = vec!["(?, ?, ?, ?, ?, ?, ?, ?, ?)"; batch.len()].join(", ");
+    let rows = vec!["(?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"; batch.len()].join(", ");
     let sql = format!(
-        "INSERT INTO jobs (id, kind, created_at, request, result, engine_us, engine_version, bytes, request_key) \
+        "INSERT INTO jobs (id, kind, created_at, request, result, engine_us, engine_version, bytes, request_key, label) \
          VALUES {rows} \
          RETURNING id, seq"
     );
@@ -94,6 +94,7 @@ async fn insert_together(pool: &SqlitePool, batch: &[Pending]) -> Result<Vec<i64
     for (j, _) in batch {
         query = query.bind(&j.id).bind(&j.kind).bind(&j.created_at).bind(text(&j.request)).bind(text(&j.result));
         query = query.bind(j.engine_us).bind(&j.engine_version).bind(j.bytes() as i64).bind(&j.request_key);
+        query = query.bind(&j.label);
     }
     // RETURNING gives the rows in no promised order: match them by id.
     let seqs: std::collections::HashMap<String, i64> = query.fetch_all(pool).await?.into_iter().collect();
@@ -131,6 +132,7 @@ async fn insert_rows(
             .bind(&j.engine_version)
             .bind(j.bytes() as i64)
             .bind(&j.request_key)
+            .bind(&j.label)
             .execute(&mut *conn)
             .await;
         match done {

@@ -21,6 +21,7 @@ fn job(k: usize) -> NewJob {
         engine_us: 1,
         engine_version: "test".into(),
         request_key: None,
+        label: None,
     }
 }
 
@@ -96,5 +97,5 @@ async fn concurrent_posts_are_all_stored_before_their_201() {
         });
     }
     tasks.join_all().await;
-    assert_eq!(other.list(None, None, 1000, usize::MAX).await.unwrap().rows.len(), 96);
+    assert_eq!(other.list(&Default::default(), None, 1000, usize::MAX).await.unwrap().rows.len(), 96);
 }

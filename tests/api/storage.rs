@@ -112,6 +112,7 @@ fn job(k: usize, bytes: usize) -> NewJob {
         engine_us: 1,
         engine_version: "test".into(),
         request_key: None,
+        label: None,
     }
 }
 

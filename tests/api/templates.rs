@@ -6,8 +6,9 @@ use crate::helpers::{TestApp, case, request};
 use axum::http::StatusCode;
 use serde_json::{Value, json};
 
-const BUILTIN: [&str; 7] = [
+const BUILTIN: [&str; 8] = [
     "p103-slider-flywheel",
+    "p103-class",
     "p107-two-stroke-engine",
     "punch-press-us",
     "offset-slider-crank",

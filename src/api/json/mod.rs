@@ -50,7 +50,7 @@ impl<S: Send + Sync, T: DeserializeOwned> FromRequest<S> for JsonBody<T> {
 /// The whole body if it is at most `limit` bytes; else the rest is read and
 /// discarded (within bounds, see [`drain`]) and the answer is 413, so that a
 /// client still sending reads it.
-async fn read_within(body: Body, limit: usize) -> Result<Bytes, ApiError> {
+pub async fn read_within(body: Body, limit: usize) -> Result<Bytes, ApiError> {
     let announced = body.size_hint().exact();
     if announced.is_some_and(|n| n > limit as u64) {
         drain(body, announced).await;

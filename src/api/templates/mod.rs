@@ -5,17 +5,22 @@
 //! parameter study is one `POST .../table` of CSV ([`table`]).
 
 mod apply;
+mod grade;
 mod model;
 mod table;
+mod variants;
 
+pub use apply::request_for;
+pub use grade::class;
 pub use model::{LIBRARY_FILES, NewTemplate, Parameter, RESERVED, Template, TemplateList, builtin};
 pub use table::{TableRequest, TableResponse, TableRow, study};
+pub use variants::{Variant, Variants, draw};
 
 use super::AppState;
 use super::body::Chunks;
 use super::job::job_chunks;
 use super::json::JsonBody;
-use super::kind;
+use super::kind::{self, AnyKind};
 use super::parts;
 use super::problem::{ApiError, FieldError, Problem, ReadErrors};
 use super::read::{self, result_tree};
@@ -42,12 +47,18 @@ pub async fn find(state: &AppState, id: &str) -> Result<Template, ApiError> {
 /// stored under the request's key.
 pub async fn job_for(state: &AppState, t: &Template, given: &HashMap<String, String>) -> Result<JobRow, ApiError> {
     let request = apply::request_for(t, given, RESERVED)?;
-    let (bytes, key) = apply::keyed(&t.kind, &request);
+    let kind = kind::find(&t.kind).ok_or_else(|| ApiError::Internal(format!("template kind {}", t.kind)))?;
+    stored_job(state, kind, &request).await.map_err(|e| apply::named(t, e))
+}
+
+/// The job of `request` of `kind`: the stored one of the same request and
+/// engine version, else computed and stored under the request's key.
+pub async fn stored_job(state: &AppState, kind: &dyn AnyKind, request: &serde_json::Value) -> Result<JobRow, ApiError> {
+    let (bytes, key) = apply::keyed(kind.name(), request);
     if let Some(row) = state.store.find_by_key(&key, &bytes).await? {
         return Ok(row);
     }
-    let kind = kind::find(&t.kind).ok_or_else(|| ApiError::Internal(format!("template kind {}", t.kind)))?;
-    let (row, _reserved) = kind.job(state, bytes.into(), Some(key)).await.map_err(|e| apply::named(t, e))?;
+    let (row, _reserved) = kind.job(state, bytes.into(), Some(key)).await?;
     Ok(row)
 }
 
@@ -185,9 +196,92 @@ pub async fn table(
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
     body: axum::body::Bytes,
 ) -> Result<Response, ApiError> {
-    let q = read::query(q, &["values"])?;
+    let q = read::query(q, &["values", "label"])?;
     let t = find(&state, &id).await?;
     let (text, csv) = study(&state, &t, &headers, q.get("values"), &body).await?;
     let mime = if csv { "text/csv; charset=utf-8" } else { "application/json" };
     Ok(([(header::CONTENT_TYPE, mime)], text).into_response())
+}
+
+/// Seeded variants: per-student parameter sets with their reference values.
+///
+/// Variant `v` is the single draw with seed `v` (the generator: SplitMix64
+/// seeded with `v`, one draw per parameter in name order, mapped onto the
+/// parameter's `choices` or `min`/`max`/`step` grid; see the README), so the
+/// same template and seed give the same parameters everywhere and forever.
+#[utoipa::path(get, path = "/v1/templates/{id}/variants", operation_id = "get_template_variants", tag = "grading",
+    params(("id" = String, Path, description = "Template id"),
+        ("seed" = Option<u64>, Query, description = "The first variant (default 1)"),
+        ("count" = Option<u64>, Query, description = "How many, 1 to 1000 (default 10)", minimum = 1, maximum = 1000),
+        ("values" = Option<String>, Query, description = "Comma-separated pointers of the reference values to answer, e.g. `inertia_exact`"),
+        ("format" = Option<super::tables::Format>, Query, description = "`json` (default) or `csv`; the same as `Accept: text/csv`")),
+    responses(
+        (status = 200, description = "The variants",
+            content((Variants = "application/json"), (String = "text/csv", example = "variant,F [N*m],inertia_exact\n1,650,459.58\n"))),
+        (status = 400, description = "An invalid seed, count or values", body = Problem, content_type = "application/problem+json"),
+        ReadErrors,
+    ))]
+pub async fn variants(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+    headers: HeaderMap,
+    q: Result<Query<HashMap<String, String>>, QueryRejection>,
+) -> Result<Response, ApiError> {
+    let q = read::query(q, &["seed", "count", "values", "format"])?;
+    let number = |name: &str, default: u64| {
+        q.get(name).map_or(Ok(default), |v| {
+            v.trim().parse::<u64>().map_err(|_| table::bad(name, "must be a whole number ≥ 0"))
+        })
+    };
+    let (seed, count) = (number("seed", 1)?, number("count", 10)?);
+    let values: Vec<String> = q
+        .get("values")
+        .map(|v| v.split(',').map(|p| p.trim().to_string()).filter(|p| !p.is_empty()).collect())
+        .unwrap_or_default();
+    let t = find(&state, &id).await?;
+    let list = variants::list(&state, &t, seed, count, &values).await?;
+    if read::wants(&headers, q.get("format"), "text/csv") {
+        return Ok(
+            ([(header::CONTENT_TYPE, "text/csv; charset=utf-8")], variants::csv(&t, &list, &values)?).into_response()
+        );
+    }
+    Ok(axum::Json(list).into_response())
+}
+
+/// Grades a class: one row per student (`student`, the student's
+/// parameters or `variant`, answer columns named by pointer, optionally
+/// `pointer [unit]` for bare numbers); answers CSV with `student`, `score`,
+/// per answer `POINTER pass` and `POINTER relative_error`, `feedback` and
+/// `error` (a row that cannot be graded says why; the others are graded).
+#[utoipa::path(post, path = "/v1/templates/{id}/grade", operation_id = "post_template_grade", tag = "grading",
+    params(("id" = String, Path, description = "Template id"),
+        ("relative" = Option<f64>, Query, description = "Relative tolerance (default 0.01)"),
+        ("absolute" = Option<f64>, Query, description = "Absolute tolerance, SI (default 0)"),
+        ("sigfigs" = Option<u32>, Query, description = "Significant figures (PrairieLearn's rule), replacing `relative`"),
+        ("zero_level" = Option<f64>, Query, description = "Below it (SI) an expected value is compared absolutely (default 1e-12)"),
+        ("reveal" = Option<bool>, Query, description = "Whether the feedback shows expected values (default true)")),
+    request_body(description = "CSV: `student`, parameter columns or `variant`, answer columns named by pointer",
+        content((String = "text/csv", example = "student,variant,inertia_exact [kg*m^2],omega_max\nana,1,459.6,6.4\nben,2,512,6.39\n"))),
+    responses(
+        (status = 200, description = "A row per student", body = String, content_type = "text/csv",
+            example = "student,score,inertia_exact pass,inertia_exact relative_error,feedback,error\nana,1,true,0.0009,...,\n"),
+        (status = 400, description = "No student column, no answer column, a malformed CSV or query", body = Problem, content_type = "application/problem+json"),
+        (status = 415, description = "Not text/csv", body = Problem, content_type = "application/problem+json"),
+        ReadErrors,
+    ))]
+pub async fn grade(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+    headers: HeaderMap,
+    q: Result<Query<HashMap<String, String>>, QueryRejection>,
+    body: axum::body::Bytes,
+) -> Result<Response, ApiError> {
+    let q = read::query(q, grade::QUERY)?;
+    let mime = headers.get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok()).unwrap_or("").to_ascii_lowercase();
+    if !(mime.starts_with("text/csv") || mime.starts_with("text/plain")) {
+        return Err(ApiError::UnsupportedTable);
+    }
+    let t = find(&state, &id).await?;
+    let text = class(&state, &t, &q, &body).await?;
+    Ok(([(header::CONTENT_TYPE, "text/csv; charset=utf-8")], text).into_response())
 }

@@ -107,6 +107,7 @@ pub fn builtin() -> &'static [Template] {
 /// The library's files, compiled in (a test checks that none is missing).
 pub const LIBRARY_FILES: &[(&str, &str)] = &[
     ("p103-slider-flywheel.json", include_str!("../../../library/p103-slider-flywheel.json")),
+    ("p103-class.json", include_str!("../../../library/p103-class.json")),
     ("p107-two-stroke-engine.json", include_str!("../../../library/p107-two-stroke-engine.json")),
     ("punch-press-us.json", include_str!("../../../library/punch-press-us.json")),
     ("offset-slider-crank.json", include_str!("../../../library/offset-slider-crank.json")),

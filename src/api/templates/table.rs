@@ -104,14 +104,14 @@ pub async fn study(
     Ok((String::from_utf8(bytes).map_err(|e| ApiError::Internal(e.to_string()))?, true))
 }
 
-fn bad(parameter: &str, message: impl Into<String>) -> ApiError {
+pub(super) fn bad(parameter: &str, message: impl Into<String>) -> ApiError {
     ApiError::BadQuery(vec![FieldError::parameter(parameter, message)])
 }
 
 /// A header cell `name [unit]`: (as written, name, unit).
-type Column = (String, String, Option<String>);
+pub(super) type Column = (String, String, Option<String>);
 
-fn read_csv(text: &str) -> Result<(Vec<Column>, Vec<Vec<String>>), ApiError> {
+pub(super) fn read_csv(text: &str) -> Result<(Vec<Column>, Vec<Vec<String>>), ApiError> {
     let mut reader = csv::ReaderBuilder::new().trim(csv::Trim::All).flexible(true).from_reader(text.as_bytes());
     let header: Vec<Column> = reader
         .headers()
@@ -142,7 +142,7 @@ fn read_csv(text: &str) -> Result<(Vec<Column>, Vec<Vec<String>>), ApiError> {
 }
 
 /// A CSV row's parameters: a cell under `name [unit]` is the quantity `cell unit`; empty cells keep the default.
-fn parameters_of(header: &[Column], row: &[String]) -> HashMap<String, String> {
+pub(super) fn parameters_of(header: &[Column], row: &[String]) -> HashMap<String, String> {
     header
         .iter()
         .zip(row)
@@ -152,7 +152,7 @@ fn parameters_of(header: &[Column], row: &[String]) -> HashMap<String, String> {
 }
 
 /// Every row's values, job and error, in order.
-async fn run(
+pub(super) async fn run(
     state: &AppState,
     t: &Template,
     rows: Vec<HashMap<String, String>>,
@@ -189,7 +189,7 @@ async fn run(
     Ok(out)
 }
 
-fn unknown_parameter(t: &Template, name: &str) -> FieldError {
+pub(super) fn unknown_parameter(t: &Template, name: &str) -> FieldError {
     let known = t.parameters.keys().map(String::as_str).collect::<Vec<_>>().join(", ");
     FieldError::parameter(name, format!("no parameter {name} in template {} (its parameters: {known})", t.id))
 }
@@ -200,7 +200,7 @@ fn value_at(result: &Value, pointer: &str) -> Value {
 }
 
 /// An error in one line for a table's `error` cell.
-fn said(e: &ApiError) -> String {
+pub(super) fn said(e: &ApiError) -> String {
     let p = e.problem();
     let fields: Vec<String> = p
         .errors

@@ -1,0 +1,227 @@
+//! A check run: its reference found (a template's job, a request's job,
+//! both stored and reused under their request key, or a stored job), its
+//! answers graded off the async workers, and the check stored as a job of
+//! kind `check`. Also the check's place in the registry ([`CheckKind`]):
+//! its route and document, its table and units.
+
+use super::{CheckOutput, CheckRequest, at, grade, parameter_texts, table, validate};
+use crate::api::json::{JsonBody, parse};
+use crate::api::kind::{self, AnyKind, StoredJob, Table, unit_in};
+use crate::api::limits::Limits;
+use crate::api::problem::{ApiError, FieldError};
+use crate::api::templates::{self, RESERVED, Template};
+use crate::api::{AppState, create, job};
+use crate::store::JobRow;
+use axum::extract::State;
+use axum::response::Response;
+use bytes::Bytes;
+use serde_json::Value;
+use std::collections::HashMap;
+use utoipa::{PartialSchema, ToSchema};
+use utoipa_axum::router::UtoipaMethodRouter;
+
+/// `check` in the registry.
+pub struct CheckKind;
+
+/// The registry's entry.
+pub static CHECK: CheckKind = CheckKind;
+
+const UNITS: &[(&str, &str)] = &[
+    ("/score", "1"),
+    ("/passed", "1"),
+    ("/total", "1"),
+    ("/items/*/relative_error", "1"),
+    ("/max_score", "1"),
+    ("/tests/*/points", "1"),
+    ("/tests/*/max_points", "1"),
+    ("/tests/*/score", "1"),
+    ("/tests/*/max_score", "1"),
+];
+
+/// `POST /v1/check`: the answers checked, stored as a job of kind `check`.
+pub async fn post(State(state): State<AppState>, body: JsonBody<CheckRequest>) -> Result<Response, ApiError> {
+    let (row, reserved) = check_job(&state, body).await?;
+    Ok(create::created(&row, reserved))
+}
+
+/// The check of `body`, computed and stored.
+pub async fn check_job(
+    state: &AppState,
+    body: JsonBody<CheckRequest>,
+) -> Result<(JobRow, tokio::sync::OwnedSemaphorePermit), ApiError> {
+    let JsonBody { value: r, raw, mut unknown } = body;
+    unknown.extend(validate(&r));
+    if !unknown.is_empty() {
+        return Err(ApiError::Invalid(unknown));
+    }
+    let (kind, reference) = reference(state, &r).await?;
+    let (result, id) = (reference.result.clone(), reference.id.clone());
+    create::compute_and_store(state, CHECK.name(), raw, None, move || {
+        let result: Value =
+            serde_json::from_slice(&result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
+        grade(&r, kind, &result, Some(id))
+    })
+    .await
+}
+
+/// The reference job of a check: stored, or computed and stored.
+async fn reference(state: &AppState, r: &CheckRequest) -> Result<(&'static dyn AnyKind, JobRow), ApiError> {
+    if let Some(id) = &r.job {
+        let missing = || ApiError::Invalid(vec![FieldError::at("/job", format!("no job with id '{id}'"))]);
+        let row = state.store.get(id).await?.ok_or_else(missing)?;
+        return Ok((gradable(&row.kind, "/job")?, row));
+    }
+    if let Some(id) = &r.template {
+        let t = templates::find(state, id).await.map_err(|e| no_template(e, id))?;
+        let kind = gradable(&t.kind, "/template")?;
+        let row = templates::job_for(state, &t, &given(&t, r)).await.map_err(under_parameters)?;
+        return Ok((kind, row));
+    }
+    let (kind, request) = kind_request(r)?;
+    let row = templates::stored_job(state, kind, request).await.map_err(|e| under("/request", e))?;
+    Ok((kind, row))
+}
+
+/// The kind of a reference: any but `check`.
+fn gradable(name: &str, field: &str) -> Result<&'static dyn AnyKind, ApiError> {
+    match kind::find(name).filter(|k| k.name() != CHECK.name()) {
+        Some(k) => Ok(k),
+        None => {
+            let known: Vec<&str> = kind::names().into_iter().filter(|n| *n != CHECK.name()).collect();
+            Err(ApiError::Invalid(vec![FieldError::at(
+                field,
+                format!("'{name}' is not a kind of job to check against (one of {})", known.join(", ")),
+            )]))
+        }
+    }
+}
+
+fn kind_request(r: &CheckRequest) -> Result<(&'static dyn AnyKind, &Value), ApiError> {
+    let kind = gradable(r.kind.as_deref().unwrap_or_default(), "/kind")?;
+    Ok((kind, r.request.as_ref().unwrap_or(&Value::Null)))
+}
+
+/// The template's parameters of a check: as given, or its variant's.
+fn given(t: &Template, r: &CheckRequest) -> HashMap<String, String> {
+    match (r.variant, &r.parameters) {
+        (Some(v), _) => parameter_texts(&templates::draw(t, v)),
+        (None, Some(p)) => parameter_texts(p),
+        (None, None) => HashMap::new(),
+    }
+}
+
+fn no_template(e: ApiError, id: &str) -> ApiError {
+    match e {
+        ApiError::NoTemplate(_) => ApiError::Invalid(vec![FieldError::at(
+            "/template",
+            format!("no template '{id}' (GET /v1/templates lists them)"),
+        )]),
+        e => e,
+    }
+}
+
+/// A template's parameter errors (named in a query elsewhere) at `/parameters/NAME`.
+fn under_parameters(e: ApiError) -> ApiError {
+    match e {
+        ApiError::BadQuery(errors) => ApiError::Invalid(
+            errors
+                .into_iter()
+                .map(|f| FieldError::at(at("parameters", f.parameter.as_deref().unwrap_or_default()), f.message))
+                .collect(),
+        ),
+        e => e,
+    }
+}
+
+/// Errors of a nested request, their pointers under `prefix`.
+fn under(prefix: &str, e: ApiError) -> ApiError {
+    match e {
+        ApiError::Invalid(errors) => ApiError::Invalid(
+            errors
+                .into_iter()
+                .map(|mut f| {
+                    f.pointer = Some(format!("{prefix}{}", f.pointer.unwrap_or_default()));
+                    f
+                })
+                .collect(),
+        ),
+        e => e,
+    }
+}
+
+/// The check without a store (the document's example): built-in templates
+/// and requests are solved here; a stored job cannot be read.
+fn solve_offline(raw: String, limits: &Limits) -> Result<Vec<u8>, ApiError> {
+    let JsonBody { value: r, mut unknown, .. } = parse::<CheckRequest>(raw)?;
+    unknown.extend(validate(&r));
+    if !unknown.is_empty() {
+        return Err(ApiError::Invalid(unknown));
+    }
+    let (kind, request) = match (&r.template, &r.job) {
+        (_, Some(_)) => {
+            return Err(ApiError::Invalid(vec![FieldError::at("/job", "a stored job needs the service's store")]));
+        }
+        (Some(id), _) => {
+            let t = templates::builtin()
+                .iter()
+                .find(|t| &t.id == id)
+                .ok_or_else(|| no_template(ApiError::NoTemplate(id.clone()), id))?;
+            let request = templates::request_for(t, &given(t, &r), RESERVED).map_err(under_parameters)?;
+            (gradable(&t.kind, "/template")?, request)
+        }
+        (None, None) => kind_request(&r).map(|(k, v)| (k, v.clone()))?,
+    };
+    let result = kind.solve(request.to_string(), limits).map_err(|e| under("/request", e))?;
+    let result: Value = serde_json::from_slice(&result).map_err(|e| ApiError::Internal(e.to_string()))?;
+    serde_json::to_vec(&grade(&r, kind, &result, None)?).map_err(|e| ApiError::Internal(e.to_string()))
+}
+
+impl AnyKind for CheckKind {
+    fn name(&self) -> &'static str {
+        "check"
+    }
+    fn path(&self) -> &'static str {
+        "/v1/check"
+    }
+    fn route(&self) -> UtoipaMethodRouter<AppState> {
+        let mut schemas = Vec::new();
+        CheckRequest::schemas(&mut schemas);
+        CheckOutput::schemas(&mut schemas);
+        schemas.push((CheckRequest::name().into(), CheckRequest::schema()));
+        schemas.push((CheckOutput::name().into(), CheckOutput::schema()));
+        schemas.push((format!("JobOf_{}", CheckOutput::name()), job::JobOf::<CheckOutput>::schema()));
+        let summary = "Checks students' answers against the engine's: each within a tolerance (relative, absolute, \
+significant figures, zero level), with feedback naming the common slip a wrong answer matches; in the service's \
+format or as PrairieLearn's or Gradescope's results document.";
+        let names = (CheckRequest::name().to_string(), CheckOutput::name().to_string());
+        let paths = kind::operation_for(self.path(), "create_check", "grading", summary, names);
+        (schemas, paths, axum::routing::post(post))
+    }
+    fn solve(&self, raw: String, limits: &Limits) -> Result<Vec<u8>, ApiError> {
+        solve_offline(raw, limits)
+    }
+    fn job<'a>(&'a self, state: &'a AppState, request: Bytes, _key: Option<String>) -> StoredJob<'a> {
+        Box::pin(async move { check_job(state, parse::<CheckRequest>(request)?).await })
+    }
+    fn request_schema(&self) -> String {
+        CheckRequest::name().into()
+    }
+    fn result_schema(&self) -> String {
+        CheckOutput::name().into()
+    }
+    fn units(&self) -> &'static [(&'static str, &'static str)] {
+        UNITS
+    }
+    fn table(&self, result: &Value) -> Option<Table> {
+        table(result)
+    }
+    /// An item's numbers are in its `unit`.
+    fn unit(&self, result: &Value, pointer: &[&str]) -> Option<String> {
+        match pointer {
+            ["items", i, "given" | "expected" | "answer"] => {
+                result["items"].get(i.parse::<usize>().ok()?)?["unit"].as_str().map(String::from)
+            }
+            _ => unit_in(UNITS, pointer).map(String::from),
+        }
+    }
+}

@@ -1,0 +1,55 @@
+//! `?label=TEXT` on any POST: a label stored with the job the POST creates
+//! (e.g. a student's id), listed and filtered by `GET /v1/jobs?label=`.
+//!
+//! The middleware reads it from the query and keeps it for the request's
+//! task ([`LABEL`]), where [`super::create::compute_and_store`] finds it:
+//! every POST gets it without a line of its own. Jobs stored under a request
+//! key (a template's parameters, a check's reference) are shared between
+//! requests and carry no label.
+
+use super::problem::{ApiError, FieldError};
+use axum::extract::{Query, Request};
+use axum::http::Method;
+use axum::middleware::Next;
+use axum::response::{IntoResponse, Response};
+use std::collections::HashMap;
+
+/// Longest label, characters.
+pub const MAX_LABEL: usize = 200;
+
+tokio::task_local! {
+    /// The label of the POST being answered.
+    pub static LABEL: Option<String>;
+}
+
+/// The label of the request being answered, if any.
+pub fn current() -> Option<String> {
+    LABEL.try_with(Clone::clone).ok().flatten()
+}
+
+/// Runs a POST with its `?label=` kept for its task; a bad label is a 400.
+pub async fn labelled(req: Request, next: Next) -> Response {
+    if req.method() != Method::POST {
+        return next.run(req).await;
+    }
+    let label = Query::<HashMap<String, String>>::try_from_uri(req.uri()).ok().and_then(|q| q.0.get("label").cloned());
+    match label.map(checked).transpose() {
+        Ok(label) => LABEL.scope(label, next.run(req)).await,
+        Err(e) => e.into_response(),
+    }
+}
+
+/// A label: 1 to [`MAX_LABEL`] characters, no control characters.
+pub fn checked(label: String) -> Result<String, ApiError> {
+    let bad = |why: &str| ApiError::BadQuery(vec![FieldError::parameter("label", why)]);
+    if label.trim().is_empty() {
+        return Err(bad("must not be empty"));
+    }
+    if label.chars().count() > MAX_LABEL {
+        return Err(bad(&format!("must be at most {MAX_LABEL} characters")));
+    }
+    if label.chars().any(char::is_control) {
+        return Err(bad("must not contain control characters"));
+    }
+    Ok(label)
+}

@@ -1,0 +1,187 @@
+//! A whole class graded in one request: a CSV with a row per student
+//! (`student`, the student's parameters or `variant`, and answer columns
+//! named by pointer, optionally `pointer [unit]`), answered with a CSV of
+//! `student`, `score`, then per answer `POINTER pass` and `POINTER
+//! relative_error`, then `feedback` and `error`. Each row stands alone: a
+//! bad row says why in `error` and the others are graded. Students with the
+//! same parameters share one stored reference job.
+
+use super::model::Template;
+use super::table::{Column, bad, parameters_of, read_csv, said};
+use super::{RESERVED, job_for, variants};
+use crate::api::AppState;
+use crate::api::check::{CheckOutput, CheckRequest, ToleranceDto, grade};
+use crate::api::problem::ApiError;
+use crate::api::tables::cell;
+use crate::api::{kind, tables};
+use serde_json::Value;
+use std::collections::{BTreeMap, HashMap};
+
+/// The query names of a grade: the tolerance and `reveal`.
+pub const QUERY: &[&str] = &["relative", "absolute", "sigfigs", "zero_level", "reveal", "label"];
+
+/// The tolerance and `reveal` of a grade's query.
+pub fn options(q: &HashMap<String, String>) -> Result<(ToleranceDto, bool), ApiError> {
+    let number = |name: &str| -> Result<Option<f64>, ApiError> {
+        q.get(name)
+            .map(|v| {
+                v.trim()
+                    .parse::<f64>()
+                    .ok()
+                    .filter(|x| x.is_finite() && *x >= 0.0)
+                    .ok_or_else(|| bad(name, "must be a number ≥ 0"))
+            })
+            .transpose()
+    };
+    let sigfigs = q
+        .get("sigfigs")
+        .map(|v| {
+            v.trim()
+                .parse::<u32>()
+                .ok()
+                .filter(|n| (1..=15).contains(n))
+                .ok_or_else(|| bad("sigfigs", "must be 1 to 15"))
+        })
+        .transpose()?;
+    let reveal = match q.get("reveal").map(|v| v.trim().to_ascii_lowercase()).as_deref() {
+        None | Some("true") | Some("1") => true,
+        Some("false") | Some("0") => false,
+        Some(_) => return Err(bad("reveal", "must be true or false")),
+    };
+    let t = ToleranceDto {
+        relative: number("relative")?,
+        absolute: number("absolute")?,
+        sigfigs,
+        zero_level: number("zero_level")?,
+    };
+    Ok((t, reveal))
+}
+
+/// The columns of a class CSV.
+struct Layout {
+    student: usize,
+    variant: Option<usize>,
+    /// Answer columns: index, pointer (as written, without `/`), unit of bare numbers.
+    answers: Vec<(usize, String, Option<String>)>,
+}
+
+fn layout(t: &Template, header: &[Column]) -> Result<Layout, ApiError> {
+    let find = |name: &str| header.iter().position(|(_, n, _)| n == name);
+    let student = find("student").ok_or_else(|| bad("body", "the CSV needs a `student` column"))?;
+    let variant = find("variant");
+    let answers: Vec<(usize, String, Option<String>)> = header
+        .iter()
+        .enumerate()
+        .filter(|(i, (_, n, _))| {
+            *i != student && Some(*i) != variant && (n.starts_with('/') || !t.parameters.contains_key(n))
+        })
+        .map(|(i, (_, n, u))| (i, n.trim_start_matches('/').to_string(), u.clone()))
+        .collect();
+    if answers.is_empty() {
+        return Err(bad("body", "no answer columns: name each by its pointer into the result, e.g. inertia_exact"));
+    }
+    if let Some((_, n, _)) = answers.iter().find(|(_, n, _)| RESERVED.contains(&n.as_str())) {
+        return Err(bad(n, "a reserved name, not a pointer into the result"));
+    }
+    Ok(Layout { student, variant, answers })
+}
+
+/// The graded class of `body` (CSV text) for template `t`.
+pub async fn class(
+    state: &AppState,
+    t: &Template,
+    q: &HashMap<String, String>,
+    body: &[u8],
+) -> Result<String, ApiError> {
+    let (tolerance, reveal) = options(q)?;
+    let text = std::str::from_utf8(body).map_err(|_| bad("body", "the CSV is not UTF-8 text"))?;
+    let (header, rows) = read_csv(text)?;
+    let l = layout(t, &header)?;
+    let params: Vec<Column> = header
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| *i != l.student && Some(*i) != l.variant && !l.answers.iter().any(|a| a.0 == *i))
+        .map(|(_, c)| c.clone())
+        .collect();
+    let mut out = csv::Writer::from_writer(Vec::new());
+    let internal = |e: csv::Error| ApiError::Internal(e.to_string());
+    let mut head = vec!["student".to_string(), "score".to_string()];
+    for (_, name, _) in &l.answers {
+        head.extend([format!("{name} pass"), format!("{name} relative_error")]);
+    }
+    head.extend(["feedback".to_string(), "error".to_string()]);
+    out.write_record(&head).map_err(internal)?;
+    for row in &rows {
+        let cells = match graded(state, t, &l, &params, &header, row, tolerance, reveal).await {
+            Ok(cells) => cells,
+            Err(e @ (ApiError::Saturated { .. } | ApiError::StorageFull | ApiError::Unavailable(_))) => return Err(e),
+            Err(e) => failed(&l, row, &said(&e)),
+        };
+        out.write_record(&cells).map_err(internal)?;
+    }
+    String::from_utf8(out.into_inner().map_err(|e| ApiError::Internal(e.to_string()))?)
+        .map_err(|e| ApiError::Internal(e.to_string()))
+}
+
+/// A row that could not be graded: its student and why.
+fn failed(l: &Layout, row: &[String], why: &str) -> Vec<String> {
+    let mut cells = vec![row[l.student].clone(), String::new()];
+    cells.extend(std::iter::repeat_n(String::new(), 2 * l.answers.len() + 1));
+    cells.push(why.to_string());
+    cells
+}
+
+/// One student's row graded.
+#[allow(clippy::too_many_arguments)]
+async fn graded(
+    state: &AppState,
+    t: &Template,
+    l: &Layout,
+    params: &[Column],
+    header: &[Column],
+    row: &[String],
+    tolerance: ToleranceDto,
+    reveal: bool,
+) -> Result<Vec<String>, ApiError> {
+    let mut given: HashMap<String, String> = HashMap::new();
+    if let Some(v) = l.variant.map(|i| row[i].trim()).filter(|v| !v.is_empty()) {
+        let seed =
+            v.parse::<u64>().map_err(|_| bad("variant", format!("'{v}' is not a variant number (0 to 2^64 − 1)")))?;
+        given.extend(variants::draw(t, seed).iter().map(|(k, v)| (k.clone(), cell(v))));
+    }
+    let own: Vec<String> =
+        header.iter().zip(row).map(|(c, cell)| if params.contains(c) { cell.clone() } else { String::new() }).collect();
+    given.extend(parameters_of(header, &own));
+    let job = job_for(state, t, &given).await?;
+    let result: Value =
+        serde_json::from_slice(&job.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
+    let answers: BTreeMap<String, Value> = l
+        .answers
+        .iter()
+        .map(|(i, name, unit)| {
+            let cell = row[*i].trim();
+            let bare = cell.parse::<f64>().is_ok()
+                || (cell.contains(',') && cell.replacen(',', ".", 1).parse::<f64>().is_ok());
+            let text = match unit {
+                Some(u) if bare => format!("{cell} {u}"),
+                _ => cell.to_string(),
+            };
+            (name.clone(), Value::String(text))
+        })
+        .collect();
+    let request = CheckRequest { answers, tolerance: Some(tolerance), reveal: Some(reveal), ..CheckRequest::default() };
+    let kind = kind::find(&t.kind).ok_or_else(|| ApiError::Internal(format!("template kind {}", t.kind)))?;
+    let CheckOutput::Mechdyn(c) = grade(&request, kind, &result, Some(job.id))? else {
+        return Err(ApiError::Internal("a grade's check is in the mechdyn format".into()));
+    };
+    let mut cells = vec![row[l.student].clone(), format!("{}", c.score)];
+    let by_pointer: HashMap<&str, _> = c.items.iter().map(|i| (i.pointer.trim_start_matches('/'), i)).collect();
+    for (_, name, _) in &l.answers {
+        let item = by_pointer.get(name.as_str());
+        cells.push(item.map(|i| i.pass.to_string()).unwrap_or_default());
+        cells.push(item.and_then(|i| i.relative_error).map(tables::number_text).unwrap_or_default());
+    }
+    cells.push(c.items.iter().map(|i| i.feedback.as_str()).collect::<Vec<_>>().join(" "));
+    cells.push(String::new());
+    Ok(cells)
+}

@@ -1,0 +1,129 @@
+//! Seeded variants of a template: per-student parameter sets drawn from the
+//! parameters' `choices` or `min`/`max`/`step` by the generator written
+//! down in [`crate::engine::variants`]; variant `v` is the single draw with
+//! seed `v`, so a class list names a student's variant by its number.
+
+use super::model::{Parameter, Template};
+use super::table::{bad, run};
+use crate::api::AppState;
+use crate::api::problem::ApiError;
+use crate::api::tables::cell;
+use crate::engine::variants::{Draw, Range, variant};
+use serde::Serialize;
+use serde_json::Value;
+use std::collections::{BTreeMap, HashMap};
+use utoipa::ToSchema;
+
+/// Most variants in one list.
+pub const MAX_COUNT: u64 = 1000;
+
+/// One variant with its reference values.
+#[derive(Serialize, ToSchema)]
+pub struct Variant {
+    /// Its seed.
+    pub variant: u64,
+    /// The drawn parameters, each in its parameter's unit (those without a range are absent: at their defaults).
+    pub parameters: BTreeMap<String, Value>,
+    /// The values asked for (`values=`), by pointer as given.
+    pub values: BTreeMap<String, Value>,
+    /// The reference job, when values were asked for.
+    pub job: Option<String>,
+    /// Why its job failed, or null.
+    pub error: Option<String>,
+}
+
+#[derive(Serialize, ToSchema)]
+pub struct Variants {
+    pub variants: Vec<Variant>,
+}
+
+/// Where a parameter's values are drawn from, if anywhere.
+fn range(p: &Parameter) -> Option<Range> {
+    match (&p.choices, p.min, p.max, p.step) {
+        (Some(c), ..) if !c.is_empty() => Some(Range::Choices(c.len())),
+        (_, Some(min), Some(max), Some(step)) => Range::grid(min, max, step),
+        (_, Some(min), Some(max), None) if max >= min => Some(Range::Interval { min, max }),
+        _ => None,
+    }
+}
+
+/// The parameters of variant `seed` of `t`: one draw per parameter in name
+/// order (those without a range draw too, and keep their default).
+pub fn draw(t: &Template, seed: u64) -> BTreeMap<String, Value> {
+    let ranges: Vec<Option<Range>> = t.parameters.values().map(range).collect();
+    // A parameter without a range draws from a one-choice list, so that each takes its draw.
+    let drawn = variant(seed, &ranges.iter().map(|r| r.unwrap_or(Range::Choices(1))).collect::<Vec<_>>());
+    t.parameters
+        .iter()
+        .zip(ranges.iter().zip(drawn))
+        .filter_map(|((name, p), (r, d))| {
+            r.as_ref()?;
+            let value = match d {
+                Draw::Choice(i) => p.choices.as_ref()?.get(i)?.clone(),
+                Draw::Value(x) => number(x)?,
+            };
+            Some((name.clone(), value))
+        })
+        .collect()
+}
+
+/// The variants `seed … seed + count − 1`, each with the `values` of its job.
+pub async fn list(
+    state: &AppState,
+    t: &Template,
+    seed: u64,
+    count: u64,
+    values: &[String],
+) -> Result<Variants, ApiError> {
+    if count == 0 || count > MAX_COUNT {
+        return Err(bad("count", format!("must be 1 to {MAX_COUNT}")));
+    }
+    if seed.checked_add(count - 1).is_none() {
+        return Err(bad("seed", "seed + count − 1 must stay below 2^64"));
+    }
+    let drawn: Vec<(u64, BTreeMap<String, Value>)> = (seed..seed + count).map(|v| (v, draw(t, v))).collect();
+    let given: Vec<HashMap<String, String>> =
+        drawn.iter().map(|(_, p)| p.iter().map(|(k, v)| (k.clone(), cell(v))).collect()).collect();
+    let computed = if values.is_empty() {
+        vec![(Vec::new(), None, None); given.len()]
+    } else {
+        run(state, t, given, values).await?
+    };
+    let variants = drawn
+        .into_iter()
+        .zip(computed)
+        .map(|((variant, parameters), (found, job, error))| {
+            let values = values.iter().cloned().zip(found).collect();
+            Variant { variant, parameters, values, job, error }
+        })
+        .collect();
+    Ok(Variants { variants })
+}
+
+/// The variants as CSV: `variant`, a column per drawn parameter (`name [unit]`), a column per value.
+pub fn csv(t: &Template, v: &Variants, values: &[String]) -> Result<String, ApiError> {
+    let names: Vec<&String> = t.parameters.iter().filter(|(_, p)| range(p).is_some()).map(|(n, _)| n).collect();
+    let heading = |n: &String| t.parameters[n].unit.as_ref().map_or_else(|| n.clone(), |u| format!("{n} [{u}]"));
+    let mut out = csv::Writer::from_writer(Vec::new());
+    let internal = |e: csv::Error| ApiError::Internal(e.to_string());
+    let head = ["variant".to_string()].into_iter().chain(names.iter().map(|n| heading(n)));
+    let head: Vec<String> = head.chain(values.iter().map(|p| p.trim_start_matches('/').to_string())).collect();
+    out.write_record(&head).map_err(internal)?;
+    for row in &v.variants {
+        let cells = [row.variant.to_string()].into_iter();
+        let cells = cells.chain(names.iter().map(|n| row.parameters.get(*n).map(cell).unwrap_or_default()));
+        let cells: Vec<String> =
+            cells.chain(values.iter().map(|p| row.values.get(p).map(cell).unwrap_or_default())).collect();
+        out.write_record(&cells).map_err(internal)?;
+    }
+    String::from_utf8(out.into_inner().map_err(|e| ApiError::Internal(e.to_string()))?)
+        .map_err(|e| ApiError::Internal(e.to_string()))
+}
+
+/// A drawn number as JSON: whole numbers without a fraction (`600`, not `600.0`).
+fn number(x: f64) -> Option<Value> {
+    if x.fract() == 0.0 && x.abs() < 9.0e15 {
+        return Some(Value::from(x as i64));
+    }
+    serde_json::Number::from_f64(x).map(Value::Number)
+}
