@@ -81,10 +81,7 @@ async fn answer_once(
         return replay(state, kept, &fingerprint).await.map_err(IntoResponse::into_response);
     }
     let Some(_claim) = flight.claim(&key) else {
-        let busy = ApiError::Conflict(format!("a request with Idempotency-Key '{key}' is still being answered"));
-        let mut r = busy.into_response();
-        r.headers_mut().insert(header::RETRY_AFTER, HeaderValue::from_static("1"));
-        return Err(r);
+        return Err(ApiError::InProgress(key).into_response());
     };
     let answer = next.run(Request::from_parts(parts, Body::from(body))).await;
     if !answer.status().is_success() {

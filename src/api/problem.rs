@@ -155,6 +155,9 @@ pub enum ApiError {
     NoTemplate(String),
     #[error("{0}")]
     Conflict(String),
+    /// The first request of an `Idempotency-Key` is still being answered.
+    #[error("a request with Idempotency-Key '{0}' is still being answered; retry after 1 s")]
+    InProgress(String),
     #[error("no such resource")]
     NoRoute,
     #[error("method not allowed")]
@@ -200,6 +203,7 @@ impl ApiError {
             Self::NoRoute => (StatusCode::NOT_FOUND, "not-found", "Not found"),
             Self::NoTemplate(_) => (StatusCode::NOT_FOUND, "not-found", "Template not found"),
             Self::Conflict(_) => (StatusCode::CONFLICT, "conflict", "The name is taken"),
+            Self::InProgress(_) => (StatusCode::CONFLICT, "in-progress", "The same request is being answered"),
             Self::NoPart { .. } => (StatusCode::NOT_FOUND, "no-such-part", "No such part of the result"),
             Self::MethodNotAllowed => (StatusCode::METHOD_NOT_ALLOWED, "method-not-allowed", "Method not allowed"),
             Self::OverBudget(_) => {
@@ -265,6 +269,9 @@ impl IntoResponse for ApiError {
             }
             Self::Unavailable(_) => {
                 headers.insert(header::RETRY_AFTER, header::HeaderValue::from_static("5"));
+            }
+            Self::InProgress(_) => {
+                headers.insert(header::RETRY_AFTER, header::HeaderValue::from_static("1"));
             }
             _ => {}
         }

@@ -193,3 +193,29 @@ async fn a_retried_post_is_answered_once() {
     let empty = app.send(keyed("/v1/flywheel", " ", "application/json", &flywheel)).await;
     assert_eq!(empty.status, StatusCode::BAD_REQUEST);
 }
+
+/// Two copies of one POST sent at once under one key (a client's retry
+/// racing its first try): one job stored; the other copy is the first's
+/// answer again or a 409 to retry, never a second job.
+#[tokio::test]
+async fn a_retry_racing_its_first_try_stores_one_job() {
+    let app = TestApp::new().await;
+    let mut k1 = crate::helpers::request("k1_offset_slider_crank");
+    k1["input"]["steps"] = json!(2000);
+    let body = k1.to_string();
+    let (a, b) = tokio::join!(
+        app.send(keyed("/v1/kinetostatics", "race", "application/json", &body)),
+        app.send(keyed("/v1/kinetostatics", "race", "application/json", &body))
+    );
+    let mut statuses = [a.status, b.status];
+    statuses.sort();
+    assert!(
+        statuses == [StatusCode::CREATED, StatusCode::CREATED]
+            || statuses == [StatusCode::CREATED, StatusCode::CONFLICT]
+    );
+    if let Some(busy) = [&a, &b].into_iter().find(|r| r.status == StatusCode::CONFLICT) {
+        assert_eq!(busy.headers.get("retry-after").unwrap(), "1");
+        assert_eq!(busy.json()["type"], "/problems/in-progress");
+    }
+    assert_eq!(app.get("/v1/jobs?kind=kinetostatics").await.json()["items"].as_array().unwrap().len(), 1);
+}

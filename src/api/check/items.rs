@@ -6,7 +6,7 @@
 use super::{CheckItem, ToleranceDto};
 use crate::api::kind::{AnyKind, DIMENSIONLESS};
 use crate::api::problem::FieldError;
-use crate::api::tables;
+use crate::api::tables::{self, Scalar};
 use crate::engine::grading::{self, Measure, Rule, Slip, Tolerance, Verdict};
 use crate::engine::variants::round_sig;
 use crate::units::{Dim, parse_quantity, parse_unit};
@@ -49,9 +49,16 @@ pub fn expected(kind: &dyn AnyKind, result: &Value, pointer: &str, at: &str) -> 
     Ok((x, kind.unit(result, &refs).unwrap_or_else(|| DIMENSIONLESS.into())))
 }
 
-/// Judges one answer against `e` (in `unit`); `others` are the result's
-/// other numbers in the same unit, nearest first, for the slips.
-pub fn judge(asked: &Asked, e: f64, unit: &str, others: &[(String, f64)], reveal: bool) -> CheckItem {
+/// Judges one answer against `e` (in `unit`); `others` gives the result's
+/// other numbers in the same unit, nearest first, for the slips (asked for
+/// only when the answer fails).
+pub fn judge(
+    asked: &Asked,
+    e: f64,
+    unit: &str,
+    others: impl FnOnce() -> Vec<(String, f64)>,
+    reveal: bool,
+) -> CheckItem {
     let name = asked.pointer.trim_start_matches('/');
     let mut item = CheckItem {
         pointer: format!("/{name}"),
@@ -75,9 +82,10 @@ pub fn judge(asked: &Asked, e: f64, unit: &str, others: &[(String, f64)], reveal
     let verdict = grading::judge(g, e, t);
     (item.given, item.pass) = (Some(g), verdict.pass);
     item.relative_error = verdict.relative_error.filter(|_| reveal);
-    let slip = (!verdict.pass).then(|| grading::slip(g, e, t, measure(unit), &values(others))).flatten();
-    item.slip = slip.map(|s| slip_name(s, others));
-    item.feedback = feedback(name, g, e, unit, &verdict, t, slip.map(|s| slip_text(s, name, others)), reveal);
+    let others = if verdict.pass { Vec::new() } else { others() };
+    let slip = (!verdict.pass).then(|| grading::slip(g, e, t, measure(unit), &values(&others))).flatten();
+    item.slip = slip.map(|s| slip_name(s, &others));
+    item.feedback = feedback(name, g, e, unit, &verdict, t, slip.map(|s| slip_text(s, name, &others)), reveal);
     item
 }
 
@@ -204,17 +212,17 @@ const SHORT_LIST: usize = 10;
 /// `/inertia_exact`, `/flywheel_inertia/exact` for it), not inside another
 /// item of a long series: a value matched by chance in a table is no slip a
 /// student makes.
-pub fn others(kind: &dyn AnyKind, result: &Value, pointer: &str, unit: &str) -> Vec<(String, f64)> {
+pub fn others(flat: &[Scalar], result: &Value, pointer: &str, unit: &str) -> Vec<(String, f64)> {
     let own = tables::tokens(pointer);
-    let mut near: Vec<(usize, String, f64)> = tables::flatten(kind, result)
-        .into_iter()
+    let mut near: Vec<(usize, String, f64)> = flat
+        .iter()
         .filter(|s| s.unit.as_deref() == Some(unit))
         .filter_map(|s| {
             let tokens = tables::tokens(&s.pointer);
             let shared = own.iter().zip(&tokens).take_while(|(a, b)| a == b).count();
             let near =
                 shared + 2 >= own.len().min(tokens.len()) && tokens != own && !in_series(result, &tokens, shared);
-            Some((shared, s.pointer, s.value.as_f64()?)).filter(|_| near)
+            Some((shared, s.pointer.clone(), s.value.as_f64()?)).filter(|_| near)
         })
         .collect();
     // Nearest first: most tokens shared, then the same depth (siblings before cousins).

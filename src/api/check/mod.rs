@@ -21,6 +21,7 @@ use super::tables::{self, number_text};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use std::collections::BTreeMap;
+use std::sync::OnceLock;
 use utoipa::ToSchema;
 
 /// Most answers in one check.
@@ -239,6 +240,18 @@ pub fn grade(
     result: &Value,
     job: Option<String>,
 ) -> Result<CheckOutput, ApiError> {
+    grade_with(r, kind, result, job, &OnceLock::new())
+}
+
+/// [`grade`] with every scalar of the result flattened once for all the
+/// checks against it (`flat`, filled when an answer first fails).
+pub fn grade_with(
+    r: &CheckRequest,
+    kind: &dyn super::kind::AnyKind,
+    result: &Value,
+    job: Option<String>,
+    flat: &OnceLock<Vec<tables::Scalar>>,
+) -> Result<CheckOutput, ApiError> {
     let reveal = r.reveal.unwrap_or(true);
     let own: BTreeMap<String, &ToleranceDto> = r.tolerances.iter().flatten().map(|(k, t)| (pointer(k), t)).collect();
     let (mut judged, mut errors) = (Vec::new(), Vec::new());
@@ -249,8 +262,8 @@ pub fn grade(
             Ok((e, unit)) => {
                 let tolerance = items::tolerance(r.tolerance.as_ref(), own.get(&p).copied());
                 let asked = items::Asked { pointer: &p, answer, tolerance };
-                let others = items::others(kind, result, &p, &unit);
-                judged.push(items::judge(&asked, e, &unit, &others, reveal));
+                let others = || items::others(flat.get_or_init(|| tables::flatten(kind, result)), result, &p, &unit);
+                judged.push(items::judge(&asked, e, &unit, others, reveal));
             }
         }
     }

@@ -10,12 +10,14 @@ use super::model::Template;
 use super::table::{Column, bad, parameters_of, read_csv, said};
 use super::{RESERVED, job_for, variants};
 use crate::api::AppState;
-use crate::api::check::{CheckOutput, CheckRequest, ToleranceDto, grade};
+use crate::api::check::{CheckOutput, CheckRequest, ToleranceDto, grade_with};
 use crate::api::problem::ApiError;
+use crate::api::tables::Scalar;
 use crate::api::tables::cell;
 use crate::api::{kind, tables};
 use serde_json::Value;
 use std::collections::{BTreeMap, HashMap};
+use std::sync::{Arc, OnceLock};
 
 /// The query names of a grade: the tolerance and `reveal`.
 pub const QUERY: &[&str] = &["relative", "absolute", "sigfigs", "zero_level", "reveal", "label"];
@@ -111,8 +113,9 @@ pub async fn class(
     }
     head.extend(["feedback".to_string(), "error".to_string()]);
     out.write_record(&head).map_err(internal)?;
+    let mut seen = References::default();
     for row in &rows {
-        let cells = match graded(state, t, &l, &params, &header, row, tolerance, reveal).await {
+        let cells = match graded(state, t, &l, (&params, &header), row, (tolerance, reveal), &mut seen).await {
             Ok(cells) => cells,
             Err(e @ (ApiError::Saturated { .. } | ApiError::StorageFull | ApiError::Unavailable(_))) => return Err(e),
             Err(e) => failed(&l, row, &said(&e)),
@@ -131,17 +134,31 @@ fn failed(l: &Layout, row: &[String], why: &str) -> Vec<String> {
     cells
 }
 
+/// The reference results read so far in one grade, by their parameters:
+/// students sharing a variant share one read and parse of its job. Bounded:
+/// forgotten once they held [`REFERENCE_BYTES`] of stored JSON (a parsed
+/// tree takes about eight times its text).
+#[derive(Default)]
+struct References {
+    results: HashMap<Vec<(String, String)>, Reference>,
+    bytes: usize,
+}
+
+/// A reference job's id, its result parsed, and its scalars once flattened (for slips).
+type Reference = (String, Arc<Value>, Arc<OnceLock<Vec<Scalar>>>);
+
+/// Stored JSON of the references kept parsed at once in a grade.
+const REFERENCE_BYTES: usize = 4 << 20;
+
 /// One student's row graded.
-#[allow(clippy::too_many_arguments)]
 async fn graded(
     state: &AppState,
     t: &Template,
     l: &Layout,
-    params: &[Column],
-    header: &[Column],
+    (params, header): (&[Column], &[Column]),
     row: &[String],
-    tolerance: ToleranceDto,
-    reveal: bool,
+    (tolerance, reveal): (ToleranceDto, bool),
+    seen: &mut References,
 ) -> Result<Vec<String>, ApiError> {
     let mut given: HashMap<String, String> = HashMap::new();
     if let Some(v) = l.variant.map(|i| row[i].trim()).filter(|v| !v.is_empty()) {
@@ -152,9 +169,21 @@ async fn graded(
     let own: Vec<String> =
         header.iter().zip(row).map(|(c, cell)| if params.contains(c) { cell.clone() } else { String::new() }).collect();
     given.extend(parameters_of(header, &own));
-    let job = job_for(state, t, &given).await?;
-    let result: Value =
-        serde_json::from_slice(&job.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
+    let mut asked: Vec<(String, String)> = given.clone().into_iter().collect();
+    asked.sort();
+    let (job, result, flat) = match seen.results.get(&asked) {
+        Some(found) => found.clone(),
+        None => {
+            let job = job_for(state, t, &given).await?;
+            let result: Value =
+                serde_json::from_slice(&job.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
+            if seen.bytes + job.result.len() > REFERENCE_BYTES {
+                *seen = References::default();
+            }
+            seen.bytes += job.result.len();
+            seen.results.entry(asked).or_insert((job.id, Arc::new(result), Arc::default())).clone()
+        }
+    };
     let answers: BTreeMap<String, Value> = l
         .answers
         .iter()
@@ -171,7 +200,7 @@ async fn graded(
         .collect();
     let request = CheckRequest { answers, tolerance: Some(tolerance), reveal: Some(reveal), ..CheckRequest::default() };
     let kind = kind::find(&t.kind).ok_or_else(|| ApiError::Internal(format!("template kind {}", t.kind)))?;
-    let CheckOutput::Mechdyn(c) = grade(&request, kind, &result, Some(job.id))? else {
+    let CheckOutput::Mechdyn(c) = grade_with(&request, kind, &result, Some(job), &flat)? else {
         return Err(ApiError::Internal("a grade's check is in the mechdyn format".into()));
     };
     let mut cells = vec![row[l.student].clone(), format!("{}", c.score)];
