@@ -67,7 +67,7 @@ pub struct ListParams {
     /// Only jobs of this kind (the document lists them).
     kind: Option<String>,
     /// Only jobs stored with this label (`?label=` on their POST).
-    #[param(max_length = 200)]
+    #[param(min_length = 1, max_length = 200)]
     label: Option<String>,
     /// Page size, 1 to 100 (default 50).
     #[param(minimum = 1, maximum = 100)]

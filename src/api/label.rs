@@ -39,17 +39,12 @@ pub async fn labelled(req: Request, next: Next) -> Response {
     }
 }
 
-/// A label: 1 to [`MAX_LABEL`] characters, no control characters.
+/// A label: 1 to [`MAX_LABEL`] characters.
 pub fn checked(label: String) -> Result<String, ApiError> {
     let bad = |why: &str| ApiError::BadQuery(vec![FieldError::parameter("label", why)]);
-    if label.trim().is_empty() {
-        return Err(bad("must not be empty"));
+    match label.chars().count() {
+        0 => Err(bad("must not be empty")),
+        n if n > MAX_LABEL => Err(bad(&format!("must be at most {MAX_LABEL} characters"))),
+        _ => Ok(label),
     }
-    if label.chars().count() > MAX_LABEL {
-        return Err(bad(&format!("must be at most {MAX_LABEL} characters")));
-    }
-    if label.chars().any(char::is_control) {
-        return Err(bad("must not contain control characters"));
-    }
-    Ok(label)
 }

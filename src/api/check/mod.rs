@@ -43,8 +43,9 @@ pub struct CheckRequest {
     #[serde(skip_serializing_if = "Option::is_none")]
     #[schema(value_type = Option<BTreeMap<String, super::quantity::Quantity>>)]
     pub parameters: Option<BTreeMap<String, Value>>,
-    /// A seeded variant of the template (`GET /v1/templates/{id}/variants` lists them).
+    /// A seeded variant of the template (`GET /v1/templates/{id}/variants` lists them), 0 to 2^63 − 1.
     #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(maximum = 9223372036854775807_u64)]
     pub variant: Option<u64>,
     /// The reference is the job of `request` of this kind.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -196,6 +197,9 @@ fn validate(r: &CheckRequest) -> Vec<FieldError> {
     if r.template.is_none() {
         errors.extend(r.parameters.as_ref().map(|_| FieldError::at("/parameters", "parameters belong to a template")));
         errors.extend(r.variant.map(|_| FieldError::at("/variant", "a variant belongs to a template")));
+    }
+    if r.variant.is_some_and(|v| v > super::templates::MAX_SEED) {
+        errors.push(FieldError::at("/variant", "variants are numbered 0 to 2^63 − 1"));
     }
     if r.parameters.is_some() && r.variant.is_some() {
         errors.push(FieldError::at("/variant", "give parameters or a variant, not both"));

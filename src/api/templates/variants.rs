@@ -17,6 +17,9 @@ use utoipa::ToSchema;
 /// Most variants in one list.
 pub const MAX_COUNT: u64 = 1000;
 
+/// The largest variant number, 2^63 − 1 (an int64 in every client's JSON).
+pub const MAX_SEED: u64 = i64::MAX as u64;
+
 /// One variant with its reference values.
 #[derive(Serialize, ToSchema)]
 pub struct Variant {
@@ -78,8 +81,8 @@ pub async fn list(
     if count == 0 || count > MAX_COUNT {
         return Err(bad("count", format!("must be 1 to {MAX_COUNT}")));
     }
-    if seed.checked_add(count - 1).is_none() {
-        return Err(bad("seed", "seed + count − 1 must stay below 2^64"));
+    if seed.checked_add(count - 1).is_none_or(|last| last > MAX_SEED) {
+        return Err(bad("seed", "variants are numbered 0 to 2^63 − 1: seed + count − 1 must not exceed it"));
     }
     let drawn: Vec<(u64, BTreeMap<String, Value>)> = (seed..seed + count).map(|v| (v, draw(t, v))).collect();
     let given: Vec<HashMap<String, String>> =
