@@ -6,7 +6,8 @@ submission with the offline `mechdyn check` and writes results.json.
 
 PrairieLearn mounts the job at /grade: the question's data in
 /grade/data/data.json (`params` with `template` and `variant` or
-`parameters`, optional `tolerance`), the student's files in /grade/student/
+`parameters`, `required`: the pointers the score counts, so an answer left
+out scores 0, optional `tolerance`), the student's files in /grade/student/
 (answers.json: {"POINTER": value or "VALUE UNIT"}), and reads
 /grade/results/results.json, which this writes: `gradable`, `score`,
 `message`, `tests` (one per answer). A submission that cannot be read is
@@ -32,7 +33,7 @@ def results(root, mechdyn):
         return {"gradable": False, "score": 0.0, "message": f"The submission could not be read: {e}",
                 "format_errors": [str(e)]}
     check = {"template": params["template"], "answers": answers, "format": "prairielearn"}
-    for field in ("variant", "parameters", "tolerance", "tolerances", "reveal"):
+    for field in ("variant", "parameters", "required", "tolerance", "tolerances", "reveal"):
         if field in params:
             check[field] = params[field]
     run = subprocess.run([mechdyn, "check", "-"], input=json.dumps(check), capture_output=True, text=True)

@@ -34,17 +34,10 @@ def draw(parameter, x):
     choices, lo, hi, step = (parameter.get(k) for k in ("choices", "min", "max", "step"))
     if choices:
         return choices[(x * len(choices)) >> 64]
-    if lo is None or hi is None:
-        return None
-    if step is not None:
-        if step <= 0 or hi < lo:
-            return None
-        n = int((hi - lo) / step + 1e-9) + 1
-        return whole(round_sig(lo + ((x * n) >> 64) * step, 12))
-    if hi < lo:
-        return None
-    u = (x >> 11) * 2.0 ** -53
-    return whole(min(max(round_sig(lo + u * (hi - lo), 4), lo), hi))
+    if lo is None or hi is None or step is None or step <= 0 or hi < lo:
+        return None  # min and max alone only bound what a user may ask
+    n = int((hi - lo) / step + 1e-9) + 1
+    return whole(round_sig(lo + ((x * n) >> 64) * step, 12))
 
 
 def variant(template, seed):

@@ -106,16 +106,18 @@ pub struct Measure {
     pub angular_speed: bool,
 }
 
-/// The first slip that `g`, failed against `e`, matches within `t`: another
-/// of `others` (in the order given; those at zero level are skipped), the
-/// opposite sign, degrees, rpm, 2π, a power of ten.
+/// The first slip that `g`, failed against `e`, matches within `t`: the
+/// opposite sign, another of `others` (in the order given; those at zero
+/// level are skipped), degrees, rpm, 2π, a power of ten.
 pub fn slip(g: f64, e: f64, t: &Tolerance, m: Measure, others: &[f64]) -> Option<Slip> {
     let matches = |x: f64| x.abs() > t.zero_level && judge(g, x, t).pass;
+    if matches(-e) {
+        return Some(Slip::OppositeSign);
+    }
     if let Some(i) = others.iter().position(|&x| matches(x)) {
         return Some(Slip::OtherValue(i));
     }
     let scaled = [
-        (-e, Slip::OppositeSign, true),
         (e.to_degrees(), Slip::Degrees, m.angular),
         (e * 60.0 / (2.0 * PI), Slip::Rpm, m.angular_speed),
         (e * 2.0 * PI, Slip::TwoPi { times: true }, true),
@@ -192,6 +194,8 @@ mod tests {
         // Another value: the approximate inertia (P.103: 359.0) for the exact one (353.52).
         assert_eq!(slip(359.0, 353.52, &t, none, &[0.0, 359.05]), Some(Slip::OtherValue(1)));
         assert_eq!(slip(-42.0, 42.0, &t, none, &[]), Some(Slip::OppositeSign));
+        // The sign first: −ΔE is also the work of one lobe, but the slip is the sign.
+        assert_eq!(slip(-42.0, 42.0, &t, none, &[-42.0]), Some(Slip::OppositeSign));
         assert_eq!(slip(90.0, PI / 2.0, &t, angular, &[]), Some(Slip::Degrees));
         assert_eq!(slip(90.0, PI / 2.0, &t, none, &[]), None, "degrees only where radians are expected");
         // 60 rpm = 2π rad/s.

@@ -11,10 +11,10 @@
 //!    `i = ⌊x·n / 2^64⌋` (no modulo bias beyond 2^-64·n):
 //!    - `choices` (n of them): the i-th;
 //!    - `min`, `max`, `step`: the grid min + i·step, i < n = ⌊(max − min)/step⌋ + 1,
-//!      rounded to 12 significant digits (0.1·3 is 0.3);
-//!    - `min`, `max` alone: min + u·(max − min), u = ⌊x / 2^11⌋·2^-53 in
-//!      [0, 1), rounded to 4 significant digits (a value a student copies)
-//!      and kept within [min, max].
+//!      rounded to 12 significant digits (0.1·3 is 0.3).
+//!
+//!    A parameter with neither (`min` and `max` alone only bound what a
+//!    user may ask) keeps its default, and still takes its draw.
 
 /// SplitMix64: a 64-bit state advanced by the golden gamma, then mixed.
 #[derive(Clone, Debug)]
@@ -41,8 +41,6 @@ pub enum Range {
     Choices(usize),
     /// min + i·step, i = 0 … count − 1.
     Grid { min: f64, step: f64, count: u64 },
-    /// Anywhere in [min, max].
-    Interval { min: f64, max: f64 },
 }
 
 impl Range {
@@ -81,10 +79,6 @@ pub fn draw(range: Range, x: u64) -> Draw {
     match range {
         Range::Choices(n) => Draw::Choice(index(x, n as u64) as usize),
         Range::Grid { min, step, count } => Draw::Value(round_sig(min + index(x, count) as f64 * step, 12)),
-        Range::Interval { min, max } => {
-            let u = (x >> 11) as f64 * 2f64.powi(-53);
-            Draw::Value(round_sig(min + u * (max - min), 4).clamp(min, max))
-        }
     }
 }
 
@@ -118,9 +112,7 @@ mod tests {
         assert_eq!(draw(grid, u64::MAX), Draw::Value(800.0));
         assert_eq!(draw(Range::grid(0.1, 0.3, 0.1).unwrap(), u64::MAX), Draw::Value(0.3));
         assert_eq!(draw(Range::Choices(3), u64::MAX / 2), Draw::Choice(1));
-        let interval = Range::Interval { min: 1.0, max: 2.0 };
-        assert_eq!(draw(interval, u64::MAX), Draw::Value(2.0));
-        assert_eq!(draw(interval, 1 << 63), Draw::Value(1.5));
+        assert_eq!(draw(Range::grid(1.0, 2.0, 0.5).unwrap(), 1 << 63), Draw::Value(1.5));
         for seed in 0..2000 {
             let Draw::Value(v) = variant(seed, &[grid])[0] else { panic!("a grid gives values") };
             assert!((400.0..=800.0).contains(&v) && v % 50.0 == 0.0, "{v}");

@@ -212,15 +212,12 @@ impl Store {
         Ok(job.stored(seq))
     }
 
-    /// The newest job stored under `key` whose request is `request`, byte for
-    /// byte (the key only narrows the search; only requests are compared,
-    /// so no result but the one found is read).
-    pub async fn find_by_key(&self, key: &str, request: &[u8]) -> Result<Option<JobRow>, StoreError> {
+    /// The id of the newest job stored under `key` whose request is
+    /// `request`, byte for byte (the key only narrows the search; only
+    /// requests are compared, and no result is read).
+    pub async fn find_by_key(&self, key: &str, request: &[u8]) -> Result<Option<String>, StoreError> {
         let candidates: Vec<(String, String)> = sqlx::query_as(SELECT_BY_KEY).bind(key).fetch_all(&self.pool).await?;
-        match candidates.into_iter().find(|(_, r)| r.as_bytes() == request) {
-            Some((id, _)) => self.get(&id).await,
-            None => Ok(None),
-        }
+        Ok(candidates.into_iter().find(|(_, r)| r.as_bytes() == request).map(|(id, _)| id))
     }
 
     /// Stores a template's JSON under `id`; false when the id is taken.

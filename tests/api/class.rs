@@ -219,3 +219,45 @@ async fn a_retry_racing_its_first_try_stores_one_job() {
     }
     assert_eq!(app.get("/v1/jobs?kind=kinetostatics").await.json()["items"].as_array().unwrap().len(), 1);
 }
+
+/// What an instructor's class file gets wrong: a short row, a student twice,
+/// a variant with parameters, a missing variant each fail their own row; a
+/// misspelled answer column is one 400 naming it; a template without class
+/// ranges has no variants; a semicolon-separated export (European Excel) with
+/// decimal commas reads as well.
+#[tokio::test]
+async fn a_class_file_s_mistakes_are_said_where_they_are() {
+    let app = TestApp::new().await;
+    let v1 = approximate(600.0, 0.05, 70.0);
+    let class = format!("student,variant,F,inertia_approximate\nana,1,,{v1}\nbob,2\nana,3,,1\ncid,1,500,1\ndee,,,1\n");
+    let r = app.post_raw("/v1/templates/p103-class/grade", "text/csv", class).await;
+    assert_eq!(r.status, StatusCode::OK, "{}", r.text);
+    let rows: Vec<csv::StringRecord> =
+        csv::Reader::from_reader(r.text.as_bytes()).records().map(Result::unwrap).collect();
+    let errors: Vec<(&str, &str, &str)> = rows.iter().map(|r| (&r[0], &r[1], &r[5])).collect();
+    assert_eq!(errors[0], ("ana", "1", ""));
+    assert!(errors[1].2.contains("row 2 has 2 cells for 4 columns"), "{errors:?}");
+    assert!(errors[2].2.contains("student ana appears twice"), "{errors:?}");
+    assert!(errors[3].2.contains("not both"), "{errors:?}");
+    assert!(errors[4].2.contains("no variant"), "{errors:?}");
+
+    let typo = app
+        .post_raw("/v1/templates/p103-class/grade", "text/csv", "student,variant,inertia_exakt\nana,1,3\nbob,2,4\n")
+        .await;
+    assert_eq!(typo.status, StatusCode::BAD_REQUEST, "{}", typo.text);
+    let errors = typo.json()["errors"].clone();
+    assert_eq!(errors.as_array().unwrap().len(), 1, "{errors}");
+    assert_eq!(errors[0]["parameter"], "inertia_exakt");
+
+    let no_ranges = app
+        .post_raw("/v1/templates/p103-slider-flywheel/grade", "text/csv", "student,variant,inertia_exact\nana,1,3\n")
+        .await;
+    assert_eq!(no_ranges.status, StatusCode::BAD_REQUEST, "{}", no_ranges.text);
+    assert!(no_ranges.text.contains("every variant would be its defaults"), "{}", no_ranges.text);
+    assert_eq!(app.get("/v1/templates/p103-slider-flywheel/variants").await.status, StatusCode::BAD_REQUEST);
+
+    let european = format!("student;variant;inertia_approximate\nana;1;{}\n", format!("{v1:.3}").replace('.', ","));
+    let r = app.post_raw("/v1/templates/p103-class/grade", "text/csv", european).await;
+    assert_eq!(r.status, StatusCode::OK, "{}", r.text);
+    assert!(r.text.lines().nth(1).unwrap().starts_with("ana,1,true,"), "{}", r.text);
+}

@@ -119,6 +119,14 @@ async fn unreadable_answers_fail_their_item_only() {
     assert!(said("/inertia_exact").contains("'5 m' is in m, where the answer is in kg*m^2"), "{r}");
     assert!(said("/inertia_approximate").contains("not a number or a quantity"), "{r}");
     assert!(said("/energy_fluctuation").contains("no answer"), "{r}");
+    // A quantity is echoed as written, with its SI value.
+    let answers = json!({"inertia_exact": "260 slug*ft^2", "check/irregularity": 0.04});
+    let shown = check(&app, json!({"template": "p103-slider-flywheel", "answers": answers})).await;
+    assert!(
+        item(&shown, "/inertia_exact")["feedback"].as_str().unwrap().contains("(260 slug*ft^2 = 352.51 kg*m^2,"),
+        "{shown}"
+    );
+    assert!(!item(&shown, "/check/irregularity")["feedback"].as_str().unwrap().contains(" 1,"), "{shown}");
     // A decimal comma reads as a point: 6,15 rad/s is 6.15.
     assert_eq!(item(&r, "/omega_min")["given"], 6.15);
     for i in r["items"].as_array().unwrap() {
@@ -163,6 +171,27 @@ async fn bad_checks_are_422_at_their_fields() {
         assert!(pointers.contains(&json!(pointer)), "{body}: {pointers:?}");
     }
     assert_eq!(app.get("/v1/jobs?kind=check").await.json()["items"], json!([]));
+}
+
+/// A student cannot score by answering one value twice (with and without
+/// its `/`), nor by leaving out what the instructor requires: a required
+/// answer not given fails as "no answer".
+#[tokio::test]
+async fn the_score_counts_the_required_answers_once() {
+    let app = TestApp::new().await;
+    let twice =
+        json!({"template": "p103-slider-flywheel", "answers": {"inertia_exact": 353.5, "/inertia_exact": 353.5}});
+    let r = app.post("/v1/check", &twice).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert!(r.text.contains("answered twice"), "{}", r.text);
+    let required = json!({"template": "p103-slider-flywheel", "answers": {"inertia_exact": 353.5},
+        "required": ["/inertia_exact", "omega_max"]});
+    let r = check(&app, required).await;
+    assert_eq!((r["passed"].as_u64(), r["total"].as_u64()), (Some(1), Some(2)), "{r}");
+    assert!(item(&r, "/omega_max")["feedback"].as_str().unwrap().contains("no answer"));
+    let unknown = json!({"template": "p103-slider-flywheel", "answers": {"inertia_exact": 1}, "required": ["nope"]});
+    let r = app.post("/v1/check", &unknown).await;
+    assert_eq!(r.json()["errors"][0]["pointer"], "/required/0", "{}", r.text);
 }
 
 /// The platforms' results documents, checked against their published field

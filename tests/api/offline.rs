@@ -121,7 +121,9 @@ fn the_prairielearn_grader_writes_results_json_offline() {
         std::fs::create_dir_all(root.path().join(d)).unwrap();
         root.path().join(d)
     };
-    let data = json!({"params": {"template": "p103-slider-flywheel", "tolerance": {"relative": 0.005}}});
+    let required = ["inertia_exact", "inertia_approximate", "omega_max"];
+    let data =
+        json!({"params": {"template": "p103-slider-flywheel", "tolerance": {"relative": 0.005}, "required": required}});
     std::fs::write(dir("data").join("data.json"), data.to_string()).unwrap();
     // Case F1: I_exact = 353.52 kg·m² (353.5 is within 0.5 %); 342 is 2 % below I_approx = 348.99.
     let answers = json!({"inertia_exact": "353.5 kg*m^2", "inertia_approximate": 342.0});
@@ -137,9 +139,10 @@ fn the_prairielearn_grader_writes_results_json_offline() {
         let text = std::fs::read_to_string(root.join("results").join("results.json")).unwrap();
         serde_json::from_str::<Value>(&text).unwrap()
     };
+    // omega_max, required, is left out: it scores 0 (a third of the points).
     let results = grader(root.path());
-    assert_eq!((results["gradable"].as_bool(), results["score"].as_f64()), (Some(true), Some(0.5)), "{results}");
-    assert_eq!(results["tests"].as_array().unwrap().len(), 2);
+    assert_eq!((results["gradable"].as_bool(), results["score"].as_f64()), (Some(true), Some(1.0 / 3.0)), "{results}");
+    assert_eq!(results["tests"].as_array().unwrap().len(), 3);
     std::fs::write(dir("student").join("answers.json"), "[1, 2]").unwrap();
     let results = grader(root.path());
     assert_eq!((results["gradable"].as_bool(), results["score"].as_f64()), (Some(false), Some(0.0)), "{results}");

@@ -42,7 +42,11 @@ pub fn expected(kind: &dyn AnyKind, result: &Value, pointer: &str, at: &str) -> 
     let x = value.as_f64().ok_or_else(|| {
         FieldError::at(
             at,
-            format!("/{} is not a number ({value}): only numbers are graded", pointer.trim_start_matches('/')),
+            format!(
+                "/{} is not a number ({}): only numbers are graded",
+                pointer.trim_start_matches('/'),
+                clipped(value)
+            ),
         )
     })?;
     let refs: Vec<&str> = tokens.iter().map(String::as_str).collect();
@@ -85,8 +89,26 @@ pub fn judge(
     let others = if verdict.pass { Vec::new() } else { others() };
     let slip = (!verdict.pass).then(|| grading::slip(g, e, t, measure(unit), &values(&others))).flatten();
     item.slip = slip.map(|s| slip_name(s, &others));
-    item.feedback = feedback(name, g, e, unit, &verdict, t, slip.map(|s| slip_text(s, name, &others)), reveal);
+    let given = given_text(asked.answer, g, unit);
+    item.feedback = feedback(name, &given, e, unit, &verdict, t, slip.map(|s| slip_text(s, name, &others)), reveal);
     item
+}
+
+/// ` kg*m^2` after a number; nothing for a pure number.
+fn suffix(unit: &str) -> String {
+    if unit == DIMENSIONLESS { String::new() } else { format!(" {unit}") }
+}
+
+/// The answer as the student wrote it, with its SI value when it had a unit:
+/// `260 slug*ft^2 = 352.51 kg*m^2`, `353.5 kg*m^2`.
+fn given_text(answer: &Value, g: f64, unit: &str) -> String {
+    let si = format!("{}{}", short(g), suffix(unit));
+    match answer.as_str().map(str::trim) {
+        Some(text) if text.parse::<f64>().is_err() && decimal_point(text).parse::<f64>().is_err() && text != si => {
+            format!("{text} = {si}")
+        }
+        _ => si,
+    }
 }
 
 fn values(others: &[(String, f64)]) -> Vec<f64> {
@@ -131,9 +153,10 @@ fn short(x: f64) -> String {
 }
 
 fn rule_text(v: &Verdict, t: &Tolerance, unit: &str) -> String {
+    let unit = suffix(unit);
     match v.rule {
-        Rule::ZeroLevel => format!("±{} {unit} (the zero level)", short(t.zero_level)),
-        Rule::Absolute => format!("±{} {unit}", short(t.absolute)),
+        Rule::ZeroLevel => format!("±{}{unit} (the zero level)", short(t.zero_level)),
+        Rule::Absolute => format!("±{}{unit}", short(t.absolute)),
         Rule::Relative => format!("{} %", short(t.relative * 100.0)),
         Rule::SigFigs => format!("{} significant figures", t.sigfigs.unwrap_or_default()),
     }
@@ -142,7 +165,7 @@ fn rule_text(v: &Verdict, t: &Tolerance, unit: &str) -> String {
 #[allow(clippy::too_many_arguments)]
 fn feedback(
     name: &str,
-    g: f64,
+    given: &str,
     e: f64,
     unit: &str,
     v: &Verdict,
@@ -151,14 +174,15 @@ fn feedback(
     reveal: bool,
 ) -> String {
     let within = rule_text(v, t, unit);
+    let expected = format!("{}{}", short(e), suffix(unit));
     let mut text = match (v.pass, reveal) {
-        (true, true) => format!("{name}: correct ({} {unit}, within {within} of {} {unit}).", short(g), short(e)),
+        (true, true) => format!("{name}: correct ({given}, within {within} of {expected})."),
         (true, false) => format!("{name}: correct (within {within})."),
         (false, true) => {
             let off = v.relative_error.map(|r| format!(", {} % off", short(r * 100.0))).unwrap_or_default();
-            format!("{name}: {} {unit} is not within {within} of the expected {} {unit}{off}.", short(g), short(e))
+            format!("{name}: {given} is not within {within} of the expected {expected}{off}.")
         }
-        (false, false) => format!("{name}: {} {unit} is not within {within} of the expected value.", short(g)),
+        (false, false) => format!("{name}: {given} is not within {within} of the expected value."),
     };
     if let Some(s) = slip {
         text.push(' ');
@@ -236,4 +260,13 @@ pub fn others(flat: &[Scalar], result: &Value, pointer: &str, unit: &str) -> Vec
 fn in_series(result: &Value, tokens: &[String], shared: usize) -> bool {
     (shared..tokens.len())
         .any(|i| tables::at(result, &tokens[..i]).and_then(Value::as_array).is_some_and(|a| a.len() > SHORT_LIST))
+}
+
+/// A value in a message: its JSON, cut after 60 characters (a whole table is no help).
+fn clipped(value: &Value) -> String {
+    let text = value.to_string();
+    match text.char_indices().nth(60) {
+        Some((i, _)) => format!("{}…", &text[..i]),
+        None => text,
+    }
 }

@@ -60,6 +60,12 @@ pub struct CheckRequest {
     /// a number in SI or `"VALUE UNIT"` (e.g. `"260 slug*ft^2"`).
     #[schema(value_type = BTreeMap<String, super::quantity::Quantity>)]
     pub answers: BTreeMap<String, Value>,
+    /// The answers the score counts (pointers): one missing from `answers`
+    /// fails as "no answer", so a student gains nothing by leaving one out.
+    /// Default: the answers given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(max_items = 1000)]
+    pub required: Option<Vec<String>>,
     /// For every answer; defaults: relative 0.01, absolute 0, no sigfigs, zero_level 1e-12.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<ToleranceDto>,
@@ -139,7 +145,9 @@ pub struct CheckResult {
     pub passed: usize,
     pub total: usize,
     pub items: Vec<CheckItem>,
-    /// Id of the reference job (null when solved offline without a store).
+    /// Id of the reference job: in the service's store, readable by anyone
+    /// who can reach the API (`reveal` shapes the feedback only); offline,
+    /// in that run's store in memory.
     pub job: Option<String>,
 }
 
@@ -213,6 +221,14 @@ fn validate(r: &CheckRequest) -> Vec<FieldError> {
     }
     errors.extend(tolerance_errors(r.tolerance.as_ref(), "/tolerance"));
     let answered: Vec<String> = r.answers.keys().map(|k| pointer(k)).collect();
+    for (i, key) in r.answers.keys().enumerate() {
+        if answered[..i].contains(&answered[i]) {
+            errors.push(FieldError::at(at("answers", key), format!("{} is answered twice", answered[i])));
+        }
+    }
+    if r.required.as_ref().is_some_and(|q| q.len() > MAX_ANSWERS) {
+        errors.push(FieldError::at("/required", format!("at most {MAX_ANSWERS} pointers")));
+    }
     for (key, t) in r.tolerances.iter().flatten() {
         let here = at("tolerances", key);
         if !answered.contains(&pointer(key)) {
@@ -259,9 +275,14 @@ pub fn grade_with(
     let reveal = r.reveal.unwrap_or(true);
     let own: BTreeMap<String, &ToleranceDto> = r.tolerances.iter().flatten().map(|(k, t)| (pointer(k), t)).collect();
     let (mut judged, mut errors) = (Vec::new(), Vec::new());
-    for (key, answer) in &r.answers {
-        let p = pointer(key);
-        match items::expected(kind, result, &p, &at("answers", key)) {
+    // A required answer not given is judged as no answer (null); errors at its place in `required`.
+    let given: Vec<String> = r.answers.keys().map(|k| pointer(k)).collect();
+    let asked = r.answers.iter().map(|(k, v)| (pointer(k), at("answers", k), v));
+    let required =
+        r.required.iter().flatten().enumerate().map(|(i, k)| (pointer(k), format!("/required/{i}"), &Value::Null));
+    let missing: Vec<_> = required.filter(|(p, ..)| !given.contains(p)).collect();
+    for (p, here, answer) in asked.chain(missing) {
+        match items::expected(kind, result, &p, &here) {
             Err(e) => errors.push(e),
             Ok((e, unit)) => {
                 let tolerance = items::tolerance(r.tolerance.as_ref(), own.get(&p).copied());

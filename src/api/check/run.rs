@@ -9,8 +9,8 @@ use crate::api::json::{JsonBody, parse};
 use crate::api::kind::{self, AnyKind, StoredJob, Table, unit_in};
 use crate::api::limits::Limits;
 use crate::api::problem::{ApiError, FieldError};
-use crate::api::templates::{self, RESERVED, Template};
-use crate::api::{AppState, create, job};
+use crate::api::templates::{self, Held, RESERVED, Template};
+use crate::api::{AppState, create, job, read};
 use crate::store::JobRow;
 use axum::extract::State;
 use axum::response::Response;
@@ -54,7 +54,8 @@ pub async fn check_job(
     if !unknown.is_empty() {
         return Err(ApiError::Invalid(unknown));
     }
-    let (kind, reference) = reference(state, &r).await?;
+    // The reference's memory stays reserved until the check is stored.
+    let (kind, (reference, _reserved)) = reference(state, &r).await?;
     let (result, id) = (reference.result.clone(), reference.id.clone());
     create::compute_and_store(state, CHECK.name(), raw, None, move || {
         let result: Value =
@@ -65,15 +66,20 @@ pub async fn check_job(
 }
 
 /// The reference job of a check: stored, or computed and stored.
-async fn reference(state: &AppState, r: &CheckRequest) -> Result<(&'static dyn AnyKind, JobRow), ApiError> {
+async fn reference(state: &AppState, r: &CheckRequest) -> Result<(&'static dyn AnyKind, Held), ApiError> {
     if let Some(id) = &r.job {
-        let missing = || ApiError::Invalid(vec![FieldError::at("/job", format!("no job with id '{id}'"))]);
-        let row = state.store.get(id).await?.ok_or_else(missing)?;
-        return Ok((gradable(&row.kind, "/job")?, row));
+        let (row, reserved) = read::load(state, id, read::READ_MEMORY_FACTOR).await.map_err(|e| match e {
+            ApiError::NotFound(_) => ApiError::Invalid(vec![FieldError::at("/job", format!("no job with id '{id}'"))]),
+            e => e,
+        })?;
+        return Ok((gradable(&row.kind, "/job")?, (row, reserved)));
     }
     if let Some(id) = &r.template {
         let t = templates::find(state, id).await.map_err(|e| no_template(e, id))?;
         let kind = gradable(&t.kind, "/template")?;
+        if r.variant.is_some() {
+            templates::drawable(&t).map_err(|why| ApiError::Invalid(vec![FieldError::at("/variant", why)]))?;
+        }
         let row = templates::job_for(state, &t, &given(&t, r)).await.map_err(under_parameters)?;
         return Ok((kind, row));
     }

@@ -7,16 +7,16 @@
 //! same parameters share one stored reference job.
 
 use super::model::Template;
-use super::table::{Column, bad, parameters_of, read_csv, said};
+use super::table::{Column, bad, parameters_of, ragged, read_csv, said};
 use super::{RESERVED, job_for, variants};
 use crate::api::AppState;
 use crate::api::check::{CheckOutput, CheckRequest, ToleranceDto, grade_with};
-use crate::api::problem::ApiError;
+use crate::api::problem::{ApiError, FieldError};
 use crate::api::tables::Scalar;
 use crate::api::tables::cell;
 use crate::api::{kind, tables};
 use serde_json::Value;
-use std::collections::{BTreeMap, HashMap};
+use std::collections::{BTreeMap, HashMap, HashSet};
 use std::sync::{Arc, OnceLock};
 
 /// The query names of a grade: the tolerance and `reveal`.
@@ -99,6 +99,9 @@ pub async fn class(
     let text = std::str::from_utf8(body).map_err(|_| bad("body", "the CSV is not UTF-8 text"))?;
     let (header, rows) = read_csv(text)?;
     let l = layout(t, &header)?;
+    if l.variant.is_some() {
+        variants::drawable(t).map_err(|why| bad("variant", why))?;
+    }
     let params: Vec<Column> = header
         .iter()
         .enumerate()
@@ -113,12 +116,25 @@ pub async fn class(
     }
     head.extend(["feedback".to_string(), "error".to_string()]);
     out.write_record(&head).map_err(internal)?;
-    let mut seen = References::default();
-    for row in &rows {
+    let (mut seen, mut students) = (References::default(), HashSet::new());
+    for (i, row) in rows.iter().enumerate() {
+        let student = row.get(l.student).cloned().unwrap_or_default();
+        let refused = ragged(&header, row, i)
+            .or_else(|| student.is_empty().then(|| format!("row {} has no student", i + 1)))
+            .or_else(|| (!students.insert(student.clone())).then(|| format!("student {student} appears twice")));
+        if let Some(why) = refused {
+            out.write_record(failed(&l, &student, &why)).map_err(internal)?;
+            continue;
+        }
         let cells = match graded(state, t, &l, (&params, &header), row, (tolerance, reveal), &mut seen).await {
             Ok(cells) => cells,
             Err(e @ (ApiError::Saturated { .. } | ApiError::StorageFull | ApiError::Unavailable(_))) => return Err(e),
-            Err(e) => failed(&l, row, &said(&e)),
+            Err(ApiError::Invalid(errors))
+                if errors.iter().all(|f| f.pointer.as_deref().is_some_and(|p| p.starts_with("/answers/"))) =>
+            {
+                return Err(column_errors(errors));
+            }
+            Err(e) => failed(&l, &student, &said(&e)),
         };
         out.write_record(&cells).map_err(internal)?;
     }
@@ -126,9 +142,25 @@ pub async fn class(
         .map_err(|e| ApiError::Internal(e.to_string()))
 }
 
+/// An answer column the result has no number for: the same in every row, so
+/// one 400 naming the column.
+fn column_errors(errors: Vec<FieldError>) -> ApiError {
+    let named = errors.into_iter().map(|f| {
+        let column = f
+            .pointer
+            .as_deref()
+            .unwrap_or_default()
+            .trim_start_matches("/answers/")
+            .replace("~1", "/")
+            .replace("~0", "~");
+        FieldError::parameter(column, f.message)
+    });
+    ApiError::BadQuery(named.collect())
+}
+
 /// A row that could not be graded: its student and why.
-fn failed(l: &Layout, row: &[String], why: &str) -> Vec<String> {
-    let mut cells = vec![row[l.student].clone(), String::new()];
+fn failed(l: &Layout, student: &str, why: &str) -> Vec<String> {
+    let mut cells = vec![student.to_string(), String::new()];
     cells.extend(std::iter::repeat_n(String::new(), 2 * l.answers.len() + 1));
     cells.push(why.to_string());
     cells
@@ -161,7 +193,14 @@ async fn graded(
     seen: &mut References,
 ) -> Result<Vec<String>, ApiError> {
     let mut given: HashMap<String, String> = HashMap::new();
-    if let Some(v) = l.variant.map(|i| row[i].trim()).filter(|v| !v.is_empty()) {
+    let variant = l.variant.map(|i| row[i].trim()).filter(|v| !v.is_empty());
+    let own_parameters = header.iter().zip(row).any(|(c, cell)| params.contains(c) && !cell.is_empty());
+    match (l.variant, variant, own_parameters) {
+        (_, Some(_), true) => return Err(bad("variant", "give a variant or the student's parameters, not both")),
+        (Some(_), None, false) => return Err(bad("variant", "no variant (and no parameters) for this student")),
+        _ => {}
+    }
+    if let Some(v) = variant {
         let seed = v
             .parse::<u64>()
             .ok()
@@ -177,7 +216,7 @@ async fn graded(
     let (job, result, flat) = match seen.results.get(&asked) {
         Some(found) => found.clone(),
         None => {
-            let job = job_for(state, t, &given).await?;
+            let (job, _reserved) = job_for(state, t, &given).await?;
             let result: Value =
                 serde_json::from_slice(&job.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
             if seen.bytes + job.result.len() > REFERENCE_BYTES {

@@ -14,7 +14,7 @@ pub use apply::request_for;
 pub use grade::class;
 pub use model::{LIBRARY_FILES, NewTemplate, Parameter, RESERVED, Template, TemplateList, builtin};
 pub use table::{TableRequest, TableResponse, TableRow, study};
-pub use variants::{MAX_SEED, Variant, Variants, draw};
+pub use variants::{MAX_SEED, Variant, Variants, draw, drawable};
 
 use super::AppState;
 use super::body::Chunks;
@@ -23,7 +23,7 @@ use super::json::JsonBody;
 use super::kind::{self, AnyKind};
 use super::parts;
 use super::problem::{ApiError, FieldError, Problem, ReadErrors};
-use super::read::{self, result_tree};
+use super::read;
 use crate::store::JobRow;
 use axum::body::Body;
 use axum::extract::rejection::QueryRejection;
@@ -44,22 +44,25 @@ pub async fn find(state: &AppState, id: &str) -> Result<Template, ApiError> {
 
 /// The job `t` gives for `given` parameters: the stored one when these
 /// parameters were asked before (same engine version), else computed and
-/// stored under the request's key.
-pub async fn job_for(state: &AppState, t: &Template, given: &HashMap<String, String>) -> Result<JobRow, ApiError> {
+/// stored under the request's key; with the memory of its row reserved.
+pub async fn job_for(state: &AppState, t: &Template, given: &HashMap<String, String>) -> Result<Held, ApiError> {
     let request = apply::request_for(t, given, RESERVED)?;
     let kind = kind::find(&t.kind).ok_or_else(|| ApiError::Internal(format!("template kind {}", t.kind)))?;
     stored_job(state, kind, &request).await.map_err(|e| apply::named(t, e))
 }
 
+/// A job row with the memory it takes reserved (released when dropped).
+pub type Held = (JobRow, tokio::sync::OwnedSemaphorePermit);
+
 /// The job of `request` of `kind`: the stored one of the same request and
-/// engine version, else computed and stored under the request's key.
-pub async fn stored_job(state: &AppState, kind: &dyn AnyKind, request: &serde_json::Value) -> Result<JobRow, ApiError> {
+/// engine version (its memory reserved before it is read), else computed
+/// and stored under the request's key.
+pub async fn stored_job(state: &AppState, kind: &dyn AnyKind, request: &serde_json::Value) -> Result<Held, ApiError> {
     let (bytes, key) = apply::keyed(kind.name(), request);
-    if let Some(row) = state.store.find_by_key(&key, &bytes).await? {
-        return Ok(row);
+    if let Some(id) = state.store.find_by_key(&key, &bytes).await? {
+        return read::load(state, &id, read::READ_MEMORY_FACTOR).await;
     }
-    let (row, _reserved) = kind.job(state, bytes.into(), Some(key)).await?;
-    Ok(row)
+    kind.job(state, bytes.into(), Some(key)).await
 }
 
 /// Lists the templates: the built-in ones (the course's problems), then those clients stored.
@@ -100,13 +103,13 @@ pub async fn job(
 ) -> Result<Response, ApiError> {
     let q = parameters(q)?;
     let t = find(&state, &id).await?;
-    let row = job_for(&state, &t, &q).await?;
+    let (row, reserved) = job_for(&state, &t, &q).await?;
     let mut body = Chunks::default();
     job_chunks(&row, &mut body);
     let location = format!("/v1/jobs/{}", row.id);
     Ok((
         [(header::CONTENT_TYPE, "application/json".to_string()), (header::CONTENT_LOCATION, location)],
-        Body::new(body),
+        super::body::guarded(Body::new(body), reserved),
     )
         .into_response())
 }
@@ -136,8 +139,11 @@ pub async fn result(
 ) -> Result<Response, ApiError> {
     let q = parameters(q)?;
     let t = find(&state, &id).await?;
-    let row = job_for(&state, &t, &q).await?;
-    let (row, result, _reserved) = result_tree(&state, &row.id).await?;
+    let (row, mut reserved) = job_for(&state, &t, &q).await?;
+    // The row is held (read factor); the parsed tree takes the rest of a part's memory.
+    let tree = row.result.len().saturating_mul(read::CSV_MEMORY_FACTOR - read::READ_MEMORY_FACTOR);
+    reserved.merge(state.admission.memory(tree).await?);
+    let result = serde_json::from_slice(&row.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
     parts::answer(&row, &result, &pointer, q.get("unit").filter(|u| !u.trim().is_empty()), &headers)
 }
 

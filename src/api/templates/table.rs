@@ -76,6 +76,7 @@ pub async fn study(
     let pointers: Vec<String> = values.map(listed).unwrap_or_default();
     let text = std::str::from_utf8(body).map_err(|_| bad("body", "the CSV is not UTF-8 text"))?;
     let (header, rows) = read_csv(text)?;
+    even(&header, &rows)?;
     let unknown: Vec<FieldError> = header
         .iter()
         .filter(|(_, name, _)| !t.parameters.contains_key(name) || RESERVED.contains(&name.as_str()))
@@ -111,8 +112,22 @@ pub(super) fn bad(parameter: &str, message: impl Into<String>) -> ApiError {
 /// A header cell `name [unit]`: (as written, name, unit).
 pub(super) type Column = (String, String, Option<String>);
 
+/// The header and rows of a CSV (`,`, or `;` or tab when the header has no
+/// comma: a European spreadsheet's export). Rows may be ragged here;
+/// [`even`] refuses them where every row must be whole.
 pub(super) fn read_csv(text: &str) -> Result<(Vec<Column>, Vec<Vec<String>>), ApiError> {
-    let mut reader = csv::ReaderBuilder::new().trim(csv::Trim::All).flexible(true).from_reader(text.as_bytes());
+    let first = text.lines().next().unwrap_or("");
+    let delimiter = if first.contains(',') {
+        b','
+    } else if first.contains(';') {
+        b';'
+    } else if first.contains('\t') {
+        b'\t'
+    } else {
+        b','
+    };
+    let mut reader =
+        csv::ReaderBuilder::new().delimiter(delimiter).trim(csv::Trim::All).flexible(true).from_reader(text.as_bytes());
     let header: Vec<Column> = reader
         .headers()
         .map_err(|e| bad("body", format!("the CSV's header: {e}")))?
@@ -125,20 +140,30 @@ pub(super) fn read_csv(text: &str) -> Result<(Vec<Column>, Vec<Vec<String>>), Ap
         })
         .collect();
     let mut rows = Vec::new();
-    for (i, record) in reader.records().enumerate() {
-        let record = record.map_err(|e| bad("body", format!("row {}: {e}", i + 1)))?;
+    for record in reader.records() {
+        let record = record.map_err(|e| bad("body", format!("the CSV: {e}")))?;
         if record.iter().all(str::is_empty) {
             continue;
         }
-        if record.len() != header.len() {
-            return Err(bad("body", format!("row {} has {} cells for {} columns", i + 1, record.len(), header.len())));
-        }
         rows.push(record.iter().map(String::from).collect());
         if rows.len() > MAX_ROWS {
-            return Err(bad("body", format!("more than {MAX_ROWS} rows in one study")));
+            return Err(bad("body", format!("more than {MAX_ROWS} rows in one request")));
         }
     }
     Ok((header, rows))
+}
+
+/// Why a row has not one cell per column, if it has not (`row` counts the data rows from 1).
+pub(super) fn ragged(header: &[Column], row: &[String], i: usize) -> Option<String> {
+    (row.len() != header.len()).then(|| format!("row {} has {} cells for {} columns", i + 1, row.len(), header.len()))
+}
+
+/// Every row whole, or a 400 naming the first that is not.
+fn even(header: &[Column], rows: &[Vec<String>]) -> Result<(), ApiError> {
+    match rows.iter().enumerate().find_map(|(i, r)| ragged(header, r, i)) {
+        Some(why) => Err(bad("body", why)),
+        None => Ok(()),
+    }
 }
 
 /// A CSV row's parameters: a cell under `name [unit]` is the quantity `cell unit`; empty cells keep the default.
@@ -178,7 +203,7 @@ pub(super) async fn run(
     let mut out = Vec::with_capacity(rows.len());
     for given in rows {
         out.push(match job_for(state, t, &given).await {
-            Ok(row) => {
+            Ok((row, _reserved)) => {
                 let result: Value = serde_json::from_slice(&row.result).unwrap_or_default();
                 (pointers.iter().map(|p| value_at(&result, p)).collect(), Some(row.id), None)
             }

@@ -45,9 +45,21 @@ fn range(p: &Parameter) -> Option<Range> {
     match (&p.choices, p.min, p.max, p.step) {
         (Some(c), ..) if !c.is_empty() => Some(Range::Choices(c.len())),
         (_, Some(min), Some(max), Some(step)) => Range::grid(min, max, step),
-        (_, Some(min), Some(max), None) if max >= min => Some(Range::Interval { min, max }),
+        // min and max alone bound what a user may ask; they are no class's range.
         _ => None,
     }
+}
+
+/// Whether `t` has a parameter to draw (choices, or min, max and step);
+/// why not, when it has none.
+pub fn drawable(t: &Template) -> Result<(), String> {
+    if t.parameters.values().any(|p| range(p).is_some()) {
+        return Ok(());
+    }
+    Err(format!(
+        "template {} has no parameter with choices or with min, max and step: every variant would be its defaults",
+        t.id
+    ))
 }
 
 /// The parameters of variant `seed` of `t`: one draw per parameter in name
@@ -81,6 +93,7 @@ pub async fn list(
     if count == 0 || count > MAX_COUNT {
         return Err(bad("count", format!("must be 1 to {MAX_COUNT}")));
     }
+    drawable(t).map_err(|why| bad("seed", why))?;
     if seed.checked_add(count - 1).is_none_or(|last| last > MAX_SEED) {
         return Err(bad("seed", "variants are numbered 0 to 2^63 − 1: seed + count − 1 must not exceed it"));
     }
