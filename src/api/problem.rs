@@ -222,6 +222,23 @@ impl ApiError {
         }
     }
 
+    /// A 422 of a request nested in another (a template's, a check's): its
+    /// pointers under `prefix`; any other error as it is.
+    pub fn under(self, prefix: &str) -> Self {
+        match self {
+            Self::Invalid(errors) => Self::Invalid(
+                errors
+                    .into_iter()
+                    .map(|mut f| {
+                        f.pointer = Some(format!("{prefix}{}", f.pointer.unwrap_or_default()));
+                        f
+                    })
+                    .collect(),
+            ),
+            other => other,
+        }
+    }
+
     /// The problem document of this error.
     pub fn problem(&self) -> Problem {
         let (status, kind, title) = self.parts();

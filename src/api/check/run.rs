@@ -84,7 +84,7 @@ async fn reference(state: &AppState, r: &CheckRequest) -> Result<(&'static dyn A
         return Ok((kind, row));
     }
     let (kind, request) = kind_request(r)?;
-    let row = templates::stored_job(state, kind, request).await.map_err(|e| under("/request", e))?;
+    let row = templates::stored_job(state, kind, request).await.map_err(|e| e.under("/request"))?;
     Ok((kind, row))
 }
 
@@ -139,22 +139,6 @@ fn under_parameters(e: ApiError) -> ApiError {
     }
 }
 
-/// Errors of a nested request, their pointers under `prefix`.
-fn under(prefix: &str, e: ApiError) -> ApiError {
-    match e {
-        ApiError::Invalid(errors) => ApiError::Invalid(
-            errors
-                .into_iter()
-                .map(|mut f| {
-                    f.pointer = Some(format!("{prefix}{}", f.pointer.unwrap_or_default()));
-                    f
-                })
-                .collect(),
-        ),
-        e => e,
-    }
-}
-
 /// The check without a store (the document's example): built-in templates
 /// and requests are solved here; a stored job cannot be read.
 fn solve_offline(raw: String, limits: &Limits) -> Result<Vec<u8>, ApiError> {
@@ -177,7 +161,7 @@ fn solve_offline(raw: String, limits: &Limits) -> Result<Vec<u8>, ApiError> {
         }
         (None, None) => kind_request(&r).map(|(k, v)| (k, v.clone()))?,
     };
-    let result = kind.solve(request.to_string(), limits).map_err(|e| under("/request", e))?;
+    let result = kind.solve(request.to_string(), limits).map_err(|e| e.under("/request"))?;
     let result: Value = serde_json::from_slice(&result).map_err(|e| ApiError::Internal(e.to_string()))?;
     serde_json::to_vec(&grade(&r, kind, &result, None)?).map_err(|e| ApiError::Internal(e.to_string()))
 }

@@ -201,16 +201,5 @@ fn parameter_errors(name: &str, p: &Parameter, request: &Value, at: &str) -> Vec
 
 /// A 422 of the template's request: its pointers under `/request`.
 pub fn under_request(e: ApiError) -> ApiError {
-    match e {
-        ApiError::Invalid(errors) => ApiError::Invalid(
-            errors
-                .into_iter()
-                .map(|mut f| {
-                    f.pointer = Some(format!("/request{}", f.pointer.unwrap_or_default()));
-                    f
-                })
-                .collect(),
-        ),
-        other => other,
-    }
+    e.under("/request")
 }
