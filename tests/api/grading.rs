@@ -97,6 +97,17 @@ async fn common_slips_are_named() {
     }
     assert_eq!(r["score"], 0.0);
 
+    // The machine's total inertia given for the flywheel's own: with 100 kg·m²
+    // already on the shaft, I_flywheel = I − 100 (case F1: 353.52 − 100).
+    let mut with_shaft = request("p103_slider");
+    with_shaft["existing_inertia"] = json!("100 kg*m^2");
+    let shaft = app.flywheel(&with_shaft).await;
+    let total = shaft["result"]["inertia_exact"].as_f64().unwrap();
+    let r = check(&app, json!({"job": shaft["id"], "answers": {"flywheel_inertia/exact": total}})).await;
+    let i = item(&r, "/flywheel_inertia/exact");
+    assert!((i["expected"].as_f64().unwrap() - (total - 100.0)).abs() < 1e-9 * total, "{i}");
+    assert_eq!(i["slip"], "other_value:/inertia_exact", "{i}");
+
     // K1: the reaction at a joint with its sign reversed is the reaction on the joint's other body.
     let k1 = app.post("/v1/kinetostatics", &request("k1_offset_slider_crank")).await.json();
     let reaction = k1["result"]["steps"][1]["reactions"][0].clone();
