@@ -261,3 +261,15 @@ async fn a_class_file_s_mistakes_are_said_where_they_are() {
     assert_eq!(r.status, StatusCode::OK, "{}", r.text);
     assert!(r.text.lines().nth(1).unwrap().starts_with("ana,1,true,"), "{}", r.text);
 }
+
+/// A CSV over the limit on a request body is the same 413 problem as a JSON
+/// body's (a class or a study; axum's own answer was plain text).
+#[tokio::test]
+async fn a_csv_over_the_body_limit_is_a_413_problem() {
+    let app = TestApp::with_limit(1024).await;
+    for path in ["/v1/templates/p103-class/grade", "/v1/templates/p103-class/table?values=inertia_exact"] {
+        let r = app.post_raw(path, "text/csv", "student,variant,inertia_exact\n".repeat(100)).await;
+        assert_eq!(r.status, StatusCode::PAYLOAD_TOO_LARGE, "{path}: {}", r.text);
+        assert_eq!(r.content_type, "application/problem+json", "{path}");
+    }
+}

@@ -47,6 +47,19 @@ impl<S: Send + Sync, T: DeserializeOwned> FromRequest<S> for JsonBody<T> {
     }
 }
 
+/// A body of any type (a CSV), read within the body limit: over it, the
+/// same 413 problem as a JSON body's (axum's `Bytes` answers plain text).
+pub struct RawBody(pub Bytes);
+
+impl<S: Send + Sync> FromRequest<S> for RawBody {
+    type Rejection = ApiError;
+
+    async fn from_request(req: Request, _: &S) -> Result<Self, Self::Rejection> {
+        let limit = req.extensions().get::<BodyLimit>().map_or(usize::MAX, |l| l.0);
+        Ok(Self(read_within(req.into_body(), limit).await?))
+    }
+}
+
 /// The whole body if it is at most `limit` bytes; else the rest is read and
 /// discarded (within bounds, see [`drain`]) and the answer is 413, so that a
 /// client still sending reads it.

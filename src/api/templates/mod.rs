@@ -19,7 +19,7 @@ pub use variants::{MAX_SEED, Variant, Variants, draw, drawable};
 use super::AppState;
 use super::body::Chunks;
 use super::job::job_chunks;
-use super::json::JsonBody;
+use super::json::{JsonBody, RawBody};
 use super::kind::{self, AnyKind};
 use super::parts;
 use super::problem::{ApiError, FieldError, Problem, ReadErrors};
@@ -192,6 +192,7 @@ pub async fn create(State(state): State<AppState>, body: JsonBody<NewTemplate>) 
         (status = 200, description = "A row per variant: the inputs, the values, the job and the error (empty, or why that row failed)",
             content((String = "text/csv", example = "F,eps,inertia_exact,job,error\n1000,0.03,...\n"), (TableResponse = "application/json"))),
         (status = 400, description = "An unknown column, a malformed table or `values`", body = Problem, content_type = "application/problem+json"),
+        (status = 413, description = "The body is larger than the limit on a request body", body = Problem, content_type = "application/problem+json"),
         (status = 415, description = "Neither text/csv nor application/json", body = Problem, content_type = "application/problem+json"),
         ReadErrors,
     ))]
@@ -200,7 +201,7 @@ pub async fn table(
     Path(id): Path<String>,
     headers: HeaderMap,
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
-    body: axum::body::Bytes,
+    RawBody(body): RawBody,
 ) -> Result<Response, ApiError> {
     let q = read::query(q, &["values", "label"])?;
     let t = find(&state, &id).await?;
@@ -272,6 +273,7 @@ pub async fn variants(
         (status = 200, description = "A row per student", body = String, content_type = "text/csv",
             example = "student,score,inertia_exact pass,inertia_exact relative_error,feedback,error\nana,1,true,0.0009,...,\n"),
         (status = 400, description = "No student column, no answer column, a malformed CSV or query", body = Problem, content_type = "application/problem+json"),
+        (status = 413, description = "The body is larger than the limit on a request body", body = Problem, content_type = "application/problem+json"),
         (status = 415, description = "Not text/csv", body = Problem, content_type = "application/problem+json"),
         ReadErrors,
     ))]
@@ -280,7 +282,7 @@ pub async fn grade(
     Path(id): Path<String>,
     headers: HeaderMap,
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
-    body: axum::body::Bytes,
+    RawBody(body): RawBody,
 ) -> Result<Response, ApiError> {
     let q = read::query(q, grade::QUERY)?;
     let mime = headers.get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok()).unwrap_or("").to_ascii_lowercase();
