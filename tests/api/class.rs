@@ -73,7 +73,7 @@ async fn a_class_is_graded_in_one_request() {
          eve,x,,,,1,\n",
         v1,
         format!("{:.1}", v3).replace('.', ","),
-        own / 1.355_817_948_331_400_4,
+        own / crate::grading::SLUG_FT2,
         v1 * 1.05,
     );
     let r = app.post_raw("/v1/templates/p103-class/grade", "text/csv", class).await;

@@ -8,7 +8,7 @@ use serde_json::{Value, json};
 use std::f64::consts::PI;
 
 /// 1 slug·ft² in kg·m² (NIST SP 811, B.9: 1.355818, exact from lbf·s²/ft·ft²).
-const SLUG_FT2: f64 = 1.355_817_948_331_400_4;
+pub const SLUG_FT2: f64 = 1.355_817_948_331_400_4;
 
 async fn check(app: &TestApp, body: Value) -> Value {
     let r = app.post("/v1/check", &body).await;

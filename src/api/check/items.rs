@@ -9,7 +9,7 @@ use crate::api::problem::FieldError;
 use crate::api::tables::{self, Scalar};
 use crate::engine::grading::{self, Measure, Rule, Slip, Tolerance, Verdict};
 use crate::engine::variants::round_sig;
-use crate::units::{Dim, parse_quantity, parse_unit};
+use crate::units::{Dim, UnitError, parse_as, parse_unit};
 use serde_json::Value;
 
 /// One answer to judge: its pointer into the result, the answer as given,
@@ -104,7 +104,7 @@ fn suffix(unit: &str) -> String {
 fn given_text(answer: &Value, g: f64, unit: &str) -> String {
     let si = format!("{}{}", short(g), suffix(unit));
     match answer.as_str().map(str::trim) {
-        Some(text) if text.parse::<f64>().is_err() && decimal_point(text).parse::<f64>().is_err() && text != si => {
+        Some(text) if bare_number(text).is_none() && text != si => {
             format!("{text} = {si}")
         }
         _ => si,
@@ -124,14 +124,16 @@ fn read(answer: &Value, unit: &str) -> Result<f64, String> {
         Value::Null => return Err("no answer".into()),
         other => return Err(format!("{other} is not a number")),
     };
-    let q = parse_quantity(&text)
-        .map_err(|e| format!("'{text}' is not a number or a quantity ({})", e.to_string().trim_end_matches('.')))?;
-    let bare = text.trim().parse::<f64>().is_ok();
     let dim = if unit == DIMENSIONLESS { Dim::NONE } else { parse_unit(unit).map_or(Dim::NONE, |(_, d)| d) };
-    if !bare && q.dim != dim {
-        return Err(format!("'{text}' is in {}, where the answer is in {unit}", q.dim.si_name()));
-    }
-    Ok(q.si)
+    parse_as(&text, dim).map_err(|e| match e {
+        UnitError::WrongDimension { found, .. } => format!("'{text}' is in {found}, where the answer is in {unit}"),
+        e => format!("'{text}' is not a number or a quantity ({})", e.to_string().trim_end_matches('.')),
+    })
+}
+
+/// A bare number as a student writes it (a decimal comma allowed), or None for a quantity.
+pub fn bare_number(text: &str) -> Option<f64> {
+    decimal_point(text).trim().parse().ok()
 }
 
 /// "353,5" as "353.5": a decimal comma (when the number has no point).
@@ -238,7 +240,7 @@ const SHORT_LIST: usize = 10;
 /// student makes.
 pub fn others(flat: &[Scalar], result: &Value, pointer: &str, unit: &str) -> Vec<(String, f64)> {
     let own = tables::tokens(pointer);
-    let mut near: Vec<(usize, String, f64)> = flat
+    let mut near: Vec<((std::cmp::Reverse<usize>, usize), String, f64)> = flat
         .iter()
         .filter(|s| s.unit.as_deref() == Some(unit))
         .filter_map(|s| {
@@ -246,12 +248,12 @@ pub fn others(flat: &[Scalar], result: &Value, pointer: &str, unit: &str) -> Vec
             let shared = own.iter().zip(&tokens).take_while(|(a, b)| a == b).count();
             let near =
                 shared + 2 >= own.len().min(tokens.len()) && tokens != own && !in_series(result, &tokens, shared);
-            Some((shared, s.pointer.clone(), s.value.as_f64()?)).filter(|_| near)
+            // Nearest first: most tokens shared, then the same depth (siblings before cousins).
+            let rank = (std::cmp::Reverse(shared), tokens.len().abs_diff(own.len()));
+            Some((rank, s.pointer.clone(), s.value.as_f64()?)).filter(|_| near)
         })
         .collect();
-    // Nearest first: most tokens shared, then the same depth (siblings before cousins).
-    let depth = |p: &str| tables::tokens(p).len().abs_diff(own.len());
-    near.sort_by_key(|(shared, p, _)| (std::cmp::Reverse(*shared), depth(p)));
+    near.sort_by_key(|(rank, ..)| *rank);
     near.into_iter().map(|(_, p, x)| (p, x)).collect()
 }
 

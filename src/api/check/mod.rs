@@ -10,6 +10,7 @@ mod items;
 mod platforms;
 mod run;
 
+pub use items::bare_number;
 pub use platforms::{Gradescope, PrairieLearn};
 pub use run::{CHECK, CheckKind, check_job, post};
 
@@ -17,7 +18,7 @@ use super::create::JobResult;
 use super::json::escape;
 use super::kind::Table;
 use super::problem::{ApiError, FieldError};
-use super::tables::{self, number_text};
+use super::tables;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use std::collections::BTreeMap;
@@ -220,10 +221,10 @@ fn validate(r: &CheckRequest) -> Vec<FieldError> {
         _ => {}
     }
     errors.extend(tolerance_errors(r.tolerance.as_ref(), "/tolerance"));
-    let answered: Vec<String> = r.answers.keys().map(|k| pointer(k)).collect();
-    for (i, key) in r.answers.keys().enumerate() {
-        if answered[..i].contains(&answered[i]) {
-            errors.push(FieldError::at(at("answers", key), format!("{} is answered twice", answered[i])));
+    let mut answered = std::collections::BTreeSet::new();
+    for key in r.answers.keys() {
+        if !answered.insert(pointer(key)) {
+            errors.push(FieldError::at(at("answers", key), format!("{} is answered twice", pointer(key))));
         }
     }
     if r.required.as_ref().is_some_and(|q| q.len() > MAX_ANSWERS) {
@@ -310,14 +311,4 @@ pub fn table(result: &Value) -> Option<Table> {
         .map(|i| columns.iter().map(|c| i.get(*c).map_or_else(String::new, tables::cell)).collect())
         .collect();
     Some((columns.iter().map(|c| c.to_string()).collect(), rows))
-}
-
-/// A template's parameter values from JSON: numbers in shortest form, strings as written.
-pub fn parameter_texts(parameters: &BTreeMap<String, Value>) -> std::collections::HashMap<String, String> {
-    let text = |v: &Value| match v {
-        Value::Number(n) => n.as_f64().map_or_else(|| n.to_string(), number_text),
-        Value::String(s) => s.clone(),
-        other => other.to_string(),
-    };
-    parameters.iter().map(|(k, v)| (k.clone(), text(v))).collect()
 }

@@ -4,7 +4,7 @@
 //! kind `check`. Also the check's place in the registry ([`CheckKind`]):
 //! its route and document, its table and units.
 
-use super::{CheckOutput, CheckRequest, at, grade, parameter_texts, table, validate};
+use super::{CheckOutput, CheckRequest, at, grade, table, validate};
 use crate::api::json::{JsonBody, parse};
 use crate::api::kind::{self, AnyKind, StoredJob, Table, unit_in};
 use crate::api::limits::Limits;
@@ -110,8 +110,8 @@ fn kind_request(r: &CheckRequest) -> Result<(&'static dyn AnyKind, &Value), ApiE
 /// The template's parameters of a check: as given, or its variant's.
 fn given(t: &Template, r: &CheckRequest) -> HashMap<String, String> {
     match (r.variant, &r.parameters) {
-        (Some(v), _) => parameter_texts(&templates::draw(t, v)),
-        (None, Some(p)) => parameter_texts(p),
+        (Some(v), _) => templates::texts(&templates::draw(t, v)),
+        (None, Some(p)) => templates::texts(p),
         (None, None) => HashMap::new(),
     }
 }

@@ -8,7 +8,7 @@ use crate::api::problem::{ApiError, FieldError};
 use crate::units::{Dim, parse_quantity, parse_unit};
 use serde_json::Value;
 use sha2::{Digest, Sha256};
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap};
 
 /// The template's request with `given` parameters set (the others at their
 /// defaults); unknown names and bad values are a 400 naming each.
@@ -33,6 +33,12 @@ pub fn request_for(t: &Template, given: &HashMap<String, String>, ignore: &[&str
         }
     }
     if errors.is_empty() { Ok(request) } else { Err(ApiError::BadQuery(errors)) }
+}
+
+/// Parameters given as JSON (a study's row, a drawn variant, a check's
+/// `parameters`) as the texts a query string would carry them in.
+pub fn texts(parameters: &BTreeMap<String, Value>) -> HashMap<String, String> {
+    parameters.iter().map(|(k, v)| (k.clone(), crate::api::tables::cell(v))).collect()
 }
 
 /// The JSON value of a parameter given as `text`: SI when the parameter has

@@ -8,12 +8,11 @@
 
 use super::model::Template;
 use super::table::{Column, bad, parameters_of, ragged, read_csv, said};
-use super::{RESERVED, job_for, variants};
+use super::{RESERVED, job_for, texts, variants};
 use crate::api::AppState;
-use crate::api::check::{CheckOutput, CheckRequest, ToleranceDto, grade_with};
+use crate::api::check::{CheckOutput, CheckRequest, ToleranceDto, bare_number, grade_with};
 use crate::api::problem::{ApiError, FieldError};
 use crate::api::tables::Scalar;
-use crate::api::tables::cell;
 use crate::api::{kind, tables};
 use serde_json::Value;
 use std::collections::{BTreeMap, HashMap, HashSet};
@@ -206,7 +205,7 @@ async fn graded(
             .ok()
             .filter(|v| *v <= variants::MAX_SEED)
             .ok_or_else(|| bad("variant", format!("'{v}' is not a variant number (0 to 2^63 − 1)")))?;
-        given.extend(variants::draw(t, seed).iter().map(|(k, v)| (k.clone(), cell(v))));
+        given.extend(texts(&variants::draw(t, seed)));
     }
     let own: Vec<String> =
         header.iter().zip(row).map(|(c, cell)| if params.contains(c) { cell.clone() } else { String::new() }).collect();
@@ -231,8 +230,7 @@ async fn graded(
         .iter()
         .map(|(i, name, unit)| {
             let cell = row[*i].trim();
-            let bare = cell.parse::<f64>().is_ok()
-                || (cell.contains(',') && cell.replacen(',', ".", 1).parse::<f64>().is_ok());
+            let bare = bare_number(cell).is_some();
             let text = match unit {
                 Some(u) if bare => format!("{cell} {u}"),
                 _ => cell.to_string(),

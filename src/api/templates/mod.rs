@@ -10,7 +10,7 @@ mod model;
 mod table;
 mod variants;
 
-pub use apply::request_for;
+pub use apply::{request_for, texts};
 pub use grade::class;
 pub use model::{LIBRARY_FILES, NewTemplate, Parameter, RESERVED, Template, TemplateList, builtin};
 pub use table::{TableRequest, TableResponse, TableRow, study};
@@ -241,10 +241,7 @@ pub async fn variants(
         })
     };
     let (seed, count) = (number("seed", 1)?, number("count", 10)?);
-    let values: Vec<String> = q
-        .get("values")
-        .map(|v| v.split(',').map(|p| p.trim().to_string()).filter(|p| !p.is_empty()).collect())
-        .unwrap_or_default();
+    let values = q.get("values").map_or_else(Vec::new, |v| table::pointer_list(v));
     let t = find(&state, &id).await?;
     let list = variants::list(&state, &t, seed, count, &values).await?;
     if read::wants(&headers, q.get("format"), "text/csv") {
@@ -285,7 +282,7 @@ pub async fn grade(
     RawBody(body): RawBody,
 ) -> Result<Response, ApiError> {
     let q = read::query(q, grade::QUERY)?;
-    let mime = headers.get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok()).unwrap_or("").to_ascii_lowercase();
+    let mime = table::mime(&headers);
     if !(mime.starts_with("text/csv") || mime.starts_with("text/plain")) {
         return Err(ApiError::UnsupportedTable);
     }

@@ -55,13 +55,12 @@ pub async fn study(
     values: Option<&String>,
     body: &[u8],
 ) -> Result<(String, bool), ApiError> {
-    let mime = headers.get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok()).unwrap_or("").to_ascii_lowercase();
-    let listed = |v: &String| v.split(',').map(|p| p.trim().to_string()).filter(|p| !p.is_empty()).collect();
+    let mime = mime(headers);
     if mime.starts_with("application/json") {
         let request: TableRequest = serde_json::from_slice(body).map_err(|e| ApiError::MalformedJson(e.to_string()))?;
         let pointers: Vec<String> =
-            if request.values.is_empty() { values.map(listed).unwrap_or_default() } else { request.values };
-        let rows = request.rows.iter().map(|r| r.iter().map(|(k, v)| (k.clone(), cell(v))).collect()).collect();
+            if request.values.is_empty() { values.map_or_else(Vec::new, |v| pointer_list(v)) } else { request.values };
+        let rows = request.rows.iter().map(super::texts).collect();
         let results = run(state, t, rows, &pointers).await?;
         let rows = request.rows.into_iter().zip(results).map(|(parameters, (values, job, error))| {
             let values = pointers.iter().cloned().zip(values).collect();
@@ -73,7 +72,7 @@ pub async fn study(
     if !(mime.starts_with("text/csv") || mime.starts_with("text/plain")) {
         return Err(ApiError::UnsupportedTable);
     }
-    let pointers: Vec<String> = values.map(listed).unwrap_or_default();
+    let pointers: Vec<String> = values.map_or_else(Vec::new, |v| pointer_list(v));
     let text = std::str::from_utf8(body).map_err(|_| bad("body", "the CSV is not UTF-8 text"))?;
     let (header, rows) = read_csv(text)?;
     even(&header, &rows)?;
@@ -103,6 +102,16 @@ pub async fn study(
     }
     let bytes = out.into_inner().map_err(|e| ApiError::Internal(e.to_string()))?;
     Ok((String::from_utf8(bytes).map_err(|e| ApiError::Internal(e.to_string()))?, true))
+}
+
+/// `values=a,/b, c` as pointers, as written (a leading `/` optional).
+pub(super) fn pointer_list(list: &str) -> Vec<String> {
+    list.split(',').map(|p| p.trim().to_string()).filter(|p| !p.is_empty()).collect()
+}
+
+/// The body's content type, lower-case (empty without one).
+pub(super) fn mime(headers: &HeaderMap) -> String {
+    headers.get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok()).unwrap_or("").to_ascii_lowercase()
 }
 
 pub(super) fn bad(parameter: &str, message: impl Into<String>) -> ApiError {

@@ -98,8 +98,7 @@ pub async fn list(
         return Err(bad("seed", "variants are numbered 0 to 2^63 − 1: seed + count − 1 must not exceed it"));
     }
     let drawn: Vec<(u64, BTreeMap<String, Value>)> = (seed..seed + count).map(|v| (v, draw(t, v))).collect();
-    let given: Vec<HashMap<String, String>> =
-        drawn.iter().map(|(_, p)| p.iter().map(|(k, v)| (k.clone(), cell(v))).collect()).collect();
+    let given: Vec<HashMap<String, String>> = drawn.iter().map(|(_, p)| super::texts(p)).collect();
     let computed = if values.is_empty() {
         vec![(Vec::new(), None, None); given.len()]
     } else {
