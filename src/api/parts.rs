@@ -132,9 +132,7 @@ pub async fn values(
 ) -> Result<Response, ApiError> {
     let q = query(q, &["format", "angles"])?;
     let angles = Angles::parse(q.get("angles")).map_err(|e| ApiError::BadQuery(vec![e]))?;
-    if let Some(f) = q.get("format").filter(|f| !["csv", "json"].contains(&f.to_ascii_lowercase().as_str())) {
-        return Err(ApiError::BadQuery(vec![FieldError::parameter("format", format!("'{f}': must be csv or json"))]));
-    }
+    super::read::format_checked(&q)?;
     let csv = wants(&headers, q.get("format"), "text/csv");
     let (row, result, reserved) = result_tree(&state, &id).await?;
     let kind = kind::find(&row.kind).ok_or_else(|| ApiError::Internal(format!("stored kind {}", row.kind)))?;

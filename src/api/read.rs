@@ -33,6 +33,16 @@ pub fn query(
     if unknown.is_empty() { Ok(q) } else { Err(ApiError::BadQuery(unknown)) }
 }
 
+/// `?format=`, when given, is `csv` or `json` (any case); else a 400.
+pub fn format_checked(q: &HashMap<String, String>) -> Result<(), ApiError> {
+    match q.get("format").filter(|f| !["csv", "json"].contains(&f.to_ascii_lowercase().as_str())) {
+        Some(f) => {
+            Err(ApiError::BadQuery(vec![FieldError::parameter("format", format!("'{f}': must be csv or json"))]))
+        }
+        None => Ok(()),
+    }
+}
+
 /// Whether the client asked for `mime` in `Accept` (or `?format=`).
 pub fn wants(headers: &HeaderMap, format: Option<&String>, mime: &str) -> bool {
     let short = mime.rsplit('/').next().unwrap_or(mime);

@@ -41,7 +41,14 @@ async fn variants_are_the_same_forever() {
     let mut lines = csv.text.lines();
     assert_eq!(lines.next(), Some("variant,F [N*m],I0 [kg*m^2],eps,speed [rpm],inertia_approximate"));
     assert!(lines.next().unwrap().starts_with("1,600,7,0.05,70,"), "{}", csv.text);
-    for bad in ["count=0", "count=1001", "seed=-1", "seed=9223372036854775808", "seed=9223372036854775807&count=2"] {
+    for bad in [
+        "count=0",
+        "count=1001",
+        "seed=-1",
+        "seed=9223372036854775808",
+        "seed=9223372036854775807&count=2",
+        "format=xml",
+    ] {
         let r = app.get(&format!("/v1/templates/p103-class/variants?{bad}")).await;
         assert_eq!(r.status, StatusCode::BAD_REQUEST, "{bad}: {}", r.text);
     }

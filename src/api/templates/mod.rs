@@ -235,6 +235,7 @@ pub async fn variants(
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
 ) -> Result<Response, ApiError> {
     let q = read::query(q, &["seed", "count", "values", "format"])?;
+    read::format_checked(&q)?;
     let number = |name: &str, default: u64| {
         q.get(name).map_or(Ok(default), |v| {
             v.trim().parse::<u64>().map_err(|_| table::bad(name, "must be a whole number ≥ 0"))
