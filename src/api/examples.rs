@@ -55,7 +55,8 @@ pub fn add(doc: &mut Value) {
     document_rest_of_path(doc);
 }
 
-/// A path routed with `{*NAME}` (the rest of the path) is documented as `{NAME}`.
+/// A path routed with `{*NAME}` (the rest of the path) is documented as
+/// `{NAME}`; the plot's, routed as `{name}`, as `{name}.svg`.
 fn document_rest_of_path(doc: &mut Value) {
     let Some(paths) = doc["paths"].as_object_mut() else { return };
     let routed: Vec<String> = paths.keys().filter(|p| p.contains("{*")).cloned().collect();
@@ -63,6 +64,9 @@ fn document_rest_of_path(doc: &mut Value) {
         if let Some(item) = paths.remove(&path) {
             paths.insert(path.replace("{*", "{"), item);
         }
+    }
+    if let Some(item) = paths.remove(super::plots::ROUTED) {
+        paths.insert(super::plots::DOCUMENTED.into(), item);
     }
 }
 

@@ -68,6 +68,17 @@ impl Kind for Gears {
     fn compute(request: &GearRequest, unknown: Vec<FieldError>, _limits: &Limits) -> Result<GearResult, ApiError> {
         compute(request, unknown)
     }
+
+    fn plots(job: &crate::api::plots::Job) -> Vec<crate::api::plots::Listed> {
+        crate::api::plots::gear_plots(job)
+    }
+    fn plot(
+        job: &crate::api::plots::Job,
+        name: &str,
+        options: &crate::api::plots::Options,
+    ) -> crate::api::plots::Drawn {
+        crate::api::plots::gear_plot(job, name, options)
+    }
 }
 
 /// Validates and computes a request.

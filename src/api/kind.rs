@@ -1,15 +1,15 @@
 //! A calculation kind, described once: its name and path, its request and
 //! result types, how it computes, its table and the units of its result's
-//! fields. Every generic feature (the POST, the OpenAPI operation, the CLI's
-//! `solve`, CSV, parts of a result with their units, the document's
-//! examples) is written once over [`Kind`] and reaches every kind through
+//! fields, its plots. Every generic feature (the POST, the OpenAPI operation,
+//! the CLI's `solve`, CSV, parts of a result with their units, the
+//! document's examples, plots and pages) is written once over [`Kind`] and reaches every kind through
 //! the registry ([`KINDS`]), never through a `match` on a kind's name.
 
 use super::create::JobResult;
 use super::json::JsonBody;
 use super::limits::Limits;
 use super::problem::{ApiError, FieldError, PostErrors};
-use super::{AppState, dynamics, equivalent, flywheel, gear_train, gears, job, kinetostatics, rotor};
+use super::{AppState, dynamics, equivalent, flywheel, gear_train, gears, job, kinetostatics, plots, rotor};
 use crate::store::JobRow;
 use axum::extract::State;
 use axum::response::Response;
@@ -63,6 +63,16 @@ pub trait Kind: Send + Sync + 'static {
     /// a mechanism) override this and fall back to [`unit_in`].
     fn unit(_result: &Value, pointer: &[&str]) -> Option<String> {
         unit_in(Self::UNITS, pointer).map(String::from)
+    }
+
+    /// The plots a stored job of this kind has (none for a kind without curves).
+    fn plots(_job: &plots::Job) -> Vec<plots::Listed> {
+        Vec::new()
+    }
+
+    /// Plot `name` of a stored job, drawn from its result; None when it has none of that name.
+    fn plot(_job: &plots::Job, _name: &str, _options: &plots::Options) -> plots::Drawn {
+        Ok(None)
     }
 }
 
@@ -122,6 +132,8 @@ pub trait AnyKind: Send + Sync {
     fn units(&self) -> &'static [(&'static str, &'static str)];
     fn table(&self, result: &Value) -> Option<Table>;
     fn unit(&self, result: &Value, pointer: &[&str]) -> Option<String>;
+    fn plots(&self, job: &plots::Job) -> Vec<plots::Listed>;
+    fn plot(&self, job: &plots::Job, name: &str, options: &plots::Options) -> plots::Drawn;
 }
 
 /// A [`Kind`] in the registry.
@@ -171,6 +183,12 @@ impl<K: Kind> AnyKind for Registered<K> {
     }
     fn unit(&self, result: &Value, pointer: &[&str]) -> Option<String> {
         K::unit(result, pointer)
+    }
+    fn plots(&self, job: &plots::Job) -> Vec<plots::Listed> {
+        K::plots(job)
+    }
+    fn plot(&self, job: &plots::Job, name: &str, options: &plots::Options) -> plots::Drawn {
+        K::plot(job, name, options)
     }
 }
 

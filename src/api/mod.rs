@@ -27,7 +27,9 @@ pub mod label;
 pub mod limits;
 pub mod mechanism;
 pub mod middleware;
+pub mod pages;
 pub mod parts;
+pub mod plots;
 pub mod problem;
 pub mod quantity;
 pub mod read;
@@ -39,7 +41,6 @@ use crate::store::Store;
 pub use admission::{Admission, Capacity};
 use axum::extract::State;
 use axum::http::{StatusCode, header};
-use axum::response::Redirect;
 use axum::routing::get;
 use axum::{Json, Router};
 pub use limits::Limits;
@@ -112,6 +113,7 @@ characters) makes a retry safe: the same key with the same request answers the f
         (name = "templates", description = "Problems with parameters: one number of a job by URL (a spreadsheet's WEBSERVICE), a parameter study as CSV"),
         (name = "grading", description = "Students' answers checked by the engine: tolerances as course platforms define them, feedback naming common slips, seeded per-student variants, a whole class in one CSV"),
         (name = "service", description = "Health"),
+        (name = "pages", description = "HTML pages for people (no JavaScript): the recent jobs and templates, a job's values and plots, a template's form"),
     )
 )]
 pub struct ApiDoc;
@@ -128,6 +130,8 @@ fn routes() -> OpenApiRouter<AppState> {
         .routes(utoipa_axum::routes!(jobs::get))
         .routes(utoipa_axum::routes!(jobs::csv))
         .routes(utoipa_axum::routes!(parts::values))
+        .routes(utoipa_axum::routes!(plots::list))
+        .routes(svg_route(utoipa_axum::routes!(plots::plot)))
         .routes(utoipa_axum::routes!(templates::list, templates::create))
         .routes(utoipa_axum::routes!(templates::get))
         .routes(utoipa_axum::routes!(templates::job))
@@ -137,6 +141,10 @@ fn routes() -> OpenApiRouter<AppState> {
         .routes(rest_of_path(utoipa_axum::routes!(templates::result), "pointer"))
         .routes(rest_of_path(utoipa_axum::routes!(parts::part), "pointer"))
         .routes(utoipa_axum::routes!(healthz))
+        .routes(utoipa_axum::routes!(pages::home))
+        .routes(utoipa_axum::routes!(pages::job::job))
+        .routes(utoipa_axum::routes!(pages::form::template))
+        .routes(utoipa_axum::routes!(pages::favicon))
 }
 
 /// A route whose last path parameter takes the rest of the path (a JSON
@@ -149,6 +157,19 @@ fn rest_of_path(
     let mut routed = utoipa::openapi::path::Paths::new();
     for (path, item) in std::mem::take(&mut paths.paths) {
         routed.paths.insert(path.replace(&from, &to), item);
+    }
+    (schemas, routed, method)
+}
+
+/// The plot's route: axum cannot match `{name}.svg` within a segment, so it
+/// is routed as `{name}` (the handler wants the `.svg`) and documented as
+/// `{name}.svg`.
+fn svg_route(
+    (schemas, mut paths, method): utoipa_axum::router::UtoipaMethodRouter<AppState>,
+) -> utoipa_axum::router::UtoipaMethodRouter<AppState> {
+    let mut routed = utoipa::openapi::path::Paths::new();
+    for (path, item) in std::mem::take(&mut paths.paths) {
+        routed.paths.insert(path.replace(plots::DOCUMENTED, plots::ROUTED), item);
     }
     (schemas, routed, method)
 }
@@ -181,7 +202,6 @@ fn served() -> &'static (serde_json::Value, String) {
 pub fn router(state: AppState, settings: &Settings) -> Router {
     let (routes, _) = routes().split_for_parts();
     let routes = routes
-        .route("/", get(|| async { Redirect::to("/docs/") }))
         .route("/openapi.json", get(|| async { ([(header::CONTENT_TYPE, "application/json")], openapi_json()) }))
         // The validator would send the document's URL to validator.swagger.io and show a broken image offline.
         .merge(SwaggerUi::new("/docs").config(Config::new(["/openapi.json"]).validator_url("none")))

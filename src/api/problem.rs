@@ -151,6 +151,8 @@ pub enum ApiError {
     NotFound(String),
     #[error("job '{id}' has no part of its result at '{pointer}'")]
     NoPart { id: String, pointer: String },
+    #[error("job '{id}' has no plot '{name}' ({})", if .known.is_empty() { "it has no plots".to_string() } else { format!("its plots: {}", .known.join(", ")) })]
+    NoPlot { id: String, name: String, known: Vec<String> },
     #[error("no template with id '{0}' (GET /v1/templates lists them)")]
     NoTemplate(String),
     #[error("{0}")]
@@ -205,6 +207,7 @@ impl ApiError {
             Self::Conflict(_) => (StatusCode::CONFLICT, "conflict", "The name is taken"),
             Self::InProgress(_) => (StatusCode::CONFLICT, "in-progress", "The same request is being answered"),
             Self::NoPart { .. } => (StatusCode::NOT_FOUND, "no-such-part", "No such part of the result"),
+            Self::NoPlot { .. } => (StatusCode::NOT_FOUND, "no-such-plot", "No such plot of the job"),
             Self::MethodNotAllowed => (StatusCode::METHOD_NOT_ALLOWED, "method-not-allowed", "Method not allowed"),
             Self::OverBudget(_) => {
                 (StatusCode::UNPROCESSABLE_ENTITY, "compute-budget", "The job ran out of its compute budget")
@@ -219,6 +222,19 @@ impl ApiError {
             }
             Self::Unauthorized => (StatusCode::UNAUTHORIZED, "unauthorized", "Missing or wrong bearer token"),
             Self::Internal(_) => (StatusCode::INTERNAL_SERVER_ERROR, "internal", "Internal server error"),
+        }
+    }
+
+    /// The answer's status.
+    pub fn status(&self) -> StatusCode {
+        self.parts().0
+    }
+
+    /// The field errors, each as "where: message" (a page shows them).
+    pub fn fields(&self) -> &[FieldError] {
+        match self {
+            Self::Invalid(e) | Self::BadQuery(e) | Self::ResultTooLarge { errors: e, .. } => e,
+            _ => &[],
         }
     }
 

@@ -77,6 +77,18 @@ pub struct JobRow {
     pub label: Option<String>,
 }
 
+/// What a list of jobs shows of each, without its request and result.
+#[derive(Clone, Debug, sqlx::FromRow)]
+pub struct JobSummary {
+    pub id: String,
+    pub kind: String,
+    pub created_at: String,
+    pub engine_us: i64,
+    pub label: Option<String>,
+    /// Bytes of its request and result together.
+    pub bytes: i64,
+}
+
 /// A job as SQLite returns it.
 #[derive(sqlx::FromRow)]
 struct Row {
@@ -244,6 +256,14 @@ impl Store {
     pub async fn get(&self, id: &str) -> Result<Option<JobRow>, StoreError> {
         let row: Option<Row> = sqlx::query_as(SELECT_ROW).bind(id).fetch_optional(&self.pool).await?;
         Ok(row.map(JobRow::from))
+    }
+
+    /// The newest `limit` jobs without their request and result (a page's list).
+    pub async fn recent(&self, limit: i64) -> Result<Vec<JobSummary>, StoreError> {
+        Ok(sqlx::query_as("SELECT id, kind, created_at, engine_us, label, bytes FROM jobs ORDER BY seq DESC LIMIT ?")
+            .bind(limit)
+            .fetch_all(&self.pool)
+            .await?)
     }
 
     /// Bytes of a job's request and result together, without loading them.

@@ -1,6 +1,7 @@
 //! Integration tests through the real router and a real SQLite file.
 
 mod andrews;
+mod browser;
 mod capacity;
 mod cases;
 mod class;
@@ -21,8 +22,10 @@ mod kinetostatics;
 mod libreoffice;
 mod limits;
 mod offline;
+mod pages;
 mod parts;
 mod peers;
+mod plots;
 mod robot_arm;
 mod rotor;
 mod security;

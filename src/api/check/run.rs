@@ -214,4 +214,11 @@ format or as PrairieLearn's or Gradescope's results document.";
             _ => unit_in(UNITS, pointer).map(String::from),
         }
     }
+    /// A check has no curve.
+    fn plots(&self, _job: &crate::api::plots::Job) -> Vec<crate::api::plots::Listed> {
+        Vec::new()
+    }
+    fn plot(&self, _: &crate::api::plots::Job, _: &str, _: &crate::api::plots::Options) -> crate::api::plots::Drawn {
+        Ok(None)
+    }
 }

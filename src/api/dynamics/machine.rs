@@ -129,12 +129,26 @@ pub struct InputState {
     pub acceleration: f64,
 }
 
+/// Where a body is: its centre of mass and its rotation from the drawn configuration.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct BodyPosition {
+    pub body: String,
+    /// m
+    pub x: f64,
+    /// m
+    pub y: f64,
+    /// rad
+    pub theta: f64,
+}
+
 /// The mechanism at one sample (the same instants as `samples`).
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct MachineSample {
     pub t: f64,
     /// Every input, in the order given.
     pub inputs: Vec<InputState>,
+    /// Every moving body's position (the paths and drawings of the plots).
+    pub bodies: Vec<BodyPosition>,
     /// Joint reactions (the force body `by` exerts on body `on`), when asked.
     pub reactions: Vec<ReactionDto>,
     /// Largest |Φ| of the joint constraints at the sample, m or rad.
@@ -174,6 +188,12 @@ impl MachineDynamics {
                         speed: *speed,
                         acceleration: *acceleration,
                     })
+                    .collect(),
+                bodies: d
+                    .poses
+                    .iter()
+                    .zip(body_names.iter().skip(1))
+                    .map(|(p, body)| BodyPosition { body: body.clone(), x: p[0], y: p[1], theta: p[2] })
                     .collect(),
                 reactions: d.reactions.iter().map(|r| ReactionDto::new(r, joint_names, body_names)).collect(),
                 constraint_residual: d.constraint_residual,

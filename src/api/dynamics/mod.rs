@@ -145,6 +145,17 @@ impl Kind for Dynamics {
     fn table(result: &Value) -> Option<Table> {
         Some(csv_table(result))
     }
+
+    fn plots(job: &crate::api::plots::Job) -> Vec<crate::api::plots::Listed> {
+        crate::api::plots::dynamics_plots(job)
+    }
+    fn plot(
+        job: &crate::api::plots::Job,
+        name: &str,
+        options: &crate::api::plots::Options,
+    ) -> crate::api::plots::Drawn {
+        crate::api::plots::dynamics_plot(job, name, options)
+    }
 }
 
 /// Validates and solves a request within `limits`, stopping the integration

@@ -79,6 +79,17 @@ impl Kind for Flywheel {
     fn table(result: &Value) -> Option<Table> {
         Some(csv_table(result))
     }
+
+    fn plots(job: &crate::api::plots::Job) -> Vec<crate::api::plots::Listed> {
+        crate::api::plots::flywheel_plots(job)
+    }
+    fn plot(
+        job: &crate::api::plots::Job,
+        name: &str,
+        options: &crate::api::plots::Options,
+    ) -> crate::api::plots::Drawn {
+        crate::api::plots::flywheel_plot(job, name, options)
+    }
 }
 
 /// Validates and solves a request within `limits`, stopping when the compute budget runs out.

@@ -93,6 +93,17 @@ impl Kind for Kinetostatics {
             },
         }
     }
+
+    fn plots(job: &crate::api::plots::Job) -> Vec<crate::api::plots::Listed> {
+        crate::api::plots::kinetostatics_plots(job)
+    }
+    fn plot(
+        job: &crate::api::plots::Job,
+        name: &str,
+        options: &crate::api::plots::Options,
+    ) -> crate::api::plots::Drawn {
+        crate::api::plots::kinetostatics_plot(job, name, options)
+    }
 }
 
 /// Validates and solves a request within `limits`, stopping when the compute budget runs out.

@@ -52,6 +52,8 @@ pub struct MechanismProblem {
 pub struct MechanismSample {
     /// Coordinate, speed and acceleration of every input.
     pub inputs: Vec<[f64; 3]>,
+    /// (x_G, y_G, θ) of every moving body, in body order.
+    pub poses: Vec<[f64; 3]>,
     pub reactions: Vec<Reaction>,
     /// |Φ| at the sample (dense output, before any projection).
     pub constraint_residual: f64,
@@ -343,5 +345,6 @@ fn sample(dae: &Dae, mobility: &Mobility, t: f64, y: &[f64]) -> Result<Mechanism
     } else {
         Vec::new()
     };
-    Ok(MechanismSample { inputs, reactions, constraint_residual: sys.phi.rows(0, r).amax() })
+    let poses = q.chunks_exact(3).map(|b| [b[0], b[1], b[2]]).collect();
+    Ok(MechanismSample { inputs, poses, reactions, constraint_residual: sys.phi.rows(0, r).amax() })
 }

@@ -1,0 +1,139 @@
+//! A template's form: each parameter with its unit, range and description,
+//! at its default. Submitting it (a GET with the parameters, the same
+//! names `GET /v1/templates/{id}/job` takes) finds or computes the job and
+//! redirects to its page; a value the template refuses shows the form again
+//! with the message under its field.
+
+use super::{IdPath, layout, query_of};
+use crate::api::AppState;
+use crate::api::problem::{ApiError, FieldError};
+use crate::api::templates::{self, Parameter, Template};
+use crate::units::parse_unit;
+use axum::extract::rejection::QueryRejection;
+use axum::extract::{Query, State};
+use axum::http::{StatusCode, header};
+use axum::response::{IntoResponse, Response};
+use maud::{Markup, html};
+use serde_json::Value;
+use std::collections::HashMap;
+
+/// A template's form; with parameters, their job's page.
+#[utoipa::path(get, path = "/templates/{id}", operation_id = "page_template", tag = "pages",
+    params(("id" = String, Path, description = "Template id, e.g. `p103-slider-flywheel`"),
+        ("parameters" = Option<HashMap<String, String>>, Query, style = Form, explode,
+            description = "The form's fields: when given, the job of these parameters (blank ones at their defaults)")),
+    responses((status = 200, description = "The form", content_type = "text/html", body = String),
+        (status = 303, description = "The job of these parameters: `Location` is its page", headers(("Location" = String, description = "/jobs/{id}"))),
+        (status = 400, description = "A value the template refuses: the form again, the message at its field", content_type = "text/html", body = String),
+        (status = 404, description = "No template with this id", content_type = "text/html", body = String),
+        (status = 422, description = "These parameters give no valid problem: the form again with why", content_type = "text/html", body = String),
+        (status = 503, description = "Saturated or the database unavailable", content_type = "text/html", body = String)))]
+pub async fn template(
+    State(state): State<AppState>,
+    id: IdPath,
+    q: Result<Query<HashMap<String, String>>, QueryRejection>,
+) -> Response {
+    let given = match query_of(q) {
+        Ok(q) => q,
+        Err(e) => return layout::error(e),
+    };
+    let t = match templates::find(&state, &id.0).await {
+        Ok(t) => t,
+        Err(e) => return layout::error(e),
+    };
+    if given.is_empty() {
+        return layout::answer(StatusCode::OK, form(&t, &given, None));
+    }
+    // A field left blank or at its default is not asked: an unchanged form is
+    // the template's own job, the one `/v1/templates/{id}/job` gives.
+    let unchanged = |k: &String, v: &String| {
+        v.trim().is_empty() || t.parameters.get(k).is_some_and(|p| default_text(&t, p) == v.trim())
+    };
+    let asked: HashMap<String, String> =
+        given.iter().filter(|(k, v)| !unchanged(k, v)).map(|(k, v)| (k.clone(), v.clone())).collect();
+    match templates::job_for(&state, &t, &asked).await {
+        Ok((row, _)) => (StatusCode::SEE_OTHER, [(header::LOCATION, format!("/jobs/{}", row.id))]).into_response(),
+        Err(
+            e @ (ApiError::BadQuery(_)
+            | ApiError::Invalid(_)
+            | ApiError::OverBudget(_)
+            | ApiError::ResultTooLarge { .. }),
+        ) => layout::answer(e.status(), form(&t, &given, Some(&e))),
+        Err(e) => layout::error(e),
+    }
+}
+
+/// The form, with the values given and the errors of a refused submission.
+fn form(t: &Template, given: &HashMap<String, String>, error: Option<&ApiError>) -> Markup {
+    let fields = error.map_or(&[][..], ApiError::fields);
+    let at = |name: &str| fields.iter().filter(|f| f.parameter.as_deref() == Some(name)).collect::<Vec<&FieldError>>();
+    let others: Vec<&FieldError> =
+        fields.iter().filter(|f| f.parameter.as_deref().is_none_or(|p| !t.parameters.contains_key(p))).collect();
+    let title = t.title.clone().unwrap_or_else(|| t.id.clone());
+    let body = html! {
+        h1 { (title) }
+        p.meta { "template " span.id { (t.id) } " · a " (t.kind) " job"
+            @if let Some(s) = &t.source { " · " (s) } }
+        @if let Some(e) = error {
+            p.error { (e.to_string()) }
+            @if !others.is_empty() { ul { @for f in &others { li.error { (describe(f)) } } } }
+        }
+        p { "A number is read in the unit beside its name; a quantity with its own unit (\"300 rpm\", \"4 %\") is read in that unit." }
+        form.params method="get" action=(format!("/templates/{}", crate::api::plots::segment(&t.id))) {
+            @for (name, p) in &t.parameters {
+                div {
+                    label for=(name) { (name) @if let Some(u) = &p.unit { " (" (u) ")" } }
+                    input id=(name) name=(name) type="text" inputmode="decimal" autocomplete="off"
+                        value=(given.get(name).cloned().unwrap_or_else(|| default_text(t, p)));
+                    p.hint { (hint(p)) }
+                    @for f in at(name) { p.error { (f.message) } }
+                }
+            }
+            div { button type="submit" { "Compute" } }
+        }
+        p { "The same job by URL, for a spreadsheet or a script: "
+            code { "/v1/templates/" (t.id) "/job?NAME=VALUE" } " (JSON), or one number: "
+            code { "/v1/templates/" (t.id) "/result/POINTER?NAME=VALUE" } "." }
+    };
+    layout::page(&title, body)
+}
+
+fn describe(f: &FieldError) -> String {
+    match (&f.parameter, &f.pointer) {
+        (Some(p), _) | (None, Some(p)) if !p.is_empty() => format!("{p}: {}", f.message),
+        _ => f.message.clone(),
+    }
+}
+
+/// A parameter's description and range, in its unit.
+fn hint(p: &Parameter) -> String {
+    let unit = p.unit.as_deref().map_or(String::new(), |u| format!(" {u}"));
+    let range = match (p.min, p.max, &p.choices) {
+        (_, _, Some(c)) => format!("one of {}", c.iter().map(crate::api::tables::cell).collect::<Vec<_>>().join(", ")),
+        (Some(a), Some(b), None) => format!("from {a} to {b}{unit}"),
+        (Some(a), None, None) => format!("at least {a}{unit}"),
+        (None, Some(b), None) => format!("at most {b}{unit}"),
+        _ => String::new(),
+    };
+    let text = p.description.clone().unwrap_or_default();
+    match (text.is_empty(), range.is_empty()) {
+        (false, false) => format!("{text}; {range}."),
+        (true, false) => format!("{range}."),
+        _ => text,
+    }
+}
+
+/// The default of a parameter as a person would type it: a quantity string
+/// as the template has it, a number in the parameter's unit.
+fn default_text(t: &Template, p: &Parameter) -> String {
+    match t.request.pointer(&p.pointer) {
+        Some(Value::Number(n)) => {
+            let x = n.as_f64().unwrap_or(0.0);
+            let factor = p.unit.as_deref().and_then(|u| parse_unit(u).ok()).map_or(1.0, |(f, _)| f);
+            super::job::number(x / factor)
+        }
+        Some(Value::String(s)) => s.clone(),
+        Some(other) => other.to_string(),
+        None => String::new(),
+    }
+}

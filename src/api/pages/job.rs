@@ -1,0 +1,225 @@
+//! A job's page: what it is (kind, label, when, engine time), its warnings,
+//! its accuracy, its plots, its values with their units (a long table's
+//! rows left to its CSV), its request, and links to each as data.
+
+use super::{IdPath, layout, query_of};
+use crate::api::AppState;
+use crate::api::kind::{self, AnyKind};
+use crate::api::plots::{self, Listed};
+use crate::api::problem::{ApiError, FieldError};
+use crate::api::read::result_tree;
+use crate::api::tables::{self, Scalar};
+use crate::store::JobRow;
+use axum::extract::rejection::QueryRejection;
+use axum::extract::{Query, State};
+use axum::http::StatusCode;
+use axum::response::Response;
+use maud::{Markup, html};
+use serde_json::Value;
+use std::collections::HashMap;
+
+/// Plots shown as pictures on the page; the others (a large mechanism's
+/// joints, one each) are listed as links.
+const SHOWN: usize = 12;
+
+/// Arrays longer than this, or of more objects than [`ROWS`], are tables:
+/// the page names them and links their CSV.
+const LONG: usize = 12;
+const ROWS: usize = 4;
+
+/// A job's page.
+#[utoipa::path(get, path = "/jobs/{id}", operation_id = "page_job", tag = "pages",
+    params(("id" = String, Path, description = "Job id"),
+        ("step" = Option<usize>, Query, description = "The step or sample the drawing of a mechanism shows")),
+    responses((status = 200, description = "The job's page", content_type = "text/html", body = String),
+        (status = 400, description = "A step beyond the job's or an unknown query parameter", content_type = "text/html", body = String),
+        (status = 404, description = "No job with this id", content_type = "text/html", body = String),
+        (status = 503, description = "Saturated or the database unavailable", content_type = "text/html", body = String)))]
+pub async fn job(
+    State(state): State<AppState>,
+    id: IdPath,
+    q: Result<Query<HashMap<String, String>>, QueryRejection>,
+) -> Response {
+    let q = match query_of(q) {
+        Ok(q) => q,
+        Err(e) => return layout::error(e),
+    };
+    match render(&state, &id.0, &q).await {
+        Ok(page) => layout::answer(StatusCode::OK, page),
+        Err(e) => layout::error(e),
+    }
+}
+
+async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Result<Markup, ApiError> {
+    if let Some(k) = q.keys().find(|k| *k != "step") {
+        return Err(ApiError::BadQuery(vec![FieldError::parameter(k, "unknown parameter (known: step)")]));
+    }
+    let step = match q.get("step").filter(|s| !s.trim().is_empty()) {
+        Some(s) => Some(s.trim().parse::<usize>().map_err(|_| {
+            ApiError::BadQuery(vec![FieldError::parameter("step", format!("'{s}': must be a whole number from 0"))])
+        })?),
+        None => None,
+    };
+    let (row, result, _reserved) = result_tree(state, id).await?;
+    let request = serde_json::from_slice::<Value>(&row.request).unwrap_or_default();
+    let kind = kind::find(&row.kind).ok_or_else(|| ApiError::Internal(format!("job of kind {}", row.kind)))?;
+    let listed = kind.plots(&plots::Job { request: &request, result: &result });
+    if let Some(s) = step {
+        let count = steps(&result);
+        if s >= count {
+            return Err(plots::no_step(s, count));
+        }
+    }
+    let (values, long) = values(kind, &result);
+    let body = html! {
+        h1 { (title(&row)) }
+        p.meta { "job " span.id { (row.id) } " · created " (when(&row.created_at)) " UTC"
+            @if let Some(l) = &row.label { " · label " strong { (l) } }
+            " · engine " (row.engine_version) }
+        ul.links.noprint {
+            li { a href=(format!("/v1/jobs/{}", row.id)) { "JSON" } }
+            li { a href=(format!("/v1/jobs/{}/csv", row.id)) { "CSV table" } }
+            li { a href=(format!("/v1/jobs/{}/values?format=csv", row.id)) { "every value (CSV)" } }
+            li { a href=(format!("/v1/jobs/{}/plots", row.id)) { "plots (JSON)" } }
+        }
+        (summary(&row, &result))
+        (plot_figures(&row.id, &listed, step))
+        h2 { "Values" }
+        @if !long.is_empty() {
+            p { "Tables of the result (their rows are in the CSV): "
+                @for (k, (pointer, n)) in long.iter().enumerate() { @if k > 0 { ", " } code { (pointer) } " (" (n) " rows)" } }
+        }
+        (value_table(&values))
+        h2 { "Request" }
+        details { summary { "The request as sent" } pre { (String::from_utf8_lossy(&row.request)) } }
+    };
+    Ok(layout::page(&title(&row), body))
+}
+
+fn title(row: &JobRow) -> String {
+    match &row.label {
+        Some(l) => format!("{} job: {l}", row.kind),
+        None => format!("{} job", row.kind),
+    }
+}
+
+/// The number of steps (kinetostatics) or samples (dynamics) a drawing can show.
+fn steps(result: &Value) -> usize {
+    let machine = result.pointer("/machine/samples").and_then(Value::as_array);
+    machine.or_else(|| result.get("steps").and_then(Value::as_array)).map_or(0, Vec::len)
+}
+
+/// `x` in its shortest exact form, a whole number without `.0`.
+pub fn number(x: f64) -> String {
+    if x.fract() == 0.0 && x.abs() < 1e15 { format!("{}", x as i64) } else { tables::number_text(x) }
+}
+
+/// A stored time (RFC 3339, UTC) to the second: "2026-11-24 00:57:56".
+pub fn when(created_at: &str) -> String {
+    created_at.replace('T', " ").chars().take(19).collect()
+}
+
+/// "0.84 ms", "1.2 s".
+pub fn duration(us: i64) -> String {
+    let s = us as f64 / 1e6;
+    if s >= 1.0 { format!("{s:.2} s") } else { format!("{:.2} ms", s * 1e3) }
+}
+
+/// Timing, accuracy and warnings.
+fn summary(row: &JobRow, result: &Value) -> Markup {
+    let warnings: Vec<&str> =
+        result.get("warnings").and_then(Value::as_array).into_iter().flatten().filter_map(Value::as_str).collect();
+    let accuracy = result.get("accuracy").and_then(Value::as_object);
+    html! {
+        h2 { "Accuracy and time" }
+        p { "Computed in " strong { (duration(row.engine_us)) } " of engine time." }
+        @if let Some(a) = accuracy {
+            div.scroll { table.accuracy { tbody { @for (k, v) in a { tr {
+                th { (k.replace('_', " ")) }
+                @if v.is_number() { td.num { (text(v)) } } @else { td { (text(v)) } }
+            } } } } }
+        } @else {
+            p { "This kind states no accuracy of its own: its results are closed forms." }
+        }
+        @if !warnings.is_empty() {
+            h2 { "Warnings" }
+            ul.warnings { @for w in &warnings { li { (w) } } }
+        }
+    }
+}
+
+fn plot_figures(id: &str, listed: &[Listed], step: Option<usize>) -> Markup {
+    let src = |p: &Listed| match step.filter(|_| p.name == "mechanism") {
+        Some(s) => format!("{}?step={s}", plots::href(id, &p.name)),
+        None => plots::href(id, &p.name),
+    };
+    html! {
+        @if !listed.is_empty() {
+            h2 { "Plots" }
+            @if listed.iter().any(|p| p.name == "mechanism") {
+                form.inline.noprint method="get" action=(format!("/jobs/{id}")) {
+                    label for="step" { "Draw the mechanism at step" }
+                    input #step type="number" name="step" min="0" value=(step.unwrap_or(0));
+                    button type="submit" { "Draw" }
+                }
+            }
+            div.plots { @for p in listed.iter().take(SHOWN) { figure {
+                a href=(src(p)) { img src=(src(p)) alt=(p.title) width="820" height="520"; }
+                figcaption { (p.title) " · " a href=(src(p)) { "SVG" } }
+            } } }
+            @if listed.len() > SHOWN {
+                p { "More plots of this job:" }
+                ul { @for p in listed.iter().skip(SHOWN) { li { a href=(src(p)) { (p.title) } } } }
+            }
+        }
+    }
+}
+
+/// The result's scalars (accuracy and warnings shown above), and its long
+/// arrays (pointer and length) left to the CSV.
+fn values(kind: &dyn AnyKind, result: &Value) -> (Vec<Scalar>, Vec<(String, usize)>) {
+    let mut short = result.clone();
+    let mut long = Vec::new();
+    prune(&mut short, String::new(), &mut long);
+    let skip = |p: &str| p.starts_with("/accuracy/") || p.starts_with("/warnings/") || long.iter().any(|(l, _)| l == p);
+    let values = tables::flatten(kind, &short).into_iter().filter(|s| !skip(&s.pointer)).collect();
+    (values, long)
+}
+
+/// Replaces every table (an array of more than [`ROWS`] objects, or of
+/// more than [`LONG`] items) by null, noting where and how long.
+fn prune(v: &mut Value, at: String, long: &mut Vec<(String, usize)>) {
+    match v {
+        Value::Array(items) if items.len() > LONG || (items.len() > ROWS && items.iter().any(Value::is_object)) => {
+            long.push((at, items.len()));
+            *v = Value::Null;
+        }
+        Value::Array(items) => items.iter_mut().enumerate().for_each(|(i, x)| prune(x, format!("{at}/{i}"), long)),
+        Value::Object(map) => {
+            map.iter_mut().for_each(|(k, x)| prune(x, format!("{at}/{}", crate::api::json::escape(k)), long))
+        }
+        _ => {}
+    }
+}
+
+fn value_table(values: &[Scalar]) -> Markup {
+    html! { div.scroll { table {
+        thead { tr { th { "value" } th { "" } th { "unit" } } }
+        tbody { @for s in values { tr {
+            td.ptr { (s.pointer.trim_start_matches('/')) }
+            @if s.value.is_number() { td.num { (text(&s.value)) } } @else { td { (text(&s.value)) } }
+            td { (s.unit.as_deref().filter(|u| *u != "1").unwrap_or("")) }
+        } } }
+    } } }
+}
+
+/// A value as a person reads it: a whole number without `.0`, others in
+/// their shortest exact form.
+fn text(v: &Value) -> String {
+    match v {
+        Value::Number(n) => n.as_f64().map_or_else(|| n.to_string(), number),
+        Value::String(s) => s.clone(),
+        Value::Null => "—".into(),
+        other => other.to_string(),
+    }
+}

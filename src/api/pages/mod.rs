@@ -1,0 +1,90 @@
+//! Pages for people, rendered by the service (maud; no JavaScript, nothing
+//! from elsewhere): `/` the recent jobs and the templates, `/jobs/{id}` a
+//! job's values with their units, warnings, accuracy, timing and plots,
+//! `/templates/{id}` a form of a template's parameters whose GET computes
+//! (or finds) the job and shows its page.
+
+pub mod form;
+pub mod job;
+mod layout;
+
+use super::AppState;
+use super::problem::ApiError;
+use super::templates::builtin;
+use axum::extract::rejection::QueryRejection;
+use axum::extract::{Path, Query, State};
+use axum::http::StatusCode;
+use axum::response::Response;
+use maud::html;
+use std::collections::HashMap;
+
+/// How many recent jobs the home page lists.
+const RECENT: i64 = 25;
+
+/// The home page: the recent jobs, the templates, the API's documentation.
+#[utoipa::path(get, path = "/", operation_id = "page_home", tag = "pages",
+    responses((status = 200, description = "The home page", content_type = "text/html", body = String),
+        (status = 503, description = "The database is unavailable", content_type = "text/html", body = String)))]
+pub async fn home(State(state): State<AppState>) -> Response {
+    let jobs = match state.store.recent(RECENT).await {
+        Ok(jobs) => jobs,
+        Err(e) => return layout::error(e.into()),
+    };
+    let mut templates = builtin().to_vec();
+    if let Ok(stored) = state.store.templates().await {
+        templates.extend(stored.iter().filter_map(|b| serde_json::from_str(b).ok()));
+    }
+    let body = html! {
+        h1 { "mechdyn" }
+        p.meta { "Machine dynamics: flywheels, kinetostatics, direct dynamics, rotors and gears. Every job is stored; \
+                  open one to see its values, accuracy and plots, or start from a template's form." }
+        h2 { "Templates" }
+        div.scroll { table {
+            thead { tr { th { "template" } th { "kind" } th { "problem" } } }
+            tbody { @for t in &templates { tr {
+                td.id { a href=(format!("/templates/{}", super::plots::segment(&t.id))) { (t.id) } }
+                td { (t.kind) }
+                td { (t.title.as_deref().unwrap_or("")) }
+            } } }
+        } }
+        h2 { "Recent jobs" }
+        @if jobs.is_empty() {
+            p { "No job yet: open a template, or POST a request (see the " a href="/docs/" { "API documentation" } ")." }
+        } @else {
+            div.scroll { table {
+                thead { tr { th { "job" } th { "kind" } th { "label" } th { "created (UTC)" } th { "engine time" } } }
+                tbody { @for j in &jobs { tr {
+                    td.id { a href=(format!("/jobs/{}", j.id)) { (j.id) } }
+                    td { (j.kind) }
+                    td { (j.label.as_deref().unwrap_or("")) }
+                    td.num { (job::when(&j.created_at)) }
+                    td.num { (job::duration(j.engine_us)) }
+                } } }
+            } }
+        }
+        h2 { "For programs" }
+        ul.links {
+            li { a href="/docs/" { "API documentation" } }
+            li { a href="/openapi.json" { "OpenAPI document" } }
+            li { a href="/v1/jobs" { "jobs (JSON)" } }
+            li { a href="/v1/templates" { "templates (JSON)" } }
+        }
+    };
+    layout::answer(StatusCode::OK, layout::page("Jobs and templates", body))
+}
+
+/// No icon: an answer a browser takes without logging a failed request
+/// (it asks for `/favicon.ico` whatever a page says).
+#[utoipa::path(get, path = "/favicon.ico", operation_id = "favicon", tag = "pages",
+    responses((status = 204, description = "No icon")))]
+pub async fn favicon() -> StatusCode {
+    StatusCode::NO_CONTENT
+}
+
+/// The query of a page, or its error.
+fn query_of(q: Result<Query<HashMap<String, String>>, QueryRejection>) -> Result<HashMap<String, String>, ApiError> {
+    q.map(|Query(q)| q).map_err(|e| ApiError::BadQuery(vec![super::problem::FieldError::parameter("", e.body_text())]))
+}
+
+/// The job page's route and the form's take their id from the path.
+pub type IdPath = Path<String>;

@@ -1,0 +1,160 @@
+//! The plots of a dynamics job, from its stored samples: the angle and the
+//! speed against time with the events marked, the phase portrait ω(φ), and
+//! for a mechanism its joints' reactions, the path of each joint and the
+//! mechanism drawn at a sample over those paths.
+
+use super::chart::{Axis, Chart, Level, Listed, Pen};
+use super::{Drawn, Job, Options, deg, drawing, no_step, num, rows, sig, xy};
+use crate::engine::model::Mechanism;
+use serde_json::Value;
+
+const MECHANISM: &str = "/machine/mechanism";
+
+pub fn list(job: &Job) -> Vec<Listed> {
+    if rows(job.result, "samples").len() < 2 {
+        return Vec::new();
+    }
+    let mut out = vec![
+        Listed::new("angle", "Angle against time, with the events"),
+        Listed::new("speed", "Speed against time, with the events"),
+        Listed::new("phase", "Phase portrait: speed against angle"),
+    ];
+    let machine = job.result.get("machine").unwrap_or(&Value::Null);
+    let first = rows(machine, "samples").first();
+    if first.is_some_and(|s| !rows(s, "reactions").is_empty()) {
+        out.push(Listed::new("reactions", "Joint reactions |R| against time"));
+    }
+    if first.is_some_and(|s| !rows(s, "bodies").is_empty())
+        && let Some(m) = drawing::model(job.request, MECHANISM)
+    {
+        out.push(Listed::new("mechanism", "The mechanism at a sample, over the paths of its joints"));
+        out.extend(moving(&m).map(|j| Listed::new(format!("path-{j}"), format!("Path of joint {j}"))));
+    }
+    out
+}
+
+/// The joints of a mechanism that move (not between the ground and a body at the ground's pivot).
+fn moving(m: &Mechanism) -> impl Iterator<Item = &str> {
+    m.joints
+        .iter()
+        .filter(|j| j.bodies[0] != 0 || !matches!(j.kind, crate::engine::model::JointKind::Revolute))
+        .map(|j| j.name.as_str())
+}
+
+pub fn draw(job: &Job, name: &str, options: &Options) -> Drawn {
+    let Some(title) = list(job).into_iter().find(|p| p.name == name).map(|p| p.title) else { return Ok(None) };
+    let r = job.result;
+    let samples = rows(r, "samples");
+    let time = || Axis::new("time t", "s");
+    Ok(Some(match name {
+        "angle" => events(
+            r,
+            Chart::new(title, time(), Axis::new("angle φ", "deg")).line(
+                "φ(t)",
+                xy(samples, |s| num(s, "t"), |s| num(s, "angle").map(deg)),
+                Pen::solid(0),
+            ),
+        ),
+        "speed" => events(
+            r,
+            Chart::new(title, time(), Axis::new("speed ω", "rad/s")).line(
+                "ω(t)",
+                xy(samples, |s| num(s, "t"), |s| num(s, "speed")),
+                Pen::solid(0),
+            ),
+        ),
+        "phase" => Chart::new(title, Axis::new("angle φ", "deg"), Axis::new("speed ω", "rad/s")).line(
+            "ω against φ",
+            xy(samples, |s| num(s, "angle").map(deg), |s| num(s, "speed")),
+            Pen::solid(0),
+        ),
+        "reactions" => reactions(r, title),
+        "mechanism" => return mechanism(job, title, options.step.unwrap_or(0)),
+        path => return Ok(paths(job, title, Some(path.trim_start_matches("path-")))),
+    }))
+}
+
+/// The events as vertical lines: "turn 1", "turn 2", …, "end".
+fn events(r: &Value, mut c: Chart) -> Chart {
+    let mut turns = 0;
+    for e in rows(r, "events") {
+        let Some(t) = num(e, "t") else { continue };
+        let label = if e.get("kind").and_then(Value::as_str) == Some("turn") {
+            turns += 1;
+            format!("turn {turns}")
+        } else {
+            "end".to_string()
+        };
+        c = c.rule(Level::X(t), label, Pen::dashed(7));
+    }
+    let estimated = r.get("accuracy").and_then(|a| num(a, "estimated_error"));
+    c.subtitle(format!(
+        "{turns} turn{}; energy residual {}; estimated error of the angle {} rad",
+        if turns == 1 { "" } else { "s" },
+        num(r, "energy_residual").map_or("-".into(), sig),
+        estimated.map_or("-".into(), sig),
+    ))
+}
+
+fn machine_samples(r: &Value) -> &[Value] {
+    rows(r.get("machine").unwrap_or(&Value::Null), "samples")
+}
+
+fn reactions(r: &Value, title: String) -> Chart {
+    let samples = machine_samples(r);
+    let names: Vec<String> = samples
+        .first()
+        .map(|s| rows(s, "reactions").iter().filter_map(|x| x.get("joint")?.as_str().map(String::from)).collect())
+        .unwrap_or_default();
+    let mut c = Chart::new(title, Axis::new("time t", "s"), Axis::new("reaction force |R|", "N"));
+    for (k, j) in names.iter().enumerate().take(12) {
+        let at = |s: &Value| {
+            let x = rows(s, "reactions").iter().find(|x| x.get("joint").and_then(Value::as_str) == Some(j.as_str()))?;
+            Some(num(x, "fx")?.hypot(num(x, "fy")?))
+        };
+        c = c.line(format!("joint {j}"), xy(samples, |s| num(s, "t"), at), Pen::solid(k));
+    }
+    if names.len() > 12 {
+        c = c.subtitle(format!("the first 12 of {} joints", names.len()));
+    }
+    c
+}
+
+/// The paths of the joints (one, or all) over the run.
+fn paths(job: &Job, title: String, only: Option<&str>) -> Option<Chart> {
+    let m = drawing::model(job.request, MECHANISM)?;
+    let samples = machine_samples(job.result);
+    let poses: Vec<_> = samples.iter().map(|s| drawing::poses(rows(s, "bodies"))).collect();
+    let mut c = Chart::new(title, Axis::new("x", "m"), Axis::new("y", "m"));
+    c.equal = true;
+    for (k, name) in moving(&m).enumerate().filter(|(_, n)| only.is_none_or(|o| o == *n)) {
+        let j = m.joints.iter().find(|j| j.name == name)?;
+        let points: Vec<(f64, f64)> = poses.iter().filter_map(|p| drawing::point_of(&m, p, j)).collect();
+        if let (Some(&a), Some(&b)) = (points.first(), points.last()) {
+            c = c.mark(a, format!("{name} at t = 0")).mark(b, format!("{name} at the end"));
+        }
+        c = c.line(
+            format!("path of joint {name}"),
+            points,
+            if only.is_some() { Pen::solid(0) } else { Pen::dashed(k) },
+        );
+    }
+    Some(c)
+}
+
+fn mechanism(job: &Job, title: String, step: usize) -> Drawn {
+    let samples = machine_samples(job.result);
+    let s = samples.get(step).ok_or_else(|| no_step(step, samples.len()))?;
+    let Some(m) = drawing::model(job.request, MECHANISM) else { return Ok(None) };
+    let mut c = drawing::draw(&m, &drawing::poses(rows(s, "bodies")), rows(s, "reactions"), title);
+    if let Some(p) = paths(job, String::new(), None) {
+        c.lines.extend(p.lines.into_iter().map(|mut l| {
+            l.label = None;
+            l.pen = Pen { color: 7, dashed: true, width: 1 };
+            l
+        }));
+    }
+    let t = num(s, "t").map_or(String::new(), sig);
+    c.subtitle = Some(format!("sample {step} of 0 to {}: t = {t} s; dashed: the joints' paths", samples.len() - 1));
+    Ok(Some(c))
+}

@@ -1,0 +1,175 @@
+//! The flywheel's plots, from its stored result: M*(φ) with the lobes of
+//! work, W(φ) with ΔE, ω(φ) over the cycle, and Wittenbauer's diagram W
+//! against I* with the two tangents that give the exact inertia.
+
+use super::chart::{Arrow, Axis, Chart, Fill, Level, Listed, Pen};
+use super::{Drawn, Job, Options, deg, num, rows, sig, xy};
+use serde_json::Value;
+
+const PLOTS: [(&str, &str); 4] = [
+    ("torque", "Reduced torque M*(φ) and the lobes of work A_i"),
+    ("work", "Work W(φ) over the cycle and the energy fluctuation ΔE"),
+    ("speed", "Speed ω(φ) over the cycle with the exact inertia"),
+    ("wittenbauer", "Wittenbauer's diagram: W against I*(φ), and the tangents that give the inertia"),
+];
+
+/// The flywheel's plots: all four when the result has its samples (the
+/// default), none with `samples: 0`.
+pub fn list(job: &Job) -> Vec<Listed> {
+    if rows(job.result, "samples").len() < 2 {
+        return Vec::new();
+    }
+    PLOTS.iter().map(|(n, t)| Listed::new(*n, *t)).collect()
+}
+
+pub fn draw(job: &Job, name: &str, _: &Options) -> Drawn {
+    if rows(job.result, "samples").len() < 2 {
+        return Ok(None);
+    }
+    let title = PLOTS.iter().find(|p| p.0 == name).map(|p| p.1.to_string());
+    Ok(title.and_then(|title| match name {
+        "torque" => Some(torque(job, title)),
+        "work" => Some(work(job.result, title)),
+        "speed" => Some(speed(job.result, title)),
+        _ => wittenbauer(job.result, title),
+    }))
+}
+
+fn phi() -> Axis {
+    Axis::new("angle of the reference shaft φ", "deg")
+}
+
+fn samples(r: &Value, key: &str) -> Vec<(f64, f64)> {
+    xy(rows(r, "samples"), |s| num(s, "angle").map(deg), |s| num(s, key))
+}
+
+/// M*(φ) and its lobes. With a balance torque M_b (solved, constant), the
+/// course's picture: the other torques with their sign changed, M_b − M*,
+/// against the line M_b, the lobes between them (the same areas as between
+/// M* and zero).
+fn torque(job: &Job, title: String) -> Chart {
+    let r = job.result;
+    let m = samples(r, "reduced_torque");
+    let balance = num(r, "balance_torque").map(|b| b * balance_ratio(job.request));
+    let level = balance.unwrap_or(0.0);
+    let curve: Vec<(f64, f64)> = m.iter().map(|&(x, y)| (x, level - y)).collect();
+    let y = Axis::new("torque on the reference shaft", "N·m");
+    let mut c = match balance {
+        Some(b) => Chart::new(title, phi(), y)
+            .line("M_b − M*: the other torques, sign changed", curve.clone(), Pen::solid(0))
+            .rule(Level::Y(b), format!("balance torque M_b = {} N·m", sig(b)), Pen::solid(1)),
+        None => {
+            Chart::new(title, phi(), y).line("M*(φ)", m.clone(), Pen::solid(0)).rule(Level::Y(0.0), "", Pen::dashed(7))
+        }
+    };
+    let shown = if balance.is_some() { &curve } else { &m };
+    for (k, a) in rows(r, "areas").iter().enumerate() {
+        let (Some(from), Some(to), Some(w)) = (num(a, "from"), num(a, "to"), num(a, "work")) else { continue };
+        let (from, to) = (deg(from), deg(to));
+        let inside: Vec<(f64, f64)> = shown.iter().copied().filter(|p| p.0 > from && p.0 < to).collect();
+        let mut polygon = vec![(from, level)];
+        polygon.extend(inside.iter().copied());
+        polygon.push((to, level));
+        c.fills.push(Fill { points: polygon, color: if w >= 0.0 { 2 } else { 1 }, opacity: 0.25 });
+        let peak = inside.iter().copied().max_by(|p, q| (p.1 - level).abs().total_cmp(&(q.1 - level).abs()));
+        let at = peak.map_or(((from + to) / 2.0, level), |p| ((from + to) / 2.0, (p.1 + level) / 2.0));
+        c.marks.push(super::chart::Mark {
+            at,
+            text: format!("A{} = {}{} J", k + 1, if w > 0.0 { "+" } else { "" }, sig(w)),
+            dot: false,
+        });
+    }
+    for x in r.get("crossings").and_then(Value::as_array).into_iter().flatten().filter_map(Value::as_f64) {
+        c = c.mark((deg(x), level), "");
+    }
+    c.subtitle(format!(
+        "{} lobes; shaded green where the torques give work (A_i > 0), red where they take it",
+        rows(r, "areas").len()
+    ))
+}
+
+/// The ratio of the balance torque's shaft to the reference shaft (1 unless the request says).
+fn balance_ratio(request: &Value) -> f64 {
+    rows(request, "torques")
+        .iter()
+        .find(|t| t.get("balance").and_then(Value::as_bool) == Some(true))
+        .and_then(|t| num(t, "ratio"))
+        .unwrap_or(1.0)
+}
+
+/// W(φ), its values S_i at the crossings, and ΔE between its extremes.
+fn work(r: &Value, title: String) -> Chart {
+    let w = samples(r, "work");
+    let de = num(r, "energy_fluctuation").unwrap_or(f64::NAN);
+    let ends: Vec<f64> = rows(r, "areas").iter().filter_map(|a| num(a, "to")).map(deg).collect();
+    // S_n is 0 by the cycle's balance; its rounding error (1e-13 J) would print as such.
+    let tiny = |s: f64| if s.abs() < 1e-9 * de.abs() { 0.0 } else { s };
+    let sums: Vec<f64> = rows(r, "cumulative").iter().filter_map(Value::as_f64).map(tiny).collect();
+    let (lo, hi) = sums.iter().fold((0.0_f64, 0.0_f64), |(a, b), &s| (a.min(s), b.max(s)));
+    let mut c = Chart::new(title, phi(), Axis::new("work since φ = 0, W(φ)", "J"))
+        .line("W(φ) = ∫ M* dφ", w.clone(), Pen::solid(0))
+        .rule(Level::Y(hi), format!("S_max = {} J", sig(hi)), Pen::dashed(2))
+        .rule(Level::Y(lo), format!("S_min = {} J", sig(lo)), Pen::dashed(1));
+    for (k, (x, s)) in ends.iter().zip(&sums).enumerate() {
+        c = c.mark((*x, *s), format!("S{} = {}", k + 1, sig(*s)));
+    }
+    let x_arrow = w.last().map_or(0.0, |p| p.0 * 0.04);
+    c.arrows.push(Arrow { from: (x_arrow, lo), to: (x_arrow, hi), color: 6, label: format!("ΔE = {} J", sig(de)) });
+    c.subtitle(format!("ΔE = S_max − S_min = {} J", sig(de)))
+}
+
+/// ω(φ) with ω_max, ω_min and ω_a = (ω_max + ω_min)/2.
+fn speed(r: &Value, title: String) -> Chart {
+    let (max, min) = (num(r, "omega_max").unwrap_or(f64::NAN), num(r, "omega_min").unwrap_or(f64::NAN));
+    let mean = (max + min) / 2.0;
+    let mut c = Chart::new(title, phi(), Axis::new("speed of the reference shaft ω", "rad/s"))
+        .line("ω(φ)", samples(r, "speed"), Pen::solid(0))
+        .rule(Level::Y(max), format!("ω_max = {}", sig(max)), Pen::dashed(2))
+        .rule(Level::Y(mean), format!("ω_a = {}", sig(mean)), Pen::dashed(7))
+        .rule(Level::Y(min), format!("ω_min = {}", sig(min)), Pen::dashed(1));
+    if let (Some(a), Some(b)) = (num(r, "phi_at_omega_max"), num(r, "phi_at_omega_min")) {
+        c = c.mark((deg(a), max), "").mark((deg(b), min), "");
+    }
+    let inertia = num(r, "inertia_exact").unwrap_or(f64::NAN);
+    c.subtitle(format!("ε = (ω_max − ω_min)/ω_a = {}; I = {} kg·m² (exact)", sig((max - min) / mean), sig(inertia)))
+}
+
+/// W(φ) against I*(φ) with the two tangents of slope ω²/2, for ω_max and
+/// ω_min: lines through (−I, −T₀), the origin of the kinetic energy
+/// T = T₀ + W = ½(I + I*)ω². Their point of contact is where the speed is
+/// extreme; that they touch the curve checks I and T₀.
+fn wittenbauer(r: &Value, title: String) -> Option<Chart> {
+    let s = rows(r, "samples");
+    let curve = xy(s, |x| num(x, "reduced_inertia"), |x| num(x, "work"));
+    let (inertia, t0) = (num(r, "inertia_exact")?, num(r, "kinetic_energy_at_start")?);
+    let (max, min) = (num(r, "omega_max")?, num(r, "omega_min")?);
+    let (x0, x1) = curve.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.0), b.max(p.0)));
+    let pad = ((x1 - x0) * 0.15).max(x0.abs().max(1e-3) * 0.02);
+    let tangent = |w: f64| {
+        let slope = w * w / 2.0;
+        let at = |x: f64| slope * (x + inertia) - t0;
+        vec![(x0 - pad, at(x0 - pad)), (x1 + pad, at(x1 + pad))]
+    };
+    let touch = |w: f64, far: fn(f64, f64) -> bool| {
+        let gap = |p: &(f64, f64)| p.1 - (w * w / 2.0) * (p.0 + inertia);
+        curve.iter().copied().reduce(|a, b| if far(gap(&b), gap(&a)) { b } else { a })
+    };
+    let mut c =
+        Chart::new(title, Axis::new("reduced inertia I*(φ)", "kg·m²"), Axis::new("work since φ = 0, W(φ)", "J"))
+            .line("W against I* over the cycle", curve.clone(), Pen::solid(0))
+            .line(format!("tangent of slope ω_max²/2, ω_max = {} rad/s", sig(max)), tangent(max), Pen::dashed(2))
+            .line(format!("tangent of slope ω_min²/2, ω_min = {} rad/s", sig(min)), tangent(min), Pen::dashed(1));
+    if let Some(p) = touch(max, |a, b| a > b) {
+        c = c.mark(p, "ω_max");
+    }
+    if let Some(p) = touch(min, |a, b| a < b) {
+        c = c.mark(p, "ω_min");
+    }
+    Some(c.subtitle(format!(
+        "The tangents meet at (−I, −T₀) = ({} kg·m², {} J), off this view: I = {} kg·m² (exact), T₀ = {} J",
+        sig(-inertia),
+        sig(-t0),
+        sig(inertia),
+        sig(t0)
+    )))
+}

@@ -1,0 +1,171 @@
+//! The plots of a kinetostatics job, from its stored steps: the driving
+//! action and every joint's reaction against the input, each joint's polar
+//! diagram (f_x against f_y over the sweep), I*(φ) and M*(φ), and the
+//! mechanism drawn at a step with its reactions to scale.
+
+use super::chart::{Axis, Chart, Level, Listed, Mark, Pen};
+use super::{Drawn, Job, Options, deg, drawing, no_step, num, rows, sig, xy};
+use serde_json::Value;
+
+/// Most joints drawn in the reactions' plot (the largest ones).
+const MOST_JOINTS: usize = 12;
+
+pub fn list(job: &Job) -> Vec<Listed> {
+    let steps = rows(job.result, "steps");
+    let has = |key: &str| steps.iter().any(|s| s.get(key).is_some_and(|v| !v.is_null()));
+    let mut out = Vec::new();
+    if has("driving") {
+        out.push(Listed::new("driving", "Driving action against the input"));
+    }
+    if has("reactions") {
+        out.push(Listed::new("reactions", "Joint reactions |R| against the input"));
+        out.extend(
+            joints(job.result)
+                .into_iter()
+                .map(|j| Listed::new(format!("reaction-{j}"), format!("Polar diagram of the reaction at joint {j}"))),
+        );
+    }
+    if has("reduced_inertia") {
+        out.push(Listed::new("reduced-inertia", "Reduced inertia I*(φ)"));
+        out.push(Listed::new("reduced-torque", "Reduced torque M*(φ) of the loads"));
+    }
+    if has("kinematics") && drawing::model(job.request, "/mechanism").is_some() {
+        out.push(Listed::new("mechanism", "The mechanism at a step, with its joint reactions to scale"));
+    }
+    out
+}
+
+pub fn draw(job: &Job, name: &str, options: &Options) -> Drawn {
+    let Some(title) = list(job).into_iter().find(|p| p.name == name).map(|p| p.title) else { return Ok(None) };
+    let r = job.result;
+    Ok(Some(match name {
+        "driving" => driving(r, title),
+        "reactions" => reactions(r, title),
+        "reduced-inertia" => Chart::new(title, input_axis(r), Axis::new("I*", "kg·m²")).line(
+            "I*(φ)",
+            along(r, "reduced_inertia"),
+            Pen::solid(0),
+        ),
+        "reduced-torque" => Chart::new(title, input_axis(r), Axis::new("M*", "N·m"))
+            .line("M*(φ), the loads reduced to the input", along(r, "reduced_torque"), Pen::solid(0))
+            .rule(Level::Y(0.0), "", Pen::dashed(7)),
+        "mechanism" => return mechanism(job, title, options.step.unwrap_or(0)),
+        polar => self::polar(r, polar.trim_start_matches("reaction-"), title),
+    }))
+}
+
+/// The joints' names, in the order of the first step that has reactions.
+fn joints(r: &Value) -> Vec<String> {
+    let first = rows(r, "steps").iter().find_map(|s| s.get("reactions").and_then(Value::as_array));
+    first.into_iter().flatten().filter_map(|x| x.get("joint")?.as_str().map(String::from)).collect()
+}
+
+fn angular(r: &Value) -> bool {
+    rows(r, "inputs").first().and_then(|i| i.get("coordinate_unit")).and_then(Value::as_str) == Some("rad")
+}
+
+/// The first input of a step, in degrees for an angle.
+fn input(r: &Value) -> impl Fn(&Value) -> Option<f64> {
+    let angular = angular(r);
+    move |s: &Value| {
+        let v = s.get("input")?;
+        let x = v.as_f64().or_else(|| v.get(0)?.as_f64())?;
+        Some(if angular { deg(x) } else { x })
+    }
+}
+
+fn input_axis(r: &Value) -> Axis {
+    let joint = rows(r, "inputs").first().and_then(|i| i.get("joint")).and_then(Value::as_str).unwrap_or("");
+    if angular(r) {
+        Axis::new(format!("input angle at joint {joint}"), "deg")
+    } else {
+        Axis::new(format!("input at joint {joint}"), "m")
+    }
+}
+
+fn along(r: &Value, key: &str) -> Vec<(f64, f64)> {
+    xy(rows(r, "steps"), input(r), |s| num(s, key))
+}
+
+fn driving(r: &Value, title: String) -> Chart {
+    let inputs = rows(r, "inputs");
+    let unit = inputs.first().and_then(|i| i.get("driving_unit")).and_then(Value::as_str).unwrap_or("N*m");
+    let what = if unit == "N" { "driving force" } else { "driving torque" };
+    let mut c = Chart::new(title, input_axis(r), Axis::new(what, unit.replace('*', "·")));
+    for (k, i) in inputs.iter().enumerate().filter(|(_, i)| i.get("driving_unit").and_then(Value::as_str) == Some(unit))
+    {
+        let at = |s: &Value| s.get("driving").and_then(|d| d.as_f64().or_else(|| d.get(k)?.as_f64()));
+        let joint = i.get("joint").and_then(Value::as_str).unwrap_or("");
+        c = c.line(format!("at joint {joint}"), xy(rows(r, "steps"), input(r), at), Pen::solid(k));
+    }
+    let summary = r.get("summary");
+    let mean = summary.and_then(|s| s.get("mean_driving")).and_then(|m| m.as_f64().or_else(|| m.get(0)?.as_f64()));
+    match mean {
+        Some(m) => c.rule(Level::Y(m), format!("mean {}", sig(m)), Pen::dashed(7)),
+        None => c,
+    }
+}
+
+fn magnitude(x: &Value) -> Option<f64> {
+    Some(num(x, "fx")?.hypot(num(x, "fy")?))
+}
+
+fn reaction<'a>(s: &'a Value, joint: &str) -> Option<&'a Value> {
+    s.get("reactions")?.as_array()?.iter().find(|x| x.get("joint").and_then(Value::as_str) == Some(joint))
+}
+
+fn reactions(r: &Value, title: String) -> Chart {
+    let mut names = joints(r);
+    let largest = |j: &String| rows(r, "steps").iter().filter_map(|s| magnitude(reaction(s, j)?)).fold(0.0, f64::max);
+    let mut sized: Vec<(f64, String)> = names.drain(..).map(|j| (largest(&j), j)).collect();
+    let total = sized.len();
+    sized.sort_by(|a, b| b.0.total_cmp(&a.0));
+    sized.truncate(MOST_JOINTS);
+    let mut c = Chart::new(title, input_axis(r), Axis::new("reaction force |R|", "N"));
+    for (k, (_, j)) in sized.iter().enumerate() {
+        let points = xy(rows(r, "steps"), input(r), |s| magnitude(reaction(s, j)?));
+        c = c.line(format!("joint {j}"), points, Pen::solid(k));
+    }
+    if total > MOST_JOINTS {
+        c = c.subtitle(format!("the {MOST_JOINTS} largest of {total} joints; each joint's own plot shows the rest"));
+    }
+    c
+}
+
+/// f_x against f_y of one joint's reaction over the sweep, from the origin.
+fn polar(r: &Value, joint: &str, title: String) -> Chart {
+    let steps = rows(r, "steps");
+    let points: Vec<(f64, f64)> =
+        steps.iter().filter_map(|s| reaction(s, joint)).filter_map(|x| Some((num(x, "fx")?, num(x, "fy")?))).collect();
+    let on = steps.iter().find_map(|s| reaction(s, joint)).map(|x| {
+        let name = |k: &str| x.get(k).and_then(Value::as_str).unwrap_or("").to_string();
+        (name("on"), name("by"))
+    });
+    let (on, by) = on.unwrap_or_default();
+    let mut c = Chart::new(title, Axis::new("f_x", "N"), Axis::new("f_y", "N")).line(
+        format!("force on {on} by {by} over the sweep"),
+        points.clone(),
+        Pen::solid(0),
+    );
+    c.equal = true;
+    c.marks.push(Mark { at: (0.0, 0.0), text: "O".into(), dot: true });
+    if let Some(&first) = points.first() {
+        let x0 = input(r)(&steps[0]).map_or(String::new(), |x| format!(" (input {})", sig(x)));
+        c = c.mark(first, format!("first step{x0}"));
+    }
+    let largest = points.iter().map(|p| p.0.hypot(p.1)).fold(0.0, f64::max);
+    c.subtitle(format!("the arrow from O to the curve is the force; largest {} N", sig(largest)))
+}
+
+fn mechanism(job: &Job, title: String, step: usize) -> Drawn {
+    let steps = rows(job.result, "steps");
+    let s = steps.get(step).ok_or_else(|| no_step(step, steps.len()))?;
+    let Some(m) = drawing::model(job.request, "/mechanism") else { return Ok(None) };
+    let poses = drawing::poses(s.get("kinematics").and_then(Value::as_array).map_or(&[], Vec::as_slice));
+    let reactions = s.get("reactions").and_then(Value::as_array).map_or(&[][..], Vec::as_slice);
+    let x = input(job.result)(s).map_or(String::new(), sig);
+    let unit = if angular(job.result) { "°" } else { " m" };
+    let mut c = drawing::draw(&m, &poses, reactions, title);
+    c.subtitle = Some(format!("step {step} of 0 to {}: input {x}{unit}", steps.len() - 1));
+    Ok(Some(c))
+}

@@ -1,0 +1,223 @@
+//! Pictures of a stored job: `GET /v1/jobs/{id}/plots` lists them,
+//! `GET /v1/jobs/{id}/plots/{name}.svg` draws one. A kind says which plots
+//! its jobs have and builds each as a [`Chart`] from the stored result (and
+//! the stored request where the geometry lives), through [`super::kind::Kind`];
+//! one renderer ([`svg`]) draws every chart. Nothing is computed again: the
+//! plots show the numbers the result holds.
+//!
+//! Symbols: φ the reference shaft's angle, M*(φ) and I*(φ) the reduced torque
+//! and inertia, W(φ) = ∫₀^φ M* dφ the work since φ = 0 (its values at the
+//! crossings are the S_i), ΔE = S_max − S_min, ω_a the mean speed, ε the
+//! irregularity, I the flywheel's constant inertia, T₀ the kinetic energy at
+//! φ = 0.
+
+pub mod chart;
+mod drawing;
+mod dynamics;
+mod flywheel;
+mod kinetostatics;
+mod machines;
+pub mod svg;
+
+use super::AppState;
+use super::kind;
+use super::problem::{ApiError, FieldError, ReadErrors};
+use super::read::{query, result_tree};
+use axum::Json;
+use axum::extract::rejection::QueryRejection;
+use axum::extract::{Path, Query, State};
+use axum::http::header;
+use axum::response::{IntoResponse, Response};
+pub use chart::{Chart, Listed};
+pub use dynamics::{draw as dynamics_plot, list as dynamics_plots};
+pub use flywheel::{draw as flywheel_plot, list as flywheel_plots};
+pub use kinetostatics::{draw as kinetostatics_plot, list as kinetostatics_plots};
+pub use machines::{gear_plot, gear_plots, rotor_plot, rotor_plots};
+use serde::Serialize;
+use serde_json::Value;
+use std::collections::HashMap;
+use utoipa::ToSchema;
+
+/// The plot's route as axum routes it, and as the document says it (axum
+/// cannot match `{name}.svg` within one segment; the handler wants the `.svg`).
+pub const ROUTED: &str = "/v1/jobs/{id}/plots/{name}";
+pub const DOCUMENTED: &str = "/v1/jobs/{id}/plots/{name}.svg";
+
+/// A stored job as the plots read it.
+pub struct Job<'a> {
+    pub request: &'a Value,
+    pub result: &'a Value,
+}
+
+/// What a plot's query may choose.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Options {
+    /// The step (kinetostatics) or sample (dynamics) a drawing of the mechanism shows.
+    pub step: Option<usize>,
+}
+
+/// What a kind's `plot` answers: the chart, none of that name, or a 400.
+pub type Drawn = Result<Option<Chart>, ApiError>;
+
+/// One plot of a job, as listed.
+#[derive(Serialize, ToSchema)]
+pub struct PlotLink {
+    /// Name in the plot's URL.
+    #[schema(example = "torque")]
+    pub name: String,
+    #[schema(example = "Reduced torque M*(φ) and the lobes of work")]
+    pub title: String,
+    /// The plot as SVG.
+    #[schema(example = "/v1/jobs/0d1e5d8a-6a3c-4f4e-9a53-2f1c0b7e9d41/plots/torque.svg")]
+    pub href: String,
+}
+
+/// The plots of a job.
+#[derive(Serialize, ToSchema)]
+pub struct PlotList {
+    pub plots: Vec<PlotLink>,
+}
+
+/// The plots of a job: each with its title and its SVG's address. A kind
+/// without curves (a gear train, equivalent masses, a check) has none; a
+/// job whose result holds no curve (a flywheel with `samples: 0`) has those
+/// its result can draw.
+#[utoipa::path(get, path = "/v1/jobs/{id}/plots", operation_id = "list_job_plots", tag = "jobs",
+    params(("id" = String, Path, description = "Job id")),
+    responses((status = 200, description = "The job's plots", body = PlotList), ReadErrors))]
+pub async fn list(State(state): State<AppState>, Path(id): Path<String>) -> Result<Json<PlotList>, ApiError> {
+    let (listed, _) = listed(&state, &id).await?;
+    let plots =
+        listed.into_iter().map(|p| PlotLink { href: href(&id, &p.name), name: p.name, title: p.title }).collect();
+    Ok(Json(PlotList { plots }))
+}
+
+/// The address of a job's plot.
+pub fn href(id: &str, name: &str) -> String {
+    format!("/v1/jobs/{id}/plots/{}.svg", segment(name))
+}
+
+/// `text` as one segment of a URL's path: every byte but the unreserved
+/// ones (RFC 3986: letters, digits, `-._~`) percent-encoded.
+pub fn segment(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for b in text.bytes() {
+        if b.is_ascii_alphanumeric() || b"-._~".contains(&b) {
+            out.push(b as char);
+        } else {
+            out.push_str(&format!("%{b:02X}"));
+        }
+    }
+    out
+}
+
+/// One plot of a job as SVG (`image/svg+xml`), drawn from its stored result:
+/// a title, axes named with their units, a legend below.
+#[utoipa::path(get, path = "/v1/jobs/{id}/plots/{name}.svg", operation_id = "get_job_plot", tag = "jobs",
+    params(
+        ("id" = String, Path, description = "Job id"),
+        ("name" = String, Path, description = "The plot's name, as `GET /v1/jobs/{id}/plots` lists it: `torque`, `speed`, `mechanism`"),
+        ("step" = Option<usize>, Query, description = "The drawing of a mechanism (`mechanism`): the step \
+            (kinetostatics) or sample (dynamics) it shows, from 0 (the default)"),
+    ),
+    responses(
+        (status = 200, description = "The plot", content_type = "image/svg+xml", body = String),
+        (status = 400, description = "A step beyond the job's, or an unknown query parameter",
+            body = crate::api::problem::Problem, content_type = "application/problem+json"),
+        (status = 404, description = "No job with this id, or no plot of this name (the message lists the job's plots)",
+            body = crate::api::problem::Problem, content_type = "application/problem+json"),
+        (status = 503, description = "Too many large answers are being sent, or the database is unavailable",
+            body = crate::api::problem::Problem, content_type = "application/problem+json"),
+    ))]
+pub async fn plot(
+    State(state): State<AppState>,
+    Path((id, file)): Path<(String, String)>,
+    q: Result<Query<HashMap<String, String>>, QueryRejection>,
+) -> Result<Response, ApiError> {
+    let q = query(q, &["step"])?;
+    let options = Options { step: step(&q)? };
+    let Some(name) = file.strip_suffix(".svg") else {
+        let message = format!("'{file}': a plot's address ends in .svg (GET /v1/jobs/{id}/plots lists them)");
+        return Err(ApiError::NoPlot { id, name: file, known: vec![message] });
+    };
+    let svg = render(&state, &id, name, options).await?;
+    Ok(([(header::CONTENT_TYPE, "image/svg+xml")], svg).into_response())
+}
+
+/// The SVG of plot `name` of job `id` (also the pages' pictures).
+pub async fn render(state: &AppState, id: &str, name: &str, options: Options) -> Result<String, ApiError> {
+    let (row, result, _reserved) = result_tree(state, id).await?;
+    let request = serde_json::from_slice::<Value>(&row.request).unwrap_or_default();
+    let job = Job { request: &request, result: &result };
+    let kind = kind::find(&row.kind);
+    let chart = match kind {
+        Some(k) => k.plot(&job, name, &options)?,
+        None => None,
+    };
+    let Some(chart) = chart else {
+        let known = kind.map(|k| k.plots(&job)).unwrap_or_default().into_iter().map(|p| p.name).collect();
+        return Err(ApiError::NoPlot { id: id.into(), name: name.into(), known });
+    };
+    tokio::task::spawn_blocking(move || svg::render(&chart))
+        .await
+        .map_err(|e| ApiError::Internal(format!("plot: {e}")))?
+        .map_err(ApiError::Internal)
+}
+
+/// The plots a stored job has, and the job's row.
+pub async fn listed(state: &AppState, id: &str) -> Result<(Vec<Listed>, crate::store::JobRow), ApiError> {
+    let (row, result, _reserved) = result_tree(state, id).await?;
+    let request = serde_json::from_slice::<Value>(&row.request).unwrap_or_default();
+    let plots = kind::find(&row.kind).map(|k| k.plots(&Job { request: &request, result: &result }));
+    Ok((plots.unwrap_or_default(), row))
+}
+
+fn step(q: &HashMap<String, String>) -> Result<Option<usize>, ApiError> {
+    q.get("step")
+        .map(|s| {
+            s.trim().parse::<usize>().map_err(|_| {
+                ApiError::BadQuery(vec![FieldError::parameter("step", format!("'{s}': must be a whole number from 0"))])
+            })
+        })
+        .transpose()
+}
+
+/// A step beyond the result's `count` steps, as a 400 at `?step=`.
+pub fn no_step(step: usize, count: usize) -> ApiError {
+    let message =
+        format!("{step}: the job has {count} step{} (0 to {})", if count == 1 { "" } else { "s" }, count.max(1) - 1);
+    ApiError::BadQuery(vec![FieldError::parameter("step", message)])
+}
+
+/// The number at `key` of `row`.
+pub fn num(row: &Value, key: &str) -> Option<f64> {
+    row.get(key).and_then(Value::as_f64)
+}
+
+/// The rows of the array at `key` of `v`.
+pub fn rows<'a>(v: &'a Value, key: &str) -> &'a [Value] {
+    v.get(key).and_then(Value::as_array).map_or(&[], Vec::as_slice)
+}
+
+/// (x, y) of every row where both are numbers.
+pub fn xy(rows: &[Value], x: impl Fn(&Value) -> Option<f64>, y: impl Fn(&Value) -> Option<f64>) -> Vec<(f64, f64)> {
+    rows.iter().filter_map(|r| Some((x(r)?, y(r)?))).collect()
+}
+
+/// `v` with four significant figures, for labels.
+pub fn sig(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let magnitude = v.abs().log10().floor();
+    if !(-3.0..6.0).contains(&magnitude) {
+        return format!("{v:.3e}");
+    }
+    let decimals = (3.0 - magnitude).max(0.0) as usize;
+    format!("{v:.decimals$}")
+}
+
+/// Radians to degrees, for the angle axes.
+pub fn deg(rad: f64) -> f64 {
+    rad.to_degrees()
+}

@@ -1,0 +1,114 @@
+//! The pages in a real browser: Debian's Chromium, headless, driven by
+//! tests/clients/browser.py over the DevTools protocol against the real
+//! binary. Each page loads with no console message and no request outside
+//! the service, has its elements, fits a phone's width and prints; the
+//! template's form is filled in and submitted with real key and mouse
+//! events; every plot opens as an SVG document. Screenshots (desktop and
+//! phone) and PDFs are kept in target/screenshots/ (a CI artefact).
+//!
+//! Without Chromium the test says so and passes, unless
+//! MECHDYN_REQUIRE_CHROMIUM is set (CI sets it).
+
+use crate::crash::{free_port, http, start};
+use crate::helpers::request;
+use serde_json::{Value, json};
+use std::process::Command;
+
+const CHROMIUM: &str = "/usr/bin/chromium";
+
+fn posted(port: u16, path: &str, body: &Value) -> String {
+    let (status, text) = http(port, "POST", path, &body.to_string()).unwrap();
+    assert_eq!(status, 201, "{text}");
+    serde_json::from_str::<Value>(&text).unwrap()["id"].as_str().unwrap().to_string()
+}
+
+fn plots(port: u16, id: &str) -> Vec<String> {
+    let (_, text) = http(port, "GET", &format!("/v1/jobs/{id}/plots"), "").unwrap();
+    let list: Value = serde_json::from_str(&text).unwrap();
+    list["plots"].as_array().unwrap().iter().map(|p| p["href"].as_str().unwrap().to_string()).collect()
+}
+
+#[test]
+fn chromium_loads_every_page_submits_the_form_and_opens_every_plot() {
+    if !std::path::Path::new(CHROMIUM).exists() {
+        assert!(std::env::var_os("MECHDYN_REQUIRE_CHROMIUM").is_none(), "Chromium is required");
+        eprintln!("skipped: Debian's chromium is not installed");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let port = free_port();
+    let mut service = start(&format!("sqlite://{}/pages.db", dir.path().display()), port);
+    let flywheel = posted(port, "/v1/flywheel?label=%3Cscript%3Ealert(1)%3C%2Fscript%3E", &request("p103_slider"));
+    let kinetostatics = posted(port, "/v1/kinetostatics", &request("k1_offset_slider_crank"));
+    let dynamics = posted(port, "/v1/dynamics", &request("p68_two_link_arm"));
+    let svgs: Vec<String> = [&flywheel, &kinetostatics, &dynamics].iter().flat_map(|id| plots(port, id)).collect();
+    let out = concat!(env!("CARGO_MANIFEST_DIR"), "/target/screenshots");
+    let pages = [
+        ("home", "/".to_string(), 0),
+        ("job-flywheel", format!("/jobs/{flywheel}"), 4),
+        ("job-kinetostatics", format!("/jobs/{kinetostatics}?step=3"), plots(port, &kinetostatics).len()),
+        ("job-dynamics", format!("/jobs/{dynamics}"), plots(port, &dynamics).len()),
+        ("template-form", "/templates/p103-slider-flywheel".to_string(), 0),
+    ];
+    let plan = json!({
+        "base": format!("http://127.0.0.1:{port}"),
+        "out": out,
+        "pages": pages.iter().map(|(name, path, _)| json!({"name": name, "path": path,
+            "selectors": ["h1", "table", "figure img", "form input"]})).collect::<Vec<_>>(),
+        "forms": [{"name": "template-submitted", "path": "/templates/p103-slider-flywheel",
+            "fill": {"F": "1200", "eps": "3 %"}, "submit": "button[type=submit]", "selectors": ["figure img"]}],
+        "svgs": svgs,
+    });
+    let plan_file = dir.path().join("plan.json");
+    std::fs::write(&plan_file, plan.to_string()).unwrap();
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/clients/browser.py");
+    let run = Command::new("python3").arg(script).arg(&plan_file).output().unwrap();
+    let (_, same) = http(port, "GET", "/v1/templates/p103-slider-flywheel/job?F=1200&eps=3%20%25", "").unwrap();
+    let _ = service.kill();
+    let _ = service.wait();
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    let report: Value = serde_json::from_slice(&run.stdout).unwrap();
+    let base = format!("http://127.0.0.1:{port}/");
+    let clean = |what: &str, r: &Value| {
+        assert!(r.get("error").is_none(), "{what}: {}", r["error"]);
+        assert_eq!(r["status"], 200, "{what}: {r}");
+        assert_eq!(r["console"], json!([]), "{what}: no console message");
+        for url in r["requests"].as_array().unwrap() {
+            assert!(url.as_str().unwrap().starts_with(&base), "{what} asked outside the service: {url}");
+        }
+        assert_eq!(r["failed"], json!([]), "{what}");
+        assert_eq!(r["bad_responses"], json!([]), "{what}");
+    };
+    for (name, _, figures) in &pages {
+        let r = &report["pages"][name];
+        clean(name, r);
+        assert_eq!(r["counts"]["h1"], 1, "{name}");
+        assert_eq!(r["counts"]["figure img"], *figures, "{name}: every plot shown");
+        assert_eq!(r["broken_images"], json!([]), "{name}");
+        assert_eq!(r["phone_inner_width"], 390, "{name}: laid out for a phone's width");
+        assert_eq!(r["phone_overflow"], false, "{name}: no sideways scrolling on a phone");
+        assert!(r["pdf_bytes"].as_u64().unwrap() > 1000, "{name} prints");
+    }
+    assert!(report["pages"]["home"]["counts"]["table"].as_u64().unwrap() >= 2, "templates and jobs");
+    assert_eq!(report["pages"]["template-form"]["counts"]["form input"], 4, "P.103's four parameters");
+    assert!(
+        report["pages"]["job-flywheel"]["title"].as_str().unwrap().contains("<script>alert(1)</script>"),
+        "the label, as text"
+    );
+    let form = &report["forms"]["template-submitted"];
+    clean("the submitted form", form);
+    assert_eq!(form["filled"], json!({"F": "1200", "eps": "3 %"}));
+    assert!(form["url"].as_str().unwrap().starts_with(&format!("{base}jobs/")), "{form}");
+    assert_eq!(form["counts"]["figure img"], 4, "the job's page with its plots");
+    // The job the browser made is the one the JSON route gives for these parameters.
+    let same: Value = serde_json::from_str(&same).unwrap();
+    assert_eq!(form["url"], format!("{base}jobs/{}", same["id"].as_str().unwrap()));
+    assert_eq!(report["svgs"].as_object().unwrap().len(), svgs.len());
+    for (path, r) in report["svgs"].as_object().unwrap() {
+        clean(path, r);
+        assert_eq!(r["content_type"], "image/svg+xml", "{path}");
+        assert_eq!(r["root"], "svg", "{path}");
+        assert_eq!(r["parsererror"], false, "{path}");
+    }
+    eprintln!("Chromium {}: screenshots in {out}", report["chromium"]);
+}
