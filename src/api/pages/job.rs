@@ -125,7 +125,7 @@ pub fn duration(us: i64) -> String {
     if s >= 1.0 { format!("{s:.2} s") } else { format!("{:.2} ms", s * 1e3) }
 }
 
-/// Timing, accuracy and warnings.
+/// Timing, accuracy (estimates: four figures) and warnings.
 fn summary(row: &JobRow, result: &Value) -> Markup {
     let warnings: Vec<&str> =
         result.get("warnings").and_then(Value::as_array).into_iter().flatten().filter_map(Value::as_str).collect();
@@ -136,7 +136,8 @@ fn summary(row: &JobRow, result: &Value) -> Markup {
         @if let Some(a) = accuracy {
             div.scroll { table.accuracy { tbody { @for (k, v) in a { tr {
                 th { (k.replace('_', " ")) }
-                @if v.is_number() { td.num { (text(v)) } } @else { td { (text(v)) } }
+                @if let Some(x) = v.as_f64().filter(|x| x.fract() != 0.0) { td.num { (plots::sig(x)) } }
+                @else if v.is_number() { td.num { (text(v)) } } @else { td { (text(v)) } }
             } } } } }
         } @else {
             p { "This kind states no accuracy of its own: its results are closed forms." }

@@ -43,6 +43,10 @@ form.inline input { font: inherit; width: 6rem; padding: .25rem .4rem; }
 form.inline button { padding: .25rem .8rem; }
 pre { background: var(--bg); border: 1px solid var(--line); padding: .6rem; overflow-x: auto; font-size: .85rem; }
 footer { max-width: 70rem; margin: 2rem auto 1rem; padding: 0 1rem; color: var(--muted); font-size: .85rem; }
+@media (max-width: 40rem) {
+  table.accuracy th { white-space: normal; }
+  td.num { white-space: normal; overflow-wrap: anywhere; }
+}
 @media print {
   header, footer, form.inline, .noprint { display: none; }
   main { max-width: none; padding: 0; }

@@ -12,7 +12,6 @@ use crate::api::mechanism::MechanismDto;
 use crate::api::quantity::Errors;
 use crate::engine::model::{JointKind, Mechanism};
 use serde_json::Value;
-use std::collections::HashMap;
 
 /// The model of the stored request's mechanism (at `pointer`), without drivers.
 pub fn model(request: &Value, pointer: &str) -> Option<Mechanism> {
@@ -23,30 +22,34 @@ pub fn model(request: &Value, pointer: &str) -> Option<Mechanism> {
 /// A body's pose: centre of mass and rotation from the drawn configuration.
 pub type Pose = (f64, f64, f64);
 
-/// The poses of a stored list of bodies (`body`, `x`, `y`, `theta`) by name.
-pub fn poses(list: &[Value]) -> HashMap<String, Pose> {
-    list.iter()
-        .filter_map(|b| {
-            let name = b.get("body")?.as_str()?.to_string();
-            Some((name, (num(b, "x")?, num(b, "y")?, num(b, "theta")?)))
-        })
-        .collect()
+/// The poses of the bodies (index: the body's; the ground has none) from
+/// a stored list of (`body`, `x`, `y`, `theta`), stored in body order.
+pub fn poses(m: &Mechanism, list: &[Value]) -> Vec<Option<Pose>> {
+    let pose = |b: &Value| Some((num(b, "x")?, num(b, "y")?, num(b, "theta")?));
+    let named = |b: &Value, name: &str| b.get("body").and_then(Value::as_str) == Some(name);
+    let mut out = vec![None; m.bodies.len()];
+    for (k, body) in m.bodies.iter().enumerate().skip(1) {
+        let stored =
+            list.get(k - 1).filter(|b| named(b, &body.name)).or_else(|| list.iter().find(|b| named(b, &body.name)));
+        out[k] = stored.and_then(pose);
+    }
+    out
 }
 
 /// Where the reference point `p` of body `b` is at the poses.
-fn place(m: &Mechanism, poses: &HashMap<String, Pose>, b: usize, p: [f64; 2]) -> Option<(f64, f64)> {
+fn place(m: &Mechanism, poses: &[Option<Pose>], b: usize, p: [f64; 2]) -> Option<(f64, f64)> {
     if b == 0 {
         return Some((p[0], p[1]));
     }
     let body = &m.bodies[b];
-    let &(x, y, th) = poses.get(&body.name)?;
+    let (x, y, th) = (*poses.get(b)?)?;
     let (s, c) = th.sin_cos();
     let (dx, dy) = (p[0] - body.cg[0], p[1] - body.cg[1]);
     Some((x + c * dx - s * dy, y + s * dx + c * dy))
 }
 
 /// Where joint `j` is at the poses (its point on its moving body).
-pub fn point_of(m: &Mechanism, poses: &HashMap<String, Pose>, j: &crate::engine::model::Joint) -> Option<(f64, f64)> {
+pub fn point_of(m: &Mechanism, poses: &[Option<Pose>], j: &crate::engine::model::Joint) -> Option<(f64, f64)> {
     if matches!(j.kind, JointKind::Gear { .. }) {
         return None;
     }
@@ -54,7 +57,7 @@ pub fn point_of(m: &Mechanism, poses: &HashMap<String, Pose>, j: &crate::engine:
 }
 
 /// The mechanism at the poses, with the reactions (`joint`, `fx`, `fy`) as arrows.
-pub fn draw(m: &Mechanism, poses: &HashMap<String, Pose>, reactions: &[Value], title: String) -> Chart {
+pub fn draw(m: &Mechanism, poses: &[Option<Pose>], reactions: &[Value], title: String) -> Chart {
     let mut c = Chart::new(title, Axis::new("x", "m"), Axis::new("y", "m"));
     c.equal = true;
     let joints: Vec<Option<(f64, f64)>> = m.joints.iter().map(|j| point_of(m, poses, j)).collect();
@@ -89,7 +92,7 @@ fn extent(points: &[Option<(f64, f64)>]) -> f64 {
 }
 
 /// Body `b` as lines between its joints (to its centre of mass when it has one joint).
-fn body(c: &mut Chart, m: &Mechanism, poses: &HashMap<String, Pose>, joints: &[Option<(f64, f64)>], b: usize) {
+fn body(c: &mut Chart, m: &Mechanism, poses: &[Option<Pose>], joints: &[Option<(f64, f64)>], b: usize) {
     let mut pts: Vec<(f64, f64)> =
         m.joints.iter().zip(joints).filter(|(j, _)| j.bodies.contains(&b)).filter_map(|(_, p)| *p).collect();
     pts.dedup_by(|p, q| (p.0 - q.0).hypot(p.1 - q.1) < 1e-12);

@@ -4,7 +4,7 @@
 //! mechanism drawn at a sample over those paths.
 
 use super::chart::{Axis, Chart, Level, Listed, Pen};
-use super::{Drawn, Job, Options, deg, drawing, no_step, num, rows, sig, xy};
+use super::{Drawn, Job, Options, deg, drawing, magnitudes, no_step, num, reaction_series, rows, sig, xy};
 use crate::engine::model::Mechanism;
 use serde_json::Value;
 
@@ -101,30 +101,15 @@ fn machine_samples(r: &Value) -> &[Value] {
 }
 
 fn reactions(r: &Value, title: String) -> Chart {
-    let samples = machine_samples(r);
-    let names: Vec<String> = samples
-        .first()
-        .map(|s| rows(s, "reactions").iter().filter_map(|x| x.get("joint")?.as_str().map(String::from)).collect())
-        .unwrap_or_default();
-    let mut c = Chart::new(title, Axis::new("time t", "s"), Axis::new("reaction force |R|", "N"));
-    for (k, j) in names.iter().enumerate().take(12) {
-        let at = |s: &Value| {
-            let x = rows(s, "reactions").iter().find(|x| x.get("joint").and_then(Value::as_str) == Some(j.as_str()))?;
-            Some(num(x, "fx")?.hypot(num(x, "fy")?))
-        };
-        c = c.line(format!("joint {j}"), xy(samples, |s| num(s, "t"), at), Pen::solid(k));
-    }
-    if names.len() > 12 {
-        c = c.subtitle(format!("the first 12 of {} joints", names.len()));
-    }
-    c
+    let c = Chart::new(title, Axis::new("time t", "s"), Axis::new("reaction force |R|", "N"));
+    magnitudes(c, reaction_series(machine_samples(r), |s| num(s, "t")))
 }
 
 /// The paths of the joints (one, or all) over the run.
 fn paths(job: &Job, title: String, only: Option<&str>) -> Option<Chart> {
     let m = drawing::model(job.request, MECHANISM)?;
     let samples = machine_samples(job.result);
-    let poses: Vec<_> = samples.iter().map(|s| drawing::poses(rows(s, "bodies"))).collect();
+    let poses: Vec<_> = samples.iter().map(|s| drawing::poses(&m, rows(s, "bodies"))).collect();
     let mut c = Chart::new(title, Axis::new("x", "m"), Axis::new("y", "m"));
     c.equal = true;
     for (k, name) in moving(&m).enumerate().filter(|(_, n)| only.is_none_or(|o| o == *n)) {
@@ -146,7 +131,7 @@ fn mechanism(job: &Job, title: String, step: usize) -> Drawn {
     let samples = machine_samples(job.result);
     let s = samples.get(step).ok_or_else(|| no_step(step, samples.len()))?;
     let Some(m) = drawing::model(job.request, MECHANISM) else { return Ok(None) };
-    let mut c = drawing::draw(&m, &drawing::poses(rows(s, "bodies")), rows(s, "reactions"), title);
+    let mut c = drawing::draw(&m, &drawing::poses(&m, rows(s, "bodies")), rows(s, "reactions"), title);
     if let Some(p) = paths(job, String::new(), None) {
         c.lines.extend(p.lines.into_iter().map(|mut l| {
             l.label = None;

@@ -4,11 +4,8 @@
 //! mechanism drawn at a step with its reactions to scale.
 
 use super::chart::{Axis, Chart, Level, Listed, Mark, Pen};
-use super::{Drawn, Job, Options, deg, drawing, no_step, num, rows, sig, xy};
+use super::{Drawn, Job, Options, deg, drawing, magnitudes, no_step, num, reaction_series, rows, sig, xy};
 use serde_json::Value;
-
-/// Most joints drawn in the reactions' plot (the largest ones).
-const MOST_JOINTS: usize = 12;
 
 pub fn list(job: &Job) -> Vec<Listed> {
     let steps = rows(job.result, "steps");
@@ -106,42 +103,17 @@ fn driving(r: &Value, title: String) -> Chart {
     }
 }
 
-fn magnitude(x: &Value) -> Option<f64> {
-    Some(num(x, "fx")?.hypot(num(x, "fy")?))
-}
-
-fn reaction<'a>(s: &'a Value, joint: &str) -> Option<&'a Value> {
-    s.get("reactions")?.as_array()?.iter().find(|x| x.get("joint").and_then(Value::as_str) == Some(joint))
-}
-
 fn reactions(r: &Value, title: String) -> Chart {
-    let mut names = joints(r);
-    let largest = |j: &String| rows(r, "steps").iter().filter_map(|s| magnitude(reaction(s, j)?)).fold(0.0, f64::max);
-    let mut sized: Vec<(f64, String)> = names.drain(..).map(|j| (largest(&j), j)).collect();
-    let total = sized.len();
-    sized.sort_by(|a, b| b.0.total_cmp(&a.0));
-    sized.truncate(MOST_JOINTS);
-    let mut c = Chart::new(title, input_axis(r), Axis::new("reaction force |R|", "N"));
-    for (k, (_, j)) in sized.iter().enumerate() {
-        let points = xy(rows(r, "steps"), input(r), |s| magnitude(reaction(s, j)?));
-        c = c.line(format!("joint {j}"), points, Pen::solid(k));
-    }
-    if total > MOST_JOINTS {
-        c = c.subtitle(format!("the {MOST_JOINTS} largest of {total} joints; each joint's own plot shows the rest"));
-    }
-    c
+    let c = Chart::new(title, input_axis(r), Axis::new("reaction force |R|", "N"));
+    magnitudes(c, reaction_series(rows(r, "steps"), input(r)))
 }
 
 /// f_x against f_y of one joint's reaction over the sweep, from the origin.
 fn polar(r: &Value, joint: &str, title: String) -> Chart {
     let steps = rows(r, "steps");
-    let points: Vec<(f64, f64)> =
-        steps.iter().filter_map(|s| reaction(s, joint)).filter_map(|x| Some((num(x, "fx")?, num(x, "fy")?))).collect();
-    let on = steps.iter().find_map(|s| reaction(s, joint)).map(|x| {
-        let name = |k: &str| x.get(k).and_then(Value::as_str).unwrap_or("").to_string();
-        (name("on"), name("by"))
-    });
-    let (on, by) = on.unwrap_or_default();
+    let series = reaction_series(steps, input(r)).into_iter().find(|s| s.joint == joint);
+    let (on, by, points) = series.map(|s| (s.on, s.by, s.points)).unwrap_or_default();
+    let points: Vec<(f64, f64)> = points.iter().map(|p| (p.1, p.2)).collect();
     let mut c = Chart::new(title, Axis::new("f_x", "N"), Axis::new("f_y", "N")).line(
         format!("force on {on} by {by} over the sweep"),
         points.clone(),
@@ -161,7 +133,7 @@ fn mechanism(job: &Job, title: String, step: usize) -> Drawn {
     let steps = rows(job.result, "steps");
     let s = steps.get(step).ok_or_else(|| no_step(step, steps.len()))?;
     let Some(m) = drawing::model(job.request, "/mechanism") else { return Ok(None) };
-    let poses = drawing::poses(s.get("kinematics").and_then(Value::as_array).map_or(&[], Vec::as_slice));
+    let poses = drawing::poses(&m, rows(s, "kinematics"));
     let reactions = s.get("reactions").and_then(Value::as_array).map_or(&[][..], Vec::as_slice);
     let x = input(job.result)(s).map_or(String::new(), sig);
     let unit = if angular(job.result) { "°" } else { " m" };

@@ -100,15 +100,9 @@ pub fn href(id: &str, name: &str) -> String {
 /// `text` as one segment of a URL's path: every byte but the unreserved
 /// ones (RFC 3986: letters, digits, `-._~`) percent-encoded.
 pub fn segment(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for b in text.bytes() {
-        if b.is_ascii_alphanumeric() || b"-._~".contains(&b) {
-            out.push(b as char);
-        } else {
-            out.push_str(&format!("%{b:02X}"));
-        }
-    }
-    out
+    const RESERVED: &percent_encoding::AsciiSet =
+        &percent_encoding::NON_ALPHANUMERIC.remove(b'-').remove(b'.').remove(b'_').remove(b'~');
+    percent_encoding::utf8_percent_encode(text, RESERVED).to_string()
 }
 
 /// One plot of a job as SVG (`image/svg+xml`), drawn from its stored result:
@@ -204,6 +198,56 @@ pub fn xy(rows: &[Value], x: impl Fn(&Value) -> Option<f64>, y: impl Fn(&Value) 
     rows.iter().filter_map(|r| Some((x(r)?, y(r)?))).collect()
 }
 
+/// A joint's reaction over the rows: its name, the bodies it acts on and
+/// by, and (x, f_x, f_y) wherever it is determinate.
+pub struct Series {
+    pub joint: String,
+    pub on: String,
+    pub by: String,
+    pub points: Vec<(f64, f64, f64)>,
+}
+
+/// Every joint's reaction over the rows (each row's `reactions`, x from
+/// `x`), in one pass; joints in the order first met.
+pub fn reaction_series(rows: &[Value], x: impl Fn(&Value) -> Option<f64>) -> Vec<Series> {
+    let mut out: Vec<Series> = Vec::new();
+    let mut index: HashMap<String, usize> = HashMap::new();
+    let text = |r: &Value, k: &str| r.get(k).and_then(Value::as_str).unwrap_or("").to_string();
+    for row in rows {
+        let Some(x) = x(row) else { continue };
+        for r in self::rows(row, "reactions") {
+            let Some(joint) = r.get("joint").and_then(Value::as_str) else { continue };
+            let k = *index.entry(joint.to_string()).or_insert_with(|| {
+                out.push(Series { joint: joint.to_string(), on: text(r, "on"), by: text(r, "by"), points: Vec::new() });
+                out.len() - 1
+            });
+            if let (Some(fx), Some(fy)) = (num(r, "fx"), num(r, "fy")) {
+                out[k].points.push((x, fx, fy));
+            }
+        }
+    }
+    out
+}
+
+/// The most joints a plot of every joint's reaction draws (the largest);
+/// each joint has its own plot besides.
+pub const MOST_JOINTS: usize = 12;
+
+/// |R| of every joint against x, the [`MOST_JOINTS`] largest, into `c`.
+pub fn magnitudes(mut c: Chart, mut series: Vec<Series>) -> Chart {
+    let largest = |s: &Series| s.points.iter().map(|p| p.1.hypot(p.2)).fold(0.0, f64::max);
+    let total = series.len();
+    series.sort_by(|a, b| largest(b).total_cmp(&largest(a)));
+    for (k, s) in series.iter().take(MOST_JOINTS).enumerate() {
+        let points = s.points.iter().map(|p| (p.0, p.1.hypot(p.2))).collect();
+        c = c.line(format!("joint {}", s.joint), points, chart::Pen::solid(k));
+    }
+    if total > MOST_JOINTS {
+        c = c.subtitle(format!("the {MOST_JOINTS} largest of {total} joints; each joint's own plot shows the rest"));
+    }
+    c
+}
+
 /// `v` with four significant figures, for labels.
 pub fn sig(v: f64) -> String {
     if v == 0.0 || !v.is_finite() {
@@ -220,4 +264,14 @@ pub fn sig(v: f64) -> String {
 /// Radians to degrees, for the angle axes.
 pub fn deg(rad: f64) -> f64 {
     rad.to_degrees()
+}
+
+#[cfg(test)]
+mod tests {
+    /// RFC 3986's unreserved characters stay; a space, a slash and UTF-8 are encoded.
+    #[test]
+    fn a_plots_name_is_one_path_segment() {
+        assert_eq!(super::segment("reaction-A_1.x~"), "reaction-A_1.x~");
+        assert_eq!(super::segment("a b/é<"), "a%20b%2F%C3%A9%3C");
+    }
 }

@@ -99,7 +99,8 @@ fn draw(root: &Area, chart: &Chart) -> Result<(), Failure> {
         .draw()?;
     for f in &chart.fills {
         let style = color(f.color).mix(f.opacity).filled();
-        c.draw_series(std::iter::once(Polygon::new(f.points.clone(), style)))?;
+        let points = thin(&f.points, plot.dim_in_pixel().0 as usize / S as usize);
+        c.draw_series(std::iter::once(Polygon::new(points, style)))?;
     }
     let mut placed = Placed::new(c.plotting_area().get_pixel_range());
     for r in &chart.rules {
