@@ -64,20 +64,10 @@ impl Kind for Gears {
     const UNITS: &'static [(&'static str, &'static str)] = &[("/thickness_pressure_angle", "rad"), ("/*", "m")];
     type Request = GearRequest;
     type Result = GearResult;
+    const PLOTS: crate::api::plots::Plots = crate::api::plots::GEAR;
 
     fn compute(request: &GearRequest, unknown: Vec<FieldError>, _limits: &Limits) -> Result<GearResult, ApiError> {
         compute(request, unknown)
-    }
-
-    fn plots(job: &crate::api::plots::Job) -> Vec<crate::api::plots::Listed> {
-        crate::api::plots::gear_plots(job)
-    }
-    fn plot(
-        job: &crate::api::plots::Job,
-        name: &str,
-        options: &crate::api::plots::Options,
-    ) -> crate::api::plots::Drawn {
-        crate::api::plots::gear_plot(job, name, options)
     }
 }
 

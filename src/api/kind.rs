@@ -46,6 +46,8 @@ pub trait Kind: Send + Sync + 'static {
     /// Units of the result's numbers: a JSON pointer pattern (`*` stands for
     /// any index or key) and the unit, [`DIMENSIONLESS`] for a pure number.
     const UNITS: &'static [(&'static str, &'static str)];
+    /// Its plots: how a stored job lists them and draws one ([`plots::NONE`]: no curve).
+    const PLOTS: plots::Plots = plots::NONE;
     type Request: DeserializeOwned + ToSchema + Send + 'static;
     type Result: JobResult + ToSchema + Send + 'static;
 
@@ -63,16 +65,6 @@ pub trait Kind: Send + Sync + 'static {
     /// a mechanism) override this and fall back to [`unit_in`].
     fn unit(_result: &Value, pointer: &[&str]) -> Option<String> {
         unit_in(Self::UNITS, pointer).map(String::from)
-    }
-
-    /// The plots a stored job of this kind has (none for a kind without curves).
-    fn plots(_job: &plots::Job) -> Vec<plots::Listed> {
-        Vec::new()
-    }
-
-    /// Plot `name` of a stored job, drawn from its result; None when it has none of that name.
-    fn plot(_job: &plots::Job, _name: &str, _options: &plots::Options) -> plots::Drawn {
-        Ok(None)
     }
 }
 
@@ -185,10 +177,10 @@ impl<K: Kind> AnyKind for Registered<K> {
         K::unit(result, pointer)
     }
     fn plots(&self, job: &plots::Job) -> Vec<plots::Listed> {
-        K::plots(job)
+        (K::PLOTS.list)(job)
     }
     fn plot(&self, job: &plots::Job, name: &str, options: &plots::Options) -> plots::Drawn {
-        K::plot(job, name, options)
+        (K::PLOTS.draw)(job, name, options)
     }
 }
 

@@ -146,20 +146,10 @@ impl Kind for RigidRotor {
     ];
     type Request = RotorRequest;
     type Result = RotorResult;
+    const PLOTS: crate::api::plots::Plots = crate::api::plots::ROTOR;
 
     fn compute(request: &RotorRequest, unknown: Vec<FieldError>, _limits: &Limits) -> Result<RotorResult, ApiError> {
         compute(request, unknown)
-    }
-
-    fn plots(job: &crate::api::plots::Job) -> Vec<crate::api::plots::Listed> {
-        crate::api::plots::rotor_plots(job)
-    }
-    fn plot(
-        job: &crate::api::plots::Job,
-        name: &str,
-        options: &crate::api::plots::Options,
-    ) -> crate::api::plots::Drawn {
-        crate::api::plots::rotor_plot(job, name, options)
     }
 }
 

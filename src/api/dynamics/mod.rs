@@ -133,6 +133,7 @@ impl Kind for Dynamics {
     ];
     type Request = DynamicsRequest;
     type Result = DynamicsResult;
+    const PLOTS: crate::api::plots::Plots = crate::api::plots::DYNAMICS;
 
     fn compute(
         request: &DynamicsRequest,
@@ -144,17 +145,6 @@ impl Kind for Dynamics {
 
     fn table(result: &Value) -> Option<Table> {
         Some(csv_table(result))
-    }
-
-    fn plots(job: &crate::api::plots::Job) -> Vec<crate::api::plots::Listed> {
-        crate::api::plots::dynamics_plots(job)
-    }
-    fn plot(
-        job: &crate::api::plots::Job,
-        name: &str,
-        options: &crate::api::plots::Options,
-    ) -> crate::api::plots::Drawn {
-        crate::api::plots::dynamics_plot(job, name, options)
     }
 }
 

@@ -67,6 +67,7 @@ impl Kind for Flywheel {
     ];
     type Request = FlywheelRequest;
     type Result = FlywheelResult;
+    const PLOTS: crate::api::plots::Plots = crate::api::plots::FLYWHEEL;
 
     fn compute(
         request: &FlywheelRequest,
@@ -78,17 +79,6 @@ impl Kind for Flywheel {
 
     fn table(result: &Value) -> Option<Table> {
         Some(csv_table(result))
-    }
-
-    fn plots(job: &crate::api::plots::Job) -> Vec<crate::api::plots::Listed> {
-        crate::api::plots::flywheel_plots(job)
-    }
-    fn plot(
-        job: &crate::api::plots::Job,
-        name: &str,
-        options: &crate::api::plots::Options,
-    ) -> crate::api::plots::Drawn {
-        crate::api::plots::flywheel_plot(job, name, options)
     }
 }
 

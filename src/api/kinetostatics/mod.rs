@@ -54,6 +54,7 @@ impl Kind for Kinetostatics {
     ];
     type Request = KinetostaticsRequest;
     type Result = KinetostaticsResult;
+    const PLOTS: crate::api::plots::Plots = crate::api::plots::KINETOSTATICS;
 
     fn compute(
         request: &KinetostaticsRequest,
@@ -92,17 +93,6 @@ impl Kind for Kinetostatics {
                 u => Some(u.into()),
             },
         }
-    }
-
-    fn plots(job: &crate::api::plots::Job) -> Vec<crate::api::plots::Listed> {
-        crate::api::plots::kinetostatics_plots(job)
-    }
-    fn plot(
-        job: &crate::api::plots::Job,
-        name: &str,
-        options: &crate::api::plots::Options,
-    ) -> crate::api::plots::Drawn {
-        crate::api::plots::kinetostatics_plot(job, name, options)
     }
 }
 

@@ -29,10 +29,6 @@ use axum::extract::{Path, Query, State};
 use axum::http::header;
 use axum::response::{IntoResponse, Response};
 pub use chart::{Chart, Listed};
-pub use dynamics::{draw as dynamics_plot, list as dynamics_plots};
-pub use flywheel::{draw as flywheel_plot, list as flywheel_plots};
-pub use kinetostatics::{draw as kinetostatics_plot, list as kinetostatics_plots};
-pub use machines::{gear_plot, gear_plots, rotor_plot, rotor_plots};
 use serde::Serialize;
 use serde_json::Value;
 use std::collections::HashMap;
@@ -42,6 +38,21 @@ use utoipa::ToSchema;
 /// cannot match `{name}.svg` within one segment; the handler wants the `.svg`).
 pub const ROUTED: &str = "/v1/jobs/{id}/plots/{name}";
 pub const DOCUMENTED: &str = "/v1/jobs/{id}/plots/{name}.svg";
+
+/// A kind's plots: how a stored job lists them and how one is drawn.
+#[derive(Clone, Copy)]
+pub struct Plots {
+    pub list: fn(&Job) -> Vec<Listed>,
+    pub draw: fn(&Job, &str, &Options) -> Drawn,
+}
+
+/// A kind without curves.
+pub const NONE: Plots = Plots { list: |_| Vec::new(), draw: |_, _, _| Ok(None) };
+pub const FLYWHEEL: Plots = Plots { list: flywheel::list, draw: flywheel::draw };
+pub const KINETOSTATICS: Plots = Plots { list: kinetostatics::list, draw: kinetostatics::draw };
+pub const DYNAMICS: Plots = Plots { list: dynamics::list, draw: dynamics::draw };
+pub const ROTOR: Plots = Plots { list: machines::rotor_plots, draw: machines::rotor_plot };
+pub const GEAR: Plots = Plots { list: machines::gear_plots, draw: machines::gear_plot };
 
 /// A stored job as the plots read it.
 pub struct Job<'a> {
