@@ -8,6 +8,7 @@
 
 use super::chart::{Chart, Level, Line, Pen};
 use plotters::coord::Shift;
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::series::DashedLineSeries;
 
@@ -70,16 +71,25 @@ pub fn render(chart: &Chart) -> Result<String, String> {
 fn draw(root: &Area, chart: &Chart) -> Result<(), Failure> {
     root.fill(&WHITE)?;
     let legend: Vec<&Line> = chart.lines.iter().filter(|l| l.label.is_some()).collect();
-    let rows = legend_rows(&legend);
     let head = if chart.subtitle.is_some() { 58 } else { 36 };
     let (top, rest) = root.split_vertically(px(head));
-    let (plot, foot) = rest.split_vertically(px(SIZE.1 as i32 - head - 22 * rows as i32 - 6));
+    let (plot, foot) = rest.split_vertically(px(SIZE.1 as i32 - head - 22 * legend_rows(&legend) as i32 - 6));
     top.draw(&Text::new(clean(&chart.title), (px(16), px(10)), (FONT, px(19)).into_font().color(&BLACK)))?;
     if let Some(sub) = &chart.subtitle {
         top.draw(&Text::new(clean(sub), (px(16), px(36)), (FONT, px(14)).into_font().color(&RGBColor(60, 60, 60))))?;
     }
-    let [x0, x1, y0, y1] = ranges(chart, plot.dim_in_pixel());
-    let mut c = ChartBuilder::on(&plot)
+    let range = ranges(chart, plot.dim_in_pixel());
+    let mut c = axes(&plot, chart, range)?;
+    data(root, &mut c, chart, range, plot.dim_in_pixel().0 as usize / S as usize)?;
+    labels(root, &c, chart, range)?;
+    draw_legend(&foot, &legend)
+}
+
+type Context<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// The plot's frame: axes with their names and ticks, a light grid.
+fn axes<'a, 'b>(plot: &'a Area<'b>, chart: &Chart, [x0, x1, y0, y1]: [f64; 4]) -> Result<Context<'a, 'b>, Failure> {
+    let mut c = ChartBuilder::on(plot)
         .margin_right(px(24))
         .margin_top(px(6))
         .x_label_area_size(px(46))
@@ -97,36 +107,53 @@ fn draw(root: &Area, chart: &Chart) -> Result<(), Failure> {
         .bold_line_style(RGBColor(215, 215, 215))
         .axis_style(BLACK.stroke_width(S as u32))
         .draw()?;
+    Ok(c)
+}
+
+/// Shaded areas, reference lines, curves (thinned to `columns`), arrows and dots.
+fn data(
+    root: &Area,
+    c: &mut Context,
+    chart: &Chart,
+    [x0, x1, y0, y1]: [f64; 4],
+    columns: usize,
+) -> Result<(), Failure> {
     for f in &chart.fills {
         let style = color(f.color).mix(f.opacity).filled();
-        let points = thin(&f.points, plot.dim_in_pixel().0 as usize / S as usize);
-        c.draw_series(std::iter::once(Polygon::new(points, style)))?;
+        c.draw_series(std::iter::once(Polygon::new(thin(&f.points, columns), style)))?;
     }
-    let mut placed = Placed::new(c.plotting_area().get_pixel_range());
     for r in &chart.rules {
         let pts = match r.at {
             Level::X(x) => vec![(x, y0), (x, y1)],
             Level::Y(y) => vec![(x0, y), (x1, y)],
         };
-        stroke(&mut c, &pts, r.pen)?;
+        stroke(c, &pts, r.pen)?;
     }
     for l in &chart.lines {
-        stroke(&mut c, &thin(&l.points, plot.dim_in_pixel().0 as usize / S as usize), l.pen)?;
+        stroke(c, &thin(&l.points, columns), l.pen)?;
     }
     for a in &chart.arrows {
         arrow(root, c.backend_coord(&a.from), c.backend_coord(&a.to), color(a.color))?;
     }
     for m in chart.marks.iter().filter(|m| m.dot) {
+        c.plotting_area().draw(&Circle::new(m.at, px(4), BLACK.filled()))?;
+    }
+    Ok(())
+}
+
+/// The labels of reference lines, arrows and marks, each where it overlaps
+/// no other label and no dot.
+fn labels(root: &Area, c: &Context, chart: &Chart, [_, x1, _, y1]: [f64; 4]) -> Result<(), Failure> {
+    let mut placed = Placed::new(c.plotting_area().get_pixel_range());
+    for m in chart.marks.iter().filter(|m| m.dot) {
         let p = c.backend_coord(&m.at);
-        root.draw(&Circle::new(p, px(4), BLACK.filled()))?;
         placed.taken.push((p.0 - px(4), p.1 - px(4), p.0 + px(4), p.1 + px(4)));
     }
     for r in &chart.rules {
-        let at = match r.at {
-            Level::X(x) => c.backend_coord(&(x, y1)),
-            Level::Y(y) => c.backend_coord(&(x1, y)),
+        let (at, prefer) = match r.at {
+            Level::X(x) => (c.backend_coord(&(x, y1)), (4, 4)),
+            Level::Y(y) => (c.backend_coord(&(x1, y)), (-1, -18)),
         };
-        let prefer = if matches!(r.at, Level::X(_)) { (4, 4) } else { (-1, -18) };
         placed.label(root, at, &r.label, color(r.pen.color), prefer)?;
     }
     for a in chart.arrows.iter().filter(|a| !a.label.is_empty()) {
@@ -135,7 +162,7 @@ fn draw(root: &Area, chart: &Chart) -> Result<(), Failure> {
     for m in &chart.marks {
         placed.label(root, c.backend_coord(&m.at), &m.text, BLACK, (7, -18))?;
     }
-    draw_legend(&foot, &legend)
+    Ok(())
 }
 
 /// The axes' ranges: the chart's bounds with a margin, never empty; with
@@ -174,17 +201,7 @@ fn ticks(span: f64) -> impl Fn(f64) -> String {
     }
 }
 
-fn stroke<DB: DrawingBackend>(
-    c: &mut ChartContext<
-        DB,
-        Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
-    >,
-    points: &[(f64, f64)],
-    pen: Pen,
-) -> Result<(), Failure>
-where
-    DB::ErrorType: 'static,
-{
+fn stroke(c: &mut Context, points: &[(f64, f64)], pen: Pen) -> Result<(), Failure> {
     let style = color(pen.color).stroke_width(pen.width * S as u32);
     let pts: Vec<(f64, f64)> = points.iter().copied().filter(|(x, y)| x.is_finite() && y.is_finite()).collect();
     if pen.dashed {
@@ -254,8 +271,10 @@ struct Placed {
 }
 
 impl Placed {
-    fn new(area: (std::ops::Range<i32>, std::ops::Range<i32>)) -> Self {
-        Self { taken: Vec::new(), area }
+    /// Labels stay within the plot, or up to 12 px above it (into its top
+    /// margin: a line at the top of the range still has its label above it).
+    fn new((x, y): (std::ops::Range<i32>, std::ops::Range<i32>)) -> Self {
+        Self { taken: Vec::new(), area: (x, y.start - px(12)..y.end) }
     }
 
     /// Writes `text` near `at`, first at offset `prefer`, else at the first
