@@ -154,7 +154,7 @@ async fn a_mechanism_in_dynamics_stores_its_bodies_positions_and_draws_their_pat
     let app = TestApp::new().await;
     let (id, plots) = plots_of(&app, "/v1/dynamics", &request("p68_two_link_arm")).await;
     let names: Vec<&str> = plots.iter().map(|p| p.0.as_str()).collect();
-    assert_eq!(names, ["angle", "speed", "phase", "reactions", "mechanism", "path-elbow"]);
+    assert_eq!(names, ["angle", "speed", "phase", "energy", "reactions", "mechanism", "path-elbow"]);
     every_plot_draws(&app, &plots).await;
     let job = app.get(&format!("/v1/jobs/{id}")).await.json();
     for s in job["result"]["machine"]["samples"].as_array().unwrap() {
@@ -207,4 +207,24 @@ async fn names_with_markup_stay_text_in_a_plot() {
     let mechanism = plots.iter().find(|p| p.0 == "mechanism").unwrap();
     let texts = svg_texts(&app, &mechanism.2, &mechanism.1).await;
     assert!(texts.iter().any(|t| t == "<script>alert(1)</script>&\u{FFFD}"), "{texts:?}");
+}
+
+/// The energy residual at each sample: at the last one it is the result's
+/// own for a mechanism (the same integrated power W and kinetic energy, so
+/// the same double); for the reduced form with torques of φ only the result
+/// takes W by quadrature over the angle instead, so the two agree to the
+/// integration's tolerance (1e-9 here, the default tolerance's order).
+#[tokio::test]
+async fn the_energy_residual_is_stored_at_every_sample_and_agrees_with_the_results() {
+    let app = TestApp::new().await;
+    let arm = app.post("/v1/dynamics", &request("p68_two_link_arm")).await.json()["result"].clone();
+    let last = arm["samples"].as_array().unwrap().last().unwrap()["energy_residual"].as_f64().unwrap();
+    assert_eq!(last, arm["energy_residual"].as_f64().unwrap());
+    let reduced = app.post("/v1/dynamics", &crate::helpers::example("DynamicsRequest")).await.json()["result"].clone();
+    let samples = reduced["samples"].as_array().unwrap();
+    assert_eq!(samples[0]["energy_residual"].as_f64().unwrap(), 0.0, "nothing drifted at the start");
+    let last = samples.last().unwrap()["energy_residual"].as_f64().unwrap();
+    let by_quadrature = reduced["energy_residual"].as_f64().unwrap();
+    assert!((last - by_quadrature).abs() < 1e-9, "{last} against {by_quadrature}");
+    assert!(samples.iter().all(|s| s["energy_residual"].as_f64().unwrap().abs() < 1e-8));
 }

@@ -118,6 +118,9 @@ impl Kind for Dynamics {
         ("/machine/dof", "1"),
         ("/machine/near_singular/*", "s"),
         ("/machine/redundant_constraints", "1"),
+        ("/machine/samples/*/bodies/*/theta", "rad"),
+        ("/machine/samples/*/bodies/*/x", "m"),
+        ("/machine/samples/*/bodies/*/y", "m"),
         ("/machine/samples/*/constraint_residual", "m or rad"),
         ("/machine/samples/*/inputs/*/angle", "rad"),
         ("/machine/samples/*/inputs/*/speed", "rad/s"),
@@ -128,6 +131,7 @@ impl Kind for Dynamics {
         ("/machine/samples/*/t", "s"),
         ("/samples/*/acceleration", "rad/s^2"),
         ("/samples/*/angle", "rad"),
+        ("/samples/*/energy_residual", "1"),
         ("/samples/*/speed", "rad/s"),
         ("/samples/*/t", "s"),
     ];

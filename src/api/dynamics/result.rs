@@ -14,6 +14,9 @@ pub struct SampleDto {
     pub angle: f64,
     pub speed: f64,
     pub acceleration: f64,
+    /// (W − ΔT)/max(|W|, |ΔT|, T₀, T) from the start to this sample, W the
+    /// integrated power of the actions: the energy balance's drift.
+    pub energy_residual: f64,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
@@ -83,7 +86,13 @@ impl From<DynamicsSolution> for DynamicsResult {
             samples: s
                 .samples
                 .iter()
-                .map(|x| SampleDto { t: x.t, angle: x.angle, speed: x.speed, acceleration: x.acceleration })
+                .map(|x| SampleDto {
+                    t: x.t,
+                    angle: x.angle,
+                    speed: x.speed,
+                    acceleration: x.acceleration,
+                    energy_residual: x.energy_residual,
+                })
                 .collect(),
             events: s
                 .events

@@ -18,6 +18,7 @@ pub fn list(job: &Job) -> Vec<Listed> {
         Listed::new("angle", "Angle against time, with the events"),
         Listed::new("speed", "Speed against time, with the events"),
         Listed::new("phase", "Phase portrait: speed against angle"),
+        Listed::new("energy", "Energy residual against time"),
     ];
     let machine = job.result.get("machine").unwrap_or(&Value::Null);
     let first = rows(machine, "samples").first();
@@ -68,6 +69,17 @@ pub fn draw(job: &Job, name: &str, options: &Options) -> Drawn {
             xy(samples, |s| num(s, "angle").map(deg), |s| num(s, "speed")),
             Pen::solid(0),
         ),
+        "energy" => Chart::new(title, time(), Axis::new("energy residual (W − ΔT)/max(|W|, |ΔT|, T₀, T)", "1"))
+            .line(
+                "integrated power W against the kinetic energy T",
+                xy(samples, |s| num(s, "t"), |s| num(s, "energy_residual")),
+                Pen::solid(0),
+            )
+            .rule(Level::Y(0.0), "", Pen::dashed(7))
+            .subtitle(format!(
+                "at the end {}: how far the integration's energy balance drifts",
+                num(r, "energy_residual").map_or("-".into(), sig)
+            )),
         "reactions" => reactions(r, title),
         "mechanism" => return mechanism(job, title, options.step.unwrap_or(0)),
         path => return Ok(paths(job, title, Some(path.trim_start_matches("path-")))),

@@ -315,9 +315,24 @@ impl Placed {
     }
 }
 
+/// Where each entry of the legend goes: (x, y) in px of the plot, entries
+/// left to right, a new row when the next would pass the right edge.
+fn legend_layout(legend: &[&Line]) -> Vec<(f64, i32)> {
+    let (mut x, mut y) = (80.0, 4);
+    let mut out = Vec::with_capacity(legend.len());
+    for l in legend {
+        let w = entry_width(l);
+        if x + w > f64::from(SIZE.0) - 10.0 && x > 80.0 {
+            (x, y) = (80.0, y + 22);
+        }
+        out.push((x, y));
+        x += w;
+    }
+    out
+}
+
 fn legend_rows(legend: &[&Line]) -> usize {
-    let width: f64 = legend.iter().map(|l| entry_width(l)).sum();
-    (width / f64::from(SIZE.0 - 40)).ceil() as usize
+    legend_layout(legend).last().map_or(0, |(_, y)| (*y as usize - 4) / 22 + 1)
 }
 
 fn entry_width(l: &Line) -> f64 {
@@ -326,12 +341,7 @@ fn entry_width(l: &Line) -> f64 {
 
 /// The legend below the plot: a short stroke and the curve's name, in rows.
 fn draw_legend(foot: &Area, legend: &[&Line]) -> Result<(), Failure> {
-    let (mut x, mut y) = (80.0, 4);
-    for l in legend {
-        let w = entry_width(l);
-        if x + w > f64::from(SIZE.0) - 10.0 && x > 80.0 {
-            (x, y) = (80.0, y + 22);
-        }
+    for (l, (x, y)) in legend.iter().zip(legend_layout(legend)) {
         let style = color(l.pen.color).stroke_width(l.pen.width.max(2) * S as u32);
         let (xi, yi) = (x as i32, y + 8);
         let at = |x: i32, y: i32| (px(x), px(y));
@@ -343,7 +353,6 @@ fn draw_legend(foot: &Area, legend: &[&Line]) -> Result<(), Failure> {
         }
         let text = clean(l.label.as_deref().unwrap_or(""));
         foot.draw(&Text::new(text, at(xi + 34, y), (FONT, px(13)).into_font().color(&BLACK)))?;
-        x += w;
     }
     Ok(())
 }

@@ -237,6 +237,7 @@ pub fn solve(p: &MechanismProblem) -> Result<MechanismSolution, DynamicsError> {
     y0.push(0.0);
     let run = run(&dae, y0, &settings)?;
     let states = sample_states(&run.steps, run.t_end, p.samples);
+    let t0 = states.first().map_or(0.0, |(_, y)| dae.kinetic(&y[n..2 * n]));
     let mut details = Vec::with_capacity(states.len());
     let mut samples = Vec::with_capacity(states.len());
     for (t, y) in &states {
@@ -245,7 +246,8 @@ pub fn solve(p: &MechanismProblem) -> Result<MechanismSolution, DynamicsError> {
         }
         let detail = sample(&dae, &mobility, *t, y)?;
         let [angle, speed, acceleration] = detail.inputs[0];
-        samples.push(Sample { t: *t, angle, speed, acceleration });
+        let energy_residual = energy_residual(y[2 * n], t0, dae.kinetic(&y[n..2 * n]));
+        samples.push(Sample { t: *t, angle, speed, acceleration, energy_residual });
         details.push(detail);
     }
     let (first, last) = (&states[0].1, &states[states.len() - 1].1);

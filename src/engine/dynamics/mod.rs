@@ -39,6 +39,9 @@ pub struct Sample {
     pub angle: f64,
     pub speed: f64,
     pub acceleration: f64,
+    /// (W − ΔT)/max(|W|, |ΔT|, T₀, T) from the start to this sample, W the
+    /// integrated power of the actions: how the energy balance drifts.
+    pub energy_residual: f64,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

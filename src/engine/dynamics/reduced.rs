@@ -105,11 +105,13 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
     let settings = Settings { end: p.end, rtol, atol: vec![atol; 3], deadline: p.deadline };
     let run = run(&model, vec![p.angle0, p.speed0, 0.0], &settings)?;
     let mut dy = [0.0; 3];
+    let t0 = p.kinetic(p.angle0, p.speed0);
     let samples: Vec<Sample> = sample_states(&run.steps, run.t_end, p.samples)
         .into_iter()
         .map(|(t, y)| {
             model.rhs(t, &y, &mut dy);
-            Sample { t, angle: y[0], speed: y[1], acceleration: dy[1] }
+            let energy_residual = energy_residual(y[2], t0, p.kinetic(y[0], y[1]));
+            Sample { t, angle: y[0], speed: y[1], acceleration: dy[1], energy_residual }
         })
         .collect();
     let (first, last) = (samples[0], samples[samples.len() - 1]);
