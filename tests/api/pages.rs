@@ -47,8 +47,16 @@ async fn a_jobs_page_has_its_values_with_units_accuracy_time_plots_and_links() {
     for plot in ["torque", "work", "speed", "wittenbauer"] {
         assert!(page.contains(&format!("src=\"/v1/jobs/{id}/plots/{plot}.svg\"")), "{plot}");
     }
-    for link in [format!("/v1/jobs/{id}"), format!("/v1/jobs/{id}/csv"), format!("/v1/jobs/{id}/values?format=csv")] {
+    for link in
+        [format!("/v1/jobs/{id}"), format!("/v1/jobs/{id}/result.csv"), format!("/v1/jobs/{id}/values?format=csv")]
+    {
         assert!(page.contains(&format!("href=\"{link}\"")), "{link}");
+    }
+    // Every link of the page answers (a link to a route that is not there was one).
+    let links: Vec<String> =
+        page.split("href=\"").skip(1).map(|h| h[..h.find('"').unwrap()].replace("&amp;", "&")).collect();
+    for link in links.iter().filter(|l| l.starts_with('/')) {
+        assert_eq!(app.get(link).await.status, StatusCode::OK, "{link}");
     }
     assert!(page.contains("<code>/samples</code> (361 rows)"), "a long table is named, its rows left to the CSV");
     assert!(!page.contains("samples/0/"), "no row of it in the page");
@@ -132,4 +140,9 @@ async fn markup_in_labels_and_names_stays_text() {
     }
     let page = app.get(&format!("/jobs/{id}")).await.text;
     assert!(page.contains("&lt;script&gt;alert(1)&lt;/script&gt;"), "the body's name as text");
+    // A label that reverses the text after it ("evil" shown as "live") shows its mark instead.
+    let r = app.post("/v1/kinetostatics?label=%E2%80%AElive", &request("k1_offset_slider_crank")).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let home = app.get("/").await.text;
+    assert!(home.contains("\u{FFFD}live") && !home.contains('\u{202E}'), "the direction mark is shown, not obeyed");
 }

@@ -143,7 +143,9 @@ async fn kinetostatics_plots_draw_the_mechanism_at_any_step_and_refuse_a_step_be
     assert_eq!(r.status, StatusCode::NOT_FOUND);
     assert_eq!(r.json()["type"], "/problems/no-such-plot");
     assert!(r.json()["detail"].as_str().unwrap().contains("reaction-guide"), "the plots are listed: {}", r.text);
-    assert_eq!(app.get(&format!("/v1/jobs/{id}/plots/driving")).await.status, StatusCode::NOT_FOUND);
+    let r = app.get(&format!("/v1/jobs/{id}/plots/driving")).await;
+    assert_eq!(r.status, StatusCode::NOT_FOUND);
+    assert!(r.json()["detail"].as_str().unwrap().contains("driving.svg"), "the addresses it has: {}", r.text);
 }
 
 /// The two-link arm's bodies as stored at every sample: the upper arm's
@@ -182,6 +184,9 @@ async fn rotors_and_gears_have_their_plots_and_kinds_without_curves_have_none() 
     every_plot_draws(&app, &plots).await;
     let (_, plots) = plots_of(&app, "/v1/gears/train", &crate::helpers::example("TrainRequest")).await;
     assert!(plots.is_empty());
+    // P.107's I* is constant: Wittenbauer's diagram would be a vertical segment, so it is not offered.
+    let (_, plots) = plots_of(&app, "/v1/flywheel", &request("p107_two_stroke")).await;
+    assert_eq!(plots.iter().map(|p| p.0.as_str()).collect::<Vec<_>>(), ["torque", "work", "speed"]);
     let mut flywheel = request("p103_slider");
     flywheel["samples"] = json!(0);
     let (_, plots) = plots_of(&app, "/v1/flywheel", &flywheel).await;

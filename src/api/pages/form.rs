@@ -78,12 +78,12 @@ fn form(t: &Template, given: &HashMap<String, String>, error: Option<&ApiError>)
             p.error { (e.to_string()) }
             @if !others.is_empty() { ul { @for f in &others { li.error { (describe(f)) } } } }
         }
-        p { "A number is read in the unit beside its name; a quantity with its own unit (\"300 rpm\", \"4 %\") is read in that unit." }
+        p { "A number is read in the unit beside its name; a quantity with its own unit (\"300 rpm\", \"4 %\") is read in that unit; a field left blank keeps its default." }
         form.params method="get" action=(format!("/templates/{}", crate::api::plots::segment(&t.id))) {
             @for (name, p) in &t.parameters {
                 div {
                     label for=(name) { (name) @if let Some(u) = &p.unit { " (" (u) ")" } }
-                    input id=(name) name=(name) type="text" inputmode="decimal" autocomplete="off"
+                    input id=(name) name=(name) type="text" autocomplete="off"
                         value=(given.get(name).cloned().unwrap_or_else(|| default_text(t, p)));
                     p.hint { (hint(p)) }
                     @for f in at(name) { p.error { (f.message) } }

@@ -54,13 +54,8 @@ async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Resu
     if let Some(k) = q.keys().find(|k| *k != "step") {
         return Err(ApiError::BadQuery(vec![FieldError::parameter(k, "unknown parameter (known: step)")]));
     }
-    let step = match q.get("step").filter(|s| !s.trim().is_empty()) {
-        Some(s) => Some(s.trim().parse::<usize>().map_err(|_| {
-            ApiError::BadQuery(vec![FieldError::parameter("step", format!("'{s}': must be a whole number from 0"))])
-        })?),
-        None => None,
-    };
-    let (row, result, _reserved) = result_tree(state, id).await?;
+    let step = plots::step(q)?;
+    let (row, mut result, _reserved) = result_tree(state, id).await?;
     let request = serde_json::from_slice::<Value>(&row.request).unwrap_or_default();
     let kind = kind::find(&row.kind).ok_or_else(|| ApiError::Internal(format!("job of kind {}", row.kind)))?;
     let listed = kind.plots(&plots::Job { request: &request, result: &result });
@@ -70,26 +65,27 @@ async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Resu
             return Err(plots::no_step(s, count));
         }
     }
-    let (values, long) = values(kind, &result);
+    let summary = summary(&row, &result);
+    let (values, long) = values(kind, &mut result);
     let body = html! {
         h1 { (title(&row)) }
         p.meta { "job " span.id { (row.id) } " · created " (when(&row.created_at)) " UTC"
-            @if let Some(l) = &row.label { " · label " strong { (l) } }
+            @if let Some(l) = &row.label { " · label " strong { (plots::svg::clean(l)) } }
             " · engine " (row.engine_version) }
         ul.links.noprint {
             li { a href=(format!("/v1/jobs/{}", row.id)) { "JSON" } }
-            li { a href=(format!("/v1/jobs/{}/csv", row.id)) { "CSV table" } }
+            li { a href=(format!("/v1/jobs/{}/result.csv", row.id)) { "CSV table" } }
             li { a href=(format!("/v1/jobs/{}/values?format=csv", row.id)) { "every value (CSV)" } }
             li { a href=(format!("/v1/jobs/{}/plots", row.id)) { "plots (JSON)" } }
         }
-        (summary(&row, &result))
-        (plot_figures(&row.id, &listed, step))
         h2 { "Values" }
         @if !long.is_empty() {
             p { "Tables of the result (their rows are in the CSV): "
                 @for (k, (pointer, n)) in long.iter().enumerate() { @if k > 0 { ", " } code { (pointer) } " (" (n) " rows)" } }
         }
         (value_table(&values))
+        (summary)
+        (plot_figures(&row.id, &listed, step))
         h2 { "Request" }
         details { summary { "The request as sent" } pre { (String::from_utf8_lossy(&row.request)) } }
     };
@@ -98,7 +94,7 @@ async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Resu
 
 fn title(row: &JobRow) -> String {
     match &row.label {
-        Some(l) => format!("{} job: {l}", row.kind),
+        Some(l) => format!("{} job: {}", row.kind, plots::svg::clean(l)),
         None => format!("{} job", row.kind),
     }
 }
@@ -140,7 +136,7 @@ fn summary(row: &JobRow, result: &Value) -> Markup {
                 @else if v.is_number() { td.num { (text(v)) } } @else { td { (text(v)) } }
             } } } } }
         } @else {
-            p { "This kind states no accuracy of its own: its results are closed forms." }
+            p { "This kind reports no accuracy estimate of its own." }
         }
         @if !warnings.is_empty() {
             h2 { "Warnings" }
@@ -177,13 +173,14 @@ fn plot_figures(id: &str, listed: &[Listed], step: Option<usize>) -> Markup {
 }
 
 /// The result's scalars (accuracy and warnings shown above), and its long
-/// arrays (pointer and length) left to the CSV.
-fn values(kind: &dyn AnyKind, result: &Value) -> (Vec<Scalar>, Vec<(String, usize)>) {
-    let mut short = result.clone();
+/// arrays (pointer and length) left to the CSV: pruned from `result` in
+/// place (a copy would double the memory its read reserved).
+fn values(kind: &dyn AnyKind, result: &mut Value) -> (Vec<Scalar>, Vec<(String, usize)>) {
     let mut long = Vec::new();
-    prune(&mut short, String::new(), &mut long);
+    prune(result, String::new(), &mut long);
+    let short = &*result;
     let skip = |p: &str| p.starts_with("/accuracy/") || p.starts_with("/warnings/") || long.iter().any(|(l, _)| l == p);
-    let values = tables::flatten(kind, &short).into_iter().filter(|s| !skip(&s.pointer)).collect();
+    let values = tables::flatten(kind, short).into_iter().filter(|s| !skip(&s.pointer)).collect();
     (values, long)
 }
 
@@ -205,9 +202,9 @@ fn prune(v: &mut Value, at: String, long: &mut Vec<(String, usize)>) {
 
 fn value_table(values: &[Scalar]) -> Markup {
     html! { div.scroll { table {
-        thead { tr { th { "value" } th { "" } th { "unit" } } }
+        thead { tr { th { "quantity (JSON pointer)" } th { "value" } th { "unit" } } }
         tbody { @for s in values { tr {
-            td.ptr { (s.pointer.trim_start_matches('/')) }
+            td.ptr { @for (k, part) in s.pointer.trim_start_matches('/').split('/').enumerate() { @if k > 0 { "/" wbr; } (part) } }
             @if s.value.is_number() { td.num { (text(&s.value)) } } @else { td { (text(&s.value)) } }
             td { (s.unit.as_deref().filter(|u| *u != "1").unwrap_or("")) }
         } } }
@@ -219,7 +216,7 @@ fn value_table(values: &[Scalar]) -> Markup {
 fn text(v: &Value) -> String {
     match v {
         Value::Number(n) => n.as_f64().map_or_else(|| n.to_string(), number),
-        Value::String(s) => s.clone(),
+        Value::String(s) => plots::svg::clean(s),
         Value::Null => "—".into(),
         other => other.to_string(),
     }

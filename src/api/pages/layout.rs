@@ -25,7 +25,8 @@ a { color: var(--link); }
 table { border-collapse: collapse; font-size: .95rem; }
 th, td { text-align: left; padding: .25rem .7rem .25rem 0; border-bottom: 1px solid var(--line); vertical-align: top; }
 td.num { font-variant-numeric: tabular-nums; white-space: nowrap; }
-td.ptr, td.id { font-family: ui-monospace, "DejaVu Sans Mono", monospace; font-size: .88rem; overflow-wrap: anywhere; }
+td.ptr, td.id { font-family: ui-monospace, "DejaVu Sans Mono", monospace; font-size: .88rem; }
+td.id { overflow-wrap: anywhere; }
 .warnings li { color: var(--warn); }
 .plots { display: grid; grid-template-columns: repeat(auto-fill, minmax(min(100%, 44rem), 1fr)); gap: 1rem; }
 figure { margin: 0; border: 1px solid var(--line); padding: .4rem; background: #fff; break-inside: avoid; max-width: 52rem; }

@@ -56,7 +56,7 @@ pub async fn home(State(state): State<AppState>) -> Response {
                 tbody { @for j in &jobs { tr {
                     td.id { a href=(format!("/jobs/{}", j.id)) { (j.id) } }
                     td { (j.kind) }
-                    td { (j.label.as_deref().unwrap_or("")) }
+                    td { (j.label.as_deref().map(super::plots::svg::clean).unwrap_or_default()) }
                     td.num { (job::when(&j.created_at)) }
                     td.num { (job::duration(j.engine_us)) }
                 } } }

@@ -72,7 +72,7 @@ pub fn draw(m: &Mechanism, poses: &[Option<Pose>], reactions: &[Value], title: S
                 .zip(place(m, poses, j.bodies[0], j.at))
                 .map(|(a, b)| (a.0 - b.0, a.1 - b.1));
             if let Some(u) = turned {
-                slider(&mut c, at, u, span, matches!(j.kind, JointKind::Prismatic { .. }));
+                slider(&mut c, at, u, span, matches!(j.kind, JointKind::Prismatic { .. }).then_some(j.bodies[1]));
             }
         }
         c = c.mark(at, j.name.clone());
@@ -111,19 +111,20 @@ fn body(c: &mut Chart, m: &Mechanism, poses: &[Option<Pose>], joints: &[Option<(
     c.lines.push(Line { label, points: pts, pen: Pen { color: b, dashed: false, width: 4 } });
 }
 
-/// A slider: a box along the axis `u` at `at`, on a dashed guide.
-fn slider(c: &mut Chart, at: (f64, f64), u: (f64, f64), span: f64, boxed: bool) {
+/// A slider: a box (in the colour of body `boxed`) along the axis `u` at
+/// `at`, on a dashed guide; a pin in a slot has the guide alone.
+fn slider(c: &mut Chart, at: (f64, f64), u: (f64, f64), span: f64, boxed: Option<usize>) {
     let n = u.0.hypot(u.1).max(1e-300);
     let (ux, uy) = (u.0 / n, u.1 / n);
     let (a, h) = (0.08 * span, 0.045 * span);
     let guide = vec![(at.0 - 1.5 * a * ux, at.1 - 1.5 * a * uy), (at.0 + 1.5 * a * ux, at.1 + 1.5 * a * uy)];
     c.lines.push(Line { label: None, points: guide, pen: Pen::dashed(7) });
-    if boxed {
+    if let Some(b) = boxed {
         let corner =
             |s: f64, t: f64| (at.0 + s * a / 2.0 * ux - t * h / 2.0 * uy, at.1 + s * a / 2.0 * uy + t * h / 2.0 * ux);
         let pts = vec![corner(-1.0, -1.0), corner(1.0, -1.0), corner(1.0, 1.0), corner(-1.0, 1.0), corner(-1.0, -1.0)];
-        c.fills.push(Fill { points: pts.clone(), color: 7, opacity: 0.3 });
-        c.lines.push(Line { label: None, points: pts, pen: Pen { color: 6, dashed: false, width: 1 } });
+        c.fills.push(Fill { points: pts.clone(), color: b, opacity: 0.35 });
+        c.lines.push(Line { label: None, points: pts, pen: Pen { color: b, dashed: false, width: 1 } });
     }
 }
 
@@ -152,5 +153,5 @@ fn arrows(c: &mut Chart, m: &Mechanism, joints: &[Option<(f64, f64)>], reactions
         });
     }
     let note = format!("joint reactions to scale: the largest, {} N, drawn {} m long", sig(largest), sig(0.25 * span));
-    c.lines.push(Line { label: Some(note), points: Vec::new(), pen: Pen::solid(1) });
+    c.lines.push(Line { label: Some(note), points: Vec::new(), pen: Pen::solid(6) });
 }

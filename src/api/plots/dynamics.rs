@@ -48,22 +48,8 @@ pub fn draw(job: &Job, name: &str, options: &Options) -> Drawn {
     let samples = rows(r, "samples");
     let time = || Axis::new("time t", "s");
     Ok(Some(match name {
-        "angle" => events(
-            r,
-            Chart::new(title, time(), Axis::new("angle φ", "deg")).line(
-                "φ(t)",
-                xy(samples, |s| num(s, "t"), |s| num(s, "angle").map(deg)),
-                Pen::solid(0),
-            ),
-        ),
-        "speed" => events(
-            r,
-            Chart::new(title, time(), Axis::new("speed ω", "rad/s")).line(
-                "ω(t)",
-                xy(samples, |s| num(s, "t"), |s| num(s, "speed")),
-                Pen::solid(0),
-            ),
-        ),
+        "angle" => events(r, inputs(job, Chart::new(title, time(), Axis::new("angle φ", "deg")), "angle", "φ")),
+        "speed" => events(r, inputs(job, Chart::new(title, time(), Axis::new("speed ω", "rad/s")), "speed", "ω")),
         "phase" => Chart::new(title, Axis::new("angle φ", "deg"), Axis::new("speed ω", "rad/s")).line(
             "ω against φ",
             xy(samples, |s| num(s, "angle").map(deg), |s| num(s, "speed")),
@@ -86,6 +72,31 @@ pub fn draw(job: &Job, name: &str, options: &Options) -> Drawn {
     }))
 }
 
+/// Every input's `key` (angle or speed) against time: the first input from
+/// `samples`, the others from the mechanism's samples; each named by its joint.
+fn inputs(job: &Job, mut c: Chart, key: &str, symbol: &str) -> Chart {
+    let value = |v: &Value| num(v, key).map(|x| if key == "angle" { deg(x) } else { x });
+    let machine = machine_samples(job.result);
+    let many = machine.first().map_or(1, |s| rows(s, "inputs").len());
+    let joints: Vec<String> = match job.request.pointer("/machine/input") {
+        Some(Value::Array(list)) => {
+            list.iter().map(|i| i.get("joint").and_then(Value::as_str).unwrap_or("").into()).collect()
+        }
+        Some(one) => vec![one.get("joint").and_then(Value::as_str).unwrap_or("").into()],
+        None => Vec::new(),
+    };
+    let name = |k: usize| joints.get(k).map_or(format!("{symbol}(t)"), |j| format!("{symbol}(t) at joint {j}"));
+    c = c.line(name(0), xy(rows(job.result, "samples"), |s| num(s, "t"), value), Pen::solid(0));
+    for k in 1..many {
+        let points = xy(machine, |s| num(s, "t"), |s| rows(s, "inputs").get(k).and_then(value));
+        c = c.line(name(k), points, Pen::solid(k));
+    }
+    c
+}
+
+/// Fewer samples than this and the plots say the lines between them are straight.
+const FEW_SAMPLES: usize = 50;
+
 /// The events as vertical lines: "turn 1", "turn 2", …, "end".
 fn events(r: &Value, mut c: Chart) -> Chart {
     let mut turns = 0;
@@ -100,8 +111,14 @@ fn events(r: &Value, mut c: Chart) -> Chart {
         c = c.rule(Level::X(t), label, Pen::dashed(7));
     }
     let estimated = r.get("accuracy").and_then(|a| num(a, "estimated_error"));
+    let n = rows(r, "samples").len();
+    let few = if n < FEW_SAMPLES {
+        format!("; only {n} samples, joined by straight lines (ask for more: samples)")
+    } else {
+        String::new()
+    };
     c.subtitle(format!(
-        "{turns} turn{}; energy residual {}; estimated error of the angle {} rad",
+        "{turns} turn{}; energy residual {}; estimated error of the angle {} rad{few}",
         if turns == 1 { "" } else { "s" },
         num(r, "energy_residual").map_or("-".into(), sig),
         estimated.map_or("-".into(), sig),

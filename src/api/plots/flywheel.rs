@@ -19,14 +19,26 @@ pub fn list(job: &Job) -> Vec<Listed> {
     if rows(job.result, "samples").len() < 2 {
         return Vec::new();
     }
-    PLOTS.iter().map(|(n, t)| Listed::new(*n, *t)).collect()
+    let varies = varying_inertia(job.result);
+    PLOTS.iter().filter(|(n, _)| varies || *n != "wittenbauer").map(|(n, t)| Listed::new(*n, *t)).collect()
+}
+
+/// Whether I*(φ) varies over the cycle: with a constant I* Wittenbauer's
+/// diagram is a vertical segment (the exact inertia is then I_approx − I*,
+/// in closed form), so it is not offered.
+fn varying_inertia(r: &Value) -> bool {
+    let (lo, hi) = rows(r, "samples")
+        .iter()
+        .filter_map(|s| num(s, "reduced_inertia"))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)));
+    hi - lo > 1e-9 * (hi.abs() + num(r, "inertia_exact").unwrap_or(0.0).abs())
 }
 
 pub fn draw(job: &Job, name: &str, _: &Options) -> Drawn {
     if rows(job.result, "samples").len() < 2 {
         return Ok(None);
     }
-    let title = PLOTS.iter().find(|p| p.0 == name).map(|p| p.1.to_string());
+    let title = list(job).into_iter().find(|p| p.name == name).map(|p| p.title);
     Ok(title.and_then(|title| match name {
         "torque" => Some(torque(job, title)),
         "work" => Some(work(job.result, title)),

@@ -120,13 +120,13 @@ fn polar(r: &Value, joint: &str, title: String) -> Chart {
         Pen::solid(0),
     );
     c.equal = true;
-    c.marks.push(Mark { at: (0.0, 0.0), text: "O".into(), dot: true });
+    c.marks.push(Mark { at: (0.0, 0.0), text: "origin (0, 0)".into(), dot: true });
     if let Some(&first) = points.first() {
         let x0 = input(r)(&steps[0]).map_or(String::new(), |x| format!(" (input {})", sig(x)));
         c = c.mark(first, format!("first step{x0}"));
     }
     let largest = points.iter().map(|p| p.0.hypot(p.1)).fold(0.0, f64::max);
-    c.subtitle(format!("the arrow from O to the curve is the force; largest {} N", sig(largest)))
+    c.subtitle(format!("the force is the vector from the origin to the curve; largest {} N", sig(largest)))
 }
 
 fn mechanism(job: &Job, title: String, step: usize) -> Drawn {

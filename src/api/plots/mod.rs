@@ -142,8 +142,8 @@ pub async fn plot(
     let q = query(q, &["step"])?;
     let options = Options { step: step(&q)? };
     let Some(name) = file.strip_suffix(".svg") else {
-        let message = format!("'{file}': a plot's address ends in .svg (GET /v1/jobs/{id}/plots lists them)");
-        return Err(ApiError::NoPlot { id, name: file, known: vec![message] });
+        let known = listed(&state, &id).await?.0.into_iter().map(|p| format!("{}.svg", p.name)).collect();
+        return Err(ApiError::NoPlot { id, name: file, known });
     };
     let svg = render(&state, &id, name, options).await?;
     Ok(([(header::CONTENT_TYPE, "image/svg+xml")], svg).into_response())
@@ -177,8 +177,10 @@ pub async fn listed(state: &AppState, id: &str) -> Result<(Vec<Listed>, crate::s
     Ok((plots.unwrap_or_default(), row))
 }
 
-fn step(q: &HashMap<String, String>) -> Result<Option<usize>, ApiError> {
+/// `?step=` (blank: none), or a 400 naming it.
+pub fn step(q: &HashMap<String, String>) -> Result<Option<usize>, ApiError> {
     q.get("step")
+        .filter(|s| !s.trim().is_empty())
         .map(|s| {
             s.trim().parse::<usize>().map_err(|_| {
                 ApiError::BadQuery(vec![FieldError::parameter("step", format!("'{s}': must be a whole number from 0"))])
@@ -189,8 +191,11 @@ fn step(q: &HashMap<String, String>) -> Result<Option<usize>, ApiError> {
 
 /// A step beyond the result's `count` steps, as a 400 at `?step=`.
 pub fn no_step(step: usize, count: usize) -> ApiError {
-    let message =
-        format!("{step}: the job has {count} step{} (0 to {})", if count == 1 { "" } else { "s" }, count.max(1) - 1);
+    let message = match count {
+        0 => format!("{step}: this job draws no mechanism, so it has no steps to choose"),
+        1 => format!("{step}: the job has 1 step (0)"),
+        n => format!("{step}: the job has {n} steps (0 to {})", n - 1),
+    };
     ApiError::BadQuery(vec![FieldError::parameter("step", message)])
 }
 
@@ -251,7 +256,10 @@ pub fn magnitudes(mut c: Chart, mut series: Vec<Series>) -> Chart {
     series.sort_by(|a, b| largest(b).total_cmp(&largest(a)));
     for (k, s) in series.iter().take(MOST_JOINTS).enumerate() {
         let points = s.points.iter().map(|p| (p.0, p.1.hypot(p.2))).collect();
-        c = c.line(format!("joint {}", s.joint), points, chart::Pen::solid(k));
+        // Beyond the palette's eight colours, the same colours dashed.
+        let pen =
+            if k < 8 { chart::Pen::solid(k) } else { chart::Pen { dashed: true, width: 2, ..chart::Pen::solid(k) } };
+        c = c.line(format!("joint {}", s.joint), points, pen);
     }
     if total > MOST_JOINTS {
         c = c.subtitle(format!("the {MOST_JOINTS} largest of {total} joints; each joint's own plot shows the rest"));

@@ -81,7 +81,7 @@ fn draw(root: &Area, chart: &Chart) -> Result<(), Failure> {
     let range = ranges(chart, plot.dim_in_pixel());
     let mut c = axes(&plot, chart, range)?;
     data(root, &mut c, chart, range, plot.dim_in_pixel().0 as usize / S as usize)?;
-    labels(root, &c, chart, range)?;
+    labels(root, &c, chart, range, plot.dim_in_pixel().0 as usize / S as usize)?;
     draw_legend(&foot, &legend)
 }
 
@@ -143,24 +143,39 @@ fn data(
 
 /// The labels of reference lines, arrows and marks, each where it overlaps
 /// no other label and no dot.
-fn labels(root: &Area, c: &Context, chart: &Chart, [_, x1, _, y1]: [f64; 4]) -> Result<(), Failure> {
+fn labels(root: &Area, c: &Context, chart: &Chart, [x0, x1, y0, y1]: [f64; 4], columns: usize) -> Result<(), Failure> {
     let mut placed = Placed::new(c.plotting_area().get_pixel_range());
     for m in chart.marks.iter().filter(|m| m.dot) {
         let p = c.backend_coord(&m.at);
         placed.taken.push((p.0 - px(4), p.1 - px(4), p.0 + px(4), p.1 + px(4)));
     }
+    for l in &chart.lines {
+        placed.avoid(thin(&l.points, columns).iter().map(|p| c.backend_coord(p)));
+    }
     for r in &chart.rules {
-        let (at, prefer) = match r.at {
-            Level::X(x) => (c.backend_coord(&(x, y1)), (4, 4)),
-            Level::Y(y) => (c.backend_coord(&(x1, y)), (-1, -18)),
+        let anchors: Vec<_> = match r.at {
+            // Along a horizontal line: at its right end, its left end, then between.
+            Level::Y(y) => [1.0, 0.0, 0.5, 0.25, 0.75]
+                .iter()
+                .flat_map(|f| {
+                    let at = c.backend_coord(&(x0 + f * (x1 - x0), y));
+                    let dx = if *f > 0.5 { -4 } else { 4 };
+                    [(at, (dx, -18)), (at, (dx, 4))]
+                })
+                .collect(),
+            // Along a vertical line: at its top, its middle, its bottom.
+            Level::X(x) => [(0.0, 4), (0.5, -8), (1.0, -22)]
+                .iter()
+                .map(|(f, dy)| (c.backend_coord(&(x, y1 - f * (y1 - y0))), (4, *dy)))
+                .collect(),
         };
-        placed.label(root, at, &r.label, color(r.pen.color), prefer)?;
+        placed.label(root, &anchors, &r.label, color(r.pen.color))?;
     }
     for a in chart.arrows.iter().filter(|a| !a.label.is_empty()) {
-        placed.label(root, c.backend_coord(&a.to), &a.label, color(a.color), (6, -16))?;
+        placed.label(root, &around(c.backend_coord(&a.to)), &a.label, color(a.color))?;
     }
     for m in &chart.marks {
-        placed.label(root, c.backend_coord(&m.at), &m.text, BLACK, (7, -18))?;
+        placed.label(root, &around(c.backend_coord(&m.at)), &m.text, BLACK)?;
     }
     Ok(())
 }
@@ -264,55 +279,84 @@ fn arrow(root: &Area, from: (i32, i32), to: (i32, i32), c: RGBColor) -> Result<(
     Ok(())
 }
 
-/// Rectangles already drawn on, in pixels, and the plot's area.
+/// Rectangles already drawn on (labels, dots), the curves' pixels, and
+/// the plot's area, in pixels.
 struct Placed {
     taken: Vec<(i32, i32, i32, i32)>,
+    curves: Vec<(i32, i32)>,
     area: (std::ops::Range<i32>, std::ops::Range<i32>),
 }
+
+type Rect = (i32, i32, i32, i32);
+/// Where a label may go: a point and the text's offset from it, px of the plot.
+type Anchor = ((i32, i32), (i32, i32));
 
 impl Placed {
     /// Labels stay within the plot, or up to 12 px above it (into its top
     /// margin: a line at the top of the range still has its label above it).
     fn new((x, y): (std::ops::Range<i32>, std::ops::Range<i32>)) -> Self {
-        Self { taken: Vec::new(), area: (x, y.start - px(12)..y.end) }
+        Self { taken: Vec::new(), curves: Vec::new(), area: (x, y.start - px(12)..y.end) }
     }
 
-    /// Writes `text` near `at`, first at offset `prefer`, else at the first
-    /// of a few other offsets where it overlaps nothing placed and stays in
-    /// the plot; nowhere if none is free.
-    fn label(
-        &mut self,
-        root: &Area,
-        at: (i32, i32),
-        text: &str,
-        c: RGBColor,
-        prefer: (i32, i32),
-    ) -> Result<(), Failure> {
+    /// The pixels of a curve (a point every 6 px along it), for labels to avoid.
+    fn avoid(&mut self, pixels: impl Iterator<Item = (i32, i32)>) {
+        let mut last: Option<(i32, i32)> = None;
+        for p in pixels {
+            if let Some(a) = last {
+                let n = ((p.0 - a.0).abs().max((p.1 - a.1).abs()) / px(6)).max(1);
+                self.curves.extend((1..=n).map(|k| (a.0 + (p.0 - a.0) * k / n, a.1 + (p.1 - a.1) * k / n)));
+            } else {
+                self.curves.push(p);
+            }
+            last = Some(p);
+        }
+    }
+
+    fn inside(&self, r: Rect) -> bool {
+        r.0 >= self.area.0.start && r.2 <= self.area.0.end && r.1 >= self.area.1.start && r.3 <= self.area.1.end
+    }
+
+    fn clear_of_labels(&self, r: Rect) -> bool {
+        !self.taken.iter().any(|t| r.0 < t.2 && t.0 < r.2 && r.1 < t.3 && t.1 < r.3)
+    }
+
+    fn clear_of_curves(&self, r: Rect) -> bool {
+        let m = px(2);
+        !self.curves.iter().any(|p| p.0 >= r.0 - m && p.0 <= r.2 + m && p.1 >= r.1 - m && p.1 <= r.3 + m)
+    }
+
+    /// Writes `text` at the first of `anchors` (a point and an offset, px of
+    /// the plot) where it stays in the plot and overlaps no label and no
+    /// curve; failing that, the first where it overlaps no label (crossing
+    /// a curve, on a white ground); nowhere if none is free.
+    fn label(&mut self, root: &Area, anchors: &[Anchor], text: &str, c: RGBColor) -> Result<(), Failure> {
         if text.is_empty() {
             return Ok(());
         }
         let text = clean(text);
-        let (w, h) = ((text.chars().count() as f64 * 13.0 * CHAR_WIDTH) as i32, 15);
-        let offsets = [prefer, (7, 4), (-w - 7, -18), (-w - 7, 4), (-w / 2, -24), (-w / 2, 8), (7, -34), (-w - 7, -34)];
-        let (w, h) = (px(w), px(h));
-        for (dx, dy) in offsets.map(|(x, y)| (px(x), px(y))) {
-            let r = (at.0 + dx, at.1 + dy, at.0 + dx + w, at.1 + dy + h);
-            let inside = r.0 >= self.area.0.start
-                && r.2 <= self.area.0.end
-                && r.1 >= self.area.1.start
-                && r.3 <= self.area.1.end;
-            if inside && !self.taken.iter().any(|t| r.0 < t.2 && t.0 < r.2 && r.1 < t.3 && t.1 < r.3) {
-                root.draw(&Rectangle::new(
-                    [(r.0 - px(2), r.1 - px(1)), (r.2 + px(2), r.3 + px(1))],
-                    WHITE.mix(0.85).filled(),
-                ))?;
-                root.draw(&Text::new(text, (r.0, r.1), (FONT, px(13)).into_font().color(&c)))?;
-                self.taken.push(r);
-                return Ok(());
-            }
-        }
+        let (w, h) = (px((text.chars().count() as f64 * 13.0 * CHAR_WIDTH) as i32), px(15));
+        let rects: Vec<Rect> = anchors
+            .iter()
+            .map(|&(at, (dx, dy))| {
+                let (x, y) = (at.0 + px(dx), at.1 + px(dy));
+                let x = if dx < 0 { x - w } else { x };
+                (x, y, x + w, y + h)
+            })
+            .filter(|r| self.inside(*r) && self.clear_of_labels(*r))
+            .collect();
+        let Some(&r) = rects.iter().find(|r| self.clear_of_curves(**r)).or(rects.first()) else { return Ok(()) };
+        let ground = [(r.0 - px(2), r.1 - px(1)), (r.2 + px(2), r.3 + px(1))];
+        root.draw(&Rectangle::new(ground, WHITE.mix(0.85).filled()))?;
+        root.draw(&Text::new(text, (r.0, r.1), (FONT, px(13)).into_font().color(&c)))?;
+        self.taken.push(r);
         Ok(())
     }
+}
+
+/// Around a point: right above, right below, left above, left below, then
+/// further out (a negative x offset puts the text's right end there).
+fn around(at: (i32, i32)) -> Vec<Anchor> {
+    [(7, -18), (7, 4), (-7, -18), (-7, 4), (7, -34), (-7, -34), (7, 20), (-7, 20)].map(|o| (at, o)).to_vec()
 }
 
 /// Where each entry of the legend goes: (x, y) in px of the plot, entries
@@ -357,10 +401,14 @@ fn draw_legend(foot: &Area, legend: &[&Line]) -> Result<(), Failure> {
     Ok(())
 }
 
-/// Text as XML may hold it: control characters (which XML 1.0 forbids even
-/// escaped) become U+FFFD.
+/// Text as a person may safely read it: control characters (which XML 1.0
+/// forbids even escaped) and the invisible marks that reverse the direction
+/// of text (which would show "evil" as "live") become U+FFFD.
 pub fn clean(text: &str) -> String {
-    text.chars().map(|c| if c.is_control() { '\u{FFFD}' } else { c }).collect()
+    let hidden = |c: char| {
+        c.is_control() || matches!(c, '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
+    };
+    text.chars().map(|c| if hidden(c) { '\u{FFFD}' } else { c }).collect()
 }
 
 fn xml_escape(text: &str) -> String {
