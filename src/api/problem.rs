@@ -18,6 +18,14 @@ pub struct FieldError {
 }
 
 impl FieldError {
+    /// "where: message" (the query parameter or the pointer), for a person.
+    pub fn describe(&self) -> String {
+        match (&self.parameter, &self.pointer) {
+            (Some(p), _) | (None, Some(p)) if !p.is_empty() => format!("{p}: {}", self.message),
+            _ => self.message.clone(),
+        }
+    }
+
     pub fn at(pointer: impl Into<String>, message: impl Into<String>) -> Self {
         Self { pointer: Some(pointer.into()), parameter: None, message: message.into() }
     }

@@ -58,6 +58,7 @@ async fn a_jobs_page_has_its_values_with_units_accuracy_time_plots_and_links() {
     for link in links.iter().filter(|l| l.starts_with('/')) {
         assert_eq!(app.get(link).await.status, StatusCode::OK, "{link}");
     }
+    // 361 rows: a flywheel's default samples, one a degree over the cycle.
     assert!(page.contains("<code>/samples</code> (361 rows)"), "a long table is named, its rows left to the CSV");
     assert!(!page.contains("samples/0/"), "no row of it in the page");
 }

@@ -71,6 +71,7 @@ async fn a_flywheel_has_its_four_plots_and_their_numbers_are_the_results() {
     // Its extremes, each labelled at its line (S_max is at the top of the range, S_min at the bottom).
     let sums: Vec<f64> = result["cumulative"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
     let (lo, hi) = sums.iter().fold((0.0_f64, 0.0_f64), |(a, b), &x| (a.min(x), b.max(x)));
+    // ΔE = S_max − S_min by definition; 1e-9 of ΔE: the rounding of a few sums.
     assert!((hi - lo - de).abs() < 1e-9 * de, "ΔE = S_max − S_min");
     for label in
         [format!("S_max = {} J", mechdyn::api::plots::sig(hi)), format!("S_min = {} J", mechdyn::api::plots::sig(lo))]
@@ -231,5 +232,6 @@ async fn the_energy_residual_is_stored_at_every_sample_and_agrees_with_the_resul
     let last = samples.last().unwrap()["energy_residual"].as_f64().unwrap();
     let by_quadrature = reduced["energy_residual"].as_f64().unwrap();
     assert!((last - by_quadrature).abs() < 1e-9, "{last} against {by_quadrature}");
+    // Along the way the balance holds to the same order: 1e-8, ten times the agreement above.
     assert!(samples.iter().all(|s| s["energy_residual"].as_f64().unwrap().abs() < 1e-8));
 }

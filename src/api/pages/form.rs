@@ -76,7 +76,7 @@ fn form(t: &Template, given: &HashMap<String, String>, error: Option<&ApiError>)
             @if let Some(s) = &t.source { " · " (s) } }
         @if let Some(e) = error {
             p.error { (e.to_string()) }
-            @if !others.is_empty() { ul { @for f in &others { li.error { (describe(f)) } } } }
+            @if !others.is_empty() { ul { @for f in &others { li.error { (f.describe()) } } } }
         }
         p { "A number is read in the unit beside its name; a quantity with its own unit (\"300 rpm\", \"4 %\") is read in that unit; a field left blank keeps its default." }
         form.params method="get" action=(format!("/templates/{}", crate::api::plots::segment(&t.id))) {
@@ -96,13 +96,6 @@ fn form(t: &Template, given: &HashMap<String, String>, error: Option<&ApiError>)
             code { "/v1/templates/" (t.id) "/result/POINTER?NAME=VALUE" } "." }
     };
     layout::page(&title, body)
-}
-
-fn describe(f: &FieldError) -> String {
-    match (&f.parameter, &f.pointer) {
-        (Some(p), _) | (None, Some(p)) if !p.is_empty() => format!("{p}: {}", f.message),
-        _ => f.message.clone(),
-    }
 }
 
 /// A parameter's description and range, in its unit.

@@ -2,12 +2,12 @@
 //! its accuracy, its plots, its values with their units (a long table's
 //! rows left to its CSV), its request, and links to each as data.
 
-use super::{IdPath, layout, query_of};
+use super::{IdPath, layout};
 use crate::api::AppState;
 use crate::api::kind::{self, AnyKind};
 use crate::api::plots::{self, Listed};
-use crate::api::problem::{ApiError, FieldError};
-use crate::api::read::result_tree;
+use crate::api::problem::ApiError;
+use crate::api::read::{self, result_tree};
 use crate::api::tables::{self, Scalar};
 use crate::store::JobRow;
 use axum::extract::rejection::QueryRejection;
@@ -40,7 +40,7 @@ pub async fn job(
     id: IdPath,
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
 ) -> Response {
-    let q = match query_of(q) {
+    let q = match read::query(q, &["step"]) {
         Ok(q) => q,
         Err(e) => return layout::error(e),
     };
@@ -51,9 +51,6 @@ pub async fn job(
 }
 
 async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Result<Markup, ApiError> {
-    if let Some(k) = q.keys().find(|k| *k != "step") {
-        return Err(ApiError::BadQuery(vec![FieldError::parameter(k, "unknown parameter (known: step)")]));
-    }
     let step = plots::step(q)?;
     let (row, mut result, _reserved) = result_tree(state, id).await?;
     let request = serde_json::from_slice::<Value>(&row.request).unwrap_or_default();

@@ -3,7 +3,7 @@
 //! answer's headers (a Content-Security-Policy that allows no script and
 //! nothing from elsewhere). maud escapes every text put in a page.
 
-use crate::api::problem::ApiError;
+use crate::api::problem::{ApiError, FieldError};
 use axum::http::{HeaderValue, StatusCode, header};
 use axum::response::{IntoResponse, Response};
 use maud::{DOCTYPE, Markup, PreEscaped, html};
@@ -100,15 +100,7 @@ pub fn answer(status: StatusCode, page: Markup) -> Response {
 /// An error as a page: its status, its title and every message.
 pub fn error(e: ApiError) -> Response {
     let status = e.status();
-    let details: Vec<String> = e
-        .fields()
-        .iter()
-        .map(|f| match (&f.parameter, &f.pointer) {
-            (Some(p), _) => format!("{p}: {}", f.message),
-            (None, Some(p)) if !p.is_empty() => format!("{p}: {}", f.message),
-            _ => f.message.clone(),
-        })
-        .collect();
+    let details: Vec<String> = e.fields().iter().map(FieldError::describe).collect();
     let title = status.canonical_reason().unwrap_or("Error");
     answer(
         status,

@@ -38,7 +38,9 @@ pub fn draw(job: &Job, name: &str, _: &Options) -> Drawn {
     if rows(job.result, "samples").len() < 2 {
         return Ok(None);
     }
-    let title = list(job).into_iter().find(|p| p.name == name).map(|p| p.title);
+    // Wittenbauer's diagram only when I* varies (as listed); the others always.
+    let offered = name != "wittenbauer" || varying_inertia(job.result);
+    let title = PLOTS.iter().find(|p| p.0 == name && offered).map(|p| p.1.to_string());
     Ok(title.and_then(|title| match name {
         "torque" => Some(torque(job, title)),
         "work" => Some(work(job.result, title)),
