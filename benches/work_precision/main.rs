@@ -18,6 +18,7 @@ mod flywheel;
 mod grading;
 mod http;
 mod kinetostatics;
+mod large;
 mod pendulum;
 mod slider_crank;
 
@@ -197,6 +198,11 @@ fn main() {
         print!("{}", grading::section());
         return;
     }
+    // `… -- large`: the large mechanisms' section alone, the same way.
+    if std::env::args().any(|a| a == "large") {
+        print!("{}", large::section());
+        return;
+    }
     let mut points: Vec<Point> = TOLERANCES.iter().map(|t| d1(*t)).collect();
     points.extend(TOLERANCES.iter().map(|t| a03(*t)));
     points.extend(pendulum::points());
@@ -261,6 +267,8 @@ fn main() {
     let (text, slider_crank) = slider_crank::section();
     doc.push_str(&text);
     points.extend(slider_crank);
+    doc.push('\n');
+    doc.push_str(&large::section());
     doc.push('\n');
     doc.push_str(&kinetostatics::section());
     doc.push('\n');

@@ -44,15 +44,71 @@ pub fn joint_offsets(m: &Mechanism) -> Vec<usize> {
         .collect()
 }
 
-struct Builder<'a> {
+/// Φ_q by blocks: row k touches at most three bodies, each a block
+/// (column of the body's x, [∂/∂x, ∂/∂y, ∂/∂θ]). Direct dynamics of large
+/// mechanisms works on this form; its cost grows with the rows, not with
+/// rows × coordinates.
+#[derive(Clone, Debug, Default)]
+pub struct Blocks {
+    pub rows: Vec<RowBlocks>,
+}
+
+/// The blocks of one row of Φ_q.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RowBlocks {
+    pub len: usize,
+    pub col: [usize; 3],
+    pub val: [[f64; 3]; 3],
+}
+
+impl RowBlocks {
+    pub fn iter(&self) -> impl Iterator<Item = (usize, &[f64; 3])> {
+        self.col[..self.len].iter().copied().zip(&self.val[..self.len])
+    }
+
+    /// Σ Φ_q,k·v over the row's blocks.
+    pub fn dot(&self, v: &[f64]) -> f64 {
+        self.iter().map(|(c, d)| d[0] * v[c] + d[1] * v[c + 1] + d[2] * v[c + 2]).sum()
+    }
+}
+
+/// Where the Builder writes Φ_q: a dense matrix or [`Blocks`].
+trait Jacobian {
+    fn add(&mut self, row: usize, col: usize, d: [f64; 3]);
+}
+
+impl Jacobian for DMatrix<f64> {
+    fn add(&mut self, row: usize, col: usize, d: [f64; 3]) {
+        for (k, v) in d.into_iter().enumerate() {
+            self[(row, col + k)] += v;
+        }
+    }
+}
+
+impl Jacobian for Blocks {
+    fn add(&mut self, row: usize, col: usize, d: [f64; 3]) {
+        let r = &mut self.rows[row];
+        let k = r.col[..r.len].iter().position(|&c| c == col).unwrap_or_else(|| {
+            r.len += 1;
+            r.col[r.len - 1] = col;
+            r.val[r.len - 1] = [0.0; 3];
+            r.len - 1
+        });
+        (0..3).for_each(|i| r.val[k][i] += d[i]);
+    }
+}
+
+struct Builder<'a, J> {
     m: &'a Mechanism,
     s: &'a State<'a>,
     /// (sin θ, cos θ) of every body, ground first: one evaluation each.
     trig: Vec<(f64, f64)>,
-    sys: System,
+    phi: Vec<f64>,
+    gamma: Vec<f64>,
+    jacobian: J,
 }
 
-impl Builder<'_> {
+impl<J: Jacobian> Builder<'_, J> {
     /// A(θ_b)·s.
     fn rot(&self, b: BodyId, s: [f64; 2]) -> [f64; 2] {
         let (sn, cs) = self.trig[b];
@@ -80,9 +136,7 @@ impl Builder<'_> {
 
     fn add(&mut self, row: usize, b: BodyId, dr: [f64; 2], dtheta: f64) {
         if let Some(c) = self.m.column(b) {
-            self.sys.jacobian[(row, c)] += dr[0];
-            self.sys.jacobian[(row, c + 1)] += dr[1];
-            self.sys.jacobian[(row, c + 2)] += dtheta;
+            self.jacobian.add(row, c, [dr[0], dr[1], dtheta]);
         }
     }
 
@@ -101,11 +155,11 @@ impl Builder<'_> {
         let (bi, bj) = (self.rot_d(i, si), self.rot_d(j, sj));
         let (ai, aj) = (self.rot(i, si), self.rot(j, sj));
         for k in 0..2 {
-            self.sys.phi[row + k] = pi[k] - pj[k];
+            self.phi[row + k] = pi[k] - pj[k];
             let e = if k == 0 { [1.0, 0.0] } else { [0.0, 1.0] };
             self.add(row + k, i, e, bi[k]);
             self.add(row + k, j, [-e[0], -e[1]], -bj[k]);
-            self.sys.gamma[row + k] = ai[k] * wi * wi - aj[k] * wj * wj;
+            self.gamma[row + k] = ai[k] * wi * wi - aj[k] * wj * wj;
         }
     }
 
@@ -116,17 +170,17 @@ impl Builder<'_> {
         let ((_, wi), (_, wj)) = (self.rates(i), self.rates(j));
         let (d, dd) = ([pj[0] - pi[0], pj[1] - pi[1]], [vj[0] - vi[0], vj[1] - vi[1]]);
         let (e, de) = (self.rot(i, e0), self.rot_d(i, e0));
-        self.sys.phi[row] = dot(e, d) - target;
+        self.phi[row] = dot(e, d) - target;
         self.add(row, i, [-e[0], -e[1]], dot(de, d) - dot(e, self.rot_d(i, si)));
         self.add(row, j, e, dot(e, self.rot_d(j, sj)));
         let (ai, aj) = (self.rot(i, si), self.rot(j, sj));
         let centripetal = [ai[0] * wi * wi - aj[0] * wj * wj, ai[1] * wi * wi - aj[1] * wj * wj];
-        self.sys.gamma[row] = dot(e, d) * wi * wi - 2.0 * wi * dot(de, dd) - dot(e, centripetal);
+        self.gamma[row] = dot(e, d) * wi * wi - 2.0 * wi * dot(de, dd) - dot(e, centripetal);
     }
 
     /// Row a·θ_i + b·θ_j + c·θ_c − target.
     fn angles(&mut self, row: usize, terms: &[(BodyId, f64)], target: f64) {
-        self.sys.phi[row] = terms.iter().map(|&(b, k)| k * self.pose(b).1).sum::<f64>() - target;
+        self.phi[row] = terms.iter().map(|&(b, k)| k * self.pose(b).1).sum::<f64>() - target;
         for &(b, k) in terms {
             self.add(row, b, [0.0, 0.0], k);
         }
@@ -136,9 +190,20 @@ impl Builder<'_> {
 /// Φ, Φ_q and γ at a state.
 pub fn evaluate(m: &Mechanism, s: &State) -> System {
     let (rows, n) = (n_rows(m), m.n_coordinates());
-    let sys = System { phi: DVector::zeros(rows), jacobian: DMatrix::zeros(rows, n), gamma: DVector::zeros(rows) };
+    let b = build(m, s, DMatrix::zeros(rows, n));
+    System { phi: DVector::from_vec(b.phi), jacobian: b.jacobian, gamma: DVector::from_vec(b.gamma) }
+}
+
+/// Φ, γ and Φ_q by blocks at a state (as [`evaluate`], without the dense matrix).
+pub fn evaluate_blocks(m: &Mechanism, s: &State) -> (Vec<f64>, Vec<f64>, Blocks) {
+    let b = build(m, s, Blocks { rows: vec![RowBlocks::default(); n_rows(m)] });
+    (b.phi, b.gamma, b.jacobian)
+}
+
+fn build<'a, J: Jacobian>(m: &'a Mechanism, s: &'a State<'a>, jacobian: J) -> Builder<'a, J> {
+    let rows = n_rows(m);
     let trig = (0..m.bodies.len()).map(|b| m.column(b).map_or((0.0, 1.0), |c| s.q[c + 2].sin_cos())).collect();
-    let mut b = Builder { m, s, trig, sys };
+    let mut b = Builder { m, s, trig, phi: vec![0.0; rows], gamma: vec![0.0; rows], jacobian };
     let mut row = 0;
     for joint in &m.joints {
         let [i, j] = joint.bodies;
@@ -164,10 +229,10 @@ pub fn evaluate(m: &Mechanism, s: &State) -> System {
             _ => b.angles(row, &[(j, 1.0), (i, -1.0)], value),
         }
         // Φ_d = f(q) − φ(t): Φ_q q̈ = γ_f + φ̈.
-        b.sys.gamma[row] += input[2];
+        b.gamma[row] += input[2];
         row += 1;
     }
-    b.sys
+    b
 }
 
 /// The right-hand side ν of the velocity equation Φ_q q̇ = ν: the input speeds.
@@ -233,6 +298,27 @@ mod tests {
                     assert!((fd - jac[(r, c)]).abs() < 1e-7, "{name} row {r} col {c}: {} vs {fd}", jac[(r, c)]);
                 }
             }
+        }
+    }
+
+    /// The blocks hold the same Φ, γ and Φ_q as the dense evaluation, for
+    /// every joint and driver type (the same arithmetic: bit for bit).
+    #[test]
+    fn blocks_equal_the_dense_evaluation() {
+        for (name, m, q, qd) in cases() {
+            let inputs = vec![[0.3, 0.2, 0.1]; m.drivers.len()];
+            let state = State { q: &q, qd: Some(&qd), inputs: &inputs };
+            let dense = evaluate(&m, &state);
+            let (phi, gamma, blocks) = evaluate_blocks(&m, &state);
+            assert_eq!(dense.phi.as_slice(), &phi[..], "{name}");
+            assert_eq!(dense.gamma.as_slice(), &gamma[..], "{name}");
+            let mut from_blocks = DMatrix::zeros(phi.len(), q.len());
+            for (r, row) in blocks.rows.iter().enumerate() {
+                for (c, d) in row.iter() {
+                    (0..3).for_each(|k| from_blocks[(r, c + k)] += d[k]);
+                }
+            }
+            assert_eq!(dense.jacobian, from_blocks, "{name}");
         }
     }
 

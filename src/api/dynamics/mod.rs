@@ -161,12 +161,19 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
             let s = mechanism::solve(&p).map_err(invalid)?;
             let mut result = DynamicsResult::from(s.solution.clone());
             result.accuracy.constraint_drift = Some(s.drift);
-            result.accuracy.method = "Dormand-Prince 5(4) on the index-1 equations of motion [M Φ_qᵀ; Φ_q 0], \
-                                      the state projected onto Φ = 0 and Φ_q·q̇ = 0 after every step; \
-                                      rows of Φ_q within 1e-5 of dependence held at singular positions, \
-                                      dependent ones dropped; events by Brent's method on the dense output; \
-                                      work as the integrated power"
-                .into();
+            let form = if s.sparse {
+                "solved by the range-space method (sparse LDLᵀ of Φ_q M⁻¹ Φ_qᵀ) away from singular positions \
+                 and by LU near them"
+            } else {
+                "solved by LU"
+            };
+            result.accuracy.method = format!(
+                "Dormand-Prince 5(4) on the index-1 equations of motion [M Φ_qᵀ; Φ_q 0], {form}; \
+                 the state projected onto Φ = 0 and Φ_q·q̇ = 0 after every step; \
+                 rows of Φ_q within 1e-5 of dependence held at singular positions, \
+                 dependent ones dropped; events by Brent's method on the dense output; \
+                 work as the integrated power"
+            );
             if let Some(t) = s.near_singular.first() {
                 result.warnings.push(format!(
                     "the motion passed close to singular positions (the joint Jacobian nearly lost rank) {} time(s), \

@@ -17,15 +17,16 @@
 //! Redundant constraints, and the nearly dependent rows at a singular
 //! position, are handled by [`super::rows`]: those reactions are flagged.
 
-use super::rows::Rows;
-use super::{DynamicsError, DynamicsSolution, End, Model, Sample, Settings, energy_residual, run, sample_states};
+use super::equations::{Equations, masses};
+use super::range_space::RangeSpace;
+use super::{DynamicsError, DynamicsSolution, End, Sample, Settings, energy_residual, run, sample_states};
 use crate::engine::Deadline;
-use crate::engine::constraints::{State, System, evaluate, joint_offsets};
+use crate::engine::constraints::{State, evaluate, evaluate_blocks, joint_offsets};
 use crate::engine::kinematics::sweep;
-use crate::engine::kinetostatics::{Load, Reaction, applied_forces, reactions};
+use crate::engine::kinetostatics::{Load, Reaction, reactions};
 use crate::engine::mobility::{Mobility, mobility};
 use crate::engine::model::Mechanism;
-use nalgebra::{DMatrix, DVector};
+use nalgebra::DVector;
 use std::cell::RefCell;
 
 /// A validated mechanism problem in SI units.
@@ -71,134 +72,21 @@ pub struct MechanismSolution {
     /// held the fold motion (see [`super::rows`]): singular positions passed
     /// at close range (one time per cluster of evaluations).
     pub near_singular: Vec<f64>,
-}
-
-struct Dae<'a> {
-    p: &'a MechanismProblem,
-    /// Coordinates n and joint rows r.
-    n: usize,
-    r: usize,
-    mass: Vec<f64>,
-    /// Column scale of Φ_q for [`Rows`]: 1 for x, y and 1/L for angles.
-    scale: Vec<f64>,
-    /// Position tolerance of the projection, m.
-    tol: f64,
-    /// Times of the evaluations that held a fold.
-    held_at: RefCell<Vec<f64>>,
-}
-
-/// q̈, λ, Q and the system at a state.
-struct Accelerations {
-    qdd: DVector<f64>,
-    lambda: DVector<f64>,
-    forces: DVector<f64>,
-    sys: System,
-    rows: Rows,
-}
-
-impl Dae<'_> {
-    /// Φ, Φ_q and γ of the joints and of the inputs' coordinate functions
-    /// (rows r.., where Φ is φ itself: the drivers evaluated at input 0).
-    fn system(&self, q: &[f64], qd: Option<&[f64]>) -> System {
-        let zeros = vec![[0.0; 3]; self.p.mechanism.drivers.len()];
-        evaluate(&self.p.mechanism, &State { q, qd, inputs: &zeros })
-    }
-
-    fn accelerations(&self, t: f64, q: &[f64], qd: &[f64]) -> Option<Accelerations> {
-        let (n, r) = (self.n, self.r);
-        let sys = self.system(q, Some(qd));
-        let jac = sys.jacobian.rows(0, r).into_owned();
-        let rows = Rows::of(&jac, &self.scale);
-        if rows.holds() {
-            self.held_at.borrow_mut().push(t);
-        }
-        let jac = rows.motion(jac);
-        let k = jac.nrows();
-        let phi = sys.phi[r].rem_euclid(self.p.period);
-        let omega = (sys.jacobian.row(r) * DVector::from_column_slice(qd))[0];
-        let forces = applied_forces(&self.p.mechanism, &self.p.loads, q, qd, phi, [omega, t]);
-        let mut a = DMatrix::zeros(n + k, n + k);
-        for (i, m) in self.mass.iter().enumerate() {
-            a[(i, i)] = *m;
-        }
-        a.view_mut((0, n), (n, k)).copy_from(&jac.transpose());
-        a.view_mut((n, 0), (k, n)).copy_from(&jac);
-        let mut b = DVector::zeros(n + k);
-        b.rows_mut(0, n).copy_from(&forces);
-        b.rows_mut(n, k).copy_from(&rows.gamma(sys.gamma.rows(0, r).into_owned()));
-        let x = a.lu().solve(&b)?;
-        x.iter().all(|v| v.is_finite()).then(|| Accelerations {
-            qdd: x.rows(0, n).into_owned(),
-            lambda: rows.multipliers(x.rows(n, k).into_owned()),
-            forces,
-            sys,
-            rows,
-        })
-    }
-
-    /// The minimum-norm x with J x = b, J of full row rank.
-    fn min_norm(jac: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
-        let ch = (jac * jac.transpose()).cholesky()?;
-        Some(jac.transpose() * ch.solve(b))
-    }
-
-    fn kinetic(&self, qd: &[f64]) -> f64 {
-        0.5 * self.mass.iter().zip(qd).map(|(m, v)| m * v * v).sum::<f64>()
-    }
-}
-
-impl Model for Dae<'_> {
-    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-        let n = self.n;
-        let (q, qd) = (&y[..n], &y[n..2 * n]);
-        match self.accelerations(t, q, qd) {
-            Some(acc) => {
-                dy[..n].copy_from_slice(qd);
-                dy[n..2 * n].copy_from_slice(acc.qdd.as_slice());
-                dy[2 * n] = acc.forces.dot(&DVector::from_column_slice(qd));
-            }
-            // A singular matrix: the stepper rejects the step and retries smaller.
-            None => dy.fill(f64::NAN),
-        }
-    }
-
-    fn angle(&self, y: &[f64]) -> f64 {
-        self.system(&y[..self.n], None).phi[self.r]
-    }
-
-    fn speed(&self, y: &[f64]) -> f64 {
-        let n = self.n;
-        let sys = self.system(&y[..n], None);
-        (sys.jacobian.row(self.r) * DVector::from_column_slice(&y[n..2 * n]))[0]
-    }
-
-    fn project(&self, y: &mut [f64]) -> f64 {
-        let (n, r) = (self.n, self.r);
-        let mut removed = 0.0f64;
-        for _ in 0..8 {
-            let sys = self.system(&y[..n], None);
-            let (jac, phi) = (sys.jacobian.rows(0, r).into_owned(), sys.phi.rows(0, r).into_owned());
-            removed = removed.max(phi.amax());
-            // A held or dropped combination is not corrected in position.
-            let rows = Rows::of(&jac, &self.scale);
-            let phi = rows.position_residual(phi);
-            if phi.amax() <= self.tol {
-                let jac = rows.motion(jac);
-                let v = &jac * DVector::from_column_slice(&y[n..2 * n]);
-                if let Some(dv) = Self::min_norm(&jac, &(-v)) {
-                    y[n..2 * n].iter_mut().zip(dv.iter()).for_each(|(a, d)| *a += d);
-                }
-                break;
-            }
-            let Some(dq) = Self::min_norm(&rows.positions(jac), &(-phi)) else { break };
-            y[..n].iter_mut().zip(dq.iter()).for_each(|(a, d)| *a += d);
-        }
-        removed
-    }
+    /// The equations were solved in the sparse (range-space) form away
+    /// from singular positions; else by the dense form throughout.
+    pub sparse: bool,
+    /// Evaluations of the equations of motion in the dense form.
+    pub dense_evaluations: usize,
 }
 
 /// Integrates the mechanism from its initial state.
 pub fn solve(p: &MechanismProblem) -> Result<MechanismSolution, DynamicsError> {
+    solve_in(p, true)
+}
+
+/// [`solve`], in the sparse form where it applies only if `sparse` (the
+/// dense form throughout otherwise: a cross-check of the two).
+pub fn solve_in(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution, DynamicsError> {
     let m = &p.mechanism;
     let initial = |reason: String| DynamicsError::Initial { reason };
     let inputs: Vec<[f64; 3]> = p.initial.iter().map(|[a, w]| [*a, *w, 0.0]).collect();
@@ -218,18 +106,21 @@ pub fn solve(p: &MechanismProblem) -> Result<MechanismSolution, DynamicsError> {
         )));
     }
     let n = m.n_coordinates();
-    let mass: Vec<f64> =
-        (0..n).map(|k| if k % 3 == 2 { m.bodies[k / 3 + 1].inertia } else { m.bodies[k / 3 + 1].mass }).collect();
+    let mass = masses(m);
     let length = characteristic_length(m);
-    let dae = Dae {
+    let (phi, _, jac) = evaluate_blocks(m, &State { q: &start.q, qd: None, inputs: &vec![[0.0; 3]; m.drivers.len()] });
+    let r = phi.len() - m.drivers.len();
+    let sparse = (sparse && mobility.redundant_constraints == 0).then(|| RangeSpace::new(&jac, r, &mass)).flatten();
+    let dae = Equations {
         p,
         n,
-        r: evaluate(m, &State { q: &start.q, qd: None, inputs: &vec![[0.0; 3]; m.drivers.len()] }).phi.len()
-            - m.drivers.len(),
+        r,
         mass,
         scale: (0..n).map(|k| if k % 3 == 2 { 1.0 / length } else { 1.0 }).collect(),
         tol: 1e-12 * length,
+        sparse: sparse.map(RefCell::new),
         held_at: RefCell::new(Vec::new()),
+        dense: Default::default(),
     };
     let settings = settings(p, &start.q, &start.qd, length);
     let mut y0 = start.q.clone();
@@ -263,7 +154,9 @@ pub fn solve(p: &MechanismProblem) -> Result<MechanismSolution, DynamicsError> {
         stopped: run.stopped,
     };
     let near_singular = clusters(&dae.held_at.borrow(), run.t_end);
-    Ok(MechanismSolution { solution, details, mobility, drift: run.drift, near_singular })
+    let sparse = dae.sparse.is_some();
+    let dense_evaluations = dae.dense.get();
+    Ok(MechanismSolution { solution, details, mobility, drift: run.drift, near_singular, sparse, dense_evaluations })
 }
 
 /// The first time of each cluster of held evaluations (gaps over t_end/1000 apart).
@@ -317,36 +210,28 @@ fn characteristic_length(m: &Mechanism) -> f64 {
 }
 
 /// Inputs, reactions and constraint residual at a sampled state.
-fn sample(dae: &Dae, mobility: &Mobility, t: f64, y: &[f64]) -> Result<MechanismSample, DynamicsError> {
+fn sample(dae: &Equations, mobility: &Mobility, t: f64, y: &[f64]) -> Result<MechanismSample, DynamicsError> {
     let (n, r) = (dae.n, dae.r);
     let (q, qd) = (&y[..n], &y[n..2 * n]);
-    let acc = dae.accelerations(t, q, qd).ok_or_else(|| DynamicsError::Integration {
+    let motion = dae.motion(t, q, qd, dae.p.reactions).ok_or_else(|| DynamicsError::Integration {
         t,
         reason: "the equations of motion are singular here (a singular position)".into(),
     })?;
-    let sys = &acc.sys;
-    let inputs = (r..sys.phi.len())
-        .map(|row| {
-            let jrow = sys.jacobian.row(row);
-            let speed = (jrow * DVector::from_column_slice(qd))[0];
-            [sys.phi[row], speed, (jrow * &acc.qdd)[0] - sys.gamma[row]]
-        })
-        .collect();
     let reactions = if dae.p.reactions {
-        let jac = sys.jacobian.rows(0, r).into_owned();
         let m = &dae.p.mechanism;
+        let zeros = vec![[0.0; 3]; m.drivers.len()];
+        let jac = evaluate(m, &State { q, qd: None, inputs: &zeros }).jacobian.rows(0, r).into_owned();
         let offsets = joint_offsets(m);
         let indeterminate: Vec<usize> = (0..m.joints.len())
             .filter(|&j| {
                 mobility.indeterminate_joints.contains(&j)
-                    || (offsets[j]..offsets[j] + Mechanism::joint_rows(&m.joints[j].kind))
-                        .any(|row| acc.rows.touches_loose(row))
+                    || (offsets[j]..offsets[j] + Mechanism::joint_rows(&m.joints[j].kind)).any(|row| motion.loose[row])
             })
             .collect();
-        reactions(m, q, &jac, &acc.lambda, &indeterminate)
+        reactions(m, q, &jac, &DVector::from_vec(motion.lambda), &indeterminate)
     } else {
         Vec::new()
     };
     let poses = q.chunks_exact(3).map(|b| [b[0], b[1], b[2]]).collect();
-    Ok(MechanismSample { inputs, poses, reactions, constraint_residual: sys.phi.rows(0, r).amax() })
+    Ok(MechanismSample { inputs: motion.inputs, poses, reactions, constraint_residual: motion.residual })
 }

@@ -11,7 +11,9 @@
 //! cannot go on or the compute budget runs out.
 
 mod energy_form;
+pub(crate) mod equations;
 pub mod mechanism;
+mod range_space;
 pub mod reduced;
 mod rows;
 

@@ -1,0 +1,127 @@
+//! Large mechanisms: IFToMM A02, the N-four-bar (N + 1 cranks hinged 1 m
+//! apart and N couplers, 1 m and 1 kg uniform bars, cranks upright at the
+//! start, the first crank's tip at 1 m/s, gravity 9.81 m/s², 10 s). All
+//! cranks turn alike and the couplers translate, so θ̇(θ) follows from
+//! energy in closed form: I* = (N+1)/3 + N kg·m², V = ((N+1)/2 + N)·g·sin θ
+//! (θ of the cranks from +x); error = the largest |θ̇ − θ̇(θ)| over the
+//! samples, rad/s. Every half turn the bars lie flat: a singular position
+//! of all N loops at once.
+//!
+//! Two measurements, by the engine (`solve_in`, without the request's
+//! validation and serialisation): the cost of one evaluation of the
+//! equations of motion against N over the first 0.5 s (no flat position
+//! yet), in the sparse form and the dense one; and the whole benchmark at
+//! N = 40.
+
+use mechdyn::engine::Deadline;
+use mechdyn::engine::dynamics::End;
+use mechdyn::engine::dynamics::mechanism::{MechanismProblem, MechanismSolution, solve_in};
+use mechdyn::engine::model::{Body, Driver, Joint, JointKind, Mechanism};
+use std::f64::consts::FRAC_PI_2;
+use std::fmt::Write as _;
+use std::time::Instant;
+
+const G: f64 = 9.81;
+
+/// The chain drawn upright: cranks i from (i, 0) to (i, 1), couplers across their tips.
+fn mechanism(n: usize) -> Mechanism {
+    let body = |name: String, cg: [f64; 2]| Body { name, mass: 1.0, inertia: 1.0 / 12.0, cg };
+    let pin = |name: String, bodies: [usize; 2], at: [f64; 2]| Joint {
+        name,
+        kind: JointKind::Revolute,
+        bodies,
+        at,
+        friction: None,
+    };
+    let mut bodies = vec![Body { name: "ground".into(), mass: 0.0, inertia: 0.0, cg: [0.0; 2] }];
+    bodies.extend((0..=n).map(|i| body(format!("crank {i}"), [i as f64, 0.5])));
+    bodies.extend((0..n).map(|i| body(format!("coupler {i}"), [i as f64 + 0.5, 1.0])));
+    let mut joints: Vec<Joint> = (0..=n).map(|i| pin(format!("O{i}"), [0, i + 1], [i as f64, 0.0])).collect();
+    for i in 0..n {
+        joints.push(pin(format!("A{i}"), [i + 1, n + 2 + i], [i as f64, 1.0]));
+        joints.push(pin(format!("B{i}"), [i + 2, n + 2 + i], [i as f64 + 1.0, 1.0]));
+    }
+    Mechanism { bodies, joints, drivers: vec![Driver { joint: 0, reference: FRAC_PI_2 }], gravity: [0.0, -G] }
+}
+
+/// θ̇ at θ by energy from θ̇ = 1 rad/s upright.
+fn speed(n: usize, theta: f64) -> f64 {
+    let n = n as f64;
+    let inertia = (n + 1.0) / 3.0 + n;
+    let potential = |t: f64| ((n + 1.0) / 2.0 + n) * G * t.sin();
+    (1.0 + 2.0 * (potential(FRAC_PI_2) - potential(theta)) / inertia).sqrt()
+}
+
+/// The run of `duration` s at tolerance 1e-9 in one form, and its wall time.
+fn run(n: usize, duration: f64, samples: usize, sparse: bool) -> (f64, MechanismSolution) {
+    let p = MechanismProblem {
+        mechanism: mechanism(n),
+        loads: Vec::new(),
+        period: std::f64::consts::TAU,
+        initial: vec![[FRAC_PI_2, 1.0]],
+        end: End::Duration(duration),
+        tolerance: 1e-9,
+        samples,
+        deadline: Deadline::none(),
+        reactions: false,
+    };
+    let start = Instant::now();
+    let s = solve_in(&p, sparse).expect("the chain moves");
+    (start.elapsed().as_secs_f64(), s)
+}
+
+pub fn section() -> String {
+    let mut doc = String::from("### Large mechanisms: IFToMM A02, the N-four-bar\n\n");
+    doc.push_str(
+        "N + 1 cranks and N couplers (1 m, 1 kg bars), 3(2N + 1) coordinates; error = the largest |θ̇ − θ̇(θ)| over \
+         the samples against the energy closed form, rad/s. Cost of the equations of motion over the first 0.5 s \
+         (tolerance 1e-9, no flat position yet), in each form:\n\n",
+    );
+    doc.push_str(
+        "| N | coordinates | form | start (position, mobility) | evaluations | wall time | µs per evaluation, start \
+         excluded |\n|---|---|---|---|---|---|---|\n",
+    );
+    let mut per_coordinate = 0.0;
+    for n in [5, 10, 20, 40] {
+        // The start alone: assembling the initial state and the mobility (a dense SVD, once).
+        let start = (0..3).map(|_| run(n, 1e-9, 2, true).0).fold(f64::INFINITY, f64::min);
+        for sparse in [true, false] {
+            let (seconds, s) = run(n, 0.5, 11, sparse);
+            let evaluations = s.solution.evaluations;
+            let each = (seconds - start) * 1e6 / evaluations as f64;
+            if sparse {
+                per_coordinate = each / (3 * (2 * n + 1)) as f64;
+            }
+            let form = if sparse { "sparse (range-space, LDLᵀ)" } else { "dense (LU)" };
+            let _ = writeln!(
+                doc,
+                "| {n} | {} | {form} | {:.1} ms | {evaluations} | {:.1} ms | {each:.1} |",
+                3 * (2 * n + 1),
+                start * 1e3,
+                seconds * 1e3,
+            );
+        }
+    }
+    let (seconds, s) = run(40, 10.0, 101, true);
+    let error = s.details.iter().map(|d| (d.inputs[0][1] - speed(40, d.inputs[0][0])).abs()).fold(0.0, f64::max);
+    let (evaluations, dense) = (s.solution.evaluations, s.dense_evaluations);
+    let _ = writeln!(
+        doc,
+        "\nA02 with N = 40 over 10 s at tolerance 1e-9 (243 coordinates, 101 samples; {} passages near a flat \
+         position): {seconds:.2} s, {evaluations} evaluations of which {dense} in the dense form, error {error:.1e} rad/s.\n",
+        s.near_singular.len()
+    );
+    let verdict = if seconds <= 1.0 { "met" } else { "missed" };
+    let _ = writeln!(
+        doc,
+        "**Target** (A02, N = 40, 10 s at 1e-9 in ≤ 1 s): {seconds:.2} s: {verdict}. Away from the flat positions \
+         an evaluation costs in proportion to the mechanism's size (the table: a sparse LDLᵀ of Φ_q M⁻¹ Φ_qᵀ in a \
+         minimum-degree order, {per_coordinate:.2} µs per coordinate at N = 40). Near them the sparse form declines \
+         (its pivots lose their digits) and the dense form holds the folding rows by their singular values: an LU \
+         of the 485-row augmented matrix, a QR and an SVD per evaluation. Those {dense} evaluations, {:.0} % of the \
+         total, take nearly all the time (perf: LU, Householder QR and SVD are over 80 % of the cycles). Holding the \
+         folds within the sparse form is the remaining work.",
+        100.0 * dense as f64 / evaluations as f64
+    );
+    doc
+}

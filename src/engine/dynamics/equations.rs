@@ -1,0 +1,235 @@
+//! The mechanism's equations of motion at a state, in one of two forms
+//! that give the same q̈ and λ:
+//! - *sparse* ([`RangeSpace`]): S = Φ_q M⁻¹ Φ_qᵀ factored by a sparse
+//!   LDLᵀ; cost linear in the mechanism's size. Used whenever it applies
+//!   (every body with mass and inertia, no redundant constraint);
+//! - *dense*: the augmented matrix [M Φ_qᵀ; Φ_q 0] by LU, rows combined
+//!   by [`Rows`]; any mechanism, cost growing as its size cubed.
+//!
+//! Both hold the nearly dependent combinations of rows at a singular
+//! position and drop the dependent ones, each on its own measure of
+//! dependence (singular values, or pivots), with the same threshold τ.
+
+use super::mechanism::MechanismProblem;
+use super::range_space::RangeSpace;
+use super::rows::Rows;
+use crate::engine::constraints::{State, evaluate, evaluate_blocks};
+use crate::engine::kinetostatics::applied_forces;
+use crate::engine::model::Mechanism;
+use nalgebra::{DMatrix, DVector};
+use std::cell::RefCell;
+
+/// q̈ and λ at a state, with what a sample reports.
+pub(super) struct Motion {
+    pub qdd: Vec<f64>,
+    pub lambda: Vec<f64>,
+    pub forces: Vec<f64>,
+    /// Coordinate, speed and acceleration of every input.
+    pub inputs: Vec<[f64; 3]>,
+    /// |Φ| of the joints.
+    pub residual: f64,
+    /// Joint rows in a held or dropped combination (when asked for; none
+    /// in the sparse form, which declines near a singular position).
+    pub loose: Vec<bool>,
+}
+
+pub(super) struct Equations<'a> {
+    pub p: &'a MechanismProblem,
+    /// Coordinates n and joint rows r.
+    pub n: usize,
+    pub r: usize,
+    pub mass: Vec<f64>,
+    /// Column scale of Φ_q for [`Rows`]: 1 for x, y and 1/L for angles.
+    pub scale: Vec<f64>,
+    /// Position tolerance of the projection, m.
+    pub tol: f64,
+    /// The sparse form, when it applies.
+    pub sparse: Option<RefCell<RangeSpace>>,
+    /// Times of the evaluations that held a fold.
+    pub held_at: RefCell<Vec<f64>>,
+    /// Evaluations in the dense form.
+    pub dense: std::cell::Cell<usize>,
+}
+
+impl Equations<'_> {
+    fn zeros(&self) -> Vec<[f64; 3]> {
+        vec![[0.0; 3]; self.p.mechanism.drivers.len()]
+    }
+
+    /// φ and φ̇ of the first input.
+    pub fn input(&self, q: &[f64], qd: Option<&[f64]>) -> (f64, f64) {
+        let zeros = self.zeros();
+        let (phi, _, jac) = evaluate_blocks(&self.p.mechanism, &State { q, qd: None, inputs: &zeros });
+        (phi[self.r], qd.map_or(0.0, |v| jac.rows[self.r].dot(v)))
+    }
+
+    fn forces(&self, t: f64, q: &[f64], qd: &[f64], [phi, omega]: [f64; 2]) -> Vec<f64> {
+        let phi = phi.rem_euclid(self.p.period);
+        applied_forces(&self.p.mechanism, &self.p.loads, q, qd, phi, [omega, t]).data.into()
+    }
+
+    /// The motion at a state; None where the equations are singular or the
+    /// state is not finite.
+    pub fn motion(&self, t: f64, q: &[f64], qd: &[f64], loose: bool) -> Option<Motion> {
+        let sparse = self.sparse.as_ref().and_then(|rs| self.sparse_motion(&mut rs.borrow_mut(), t, q, qd));
+        let motion = match sparse {
+            Some(motion) => motion,
+            None => self.dense_motion(t, q, qd, loose)?,
+        };
+        motion.qdd.iter().chain(&motion.lambda).all(|v| v.is_finite()).then_some(motion)
+    }
+
+    /// The sparse form's motion, or None where it does not hold (a
+    /// singular position near: the dense form decides there).
+    fn sparse_motion(&self, rs: &mut RangeSpace, t: f64, q: &[f64], qd: &[f64]) -> Option<Motion> {
+        let zeros = self.zeros();
+        let (phi, gamma, jac) = evaluate_blocks(&self.p.mechanism, &State { q, qd: Some(qd), inputs: &zeros });
+        if !rs.regular(&jac) {
+            return None;
+        }
+        let forces = self.forces(t, q, qd, [phi[self.r], jac.rows[self.r].dot(qd)]);
+        let (qdd, lambda) = rs.accelerations(&jac, &forces, &gamma[..self.r]);
+        let inputs =
+            (self.r..phi.len()).map(|k| [phi[k], jac.rows[k].dot(qd), jac.rows[k].dot(&qdd) - gamma[k]]).collect();
+        let residual = phi[..self.r].iter().fold(0.0f64, |a, v| a.max(v.abs()));
+        Some(Motion { qdd, lambda, forces, inputs, residual, loose: vec![false; self.r] })
+    }
+
+    fn dense_motion(&self, t: f64, q: &[f64], qd: &[f64], loose: bool) -> Option<Motion> {
+        self.dense.set(self.dense.get() + 1);
+        let (n, r) = (self.n, self.r);
+        let sys = evaluate(&self.p.mechanism, &State { q, qd: Some(qd), inputs: &self.zeros() });
+        let jac = sys.jacobian.rows(0, r).into_owned();
+        let rows = Rows::of(&jac, &self.scale);
+        if rows.holds() {
+            self.held_at.borrow_mut().push(t);
+        }
+        let jac = rows.motion(jac);
+        let k = jac.nrows();
+        let speed = |row: usize, v: &DVector<f64>| (sys.jacobian.row(row) * v)[0];
+        let qd_v = DVector::from_column_slice(qd);
+        let forces = self.forces(t, q, qd, [sys.phi[r], speed(r, &qd_v)]);
+        let mut a = DMatrix::zeros(n + k, n + k);
+        for (i, m) in self.mass.iter().enumerate() {
+            a[(i, i)] = *m;
+        }
+        a.view_mut((0, n), (n, k)).copy_from(&jac.transpose());
+        a.view_mut((n, 0), (k, n)).copy_from(&jac);
+        let mut b = DVector::zeros(n + k);
+        b.rows_mut(0, n).copy_from_slice(&forces);
+        b.rows_mut(n, k).copy_from(&rows.gamma(sys.gamma.rows(0, r).into_owned()));
+        let x = a.lu().solve(&b)?;
+        let qdd = x.rows(0, n).into_owned();
+        let inputs = (r..sys.phi.len()).map(|row| [sys.phi[row], speed(row, &qd_v), speed(row, &qdd) - sys.gamma[row]]);
+        Some(Motion {
+            inputs: inputs.collect(),
+            residual: sys.phi.rows(0, r).amax(),
+            loose: if loose { (0..r).map(|row| rows.touches_loose(row)).collect() } else { Vec::new() },
+            lambda: rows.multipliers(x.rows(n, k).into_owned()).data.into(),
+            qdd: qdd.data.into(),
+            forces,
+        })
+    }
+
+    /// The minimum-norm x with J x = b, J of full row rank.
+    fn min_norm(jac: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
+        let ch = (jac * jac.transpose()).cholesky()?;
+        Some(jac.transpose() * ch.solve(b))
+    }
+
+    pub fn kinetic(&self, qd: &[f64]) -> f64 {
+        0.5 * self.mass.iter().zip(qd).map(|(m, v)| m * v * v).sum::<f64>()
+    }
+
+    /// Moves y onto Φ = 0 and Φ_q q̇ = 0 (Newton, least corrections: in the
+    /// metric M in the sparse form, Euclidean in the dense); the largest |Φ| removed.
+    pub fn project(&self, y: &mut [f64]) -> f64 {
+        match &self.sparse {
+            Some(rs) => self.project_sparse(&mut rs.borrow_mut(), y),
+            None => self.project_dense(y),
+        }
+    }
+
+    fn project_sparse(&self, rs: &mut RangeSpace, y: &mut [f64]) -> f64 {
+        let (n, r) = (self.n, self.r);
+        let zeros = self.zeros();
+        let mut removed = 0.0f64;
+        for _ in 0..8 {
+            let (phi, _, jac) = evaluate_blocks(&self.p.mechanism, &State { q: &y[..n], qd: None, inputs: &zeros });
+            let phi = &phi[..r];
+            removed = phi.iter().fold(removed, |a, v| a.max(v.abs()));
+            if !rs.regular(&jac) {
+                return removed.max(self.project_dense(y));
+            }
+            if phi.iter().all(|v| v.abs() <= self.tol) {
+                let v: Vec<f64> = jac.rows[..r].iter().map(|row| row.dot(&y[n..2 * n])).collect();
+                let dv = rs.correction(&jac, &v);
+                y[n..2 * n].iter_mut().zip(&dv).for_each(|(a, d)| *a += d);
+                break;
+            }
+            let dq = rs.correction(&jac, phi);
+            y[..n].iter_mut().zip(&dq).for_each(|(a, d)| *a += d);
+        }
+        removed
+    }
+
+    fn project_dense(&self, y: &mut [f64]) -> f64 {
+        let (n, r) = (self.n, self.r);
+        let mut removed = 0.0f64;
+        for _ in 0..8 {
+            let sys = evaluate(&self.p.mechanism, &State { q: &y[..n], qd: None, inputs: &self.zeros() });
+            let (jac, phi) = (sys.jacobian.rows(0, r).into_owned(), sys.phi.rows(0, r).into_owned());
+            removed = removed.max(phi.amax());
+            // A held or dropped combination is not corrected in position.
+            let rows = Rows::of(&jac, &self.scale);
+            let phi = rows.position_residual(phi);
+            if phi.amax() <= self.tol {
+                let jac = rows.motion(jac);
+                let v = &jac * DVector::from_column_slice(&y[n..2 * n]);
+                if let Some(dv) = Self::min_norm(&jac, &(-v)) {
+                    y[n..2 * n].iter_mut().zip(dv.iter()).for_each(|(a, d)| *a += d);
+                }
+                break;
+            }
+            let Some(dq) = Self::min_norm(&rows.positions(jac), &(-phi)) else { break };
+            y[..n].iter_mut().zip(dq.iter()).for_each(|(a, d)| *a += d);
+        }
+        removed
+    }
+}
+
+/// The ODE the integrator sees: y = (q, q̇, W).
+impl super::Model for Equations<'_> {
+    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+        let n = self.n;
+        let (q, qd) = (&y[..n], &y[n..2 * n]);
+        match self.motion(t, q, qd, false) {
+            Some(m) => {
+                dy[..n].copy_from_slice(qd);
+                dy[n..2 * n].copy_from_slice(&m.qdd);
+                dy[2 * n] = m.forces.iter().zip(qd).map(|(f, v)| f * v).sum();
+            }
+            // A singular matrix: the stepper rejects the step and retries smaller.
+            None => dy.fill(f64::NAN),
+        }
+    }
+
+    fn angle(&self, y: &[f64]) -> f64 {
+        self.input(&y[..self.n], None).0
+    }
+
+    fn speed(&self, y: &[f64]) -> f64 {
+        self.input(&y[..self.n], Some(&y[self.n..2 * self.n])).1
+    }
+
+    fn project(&self, y: &mut [f64]) -> f64 {
+        Equations::project(self, y)
+    }
+}
+
+/// The diagonal of M: m, m, I_G of every moving body.
+pub(super) fn masses(m: &Mechanism) -> Vec<f64> {
+    (0..m.n_coordinates())
+        .map(|k| if k % 3 == 2 { m.bodies[k / 3 + 1].inertia } else { m.bodies[k / 3 + 1].mass })
+        .collect()
+}
