@@ -95,7 +95,7 @@ impl Machine {
         }
         let positions: Vec<Vec<[f64; 3]>> =
             (0..ANCHORS).map(|k| vec![[period * k as f64 / ANCHORS as f64, 1.0, 0.0]]).collect();
-        let anchors = sweep(&mechanism, &positions, &deadline)?
+        let anchors = sweep(&mechanism, &positions, &deadline, false)?
             .into_iter()
             .zip(&positions)
             .map(|(c, p)| Anchor { phi: p[0][0], q: c.q, g: c.qd, h: c.qdd })

@@ -68,6 +68,28 @@ async fn only_what_is_asked_is_computed() {
     assert!((step["driving"].as_f64().unwrap() - -228.491215292969).abs() < 1e-6, "K1 at 30°: {step}");
 }
 
+/// The condition number: by default estimated (κ₁ by Hager's method, a
+/// lower bound of κ₁ and within a factor 3 of it in practice; κ₁ is within
+/// a factor n = 9 of κ₂ either way); with "condition" among the outputs,
+/// the case's κ₂ (an SVD) to 1e-9.
+#[tokio::test]
+async fn the_exact_condition_number_where_asked() {
+    let (app, c) = (TestApp::new().await, case("K1_offset_slider_crank"));
+    let rows = c["expected"]["table"].as_array().unwrap();
+    let kappa = |r: &Value| -> Vec<f64> {
+        r["steps"].as_array().unwrap().iter().map(|s| s["jacobian_condition"].as_f64().unwrap()).collect()
+    };
+    let estimated = kappa(&post(&app, &request("k1_offset_slider_crank")).await["result"]);
+    let mut body = request("k1_offset_slider_crank");
+    body["outputs"] = json!(["driving", "condition"]);
+    let exact = kappa(&post(&app, &body).await["result"]);
+    for ((row, e), x) in rows.iter().zip(&estimated).zip(&exact) {
+        let want = row["cond_constraint_jacobian"].as_f64().unwrap();
+        assert!((x - want).abs() <= 1e-9 * want, "κ₂ {x} vs {want}");
+        assert!(*e >= want / 27.0 && *e <= 9.0 * want, "estimate {e} against κ₂ {want}");
+    }
+}
+
 #[tokio::test]
 async fn the_csv_has_one_row_per_step_with_units() {
     let app = TestApp::new().await;

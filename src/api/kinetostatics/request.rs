@@ -50,7 +50,8 @@ pub struct KinetostaticsRequest {
     pub input: Inputs,
     #[schema(max_items = 500)]
     pub loads: Option<Vec<LoadDto>>,
-    /// Compute only these (default all).
+    /// Compute only these (default: driving, reactions, kinematics and
+    /// reduced; "condition" is asked for by name).
     pub outputs: Option<Vec<OutputKind>>,
 }
 
@@ -62,6 +63,9 @@ pub enum OutputKind {
     Reactions,
     Kinematics,
     Reduced,
+    /// `jacobian_condition` as the exact 2-norm condition number at every
+    /// step (an SVD per step; not among the defaults).
+    Condition,
 }
 
 /// The validated problem, ready for the engine.
@@ -123,6 +127,7 @@ impl KinetostaticsRequest {
                 reactions: outputs.contains(&OutputKind::Reactions),
                 reduced: outputs.contains(&OutputKind::Reduced),
                 kinematics: outputs.contains(&OutputKind::Kinematics),
+                condition: outputs.contains(&OutputKind::Condition),
             },
             want_driving: outputs.contains(&OutputKind::Driving),
             linear,

@@ -62,6 +62,12 @@ pub struct StepDto {
     pub reduced_torque: Option<f64>,
     /// Quinn's energy-contribution coefficient T_body/T of each moving body (one input).
     pub energy_contribution: Option<BTreeMap<String, f64>>,
+    /// Condition number of Φ_q (joints and inputs). The exact 2-norm κ₂ (an
+    /// SVD) where `outputs` has "condition", or where the estimate below
+    /// exceeds 100 (so every near-singular position is measured exactly);
+    /// elsewhere the 1-norm κ₁ estimated from Φ_q's LU by Hager's method
+    /// (LAPACK's xGECON), a few solves instead of an SVD, within a factor
+    /// of the coordinates' number of κ₂.
     pub jacobian_condition: f64,
     /// A singular position (toggle, change point): nothing but the input is computed here.
     pub singular: bool,

@@ -91,7 +91,7 @@ pub fn solve_in(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution,
     let initial = |reason: String| DynamicsError::Initial { reason };
     let inputs: Vec<[f64; 3]> = p.initial.iter().map(|[a, w]| [*a, *w, 0.0]).collect();
     let over = |t: f64, steps: usize| DynamicsError::Budget { seconds: p.deadline.seconds(), t, steps };
-    let start = sweep(m, &[inputs], &p.deadline)
+    let start = sweep(m, &[inputs], &p.deadline, false)
         .map_err(|e| if p.deadline.expired() { over(0.0, 0) } else { initial(e.to_string()) })?
         .remove(0);
     if start.singular {

@@ -33,6 +33,9 @@ pub struct Outputs {
     pub reduced: bool,
     /// Keep q, q̇, q̈ of every step.
     pub kinematics: bool,
+    /// Φ_q's 2-norm condition number exactly at every step (an SVD each);
+    /// else estimated, and exact only where the estimate is high.
+    pub condition: bool,
 }
 
 /// The reaction of joint `joint` on body `on` by body `by`: force at the
@@ -111,7 +114,7 @@ pub fn solve(
     outputs: Outputs,
     deadline: &Deadline,
 ) -> Result<Solution, EngineError> {
-    let configurations = sweep(m, positions, deadline)?;
+    let configurations = sweep(m, positions, deadline, outputs.condition)?;
     let regular = configurations.iter().find(|c| !c.singular);
     let mobility = mobility(m, &regular.map_or_else(|| m.reference_q(), |c| c.q.clone()));
     if mobility.dof != m.drivers.len() {
