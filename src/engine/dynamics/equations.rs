@@ -2,13 +2,13 @@
 //! that give the same q̈ and λ:
 //! - *sparse* ([`RangeSpace`]): S = Φ_q M⁻¹ Φ_qᵀ factored by a sparse
 //!   LDLᵀ; cost linear in the mechanism's size. Used whenever it applies
-//!   (every body with mass and inertia, no redundant constraint);
+//!   (every body with mass and inertia, no redundant constraint) and S is
+//!   not near singular;
 //! - *dense*: the augmented matrix [M Φ_qᵀ; Φ_q 0] by LU, rows combined
-//!   by [`Rows`]; any mechanism, cost growing as its size cubed.
-//!
-//! Both hold the nearly dependent combinations of rows at a singular
-//! position and drop the dependent ones, each on its own measure of
-//! dependence (singular values, or pivots), with the same threshold τ.
+//!   by [`Rows`] (which holds the nearly dependent combinations at a
+//!   singular position and drops the dependent ones); any mechanism, cost
+//!   growing as its size cubed. Near a singular position every evaluation
+//!   is in this form.
 
 use super::mechanism::MechanismProblem;
 use super::range_space::RangeSpace;

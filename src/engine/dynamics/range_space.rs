@@ -23,10 +23,10 @@
 use crate::engine::constraints::{Blocks, RowBlocks};
 use crate::engine::numeric::ldl::{Ldl, Pattern};
 
-/// Smallest sine of a pivot at which the sparse form is used: well above
+/// Smallest sine of a pivot at which the sparse form is used: well outside
 /// the dense form's window (a singular value within 1e-5 of the largest is
-/// held there), and where both forms agree to about 1e-10 of q̈ (chain of
-/// parallelograms, tests below).
+/// held there; on the chain of parallelograms below that is ~1e-4 rad from
+/// flat, where the sines are ~1e-4).
 pub const REGULAR: f64 = 1e-2;
 
 /// The factorised S at one configuration, with its workspaces.
