@@ -16,33 +16,12 @@
 use mechdyn::engine::Deadline;
 use mechdyn::engine::dynamics::End;
 use mechdyn::engine::dynamics::mechanism::{MechanismProblem, MechanismSolution, solve_in};
-use mechdyn::engine::model::{Body, Driver, Joint, JointKind, Mechanism};
+use mechdyn::engine::samples::parallelogram_chain;
 use std::f64::consts::FRAC_PI_2;
 use std::fmt::Write as _;
 use std::time::Instant;
 
 const G: f64 = 9.81;
-
-/// The chain drawn upright: cranks i from (i, 0) to (i, 1), couplers across their tips.
-fn mechanism(n: usize) -> Mechanism {
-    let body = |name: String, cg: [f64; 2]| Body { name, mass: 1.0, inertia: 1.0 / 12.0, cg };
-    let pin = |name: String, bodies: [usize; 2], at: [f64; 2]| Joint {
-        name,
-        kind: JointKind::Revolute,
-        bodies,
-        at,
-        friction: None,
-    };
-    let mut bodies = vec![Body { name: "ground".into(), mass: 0.0, inertia: 0.0, cg: [0.0; 2] }];
-    bodies.extend((0..=n).map(|i| body(format!("crank {i}"), [i as f64, 0.5])));
-    bodies.extend((0..n).map(|i| body(format!("coupler {i}"), [i as f64 + 0.5, 1.0])));
-    let mut joints: Vec<Joint> = (0..=n).map(|i| pin(format!("O{i}"), [0, i + 1], [i as f64, 0.0])).collect();
-    for i in 0..n {
-        joints.push(pin(format!("A{i}"), [i + 1, n + 2 + i], [i as f64, 1.0]));
-        joints.push(pin(format!("B{i}"), [i + 2, n + 2 + i], [i as f64 + 1.0, 1.0]));
-    }
-    Mechanism { bodies, joints, drivers: vec![Driver { joint: 0, reference: FRAC_PI_2 }], gravity: [0.0, -G] }
-}
 
 /// θ̇ at θ by energy from θ̇ = 1 rad/s upright.
 fn speed(n: usize, theta: f64) -> f64 {
@@ -55,7 +34,7 @@ fn speed(n: usize, theta: f64) -> f64 {
 /// The run of `duration` s at tolerance 1e-9 in one form, and its wall time.
 fn run(n: usize, duration: f64, samples: usize, sparse: bool) -> (f64, MechanismSolution) {
     let p = MechanismProblem {
-        mechanism: mechanism(n),
+        mechanism: parallelogram_chain(n),
         loads: Vec::new(),
         period: std::f64::consts::TAU,
         initial: vec![[FRAC_PI_2, 1.0]],

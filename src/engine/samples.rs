@@ -209,3 +209,26 @@ pub fn scissor_lift() -> Mechanism {
         gravity: [0.0, -9.81],
     }
 }
+
+/// IFToMM A02's N-four-bar: N + 1 cranks hinged on the ground 1 m apart at
+/// (i, 0), drawn upright, and N couplers across their tips, every bar 1 m,
+/// 1 kg, I_G = 1/12 kg·m² (uniform rods), under gravity. The input is the
+/// first crank's angle from +x (π/2 as drawn). 3(2N + 1) coordinates.
+pub fn parallelogram_chain(n: usize) -> Mechanism {
+    let rod = |name: String, cg: [f64; 2]| Body { name, mass: 1.0, inertia: 1.0 / 12.0, cg };
+    let pin = |name: String, bodies: [usize; 2], at: [f64; 2]| joint(&name, JointKind::Revolute, bodies, at);
+    let mut bodies = vec![body("ground", 0.0, 0.0, [0.0, 0.0])];
+    bodies.extend((0..=n).map(|i| rod(format!("crank {i}"), [i as f64, 0.5])));
+    bodies.extend((0..n).map(|i| rod(format!("coupler {i}"), [i as f64 + 0.5, 1.0])));
+    let mut joints: Vec<Joint> = (0..=n).map(|i| pin(format!("O{i}"), [0, i + 1], [i as f64, 0.0])).collect();
+    for i in 0..n {
+        joints.push(pin(format!("A{i}"), [i + 1, n + 2 + i], [i as f64, 1.0]));
+        joints.push(pin(format!("B{i}"), [i + 2, n + 2 + i], [i as f64 + 1.0, 1.0]));
+    }
+    Mechanism {
+        bodies,
+        joints,
+        drivers: vec![Driver { joint: 0, reference: std::f64::consts::FRAC_PI_2 }],
+        gravity: [0.0, -9.81],
+    }
+}

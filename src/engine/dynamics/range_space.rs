@@ -160,30 +160,10 @@ mod tests {
     use super::*;
     use crate::engine::constraints::{State, evaluate, evaluate_blocks};
     use crate::engine::dynamics::equations::masses;
-    use crate::engine::model::{Body, Driver, Joint, JointKind, Mechanism};
+    use crate::engine::model::Mechanism;
+    use crate::engine::samples::parallelogram_chain as chain;
     use nalgebra::{DMatrix, DVector};
     use std::f64::consts::FRAC_PI_2;
-
-    /// N parallelograms: cranks i hinged at (i, 0), drawn upright, couplers across their tips.
-    fn chain(n: usize) -> Mechanism {
-        let body = |name: String, cg: [f64; 2]| Body { name, mass: 1.0, inertia: 1.0 / 12.0, cg };
-        let joint = |name: String, bodies: [usize; 2], at: [f64; 2]| Joint {
-            name,
-            kind: JointKind::Revolute,
-            bodies,
-            at,
-            friction: None,
-        };
-        let mut bodies = vec![Body { name: "ground".into(), mass: 0.0, inertia: 0.0, cg: [0.0; 2] }];
-        bodies.extend((0..=n).map(|i| body(format!("crank {i}"), [i as f64, 0.5])));
-        bodies.extend((0..n).map(|i| body(format!("coupler {i}"), [i as f64 + 0.5, 1.0])));
-        let mut joints: Vec<Joint> = (0..=n).map(|i| joint(format!("O{i}"), [0, i + 1], [i as f64, 0.0])).collect();
-        for i in 0..n {
-            joints.push(joint(format!("A{i}"), [i + 1, n + 2 + i], [i as f64, 1.0]));
-            joints.push(joint(format!("B{i}"), [i + 2, n + 2 + i], [i as f64 + 1.0, 1.0]));
-        }
-        Mechanism { bodies, joints, drivers: vec![Driver { joint: 0, reference: 0.0 }], gravity: [0.0, -9.81] }
-    }
 
     /// The chain's coordinates with every crank turned by α from upright.
     fn pose(n: usize, alpha: f64) -> Vec<f64> {
