@@ -6,11 +6,12 @@
 //! [ Φ_q  0  ] [ λ ] = [ γ(q, q̇)    ]
 //! ```
 //!
-//! with state y = (q, q̇, W), W the work of the applied loads (Ẇ = Qᵀq̇).
-//! Φ here holds the joints only: the inputs named by the problem's drivers
+//! with state y = (q, q̇, W), W the work of the applied loads (Ẇ = Qᵀq̇),
+//! solved at each evaluation in the sparse range-space form or by the dense
+//! LU ([`super::equations`]). Φ here holds the joints only: the inputs named by the problem's drivers
 //! are free, and serve to report the motion (coordinate φ, speed ω) and to
 //! set the initial state. After every accepted step the state is projected
-//! back onto Φ = 0 and Φ_q q̇ = 0 (minimum-norm Newton corrections), so
+//! back onto Φ = 0 and Φ_q q̇ = 0 (least Newton corrections), so
 //! the drift stays at the step's local error instead of growing with time;
 //! the largest violation removed is reported. The multipliers λ give the
 //! joint reactions at the samples (−Φ_qᵀλ are the constraint forces).
