@@ -81,7 +81,7 @@ pub const ESTIMATE_LIMIT: f64 = 100.0;
 pub fn estimated_condition(a: &DMatrix<f64>, lu: &LU<f64, Dyn, Dyn>) -> f64 {
     let n = a.nrows();
     let norm1 = |v: &DVector<f64>| v.iter().map(|x| x.abs()).sum::<f64>();
-    let a_norm = (0..n).map(|j| norm1(&a.column(j).into_owned())).fold(0.0, f64::max);
+    let a_norm = a.column_iter().map(|c| c.iter().map(|x| x.abs()).sum::<f64>()).fold(0.0, f64::max);
     let mut x = DVector::from_element(n, 1.0 / n as f64);
     let mut estimate = 0.0;
     for _ in 0..5 {

@@ -95,6 +95,12 @@ impl Mechanism {
         3 * (self.bodies.len() - 1)
     }
 
+    /// Coordinate k's entry of the mass matrix M = diag(m, m, I_G, …).
+    pub fn mass_of(&self, k: usize) -> f64 {
+        let body = &self.bodies[k / 3 + 1];
+        if k % 3 == 2 { body.inertia } else { body.mass }
+    }
+
     /// Column of the first coordinate of body b (None for the ground).
     pub fn column(&self, b: BodyId) -> Option<usize> {
         (b > 0).then(|| 3 * (b - 1))

@@ -17,7 +17,7 @@ use crate::engine::constraints::{State, evaluate, evaluate_blocks};
 use crate::engine::kinetostatics::applied_forces;
 use crate::engine::model::Mechanism;
 use nalgebra::{DMatrix, DVector};
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 
 /// q̈ and λ at a state, with what a sample reports.
 pub(super) struct Motion {
@@ -28,8 +28,9 @@ pub(super) struct Motion {
     pub inputs: Vec<[f64; 3]>,
     /// |Φ| of the joints.
     pub residual: f64,
-    /// Joint rows in a held or dropped combination (when asked for; none
-    /// in the sparse form, which declines near a singular position).
+    /// Joint rows in a held or dropped combination, when asked for (empty:
+    /// none; always so in the sparse form, which declines near a singular
+    /// position).
     pub loose: Vec<bool>,
 }
 
@@ -48,7 +49,7 @@ pub(super) struct Equations<'a> {
     /// Times of the evaluations that held a fold.
     pub held_at: RefCell<Vec<f64>>,
     /// Evaluations in the dense form.
-    pub dense: std::cell::Cell<usize>,
+    pub dense: Cell<usize>,
 }
 
 impl Equations<'_> {
@@ -92,7 +93,7 @@ impl Equations<'_> {
         let inputs =
             (self.r..phi.len()).map(|k| [phi[k], jac.rows[k].dot(qd), jac.rows[k].dot(&qdd) - gamma[k]]).collect();
         let residual = phi[..self.r].iter().fold(0.0f64, |a, v| a.max(v.abs()));
-        Some(Motion { qdd, lambda, forces, inputs, residual, loose: vec![false; self.r] })
+        Some(Motion { qdd, lambda, forces, inputs, residual, loose: Vec::new() })
     }
 
     fn dense_motion(&self, t: f64, q: &[f64], qd: &[f64], loose: bool) -> Option<Motion> {
@@ -229,7 +230,5 @@ impl super::Model for Equations<'_> {
 
 /// The diagonal of M: m, m, I_G of every moving body.
 pub(super) fn masses(m: &Mechanism) -> Vec<f64> {
-    (0..m.n_coordinates())
-        .map(|k| if k % 3 == 2 { m.bodies[k / 3 + 1].inertia } else { m.bodies[k / 3 + 1].mass })
-        .collect()
+    (0..m.n_coordinates()).map(|k| m.mass_of(k)).collect()
 }

@@ -226,7 +226,8 @@ fn sample(dae: &Equations, mobility: &Mobility, t: f64, y: &[f64]) -> Result<Mec
         let indeterminate: Vec<usize> = (0..m.joints.len())
             .filter(|&j| {
                 mobility.indeterminate_joints.contains(&j)
-                    || (offsets[j]..offsets[j] + Mechanism::joint_rows(&m.joints[j].kind)).any(|row| motion.loose[row])
+                    || (offsets[j]..offsets[j] + Mechanism::joint_rows(&m.joints[j].kind))
+                        .any(|row| motion.loose.get(row) == Some(&true))
             })
             .collect();
         reactions(m, q, &jac, &DVector::from_vec(motion.lambda), &indeterminate)

@@ -96,13 +96,7 @@ pub struct Step {
 
 /// M·v with M = diag(m, m, I_G).
 pub(crate) fn mass_times(m: &Mechanism, v: &[f64]) -> DVector<f64> {
-    DVector::from_iterator(
-        v.len(),
-        v.iter().enumerate().map(|(k, x)| {
-            let body = &m.bodies[k / 3 + 1];
-            x * if k % 3 == 2 { body.inertia } else { body.mass }
-        }),
-    )
+    DVector::from_iterator(v.len(), v.iter().enumerate().map(|(k, x)| x * m.mass_of(k)))
 }
 
 /// Solves the inverse dynamics at every position of `positions` (per
