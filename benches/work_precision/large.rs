@@ -40,6 +40,8 @@ fn run(n: usize, duration: f64, samples: usize, sparse: bool) -> (f64, Mechanism
         initial: vec![[FRAC_PI_2, 1.0]],
         end: End::Duration(duration),
         tolerance: 1e-9,
+        integrator: None,
+        conserve_energy: None,
         samples,
         deadline: Deadline::none(),
         reactions: false,

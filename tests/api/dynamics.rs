@@ -217,3 +217,58 @@ async fn a_job_over_its_compute_budget_is_stopped_with_the_reason() {
     let list = app.get("/v1/jobs").await.json();
     assert!(list["items"].as_array().unwrap().is_empty(), "{list}");
 }
+
+/// The integrator and the energy hold: chosen (`auto`: DOP853 in the reduced
+/// form at 1e-9, Dormand–Prince above 1e-5 and for a machine), asked for,
+/// reported, and either pair reaching D1's closed-form turn times (1e-9
+/// reduced, 1e-8 machine, as above); the energy held by default where the
+/// loads have a potential (a pendulum under gravity) and not otherwise; an
+/// unknown pair and a hold the loads cannot have answered 422 at the field.
+#[tokio::test]
+async fn the_integrator_and_the_energy_hold_are_chosen_and_reported() {
+    let (app, c) = (TestApp::new().await, case("D1_scotch_yoke_from_rest_constant_torque"));
+    let turn = &c["expected"]["at_angle"][5];
+    let cases = [
+        (d1(json!({"until_angle": "360 deg"})), "dop853", 1e-9),
+        (d1(json!({"until_angle": "360 deg", "tolerance": 1e-4})), "dopri5", 1e-6),
+        (d1(json!({"until_angle": "360 deg", "integrator": "dopri5"})), "dopri5", 1e-9),
+        (d1_machine(json!({"until_angle": "360 deg"})), "dopri5", 1e-8),
+        (d1_machine(json!({"until_angle": "360 deg", "integrator": "dop853"})), "dop853", 1e-8),
+    ];
+    for (body, integrator, tolerance) in cases {
+        let r = app.post("/v1/dynamics", &body).await;
+        assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+        let result = &r.json()["result"];
+        assert_eq!(result["accuracy"]["integrator"], integrator, "{body}");
+        let e = result["events"].as_array().unwrap().iter().find(|e| e["kind"] == "end").unwrap().clone();
+        close(&e["t"], turn["time_s"].as_f64().unwrap(), tolerance, "t at 2π");
+        let held = result["accuracy"]["energy_conserved"].clone();
+        assert_eq!(held, if body.get("machine").is_some() { json!(false) } else { Value::Null }, "{body}");
+    }
+    let pendulum = json!({
+        "machine": {
+            "mechanism": {
+                "bodies": [{"name": "bob", "mass": 1, "inertia": 0, "cg": [1, 0]}],
+                "joints": [{"name": "O", "type": "revolute", "bodies": ["ground", "bob"], "at": [0, 0]}],
+                "gravity": [0, -9.81]
+            },
+            "input": {"joint": "O"}
+        },
+        "duration": 3
+    });
+    let r = app.post("/v1/dynamics", &pendulum).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    assert_eq!(r.json()["result"]["accuracy"]["energy_conserved"], true);
+    assert!(r.json()["result"]["accuracy"]["method"].as_str().unwrap().contains("T + V"));
+    let mut unknown = d1(json!({"duration": 1}));
+    unknown["integrator"] = json!("rk4");
+    let r = app.post("/v1/dynamics", &unknown).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert_eq!(r.json()["errors"][0]["pointer"], "/integrator", "{}", r.text);
+    let mut forced = d1_machine(json!({"duration": 1}));
+    forced["machine"]["conserve_energy"] = json!(true);
+    let r = app.post("/v1/dynamics", &forced).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert_eq!(r.json()["errors"][0]["pointer"], "/machine/conserve_energy", "{}", r.text);
+    assert!(r.text.contains("/machine/loads/0 is a torque"), "{}", r.text);
+}

@@ -27,6 +27,7 @@ fn problem(end: End, samples: usize) -> ReducedProblem {
         speed0: 0.0,
         end,
         tolerance: 1e-9,
+        integrator: None,
         samples,
         deadline: Deadline::none(),
     }

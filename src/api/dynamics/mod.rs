@@ -12,7 +12,7 @@ use super::{create, validated};
 use crate::api::constants::{self, Constants};
 use crate::engine::Deadline;
 use crate::engine::dynamics::mechanism::{self, MechanismProblem};
-use crate::engine::dynamics::{DynamicsError, End, ReducedProblem, solve};
+use crate::engine::dynamics::{DynamicsError, End, Integrator, ReducedProblem, solve};
 use crate::engine::function::Function;
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
@@ -70,9 +70,45 @@ pub struct DynamicsRequest {
     /// are held to it relative to the mechanism's size.
     #[schema(minimum = 1e-14, maximum = 1e-2)]
     pub tolerance: Option<f64>,
+    /// The Runge–Kutta pair (default `auto`); the one used is in
+    /// `accuracy.integrator`.
+    pub integrator: Option<IntegratorChoice>,
     /// Output points, evenly spaced in time, both ends included (default 201).
     #[schema(minimum = 2, maximum = 100000)]
     pub samples: Option<usize>,
+}
+
+/// `dopri5`: Dormand–Prince 5(4), 6 evaluations a step; `dop853`: Hairer's
+/// DOP853, order 8, 15 evaluations a step and far fewer steps at tight
+/// tolerances and over long smooth runs; `auto`: in the reduced form DOP853
+/// at a tolerance of 1e-5 or less, Dormand–Prince above; for a `machine`
+/// Dormand–Prince (its accelerations jump near singular positions, where a
+/// high order gains nothing). See docs/BENCHMARKS.md.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum IntegratorChoice {
+    Auto,
+    Dopri5,
+    Dop853,
+}
+
+impl IntegratorChoice {
+    fn engine(choice: Option<Self>) -> Option<Integrator> {
+        match choice? {
+            Self::Auto => None,
+            Self::Dopri5 => Some(Integrator::Dopri5),
+            Self::Dop853 => Some(Integrator::Dop853),
+        }
+    }
+}
+
+impl From<Integrator> for IntegratorChoice {
+    fn from(i: Integrator) -> Self {
+        match i {
+            Integrator::Dopri5 => Self::Dopri5,
+            Integrator::Dop853 => Self::Dop853,
+        }
+    }
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
@@ -161,18 +197,21 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
             let s = mechanism::solve(&p).map_err(invalid)?;
             let mut result = DynamicsResult::from(s.solution.clone());
             result.accuracy.constraint_drift = Some(s.drift);
+            result.accuracy.energy_conserved = Some(s.energy_conserved);
             let form = if s.sparse {
                 "solved by the range-space method (sparse LDLᵀ of Φ_q M⁻¹ Φ_qᵀ) away from singular positions \
                  and by LU near them"
             } else {
                 "solved by LU"
             };
+            let energy = if s.energy_conserved { " and, the loads having a potential, onto T + V = E₀" } else { "" };
             result.accuracy.method = format!(
-                "Dormand-Prince 5(4) on the index-1 equations of motion [M Φ_qᵀ; Φ_q 0], {form}; \
-                 the state projected onto Φ = 0 and Φ_q·q̇ = 0 after every step; \
+                "{} on the index-1 equations of motion [M Φ_qᵀ; Φ_q 0], {form}; \
+                 the state projected onto Φ = 0 and Φ_q·q̇ = 0{energy} after every step; \
                  rows of Φ_q within 1e-5 of dependence held at singular positions, \
                  dependent ones dropped; events by Brent's method on the dense output; \
-                 work as the integrated power"
+                 work as the integrated power",
+                s.solution.integrator.name()
             );
             if let Some(t) = s.near_singular.first() {
                 result.warnings.push(format!(
@@ -303,6 +342,7 @@ impl DynamicsRequest {
             speed0: speed0?,
             end: end?,
             tolerance: c.tolerance,
+            integrator: IntegratorChoice::engine(self.integrator),
             samples: c.samples,
             deadline: c.deadline,
         }))
@@ -320,6 +360,8 @@ impl DynamicsRequest {
             initial: parts.initial,
             end,
             tolerance: c.tolerance,
+            integrator: IntegratorChoice::engine(self.integrator),
+            conserve_energy: m.conserve_energy,
             samples: c.samples,
             deadline: c.deadline,
             reactions: m.reactions.unwrap_or(true),

@@ -1,6 +1,6 @@
 //! The `result` of a dynamics job, as stored and served, and its CSV table.
 
-use super::MachineDynamics;
+use super::{IntegratorChoice, MachineDynamics};
 use crate::api::create;
 use crate::engine::dynamics::{DynamicsSolution, EventKind};
 use serde::{Deserialize, Serialize};
@@ -54,6 +54,12 @@ pub struct DynamicsAccuracy {
     /// removed by the projection after a step.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub constraint_drift: Option<f64>,
+    /// The Runge–Kutta pair that integrated (`dopri5` or `dop853`).
+    pub integrator: IntegratorChoice,
+    /// Mechanism form: whether the energy T + V was held to its initial
+    /// value after every step (see `machine.conserve_energy`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub energy_conserved: Option<bool>,
     pub method: String,
 }
 
@@ -119,9 +125,13 @@ impl From<DynamicsSolution> for DynamicsResult {
                 steps: s.steps,
                 function_evaluations: s.evaluations,
                 constraint_drift: None,
-                method: "Dormand-Prince 5(4) with dense output, events located by Brent's method on it; \
-                         work by adaptive quadrature over the angle"
-                    .into(),
+                integrator: s.integrator.into(),
+                energy_conserved: None,
+                method: format!(
+                    "{} with dense output, events located by Brent's method on it; \
+                     work by adaptive quadrature over the angle",
+                    s.integrator.name()
+                ),
             },
             machine: None,
             warnings: s.stopped.into_iter().collect(),

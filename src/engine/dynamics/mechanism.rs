@@ -20,11 +20,11 @@
 
 use super::equations::{Equations, masses};
 use super::range_space::RangeSpace;
-use super::{DynamicsError, DynamicsSolution, End, Sample, Settings, energy_residual, run, sample_states};
+use super::{DynamicsError, DynamicsSolution, End, Integrator, Sample, Settings, energy_residual, run, sample_states};
 use crate::engine::Deadline;
 use crate::engine::constraints::{State, evaluate, evaluate_blocks, joint_offsets};
 use crate::engine::kinematics::sweep;
-use crate::engine::kinetostatics::{Load, Reaction, reactions};
+use crate::engine::kinetostatics::{Load, Reaction, potential, reactions};
 use crate::engine::mobility::{Mobility, mobility};
 use crate::engine::model::Mechanism;
 use nalgebra::DVector;
@@ -42,6 +42,12 @@ pub struct MechanismProblem {
     pub initial: Vec<[f64; 2]>,
     pub end: End,
     pub tolerance: f64,
+    /// The Runge–Kutta pair (None: [`Integrator::auto`] of the tolerance).
+    pub integrator: Option<Integrator>,
+    /// Hold the energy T + V to its initial value after every step (None:
+    /// wherever the loads have a potential, see [`potential`]; Some(true)
+    /// is ignored where they do not).
+    pub conserve_energy: Option<bool>,
     pub samples: usize,
     /// The job's compute budget.
     pub deadline: Deadline,
@@ -78,6 +84,8 @@ pub struct MechanismSolution {
     pub sparse: bool,
     /// Evaluations of the equations of motion in the dense form.
     pub dense_evaluations: usize,
+    /// The energy T + V was held to its initial value after every step.
+    pub energy_conserved: bool,
 }
 
 /// Integrates the mechanism from its initial state.
@@ -122,7 +130,9 @@ pub fn solve_in(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution,
         sparse: sparse.map(RefCell::new),
         held_at: RefCell::new(Vec::new()),
         dense: Default::default(),
+        energy: None,
     };
+    let dae = Equations { energy: energy(p, &dae, &start.q, &start.qd), ..dae };
     let settings = settings(p, &start.q, &start.qd, length);
     let mut y0 = start.q.clone();
     y0.extend(&start.qd);
@@ -151,13 +161,23 @@ pub fn solve_in(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution,
         energy_residual: energy_residual(work, dae.kinetic(&first[n..2 * n]), dae.kinetic(&last[n..2 * n])),
         steps: run.attempted,
         evaluations: run.evaluations,
+        integrator: settings.integrator,
         estimated_error: (0..n / 3).map(|b| run.local_errors[3 * b + 2]).fold(0.0, f64::max),
         stopped: run.stopped,
     };
     let near_singular = clusters(&dae.held_at.borrow(), run.t_end);
     let sparse = dae.sparse.is_some();
-    let dense_evaluations = dae.dense.get();
-    Ok(MechanismSolution { solution, details, mobility, drift: run.drift, near_singular, sparse, dense_evaluations })
+    let (dense_evaluations, energy_conserved) = (dae.dense.get(), dae.energy.is_some());
+    Ok(MechanismSolution {
+        solution,
+        details,
+        mobility,
+        drift: run.drift,
+        near_singular,
+        sparse,
+        dense_evaluations,
+        energy_conserved,
+    })
 }
 
 /// The first time of each cluster of held evaluations (gaps over t_end/1000 apart).
@@ -194,7 +214,16 @@ fn settings(p: &MechanismProblem, q: &[f64], qd: &[f64], length: f64) -> Setting
     };
     let mut atol: Vec<f64> = (0..2 * n).map(|k| rtol * scale(k)).collect();
     atol.push(f64::INFINITY);
-    Settings { end: p.end, rtol, atol, deadline: p.deadline }
+    let integrator = p.integrator.unwrap_or_else(|| Integrator::auto(p.tolerance, false));
+    Settings { end: p.end, rtol, atol, integrator, deadline: p.deadline }
+}
+
+/// The energy T + V to hold, when asked or by default and the loads have a potential.
+fn energy(p: &MechanismProblem, dae: &Equations, q: &[f64], qd: &[f64]) -> Option<f64> {
+    if p.conserve_energy == Some(false) {
+        return None;
+    }
+    potential(&p.mechanism, &p.loads, q).map(|v| v + dae.kinetic(qd))
 }
 
 /// The span of the drawn points and centres of mass (at least 1 mm).

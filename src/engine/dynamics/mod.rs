@@ -1,8 +1,10 @@
 //! Direct dynamics: the motion of a machine under given actions.
 //!
-//! Two models share one integrator (Dormand–Prince 5(4) with dense output,
-//! [`run`]): the reduced 1-DOF equation ([`reduced`]) and a planar mechanism
-//! of any DOF in dependent coordinates ([`mechanism`]). Events — every
+//! Two models share one driver of the integration ([`run`]): the reduced
+//! 1-DOF equation ([`reduced`]) and a planar mechanism of any DOF in
+//! dependent coordinates ([`mechanism`]). It steps with one of two explicit
+//! Runge–Kutta pairs with dense output ([`Integrator`]): Dormand–Prince
+//! 5(4), or Hairer's DOP853 (order 8) for tight tolerances and long runs. Events — every
 //! multiple of 2π the first input coordinate φ crosses, in either
 //! direction, and the end angle — are located on the dense output by
 //! Brent's method, not at the nearest step. A run ends at its duration, at
@@ -19,10 +21,43 @@ mod rows;
 
 pub use reduced::{ReducedProblem, solve};
 
-use super::numeric::ode::{Dopri5, Step};
+use super::numeric::dop853::Dp853;
+use super::numeric::ode::{Dp5, Explicit, Pair, Step};
 use super::numeric::roots::brent;
 use crate::engine::Deadline;
 use std::f64::consts::PI;
+
+/// The Runge–Kutta pair that integrates.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Integrator {
+    /// Dormand–Prince 5(4): 6 evaluations a step, 4th-order dense output.
+    Dopri5,
+    /// DOP853, order 8: 12 evaluations a step and 3 for its 7th-order dense
+    /// output, far fewer steps at tight tolerances.
+    Dop853,
+}
+
+impl Integrator {
+    /// For a smooth model (the reduced form), the pair that takes fewer
+    /// evaluations at this requested tolerance (measured in
+    /// docs/BENCHMARKS.md): DOP853 from 1e-5 down. A mechanism's dy/dt jumps
+    /// where its rows are held or dropped (singular positions, changes of
+    /// rank), where a high order gains nothing and its 12 stages cost more
+    /// at every rejected step: Dormand–Prince unless asked.
+    pub fn auto(tolerance: f64, smooth: bool) -> Self {
+        if smooth && tolerance <= AUTO_DOP853 { Self::Dop853 } else { Self::Dopri5 }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Dopri5 => "Dormand-Prince 5(4)",
+            Self::Dop853 => "DOP853 (order 8, 7th-order dense output)",
+        }
+    }
+}
+
+/// The requested tolerance at and below which [`Integrator::auto`] picks DOP853.
+pub const AUTO_DOP853: f64 = 1e-5;
 
 /// When the run ends.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -72,6 +107,7 @@ pub struct DynamicsSolution {
     pub energy_residual: f64,
     pub steps: usize,
     pub evaluations: usize,
+    pub integrator: Integrator,
     /// Σ over the steps of the local error estimate of the angle (rad; for a
     /// mechanism the largest over its bodies' angles): a first-order
     /// estimate of the global error that ignores its growth or decay.
@@ -105,7 +141,7 @@ pub(crate) trait Model {
     fn angle(&self, y: &[f64]) -> f64;
     fn speed(&self, y: &[f64]) -> f64;
     /// Moves an accepted state back onto the model's invariants (e.g. the
-    /// constraints); returns the largest violation removed.
+    /// constraints, the energy); returns the largest constraint violation removed.
     fn project(&self, _y: &mut [f64]) -> f64 {
         0.0
     }
@@ -117,6 +153,7 @@ pub(crate) struct Settings {
     pub end: End,
     pub rtol: f64,
     pub atol: Vec<f64>,
+    pub integrator: Integrator,
     /// The job's compute budget, read after every step and before every
     /// evaluation of dy/dt (an evaluation after it answers NaN, so the step
     /// in progress ends at once).
@@ -141,12 +178,20 @@ const MAX_STEPS: usize = 2_000_000;
 
 /// Integrates the model from y₀ at t = 0 until the end condition.
 pub(crate) fn run(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Run, DynamicsError> {
+    match s.integrator {
+        Integrator::Dopri5 => drive::<Dp5>(model, y0, s),
+        Integrator::Dop853 => drive::<Dp853>(model, y0, s),
+    }
+}
+
+fn drive<P: Pair>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Run, DynamicsError> {
     let deadline = s.deadline;
     let mut f = |t: f64, y: &[f64], dy: &mut [f64]| {
         if deadline.expired() { dy.fill(f64::NAN) } else { model.rhs(t, y, dy) }
     };
-    let over = |ode: &Dopri5| DynamicsError::Budget { seconds: deadline.seconds(), t: ode.t(), steps: ode.accepted };
-    let mut ode = Dopri5::new(&mut f, 0.0, y0, s.rtol, s.atol.clone(), f64::INFINITY);
+    let over =
+        |ode: &Explicit<P>| DynamicsError::Budget { seconds: deadline.seconds(), t: ode.t(), steps: ode.accepted };
+    let mut ode = Explicit::<P>::new(&mut f, 0.0, y0, s.rtol, s.atol.clone(), f64::INFINITY);
     let (mut steps, mut events, mut stopped, mut drift) = (Vec::new(), Vec::new(), None, 0.0f64);
     let t_end = loop {
         if deadline.expired() {
@@ -166,9 +211,8 @@ pub(crate) fn run(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Run,
             break t;
         }
         let mut y = step.y1.clone();
-        let removed = model.project(&mut y);
-        if removed > 0.0 {
-            drift = drift.max(removed);
+        drift = drift.max(model.project(&mut y));
+        if y != step.y1 {
             ode.project(&mut f, y);
         }
         steps.push(step);

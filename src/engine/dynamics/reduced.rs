@@ -12,7 +12,9 @@
 //! events are also timed by the energy form ([`super::energy_form`]).
 
 use super::energy_form;
-use super::{DynamicsError, DynamicsSolution, End, Model, Sample, Settings, energy_residual, run, sample_states};
+use super::{
+    DynamicsError, DynamicsSolution, End, Integrator, Model, Sample, Settings, energy_residual, run, sample_states,
+};
 use crate::engine::Deadline;
 use crate::engine::function::{Function, Side};
 
@@ -27,6 +29,8 @@ pub struct ReducedProblem {
     pub speed0: f64,
     pub end: End,
     pub tolerance: f64,
+    /// The Runge–Kutta pair (None: [`Integrator::auto`] of the tolerance).
+    pub integrator: Option<Integrator>,
     pub samples: usize,
     /// The job's compute budget.
     pub deadline: Deadline,
@@ -102,7 +106,8 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
     let model = Reduced { p, slope: p.inertia.derivative() };
     let rtol = (0.01 * p.tolerance).clamp(1e-13, 1e-4);
     let atol = rtol * p.speed0.abs().max(1.0);
-    let settings = Settings { end: p.end, rtol, atol: vec![atol; 3], deadline: p.deadline };
+    let integrator = p.integrator.unwrap_or_else(|| Integrator::auto(p.tolerance, true));
+    let settings = Settings { end: p.end, rtol, atol: vec![atol; 3], integrator, deadline: p.deadline };
     let run = run(&model, vec![p.angle0, p.speed0, 0.0], &settings)?;
     let mut dy = [0.0; 3];
     let t0 = p.kinetic(p.angle0, p.speed0);
@@ -141,6 +146,7 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
         events: run.events,
         steps: run.attempted,
         evaluations: run.evaluations,
+        integrator,
         estimated_error: run.local_errors[0],
         stopped: run.stopped,
     })

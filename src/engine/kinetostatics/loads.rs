@@ -81,3 +81,61 @@ pub fn add_force(m: &Mechanism, q: &[f64], qv: &mut DVector<f64>, b: BodyId, at:
         qv[c + 2] += cross(arm, f) + couple;
     }
 }
+
+impl Load {
+    /// Whether the load has a potential energy (a spring; a force or a
+    /// torque given as a Function, and a damper, do not).
+    pub fn has_potential(&self) -> bool {
+        matches!(self, Load::Spring { .. })
+    }
+}
+
+/// The potential energy V(q) = −Σ m·g·r_G + Σ ½k(L − L₀)² of gravity and
+/// the springs, when every load has one (None otherwise).
+pub fn potential(m: &Mechanism, loads: &[Load], q: &[f64]) -> Option<f64> {
+    let zeros = vec![0.0; q.len()];
+    let mut v = 0.0;
+    for (b, body) in m.bodies.iter().enumerate() {
+        let (g, _) = point_motion(m, q, &zeros, (b, body.cg));
+        v -= body.mass * (m.gravity[0] * g[0] + m.gravity[1] * g[1]);
+    }
+    for load in loads {
+        let Load::Spring { a, b, stiffness, free_length } = load else { return None };
+        let (_, length, _) = line(m, q, &zeros, *a, *b);
+        v += 0.5 * stiffness * (length - free_length).powi(2);
+    }
+    Some(v)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::engine::samples::offset_slider_crank;
+
+    /// V's gradient is −Q (a second method: the generalized forces of
+    /// gravity and of two springs, one to the ground), by central
+    /// differences at an arbitrary q off the constraints, to 1e-7 of |Q|.
+    #[test]
+    fn the_potential_is_the_forces_integral() {
+        let mut m = offset_slider_crank();
+        m.gravity = [1.5, -9.81];
+        let loads = vec![
+            Load::Spring { a: (1, [0.0, 0.0]), b: (2, [0.2, 0.1]), stiffness: 300.0, free_length: 0.1 },
+            Load::Spring { a: (0, [0.0, -0.2]), b: (3, [0.3, 0.0]), stiffness: 50.0, free_length: 0.0 },
+        ];
+        let q: Vec<f64> = (0..m.n_coordinates()).map(|k| 0.1 + 0.37 * k as f64).collect();
+        let forces = applied_forces(&m, &loads, &q, &vec![0.0; q.len()], 0.0, [0.0, 0.0]);
+        let h = 1e-6;
+        for k in 0..q.len() {
+            let at = |d: f64| {
+                let mut x = q.clone();
+                x[k] += d;
+                potential(&m, &loads, &x).expect("springs and gravity")
+            };
+            let slope = (at(h) - at(-h)) / (2.0 * h);
+            assert!((slope + forces[k]).abs() <= 1e-7 * forces.amax(), "∂V/∂q{k} = {slope}, Q = {}", forces[k]);
+        }
+        let damper = Load::Damper { a: (1, [0.0, 0.0]), b: (2, [0.2, 0.1]), coefficient: 1.0 };
+        assert_eq!(potential(&m, &[damper], &q), None);
+    }
+}

@@ -16,7 +16,7 @@ mod friction;
 mod loads;
 mod summary;
 
-pub use loads::{Load, applied_forces, point_motion};
+pub use loads::{Load, applied_forces, point_motion, potential};
 pub use summary::Summary;
 
 use super::constraints::joint_offsets;

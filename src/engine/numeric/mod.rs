@@ -1,6 +1,7 @@
 //! Numerical building blocks with no mechanics in them: quadrature, root
-//! finding, ODE integration, a sparse LDLᵀ, and an SVD that always returns.
+//! finding, ODE integration (two explicit Runge–Kutta pairs), a sparse LDLᵀ, and an SVD that always returns.
 
+pub mod dop853;
 pub mod ldl;
 pub mod ode;
 pub mod quadrature;

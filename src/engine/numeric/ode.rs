@@ -1,11 +1,15 @@
-//! Dormand–Prince 5(4) explicit Runge–Kutta with step-size control and
-//! Hairer's 4th-order continuous extension (dense output), for non-stiff
-//! systems y' = f(t, y); f writes dy/dt into its third argument.
+//! Explicit embedded Runge–Kutta pairs with step-size control and dense
+//! output, for non-stiff systems y' = f(t, y); f writes dy/dt into its
+//! third argument. Two pairs: Dormand–Prince 5(4) with Hairer's 4th-order
+//! continuous extension ([`Dopri5`], here) and Hairer's DOP853, 8th order
+//! with a 7th-order extension ([`super::dop853`]); both share the stepper
+//! [`Explicit`] and the step record [`Step`].
 //!
 //! The caller drives the steps and locates its own events on the dense output
-//! ([`Step::at`]), restarting with [`Dopri5::restart`] after a discontinuity
-//! or moving the state with [`Dopri5::project`] (e.g. onto constraints).
-//! Reference: Hairer, Nørsett, Wanner, *Solving ODEs I*, §II.5 and DOPRI5.
+//! ([`Step::at`]), restarting with [`Explicit::restart`] after a discontinuity
+//! or moving the state with [`Explicit::project`] (e.g. onto constraints).
+//! Reference: Hairer, Nørsett, Wanner, *Solving ODEs I*, §II.5, §II.10 and
+//! the codes DOPRI5 and DOP853.
 
 /// One accepted step from `t0` to `t1` with its interpolation data.
 #[derive(Clone, Debug)]
@@ -17,7 +21,9 @@ pub struct Step {
     /// dy/dt at t0 and t1.
     pub f0: Vec<f64>,
     pub f1: Vec<f64>,
-    rcont: [Vec<f64>; 4],
+    /// The continuous extension's coefficients r₁…r_p: y(t0 + θh) =
+    /// y0 + θ(r₁ + (1−θ)(r₂ + θ(r₃ + (1−θ)(r₄ + …)))).
+    rcont: Vec<Vec<f64>>,
 }
 
 impl Step {
@@ -30,9 +36,11 @@ impl Step {
     pub fn component(&self, t: f64, i: usize) -> f64 {
         let h = self.t1 - self.t0;
         let th = if h == 0.0 { 0.0 } else { (t - self.t0) / h };
-        let th1 = 1.0 - th;
-        let [r2, r3, r4, r5] = &self.rcont;
-        self.y0[i] + th * (r2[i] + th1 * (r3[i] + th * (r4[i] + th1 * r5[i])))
+        let mut v = 0.0;
+        for (k, r) in self.rcont.iter().enumerate().rev() {
+            v = (v + r[i]) * if k % 2 == 0 { th } else { 1.0 - th };
+        }
+        self.y0[i] + v
     }
 }
 
@@ -45,29 +53,6 @@ pub enum OdeError {
     TooManySteps { steps: usize },
     #[error("the derivative is not finite at t = {t}")]
     NotFinite { t: f64 },
-}
-
-/// Stepper state: current time, state, derivative (FSAL) and next step size.
-pub struct Dopri5 {
-    pub rtol: f64,
-    /// Absolute tolerance per component.
-    pub atol: Vec<f64>,
-    pub h_max: f64,
-    t: f64,
-    y: Vec<f64>,
-    f: Vec<f64>,
-    h: f64,
-    /// Stage derivatives k₁…k₇ and a stage state, reused from step to step.
-    k: [Vec<f64>; 7],
-    ys: Vec<f64>,
-    /// Accepted and rejected steps, and evaluations of f.
-    pub accepted: usize,
-    pub rejected: usize,
-    pub evaluations: usize,
-    /// Σ over the accepted steps of each component's embedded error estimate
-    /// |y₅ − y₄|: a first-order estimate of the global error (it ignores how
-    /// errors grow or decay along the solution).
-    pub local_errors: Vec<f64>,
 }
 
 const C: [f64; 7] = [0.0, 0.2, 0.3, 0.8, 8.0 / 9.0, 1.0, 1.0];
@@ -94,11 +79,59 @@ const D: [f64; 7] = [
     69997945.0 / 29380423.0,
 ];
 
+/// An embedded explicit Runge–Kutta pair whose last stage is f(t + h, y₁)
+/// (first same as last).
+pub trait Pair {
+    /// Stages of a step, the last one at (t + h, y₁).
+    const STAGES: usize;
+    /// Stages including those the dense output adds.
+    const EXTENDED: usize;
+    /// 1/(q + 1), q the order of the error estimate: the step-size exponent.
+    const EXPONENT: f64;
+    fn c(s: usize) -> f64;
+    /// Row s of the Runge–Kutta matrix (its first s entries are used).
+    fn a(s: usize) -> &'static [f64];
+    /// The error norm of a step of size h from the stages k, components
+    /// scaled by `scale`; and each component's error estimate in `estimate`.
+    fn error(k: &[Vec<f64>], h: f64, scale: &[f64], estimate: &mut [f64]) -> f64;
+    /// The continuous extension's coefficients r₁…r_p of a step from y0 to
+    /// y1 (stages k, the extended ones already evaluated).
+    fn dense(k: &[Vec<f64>], h: f64, y0: &[f64], y1: &[f64]) -> Vec<Vec<f64>>;
+}
+
+/// Stepper state: current time, state, derivative (FSAL) and next step size.
+pub struct Explicit<P: Pair> {
+    pub rtol: f64,
+    /// Absolute tolerance per component.
+    pub atol: Vec<f64>,
+    pub h_max: f64,
+    t: f64,
+    y: Vec<f64>,
+    f: Vec<f64>,
+    h: f64,
+    /// Stage derivatives (extended ones included), a stage state, the error
+    /// scale and estimate, reused from step to step.
+    k: Vec<Vec<f64>>,
+    ys: Vec<f64>,
+    stage: Vec<f64>,
+    scale: Vec<f64>,
+    estimate: Vec<f64>,
+    /// Accepted and rejected steps, and evaluations of f.
+    pub accepted: usize,
+    pub rejected: usize,
+    pub evaluations: usize,
+    /// Σ over the accepted steps of each component's embedded error
+    /// estimate: a first-order estimate of the global error (it ignores how
+    /// errors grow or decay along the solution).
+    pub local_errors: Vec<f64>,
+    pair: std::marker::PhantomData<P>,
+}
+
 /// The right-hand side: f(t, y, dy/dt).
 pub trait Rhs: FnMut(f64, &[f64], &mut [f64]) {}
 impl<F: FnMut(f64, &[f64], &mut [f64])> Rhs for F {}
 
-impl Dopri5 {
+impl<P: Pair> Explicit<P> {
     /// A stepper at (t, y) with tolerances and the largest step allowed.
     pub fn new(f: &mut impl Rhs, t: f64, y: Vec<f64>, rtol: f64, atol: Vec<f64>, h_max: f64) -> Self {
         let n = y.len();
@@ -110,12 +143,16 @@ impl Dopri5 {
             y: vec![0.0; n],
             f: vec![0.0; n],
             h: 0.0,
-            k: std::array::from_fn(|_| vec![0.0; n]),
+            k: vec![vec![0.0; n]; P::EXTENDED],
             ys: vec![0.0; n],
+            stage: vec![0.0; n],
+            scale: vec![0.0; n],
+            estimate: vec![0.0; n],
             accepted: 0,
             rejected: 0,
             evaluations: 0,
             local_errors: vec![0.0; n],
+            pair: std::marker::PhantomData,
         };
         s.restart(f, t, y);
         s
@@ -156,8 +193,8 @@ impl Dopri5 {
             if h.abs() <= 8.0 * f64::EPSILON * self.t.abs().max(1e-300) {
                 return Err(OdeError::StepTooSmall { t: self.t });
             }
-            self.stages(f, h);
-            let finite = self.ys.iter().chain(self.k[6].iter()).all(|v| v.is_finite());
+            self.stages(f, h, 1..P::STAGES);
+            let finite = self.ys.iter().chain(self.k[P::STAGES - 1].iter()).all(|v| v.is_finite());
             if !finite {
                 self.rejected += 1;
                 self.h *= 0.25;
@@ -166,13 +203,14 @@ impl Dopri5 {
                 }
                 continue;
             }
-            let err = self.error_norm(h);
-            let factor = (0.9 * err.powf(-0.2)).clamp(0.2, 10.0);
+            for i in 0..self.y.len() {
+                self.scale[i] = self.atol[i] + self.rtol * self.y[i].abs().max(self.ys[i].abs());
+            }
+            let err = P::error(&self.k, h, &self.scale, &mut self.estimate);
+            let factor = (0.9 * err.powf(-P::EXPONENT)).clamp(0.2, 10.0);
             if err <= 1.0 {
-                for i in 0..self.y.len() {
-                    self.local_errors[i] += (h * (0..7).map(|j| E[j] * self.k[j][i]).sum::<f64>()).abs();
-                }
-                let step = self.accept(h);
+                self.local_errors.iter_mut().zip(&self.estimate).for_each(|(s, e)| *s += e.abs());
+                let step = self.accept(f, h);
                 self.h = (h * factor).min(self.h_max);
                 return Ok(step);
             }
@@ -181,47 +219,71 @@ impl Dopri5 {
         }
     }
 
-    /// k₁…k₇; leaves y₁ (the 5th-order solution) in `ys` and f(t + h, y₁) in k₇.
-    fn stages(&mut self, f: &mut impl Rhs, h: f64) {
+    /// The stages in `range` (k₁ = f(t, y) is kept from the last step); a
+    /// step's leave y₁ in `ys` and f(t + h, y₁) in the last stage.
+    fn stages(&mut self, f: &mut impl Rhs, h: f64, range: std::ops::Range<usize>) {
         self.k[0].copy_from_slice(&self.f);
-        for s in 1..7 {
-            for i in 0..self.y.len() {
-                self.ys[i] = self.y[i] + h * (0..s).map(|j| A[s][j] * self.k[j][i]).sum::<f64>();
+        for s in range.clone() {
+            let a = P::a(s);
+            for (i, v) in self.stage.iter_mut().enumerate() {
+                *v = self.y[i] + h * (0..s).map(|j| a[j] * self.k[j][i]).sum::<f64>();
             }
             let (_, rest) = self.k.split_at_mut(s);
-            f(self.t + C[s] * h, &self.ys, &mut rest[0]);
+            f(self.t + P::c(s) * h, &self.stage, &mut rest[0]);
         }
-        self.evaluations += 6;
+        if range.end == P::STAGES {
+            self.ys.copy_from_slice(&self.stage);
+        }
+        self.evaluations += range.len();
     }
 
-    fn error_norm(&self, h: f64) -> f64 {
-        rms((0..self.y.len()).map(|i| {
-            let e = h * (0..7).map(|j| E[j] * self.k[j][i]).sum::<f64>();
-            e / (self.atol[i] + self.rtol * self.y[i].abs().max(self.ys[i].abs()))
-        }))
-    }
-
-    fn accept(&mut self, h: f64) -> Step {
-        let n = self.y.len();
-        let (y0, y1, k) = (&self.y, &self.ys, &self.k);
-        let ydiff: Vec<f64> = (0..n).map(|i| y1[i] - y0[i]).collect();
-        let bspl: Vec<f64> = (0..n).map(|i| h * k[0][i] - ydiff[i]).collect();
-        let r4: Vec<f64> = (0..n).map(|i| ydiff[i] - h * k[6][i] - bspl[i]).collect();
-        let r5: Vec<f64> = (0..n).map(|i| h * (0..7).map(|j| D[j] * k[j][i]).sum::<f64>()).collect();
+    fn accept(&mut self, f: &mut impl Rhs, h: f64) -> Step {
+        let last = P::STAGES - 1;
+        self.stages(f, h, P::STAGES..P::EXTENDED);
         let step = Step {
             t0: self.t,
             t1: self.t + h,
-            y0: y0.clone(),
-            y1: y1.clone(),
-            f0: k[0].clone(),
-            f1: k[6].clone(),
-            rcont: [ydiff, bspl, r4, r5],
+            rcont: P::dense(&self.k, h, &self.y, &self.ys),
+            y0: self.y.clone(),
+            y1: self.ys.clone(),
+            f0: self.k[0].clone(),
+            f1: self.k[last].clone(),
         };
         self.t += h;
         self.y.copy_from_slice(&step.y1);
         self.f.copy_from_slice(&step.f1);
         self.accepted += 1;
         step
+    }
+}
+
+/// Dormand–Prince 5(4), Hairer's DOPRI5.
+pub struct Dp5;
+pub type Dopri5 = Explicit<Dp5>;
+
+impl Pair for Dp5 {
+    const STAGES: usize = 7;
+    const EXTENDED: usize = 7;
+    const EXPONENT: f64 = 0.2;
+    fn c(s: usize) -> f64 {
+        C[s]
+    }
+    fn a(s: usize) -> &'static [f64] {
+        &A[s]
+    }
+    fn error(k: &[Vec<f64>], h: f64, scale: &[f64], estimate: &mut [f64]) -> f64 {
+        for (i, e) in estimate.iter_mut().enumerate() {
+            *e = h * (0..7).map(|j| E[j] * k[j][i]).sum::<f64>();
+        }
+        rms(estimate.iter().zip(scale).map(|(e, s)| e / s))
+    }
+    fn dense(k: &[Vec<f64>], h: f64, y0: &[f64], y1: &[f64]) -> Vec<Vec<f64>> {
+        let n = y0.len();
+        let ydiff: Vec<f64> = (0..n).map(|i| y1[i] - y0[i]).collect();
+        let bspl: Vec<f64> = (0..n).map(|i| h * k[0][i] - ydiff[i]).collect();
+        let r3: Vec<f64> = (0..n).map(|i| ydiff[i] - h * k[6][i] - bspl[i]).collect();
+        let r4: Vec<f64> = (0..n).map(|i| h * (0..7).map(|j| D[j] * k[j][i]).sum::<f64>()).collect();
+        vec![ydiff, bspl, r3, r4]
     }
 }
 
