@@ -162,16 +162,23 @@ fn machine() -> String {
 
 /// A log-log plot of wall time against error, one line per series.
 fn plot(points: &[Point], title: &str, path: &str) -> Result<(), Box<dyn std::error::Error>> {
-    let root = SVGBackend::new(path, (720, 480)).into_drawing_area();
+    let root = SVGBackend::new(path, (720, 560)).into_drawing_area();
     root.fill(&WHITE)?;
     let (emin, emax) = points.iter().fold((f64::INFINITY, 0.0f64), |(a, b), p| (a.min(p.error), b.max(p.error)));
     let (tmin, tmax) = points.iter().fold((f64::INFINITY, 0.0f64), |(a, b), p| (a.min(p.seconds), b.max(p.seconds)));
+    let mut names: Vec<&str> = points.iter().map(|p| p.series.as_str()).collect();
+    names.dedup();
+    // Empty decades above the data for the legend (upper left): about half a decade a line.
+    let headroom = 10f64.powf(0.45 * names.len() as f64).max(2.0);
     let mut chart = ChartBuilder::on(&root)
         .caption(title, ("sans-serif", 18))
         .margin(12)
         .x_label_area_size(40)
         .y_label_area_size(60)
-        .build_cartesian_2d((emin.max(1e-16) / 2.0..emax * 2.0).log_scale(), (tmin / 2.0..tmax * 2.0).log_scale())?;
+        .build_cartesian_2d(
+            (emin.max(1e-16) / 2.0..emax * 2.0).log_scale(),
+            (tmin / 2.0..tmax * headroom).log_scale(),
+        )?;
     chart
         .configure_mesh()
         .x_desc("error")
@@ -179,8 +186,6 @@ fn plot(points: &[Point], title: &str, path: &str) -> Result<(), Box<dyn std::er
         .x_label_formatter(&|v| format!("{v:.0e}"))
         .y_label_formatter(&|v| format!("{v:.0e}"))
         .draw()?;
-    let mut names: Vec<&str> = points.iter().map(|p| p.series.as_str()).collect();
-    names.dedup();
     for (k, name) in names.iter().enumerate() {
         let color = Palette99::pick(k).to_rgba();
         let series: Vec<(f64, f64)> =
@@ -190,7 +195,12 @@ fn plot(points: &[Point], title: &str, path: &str) -> Result<(), Box<dyn std::er
             .label(*name)
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], color.stroke_width(2)));
     }
-    chart.configure_series_labels().background_style(WHITE.mix(0.8)).border_style(BLACK).draw()?;
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperLeft)
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .draw()?;
     root.present()?;
     Ok(())
 }
