@@ -222,7 +222,8 @@ async fn a_job_over_its_compute_budget_is_stopped_with_the_reason() {
 /// form at 1e-9, Dormand–Prince above 1e-5 and for a machine), asked for,
 /// reported, and either pair reaching D1's closed-form turn times (1e-9
 /// reduced, 1e-8 machine, as above); the energy held by default where the
-/// loads have a potential (a pendulum under gravity) and not otherwise; an
+/// loads have a potential (a pendulum under gravity) and not otherwise (D1's
+/// force varies with φ); an
 /// unknown pair and a hold the loads cannot have answered 422 at the field.
 #[tokio::test]
 async fn the_integrator_and_the_energy_hold_are_chosen_and_reported() {
@@ -270,5 +271,5 @@ async fn the_integrator_and_the_energy_hold_are_chosen_and_reported() {
     let r = app.post("/v1/dynamics", &forced).await;
     assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
     assert_eq!(r.json()["errors"][0]["pointer"], "/machine/conserve_energy", "{}", r.text);
-    assert!(r.text.contains("/machine/loads/0 is a torque"), "{}", r.text);
+    assert!(r.text.contains("/machine/loads/1 is a force whose magnitude varies"), "{}", r.text);
 }

@@ -32,7 +32,8 @@ pub struct DynamicsMachine {
     /// Hold the energy T + V to its initial value after every step (the
     /// velocities scaled onto it): a long conservative run's error then
     /// grows linearly with time instead of quadratically. Default: wherever
-    /// every load has a potential (springs; gravity always has one);
+    /// every load has a potential (springs, constant forces and torques;
+    /// gravity always has one);
     /// `false` integrates without it; `true` requires it.
     pub conserve_energy: Option<bool>,
 }
@@ -50,16 +51,14 @@ pub(super) struct Parts {
 fn check_energy(e: &mut Errors, asked: Option<bool>, loads: &[Load]) {
     let Some(k) = loads.iter().position(|l| !l.has_potential()) else { return };
     if asked == Some(true) {
-        let kind = match loads[k] {
-            Load::Force { .. } => "force",
-            Load::Torque { .. } => "torque",
-            _ => "damper",
+        let what = match loads[k] {
+            Load::Force { .. } => "a force whose magnitude varies",
+            Load::Torque { .. } => "a torque whose value varies",
+            _ => "a damper",
         };
         e.push(
             "/machine/conserve_energy",
-            format!(
-                "needs every load to have a potential (springs; gravity always has one): /machine/loads/{k} is a {kind}"
-            ),
+            format!("needs every load to have a potential (springs, constant forces and torques): /machine/loads/{k} is {what}"),
         );
     }
 }

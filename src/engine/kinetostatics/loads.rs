@@ -1,7 +1,7 @@
 //! Loads on a mechanism and their generalized forces Q.
 
 use crate::engine::function::{Function, Side};
-use crate::engine::model::{BodyId, Mechanism, cross, rotate, rotate_d};
+use crate::engine::model::{BodyId, Mechanism, cross, dot, rotate, rotate_d};
 use nalgebra::DVector;
 
 /// A load on a body; functions take the first input coordinate φ (and, in
@@ -83,26 +83,38 @@ pub fn add_force(m: &Mechanism, q: &[f64], qv: &mut DVector<f64>, b: BodyId, at:
 }
 
 impl Load {
-    /// Whether the load has a potential energy (a spring; a force or a
-    /// torque given as a Function, and a damper, do not).
+    /// Whether the load has a potential energy: a spring, and a force or a
+    /// torque of constant value (not one that varies with φ, ω or t, nor a damper).
     pub fn has_potential(&self) -> bool {
-        matches!(self, Load::Spring { .. })
+        match self {
+            Load::Spring { .. } => true,
+            Load::Force { magnitude: f, .. } | Load::Torque { value: f, .. } => f.constant().is_some(),
+            Load::Damper { .. } => false,
+        }
     }
 }
 
-/// The potential energy V(q) = −Σ m·g·r_G + Σ ½k(L − L₀)² of gravity and
-/// the springs, when every load has one (None otherwise).
+/// The potential energy V(q) = −Σ m·g·r_G + Σ ½k(L − L₀)² − Σ F·r_P − Σ τ·θ
+/// of gravity, the springs and the constant forces and torques, when every
+/// load has one (None otherwise).
 pub fn potential(m: &Mechanism, loads: &[Load], q: &[f64]) -> Option<f64> {
     let zeros = vec![0.0; q.len()];
+    let at = |b: BodyId, p: [f64; 2]| point_motion(m, q, &zeros, (b, p)).0;
     let mut v = 0.0;
     for (b, body) in m.bodies.iter().enumerate() {
-        let (g, _) = point_motion(m, q, &zeros, (b, body.cg));
-        v -= body.mass * (m.gravity[0] * g[0] + m.gravity[1] * g[1]);
+        v -= body.mass * dot(m.gravity, at(b, body.cg));
     }
     for load in loads {
-        let Load::Spring { a, b, stiffness, free_length } = load else { return None };
-        let (_, length, _) = line(m, q, &zeros, *a, *b);
-        v += 0.5 * stiffness * (length - free_length).powi(2);
+        v += match load {
+            Load::Spring { a, b, stiffness, free_length } => {
+                0.5 * stiffness * (line(m, q, &zeros, *a, *b).1 - free_length).powi(2)
+            }
+            Load::Force { body, at: p, direction, magnitude } => {
+                -magnitude.constant()? * dot(*direction, at(*body, *p))
+            }
+            Load::Torque { body, value } => -value.constant()? * m.column(*body).map_or(0.0, |c| q[c + 2]),
+            Load::Damper { .. } => return None,
+        };
     }
     Some(v)
 }
@@ -113,8 +125,9 @@ mod tests {
     use crate::engine::samples::offset_slider_crank;
 
     /// V's gradient is −Q (a second method: the generalized forces of
-    /// gravity and of two springs, one to the ground), by central
-    /// differences at an arbitrary q off the constraints, to 1e-7 of |Q|.
+    /// gravity, two springs, one to the ground, a constant force and a
+    /// constant torque), by central differences at an arbitrary q off the
+    /// constraints, to 1e-7 of |Q|.
     #[test]
     fn the_potential_is_the_forces_integral() {
         let mut m = offset_slider_crank();
@@ -122,6 +135,8 @@ mod tests {
         let loads = vec![
             Load::Spring { a: (1, [0.0, 0.0]), b: (2, [0.2, 0.1]), stiffness: 300.0, free_length: 0.1 },
             Load::Spring { a: (0, [0.0, -0.2]), b: (3, [0.3, 0.0]), stiffness: 50.0, free_length: 0.0 },
+            Load::Force { body: 2, at: [0.1, 0.05], direction: [0.6, -0.8], magnitude: Function::Constant(40.0) },
+            Load::Torque { body: 1, value: Function::Constant(-7.0) },
         ];
         let q: Vec<f64> = (0..m.n_coordinates()).map(|k| 0.1 + 0.37 * k as f64).collect();
         let forces = applied_forces(&m, &loads, &q, &vec![0.0; q.len()], 0.0, [0.0, 0.0]);
@@ -136,6 +151,11 @@ mod tests {
             assert!((slope + forces[k]).abs() <= 1e-7 * forces.amax(), "∂V/∂q{k} = {slope}, Q = {}", forces[k]);
         }
         let damper = Load::Damper { a: (1, [0.0, 0.0]), b: (2, [0.2, 0.1]), coefficient: 1.0 };
-        assert_eq!(potential(&m, &[damper], &q), None);
+        let phi = crate::engine::expr::Expr::compile("10*phi", &["phi"]).expect("expression");
+        let varying = Load::Torque { body: 1, value: Function::Expr(phi) };
+        for load in [damper, varying] {
+            assert!(!load.has_potential());
+            assert_eq!(potential(&m, &[load], &q), None);
+        }
     }
 }
