@@ -292,30 +292,36 @@ fn rms(v: impl ExactSizeIterator<Item = f64>) -> f64 {
     (v.map(|x| x * x).sum::<f64>() / n as f64).sqrt()
 }
 
+/// x'' = −ω²x, x(0) = 1 over [0, t_end] with the pair P at `rtol`: the
+/// largest |x − cos ωt| (closed form) at the step ends and on the dense
+/// output between them, and the stepper's counts.
+#[cfg(test)]
+pub(super) fn oscillator<P: Pair>(omega: f64, t_end: f64, rtol: f64) -> (f64, Explicit<P>) {
+    let mut f = |_t: f64, y: &[f64], dy: &mut [f64]| {
+        dy[0] = y[1];
+        dy[1] = -omega * omega * y[0];
+    };
+    let mut s = Explicit::<P>::new(&mut f, 0.0, vec![1.0, 0.0], rtol, vec![0.01 * rtol; 2], f64::INFINITY);
+    let mut worst: f64 = 0.0;
+    while s.t() < t_end {
+        let step = s.step(&mut f, 100_000).expect("step");
+        for th in [0.0, 0.25, 0.5, 0.75, 1.0] {
+            let t = step.t0 + th * (step.t1 - step.t0);
+            worst = worst.max((step.at(t)[0] - (omega * t).cos()).abs());
+            assert_eq!(step.at(t)[1], step.component(t, 1));
+        }
+    }
+    (worst, s)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// x'' = −4x, x(0) = 1: x(t) = cos 2t (closed form), checked at the step
-    /// ends and on the dense output between them.
+    /// x'' = −4x over 6.6 s at rtol 1e-11: cos 2t to 1e-9 (steps and dense output).
     #[test]
     fn harmonic_oscillator_matches_the_closed_form() {
-        let mut f = |_t: f64, y: &[f64], dy: &mut [f64]| {
-            dy[0] = y[1];
-            dy[1] = -4.0 * y[0];
-        };
-        let mut s = Dopri5::new(&mut f, 0.0, vec![1.0, 0.0], 1e-11, vec![1e-13; 2], 0.5);
-        let mut worst: f64 = 0.0;
-        while let Ok(step) = s.step(&mut f, 100_000) {
-            for th in [0.0, 0.3, 0.7, 1.0] {
-                let t = step.t0 + th * (step.t1 - step.t0);
-                worst = worst.max((step.at(t)[0] - (2.0 * t).cos()).abs());
-                assert_eq!(step.at(t)[1], step.component(t, 1));
-            }
-            if step.t1 > 6.6 {
-                break;
-            }
-        }
+        let (worst, s) = oscillator::<Dp5>(2.0, 6.6, 1e-11);
         assert!(worst < 1e-9, "largest error {worst}");
         assert!(s.accepted > 10 && s.accepted < 2000, "{} steps", s.accepted);
     }
