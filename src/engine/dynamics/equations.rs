@@ -164,12 +164,16 @@ impl Equations<'_> {
     /// Scales q̇ by s = √((E − V(q))/T): the correction along M⁻¹·∂T/∂q̇ =
     /// q̇, which keeps Φ_q·q̇ = 0. Skipped where it would change q̇ by more
     /// than 1 % (near a turning point, T → 0, where s is ill-conditioned:
-    /// the next steps correct it).
+    /// the next steps correct it), and where the defect E − V − T is within
+    /// 100× the rounding of its terms (with T ≪ |V| that rounding, not the
+    /// integration, would set the correction).
     fn hold_energy(&self, e: f64, y: &mut [f64]) {
         let n = self.n;
         let Some(v) = potential(&self.p.mechanism, &self.p.loads, &y[..n]) else { return };
-        let s = ((e - v) / self.kinetic(&y[n..2 * n])).sqrt();
-        if (s - 1.0).abs() <= 0.01 {
+        let t = self.kinetic(&y[n..2 * n]);
+        let rounding = 100.0 * f64::EPSILON * (e.abs() + v.abs() + t);
+        let s = ((e - v) / t).sqrt();
+        if (s - 1.0).abs() <= 0.01 && (e - v - t).abs() > rounding {
             y[n..2 * n].iter_mut().for_each(|v| *v *= s);
         }
     }
