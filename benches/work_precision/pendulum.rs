@@ -1,5 +1,6 @@
-//! IFToMM A01: a 1 kg point mass on a massless 1 m link, released from the
-//! horizontal under g = 9.81, for 2000 s (about 840 swings); error = the
+//! IFToMM A01 (library/requests/a01_pendulum.json): a 1 kg point mass on a
+//! massless 1 m link, released from the horizontal under g = 9.81, for
+//! 2000 s (about 840 swings); error = the
 //! largest |θ − θ_closed form| over 2001 samples, with sin(θ/2) =
 //! k·sn(K − t√(g/L), k), k = sin(π/4) (θ from the bottom), from the file
 //! tests/engine uses too.
@@ -7,7 +8,7 @@
 #[path = "../../tests/engine/elliptic.rs"]
 mod elliptic;
 
-use crate::{INTEGRATORS, Point, timed};
+use crate::{INTEGRATORS, Point, fixture, timed};
 use elliptic::{complete_k, sn};
 use serde_json::json;
 use std::f64::consts::PI;
@@ -18,18 +19,10 @@ const TOLERANCES: [f64; 6] = [1e-2, 1e-3, 1e-4, 1e-6, 1e-8, 1e-10];
 const TARGET: (f64, f64) = (1e-3, 0.2);
 
 fn a01(tolerance: f64, integrator: &str, energy: bool) -> Point {
-    let request = json!({
-        "machine": {
-            "mechanism": {
-                "bodies": [{"name": "bob", "mass": 1, "inertia": 0, "cg": [1, 0]}],
-                "joints": [{"name": "O", "type": "revolute", "bodies": ["ground", "bob"], "at": [0, 0]}],
-                "gravity": [0, -9.81]
-            },
-            "input": {"joint": "O", "speed": 0, "start": 0},
-            "conserve_energy": energy
-        },
-        "duration": 2000, "samples": 2001, "tolerance": tolerance, "integrator": integrator
-    });
+    let mut request = fixture("requests/a01_pendulum.json");
+    request["tolerance"] = json!(tolerance);
+    request["integrator"] = json!(integrator);
+    request["machine"]["conserve_energy"] = json!(energy);
     let (seconds, r) = timed(&request, if tolerance >= 1e-4 { 3 } else { 1 });
     let k = (PI / 4.0).sin();
     let kk = complete_k(k);

@@ -231,6 +231,7 @@ async fn the_integrator_and_the_energy_hold_are_chosen_and_reported() {
     let turn = &c["expected"]["at_angle"][5];
     let cases = [
         (d1(json!({"until_angle": "360 deg"})), "dop853", 1e-9),
+        // At tolerance 1e-4 the turn is within 1e-6 (measured 2e-7, as D1's row in docs/BENCHMARKS.md).
         (d1(json!({"until_angle": "360 deg", "tolerance": 1e-4})), "dopri5", 1e-6),
         (d1(json!({"until_angle": "360 deg", "integrator": "dopri5"})), "dopri5", 1e-9),
         (d1_machine(json!({"until_angle": "360 deg"})), "dopri5", 1e-8),
@@ -246,17 +247,8 @@ async fn the_integrator_and_the_energy_hold_are_chosen_and_reported() {
         let held = result["accuracy"]["energy_conserved"].clone();
         assert_eq!(held, if body.get("machine").is_some() { json!(false) } else { Value::Null }, "{body}");
     }
-    let pendulum = json!({
-        "machine": {
-            "mechanism": {
-                "bodies": [{"name": "bob", "mass": 1, "inertia": 0, "cg": [1, 0]}],
-                "joints": [{"name": "O", "type": "revolute", "bodies": ["ground", "bob"], "at": [0, 0]}],
-                "gravity": [0, -9.81]
-            },
-            "input": {"joint": "O"}
-        },
-        "duration": 3
-    });
+    let mut pendulum = request("a01_pendulum");
+    pendulum["duration"] = json!(3);
     let r = app.post("/v1/dynamics", &pendulum).await;
     assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
     assert_eq!(r.json()["result"]["accuracy"]["energy_conserved"], true);

@@ -141,7 +141,7 @@ impl Equations<'_> {
     }
 
     pub fn kinetic(&self, qd: &[f64]) -> f64 {
-        0.5 * self.mass.iter().zip(qd).map(|(m, v)| m * v * v).sum::<f64>()
+        kinetic(&self.mass, qd)
     }
 
     /// Moves y onto Φ = 0 and Φ_q q̇ = 0 (Newton, least corrections: in the
@@ -253,6 +253,11 @@ impl super::Model for Equations<'_> {
     fn project(&self, y: &mut [f64]) -> f64 {
         Equations::project(self, y)
     }
+}
+
+/// T = ½ q̇ᵀ M q̇ with M's diagonal `mass`.
+pub(super) fn kinetic(mass: &[f64], qd: &[f64]) -> f64 {
+    0.5 * mass.iter().zip(qd).map(|(m, v)| m * v * v).sum::<f64>()
 }
 
 /// The diagonal of M: m, m, I_G of every moving body.

@@ -7,10 +7,10 @@
 //! ```
 //!
 //! with state y = (q, q̇, W), W the work of the applied loads (Ẇ = Qᵀq̇),
-//! solved at each evaluation in the sparse range-space form or by the dense
-//! LU ([`super::equations`]). Φ here holds the joints only: the inputs named by the problem's drivers
-//! are free, and serve to report the motion (coordinate φ, speed ω) and to
-//! set the initial state. After every accepted step the state is projected
+//! solved at each evaluation in the sparse range-space form or by the
+//! dense LU ([`super::equations`]). Φ here holds the joints only: the
+//! inputs named by the problem's drivers are free, and serve to report the
+//! motion (coordinate φ, speed ω) and to set the initial state. After every accepted step the state is projected
 //! back onto Φ = 0 and Φ_q q̇ = 0 (least Newton corrections), so
 //! the drift stays at the step's local error instead of growing with time;
 //! the largest violation removed is reported. The multipliers λ give the
@@ -18,7 +18,7 @@
 //! Redundant constraints, and the nearly dependent rows at a singular
 //! position, are handled by [`super::rows`]: those reactions are flagged.
 
-use super::equations::{Equations, masses};
+use super::equations::{Equations, kinetic, masses};
 use super::range_space::RangeSpace;
 use super::{DynamicsError, DynamicsSolution, End, Integrator, Sample, Settings, energy_residual, run, sample_states};
 use crate::engine::Deadline;
@@ -119,6 +119,7 @@ pub fn solve_in(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution,
     let length = characteristic_length(m);
     let (phi, _, jac) = evaluate_blocks(m, &State { q: &start.q, qd: None, inputs: &vec![[0.0; 3]; m.drivers.len()] });
     let r = phi.len() - m.drivers.len();
+    let energy = energy(p, &mass, &start.q, &start.qd);
     let sparse = (sparse && mobility.redundant_constraints == 0).then(|| RangeSpace::new(&jac, r, &mass)).flatten();
     let dae = Equations {
         p,
@@ -130,9 +131,8 @@ pub fn solve_in(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution,
         sparse: sparse.map(RefCell::new),
         held_at: RefCell::new(Vec::new()),
         dense: Default::default(),
-        energy: None,
+        energy,
     };
-    let dae = Equations { energy: energy(p, &dae, &start.q, &start.qd), ..dae };
     let settings = settings(p, &start.q, &start.qd, length);
     let mut y0 = start.q.clone();
     y0.extend(&start.qd);
@@ -219,11 +219,11 @@ fn settings(p: &MechanismProblem, q: &[f64], qd: &[f64], length: f64) -> Setting
 }
 
 /// The energy T + V to hold, when asked or by default and the loads have a potential.
-fn energy(p: &MechanismProblem, dae: &Equations, q: &[f64], qd: &[f64]) -> Option<f64> {
+fn energy(p: &MechanismProblem, mass: &[f64], q: &[f64], qd: &[f64]) -> Option<f64> {
     if p.conserve_energy == Some(false) {
         return None;
     }
-    potential(&p.mechanism, &p.loads, q).map(|v| v + dae.kinetic(qd))
+    potential(&p.mechanism, &p.loads, q).map(|v| v + kinetic(mass, qd))
 }
 
 /// The span of the drawn points and centres of mass (at least 1 mm).

@@ -4,9 +4,9 @@
 //! 1-DOF equation ([`reduced`]) and a planar mechanism of any DOF in
 //! dependent coordinates ([`mechanism`]). It steps with one of two explicit
 //! Runge–Kutta pairs with dense output ([`Integrator`]): Dormand–Prince
-//! 5(4), or Hairer's DOP853 (order 8) for tight tolerances and long runs. Events — every
-//! multiple of 2π the first input coordinate φ crosses, in either
-//! direction, and the end angle — are located on the dense output by
+//! 5(4), or Hairer's DOP853 (order 8) for tight tolerances and long runs.
+//! Events — every multiple of 2π the first input coordinate φ crosses, in
+//! either direction, and the end angle — are located on the dense output by
 //! Brent's method, not at the nearest step. A run ends at its duration, at
 //! its end angle, or cleanly (with the reason) when the end angle is not
 //! reached in time; it fails with [`DynamicsError`] when the integration
