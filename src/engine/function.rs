@@ -257,6 +257,26 @@ impl Function {
         }
     }
 
+    /// [`Self::eval_frozen`] at every x of `xs`, added to `out` times `k`
+    /// (expressions evaluated a block of points at a time).
+    pub fn add_frozen_many(&self, k: f64, xs: &[f64], anchor: f64, out: &mut [f64], scratch: &mut Vec<f64>) {
+        let mut expr = |e: &Expr| {
+            scratch.resize(xs.len(), 0.0);
+            e.eval_many(xs, scratch);
+            out.iter_mut().zip(scratch.iter()).for_each(|(o, v)| *o += k * v);
+        };
+        match self {
+            Self::Expr(e) => expr(e),
+            Self::Segments(segs) => {
+                if let Some(s) = segs.iter().find(|s| s.from <= anchor && anchor < s.to) {
+                    expr(&s.expr);
+                }
+            }
+            Self::Sum(fs) => fs.iter().for_each(|f| f.add_frozen_many(k, xs, anchor, out, scratch)),
+            _ => out.iter_mut().zip(xs).for_each(|(o, x)| *o += k * self.eval_frozen(*x, anchor)),
+        }
+    }
+
     /// Whether the function reads `omega` or `t` (then it is not a function of φ alone).
     pub fn uses_state(&self) -> bool {
         let expr = |e: &Expr| e.uses(1) || e.uses(2);

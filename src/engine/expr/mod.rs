@@ -96,6 +96,14 @@ impl Expr {
         }
     }
 
+    /// [`Self::eval`] at every x of `xs` for variable 0 (the others 0), into `out`.
+    pub fn eval_many(&self, xs: &[f64], out: &mut [f64]) {
+        match &self.program {
+            Some(p) => p.eval_many(xs, out),
+            None => xs.iter().zip(out).for_each(|(x, o)| *o = self.root.eval(&[*x])),
+        }
+    }
+
     /// Whether the expression reads variable number `var`.
     pub fn uses(&self, var: usize) -> bool {
         self.root.uses(var)

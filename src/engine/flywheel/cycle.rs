@@ -80,41 +80,44 @@ impl<'a> Cycle<'a> {
         self.inertia.eval(phi, side)
     }
 
-    pub fn slope_at(&self, phi: f64, side: Side) -> f64 {
-        self.inertia_slope.as_ref().map_or(0.0, |s| s.eval(phi, side))
-    }
-
-    /// Samples M* inside every piece; fails on a non-finite value (naming
-    /// the function) or a negative reduced inertia.
+    /// Samples M* inside every piece (each piece's own formulas, so one-sided
+    /// at its ends); fails on a non-finite value (naming the function) or a
+    /// negative reduced inertia.
     pub fn sample(&self) -> Result<Samples, EngineError> {
         let mut pieces = Vec::with_capacity(self.pieces.len());
         let mut slopes = Vec::with_capacity(self.pieces.len());
         let (mut abs_work, mut max_abs_torque) = (0.0, 0.0f64);
+        let mut scratch = Vec::new();
         for w in self.pieces.windows(2) {
             let (a, b) = (w[0], w[1]);
             let n = ((SAMPLES_PER_PERIOD as f64 * (b - a) / self.period).ceil() as usize).max(8);
             let xs: Vec<f64> = (0..=n).map(|j| a + (b - a) * j as f64 / n as f64).collect();
-            let mut ys = Vec::with_capacity(n + 1);
-            let mut ss = Vec::with_capacity(if self.inertia_slope.is_some() { n + 1 } else { 0 });
-            for (j, &x) in xs.iter().enumerate() {
-                let side = if j == n { Side::Left } else { Side::Right };
-                let m = self.torque(x, side);
-                if !m.is_finite() {
-                    return Err(self.not_finite(x, side));
-                }
-                let (i, slope) = (self.inertia_at(x, side), self.slope_at(x, side));
-                if !(i.is_finite() && slope.is_finite()) {
-                    return Err(EngineError::NotFinite { function: self.inertia_label.into(), phi: x });
-                }
-                if i < 0.0 {
-                    return Err(EngineError::NegativeInertia { function: self.inertia_label.into(), phi: x, value: i });
-                }
-                max_abs_torque = max_abs_torque.max(m.abs());
-                ys.push(m);
-                if self.inertia_slope.is_some() {
-                    ss.push(slope);
-                }
+            let anchor = 0.5 * (a + b);
+            let frozen = |f: &Function, k: f64, start: f64, scratch: &mut Vec<f64>| {
+                let mut out = vec![start; n + 1];
+                f.add_frozen_many(k, &xs, anchor, &mut out, scratch);
+                out
+            };
+            let mut ys = vec![0.0; n + 1];
+            for t in &self.terms {
+                t.f.add_frozen_many(t.ratio, &xs, anchor, &mut ys, &mut scratch);
             }
+            ys.iter_mut().for_each(|y| *y += self.balance);
+            let side = |j: usize| if j == n { Side::Left } else { Side::Right };
+            if let Some(j) = ys.iter().position(|m| !m.is_finite()) {
+                return Err(self.not_finite(xs[j], side(j)));
+            }
+            let inertia = frozen(self.inertia, 1.0, 0.0, &mut scratch);
+            let ss = self.inertia_slope.as_ref().map_or_else(Vec::new, |f| frozen(f, 1.0, 0.0, &mut scratch));
+            let finite = |j: usize| inertia[j].is_finite() && ss.get(j).is_none_or(|s| s.is_finite());
+            if let Some(j) = (0..=n).find(|&j| !finite(j)) {
+                return Err(EngineError::NotFinite { function: self.inertia_label.into(), phi: xs[j] });
+            }
+            if let Some(j) = inertia.iter().position(|i| *i < 0.0) {
+                let (function, phi, value) = (self.inertia_label.into(), xs[j], inertia[j]);
+                return Err(EngineError::NegativeInertia { function, phi, value });
+            }
+            max_abs_torque = ys.iter().fold(max_abs_torque, |m, y| m.max(y.abs()));
             abs_work += ys.windows(2).map(|p| 0.5 * (p[0].abs() + p[1].abs())).sum::<f64>() * (b - a) / n as f64;
             pieces.push((xs, ys));
             slopes.push(ss);
