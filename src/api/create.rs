@@ -37,8 +37,8 @@ pub trait JobResult: Serialize {
     }
 }
 
-/// Runs `compute` once a compute slot is free, off the async workers,
-/// serialises its result within the limit, stores the job, and answers 201
+/// Runs `compute` once a compute slot is free (off the async workers unless
+/// its kind's jobs are short: [`super::admission`]), serialises its result within the limit, stores the job, and answers 201
 /// with the job and its `Location`; the same bytes are stored and sent.
 pub async fn create<R, F>(
     state: &AppState,
@@ -82,15 +82,17 @@ where
     // The largest result is reserved before computing, so that no job is
     // computed only to be refused for want of memory; the spare is given back.
     let mut reserved = state.admission.memory(limit.saturating_add(request.len())).await?;
-    let (result, elapsed) = tokio::task::spawn_blocking(move || {
+    let run = move || {
         let start = Instant::now();
         let r = compute();
         let elapsed = start.elapsed();
         (r.and_then(|r| serialized(&r, limit)), elapsed)
-    })
-    .await
-    .map_err(|e| ApiError::Internal(format!("engine task: {e}")))?;
-    state.admission.record(elapsed);
+    };
+    let (result, elapsed) = match state.admission.inline(kind) {
+        Some(_inline) => run(),
+        None => tokio::task::spawn_blocking(run).await.map_err(|e| ApiError::Internal(format!("engine task: {e}")))?,
+    };
+    state.admission.record(kind, elapsed);
     let job = NewJob {
         id: uuid::Uuid::new_v4().to_string(),
         kind: kind.into(),
