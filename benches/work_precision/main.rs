@@ -216,6 +216,15 @@ fn main() {
         print!("{}", large::section());
         return;
     }
+    // `… -- flywheel` and `… -- http`: those sections alone (the flywheel's plot in the temporary folder).
+    if std::env::args().any(|a| a == "flywheel") {
+        print!("{}", flywheel::section(&std::env::temp_dir().to_string_lossy()));
+        return;
+    }
+    if std::env::args().any(|a| a == "http") {
+        print!("{}", http::section());
+        return;
+    }
     let (doc, points) = dynamics_section();
     // `… -- dynamics`: the direct-dynamics table alone.
     if std::env::args().any(|a| a == "dynamics") {
