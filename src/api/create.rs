@@ -38,8 +38,9 @@ pub trait JobResult: Serialize {
 }
 
 /// Runs `compute` once a compute slot is free (off the async workers unless
-/// its kind's jobs are short: [`super::admission`]), serialises its result within the limit, stores the job, and answers 201
-/// with the job and its `Location`; the same bytes are stored and sent.
+/// its kind's jobs are short: [`super::admission`]), serialises its result
+/// within the limit, stores the job, and answers 201 with the job and its
+/// `Location`; the same bytes are stored and sent.
 pub async fn create<R, F>(
     state: &AppState,
     kind: &'static str,

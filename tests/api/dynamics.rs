@@ -251,7 +251,10 @@ async fn the_integrator_and_the_energy_hold_are_chosen_and_reported() {
     pendulum["duration"] = json!(3);
     let r = app.post("/v1/dynamics", &pendulum).await;
     assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
-    assert_eq!(r.json()["result"]["accuracy"]["energy_conserved"], true);
+    let accuracy = &r.json()["result"]["accuracy"];
+    assert_eq!(accuracy["energy_conserved"], true);
+    let (held, steps) = (accuracy["energy_held_steps"].as_u64().unwrap(), accuracy["steps"].as_u64().unwrap());
+    assert!(0 < held && held <= steps, "held after {held} of {steps} steps");
     assert!(r.json()["result"]["accuracy"]["method"].as_str().unwrap().contains("T + V"));
     let mut unknown = d1(json!({"duration": 1}));
     unknown["integrator"] = json!("rk4");

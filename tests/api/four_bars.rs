@@ -132,6 +132,12 @@ async fn a02_parallelogram_chain_goes_through_its_singular_positions() {
             assert!(flat.clone().any(|f| (f - t).abs() < 1e-4), "{t} is not at a flat position");
         }
         assert!(result["warnings"][0].as_str().unwrap().contains("singular position"), "{}", result["warnings"]);
+        // Gravity has a potential, so T + V is held, but only up to the first
+        // singular position: not throughout, and after fewer than all steps.
+        let accuracy = &result["accuracy"];
+        let (held, steps) = (accuracy["energy_held_steps"].as_u64().unwrap(), accuracy["steps"].as_u64().unwrap());
+        assert_eq!(accuracy["energy_conserved"], false, "{accuracy}");
+        assert!(0 < held && held < steps, "held after {held} of {steps} steps");
     }
 }
 

@@ -190,6 +190,9 @@ fn holding_the_energy_keeps_a01_within_its_accuracy_at_a_loose_tolerance() {
             (2001, 1e-3, Some(integrator), Some(held), false);
         let s = solve(&p).unwrap();
         assert_eq!((s.energy_conserved, s.solution.integrator), (held, integrator));
+        // Held after most steps (not near the turning points), after none when free.
+        let steps = s.solution.steps;
+        assert!(if held { 2 * s.energy_held_steps > steps } else { s.energy_held_steps == 0 }, "{steps} steps");
         let worst = s.solution.samples.iter().fold(0.0f64, |a, x| {
             a.max((PI / 2.0 + x.angle - 2.0 * (k * sn(kk - x.t * 9.81f64.sqrt(), k)).asin()).abs())
         });

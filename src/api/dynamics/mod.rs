@@ -198,13 +198,20 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
             let mut result = DynamicsResult::from(s.solution.clone());
             result.accuracy.constraint_drift = Some(s.drift);
             result.accuracy.energy_conserved = Some(s.energy_conserved);
+            result.accuracy.energy_held_steps = Some(s.energy_held_steps);
             let form = if s.sparse {
                 "solved by the range-space method (sparse LDLᵀ of Φ_q M⁻¹ Φ_qᵀ) away from singular positions \
                  and by LU near them"
             } else {
                 "solved by LU"
             };
-            let energy = if s.energy_conserved { " and, the loads having a potential, onto T + V = E₀" } else { "" };
+            let energy = match s.energy_held_steps {
+                0 => String::new(),
+                held => format!(
+                    " and, the loads having a potential, onto T + V = E₀ ({held} of {} steps)",
+                    s.solution.steps
+                ),
+            };
             result.accuracy.method = format!(
                 "{} on the index-1 equations of motion [M Φ_qᵀ; Φ_q 0], {form}; \
                  the state projected onto Φ = 0 and Φ_q·q̇ = 0{energy} after every step; \

@@ -57,9 +57,16 @@ pub struct DynamicsAccuracy {
     /// The Runge–Kutta pair that integrated (`dopri5` or `dop853`).
     pub integrator: IntegratorChoice,
     /// Mechanism form: whether the energy T + V was held to its initial
-    /// value after every step (see `machine.conserve_energy`).
+    /// value throughout (see `machine.conserve_energy`): false where the
+    /// loads have no potential, where the hold was turned off, and where a
+    /// singular position was met (the hold stops there).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub energy_conserved: Option<bool>,
+    /// Mechanism form: the steps after which T + V was E₀ (not near turning
+    /// points, where the correction would exceed 1 %, nor after a singular
+    /// position); compare with `steps`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub energy_held_steps: Option<usize>,
     pub method: String,
 }
 
@@ -127,6 +134,7 @@ impl From<DynamicsSolution> for DynamicsResult {
                 constraint_drift: None,
                 integrator: s.integrator.into(),
                 energy_conserved: None,
+                energy_held_steps: None,
                 method: format!(
                     "{} with dense output, events located by Brent's method on it; \
                      work by adaptive quadrature over the angle",

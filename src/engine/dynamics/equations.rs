@@ -52,6 +52,8 @@ pub(super) struct Equations<'a> {
     pub dense: Cell<usize>,
     /// The energy E = T + V to hold after every step (loads with a potential V only).
     pub energy: Option<f64>,
+    /// Steps after which T + V was E (set so, or already within rounding of it).
+    pub energy_held: Cell<usize>,
 }
 
 impl Equations<'_> {
@@ -173,8 +175,11 @@ impl Equations<'_> {
         let t = self.kinetic(&y[n..2 * n]);
         let rounding = 100.0 * f64::EPSILON * (e.abs() + v.abs() + t);
         let s = ((e - v) / t).sqrt();
-        if (s - 1.0).abs() <= 0.01 && (e - v - t).abs() > rounding {
-            y[n..2 * n].iter_mut().for_each(|v| *v *= s);
+        if (s - 1.0).abs() <= 0.01 {
+            if (e - v - t).abs() > rounding {
+                y[n..2 * n].iter_mut().for_each(|v| *v *= s);
+            }
+            self.energy_held.set(self.energy_held.get() + 1);
         }
     }
 

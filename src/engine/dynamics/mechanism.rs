@@ -84,8 +84,14 @@ pub struct MechanismSolution {
     pub sparse: bool,
     /// Evaluations of the equations of motion in the dense form.
     pub dense_evaluations: usize,
-    /// The energy T + V was held to its initial value after every step.
+    /// The energy T + V was held to its initial value throughout: the loads
+    /// have a potential, the hold was not turned off, and no singular
+    /// position stopped it ([`Self::energy_held_steps`] says after how many
+    /// steps it was E₀; not near turning points, where the correction
+    /// would exceed 1 %).
     pub energy_conserved: bool,
+    /// Steps after which T + V was E₀ (0 when the energy was not held).
+    pub energy_held_steps: usize,
 }
 
 /// Integrates the mechanism from its initial state.
@@ -132,6 +138,7 @@ pub fn solve_in(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution,
         held_at: RefCell::new(Vec::new()),
         dense: Default::default(),
         energy,
+        energy_held: Default::default(),
     };
     let settings = settings(p, &start.q, &start.qd, length);
     let mut y0 = start.q.clone();
@@ -167,7 +174,8 @@ pub fn solve_in(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution,
     };
     let near_singular = clusters(&dae.held_at.borrow(), run.t_end);
     let sparse = dae.sparse.is_some();
-    let (dense_evaluations, energy_conserved) = (dae.dense.get(), dae.energy.is_some());
+    let (dense_evaluations, energy_held_steps) = (dae.dense.get(), dae.energy_held.get());
+    let energy_conserved = dae.energy.is_some() && near_singular.is_empty();
     Ok(MechanismSolution {
         solution,
         details,
@@ -177,6 +185,7 @@ pub fn solve_in(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution,
         sparse,
         dense_evaluations,
         energy_conserved,
+        energy_held_steps,
     })
 }
 

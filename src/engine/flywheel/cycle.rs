@@ -93,9 +93,9 @@ impl<'a> Cycle<'a> {
             let n = ((SAMPLES_PER_PERIOD as f64 * (b - a) / self.period).ceil() as usize).max(8);
             let xs: Vec<f64> = (0..=n).map(|j| a + (b - a) * j as f64 / n as f64).collect();
             let anchor = 0.5 * (a + b);
-            let frozen = |f: &Function, k: f64, start: f64, scratch: &mut Vec<f64>| {
-                let mut out = vec![start; n + 1];
-                f.add_frozen_many(k, &xs, anchor, &mut out, scratch);
+            let frozen = |f: &Function, scratch: &mut Vec<f64>| {
+                let mut out = vec![0.0; n + 1];
+                f.add_frozen_many(1.0, &xs, anchor, &mut out, scratch);
                 out
             };
             let mut ys = vec![0.0; n + 1];
@@ -107,8 +107,8 @@ impl<'a> Cycle<'a> {
             if let Some(j) = ys.iter().position(|m| !m.is_finite()) {
                 return Err(self.not_finite(xs[j], side(j)));
             }
-            let inertia = frozen(self.inertia, 1.0, 0.0, &mut scratch);
-            let ss = self.inertia_slope.as_ref().map_or_else(Vec::new, |f| frozen(f, 1.0, 0.0, &mut scratch));
+            let inertia = frozen(self.inertia, &mut scratch);
+            let ss = self.inertia_slope.as_ref().map_or_else(Vec::new, |f| frozen(f, &mut scratch));
             let finite = |j: usize| inertia[j].is_finite() && ss.get(j).is_none_or(|s| s.is_finite());
             if let Some(j) = (0..=n).find(|&j| !finite(j)) {
                 return Err(EngineError::NotFinite { function: self.inertia_label.into(), phi: xs[j] });
