@@ -192,11 +192,30 @@ pub fn sweep(
     deadline: &Deadline,
     exact: bool,
 ) -> Result<Vec<Configuration>, EngineError> {
+    let mut out: Vec<Configuration> = Vec::with_capacity(positions.len());
+    sweep_each(m, positions, deadline, exact, |_, c| {
+        out.push(c);
+        Ok(())
+    })?;
+    Ok(out)
+}
+
+/// [`sweep`], handing each position's configuration to `each` as soon as
+/// it is known (with its index) instead of keeping them all: what is done
+/// with a position stays in the cache, and a long sweep holds one
+/// configuration (Φ_q, its LU, q, q̇, q̈) at a time. An error of `each`
+/// stops the sweep.
+pub fn sweep_each(
+    m: &Mechanism,
+    positions: &[Vec<[f64; 3]>],
+    deadline: &Deadline,
+    exact: bool,
+    mut each: impl FnMut(usize, Configuration) -> Result<(), EngineError>,
+) -> Result<(), EngineError> {
     let mut base = m.reference_q();
     if let Some(first) = positions.first() {
         approach(m, &mut base, first).map_err(|e| unreachable(m, e))?;
     }
-    let mut out: Vec<Configuration> = Vec::with_capacity(positions.len());
     // Velocity coefficients at the last regular position, for the predictor.
     let mut coefficients: Option<(Vec<f64>, Vec<f64>, f64)> = None;
     let mut failure: Option<EngineError> = None;
@@ -213,7 +232,7 @@ pub fn sweep(
             // singular point passed; two in a row is a position out of reach.
             Err(e) if failure.is_none() => {
                 failure = Some(e);
-                out.push(Configuration::singular_at(q, f64::INFINITY));
+                each(step, Configuration::singular_at(q, f64::INFINITY))?;
                 continue;
             }
             Err(_) => {
@@ -245,25 +264,28 @@ pub fn sweep(
                 };
                 base = q.clone();
                 let jacobian = sys.jacobian;
-                out.push(Configuration {
-                    q,
-                    qd,
-                    qdd,
-                    g,
-                    jacobian,
-                    lu,
-                    condition: cond,
-                    iterations,
-                    residual,
-                    singular: false,
-                });
+                each(
+                    step,
+                    Configuration {
+                        q,
+                        qd,
+                        qdd,
+                        g,
+                        jacobian,
+                        lu,
+                        condition: cond,
+                        iterations,
+                        residual,
+                        singular: false,
+                    },
+                )?;
             }
-            _ => out.push(Configuration { iterations, residual, ..Configuration::singular_at(q, cond) }),
+            _ => each(step, Configuration { iterations, residual, ..Configuration::singular_at(q, cond) })?,
         }
     }
     match failure {
         Some(e) => Err(unreachable(m, e)),
-        None => Ok(out),
+        None => Ok(()),
     }
 }
 
@@ -298,6 +320,23 @@ fn approach(m: &Mechanism, q: &mut [f64], target: &[[f64; 3]]) -> Result<(), Eng
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Positions reach `each` in order, one at a time, and its error stops
+    /// the sweep there: the slider-crank over 8 positions, stopped at the 4th.
+    #[test]
+    fn a_sweep_hands_over_each_position_and_stops_on_an_error() {
+        let m = crate::engine::samples::offset_slider_crank();
+        let positions: Vec<Vec<[f64; 3]>> = (0..8).map(|k| vec![[0.5 * k as f64, 1.0, 0.0]]).collect();
+        let all = sweep(&m, &positions, &Deadline::none(), false).unwrap();
+        let mut seen = Vec::new();
+        let stopped = sweep_each(&m, &positions, &Deadline::none(), false, |k, c| {
+            seen.push((k, c.q));
+            if k == 3 { Err(EngineError::Singular { step: k, input: 0.0 }) } else { Ok(()) }
+        });
+        assert!(matches!(stopped, Err(EngineError::Singular { step: 3, .. })));
+        assert_eq!(seen.iter().map(|(k, _)| *k).collect::<Vec<_>>(), [0, 1, 2, 3]);
+        assert!(seen.iter().all(|(k, q)| *q == all[*k].q), "the same configurations as the whole sweep");
+    }
 
     /// A system holding NaN (a state gone bad) has no solution and returns at
     /// once: nalgebra's own SVD never returns on it.

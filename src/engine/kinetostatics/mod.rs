@@ -20,8 +20,8 @@ pub use loads::{Load, applied_forces, point_motion, potential};
 pub use summary::Summary;
 
 use super::constraints::joint_offsets;
-use super::kinematics::{Configuration, solve_linear, solve_transposed, sweep};
-use super::mobility::{Mobility, mobility};
+use super::kinematics::{Configuration, solve_linear, solve_transposed, sweep_each};
+use super::mobility::{Mobility, mobility as mobility_at};
 use super::model::{BodyId, JointKind, Mechanism, Pitch, cross, perp, rotate};
 use super::{Deadline, EngineError};
 use nalgebra::{DMatrix, DVector};
@@ -108,30 +108,61 @@ pub fn solve(
     outputs: Outputs,
     deadline: &Deadline,
 ) -> Result<Solution, EngineError> {
-    let configurations = sweep(m, positions, deadline, outputs.condition)?;
-    let regular = configurations.iter().find(|c| !c.singular);
-    let mobility = mobility(m, &regular.map_or_else(|| m.reference_q(), |c| c.q.clone()));
-    if mobility.dof != m.drivers.len() {
-        return Err(EngineError::DofMismatch { dof: mobility.dof, inputs: m.drivers.len() });
+    let mut steps = Vec::with_capacity(positions.len());
+    let mut mobility: Option<Mobility> = None;
+    let (mut max_iterations, mut max_constraint_residual) = (0, 0.0f64);
+    let inputs = m.drivers.len();
+    // Each position solved as soon as it is assembled, once the mobility at
+    // the first regular one has been found to match the inputs (where it
+    // does not, the sweep goes on unsolved: a position out of reach is the
+    // clearer error, and is said first).
+    sweep_each(m, positions, deadline, outputs.condition, |k, c| {
+        (max_iterations, max_constraint_residual) =
+            (max_iterations.max(c.iterations), max_constraint_residual.max(c.residual));
+        if mobility.is_none() && !c.singular {
+            mobility = Some(mobility_at(m, &c.q));
+        }
+        deadline.check(|| format!("the actions were solved at {k} of {} positions", positions.len()))?;
+        match mobility.as_ref().filter(|_| !c.singular) {
+            Some(mobility) if mobility.dof == inputs => {
+                steps.push(step(m, loads, &c, &positions[k], outputs, mobility, k)?)
+            }
+            Some(_) => {}
+            None => steps.push(singular_step(&c, &positions[k])),
+        }
+        Ok(())
+    })?;
+    let mobility = mobility.unwrap_or_else(|| mobility_at(m, &m.reference_q()));
+    if mobility.dof != inputs {
+        return Err(EngineError::DofMismatch { dof: mobility.dof, inputs });
     }
-    let steps = configurations
-        .iter()
-        .zip(positions)
-        .enumerate()
-        .map(|(k, (c, inputs))| {
-            deadline.check(|| format!("the actions were solved at {k} of {} positions", positions.len()))?;
-            step(m, loads, c, inputs, outputs, &mobility, k)
-        })
-        .collect::<Result<Vec<_>, _>>()?;
     Ok(Solution {
         summary: Summary::new(&steps, m.joints.len()),
         steps,
         mobility,
-        max_iterations: configurations.iter().map(|c| c.iterations).max().unwrap_or(0),
-        max_constraint_residual: configurations.iter().map(|c| c.residual).fold(0.0, f64::max),
+        max_iterations,
+        max_constraint_residual,
     })
 }
 
+/// A singular position: its input and condition number, nothing solved.
+fn singular_step(c: &Configuration, inputs: &[[f64; 3]]) -> Step {
+    Step {
+        input: inputs.iter().map(|i| i[0]).collect(),
+        driving: Vec::new(),
+        driving_virtual_power: Vec::new(),
+        reactions: Vec::new(),
+        reduced_inertia: None,
+        reduced_torque: None,
+        energy_shares: None,
+        condition: c.condition,
+        kinematics: None,
+        friction_iterations: 0,
+        singular: true,
+    }
+}
+
+/// The actions at a regular position.
 fn step(
     m: &Mechanism,
     loads: &[Load],
@@ -141,21 +172,6 @@ fn step(
     mobility: &Mobility,
     k: usize,
 ) -> Result<Step, EngineError> {
-    if c.singular {
-        return Ok(Step {
-            input: inputs.iter().map(|i| i[0]).collect(),
-            driving: Vec::new(),
-            driving_virtual_power: Vec::new(),
-            reactions: Vec::new(),
-            reduced_inertia: None,
-            reduced_torque: None,
-            energy_shares: None,
-            condition: c.condition,
-            kinematics: None,
-            friction_iterations: 0,
-            singular: true,
-        });
-    }
     let phi = inputs[0][0];
     let (qv, friction_iterations) =
         with_friction(m, c, applied_forces(m, loads, &c.q, &c.qd, phi, [inputs[0][1], 0.0]), k, phi)?;
