@@ -111,6 +111,10 @@ async fn errors_are_pages_with_their_status() {
     let r = app.get(&format!("/jobs/{id}?step=99")).await;
     assert_eq!(r.status, StatusCode::BAD_REQUEST);
     assert!(html(&r).contains("0 to 11"));
+    // A blank step (a cleared form field) is no whole number: 400, not the page.
+    let r = app.get(&format!("/jobs/{id}?step=")).await;
+    assert_eq!(r.status, StatusCode::BAD_REQUEST);
+    assert!(html(&r).contains("must be a whole number"), "{}", r.text);
     let r = app.get(&format!("/jobs/{id}?step=4")).await;
     assert!(html(&r).contains(&format!("/v1/jobs/{id}/plots/mechanism.svg?step=4")), "the drawing at the step asked");
 }

@@ -153,7 +153,7 @@ fn plot_figures(id: &str, listed: &[Listed], step: Option<usize>) -> Markup {
             @if listed.iter().any(|p| p.name == "mechanism") {
                 form.inline.noprint method="get" action=(format!("/jobs/{id}")) {
                     label for="step" { "Draw the mechanism at step" }
-                    input #step type="number" name="step" min="0" value=(step.unwrap_or(0));
+                    input #step type="number" name="step" min="0" required value=(step.unwrap_or(0));
                     button type="submit" { "Draw" }
                 }
             }

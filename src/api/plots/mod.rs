@@ -177,10 +177,10 @@ pub async fn listed(state: &AppState, id: &str) -> Result<(Vec<Listed>, crate::s
     Ok((plots.unwrap_or_default(), row))
 }
 
-/// `?step=` (blank: none), or a 400 naming it.
+/// `?step=`, when given, a whole number (a blank one too is a 400: the
+/// document says integer, and the page's form requires the field).
 pub fn step(q: &HashMap<String, String>) -> Result<Option<usize>, ApiError> {
     q.get("step")
-        .filter(|s| !s.trim().is_empty())
         .map(|s| {
             s.trim().parse::<usize>().map_err(|_| {
                 ApiError::BadQuery(vec![FieldError::parameter("step", format!("'{s}': must be a whole number from 0"))])
