@@ -116,6 +116,25 @@ fn job(k: usize, bytes: usize) -> NewJob {
     }
 }
 
+/// The write-ahead log is checkpointed every 100 pages (SQLite's default is
+/// 1000): while 8 MB of jobs are written one after another it stays within
+/// 100 pages and one job's (4 KiB pages: ~420 KB plus a job); at the default
+/// it would reach ~4 MB. The log file keeps its largest size, so its size
+/// at the end bounds it throughout.
+#[tokio::test]
+async fn the_write_ahead_log_stays_near_a_hundred_pages() {
+    let dir = tempfile::tempdir().unwrap();
+    let url = format!("sqlite://{}/jobs.db", dir.path().display());
+    let store = Store::open(&url).await.unwrap();
+    for k in 0..400 {
+        store.insert(job(k, 20_000)).await.unwrap();
+    }
+    let wal = std::fs::metadata(dir.path().join("jobs.db-wal")).unwrap().len();
+    let bound = 100 * 4096 + 2 * 24 * 1024;
+    assert!(wal <= bound, "the log grew to {wal} bytes (bound {bound})");
+    assert!(std::fs::metadata(dir.path().join("jobs.db")).unwrap().len() > 8_000_000, "the jobs reached the database");
+}
+
 /// `--max-database-bytes`: past the cap an insert fails as `Full` (the 507
 /// of the API), the jobs before it stay readable, and the file stays sound.
 #[tokio::test]
