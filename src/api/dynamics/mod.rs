@@ -199,11 +199,16 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
             result.accuracy.constraint_drift = Some(s.drift);
             result.accuracy.energy_conserved = Some(s.energy_conserved);
             result.accuracy.energy_held_steps = Some(s.energy_held_steps);
-            let form = if s.sparse {
-                "solved by the range-space method (sparse LDLᵀ of Φ_q M⁻¹ Φ_qᵀ) away from singular positions \
-                 and by LU near them"
-            } else {
-                "solved by LU"
+            let form = match (s.sparse, s.sparse_hold) {
+                (true, true) => {
+                    "solved by the range-space method (sparse LDLᵀ of Φ_q M⁻¹ Φ_qᵀ, holding the folding rows at \
+                     singular positions)"
+                }
+                (true, false) => {
+                    "solved by the range-space method (sparse LDLᵀ of Φ_q M⁻¹ Φ_qᵀ) away from singular positions \
+                     and by LU near them (the steps failed where the sparse form held the folds)"
+                }
+                _ => "solved by LU",
             };
             let energy = match s.energy_held_steps {
                 0 => String::new(),

@@ -1,14 +1,15 @@
 //! The mechanism's equations of motion at a state, in one of two forms
 //! that give the same q̈ and λ:
 //! - *sparse* ([`RangeSpace`]): S = Φ_q M⁻¹ Φ_qᵀ factored by a sparse
-//!   LDLᵀ; cost linear in the mechanism's size. Used whenever it applies
-//!   (every body with mass and inertia, no redundant constraint) and S is
-//!   not near singular;
+//!   LDLᵀ, whose small pivots tell and hold the nearly dependent rows at a
+//!   singular position; cost linear in the mechanism's size. Used whenever
+//!   it applies (every body with mass and inertia, no redundant constraint);
 //! - *dense*: the augmented matrix [M Φ_qᵀ; Φ_q 0] by LU, rows combined
 //!   by [`Rows`] (which holds the nearly dependent combinations at a
-//!   singular position and drops the dependent ones); any mechanism, cost
-//!   growing as its size cubed. Near a singular position every evaluation
-//!   is in this form.
+//!   singular position by Φ_q's singular values and drops the dependent
+//!   ones); any mechanism, cost growing as its size cubed. Also where the
+//!   sparse form holds a combination and a sample asks which joints'
+//!   reactions are indeterminate.
 
 use super::mechanism::MechanismProblem;
 use super::range_space::RangeSpace;
@@ -29,8 +30,8 @@ pub(super) struct Motion {
     /// |Φ| of the joints.
     pub residual: f64,
     /// Joint rows in a held or dropped combination, when asked for (empty:
-    /// none; always so in the sparse form, which declines near a singular
-    /// position).
+    /// none; always so in the sparse form, which leaves a sample that holds
+    /// a combination to the dense form).
     pub loose: Vec<bool>,
 }
 
@@ -76,7 +77,7 @@ impl Equations<'_> {
     /// The motion at a state; None where the equations are singular or the
     /// state is not finite.
     pub fn motion(&self, t: f64, q: &[f64], qd: &[f64], loose: bool) -> Option<Motion> {
-        let sparse = self.sparse.as_ref().and_then(|rs| self.sparse_motion(&mut rs.borrow_mut(), t, q, qd));
+        let sparse = self.sparse.as_ref().and_then(|rs| self.sparse_motion(&mut rs.borrow_mut(), t, q, qd, loose));
         let motion = match sparse {
             Some(motion) => motion,
             None => self.dense_motion(t, q, qd, loose)?,
@@ -84,13 +85,19 @@ impl Equations<'_> {
         motion.qdd.iter().chain(&motion.lambda).all(|v| v.is_finite()).then_some(motion)
     }
 
-    /// The sparse form's motion, or None where it does not hold (a
-    /// singular position near: the dense form decides there).
-    fn sparse_motion(&self, rs: &mut RangeSpace, t: f64, q: &[f64], qd: &[f64]) -> Option<Motion> {
+    /// The sparse form's motion, or None where the dense form decides: S
+    /// not finite, or a combination held where `loose` rows are asked for.
+    fn sparse_motion(&self, rs: &mut RangeSpace, t: f64, q: &[f64], qd: &[f64], loose: bool) -> Option<Motion> {
         let zeros = self.zeros();
         let (phi, gamma, jac) = evaluate_blocks(&self.p.mechanism, &State { q, qd: Some(qd), inputs: &zeros });
-        if !rs.regular(&jac) {
-            return None;
+        let held = rs.factor(&jac)?;
+        if held > 0 {
+            if loose {
+                return None;
+            }
+            if rs.holds_fully() {
+                self.held_at.borrow_mut().push(t);
+            }
         }
         let forces = self.forces(t, q, qd, [phi[self.r], jac.rows[self.r].dot(qd)]);
         let (qdd, lambda) = rs.accelerations(&jac, &forces, &gamma[..self.r]);
@@ -191,16 +198,18 @@ impl Equations<'_> {
             let (phi, _, jac) = evaluate_blocks(&self.p.mechanism, &State { q: &y[..n], qd: None, inputs: &zeros });
             let phi = &phi[..r];
             removed = phi.iter().fold(removed, |a, v| a.max(v.abs()));
-            if !rs.regular(&jac) {
+            let Some(held) = rs.factor(&jac) else {
                 return removed.max(self.project_dense(y));
-            }
-            if phi.iter().all(|v| v.abs() <= self.tol) {
+            };
+            // A held combination is not corrected in position (nor counted).
+            let left = if held > 0 { rs.unheld_residual(phi) } else { phi.iter().fold(0.0f64, |a, v| a.max(v.abs())) };
+            if left <= self.tol {
                 let v: Vec<f64> = jac.rows[..r].iter().map(|row| row.dot(&y[n..2 * n])).collect();
-                let dv = rs.correction(&jac, &v);
+                let dv = rs.correction(&jac, &v, false);
                 y[n..2 * n].iter_mut().zip(&dv).for_each(|(a, d)| *a += d);
                 break;
             }
-            let dq = rs.correction(&jac, phi);
+            let dq = rs.correction(&jac, phi, true);
             y[..n].iter_mut().zip(&dq).for_each(|(a, d)| *a += d);
         }
         removed

@@ -82,6 +82,9 @@ pub struct MechanismSolution {
     /// The equations were solved in the sparse (range-space) form away
     /// from singular positions; else by the dense form throughout.
     pub sparse: bool,
+    /// The sparse form held the folds at singular positions (false: it
+    /// declined near them, and the dense form held them).
+    pub sparse_hold: bool,
     /// Evaluations of the equations of motion in the dense form.
     pub dense_evaluations: usize,
     /// The energy T + V was held to its initial value throughout: the loads
@@ -100,8 +103,19 @@ pub fn solve(p: &MechanismProblem) -> Result<MechanismSolution, DynamicsError> {
 }
 
 /// [`solve`], in the sparse form where it applies only if `sparse` (the
-/// dense form throughout otherwise: a cross-check of the two).
+/// dense form throughout otherwise: a cross-check of the two). The sparse
+/// form holds the folds at singular positions itself; where its steps fail
+/// there (the step size underflows) the run is made again with the dense
+/// form near them, as before the hold.
 pub fn solve_in(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution, DynamicsError> {
+    match attempt(p, sparse, true) {
+        Err(DynamicsError::Integration { .. }) if sparse && !p.deadline.expired() => attempt(p, sparse, false),
+        other => other,
+    }
+}
+
+/// One run, the sparse form holding folds if `hold`.
+fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSolution, DynamicsError> {
     let m = &p.mechanism;
     let initial = |reason: String| DynamicsError::Initial { reason };
     let inputs: Vec<[f64; 3]> = p.initial.iter().map(|[a, w]| [*a, *w, 0.0]).collect();
@@ -126,7 +140,8 @@ pub fn solve_in(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution,
     let (phi, _, jac) = evaluate_blocks(m, &State { q: &start.q, qd: None, inputs: &vec![[0.0; 3]; m.drivers.len()] });
     let r = phi.len() - m.drivers.len();
     let energy = energy(p, &mass, &start.q, &start.qd);
-    let sparse = (sparse && mobility.redundant_constraints == 0).then(|| RangeSpace::new(&jac, r, &mass)).flatten();
+    let sparse =
+        (sparse && mobility.redundant_constraints == 0).then(|| RangeSpace::new(&jac, r, &mass, hold)).flatten();
     let dae = Equations {
         p,
         n,
@@ -173,7 +188,7 @@ pub fn solve_in(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution,
         stopped: run.stopped,
     };
     let near_singular = clusters(&dae.held_at.borrow(), run.t_end);
-    let sparse = dae.sparse.is_some();
+    let (sparse, sparse_hold) = (dae.sparse.is_some(), dae.sparse.is_some() && hold);
     let (dense_evaluations, energy_held_steps) = (dae.dense.get(), dae.energy_held.get());
     let energy_conserved = dae.energy.is_some() && near_singular.is_empty();
     Ok(MechanismSolution {
@@ -183,6 +198,7 @@ pub fn solve_in(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution,
         drift: run.drift,
         near_singular,
         sparse,
+        sparse_hold,
         dense_evaluations,
         energy_conserved,
         energy_held_steps,

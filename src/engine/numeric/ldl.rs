@@ -31,8 +31,9 @@ pub struct Pattern {
 
 impl Pattern {
     /// From the graph of S's off-diagonal entries (`neighbours[i]`: the rows
-    /// j ≠ i with S_ij ≠ 0, original numbering).
-    pub fn new(neighbours: &[Vec<usize>]) -> Self {
+    /// j ≠ i with S_ij ≠ 0, original numbering); the rows `last` are
+    /// eliminated after all the others (by minimum degree among themselves).
+    pub fn new(neighbours: &[Vec<usize>], last: &[usize]) -> Self {
         let n = neighbours.len();
         let mut adj: Vec<BTreeSet<usize>> =
             neighbours.iter().enumerate().map(|(i, ns)| ns.iter().copied().filter(|&j| j != i).collect()).collect();
@@ -41,19 +42,32 @@ impl Pattern {
                 adj[j].insert(i);
             }
         }
-        let mut queue: BTreeSet<(usize, usize)> = (0..n).map(|i| (adj[i].len(), i)).collect();
+        let mut late = vec![false; n];
+        last.iter().for_each(|&i| late[i] = true);
+        let mut queue: BTreeSet<(usize, usize)> = (0..n).filter(|&i| !late[i]).map(|i| (adj[i].len(), i)).collect();
         let (mut order, mut rank) = (Vec::with_capacity(n), vec![usize::MAX; n]);
         // Column k of L: the neighbours of the k-th row still to eliminate.
         let mut below: Vec<Vec<usize>> = Vec::with_capacity(n);
-        while let Some((_, v)) = queue.pop_first() {
+        loop {
+            let Some((_, v)) = queue.pop_first() else {
+                if !late.contains(&true) {
+                    break;
+                }
+                // The late rows' turn.
+                queue.extend((0..n).filter(|&i| late[i]).map(|i| (adj[i].len(), i)));
+                late.fill(false);
+                continue;
+            };
             rank[v] = order.len();
             order.push(v);
             let clique: Vec<usize> = std::mem::take(&mut adj[v]).into_iter().collect();
             for &a in &clique {
-                queue.remove(&(adj[a].len(), a));
+                let queued = queue.remove(&(adj[a].len(), a));
                 adj[a].remove(&v);
                 adj[a].extend(clique.iter().copied().filter(|&b| b != a));
-                queue.insert((adj[a].len(), a));
+                if queued {
+                    queue.insert((adj[a].len(), a));
+                }
             }
             below.push(clique);
         }
@@ -177,9 +191,16 @@ mod tests {
 
     /// A ladder of 2×2 blocks coupled to their neighbours plus one long-range
     /// entry (fill), against nalgebra's dense Cholesky: S·x = b to 1e-12, and
-    /// the pivots' product equals det S (LDLᵀ with L unit: det = Π D).
+    /// the pivots' product equals det S (LDLᵀ with L unit: det = Π D); in
+    /// the minimum-degree order and with two rows put last.
     #[test]
     fn factors_and_solves_like_the_dense_cholesky() {
+        for last in [&[][..], &[3, 5]] {
+            factors_and_solves_in_order(last);
+        }
+    }
+
+    fn factors_and_solves_in_order(last: &[usize]) {
         let n = 12;
         let mut s = DMatrix::<f64>::zeros(n, n);
         for i in 0..n {
@@ -196,7 +217,10 @@ mod tests {
         }
         link(&mut s, 0, n - 1, 0.7);
         link(&mut s, 3, 8, -0.4);
-        let pattern = Pattern::new(&neighbours);
+        let pattern = Pattern::new(&neighbours, last);
+        let mut tail = pattern.order[n - last.len()..].to_vec();
+        tail.sort_unstable();
+        assert_eq!(tail, last, "the rows put last");
         let mut lower = vec![0.0; pattern.entries()];
         for i in 0..n {
             for j in 0..i {
