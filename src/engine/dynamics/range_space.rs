@@ -42,7 +42,6 @@
 
 use crate::engine::constraints::{Blocks, RowBlocks};
 use crate::engine::numeric::ldl::{Ldl, Pattern};
-use std::collections::HashMap;
 
 /// Pivot sines between which a combination's right-hand side is blended
 /// from held (0 below `HOLD.0`) to kept whole (above `HOLD.1`): a hold that
@@ -128,11 +127,11 @@ pub(crate) struct RangeSpace {
     neighbours: Vec<Vec<usize>>,
     /// In the minimum-degree order.
     base: Factored,
-    /// With rows to hold eliminated last, by those rows: each passage of a
-    /// singular position holds the same ones.
-    late: HashMap<Vec<usize>, Factored>,
-    /// The key in `late` of the factors in use (None: `base`).
-    current: Option<Vec<usize>>,
+    /// With rows to hold eliminated last, by those rows (sorted): each
+    /// passage of a singular position holds the same ones.
+    late: Vec<(Vec<usize>, Factored)>,
+    /// The index in `late` of the factors in use (None: `base`).
+    current: Option<usize>,
     /// Per pivot of the factors in use (elimination order): the share of
     /// its equation's right-hand side kept (0: held, 1: as it is).
     kept: Vec<f64>,
@@ -166,7 +165,7 @@ impl RangeSpace {
             w: mass.iter().map(|m| 1.0 / m).collect(),
             base: Factored::new(&neighbours, &[]),
             neighbours,
-            late: HashMap::new(),
+            late: Vec::new(),
             current: None,
             kept: vec![1.0; r],
             hold,
@@ -191,7 +190,7 @@ impl RangeSpace {
     }
 
     fn active(&self) -> &Factored {
-        self.current.as_ref().and_then(|k| self.late.get(k)).unwrap_or(&self.base)
+        self.current.map_or(&self.base, |at| &self.late[at].1)
     }
 
     /// Factors S at the configuration of `jac`: how many combinations are
@@ -215,15 +214,17 @@ impl RangeSpace {
         let mut weak: Vec<usize> = self.base.sine_below(LATE).zip(order).filter(|(b, _)| *b).map(|(_, &i)| i).collect();
         if !weak.is_empty() {
             weak.sort_unstable();
-            let neighbours = &self.neighbours;
-            if self.late.len() >= CACHED && !self.late.contains_key(&weak) {
-                self.late.clear();
-            }
-            let late = self.late.entry(weak.clone()).or_insert_with(|| Factored::new(neighbours, &weak));
-            if !late.factor(|i, j| Self::product(w, &rows[i], &rows[j])) {
+            let at = self.late.iter().position(|(rows, _)| *rows == weak).unwrap_or_else(|| {
+                if self.late.len() >= CACHED {
+                    self.late.clear();
+                }
+                self.late.push((weak.clone(), Factored::new(&self.neighbours, &weak)));
+                self.late.len() - 1
+            });
+            if !self.late[at].1.factor(|i, j| Self::product(w, &rows[i], &rows[j])) {
                 return None;
             }
-            self.current = Some(weak);
+            self.current = Some(at);
         }
         let active = self.active();
         if active.sine_below(DROP).any(|b| b) {
