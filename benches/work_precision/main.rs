@@ -205,24 +205,20 @@ fn plot(points: &[Point], title: &str, path: &str) -> Result<(), Box<dyn std::er
     Ok(())
 }
 
+/// A section of the document, made on its own.
+type Section = fn() -> String;
+
 fn main() {
-    // `cargo bench --bench work_precision -- grading`: that section alone, printed, docs/ left as they are.
-    if std::env::args().any(|a| a == "grading") {
-        print!("{}", grading::section());
-        return;
-    }
-    // `… -- large`: the large mechanisms' section alone, the same way.
-    if std::env::args().any(|a| a == "large") {
-        print!("{}", large::section());
-        return;
-    }
-    // `… -- flywheel` and `… -- http`: those sections alone (the flywheel's plot in the temporary folder).
-    if std::env::args().any(|a| a == "flywheel") {
-        print!("{}", flywheel::section(&std::env::temp_dir().to_string_lossy()));
-        return;
-    }
-    if std::env::args().any(|a| a == "http") {
-        print!("{}", http::section());
+    // `cargo bench --bench work_precision -- grading` (or large, flywheel, http): that section alone,
+    // printed, docs/ left as they are (the flywheel's plot in the temporary folder).
+    let alone: [(&str, Section); 4] = [
+        ("grading", grading::section),
+        ("large", large::section),
+        ("flywheel", || flywheel::section(&std::env::temp_dir().to_string_lossy())),
+        ("http", http::section),
+    ];
+    if let Some((_, section)) = alone.iter().find(|(name, _)| std::env::args().any(|a| a == *name)) {
+        print!("{}", section());
         return;
     }
     let (doc, points) = dynamics_section();
