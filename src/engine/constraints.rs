@@ -10,12 +10,15 @@
 use super::model::{BodyId, JointKind, Mechanism, dot, perp};
 use nalgebra::{DMatrix, DVector};
 
-/// Φ, Φ_q and γ at one state.
+/// Φ, Φ_q and γ at one state; [`evaluate_into`] refills one in place.
+#[derive(Clone, Debug, Default)]
 pub struct System {
     pub phi: DVector<f64>,
     pub jacobian: DMatrix<f64>,
     /// Φ_q q̈ = γ (only when velocities were given).
     pub gamma: DVector<f64>,
+    /// (sin θ, cos θ) of every body, ground first: the evaluation's scratch.
+    trig: Vec<(f64, f64)>,
 }
 
 /// Coordinates, velocities and the drivers' values at one instant.
@@ -85,6 +88,11 @@ impl Jacobian for DMatrix<f64> {
     }
 }
 
+/// Φ_q not written: [`evaluate_gamma`] at a q whose Φ_q is known.
+impl Jacobian for () {
+    fn add(&mut self, _: usize, _: usize, _: [f64; 3]) {}
+}
+
 impl Jacobian for Blocks {
     fn add(&mut self, row: usize, col: usize, d: [f64; 3]) {
         let r = &mut self.rows[row];
@@ -98,17 +106,17 @@ impl Jacobian for Blocks {
     }
 }
 
-struct Builder<'a, J> {
+struct Builder<'a, 'w, J> {
     m: &'a Mechanism,
     s: &'a State<'a>,
     /// (sin θ, cos θ) of every body, ground first: one evaluation each.
-    trig: Vec<(f64, f64)>,
-    phi: Vec<f64>,
-    gamma: Vec<f64>,
-    jacobian: J,
+    trig: &'w [(f64, f64)],
+    phi: &'w mut [f64],
+    gamma: &'w mut [f64],
+    jacobian: &'w mut J,
 }
 
-impl<J: Jacobian> Builder<'_, J> {
+impl<J: Jacobian> Builder<'_, '_, J> {
     /// A(θ_b)·s.
     fn rot(&self, b: BodyId, s: [f64; 2]) -> [f64; 2] {
         let (sn, cs) = self.trig[b];
@@ -189,21 +197,62 @@ impl<J: Jacobian> Builder<'_, J> {
 
 /// Φ, Φ_q and γ at a state.
 pub fn evaluate(m: &Mechanism, s: &State) -> System {
+    let mut sys = System::default();
+    evaluate_into(m, s, &mut sys);
+    sys
+}
+
+/// [`evaluate`] into `sys`, reusing its storage (nothing is allocated once
+/// it has held this mechanism's system).
+pub fn evaluate_into(m: &Mechanism, s: &State, sys: &mut System) {
     let (rows, n) = (n_rows(m), m.n_coordinates());
-    let b = build(m, s, DMatrix::zeros(rows, n));
-    System { phi: DVector::from_vec(b.phi), jacobian: b.jacobian, gamma: DVector::from_vec(b.gamma) }
+    if sys.jacobian.shape() == (rows, n) && sys.phi.len() == rows && sys.gamma.len() == rows {
+        sys.jacobian.fill(0.0);
+        sys.phi.fill(0.0);
+        sys.gamma.fill(0.0);
+    } else {
+        (sys.jacobian, sys.phi, sys.gamma) = (DMatrix::zeros(rows, n), DVector::zeros(rows), DVector::zeros(rows));
+    }
+    let System { phi, jacobian, gamma, trig } = sys;
+    build(m, s, trig, phi.as_mut_slice(), gamma.as_mut_slice(), jacobian);
+}
+
+/// Φ and γ into `sys` at a state whose q is the one `sys` was evaluated
+/// at (its Φ_q, unchanged, is not refilled): γ once the velocities are known.
+pub fn evaluate_gamma(m: &Mechanism, s: &State, sys: &mut System) {
+    let rows = n_rows(m);
+    for v in [&mut sys.phi, &mut sys.gamma] {
+        if v.len() == rows {
+            v.fill(0.0);
+        } else {
+            *v = DVector::zeros(rows);
+        }
+    }
+    let System { phi, gamma, trig, .. } = sys;
+    build(m, s, trig, phi.as_mut_slice(), gamma.as_mut_slice(), &mut ());
 }
 
 /// Φ, γ and Φ_q by blocks at a state (as [`evaluate`], without the dense matrix).
 pub fn evaluate_blocks(m: &Mechanism, s: &State) -> (Vec<f64>, Vec<f64>, Blocks) {
-    let b = build(m, s, Blocks { rows: vec![RowBlocks::default(); n_rows(m)] });
-    (b.phi, b.gamma, b.jacobian)
+    let rows = n_rows(m);
+    let (mut phi, mut gamma, mut blocks) =
+        (vec![0.0; rows], vec![0.0; rows], Blocks { rows: vec![RowBlocks::default(); rows] });
+    build(m, s, &mut Vec::new(), &mut phi, &mut gamma, &mut blocks);
+    (phi, gamma, blocks)
 }
 
-fn build<'a, J: Jacobian>(m: &'a Mechanism, s: &'a State<'a>, jacobian: J) -> Builder<'a, J> {
-    let rows = n_rows(m);
-    let trig = (0..m.bodies.len()).map(|b| m.column(b).map_or((0.0, 1.0), |c| s.q[c + 2].sin_cos())).collect();
-    let mut b = Builder { m, s, trig, phi: vec![0.0; rows], gamma: vec![0.0; rows], jacobian };
+/// Fills Φ, γ and Φ_q (all zero on entry) at a state.
+fn build<J: Jacobian>(
+    m: &Mechanism,
+    s: &State,
+    trig: &mut Vec<(f64, f64)>,
+    phi: &mut [f64],
+    gamma: &mut [f64],
+    jacobian: &mut J,
+) {
+    trig.clear();
+    trig.extend((0..m.bodies.len()).map(|b| m.column(b).map_or((0.0, 1.0), |c| s.q[c + 2].sin_cos())));
+    let mut b = Builder { m, s, trig, phi, gamma, jacobian };
     let mut row = 0;
     for joint in &m.joints {
         let [i, j] = joint.bodies;
@@ -232,7 +281,6 @@ fn build<'a, J: Jacobian>(m: &'a Mechanism, s: &'a State<'a>, jacobian: J) -> Bu
         b.gamma[row] += input[2];
         row += 1;
     }
-    b
 }
 
 /// The right-hand side ν of the velocity equation Φ_q q̇ = ν: the input speeds.

@@ -12,7 +12,7 @@
 //! see the true functions, not an interpolation of a coarse grid.
 
 use super::function::{Curve, Function};
-use super::kinematics::{Solved, assemble, motion, sweep};
+use super::kinematics::{Workspace, sweep};
 use super::kinetostatics::{Load, applied_forces};
 use super::model::Mechanism;
 use super::{Deadline, EngineError};
@@ -154,9 +154,11 @@ impl Machine {
         // turn): the same configuration, and Newton starts next to it instead
         // of a whole turn away, where it may settle on the other branch.
         let unit = [[at + d, 1.0, 0.0]];
-        let (_, _, sys) = assemble(&self.mechanism, &mut q, &unit, 0).ok()?;
-        let Solved { qd: g, qdd: h, .. } = motion(&self.mechanism, &q, &unit, sys)?;
         let m = &self.mechanism;
+        let mut ws = Workspace::default();
+        ws.assemble(m, &mut q, &unit, 0).ok()?;
+        ws.motion(m, &q, &unit).then_some(())?;
+        let (g, h) = (&ws.qd, &ws.qdd);
         let mass = |k: usize| {
             let b = &m.bodies[k / 3 + 1];
             if k % 3 == 2 { b.inertia } else { b.mass }

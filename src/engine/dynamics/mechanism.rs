@@ -27,7 +27,6 @@ use crate::engine::kinematics::sweep;
 use crate::engine::kinetostatics::{Load, Reaction, potential, reactions};
 use crate::engine::mobility::{Mobility, mobility};
 use crate::engine::model::Mechanism;
-use nalgebra::DVector;
 use std::cell::RefCell;
 
 /// A validated mechanism problem in SI units.
@@ -284,7 +283,7 @@ fn sample(dae: &Equations, mobility: &Mobility, t: f64, y: &[f64]) -> Result<Mec
                         .any(|row| motion.loose.get(row) == Some(&true))
             })
             .collect();
-        reactions(m, q, &jac, &DVector::from_vec(motion.lambda), &indeterminate)
+        reactions(m, q, &jac, &motion.lambda, &offsets, &indeterminate)
     } else {
         Vec::new()
     };

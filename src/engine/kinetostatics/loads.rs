@@ -23,8 +23,24 @@ pub enum Load {
 /// Generalized applied forces Q at a configuration (velocities `qd` for
 /// dampers), with the loads' functions at φ and `[ω, t]`.
 pub fn applied_forces(m: &Mechanism, loads: &[Load], q: &[f64], qd: &[f64], phi: f64, state: [f64; 2]) -> DVector<f64> {
-    let mut qv = DVector::zeros(m.n_coordinates());
-    let mut apply = |b: BodyId, at: [f64; 2], f: [f64; 2], couple: f64| add_force(m, q, &mut qv, b, at, f, couple);
+    let mut qv = Vec::new();
+    applied_forces_into(m, loads, q, qd, phi, state, &mut qv);
+    DVector::from_vec(qv)
+}
+
+/// [`applied_forces`] into `qv`, reusing its storage.
+pub fn applied_forces_into(
+    m: &Mechanism,
+    loads: &[Load],
+    q: &[f64],
+    qd: &[f64],
+    phi: f64,
+    state: [f64; 2],
+    qv: &mut Vec<f64>,
+) {
+    qv.clear();
+    qv.resize(m.n_coordinates(), 0.0);
+    let mut apply = |b: BodyId, at: [f64; 2], f: [f64; 2], couple: f64| add_force(m, q, qv, b, at, f, couple);
     for (b, body) in m.bodies.iter().enumerate() {
         apply(b, body.cg, [body.mass * m.gravity[0], body.mass * m.gravity[1]], 0.0);
     }
@@ -51,7 +67,6 @@ pub fn applied_forces(m: &Mechanism, loads: &[Load], q: &[f64], qd: &[f64], phi:
             }
         }
     }
-    qv
 }
 
 /// Unit vector from point a to point b, their distance and its rate.
@@ -73,7 +88,7 @@ pub fn point_motion(m: &Mechanism, q: &[f64], qd: &[f64], (b, p): (BodyId, [f64;
 }
 
 /// Adds to Q a force f at point `at` (reference coordinates) of body b, plus a couple.
-pub fn add_force(m: &Mechanism, q: &[f64], qv: &mut DVector<f64>, b: BodyId, at: [f64; 2], f: [f64; 2], couple: f64) {
+pub fn add_force(m: &Mechanism, q: &[f64], qv: &mut [f64], b: BodyId, at: [f64; 2], f: [f64; 2], couple: f64) {
     if let Some(c) = m.column(b) {
         let arm = rotate(q[c + 2], m.local(b, at));
         qv[c] += f[0];

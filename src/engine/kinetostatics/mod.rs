@@ -16,11 +16,11 @@ mod friction;
 mod loads;
 mod summary;
 
-pub use loads::{Load, applied_forces, point_motion, potential};
+pub use loads::{Load, applied_forces, applied_forces_into, point_motion, potential};
 pub use summary::Summary;
 
 use super::constraints::joint_offsets;
-use super::kinematics::{Configuration, solve_linear, solve_transposed, sweep_each};
+use super::kinematics::{Configuration, solve_linear, sweep_each};
 use super::mobility::{Mobility, mobility as mobility_at};
 use super::model::{BodyId, JointKind, Mechanism, Pitch, cross, perp, rotate};
 use super::{Deadline, EngineError};
@@ -112,6 +112,8 @@ pub fn solve(
     let mut mobility: Option<Mobility> = None;
     let (mut max_iterations, mut max_constraint_residual) = (0, 0.0f64);
     let inputs = m.drivers.len();
+    let mut actions =
+        Actions { m, loads, outputs, scratch: Scratch { offsets: joint_offsets(m), ..Scratch::default() } };
     // Each position solved as soon as it is assembled, once the mobility at
     // the first regular one has been found to match the inputs (where it
     // does not, the sweep goes on unsolved: a position out of reach is the
@@ -122,13 +124,10 @@ pub fn solve(
         if mobility.is_none() && !c.singular {
             mobility = Some(mobility_at(m, &c.q));
         }
-        deadline.check(|| format!("the actions were solved at {k} of {} positions", positions.len()))?;
         match mobility.as_ref().filter(|_| !c.singular) {
-            Some(mobility) if mobility.dof == inputs => {
-                steps.push(step(m, loads, &c, &positions[k], outputs, mobility, k)?)
-            }
+            Some(mobility) if mobility.dof == inputs => steps.push(actions.step(c, &positions[k], mobility, k)?),
             Some(_) => {}
-            None => steps.push(singular_step(&c, &positions[k])),
+            None => steps.push(singular_step(c, &positions[k])),
         }
         Ok(())
     })?;
@@ -162,69 +161,77 @@ fn singular_step(c: &Configuration, inputs: &[[f64; 3]]) -> Step {
     }
 }
 
-/// The actions at a regular position.
-fn step(
-    m: &Mechanism,
-    loads: &[Load],
-    c: &Configuration,
-    inputs: &[[f64; 3]],
+/// The vectors of one position's actions, kept for the next: Q, M q̈ − Q,
+/// λ, and the first row of every joint.
+#[derive(Default)]
+struct Scratch {
+    qv: Vec<f64>,
+    inertial: Vec<f64>,
+    lambda: Vec<f64>,
+    offsets: Vec<usize>,
+}
+
+/// The actions at the regular positions of one sweep.
+struct Actions<'a> {
+    m: &'a Mechanism,
+    loads: &'a [Load],
     outputs: Outputs,
-    mobility: &Mobility,
-    k: usize,
-) -> Result<Step, EngineError> {
-    let phi = inputs[0][0];
-    let (qv, friction_iterations) =
-        with_friction(m, c, applied_forces(m, loads, &c.q, &c.qd, phi, [inputs[0][1], 0.0]), k, phi)?;
-    let inertial = mass_times(m, &c.qdd) - &qv;
-    let single = m.drivers.len() == 1;
-    let g = c.g.as_ref();
-    let driving_virtual_power = virtual_power(m, c, &inertial);
-    let (reduced_inertia, reduced_torque) = match (g, outputs.reduced) {
-        (Some(g), true) => {
-            let mg = mass_times(m, g);
-            (
-                Some(g.iter().zip(mg.iter()).map(|(a, b)| a * b).sum()),
-                Some(g.iter().zip(qv.iter()).map(|(a, b)| a * b).sum()),
-            )
-        }
-        _ => (None, None),
-    };
-    let energy_shares = match (g, reduced_inertia) {
-        (Some(g), Some(total)) if total > 0.0 => Some(
-            (0..g.len() / 3)
-                .map(|b| {
+    scratch: Scratch,
+}
+
+impl Actions<'_> {
+    /// The actions at a regular position (step k).
+    fn step(
+        &mut self,
+        c: &Configuration,
+        inputs: &[[f64; 3]],
+        mobility: &Mobility,
+        k: usize,
+    ) -> Result<Step, EngineError> {
+        let (m, outputs, s) = (self.m, self.outputs, &mut self.scratch);
+        let phi = inputs[0][0];
+        applied_forces_into(m, self.loads, &c.q, &c.qd, phi, [inputs[0][1], 0.0], &mut s.qv);
+        let friction_iterations = with_friction(m, c, s, k, phi)?;
+        s.inertial.clear();
+        s.inertial.extend(c.qdd.iter().zip(&s.qv).enumerate().map(|(i, (a, q))| a * m.mass_of(i) - q));
+        let driving_virtual_power = virtual_power(m, c, &s.inertial);
+        let g = c.g.as_deref().filter(|_| outputs.reduced);
+        let reduced_inertia = g.map(|g| g.iter().enumerate().map(|(i, v)| m.mass_of(i) * v * v).sum::<f64>());
+        let reduced_torque = g.map(|g| g.iter().zip(&s.qv).map(|(a, b)| a * b).sum());
+        let energy_shares = g.zip(reduced_inertia).filter(|&(_, total)| total > 0.0).map(|(g, total)| {
+            g.chunks_exact(3)
+                .enumerate()
+                .map(|(b, g)| {
                     let body = &m.bodies[b + 1];
-                    let k = 3 * b;
-                    (body.mass * (g[k] * g[k] + g[k + 1] * g[k + 1]) + body.inertia * g[k + 2] * g[k + 2]) / total
+                    (body.mass * (g[0] * g[0] + g[1] * g[1]) + body.inertia * g[2] * g[2]) / total
                 })
-                .collect(),
-        ),
-        _ => None,
-    };
-    let (driving, reactions) = if outputs.reactions || !single {
-        multipliers(m, c, &inertial, outputs.reactions.then_some(&mobility.indeterminate_joints), k, phi)?
-    } else {
-        (vec![driving_virtual_power.first().copied().unwrap_or(f64::NAN)], Vec::new())
-    };
-    Ok(Step {
-        input: inputs.iter().map(|i| i[0]).collect(),
-        driving,
-        driving_virtual_power,
-        reactions,
-        reduced_inertia,
-        reduced_torque,
-        energy_shares,
-        condition: c.condition,
-        kinematics: outputs.kinematics.then(|| Motion { q: c.q.clone(), qd: c.qd.clone(), qdd: c.qdd.clone() }),
-        friction_iterations,
-        singular: false,
-    })
+                .collect()
+        });
+        let (driving, reactions) = if outputs.reactions || m.drivers.len() != 1 {
+            multipliers(m, c, s, outputs.reactions.then_some(&mobility.indeterminate_joints), k, phi)?
+        } else {
+            (vec![driving_virtual_power.first().copied().unwrap_or(f64::NAN)], Vec::new())
+        };
+        Ok(Step {
+            input: inputs.iter().map(|i| i[0]).collect(),
+            driving,
+            driving_virtual_power,
+            reactions,
+            reduced_inertia,
+            reduced_torque,
+            energy_shares,
+            condition: c.condition,
+            kinematics: outputs.kinematics.then(|| Motion { q: c.q.clone(), qd: c.qd.clone(), qdd: c.qdd.clone() }),
+            friction_iterations,
+            singular: false,
+        })
+    }
 }
 
 /// T_i = g_iᵀ(M q̈ − Q) for every input i, g_i = ∂q/∂φ_i solving Φ_q g_i = e_i
 /// (the velocity coefficients of one input are kept from the kinematics).
-fn virtual_power(m: &Mechanism, c: &Configuration, inertial: &DVector<f64>) -> Vec<f64> {
-    let power = |g: &[f64]| g.iter().zip(inertial.iter()).map(|(a, b)| a * b).sum::<f64>();
+fn virtual_power(m: &Mechanism, c: &Configuration, inertial: &[f64]) -> Vec<f64> {
+    let power = |g: &[f64]| g.iter().zip(inertial).map(|(a, b)| a * b).sum::<f64>();
     if let Some(g) = &c.g {
         return vec![power(g)];
     }
@@ -232,70 +239,83 @@ fn virtual_power(m: &Mechanism, c: &Configuration, inertial: &DVector<f64>) -> V
     let first_driver = rows - m.drivers.len();
     (first_driver..rows)
         .map(|r| {
+            let mut g = vec![0.0; rows];
+            g[r] = 1.0;
+            if c.lu.solve(&mut g) {
+                return power(&g);
+            }
             let e = DVector::from_fn(rows, |k, _| if k == r { 1.0 } else { 0.0 });
-            let g = c.lu.as_ref().and_then(|lu| lu.solve(&e)).or_else(|| solve_linear(&c.jacobian, &e));
-            g.map_or(f64::NAN, |g| power(g.as_slice()))
+            solve_linear(&c.jacobian, &e).map_or(f64::NAN, |g| power(g.as_slice()))
         })
         .collect()
 }
 
-/// Q plus the joints' friction forces, iterated to a fixed point with the reactions.
+/// Adds the joints' friction forces to Q (`s.qv`), iterated to a fixed
+/// point with the reactions: the iterations (0 without friction).
 fn with_friction(
     m: &Mechanism,
     c: &Configuration,
-    q_applied: DVector<f64>,
+    s: &mut Scratch,
     step: usize,
     input: f64,
-) -> Result<(DVector<f64>, usize), EngineError> {
+) -> Result<usize, EngineError> {
     if !friction::present(m) {
-        return Ok((q_applied, 0));
+        return Ok(0);
     }
+    let q_applied = DVector::from_column_slice(&s.qv);
     let mq = mass_times(m, &c.qdd);
     let scale = q_applied.amax().max(mq.amax()).max(f64::MIN_POSITIVE);
     let mut qf = DVector::zeros(q_applied.len());
     for iteration in 1..=friction::MAX_ITERATIONS {
-        let (_, reactions) = multipliers(m, c, &(&mq - &q_applied - &qf), Some(&Vec::new()), step, input)?;
+        s.inertial.clear();
+        s.inertial.extend((&mq - &q_applied - &qf).iter());
+        let (_, reactions) = multipliers(m, c, s, Some(&Vec::new()), step, input)?;
         let next = friction::forces(m, c, &reactions);
         let change = (&next - &qf).amax();
         qf = next;
         if change <= 1e-13 * scale {
-            return Ok((q_applied + qf, iteration));
+            s.qv.iter_mut().zip(qf.iter()).for_each(|(q, f)| *q += f);
+            return Ok(iteration);
         }
     }
     Err(EngineError::FrictionDiverged { step, input })
 }
 
-/// λ from Φ_qᵀλ = −(M q̈ − Q): driving actions and, if asked, every reaction.
+/// λ from Φ_qᵀλ = −(M q̈ − Q) (`s.inertial`): driving actions and, if asked, every reaction.
 fn multipliers(
     m: &Mechanism,
     c: &Configuration,
-    inertial: &DVector<f64>,
+    s: &mut Scratch,
     reactions_with: Option<&Vec<usize>>,
     step: usize,
     input: f64,
 ) -> Result<(Vec<f64>, Vec<Reaction>), EngineError> {
-    let jac = &c.jacobian;
-    let lambda =
-        c.lu.as_ref()
-            .and_then(|lu| solve_transposed(lu, &(-inertial)))
-            .or_else(|| solve_linear(&jac.transpose(), &(-inertial)))
-            .ok_or(EngineError::Singular { step, input })?;
+    let lambda = &mut s.lambda;
+    lambda.clear();
+    lambda.extend(s.inertial.iter().map(|v| -v));
+    if !c.lu.solve_transposed(lambda) {
+        let b = DVector::from_iterator(s.inertial.len(), s.inertial.iter().map(|v| -v));
+        let solved = solve_linear(&c.jacobian.transpose(), &b).ok_or(EngineError::Singular { step, input })?;
+        lambda.clear();
+        lambda.extend(solved.iter());
+    }
     let first_driver = lambda.len() - m.drivers.len();
-    let driving = (first_driver..lambda.len()).map(|r| -lambda[r]).collect();
+    let driving = lambda[first_driver..].iter().map(|l| -l).collect();
     let Some(indeterminate) = reactions_with else { return Ok((driving, Vec::new())) };
-    Ok((driving, reactions(m, &c.q, jac, &lambda, indeterminate)))
+    Ok((driving, reactions(m, &c.q, &c.jacobian, lambda, &s.offsets, indeterminate)))
 }
 
 /// Every joint's reaction from the multipliers λ of Φ_qᵀλ = Q − M q̈ (the
-/// joints' rows first in Φ_q), flagged where `indeterminate` lists the joint.
+/// joints' rows first in Φ_q, joint k's from `offsets[k]`), flagged where
+/// `indeterminate` lists the joint.
 pub fn reactions(
     m: &Mechanism,
     q: &[f64],
     jac: &DMatrix<f64>,
-    lambda: &DVector<f64>,
+    lambda: &[f64],
+    offsets: &[usize],
     indeterminate: &[usize],
 ) -> Vec<Reaction> {
-    let offsets = joint_offsets(m);
     m.joints
         .iter()
         .enumerate()

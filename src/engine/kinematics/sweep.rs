@@ -1,0 +1,139 @@
+//! The configurations along a list of input positions, each continued from
+//! the last regular one. One [`Workspace`] and one [`Configuration`] serve
+//! the whole sweep: Φ_q, its LU and the vectors are refilled in place, and
+//! each position is handed over by reference before the next is solved.
+
+use super::{Configuration, SINGULAR_CONDITION, Workspace, unreachable};
+use crate::engine::model::Mechanism;
+use crate::engine::{Deadline, EngineError};
+use nalgebra::DMatrix;
+
+/// The configurations along the given input positions, starting from the
+/// reference configuration and continuing from each position to the next.
+///
+/// Each position's condition number is κ₂ exactly (an SVD) when `exact`
+/// or where the estimate from Φ_q's LU exceeds [`super::ESTIMATE_LIMIT`];
+/// else the estimate ([`super::estimated_condition`]).
+pub fn sweep(
+    m: &Mechanism,
+    positions: &[Vec<[f64; 3]>],
+    deadline: &Deadline,
+    exact: bool,
+) -> Result<Vec<Configuration>, EngineError> {
+    let mut out: Vec<Configuration> = Vec::with_capacity(positions.len());
+    sweep_each(m, positions, deadline, exact, |_, c| {
+        out.push(c.clone());
+        Ok(())
+    })?;
+    Ok(out)
+}
+
+/// [`sweep`], handing each position's configuration to `each` as soon as
+/// it is known (with its index) instead of keeping them all: what is done
+/// with a position stays in the cache, and the sweep allocates nothing
+/// after its first position. An error of `each` stops the sweep.
+pub fn sweep_each(
+    m: &Mechanism,
+    positions: &[Vec<[f64; 3]>],
+    deadline: &Deadline,
+    exact: bool,
+    mut each: impl FnMut(usize, &Configuration) -> Result<(), EngineError>,
+) -> Result<(), EngineError> {
+    let mut ws = Workspace::default();
+    let mut base = m.reference_q();
+    if let Some(first) = positions.first() {
+        approach(m, &mut ws, &mut base, first).map_err(|e| unreachable(m, e))?;
+    }
+    // Velocity coefficients g, h at the last regular position (one input)
+    // and that position's input, for the predictor.
+    let (mut g, mut h, mut from) = (Vec::new(), Vec::new(), None::<f64>);
+    let mut failure: Option<EngineError> = None;
+    let mut c = Configuration::default();
+    let single = m.drivers.len() == 1;
+    for (step, inputs) in positions.iter().enumerate() {
+        deadline.check(|| format!("the mechanism was assembled at {step} of {} positions", positions.len()))?;
+        c.q.clone_from(&base);
+        if let Some(from) = from {
+            let d = inputs[0][0] - from;
+            c.q.iter_mut().enumerate().for_each(|(k, v)| *v += g[k] * d + 0.5 * h[k] * d * d);
+        }
+        let (iterations, residual) = match ws.assemble(m, &mut c.q, inputs, step) {
+            Ok(r) => r,
+            // One position that will not assemble between two that do is a
+            // singular point passed; two in a row is a position out of reach.
+            Err(e) if failure.is_none() => {
+                failure = Some(e);
+                c.set_singular(f64::INFINITY, 0, f64::NAN);
+                each(step, &c)?;
+                continue;
+            }
+            Err(_) => {
+                return Err(unreachable(m, failure.unwrap_or(EngineError::Singular { step, input: inputs[0][0] })));
+            }
+        };
+        failure = None;
+        // One input: g = dq/dφ and h = d²q/dφ² give q̇ = gω and q̈ = gα + hω²
+        // (γ is quadratic in q̇), and they are the next step's predictor.
+        let unit = [[inputs[0][0], 1.0, 0.0]];
+        let solved = ws.motion(m, &c.q, if single { &unit } else { inputs });
+        let cond = if solved { ws.condition(exact) } else { f64::INFINITY };
+        if !solved || cond > SINGULAR_CONDITION {
+            c.set_singular(cond, iterations, residual);
+            each(step, &c)?;
+            continue;
+        }
+        if single {
+            let [_, w, alpha] = inputs[0];
+            c.qd.clear();
+            c.qd.extend(ws.qd.iter().map(|g| g * w));
+            c.qdd.clear();
+            c.qdd.extend(ws.qd.iter().zip(&ws.qdd).map(|(g, h)| g * alpha + h * w * w));
+            c.g.get_or_insert_with(Vec::new).clone_from(&ws.qd);
+            g.clone_from(&ws.qd);
+            h.clone_from(&ws.qdd);
+            from = Some(inputs[0][0]);
+        } else {
+            c.qd.clone_from(&ws.qd);
+            c.qdd.clone_from(&ws.qdd);
+            c.g = None;
+        }
+        base.clone_from(&c.q);
+        // Φ_q and its LU change hands: the workspace refills the last ones.
+        std::mem::swap(&mut c.jacobian, &mut ws.sys.jacobian);
+        std::mem::swap(&mut c.lu, &mut ws.lu);
+        (c.condition, c.iterations, c.residual, c.singular) = (cond, iterations, residual, false);
+        each(step, &c)?;
+    }
+    match failure {
+        Some(e) => Err(unreachable(m, e)),
+        None => Ok(()),
+    }
+}
+
+impl Configuration {
+    /// A singular position at the q it holds: nothing but q is valid.
+    fn set_singular(&mut self, condition: f64, iterations: usize, residual: f64) {
+        let n = self.q.len();
+        (self.qd, self.qdd, self.g, self.jacobian) = (vec![0.0; n], vec![0.0; n], None, DMatrix::zeros(0, 0));
+        (self.condition, self.iterations, self.residual, self.singular) = (condition, iterations, residual, true);
+    }
+}
+
+/// Largest change of an input coordinate per continuation step on the way
+/// from the drawn configuration to the first position (rad or m).
+const APPROACH_STEP: f64 = 0.05;
+
+/// Moves q from the drawn configuration (inputs at their `reference`) to the
+/// first requested position in small steps, so the assembly branch drawn is
+/// the branch solved.
+fn approach(m: &Mechanism, ws: &mut Workspace, q: &mut [f64], target: &[[f64; 3]]) -> Result<(), EngineError> {
+    let from: Vec<f64> = m.drivers.iter().map(|d| d.reference).collect();
+    let span = from.iter().zip(target).map(|(a, t)| (t[0] - a).abs()).fold(0.0, f64::max);
+    let n = (span / APPROACH_STEP).ceil().min(10_000.0) as usize;
+    for k in 1..n {
+        let f = k as f64 / n as f64;
+        let inputs: Vec<[f64; 3]> = from.iter().zip(target).map(|(a, t)| [a + f * (t[0] - a), 0.0, 0.0]).collect();
+        ws.assemble(m, q, &inputs, 0)?;
+    }
+    Ok(())
+}
