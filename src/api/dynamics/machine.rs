@@ -3,7 +3,7 @@
 
 use super::Initial;
 use crate::api::mechanism::MechanismDto;
-use crate::api::mechanism::{InputDto, Inputs, LoadDto, ReactionDto, convert_loads};
+use crate::api::mechanism::{InputDto, Inputs, LoadDto, Name, ReactionDto, convert_loads, names};
 use crate::api::quantity::{Errors, FunctionDto};
 use crate::engine::dynamics::mechanism::MechanismSolution;
 use crate::engine::kinetostatics::Load;
@@ -158,7 +158,8 @@ pub struct InputState {
 /// Where a body is: its centre of mass and its rotation from the drawn configuration.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct BodyPosition {
-    pub body: String,
+    #[schema(value_type = String)]
+    pub body: Name,
     /// m
     pub x: f64,
     /// m
@@ -200,6 +201,7 @@ pub struct MachineDynamics {
 
 impl MachineDynamics {
     pub(super) fn new(s: &MechanismSolution, joint_names: &[String], body_names: &[String]) -> Self {
+        let (joint_names, body_names) = (&names(joint_names), &names(body_names));
         let samples = s
             .details
             .iter()

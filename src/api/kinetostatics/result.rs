@@ -1,7 +1,7 @@
 //! The `result` of a kinetostatics job, as stored and served, and its CSV table.
 
 use super::request::Problem;
-use crate::api::mechanism::ReactionDto;
+use crate::api::mechanism::{Name, ReactionDto, names};
 use crate::engine::kinetostatics::{Motion, Reaction, Solution, Step};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -35,7 +35,8 @@ pub struct GrublerDto {
 /// Position, velocity and acceleration of a body's centre of mass and rotation.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct BodyMotion {
-    pub body: String,
+    #[schema(value_type = String)]
+    pub body: Name,
     pub x: f64,
     pub y: f64,
     /// Rotation from the drawn configuration, rad.
@@ -61,7 +62,8 @@ pub struct StepDto {
     /// M*(φ) of every load, driver excluded.
     pub reduced_torque: Option<f64>,
     /// Quinn's energy-contribution coefficient T_body/T of each moving body (one input).
-    pub energy_contribution: Option<BTreeMap<String, f64>>,
+    #[schema(value_type = Option<BTreeMap<String, f64>>)]
+    pub energy_contribution: Option<BTreeMap<Name, f64>>,
     /// Condition number of Φ_q (joints and inputs). The exact 2-norm κ₂ (an
     /// SVD) where `outputs` has "condition", or where the estimate below
     /// exceeds 100 (so every near-singular position is measured exactly);
@@ -150,7 +152,8 @@ actions, checked against virtual power";
 
 impl KinetostaticsResult {
     pub fn new(s: Solution, p: &Problem, joint_names: &[String]) -> Self {
-        let steps = s.steps.iter().map(|st| step_dto(st, p, joint_names)).collect();
+        let (joints, bodies) = (names(joint_names), names(&p.body_names));
+        let steps = s.steps.iter().map(|st| step_dto(st, p, &joints, &bodies)).collect();
         let mob = &s.mobility;
         let mut warnings = Vec::new();
         if mob.redundant_constraints > 0 {
@@ -211,8 +214,7 @@ impl KinetostaticsResult {
     }
 }
 
-fn step_dto(s: &Step, p: &Problem, joint_names: &[String]) -> StepDto {
-    let names = &p.body_names;
+fn step_dto(s: &Step, p: &Problem, joint_names: &[Name], names: &[Name]) -> StepDto {
     let reaction = |r: &Reaction| ReactionDto::new(r, joint_names, names);
     StepDto {
         input: Scalars::of(&s.input),
@@ -230,7 +232,7 @@ fn step_dto(s: &Step, p: &Problem, joint_names: &[String]) -> StepDto {
     }
 }
 
-fn motion(m: &Motion, names: &[String]) -> Vec<BodyMotion> {
+fn motion(m: &Motion, names: &[Name]) -> Vec<BodyMotion> {
     (0..m.q.len() / 3)
         .map(|b| {
             let c = 3 * b;

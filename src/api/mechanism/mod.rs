@@ -7,7 +7,7 @@ mod reactions;
 
 pub use inputs::{InputDto, Inputs, machine_parts};
 pub use loads::{LoadDto, LoadType, MAX_LOADS, convert_loads};
-pub use reactions::ReactionDto;
+pub use reactions::{Name, ReactionDto, names};
 
 use super::quantity::{Errors, Quantity};
 use crate::engine::model::{Body, BodyId, Friction, Joint, JointKind, Mechanism, Pitch};

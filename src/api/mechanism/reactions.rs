@@ -2,15 +2,28 @@
 
 use crate::engine::kinetostatics::Reaction;
 use serde::{Deserialize, Serialize};
+use std::sync::Arc;
 use utoipa::ToSchema;
+
+/// A joint's or a body's name in a result: shared by every step that names
+/// it (a clone is a count, not a copy), serialized as the string.
+pub type Name = Arc<str>;
+
+/// The names as results hold them.
+pub fn names(list: &[String]) -> Vec<Name> {
+    list.iter().map(|n| Name::from(n.as_str())).collect()
+}
 
 /// The force body `by` exerts on body `on` at the joint (ground frame) and the
 /// couple about the joint point. Null when redundant constraints leave it undetermined.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct ReactionDto {
-    pub joint: String,
-    pub on: String,
-    pub by: String,
+    #[schema(value_type = String)]
+    pub joint: Name,
+    #[schema(value_type = String)]
+    pub on: Name,
+    #[schema(value_type = String)]
+    pub by: Name,
     pub fx: Option<f64>,
     pub fy: Option<f64>,
     pub moment: Option<f64>,
@@ -19,7 +32,7 @@ pub struct ReactionDto {
 
 impl ReactionDto {
     /// The engine's reaction with its joint and body names.
-    pub fn new(r: &Reaction, joint_names: &[String], body_names: &[String]) -> Self {
+    pub fn new(r: &Reaction, joint_names: &[Name], body_names: &[Name]) -> Self {
         let v = |x: f64| r.determinate.then_some(x);
         Self {
             joint: joint_names[r.joint].clone(),
