@@ -209,10 +209,11 @@ fn plot(points: &[Point], title: &str, path: &str) -> Result<(), Box<dyn std::er
 type Section = fn() -> String;
 
 fn main() {
-    // `cargo bench --bench work_precision -- grading` (or large, flywheel, http): that section alone,
-    // printed, docs/ left as they are (the flywheel's plot in the temporary folder).
-    let alone: [(&str, Section); 4] = [
+    // `cargo bench --bench work_precision -- grading` (or large, flywheel, http, kinetostatics): that
+    // section alone, printed, docs/ left as they are (the flywheel's plot in the temporary folder).
+    let alone: [(&str, Section); 5] = [
         ("grading", grading::section),
+        ("kinetostatics", kinetostatics::section),
         ("large", large::section),
         ("flywheel", || flywheel::section(&std::env::temp_dir().to_string_lossy())),
         ("http", http::section),
