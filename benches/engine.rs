@@ -92,11 +92,11 @@ fn kinetostatics() {
     for (what, outputs) in [
         (
             "all reactions + I*, M* + virtual-power check",
-            Outputs { reactions: true, reduced: true, kinematics: false, condition: false },
+            Outputs { driving: true, reactions: true, reduced: true, kinematics: false, condition: false },
         ),
         (
             "driving torque only (virtual power)",
-            Outputs { reactions: false, reduced: false, kinematics: false, condition: false },
+            Outputs { driving: true, reactions: false, reduced: false, kinematics: false, condition: false },
         ),
     ] {
         let t = best_us(15, || {

@@ -214,12 +214,15 @@ pub fn evaluate_into(m: &Mechanism, s: &State, sys: &mut System) {
         (sys.jacobian, sys.phi, sys.gamma) = (DMatrix::zeros(rows, n), DVector::zeros(rows), DVector::zeros(rows));
     }
     let System { phi, jacobian, gamma, trig } = sys;
+    turns(m, s, trig);
     build(m, s, trig, phi.as_mut_slice(), gamma.as_mut_slice(), jacobian);
 }
 
 /// Φ and γ into `sys` at a state whose q is the one `sys` was evaluated
-/// at (its Φ_q, unchanged, is not refilled): γ once the velocities are known.
+/// at by [`evaluate_into`] (its Φ_q and the bodies' sines and cosines,
+/// unchanged, are not computed again): γ once the velocities are known.
 pub fn evaluate_gamma(m: &Mechanism, s: &State, sys: &mut System) {
+    debug_assert_eq!(sys.trig.len(), m.bodies.len(), "evaluate_into first");
     let rows = n_rows(m);
     for v in [&mut sys.phi, &mut sys.gamma] {
         if v.len() == rows {
@@ -237,21 +240,28 @@ pub fn evaluate_blocks(m: &Mechanism, s: &State) -> (Vec<f64>, Vec<f64>, Blocks)
     let rows = n_rows(m);
     let (mut phi, mut gamma, mut blocks) =
         (vec![0.0; rows], vec![0.0; rows], Blocks { rows: vec![RowBlocks::default(); rows] });
-    build(m, s, &mut Vec::new(), &mut phi, &mut gamma, &mut blocks);
+    let mut trig = Vec::new();
+    turns(m, s, &mut trig);
+    build(m, s, &trig, &mut phi, &mut gamma, &mut blocks);
     (phi, gamma, blocks)
 }
 
-/// Fills Φ, γ and Φ_q (all zero on entry) at a state.
+/// (sin θ, cos θ) of every body at a state, ground first.
+fn turns(m: &Mechanism, s: &State, trig: &mut Vec<(f64, f64)>) {
+    trig.clear();
+    trig.extend((0..m.bodies.len()).map(|b| m.column(b).map_or((0.0, 1.0), |c| s.q[c + 2].sin_cos())));
+}
+
+/// Fills Φ, γ and Φ_q (all zero on entry) at a state whose sines and
+/// cosines are `trig`.
 fn build<J: Jacobian>(
     m: &Mechanism,
     s: &State,
-    trig: &mut Vec<(f64, f64)>,
+    trig: &[(f64, f64)],
     phi: &mut [f64],
     gamma: &mut [f64],
     jacobian: &mut J,
 ) {
-    trig.clear();
-    trig.extend((0..m.bodies.len()).map(|b| m.column(b).map_or((0.0, 1.0), |c| s.q[c + 2].sin_cos())));
     let mut b = Builder { m, s, trig, phi, gamma, jacobian };
     let mut row = 0;
     for joint in &m.joints {

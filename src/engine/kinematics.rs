@@ -5,10 +5,14 @@
 //! Acceleration: Φ_q q̈ = γ. With one input, g = dq/dφ (velocity
 //! coefficients) and h = d²q/dφ² give the predictor q + gΔφ + ½hΔφ².
 //! A sweep works in one [`Workspace`] and refills one [`Configuration`]:
-//! after the first position nothing is allocated (`sweep.rs`).
+//! after the first position nothing is allocated (`sweep.rs`). Where the
+//! mechanism is a crank and dyads, each position is placed in closed form
+//! first ([`Dyads`]) and Newton only confirms it.
 
+mod dyads;
 mod sweep;
 
+pub use dyads::{Dyads, Trig};
 pub use sweep::{sweep, sweep_each};
 
 use super::EngineError;

@@ -410,12 +410,16 @@ async fn a_slider_crank_with_r_over_l_095_matches_its_closed_form() {
     let res = post(&app, &body).await["result"].clone();
     let dx = |p: f64| -r * p.sin() - r * r * p.sin() * p.cos() / (l * l - r * r * p.sin().powi(2)).sqrt();
     let istar = |p: f64| m * dx(p).powi(2);
+    // I* to 1e-9 of its largest value: at the dead centres it is rounding
+    // (~1e-36 kg·m² from sin π ≠ 0), where no relative bound holds.
+    let i_max = (0..72).map(|k| istar(k as f64 * std::f64::consts::PI / 36.0)).fold(0.0, f64::max);
     for step in res["steps"].as_array().unwrap() {
         let p = step["input"].as_f64().unwrap();
-        close(&step["reduced_inertia"], istar(p), 1e-9, "I*");
+        let i = step["reduced_inertia"].as_f64().unwrap();
+        assert!((i - istar(p)).abs() <= 1e-9 * i_max, "I* at {p}: {i} vs {}", istar(p));
         let t = 0.5 * w * w * (istar(p + 1e-6) - istar(p - 1e-6)) / 2e-6;
         let scale = 0.5 * w * w * 0.05;
-        assert!((step["driving"].as_f64().unwrap() - t).abs() < 1e-6 * scale, "T at {p}");
+        assert!((step["driving"].as_f64().unwrap() - t).abs() < 1e-6 * scale, "T at {p}: {} vs {t}", step["driving"]);
     }
     assert_eq!(res["summary"]["singular"], false);
 }
@@ -611,4 +615,17 @@ async fn inputs_must_match_the_degrees_of_freedom() {
     assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
     let message = r.json()["errors"][0]["message"].as_str().unwrap().to_string();
     assert!(message.contains("3 degree(s) of freedom but 1 input"), "{message}");
+}
+
+/// The method says how the positions were found: K1 (a crank and an RRP
+/// dyad) in closed form, which Newton confirms without an iteration; K5's
+/// gears have no dyads, and Newton assembles them from the continuation.
+#[tokio::test]
+async fn the_method_says_where_positions_are_placed_in_closed_form() {
+    let app = TestApp::new().await;
+    let k1 = post(&app, &request("k1_offset_slider_crank")).await["result"]["accuracy"].clone();
+    assert!(k1["method"].as_str().unwrap().contains("positions in closed form (a crank and dyads"), "{k1}");
+    assert_eq!(k1["max_newton_iterations"], 0, "{k1}");
+    let k5 = post(&app, &request("k5_differential")).await["result"]["accuracy"].clone();
+    assert!(k5["method"].as_str().unwrap().contains("Newton-Raphson assembly with second-order continuation"), "{k5}");
 }

@@ -39,7 +39,7 @@ fn run(rows: &[Value], outputs: Outputs) -> Vec<Step> {
 
 /// Everything, the condition number exactly (the case gives κ₂).
 fn all() -> Outputs {
-    Outputs { reactions: true, reduced: true, kinematics: false, condition: true }
+    Outputs { driving: true, reactions: true, reduced: true, kinematics: false, condition: true }
 }
 
 #[track_caller]
@@ -91,7 +91,8 @@ fn k1_with_crank_acceleration() {
 fn driving_only_uses_virtual_power_and_agrees() {
     let c = case();
     let rows = c["expected"]["table"].as_array().unwrap();
-    let steps = run(rows, Outputs { reactions: false, reduced: false, kinematics: false, condition: false });
+    let steps =
+        run(rows, Outputs { driving: true, reactions: false, reduced: false, kinematics: false, condition: false });
     for (row, s) in rows.iter().zip(&steps) {
         assert!(s.reactions.is_empty() && s.reduced_inertia.is_none());
         close(s.driving[0], row["T_drive_Nm"].as_f64().unwrap(), 1000.0, "T");

@@ -75,7 +75,6 @@ pub struct Problem {
     pub loads: Vec<Load>,
     pub positions: Vec<Vec<[f64; 3]>>,
     pub outputs: Outputs,
-    pub want_driving: bool,
     /// Per input: true for a prismatic (linear) input.
     pub linear: Vec<bool>,
     /// How the first input was written, for errors at a position.
@@ -124,12 +123,12 @@ impl KinetostaticsRequest {
             loads,
             positions,
             outputs: Outputs {
+                driving: outputs.contains(&OutputKind::Driving),
                 reactions: outputs.contains(&OutputKind::Reactions),
                 reduced: outputs.contains(&OutputKind::Reduced),
                 kinematics: outputs.contains(&OutputKind::Kinematics),
                 condition: outputs.contains(&OutputKind::Condition),
             },
-            want_driving: outputs.contains(&OutputKind::Driving),
             linear,
             written,
         })

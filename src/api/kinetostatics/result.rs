@@ -146,9 +146,19 @@ impl crate::api::create::JobResult for KinetostaticsResult {
     }
 }
 
-const METHOD: &str = "body coordinates; Newton-Raphson assembly with second-order continuation; velocities and \
-accelerations from the constraint Jacobian; multipliers of Phi_q^T lambda = Q - M q'' for reactions and driving \
-actions, checked against virtual power";
+/// How the positions were found, then the rest.
+fn method(closed_form: bool) -> String {
+    let assembly = if closed_form {
+        "positions in closed form (a crank and dyads: circle-circle and circle-line intersections, on the branch \
+         drawn), confirmed by Newton-Raphson"
+    } else {
+        "Newton-Raphson assembly with second-order continuation"
+    };
+    format!(
+        "body coordinates; {assembly}; velocities and accelerations from the constraint Jacobian; multipliers of \
+         Phi_q^T lambda = Q - M q'' for reactions and driving actions, checked against virtual power"
+    )
+}
 
 impl KinetostaticsResult {
     pub fn new(s: Solution, p: &Problem, joint_names: &[String]) -> Self {
@@ -164,7 +174,7 @@ impl KinetostaticsResult {
             ));
         }
         let sum = &s.summary;
-        let driving = |v: &Vec<f64>| p.want_driving.then(|| Scalars::of(v));
+        let driving = |v: &Vec<f64>| p.outputs.driving.then(|| Scalars::of(v));
         let inputs = p
             .mechanism
             .drivers
@@ -207,7 +217,7 @@ impl KinetostaticsResult {
                 max_constraint_residual: s.max_constraint_residual,
                 max_newton_iterations: s.max_iterations,
                 max_friction_iterations: s.steps.iter().map(|st| st.friction_iterations).max().unwrap_or(0),
-                method: METHOD.into(),
+                method: method(s.closed_form),
             },
             warnings,
         }
@@ -218,7 +228,7 @@ fn step_dto(s: &Step, p: &Problem, joint_names: &[Name], names: &[Name]) -> Step
     let reaction = |r: &Reaction| ReactionDto::new(r, joint_names, names);
     StepDto {
         input: Scalars::of(&s.input),
-        driving: (p.want_driving && !s.singular).then(|| Scalars::of(&s.driving)),
+        driving: (p.outputs.driving && !s.singular).then(|| Scalars::of(&s.driving)),
         reactions: (p.outputs.reactions && !s.singular).then(|| s.reactions.iter().map(reaction).collect()),
         reduced_inertia: s.reduced_inertia,
         reduced_torque: s.reduced_torque,

@@ -3,7 +3,7 @@
 //! the whole sweep: Φ_q, its LU and the vectors are refilled in place, and
 //! each position is handed over by reference before the next is solved.
 
-use super::{Configuration, SINGULAR_CONDITION, Workspace, unreachable};
+use super::{Configuration, Dyads, SINGULAR_CONDITION, Trig, Workspace, unreachable};
 use crate::engine::model::Mechanism;
 use crate::engine::{Deadline, EngineError};
 use nalgebra::DMatrix;
@@ -50,12 +50,24 @@ pub fn sweep_each(
     let mut failure: Option<EngineError> = None;
     let mut c = Configuration::default();
     let single = m.drivers.len() == 1;
+    let (dyads, mut trig) = (Dyads::new(m), Trig::default());
     for (step, inputs) in positions.iter().enumerate() {
         deadline.check(|| format!("the mechanism was assembled at {step} of {} positions", positions.len()))?;
-        c.q.clone_from(&base);
-        if let Some(from) = from {
-            let d = inputs[0][0] - from;
-            c.q.iter_mut().enumerate().for_each(|(k, v)| *v += g[k] * d + 0.5 * h[k] * d * d);
+        let predict = |q: &mut Vec<f64>| {
+            q.clone_from(&base);
+            if let Some(from) = from {
+                let d = inputs[0][0] - from;
+                q.iter_mut().enumerate().for_each(|(k, v)| *v += g[k] * d + 0.5 * h[k] * d * d);
+            }
+        };
+        predict(&mut c.q);
+        // Placed in closed form where the mechanism is a crank and dyads (on
+        // the branch of the prediction); else, or where a dyad will not
+        // close, Newton starts from the prediction.
+        if let Some(dyads) = &dyads
+            && !dyads.place(m, inputs[0][0], &mut c.q, &mut trig)
+        {
+            predict(&mut c.q);
         }
         let (iterations, residual) = match ws.assemble(m, &mut c.q, inputs, step) {
             Ok(r) => r,

@@ -20,7 +20,7 @@ pub use loads::{Load, applied_forces, applied_forces_into, point_motion, potenti
 pub use summary::Summary;
 
 use super::constraints::joint_offsets;
-use super::kinematics::{Configuration, solve_linear, sweep_each};
+use super::kinematics::{Configuration, Dyads, solve_linear, sweep_each};
 use super::mobility::{Mobility, mobility as mobility_at};
 use super::model::{BodyId, JointKind, Mechanism, Pitch, cross, perp, rotate};
 use super::{Deadline, EngineError};
@@ -29,6 +29,9 @@ use nalgebra::{DMatrix, DVector};
 /// What to compute at every position.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Outputs {
+    /// The driving actions (without them, reactions or I* and M*, only the
+    /// motion is computed: no load is evaluated).
+    pub driving: bool,
     pub reactions: bool,
     pub reduced: bool,
     /// Keep q, q̇, q̈ of every step.
@@ -70,6 +73,9 @@ pub struct Solution {
     /// Largest Newton iteration count and final |Φ| over the steps.
     pub max_iterations: usize,
     pub max_constraint_residual: f64,
+    /// Each position was placed in closed form (a crank and dyads,
+    /// [`Dyads`]) and Newton only confirmed it.
+    pub closed_form: bool,
 }
 
 /// Results at one input position.
@@ -141,6 +147,7 @@ pub fn solve(
         mobility,
         max_iterations,
         max_constraint_residual,
+        closed_form: Dyads::new(m).is_some(),
     })
 }
 
@@ -189,6 +196,9 @@ impl Actions<'_> {
         k: usize,
     ) -> Result<Step, EngineError> {
         let (m, outputs, s) = (self.m, self.outputs, &mut self.scratch);
+        if !(outputs.driving || outputs.reactions || outputs.reduced) {
+            return Ok(Step { singular: false, kinematics: motion(c, outputs), ..singular_step(c, inputs) });
+        }
         let phi = inputs[0][0];
         applied_forces_into(m, self.loads, &c.q, &c.qd, phi, [inputs[0][1], 0.0], &mut s.qv);
         let friction_iterations = with_friction(m, c, s, k, phi)?;
@@ -221,11 +231,16 @@ impl Actions<'_> {
             reduced_torque,
             energy_shares,
             condition: c.condition,
-            kinematics: outputs.kinematics.then(|| Motion { q: c.q.clone(), qd: c.qd.clone(), qdd: c.qdd.clone() }),
+            kinematics: motion(c, outputs),
             friction_iterations,
             singular: false,
         })
     }
+}
+
+/// q, q̇ and q̈ where asked.
+fn motion(c: &Configuration, outputs: Outputs) -> Option<Motion> {
+    outputs.kinematics.then(|| Motion { q: c.q.clone(), qd: c.qd.clone(), qdd: c.qdd.clone() })
 }
 
 /// T_i = g_iᵀ(M q̈ − Q) for every input i, g_i = ∂q/∂φ_i solving Φ_q g_i = e_i

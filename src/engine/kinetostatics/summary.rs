@@ -24,7 +24,7 @@ pub struct Summary {
 
 impl Summary {
     pub fn new(all: &[Step], joints: usize) -> Self {
-        let regular: Vec<Step> = all.iter().filter(|s| !s.singular).cloned().collect();
+        let regular: Vec<&Step> = all.iter().filter(|s| !s.singular).collect();
         let steps = &regular[..];
         let n_inputs = steps.first().map_or(0, |s| s.driving.len());
         let count = steps.len().max(1) as f64;
@@ -42,6 +42,7 @@ impl Summary {
         // Per input, against that input's largest driving action.
         let compared: Vec<&Step> = steps
             .iter()
+            .copied()
             .filter(|s| {
                 s.driving_virtual_power.len() == s.driving.len() && (s.driving.len() > 1 || !s.reactions.is_empty())
             })
