@@ -17,6 +17,7 @@
 mod flywheel;
 mod grading;
 mod http;
+mod kinematics;
 mod kinetostatics;
 mod large;
 mod pendulum;
@@ -209,9 +210,11 @@ fn plot(points: &[Point], title: &str, path: &str) -> Result<(), Box<dyn std::er
 type Section = fn() -> String;
 
 fn main() {
-    // `cargo bench --bench work_precision -- grading` (or large, flywheel, http, kinetostatics): that
-    // section alone, printed, docs/ left as they are (the flywheel's plot in the temporary folder).
-    let alone: [(&str, Section); 5] = [
+    // `cargo bench --bench work_precision -- grading` (or large, flywheel, http, kinetostatics,
+    // kinematics): that section alone, printed, docs/ left as they are (the flywheel's plot in the
+    // temporary folder).
+    let alone: [(&str, Section); 6] = [
+        ("kinematics", kinematics::section),
         ("grading", grading::section),
         ("kinetostatics", kinetostatics::section),
         ("large", large::section),
@@ -317,6 +320,8 @@ fn write_docs(mut doc: String, mut points: Vec<Point>) {
     doc.push_str(&large::section());
     doc.push('\n');
     doc.push_str(&kinetostatics::section());
+    doc.push('\n');
+    doc.push_str(&kinematics::section());
     doc.push('\n');
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/docs");
     let _ = std::fs::create_dir_all(dir);

@@ -18,7 +18,7 @@ fn peer(script: &str, args: &[&str], modules: &str) -> Option<Value> {
     if !has_modules {
         eprintln!(
             "skipped: no Python with NumPy, SciPy{modules} ({python}); \
-             `python3 -m venv .venv && .venv/bin/pip install numpy scipy exudyn`"
+             `python3 -m venv .venv && .venv/bin/pip install numpy scipy exudyn pylinkage`"
         );
         return None;
     }
@@ -92,4 +92,37 @@ async fn exudyn_and_the_energy_balance_give_the_services_slider_crank_start_up()
     assert!((10.0..20.0).contains(&(coarse / fine)), "Exudyn errors {coarse:e} → {fine:e}");
     let extrapolated = angle(1) + (angle(1) - angle(0)) / 15.0;
     assert!((extrapolated - reference).abs() < 1e-7, "Exudyn extrapolated: {extrapolated} vs {reference}");
+}
+
+/// The library's four-bar over a turn of 360 positions, kinematics only
+/// (`"outputs": ["kinematics"]`): pylinkage (PyPI, its own circle-circle
+/// intersections; step k has the crank at (k + 1)·1°) puts the coupler's
+/// pin B where the service's coupler pose does, to 1e-12 m (both are exact
+/// but for rounding; B = G + A(θ)(B₀ − G₀) from the pose).
+#[tokio::test]
+async fn pylinkage_places_the_four_bar_where_the_service_does() {
+    let Some(peer) = peer("four_bar_pylinkage.py", &["360"], ", pylinkage") else { return };
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/library/four-bar.json");
+    let library: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let mut body = library["request"].clone();
+    body["input"]["steps"] = json!(360);
+    body["outputs"] = json!(["kinematics"]);
+    let (b0, g0) = (&body["mechanism"]["points"]["B"], &body["mechanism"]["bodies"][1]["cg"]);
+    let s: Vec<f64> = (0..2).map(|k| b0[k].as_f64().unwrap() - g0[k].as_f64().unwrap()).collect();
+    let r = TestApp::new().await.post("/v1/kinetostatics", &body).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let steps = r.json()["result"]["steps"].as_array().unwrap().clone();
+    let want = peer["b"].as_array().unwrap();
+    assert_eq!((steps.len(), want.len()), (360, 360));
+    for (k, step) in steps.iter().enumerate() {
+        assert!(step["driving"].is_null() && step["reactions"].is_null(), "kinematics only: {step}");
+        let coupler = &step["kinematics"][1];
+        assert_eq!(coupler["body"], "coupler");
+        let [x, y, theta] = ["x", "y", "theta"].map(|f| coupler[f].as_f64().unwrap());
+        let (sin, cos) = theta.sin_cos();
+        let b = [x + cos * s[0] - sin * s[1], y + sin * s[0] + cos * s[1]];
+        let w = &want[(k + 359) % 360];
+        let gap = (b[0] - w[0].as_f64().unwrap()).hypot(b[1] - w[1].as_f64().unwrap());
+        assert!(gap <= 1e-12, "at φ = {}: B = {b:?}, pylinkage {w}", step["input"]);
+    }
 }
