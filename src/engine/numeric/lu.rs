@@ -197,14 +197,17 @@ mod tests {
     use super::*;
     use nalgebra::DVector;
 
-    /// A 7×7 with zeros on the diagonal (every step exchanges rows) and a
-    /// 1×1: both solves against nalgebra's LU of A and of Aᵀ, to 1e-13 of
-    /// the solution's size (rounding of a well-conditioned 7×7).
+    /// Matrices with zeros on the diagonal (every step exchanges rows) of
+    /// sizes compiled with n known (6, 9, 18) and not (7), and a 1×1: both
+    /// solves against nalgebra's LU of A and of Aᵀ, to 1e-13 of the
+    /// solution's size (rounding of well-conditioned matrices).
     #[test]
     fn both_solves_match_nalgebras_lu() {
-        let a =
-            DMatrix::from_fn(7, 7, |i, j| if i == j { 0.0 } else { ((3 * i + 5 * j) as f64).sin() + 0.1 * i as f64 });
-        for a in [a, DMatrix::from_element(1, 1, -2.5)] {
+        let zero_diagonal = |n: usize| {
+            DMatrix::from_fn(n, n, |i, j| if i == j { 0.0 } else { ((3 * i + 5 * j) as f64).sin() + 0.1 * i as f64 })
+        };
+        let sizes = [6, 7, 9, 18].map(zero_diagonal);
+        for a in sizes.into_iter().chain([DMatrix::from_element(1, 1, -2.5)]) {
             let n = a.nrows();
             let b = DVector::from_fn(n, |k, _| (k as f64).cos());
             let mut lu = Lu::default();
