@@ -345,13 +345,16 @@ fn a_spent_budget_is_reported_as_such_before_the_first_step() {
 }
 
 /// IFToMM A02's chain of N = 10 parallelograms (1 m, 1 kg bars; see
-/// tests/api/four_bars.rs) from upright at 1 rad/s, tolerance 1e-9, 10 s.
+/// tests/api/four_bars.rs) from upright at 1.1 rad/s, tolerance 1e-9, 10 s.
 /// The sparse form holding the folds itself takes ever smaller steps at a
-/// flat position near t = 5.16 s until they underflow; the run is then made
-/// again with the dense form near the flat positions, and it is right: θ̇ at
-/// every sample within 1e-7 rad/s of the energy closed form
-/// θ̇² = 1 + 2(V(π/2) − V(θ))/I*, I* = (N+1)/3 + N, V = ((N+1)/2 + N)·g·sin θ
-/// (measured 1.7e-8). From 6 rad/s the hold goes through.
+/// flat position until they underflow; the run is then made again with the
+/// dense form near the flat positions, and it is right: θ̇ at every sample
+/// within 1e-7 rad/s of the energy closed form
+/// θ̇² = ω₀² + 2(V(π/2) − V(θ))/I*, I* = (N+1)/3 + N, V = ((N+1)/2 + N)·g·sin θ.
+/// From 6 rad/s the hold goes through. Which start needs the rerun depends
+/// on rounding (from 1 rad/s it did until the start was assembled in
+/// closed form; measured today from 0.8 to 1.5 rad/s, only 1.1 does): a
+/// better hold would make this fail for a good reason and want another case.
 #[test]
 fn a02_gets_its_answer_where_the_sparse_hold_fails() {
     let n = 10.0;
@@ -359,7 +362,7 @@ fn a02_gets_its_answer_where_the_sparse_hold_fails() {
         let v = |t: f64| ((n + 1.0) / 2.0 + n) * 9.81 * t.sin();
         (w0 * w0 + 2.0 * (v(PI / 2.0) - v(theta)) / ((n + 1.0) / 3.0 + n)).sqrt()
     };
-    for (w0, hold) in [(1.0, false), (6.0, true)] {
+    for (w0, hold) in [(1.1, false), (6.0, true)] {
         let mut p = problem(
             mechdyn::engine::samples::parallelogram_chain(10),
             Vec::new(),
