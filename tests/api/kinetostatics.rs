@@ -299,6 +299,27 @@ async fn a_change_point_four_bar_passes_its_singular_positions() {
     assert_eq!(r["summary"]["singular"], true);
 }
 
+/// The CSV of a sweep through singular positions (reactions null there) and
+/// of a kinematics-only job: every row as long as the header, the singular
+/// rows' reactions empty, each body's motion in its own columns with units.
+#[tokio::test]
+async fn the_csv_keeps_its_columns_at_singular_positions_and_gives_the_motion() {
+    let app = TestApp::new().await;
+    let mut kinematics_only = request("k1_offset_slider_crank");
+    kinematics_only["outputs"] = json!(["kinematics"]);
+    for body in [parallelogram(false), kinematics_only] {
+        let job = post(&app, &body).await;
+        let r = app.get(&format!("/v1/jobs/{}/result.csv", job["id"].as_str().unwrap())).await;
+        assert_eq!(r.status, StatusCode::OK, "{}", r.text);
+        let rows: Vec<Vec<&str>> = r.text.lines().map(|l| l.split(',').collect()).collect();
+        assert!(rows.iter().all(|row| row.len() == rows[0].len()), "ragged rows:\n{}", r.text);
+        let motion = job["result"]["steps"][1]["kinematics"][0].clone();
+        let column = rows[0].iter().position(|h| *h == format!("{}_omega_rad_s", motion["body"].as_str().unwrap()));
+        let column = column.unwrap_or_else(|| panic!("no ω column in {:?}", rows[0]));
+        close(&json!(rows[2][column].parse::<f64>().unwrap()), motion["omega"].as_f64().unwrap(), 1e-12, "ω");
+    }
+}
+
 /// The same with a third, parallel crank: one redundant constraint; the
 /// reactions are indeterminate (null, flagged), the driving torque is still
 /// right: T = −(14.715 + 9.81·0.25)·sin φ = −17.1675 sin φ.

@@ -263,10 +263,13 @@ fn motion(m: &Motion, names: &[Name]) -> Vec<BodyMotion> {
 }
 
 /// The CSV table of a stored result: one row per step; columns input(s),
-/// driving action(s), I*, M*, condition number, and fx, fy, moment per joint.
+/// driving action(s), I*, M*, condition number, fx, fy, moment per joint
+/// and, where asked, each body's motion; a singular step's cells are empty.
 pub fn csv_table(result: &Value) -> (Vec<String>, Vec<Vec<String>>) {
     let steps = result["steps"].as_array().cloned().unwrap_or_default();
-    let Some(first) = steps.first() else { return (Vec::new(), Vec::new()) };
+    if steps.is_empty() {
+        return (Vec::new(), Vec::new());
+    }
     let units = |key: &str| -> Vec<String> {
         result["inputs"]
             .as_array()
@@ -283,41 +286,73 @@ pub fn csv_table(result: &Value) -> (Vec<String>, Vec<Vec<String>>) {
             .map(|(k, u)| if n == 1 { format!("{name}_{u}") } else { format!("{name}_{}_{u}", k + 1) })
             .collect()
     };
+    // The names of a step's list (joints of the reactions, bodies of the
+    // motion) from the first step that has it.
+    let names = |list: &str, key: &str| -> Vec<String> {
+        let first = steps.iter().find_map(|s| s[list].as_array());
+        first.into_iter().flatten().filter_map(|r| r[key].as_str().map(String::from)).collect()
+    };
+    let inputs = units("coordinate_unit").len().max(1);
+    let driving = steps.iter().any(|s| !s["driving"].is_null());
+    let (joints, bodies) = (names("reactions", "joint"), names("kinematics", "body"));
     let mut header = numbered("input", units("coordinate_unit"));
-    if !first["driving"].is_null() {
+    if driving {
         header.extend(numbered("driving", units("driving_unit")));
     }
     header.extend(["reduced_inertia_kg_m2", "reduced_torque_N_m", "jacobian_condition"].map(String::from));
-    let joints: Vec<String> = first["reactions"]
-        .as_array()
-        .into_iter()
-        .flatten()
-        .filter_map(|r| r["joint"].as_str().map(String::from))
-        .collect();
     for j in &joints {
         header.extend([format!("{j}_fx_N"), format!("{j}_fy_N"), format!("{j}_moment_N_m")]);
     }
-    let flat = |v: &Value| -> Vec<String> {
-        match v {
-            Value::Array(a) => a.iter().map(Value::to_string).collect(),
-            Value::Null => vec![String::new()],
-            other => vec![other.to_string()],
-        }
-    };
-    let cell = |v: &Value| if v.is_null() { String::new() } else { v.to_string() };
+    for b in &bodies {
+        header.extend(MOTION.iter().map(|(field, unit)| format!("{b}_{field}_{unit}")));
+    }
     let rows = steps
         .iter()
         .map(|s| {
-            let mut row = flat(&s["input"]);
-            if !first["driving"].is_null() {
-                row.extend(flat(&s["driving"]));
+            let mut row = cells(&s["input"], inputs);
+            if driving {
+                row.extend(cells(&s["driving"], inputs));
             }
             row.extend([cell(&s["reduced_inertia"]), cell(&s["reduced_torque"]), cell(&s["jacobian_condition"])]);
-            for r in s["reactions"].as_array().into_iter().flatten() {
-                row.extend([cell(&r["fx"]), cell(&r["fy"]), cell(&r["moment"])]);
-            }
+            row.extend(list(&s["reactions"], joints.len(), &["fx", "fy", "moment"]));
+            let fields: Vec<&str> = MOTION.iter().map(|(f, _)| *f).collect();
+            row.extend(list(&s["kinematics"], bodies.len(), &fields));
             row
         })
         .collect();
     (header, rows)
+}
+
+/// A body's motion in the CSV: field and unit.
+const MOTION: [(&str, &str); 9] = [
+    ("x", "m"),
+    ("y", "m"),
+    ("theta", "rad"),
+    ("vx", "m_s"),
+    ("vy", "m_s"),
+    ("omega", "rad_s"),
+    ("ax", "m_s2"),
+    ("ay", "m_s2"),
+    ("alpha", "rad_s2"),
+];
+
+fn cell(v: &Value) -> String {
+    if v.is_null() { String::new() } else { v.to_string() }
+}
+
+/// A number or a list of `n` numbers as `n` cells (empty where null).
+fn cells(v: &Value, n: usize) -> Vec<String> {
+    match v {
+        Value::Array(a) => a.iter().map(cell).collect(),
+        Value::Null => vec![String::new(); n],
+        other => vec![cell(other)],
+    }
+}
+
+/// The `fields` of each of `n` items of a list (empty cells where the list is null).
+fn list(v: &Value, n: usize, fields: &[&str]) -> Vec<String> {
+    match v.as_array() {
+        Some(items) => items.iter().flat_map(|item| fields.iter().map(|f| cell(&item[*f]))).collect(),
+        None => vec![String::new(); n * fields.len()],
+    }
 }
