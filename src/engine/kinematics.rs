@@ -49,6 +49,8 @@ pub struct Configuration {
     pub condition: f64,
     pub iterations: usize,
     pub residual: f64,
+    /// q was placed in closed form ([`Dyads`]) before Newton confirmed it.
+    pub placed: bool,
     /// Φ_q is singular here (or Newton could not assemble this one position
     /// while its neighbours assemble): nothing but q (predicted) is valid.
     pub singular: bool,
@@ -133,17 +135,12 @@ impl Workspace {
             }
             // Δq with Φ_q Δq = −Φ, in `qd`'s storage.
             self.lu.factor(&self.sys.jacobian);
-            let mut dq = std::mem::take(&mut self.qd);
-            dq.clear();
-            dq.extend(self.sys.phi.iter().map(|v| -v));
-            let solved = self.solve(&mut dq);
-            if solved {
-                q.iter_mut().zip(&dq).for_each(|(v, d)| *v += d);
-            }
-            self.qd = dq;
-            if !solved {
+            self.qd.clear();
+            self.qd.extend(self.sys.phi.iter().map(|v| -v));
+            if !solve(&self.sys.jacobian, &self.lu, &mut self.b, &mut self.qd) {
                 break;
             }
+            q.iter_mut().zip(&self.qd).for_each(|(v, d)| *v += d);
         }
         let joint = widest_gap(m, q, inputs);
         Err(EngineError::NewtonDiverged { step, input: inputs.first().map_or(0.0, |i| i[0]), residual, joint })
@@ -155,42 +152,18 @@ impl Workspace {
     /// has no solution. `self.sys` then holds Φ, Φ_q and γ.
     pub fn motion(&mut self, m: &Mechanism, q: &[f64], inputs: &[[f64; 3]]) -> bool {
         self.lu.factor(&self.sys.jacobian);
-        let mut v = std::mem::take(&mut self.qd);
         // ν: the input speeds in the drivers' rows.
-        v.clear();
-        v.resize(self.sys.phi.len(), 0.0);
-        let first = v.len() - m.drivers.len();
-        inputs.iter().enumerate().for_each(|(k, input)| v[first + k] = input[1]);
-        let solved = self.solve(&mut v);
-        self.qd = v;
-        if !solved {
+        self.qd.clear();
+        self.qd.resize(self.sys.phi.len(), 0.0);
+        let first = self.qd.len() - m.drivers.len();
+        inputs.iter().enumerate().for_each(|(k, input)| self.qd[first + k] = input[1]);
+        if !solve(&self.sys.jacobian, &self.lu, &mut self.b, &mut self.qd) {
             return false;
         }
         evaluate_gamma(m, &State { q, qd: Some(&self.qd), inputs }, &mut self.sys);
-        let mut a = std::mem::take(&mut self.qdd);
-        a.clear();
-        a.extend(self.sys.gamma.iter());
-        let solved = self.solve(&mut a);
-        self.qdd = a;
-        solved
-    }
-
-    /// x with Φ_q x = b (b given in x) by `self.lu`, or by least squares
-    /// where Φ_q is not square or its LU fails.
-    fn solve(&mut self, x: &mut Vec<f64>) -> bool {
-        self.b.clear();
-        self.b.extend_from_slice(x);
-        if self.lu.solve(x) {
-            return true;
-        }
-        match solve_linear(&self.sys.jacobian, &DVector::from_column_slice(&self.b)) {
-            Some(s) => {
-                x.clear();
-                x.extend(s.iter());
-                true
-            }
-            None => false,
-        }
+        self.qdd.clear();
+        self.qdd.extend(self.sys.gamma.iter());
+        solve(&self.sys.jacobian, &self.lu, &mut self.b, &mut self.qdd)
     }
 
     /// Φ_q's condition number: κ₂ exactly when `exact` or where the estimate
@@ -203,6 +176,23 @@ impl Workspace {
             }
         }
         condition(&self.sys.jacobian)
+    }
+}
+
+/// x with A x = b (b given in x) by A's factors `lu`, or by least squares
+/// where A is not square or its LU fails (`b` keeps the right-hand side).
+fn solve(a: &DMatrix<f64>, lu: &Lu, b: &mut Vec<f64>, x: &mut Vec<f64>) -> bool {
+    b.clone_from(x);
+    if lu.solve(x) {
+        return true;
+    }
+    match solve_linear(a, &DVector::from_column_slice(b)) {
+        Some(s) => {
+            x.clear();
+            x.extend(s.iter());
+            true
+        }
+        None => false,
     }
 }
 
