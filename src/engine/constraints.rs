@@ -206,13 +206,13 @@ pub fn evaluate(m: &Mechanism, s: &State) -> System {
 /// it has held this mechanism's system).
 pub fn evaluate_into(m: &Mechanism, s: &State, sys: &mut System) {
     let (rows, n) = (n_rows(m), m.n_coordinates());
-    if sys.jacobian.shape() == (rows, n) && sys.phi.len() == rows && sys.gamma.len() == rows {
+    if sys.jacobian.shape() == (rows, n) {
         sys.jacobian.fill(0.0);
-        sys.phi.fill(0.0);
-        sys.gamma.fill(0.0);
     } else {
-        (sys.jacobian, sys.phi, sys.gamma) = (DMatrix::zeros(rows, n), DVector::zeros(rows), DVector::zeros(rows));
+        sys.jacobian = DMatrix::zeros(rows, n);
     }
+    zeroed(&mut sys.phi, rows);
+    zeroed(&mut sys.gamma, rows);
     let System { phi, jacobian, gamma, trig } = sys;
     turns(m, s, trig);
     build(m, s, trig, phi.as_mut_slice(), gamma.as_mut_slice(), jacobian);
@@ -224,15 +224,19 @@ pub fn evaluate_into(m: &Mechanism, s: &State, sys: &mut System) {
 pub fn evaluate_gamma(m: &Mechanism, s: &State, sys: &mut System) {
     debug_assert_eq!(sys.trig.len(), m.bodies.len(), "evaluate_into first");
     let rows = n_rows(m);
-    for v in [&mut sys.phi, &mut sys.gamma] {
-        if v.len() == rows {
-            v.fill(0.0);
-        } else {
-            *v = DVector::zeros(rows);
-        }
-    }
+    zeroed(&mut sys.phi, rows);
+    zeroed(&mut sys.gamma, rows);
     let System { phi, gamma, trig, .. } = sys;
     build(m, s, trig, phi.as_mut_slice(), gamma.as_mut_slice(), &mut ());
+}
+
+/// `v` as `rows` zeros, in its own storage where it has that length.
+fn zeroed(v: &mut DVector<f64>, rows: usize) {
+    if v.len() == rows {
+        v.fill(0.0);
+    } else {
+        *v = DVector::zeros(rows);
+    }
 }
 
 /// Φ, γ and Φ_q by blocks at a state (as [`evaluate`], without the dense matrix).
