@@ -64,9 +64,8 @@ pub fn sweep_each(
         // Placed in closed form where the mechanism is a crank and dyads (on
         // the branch of the prediction); else, or where a dyad will not
         // close, Newton starts from the prediction.
-        if let Some(dyads) = &dyads
-            && !dyads.place(m, inputs[0][0], &mut c.q, &mut trig)
-        {
+        c.placed = dyads.as_ref().is_some_and(|d| d.place(m, inputs[0][0], &mut c.q, &mut trig));
+        if dyads.is_some() && !c.placed {
             predict(&mut c.q);
         }
         let (iterations, residual) = match ws.assemble(m, &mut c.q, inputs, step) {

@@ -20,7 +20,7 @@ pub use loads::{Load, applied_forces, applied_forces_into, point_motion, potenti
 pub use summary::Summary;
 
 use super::constraints::joint_offsets;
-use super::kinematics::{Configuration, Dyads, solve_linear, sweep_each};
+use super::kinematics::{Configuration, solve_linear, sweep_each};
 use super::mobility::{Mobility, mobility as mobility_at};
 use super::model::{BodyId, JointKind, Mechanism, Pitch, cross, perp, rotate};
 use super::{Deadline, EngineError};
@@ -73,8 +73,8 @@ pub struct Solution {
     /// Largest Newton iteration count and final |Φ| over the steps.
     pub max_iterations: usize,
     pub max_constraint_residual: f64,
-    /// Each position was placed in closed form (a crank and dyads,
-    /// [`Dyads`]) and Newton only confirmed it.
+    /// Every position was placed in closed form (a crank and dyads,
+    /// [`crate::engine::kinematics::Dyads`]) and Newton only confirmed it.
     pub closed_form: bool,
 }
 
@@ -116,7 +116,7 @@ pub fn solve(
 ) -> Result<Solution, EngineError> {
     let mut steps = Vec::with_capacity(positions.len());
     let mut mobility: Option<Mobility> = None;
-    let (mut max_iterations, mut max_constraint_residual) = (0, 0.0f64);
+    let (mut max_iterations, mut max_constraint_residual, mut closed_form) = (0, 0.0f64, true);
     let inputs = m.drivers.len();
     let mut actions =
         Actions { m, loads, outputs, scratch: Scratch { offsets: joint_offsets(m), ..Scratch::default() } };
@@ -127,6 +127,7 @@ pub fn solve(
     sweep_each(m, positions, deadline, outputs.condition, |k, c| {
         (max_iterations, max_constraint_residual) =
             (max_iterations.max(c.iterations), max_constraint_residual.max(c.residual));
+        closed_form &= c.placed;
         if mobility.is_none() && !c.singular {
             mobility = Some(mobility_at(m, &c.q));
         }
@@ -147,7 +148,7 @@ pub fn solve(
         mobility,
         max_iterations,
         max_constraint_residual,
-        closed_form: Dyads::new(m).is_some(),
+        closed_form,
     })
 }
 
