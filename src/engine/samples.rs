@@ -81,6 +81,36 @@ pub fn four_bar() -> Mechanism {
     }
 }
 
+/// A Watt six-bar: the four-bar O2-A-B-O4 whose coupler is ternary (A, B,
+/// D), and a second dyad D-F-O6 hung on it; points chosen freely (a joint's
+/// one point is both bodies', so the drawing is assembled).
+pub fn watt_six_bar() -> Mechanism {
+    let (o2, a, b, o4, d, f, o6) =
+        ([0.0, 0.0], [0.1, 0.02], [0.35, 0.25], [0.4, 0.0], [0.3, 0.4], [0.6, 0.45], [0.7, 0.1]);
+    let revolute = |name: &str, bodies: [usize; 2], at: [f64; 2]| joint(name, JointKind::Revolute, bodies, at);
+    Mechanism {
+        bodies: vec![
+            body("ground", 0.0, 0.0, [0.0, 0.0]),
+            body("crank", 1.0, 0.01, [0.05, 0.01]),
+            body("coupler", 1.0, 0.01, [0.25, 0.22]),
+            body("rocker", 1.0, 0.01, [0.37, 0.12]),
+            body("link", 1.0, 0.01, [0.45, 0.42]),
+            body("rocker 2", 1.0, 0.01, [0.65, 0.27]),
+        ],
+        joints: vec![
+            revolute("O2", [0, 1], o2),
+            revolute("A", [1, 2], a),
+            revolute("B", [2, 3], b),
+            revolute("O4", [3, 0], o4),
+            revolute("D", [2, 4], d),
+            revolute("F", [4, 5], f),
+            revolute("O6", [5, 0], o6),
+        ],
+        drivers: vec![Driver { joint: 0, reference: 0.0 }],
+        gravity: [0.0, -9.81],
+    }
+}
+
 /// The differential train of reference case K5: sun (z = 60), planet (30),
 /// internal ring (120) on a carrier, all about O; planet pin at 0.09 m.
 /// Driven by the carrier and the ring.

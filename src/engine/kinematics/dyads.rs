@@ -24,15 +24,16 @@ struct Pin {
     local: [f64; 2],
 }
 
-/// A dyad's body, placed by its pin and by C: from the pin to C (length l)
-/// and to the body's G in the reference configuration.
+/// A dyad's body, placed by its pin and by C: from the pin to C (length
+/// l), and the pin and C from the body's G, in the reference configuration.
 #[derive(Clone, Copy, Debug)]
 struct Link {
     body: BodyId,
     pin: Pin,
     to_c: [f64; 2],
-    to_g: [f64; 2],
     l: f64,
+    pin_from_g: [f64; 2],
+    c_from_g: [f64; 2],
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -128,7 +129,8 @@ fn next_group(m: &Mechanism, placed: &[bool], used: &[bool]) -> Option<(Group, [
     let link = |body: BodyId, pin: Pin, c: [f64; 2]| {
         let to_c = difference(c, pin.at);
         let l = dot(to_c, to_c).sqrt();
-        (l > 0.0).then(|| Link { body, pin, to_c, to_g: difference(m.bodies[body].cg, pin.at), l })
+        let (pin_from_g, c_from_g) = (m.local(body, pin.at), m.local(body, c));
+        (l > 0.0).then_some(Link { body, pin, to_c, l, pin_from_g, c_from_g })
     };
     for (jc, joint) in m.joints.iter().enumerate().filter(|(j, _)| free(*j) && revolute(*j)) {
         let [x, y] = joint.bodies;
@@ -236,13 +238,13 @@ impl Placer<'_> {
             let step = sin.atan2(cos) - near;
             near + step - TAU * (step / TAU).round()
         };
-        self.set(link.body, difference(link.pin.at, self.m.bodies[link.body].cg), at, [theta, cos, sin]);
+        self.set(link.body, link.pin_from_g, at, [theta, cos, sin]);
     }
 
     /// RRR: C at l₁ from A and l₂ from B, on the side of AB it is on.
     fn rrr(&mut self, [first, second]: &[Link; 2]) -> bool {
         let (pa, pb) = (self.pin(&first.pin), self.pin(&second.pin));
-        let before = self.point(first.body, difference(first.to_c, first.to_g));
+        let before = self.point(first.body, first.c_from_g);
         let (d, [l1, l2]) = (difference(pb, pa), [first.l, second.l]);
         let distance = dot(d, d).sqrt();
         let inverse = 1.0 / distance;
@@ -286,45 +288,7 @@ mod tests {
     use super::*;
     use crate::engine::constraints::{State, evaluate};
     use crate::engine::kinematics::Workspace;
-    use crate::engine::model::{Body, Driver, Joint};
-    use crate::engine::samples::{four_bar, offset_slider_crank, planetary_train, slotted_lever};
-
-    /// A Watt six-bar: the four-bar O2-A-B-O4 whose coupler is ternary (A,
-    /// B, D), and a second dyad D-F-O6 hung on it; points chosen freely (a
-    /// joint's one point is both bodies', so the drawing is assembled).
-    fn watt_six_bar() -> Mechanism {
-        let body = |name: &str, cg: [f64; 2]| Body { name: name.into(), mass: 1.0, inertia: 0.01, cg };
-        let joint = |name: &str, bodies: [BodyId; 2], at: [f64; 2]| Joint {
-            name: name.into(),
-            kind: JointKind::Revolute,
-            bodies,
-            at,
-            friction: None,
-        };
-        let (o2, a, b, o4, d, f, o6) =
-            ([0.0, 0.0], [0.1, 0.02], [0.35, 0.25], [0.4, 0.0], [0.3, 0.4], [0.6, 0.45], [0.7, 0.1]);
-        Mechanism {
-            bodies: vec![
-                body("ground", [0.0, 0.0]),
-                body("crank", [0.05, 0.01]),
-                body("coupler", [0.25, 0.22]),
-                body("rocker", [0.37, 0.12]),
-                body("link", [0.45, 0.42]),
-                body("rocker 2", [0.65, 0.27]),
-            ],
-            joints: vec![
-                joint("O2", [0, 1], o2),
-                joint("A", [1, 2], a),
-                joint("B", [2, 3], b),
-                joint("O4", [3, 0], o4),
-                joint("D", [2, 4], d),
-                joint("F", [4, 5], f),
-                joint("O6", [5, 0], o6),
-            ],
-            drivers: vec![Driver { joint: 0, reference: 0.0 }],
-            gravity: [0.0, -9.81],
-        }
-    }
+    use crate::engine::samples::{four_bar, offset_slider_crank, planetary_train, slotted_lever, watt_six_bar};
 
     /// Each position placed in closed form from the last equals Newton's
     /// from the same start (a second method: Φ = 0 solved iteratively) to
