@@ -92,8 +92,8 @@ pub fn section() -> String {
                  in-place LU and the vectors, nothing allocated per position in the engine; the slider-crank is a \
                  crank and an RRP dyad, so each position is placed in closed form and Newton only confirms it (no \
                  iteration: one evaluation); one LU then serves q̇, q̈, the multipliers and the estimate. LU, \
-                 triangular solves and the evaluation of Φ_q are most of what is left in the engine (1.8 µs); the rest \
-                 is the result's lists (a step's reactions, names shared, not copied).",
+                 triangular solves and the evaluation of Φ_q are most of what is left in the engine; the rest is the \
+                 result's lists (a step's reactions, names shared, not copied).",
                 met(per(reactions) <= 2.0),
                 per(reactions),
                 met(seconds / reactions >= 50.0),

@@ -315,8 +315,7 @@ pub fn csv_table(result: &Value) -> (Vec<String>, Vec<Vec<String>>) {
             }
             row.extend([cell(&s["reduced_inertia"]), cell(&s["reduced_torque"]), cell(&s["jacobian_condition"])]);
             row.extend(list(&s["reactions"], joints.len(), &["fx", "fy", "moment"]));
-            let fields: Vec<&str> = MOTION.iter().map(|(f, _)| *f).collect();
-            row.extend(list(&s["kinematics"], bodies.len(), &fields));
+            row.extend(list(&s["kinematics"], bodies.len(), &MOTION.map(|(field, _)| field)));
             row
         })
         .collect();
