@@ -14,6 +14,7 @@ pub type Dop853 = Explicit<Dp853>;
 
 impl Pair for Dp853 {
     const STAGES: usize = 13;
+    const STABILITY: f64 = 6.1;
     const EXTENDED: usize = 16;
     const EXPONENT: f64 = 1.0 / 8.0;
     fn c(s: usize) -> f64 {

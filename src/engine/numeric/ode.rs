@@ -8,8 +8,15 @@
 //! The caller drives the steps and locates its own events on the dense output
 //! ([`Step::at`]), restarting with [`Explicit::restart`] after a discontinuity
 //! or moving the state with [`Explicit::project`] (e.g. onto constraints).
-//! Reference: Hairer, Nørsett, Wanner, *Solving ODEs I*, §II.5, §II.10 and
-//! the codes DOPRI5 and DOP853.
+//! Every step also tests for stiffness as DOPRI5 and DOP853 do: h·ρ, ρ the
+//! Lipschitz estimate ‖f(y₁) − f(Y)‖/‖y₁ − Y‖ between the step's last two
+//! stages (both at t + h), beyond the method's stability interval on the
+//! negative axis 15 times without 6 steps inside it in a row means the
+//! steps are held by stability, not accuracy ([`Explicit::stiff`]); the
+//! implicit [`super::radau`] is the method for such a system. [`Stepper`]
+//! is what a driver needs from either.
+//! Reference: Hairer, Nørsett, Wanner, *Solving ODEs I*, §II.5, §II.10,
+//! §IV.2 (stiffness detection) and the codes DOPRI5 and DOP853.
 
 /// One accepted step from `t0` to `t1` with its interpolation data.
 #[derive(Clone, Debug)]
@@ -23,7 +30,7 @@ pub struct Step {
     pub f1: Vec<f64>,
     /// The continuous extension's coefficients r₁…r_p: y(t0 + θh) =
     /// y0 + θ(r₁ + (1−θ)(r₂ + θ(r₃ + (1−θ)(r₄ + …)))).
-    rcont: Vec<Vec<f64>>,
+    pub(super) rcont: Vec<Vec<f64>>,
 }
 
 impl Step {
@@ -79,11 +86,34 @@ const D: [f64; 7] = [
     69997945.0 / 29380423.0,
 ];
 
+/// What a driver needs from a stepper, explicit or implicit.
+pub trait Stepper: Sized {
+    /// A stepper at (t, y) with a relative and per-component absolute tolerance.
+    fn start(f: &mut impl Rhs, t: f64, y: Vec<f64>, rtol: f64, atol: Vec<f64>) -> Self;
+    /// Takes one accepted step (retrying with smaller steps as needed).
+    fn step(&mut self, f: &mut impl Rhs, max_steps: usize) -> Result<Step, OdeError>;
+    /// Replaces the state at the current time (a projection), keeping the step size.
+    fn project(&mut self, f: &mut impl Rhs, y: Vec<f64>);
+    /// Time reached.
+    fn time(&self) -> f64;
+    /// Accepted steps, rejected steps and evaluations of f.
+    fn counts(&self) -> [usize; 3];
+    /// Σ over the accepted steps of each component's local error estimate.
+    fn local_errors(&self) -> &[f64];
+    /// The steps are held by stability, not accuracy (only an explicit method says so).
+    fn stiff(&self) -> bool {
+        false
+    }
+}
+
 /// An embedded explicit Runge–Kutta pair whose last stage is f(t + h, y₁)
 /// (first same as last).
 pub trait Pair {
-    /// Stages of a step, the last one at (t + h, y₁).
+    /// Stages of a step, the last one at (t + h, y₁), the one before also at t + h.
     const STAGES: usize;
+    /// Where the stability region meets the negative real axis (h·ρ beyond
+    /// it, the step is held by stability: Hairer's 3.25 and 6.1).
+    const STABILITY: f64;
     /// Stages including those the dense output adds.
     const EXTENDED: usize;
     /// 1/(q + 1), q the order of the error estimate: the step-size exponent.
@@ -124,6 +154,13 @@ pub struct Explicit<P: Pair> {
     /// estimate: a first-order estimate of the global error (it ignores how
     /// errors grow or decay along the solution).
     pub local_errors: Vec<f64>,
+    /// The state of the stage before the last (at t + h), and the count of
+    /// steps beyond the stability interval and of those within it in a row.
+    stiff_state: Vec<f64>,
+    beyond: usize,
+    within: usize,
+    /// 15 steps held by stability without 6 free ones in a row: a stiff system.
+    pub stiff: bool,
     pair: std::marker::PhantomData<P>,
 }
 
@@ -152,6 +189,10 @@ impl<P: Pair> Explicit<P> {
             rejected: 0,
             evaluations: 0,
             local_errors: vec![0.0; n],
+            stiff_state: vec![0.0; n],
+            beyond: 0,
+            within: 0,
+            stiff: false,
             pair: std::marker::PhantomData,
         };
         s.restart(f, t, y);
@@ -210,6 +251,7 @@ impl<P: Pair> Explicit<P> {
             let factor = (0.9 * err.powf(-P::EXPONENT)).clamp(0.2, 10.0);
             if err <= 1.0 {
                 self.local_errors.iter_mut().zip(&self.estimate).for_each(|(s, e)| *s += e.abs());
+                self.test_stiffness(h);
                 let step = self.accept(f, h);
                 self.h = (h * factor).min(self.h_max);
                 return Ok(step);
@@ -230,11 +272,34 @@ impl<P: Pair> Explicit<P> {
             }
             let (_, rest) = self.k.split_at_mut(s);
             f(self.t + P::c(s) * h, &self.stage, &mut rest[0]);
+            if s == P::STAGES - 2 {
+                self.stiff_state.copy_from_slice(&self.stage);
+            }
         }
         if range.end == P::STAGES {
             self.ys.copy_from_slice(&self.stage);
         }
         self.evaluations += range.len();
+    }
+
+    /// h·ρ of an accepted step against the stability interval (the norms
+    /// weighted by the absolute tolerances, components without a finite positive one left out).
+    fn test_stiffness(&mut self, h: f64) {
+        let last = P::STAGES - 1;
+        let (mut num, mut den) = (0.0, 0.0);
+        for i in (0..self.y.len()).filter(|&i| self.atol[i] > 0.0 && self.atol[i].is_finite()) {
+            num += ((self.k[last][i] - self.k[last - 1][i]) / self.atol[i]).powi(2);
+            den += ((self.ys[i] - self.stiff_state[i]) / self.atol[i]).powi(2);
+        }
+        if den > 0.0 && h.abs() * (num / den).sqrt() > P::STABILITY {
+            (self.beyond, self.within) = (self.beyond + 1, 0);
+            self.stiff |= self.beyond >= 15;
+        } else {
+            self.within += 1;
+            if self.within >= 6 {
+                self.beyond = 0;
+            }
+        }
     }
 
     fn accept(&mut self, f: &mut impl Rhs, h: f64) -> Step {
@@ -257,12 +322,37 @@ impl<P: Pair> Explicit<P> {
     }
 }
 
+impl<P: Pair> Stepper for Explicit<P> {
+    fn start(f: &mut impl Rhs, t: f64, y: Vec<f64>, rtol: f64, atol: Vec<f64>) -> Self {
+        Self::new(f, t, y, rtol, atol, f64::INFINITY)
+    }
+    fn step(&mut self, f: &mut impl Rhs, max_steps: usize) -> Result<Step, OdeError> {
+        Explicit::step(self, f, max_steps)
+    }
+    fn project(&mut self, f: &mut impl Rhs, y: Vec<f64>) {
+        Explicit::project(self, f, y)
+    }
+    fn time(&self) -> f64 {
+        self.t
+    }
+    fn counts(&self) -> [usize; 3] {
+        [self.accepted, self.rejected, self.evaluations]
+    }
+    fn local_errors(&self) -> &[f64] {
+        &self.local_errors
+    }
+    fn stiff(&self) -> bool {
+        self.stiff
+    }
+}
+
 /// Dormand–Prince 5(4), Hairer's DOPRI5.
 pub struct Dp5;
 pub type Dopri5 = Explicit<Dp5>;
 
 impl Pair for Dp5 {
     const STAGES: usize = 7;
+    const STABILITY: f64 = 3.25;
     const EXTENDED: usize = 7;
     const EXPONENT: f64 = 0.2;
     fn c(s: usize) -> f64 {
