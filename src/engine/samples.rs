@@ -262,3 +262,24 @@ pub fn parallelogram_chain(n: usize) -> Mechanism {
         gravity: [0.0, -9.81],
     }
 }
+
+/// IFToMM A01's pendulum made elastic: a massless arm pinned at O, the
+/// 1 kg bob sliding along it (a prismatic joint at 1 m); both joints are
+/// inputs (2 DOF). A spring of free length 1 m from the arm's (0, 0) to
+/// the bob's (1, 0) holds the bob: its radial mode √(k/m) is the stiff
+/// one, and the swing from the horizontal stretches it by at most 3mg/k.
+pub fn elastic_pendulum() -> Mechanism {
+    Mechanism {
+        bodies: vec![
+            body("ground", 0.0, 0.0, [0.0, 0.0]),
+            body("arm", 0.0, 0.0, [0.5, 0.0]),
+            body("bob", 1.0, 0.0, [1.0, 0.0]),
+        ],
+        joints: vec![
+            joint("O", JointKind::Revolute, [0, 1], [0.0, 0.0]),
+            joint("slide", JointKind::Prismatic { axis: [1.0, 0.0] }, [1, 2], [1.0, 0.0]),
+        ],
+        drivers: vec![Driver { joint: 0, reference: 0.0 }, Driver { joint: 1, reference: 0.0 }],
+        gravity: [0.0, -9.81],
+    }
+}

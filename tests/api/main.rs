@@ -30,6 +30,7 @@ mod robot_arm;
 mod rotor;
 mod security;
 mod seed_exams;
+mod stiff;
 mod storage;
 mod student;
 mod templates;

@@ -5,3 +5,4 @@ mod elliptic;
 mod kinetostatics;
 mod mechanism_dynamics;
 mod rotor;
+mod stiff;

@@ -80,16 +80,22 @@ pub struct DynamicsRequest {
 
 /// `dopri5`: Dormand–Prince 5(4), 6 evaluations a step; `dop853`: Hairer's
 /// DOP853, order 8, 15 evaluations a step and far fewer steps at tight
-/// tolerances and over long smooth runs; `auto`: in the reduced form DOP853
-/// at a tolerance of 1e-5 or less, Dormand–Prince above; for a `machine`
-/// Dormand–Prince (its accelerations jump near singular positions, where a
-/// high order gains nothing). See docs/BENCHMARKS.md.
+/// tolerances and over long smooth runs; `radau5`: Radau IIA, order 5,
+/// implicit, for stiff models (a stiff spring): its steps follow the slow
+/// motion and damp a mode far faster than it; `auto`: in the reduced form
+/// DOP853 at a tolerance of 1e-5 or less, Dormand–Prince above; for a
+/// `machine` Dormand–Prince (its accelerations jump near singular
+/// positions, where a high order gains nothing); either, finding its steps
+/// held by stability (15 steps beyond its stability interval), hands the
+/// run to `radau5` from the start (`accuracy.stiff_at` says when). See
+/// docs/BENCHMARKS.md.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum IntegratorChoice {
     Auto,
     Dopri5,
     Dop853,
+    Radau5,
 }
 
 impl IntegratorChoice {
@@ -98,6 +104,7 @@ impl IntegratorChoice {
             Self::Auto => None,
             Self::Dopri5 => Some(Integrator::Dopri5),
             Self::Dop853 => Some(Integrator::Dop853),
+            Self::Radau5 => Some(Integrator::Radau5),
         }
     }
 }
@@ -107,6 +114,7 @@ impl From<Integrator> for IntegratorChoice {
         match i {
             Integrator::Dopri5 => Self::Dopri5,
             Integrator::Dop853 => Self::Dop853,
+            Integrator::Radau5 => Self::Radau5,
         }
     }
 }
@@ -224,7 +232,7 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
                  in LU, rows of Φ_q within 1e-5 of dependence held at singular positions, \
                  dependent ones dropped; events by Brent's method on the dense output; \
                  work as the integrated power",
-                s.solution.integrator.name()
+                result::integrator_text(&s.solution)
             );
             if let Some(t) = s.near_singular.first() {
                 result.warnings.push(format!(

@@ -54,8 +54,14 @@ pub struct DynamicsAccuracy {
     /// removed by the projection after a step.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub constraint_drift: Option<f64>,
-    /// The Runge–Kutta pair that integrated (`dopri5` or `dop853`).
+    /// The Runge–Kutta method that integrated (`dopri5`, `dop853` or `radau5`).
     pub integrator: IntegratorChoice,
+    /// Chosen automatically, the explicit pair found the model stiff (its
+    /// steps held by stability, not accuracy) at this time, s, and the run
+    /// was made again from the start with Radau IIA; `steps` and
+    /// `function_evaluations` count both runs.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stiff_at: Option<f64>,
     /// Mechanism form: whether the energy T + V was held to its initial
     /// value throughout (see `machine.conserve_energy`): false where the
     /// loads have no potential, where the hold was turned off, and where a
@@ -133,17 +139,30 @@ impl From<DynamicsSolution> for DynamicsResult {
                 function_evaluations: s.evaluations,
                 constraint_drift: None,
                 integrator: s.integrator.into(),
+                stiff_at: s.stiff_at,
                 energy_conserved: None,
                 energy_held_steps: None,
                 method: format!(
                     "{} with dense output, events located by Brent's method on it; \
                      work by adaptive quadrature over the angle",
-                    s.integrator.name()
+                    integrator_text(&s)
                 ),
             },
             machine: None,
             warnings: s.stopped.into_iter().collect(),
         }
+    }
+}
+
+/// The integrator's name, and why it was chosen when an explicit pair handed over.
+pub(super) fn integrator_text(s: &DynamicsSolution) -> String {
+    match s.stiff_at {
+        Some(t) => format!(
+            "{} (the explicit pair chosen first found the model stiff at t = {t:.3e} s: its steps were held \
+             by stability, not accuracy; the run was made again from the start)",
+            s.integrator.name()
+        ),
+        None => s.integrator.name().to_string(),
     }
 }
 

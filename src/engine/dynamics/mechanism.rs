@@ -182,7 +182,8 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         energy_residual: energy_residual(work, dae.kinetic(&first[n..2 * n]), dae.kinetic(&last[n..2 * n])),
         steps: run.attempted,
         evaluations: run.evaluations,
-        integrator: settings.integrator,
+        integrator: run.integrator,
+        stiff_at: run.stiff_at,
         estimated_error: (0..n / 3).map(|b| run.local_errors[3 * b + 2]).fold(0.0, f64::max),
         stopped: run.stopped,
     };
@@ -239,7 +240,7 @@ fn settings(p: &MechanismProblem, q: &[f64], qd: &[f64], length: f64) -> Setting
     let mut atol: Vec<f64> = (0..2 * n).map(|k| rtol * scale(k)).collect();
     atol.push(f64::INFINITY);
     let integrator = p.integrator.unwrap_or_else(|| Integrator::auto(p.tolerance, false));
-    Settings { end: p.end, rtol, atol, integrator, deadline: p.deadline }
+    Settings { end: p.end, rtol, atol, integrator, automatic: p.integrator.is_none(), deadline: p.deadline }
 }
 
 /// The energy T + V to hold, when asked or by default and the loads have a potential.

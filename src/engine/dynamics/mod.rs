@@ -2,9 +2,12 @@
 //!
 //! Two models share one driver of the integration ([`run`]): the reduced
 //! 1-DOF equation ([`reduced`]) and a planar mechanism of any DOF in
-//! dependent coordinates ([`mechanism`]). It steps with one of two explicit
-//! Runge–Kutta pairs with dense output ([`Integrator`]): Dormand–Prince
-//! 5(4), or Hairer's DOP853 (order 8) for tight tolerances and long runs.
+//! dependent coordinates ([`mechanism`]). It steps with one of three
+//! Runge–Kutta methods with dense output ([`Integrator`]): Dormand–Prince
+//! 5(4), Hairer's DOP853 (order 8) for tight tolerances and long runs, or
+//! the implicit Radau IIA (order 5) for stiff models. Chosen automatically,
+//! an explicit pair that finds its steps held by stability (a stiff spring)
+//! hands the run to Radau IIA, started again from t = 0.
 //! Events — every multiple of 2π the first input coordinate φ crosses, in
 //! either direction, and the end angle — are located on the dense output by
 //! Brent's method, not at the nearest step. A run ends at its duration, at
@@ -22,12 +25,13 @@ mod rows;
 pub use reduced::{ReducedProblem, solve};
 
 use super::numeric::dop853::Dp853;
-use super::numeric::ode::{Dp5, Explicit, Pair, Step};
+use super::numeric::ode::{Dp5, Explicit, Step, Stepper};
+use super::numeric::radau::Radau5;
 use super::numeric::roots::brent;
 use crate::engine::Deadline;
 use std::f64::consts::PI;
 
-/// The Runge–Kutta pair that integrates.
+/// The Runge–Kutta method that integrates.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Integrator {
     /// Dormand–Prince 5(4): 6 evaluations a step, 4th-order dense output.
@@ -35,6 +39,9 @@ pub enum Integrator {
     /// DOP853, order 8: 12 evaluations a step and 3 for its 7th-order dense
     /// output, far fewer steps at tight tolerances.
     Dop853,
+    /// Radau IIA, order 5, implicit (Newton on its three stages, J by
+    /// differences): steps sized by the slow motion of a stiff model.
+    Radau5,
 }
 
 impl Integrator {
@@ -52,6 +59,7 @@ impl Integrator {
         match self {
             Self::Dopri5 => "Dormand-Prince 5(4)",
             Self::Dop853 => "DOP853 (order 8, 7th-order dense output)",
+            Self::Radau5 => "Radau IIA (order 5, implicit, for stiff models)",
         }
     }
 }
@@ -108,6 +116,10 @@ pub struct DynamicsSolution {
     pub steps: usize,
     pub evaluations: usize,
     pub integrator: Integrator,
+    /// Chosen automatically, the explicit pair found the model stiff at
+    /// this time and the run was made again with Radau IIA (the steps and
+    /// evaluations count both runs).
+    pub stiff_at: Option<f64>,
     /// Σ over the steps of the local error estimate of the angle (rad; for a
     /// mechanism the largest over its bodies' angles): a first-order
     /// estimate of the global error that ignores its growth or decay.
@@ -154,6 +166,9 @@ pub(crate) struct Settings {
     pub rtol: f64,
     pub atol: Vec<f64>,
     pub integrator: Integrator,
+    /// The integrator was chosen, not asked for: an explicit one that finds
+    /// the model stiff hands over to Radau IIA.
+    pub automatic: bool,
     /// The job's compute budget, read after every step and before every
     /// evaluation of dy/dt (an evaluation after it answers NaN, so the step
     /// in progress ends at once).
@@ -172,26 +187,51 @@ pub(crate) struct Run {
     pub drift: f64,
     /// Σ of the local error estimates of each state component.
     pub local_errors: Vec<f64>,
+    /// The method that made the run, and when an explicit one found the model stiff.
+    pub integrator: Integrator,
+    pub stiff_at: Option<f64>,
 }
 
 const MAX_STEPS: usize = 2_000_000;
 
-/// Integrates the model from y₀ at t = 0 until the end condition.
+/// Integrates the model from y₀ at t = 0 until the end condition; a run
+/// the explicit pair finds stiff is made again with Radau IIA when the
+/// pair was chosen automatically.
 pub(crate) fn run(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Run, DynamicsError> {
-    match s.integrator {
-        Integrator::Dopri5 => drive::<Dp5>(model, y0, s),
-        Integrator::Dop853 => drive::<Dp853>(model, y0, s),
+    let first = match s.integrator {
+        Integrator::Dopri5 => drive::<Explicit<Dp5>>(model, y0.clone(), s)?,
+        Integrator::Dop853 => drive::<Explicit<Dp853>>(model, y0.clone(), s)?,
+        Integrator::Radau5 => drive::<Radau5>(model, y0.clone(), s)?,
+    };
+    match first {
+        Ok(run) => Ok(run),
+        Err(Handover { t, attempted, evaluations }) => {
+            let mut run = drive::<Radau5>(model, y0, &Settings { integrator: Integrator::Radau5, ..s.clone() })?
+                .unwrap_or_else(|_| unreachable!("Radau IIA does not hand over"));
+            run.stiff_at = Some(t);
+            run.attempted += attempted;
+            run.evaluations += evaluations;
+            Ok(run)
+        }
     }
 }
 
-fn drive<P: Pair>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Run, DynamicsError> {
+/// Where an automatically chosen explicit pair found the model stiff, and
+/// what it had spent.
+struct Handover {
+    t: f64,
+    attempted: usize,
+    evaluations: usize,
+}
+
+/// The run with the stepper S, or the handover to Radau IIA.
+fn drive<S: Stepper>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Result<Run, Handover>, DynamicsError> {
     let deadline = s.deadline;
     let mut f = |t: f64, y: &[f64], dy: &mut [f64]| {
         if deadline.expired() { dy.fill(f64::NAN) } else { model.rhs(t, y, dy) }
     };
-    let over =
-        |ode: &Explicit<P>| DynamicsError::Budget { seconds: deadline.seconds(), t: ode.t(), steps: ode.accepted };
-    let mut ode = Explicit::<P>::new(&mut f, 0.0, y0, s.rtol, s.atol.clone(), f64::INFINITY);
+    let over = |ode: &S| DynamicsError::Budget { seconds: deadline.seconds(), t: ode.time(), steps: ode.counts()[0] };
+    let mut ode = S::start(&mut f, 0.0, y0, s.rtol, s.atol.clone());
     let (mut steps, mut events, mut stopped, mut drift) = (Vec::new(), Vec::new(), None, 0.0f64);
     let t_end = loop {
         if deadline.expired() {
@@ -201,7 +241,11 @@ fn drive<P: Pair>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Run,
         if deadline.expired() {
             return Err(over(&ode));
         }
-        let step = step.map_err(|e| DynamicsError::Integration { t: ode.t(), reason: e.to_string() })?;
+        let step = step.map_err(|e| DynamicsError::Integration { t: ode.time(), reason: e.to_string() })?;
+        if s.automatic && ode.stiff() {
+            let [accepted, rejected, evaluations] = ode.counts();
+            return Ok(Err(Handover { t: step.t1, attempted: accepted + rejected, evaluations }));
+        }
         // φ at both ends of the step, evaluated once: for a mechanism each
         // evaluation assembles the constraints.
         let span = (model.angle(&step.y0), model.angle(&step.y1));
@@ -218,16 +262,19 @@ fn drive<P: Pair>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Run,
         steps.push(step);
     };
     events.retain(|e| e.kind == EventKind::End || e.t <= t_end);
-    Ok(Run {
+    let [accepted, rejected, evaluations] = ode.counts();
+    Ok(Ok(Run {
         steps,
         events,
         t_end,
         stopped,
-        attempted: ode.accepted + ode.rejected,
-        evaluations: ode.evaluations,
+        attempted: accepted + rejected,
+        evaluations,
         drift,
-        local_errors: ode.local_errors.clone(),
-    })
+        local_errors: ode.local_errors().to_vec(),
+        integrator: s.integrator,
+        stiff_at: None,
+    }))
 }
 
 /// Multiples of 2π crossed during the step, in either direction.

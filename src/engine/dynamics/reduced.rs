@@ -107,7 +107,8 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
     let rtol = (0.01 * p.tolerance).clamp(1e-13, 1e-4);
     let atol = rtol * p.speed0.abs().max(1.0);
     let integrator = p.integrator.unwrap_or_else(|| Integrator::auto(p.tolerance, true));
-    let settings = Settings { end: p.end, rtol, atol: vec![atol; 3], integrator, deadline: p.deadline };
+    let automatic = p.integrator.is_none();
+    let settings = Settings { end: p.end, rtol, atol: vec![atol; 3], integrator, automatic, deadline: p.deadline };
     let run = run(&model, vec![p.angle0, p.speed0, 0.0], &settings)?;
     let mut dy = [0.0; 3];
     let t0 = p.kinetic(p.angle0, p.speed0);
@@ -146,7 +147,8 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
         events: run.events,
         steps: run.attempted,
         evaluations: run.evaluations,
-        integrator,
+        integrator: run.integrator,
+        stiff_at: run.stiff_at,
         estimated_error: run.local_errors[0],
         stopped: run.stopped,
     })
