@@ -189,35 +189,6 @@ async fn machine_form_errors_point_at_the_field() {
     assert!(r.text.contains("2 degree(s) of freedom"), "{}", r.text);
 }
 
-/// A stiff spring (IFToMM A05-like: k = 10¹⁰ N/m on a 1 kg pendulum bob, a
-/// mode at 10⁵ rad/s an explicit method must resolve) over 100 s: with the
-/// service's job budget set to 0.3 s the job is stopped and answered 422
-/// with the reason, and nothing is stored.
-#[tokio::test]
-async fn a_job_over_its_compute_budget_is_stopped_with_the_reason() {
-    let app = TestApp::with_job_budget(std::time::Duration::from_millis(300)).await;
-    let body = json!({
-        "machine": {
-            "mechanism": {
-                "bodies": [{"name": "bob", "mass": 1, "inertia": 0.01, "cg": [1, 0]}],
-                "joints": [{"name": "O", "type": "revolute", "bodies": ["ground", "bob"], "at": [0, 0]}],
-                "gravity": [0, -9.81]
-            },
-            "input": {"joint": "O"},
-            "loads": [{"type": "spring", "a": ["bob", [1, 0]], "b": ["ground", [2, 0]], "stiffness": "1e10 N/m", "free_length": 0.9}]
-        },
-        "duration": "100 s"
-    });
-    let r = app.post("/v1/dynamics", &body).await;
-    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
-    assert_eq!(r.content_type, "application/problem+json");
-    assert_eq!(r.json()["type"], "/problems/compute-budget", "{}", r.text);
-    let message = r.json()["detail"].as_str().unwrap().to_string();
-    assert!(message.contains("compute budget of 0.3 s"), "{message}");
-    let list = app.get("/v1/jobs").await.json();
-    assert!(list["items"].as_array().unwrap().is_empty(), "{list}");
-}
-
 /// The integrator and the energy hold: chosen (`auto`: DOP853 in the reduced
 /// form at 1e-9, Dormand–Prince above 1e-5 and for a machine), asked for,
 /// reported, and either pair reaching D1's closed-form turn times (1e-9

@@ -1,28 +1,20 @@
-//! A stiff model through the service: the automatic integrator hands over
-//! to Radau IIA and says so.
+//! A stiff spring through the service: where its ringing is part of the
+//! answer the job meets its budget with the reason; where the tolerance
+//! lets it go, the automatic integrator hands over to Radau IIA and says so.
+//!
+//! The machine (IFToMM A05-like): the pendulum's bob (1 kg at 1 m) tied to
+//! the ground at (2, 0) by a spring of 10¹⁰ N/m and free length 0.9 m.
+//! About θ = 0 the spring's stiffness in θ is k·(d − l₀)·d″ = 0.2k, so
+//! gravity's −9.81 N·m holds the bob at θₑ = −9.81/(0.2k) = −4.905 nrad
+//! (closed form), and from rest at 0 it rings about θₑ at 4.5·10⁴ rad/s
+//! with a speed of 2.2e-4 rad/s.
 
 use crate::helpers::TestApp;
 use axum::http::StatusCode;
 use serde_json::{Value, json};
 
-/// The pendulum's bob (1 kg at 1 m) tied to the ground at (2, 0) by a
-/// spring of 10¹⁰ N/m and free length 0.9 m (IFToMM A05-like; the same
-/// machine as tests/api/dynamics.rs's budget test). About θ = 0 the
-/// spring's stiffness in θ is k·(d − l₀)·d″ = 0.2k, so gravity's
-/// −9.81 N·m holds the bob at θₑ = −9.81/(0.2k) = −4.905 nrad (closed
-/// form), and from rest at 0 it rings about θₑ at 4.5·10⁴ rad/s. At the
-/// default tolerance that ringing (2.2e-4 rad/s) is part of the answer and
-/// must be followed: the budget test. At tolerance 1e-3 it is not:
-/// posted with the integrator left to `auto`, Dormand–Prince finds its
-/// steps held by stability and hands over to Radau IIA, which damps the
-/// ringing in a few steps and finishes the 100 s at once; the answer is
-/// 201 with `accuracy.integrator` `radau5`, `accuracy.stiff_at` (within
-/// the first 10 ms), the method text saying why, and every sample between
-/// 0 and 2θₑ, the last half at θₑ to 1e-10 rad (2 %; measured 1.2e-11).
-#[tokio::test]
-async fn a_stiff_spring_is_handed_to_radau_and_reported() {
-    let app = TestApp::new().await;
-    let body = json!({
+fn bob_on_a_stiff_spring(tolerance: Option<f64>) -> Value {
+    let mut body = json!({
         "machine": {
             "mechanism": {
                 "bodies": [{"name": "bob", "mass": 1, "inertia": 0.01, "cg": [1, 0]}],
@@ -32,10 +24,45 @@ async fn a_stiff_spring_is_handed_to_radau_and_reported() {
             "input": {"joint": "O"},
             "loads": [{"type": "spring", "a": ["bob", [1, 0]], "b": ["ground", [2, 0]], "stiffness": "1e10 N/m", "free_length": 0.9}]
         },
-        "duration": "100 s",
-        "tolerance": 1e-3
+        "duration": "100 s"
     });
-    let r = app.post("/v1/dynamics", &body).await;
+    if let Some(t) = tolerance {
+        body["tolerance"] = json!(t);
+    }
+    body
+}
+
+/// At the default tolerance the ringing is part of the answer and every
+/// method must follow it (the explicit pair's steps are held by accuracy,
+/// not stability, so it does not hand over): with the service's job budget
+/// set to 0.3 s the job is stopped and answered 422 with the reason, and
+/// nothing is stored.
+#[tokio::test]
+async fn a_job_over_its_compute_budget_is_stopped_with_the_reason() {
+    let app = TestApp::with_job_budget(std::time::Duration::from_millis(300)).await;
+    let r = app.post("/v1/dynamics", &bob_on_a_stiff_spring(None)).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert_eq!(r.content_type, "application/problem+json");
+    assert_eq!(r.json()["type"], "/problems/compute-budget", "{}", r.text);
+    let message = r.json()["detail"].as_str().unwrap().to_string();
+    assert!(message.contains("compute budget of 0.3 s"), "{message}");
+    let list = app.get("/v1/jobs").await.json();
+    assert!(list["items"].as_array().unwrap().is_empty(), "{list}");
+}
+
+/// At tolerance 1e-3 the ringing is below the tolerance (its 2.2e-4 rad/s
+/// against 1e-3·Ω = 3.1e-3 rad/s, Ω = √(g/L) the speed scale; at the
+/// default 1e-9 it is far above): posted with the
+/// integrator left to `auto`, Dormand–Prince finds its steps held by
+/// stability and hands over to Radau IIA, which damps the ringing in a few
+/// steps and finishes the 100 s at once (61 steps, measured); the answer
+/// is 201 with `accuracy.integrator` `radau5`, `accuracy.stiff_at` (within
+/// the first 10 ms), the method text saying why, and every sample between
+/// 0 and 2θₑ, the last half at θₑ to 1e-10 rad (2 %; measured 1.2e-11).
+#[tokio::test]
+async fn a_stiff_spring_is_handed_to_radau_and_reported() {
+    let app = TestApp::new().await;
+    let r = app.post("/v1/dynamics", &bob_on_a_stiff_spring(Some(1e-3))).await;
     assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
     let result = &r.json()["result"];
     let accuracy = &result["accuracy"];

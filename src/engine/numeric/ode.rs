@@ -227,13 +227,8 @@ impl<P: Pair> Explicit<P> {
     /// Takes one accepted step (retrying with smaller steps as needed).
     pub fn step(&mut self, f: &mut impl Rhs, max_steps: usize) -> Result<Step, OdeError> {
         loop {
-            if self.accepted + self.rejected >= max_steps {
-                return Err(OdeError::TooManySteps { steps: max_steps });
-            }
             let h = self.h;
-            if h.abs() <= 8.0 * f64::EPSILON * self.t.abs().max(1e-300) {
-                return Err(OdeError::StepTooSmall { t: self.t });
-            }
+            can_step(self.accepted + self.rejected, max_steps, self.t, h)?;
             self.stages(f, h, 1..P::STAGES);
             let finite = self.ys.iter().chain(self.k[P::STAGES - 1].iter()).all(|v| v.is_finite());
             if !finite {
@@ -375,6 +370,18 @@ impl Pair for Dp5 {
         let r4: Vec<f64> = (0..n).map(|i| h * (0..7).map(|j| D[j] * k[j][i]).sum::<f64>()).collect();
         vec![ydiff, bspl, r3, r4]
     }
+}
+
+/// Another attempt at (t, h) is allowed: fewer than `max_steps` attempts
+/// so far and h above the rounding of t.
+pub(super) fn can_step(attempts: usize, max_steps: usize, t: f64, h: f64) -> Result<(), OdeError> {
+    if attempts >= max_steps {
+        return Err(OdeError::TooManySteps { steps: max_steps });
+    }
+    if h.abs() <= 8.0 * f64::EPSILON * t.abs().max(1e-300) {
+        return Err(OdeError::StepTooSmall { t });
+    }
+    Ok(())
 }
 
 fn rms(v: impl ExactSizeIterator<Item = f64>) -> f64 {

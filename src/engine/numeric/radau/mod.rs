@@ -16,7 +16,7 @@
 //! stiff mode); the dense output is the collocation polynomial through
 //! y and the three stages.
 
-use super::ode::{OdeError, Rhs, Step, Stepper};
+use super::ode::{OdeError, Rhs, Step, Stepper, can_step};
 use nalgebra::{Complex, DMatrix, DVector, Dyn, linalg::LU};
 use newton::{newton_tolerance, rms3};
 
@@ -123,13 +123,8 @@ impl Stepper for Radau5 {
         let mut not_finite = 0;
         let mut rejected_here = false;
         loop {
-            if self.accepted + self.rejected >= max_steps {
-                return Err(OdeError::TooManySteps { steps: max_steps });
-            }
             let h = self.h;
-            if h.abs() <= 8.0 * f64::EPSILON * self.t.abs().max(1e-300) {
-                return Err(OdeError::StepTooSmall { t: self.t });
-            }
+            can_step(self.accepted + self.rejected, max_steps, self.t, h)?;
             if self.lu.is_none() {
                 self.lu = self.factor(h);
             }
