@@ -335,6 +335,36 @@ fn a_stiff_spring_runs_out_of_its_budget_with_the_reason() {
     }
 }
 
+/// A massless arm pinned at O carrying a point mass on a second arm pinned
+/// at A, the two in line at the start: turning them opposite ways (the
+/// elbow) moves the mass only radially, to first order not at all, so the
+/// mass matrix is singular on the mechanism's motions. Answered at once
+/// that the start is singular (it used to spend the whole budget halving
+/// steps on a non-finite q̈).
+#[test]
+fn a_start_whose_motions_move_no_mass_is_refused_at_once() {
+    let body = |name: &str, mass: f64, cg: [f64; 2]| Body { name: name.into(), mass, inertia: 0.0, cg };
+    let revolute = |name: &str, bodies: [usize; 2], at: [f64; 2]| Joint {
+        name: name.into(),
+        kind: JointKind::Revolute,
+        bodies,
+        at,
+        friction: None,
+    };
+    let m = Mechanism {
+        bodies: vec![body("ground", 0.0, [0.0, 0.0]), body("arm", 0.0, [0.5, 0.0]), body("bob", 1.0, [2.0, 0.0])],
+        joints: vec![revolute("O", [0, 1], [0.0, 0.0]), revolute("A", [1, 2], [1.0, 0.0])],
+        drivers: vec![Driver { joint: 0, reference: 0.0 }, Driver { joint: 1, reference: 0.0 }],
+        gravity: [0.0, -9.81],
+    };
+    let mut p = problem(m, Vec::new(), vec![[0.0, 0.0]; 2], End::Duration(1.0));
+    p.deadline = Deadline::after(std::time::Duration::from_secs(5));
+    match solve(&p) {
+        Err(DynamicsError::Initial { reason }) => assert!(reason.contains("singular at the start"), "{reason}"),
+        other => panic!("expected the start to be refused: {other:?}"),
+    }
+}
+
 /// A mechanism whose budget is spent before it starts answers that the
 /// budget ran out (not that its start cannot be assembled).
 #[test]

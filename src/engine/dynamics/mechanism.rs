@@ -154,6 +154,13 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         energy,
         energy_held: Default::default(),
     };
+    if dae.motion(0.0, &start.q, &start.qd, false).is_none() {
+        return Err(initial(
+            "the equations of motion are singular at the start: some motion of the inputs moves no mass \
+             (bodies without mass or inertia where the motion needs them)"
+                .into(),
+        ));
+    }
     let settings = settings(p, &start.q, &start.qd, length);
     let mut y0 = start.q.clone();
     y0.extend(&start.qd);
