@@ -6,7 +6,7 @@
 //! tests/engine uses too.
 
 #[path = "../../tests/engine/elliptic.rs"]
-mod elliptic;
+pub mod elliptic;
 
 use crate::{INTEGRATORS, Point, fixture, timed};
 use elliptic::{complete_k, sn};
@@ -49,7 +49,11 @@ fn a01(tolerance: f64, integrator: &str, energy: bool) -> Point {
 pub fn points() -> Vec<Point> {
     let mut points = Vec::new();
     for integrator in INTEGRATORS {
-        points.extend(TOLERANCES.iter().map(|t| a01(*t, integrator, true)));
+        // Radau IIA's error estimate is of order 3, and this non-stiff problem is not its work: at 1e-6
+        // it takes 2.2 M steps (3.3 s, and the heap they leave slowed the sections measured after it by
+        // ~30 %), at 1e-8 it runs out of the 20 s budget at t = 843 s (measured).
+        let tolerances = TOLERANCES.iter().filter(|t| integrator != "radau5" || **t >= 1e-4);
+        points.extend(tolerances.map(|t| a01(*t, integrator, true)));
     }
     points.extend(TOLERANCES.iter().map(|t| a01(*t, "dop853", false)));
     points
