@@ -79,3 +79,34 @@ async fn a_stiff_spring_is_handed_to_radau_and_reported() {
         }
     }
 }
+
+/// The reduced form can be stiff too: I* = 1 kg·m² driven by 10 N·m
+/// against a viscous torque of 10⁶ N·m·s·ω, from rest. The speed settles
+/// at ω∞ = 10⁻⁵ rad/s within microseconds (λ = −10⁶ s⁻¹), then φ grows
+/// slowly: φ(t) = ω∞·(t − (1 − e^{−10⁶t})/10⁶), ω(t) = ω∞·(1 − e^{−10⁶t})
+/// (closed form). Over 100 s with the integrator left to `auto` (DOP853 at
+/// the default tolerance), the pair hands over to Radau IIA, and every
+/// sample's angle and speed are the closed form's to 1e-9 of ω∞·t and ω∞.
+#[tokio::test]
+async fn the_reduced_form_hands_a_stiff_run_over_too() {
+    let app = TestApp::new().await;
+    let body = json!({
+        "torques": [{"name": "motor against a viscous brake", "value": {"expr": "10 - 1e6*omega"}}],
+        "reduced_inertia": 1,
+        "initial": {"angle": 0, "speed": 0},
+        "duration": "100 s"
+    });
+    let r = app.post("/v1/dynamics", &body).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let result = &r.json()["result"];
+    assert_eq!(result["accuracy"]["integrator"], "radau5", "{}", result["accuracy"]);
+    assert!(result["accuracy"]["stiff_at"].is_f64(), "{}", result["accuracy"]);
+    let w = 1e-5;
+    for s in result["samples"].as_array().unwrap() {
+        let t = s["t"].as_f64().unwrap();
+        let decay = (-1e6 * t).exp();
+        let (angle, speed) = (w * (t - (1.0 - decay) / 1e6), w * (1.0 - decay));
+        assert!((s["angle"].as_f64().unwrap() - angle).abs() <= 1e-9 * w * t.max(1e-6), "t = {t}: {s}");
+        assert!((s["speed"].as_f64().unwrap() - speed).abs() <= 1e-9 * w, "t = {t}: {s}");
+    }
+}
