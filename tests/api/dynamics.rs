@@ -37,6 +37,8 @@ async fn d1_scotch_yoke_start_up_through_the_api() {
     assert_eq!(events.last().unwrap()["kind"], "end");
     let difference = job["result"]["accuracy"]["energy_form_time_difference"].as_f64().unwrap();
     assert!(difference < 1e-9, "{difference}");
+    // Actions of φ only: their work is a quadrature over the angle (the brake of tests/api/stiff.rs, of ω: the integrated power).
+    assert!(job["result"]["accuracy"]["method"].as_str().unwrap().ends_with("by adaptive quadrature over the angle"));
     assert!(job["result"]["energy_residual"].as_f64().unwrap().abs() < 1e-9);
     let r = app.post("/v1/dynamics", &d1(json!({"duration": "1 s", "samples": 21}))).await;
     let samples = r.json()["result"]["samples"].as_array().unwrap().clone();

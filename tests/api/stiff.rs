@@ -101,6 +101,8 @@ async fn the_reduced_form_hands_a_stiff_run_over_too() {
     let result = &r.json()["result"];
     assert_eq!(result["accuracy"]["integrator"], "radau5", "{}", result["accuracy"]);
     assert!(result["accuracy"]["stiff_at"].is_f64(), "{}", result["accuracy"]);
+    // The torque depends on ω: its work is the integrated power, not a quadrature over φ.
+    assert!(result["accuracy"]["method"].as_str().unwrap().ends_with("work as the integrated power"), "{}", r.text);
     let w = 1e-5;
     for s in result["samples"].as_array().unwrap() {
         let t = s["t"].as_f64().unwrap();

@@ -143,9 +143,13 @@ impl From<DynamicsSolution> for DynamicsResult {
                 energy_conserved: None,
                 energy_held_steps: None,
                 method: format!(
-                    "{} with dense output, events located by Brent's method on it; \
-                     work by adaptive quadrature over the angle",
-                    integrator_text(&s)
+                    "{} with dense output, events located by Brent's method on it; work {}",
+                    integrator_text(&s),
+                    if s.work_by_quadrature {
+                        "by adaptive quadrature over the angle"
+                    } else {
+                        "as the integrated power"
+                    }
                 ),
             },
             machine: None,

@@ -186,6 +186,7 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         samples,
         events: run.events,
         energy_times: Vec::new(),
+        work_by_quadrature: false,
         energy_residual: energy_residual(work, dae.kinetic(&first[n..2 * n]), dae.kinetic(&last[n..2 * n])),
         steps: run.attempted,
         evaluations: run.evaluations,

@@ -113,6 +113,9 @@ pub struct DynamicsSolution {
     pub energy_times: Vec<Option<f64>>,
     /// (W − ΔT)/max(|W|, |ΔT|, T₀, T_end).
     pub energy_residual: f64,
+    /// W by quadrature over the angle (the reduced form's actions of φ
+    /// only); else the integrated power.
+    pub work_by_quadrature: bool,
     pub steps: usize,
     pub evaluations: usize,
     pub integrator: Integrator,

@@ -143,6 +143,7 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
     Ok(DynamicsSolution {
         samples,
         energy_times,
+        work_by_quadrature: position_only,
         energy_residual: energy_residual(w, p.kinetic(first.angle, first.speed), p.kinetic(last.angle, last.speed)),
         events: run.events,
         steps: run.attempted,
