@@ -204,10 +204,10 @@ impl Radau5 {
     fn error(&mut self, f: &mut impl Rhs, h: f64, z: &Stages, scale: &[f64], again: bool) -> (Vec<f64>, f64) {
         let n = self.y.len();
         let ze: Vec<f64> = (0..n).map(|i| (0..3).map(|s| E[s] * z[s][i]).sum::<f64>() / h).collect();
-        let lu_real = self.lu.as_ref().expect("factored").0.clone();
+        let lu = self.lu.take().expect("factored");
         let solve = |rhs: &[f64]| {
             let mut v = DVector::from_fn(n, |i, _| rhs[i] + ze[i]);
-            lu_real.solve_mut(&mut v);
+            lu.0.solve_mut(&mut v);
             v.as_slice().to_vec()
         };
         let norm = |e: &[f64]| rms3(&[e.to_vec()], scale);
@@ -221,6 +221,7 @@ impl Radau5 {
             estimate = solve(&fe);
             err = norm(&estimate);
         }
+        self.lu = Some(lu);
         (estimate, err)
     }
 
