@@ -373,8 +373,12 @@ impl Pair for Dp5 {
 }
 
 /// Another attempt at (t, h) is allowed: fewer than `max_steps` attempts
-/// so far and h above the rounding of t.
+/// so far and h finite and above the rounding of t (a step size from a
+/// non-finite f at the start is NaN, which no comparison stops).
 pub(super) fn can_step(attempts: usize, max_steps: usize, t: f64, h: f64) -> Result<(), OdeError> {
+    if !h.is_finite() {
+        return Err(OdeError::NotFinite { t });
+    }
     if attempts >= max_steps {
         return Err(OdeError::TooManySteps { steps: max_steps });
     }
@@ -414,6 +418,17 @@ pub(super) fn oscillator<P: Pair>(omega: f64, t_end: f64, rtol: f64) -> (f64, Ex
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// f not finite at the start makes the first step size NaN: the first
+    /// attempt says so (it used to be retried at h·¼ = NaN until half the
+    /// attempts allowed were spent).
+    #[test]
+    fn a_derivative_not_finite_at_the_start_is_an_error_at_once() {
+        let mut f = |_t: f64, _y: &[f64], dy: &mut [f64]| dy[0] = f64::NAN;
+        let mut s = Dopri5::new(&mut f, 0.0, vec![1.0], 1e-6, vec![1e-8], f64::INFINITY);
+        assert_eq!(s.step(&mut f, 100_000).unwrap_err(), OdeError::NotFinite { t: 0.0 });
+        assert_eq!(s.rejected, 0);
+    }
 
     /// x'' = −4x over 6.6 s at rtol 1e-11: cos 2t to 1e-9 (steps and dense output).
     #[test]
