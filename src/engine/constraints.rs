@@ -206,8 +206,9 @@ pub fn evaluate(m: &Mechanism, s: &State) -> System {
 /// it has held this mechanism's system).
 pub fn evaluate_into(m: &Mechanism, s: &State, sys: &mut System) {
     let (rows, n) = (n_rows(m), m.n_coordinates());
+    // (Over the storage: nalgebra's `fill` goes entry by entry, the most of an evaluation.)
     if sys.jacobian.shape() == (rows, n) {
-        sys.jacobian.fill(0.0);
+        sys.jacobian.as_mut_slice().fill(0.0);
     } else {
         sys.jacobian = DMatrix::zeros(rows, n);
     }
@@ -233,7 +234,7 @@ pub fn evaluate_gamma(m: &Mechanism, s: &State, sys: &mut System) {
 /// `v` as `rows` zeros, in its own storage where it has that length.
 fn zeroed(v: &mut DVector<f64>, rows: usize) {
     if v.len() == rows {
-        v.fill(0.0);
+        v.as_mut_slice().fill(0.0);
     } else {
         *v = DVector::zeros(rows);
     }

@@ -90,7 +90,9 @@ pub fn point_motion(m: &Mechanism, q: &[f64], qd: &[f64], (b, p): (BodyId, [f64;
 /// Adds to Q a force f at point `at` (reference coordinates) of body b, plus a couple.
 pub fn add_force(m: &Mechanism, q: &[f64], qv: &mut [f64], b: BodyId, at: [f64; 2], f: [f64; 2], couple: f64) {
     if let Some(c) = m.column(b) {
-        let arm = rotate(q[c + 2], m.local(b, at));
+        // At G (gravity, a body's coordinates' own point) the arm is zero: no turn to compute.
+        let s = m.local(b, at);
+        let arm = if s == [0.0, 0.0] { s } else { rotate(q[c + 2], s) };
         qv[c] += f[0];
         qv[c + 1] += f[1];
         qv[c + 2] += cross(arm, f) + couple;
