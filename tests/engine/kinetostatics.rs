@@ -7,7 +7,7 @@
 use mechdyn::engine::Deadline;
 use mechdyn::engine::expr::Expr;
 use mechdyn::engine::function::Function;
-use mechdyn::engine::kinetostatics::{Load, Outputs, Step, solve};
+use mechdyn::engine::kinetostatics::{Load, Outputs, Step, solve, solve_each};
 use mechdyn::engine::samples::offset_slider_crank;
 use serde_json::Value;
 
@@ -109,12 +109,41 @@ fn k1_cycle_mean_and_rms_torque_and_the_virtual_power_residual() {
     let positions: Vec<Vec<[f64; 3]>> =
         (0..n).map(|k| vec![[2.0 * std::f64::consts::PI * k as f64 / n as f64, 150.0, 0.0]]).collect();
     let solution = solve(&offset_slider_crank(), &gas_force(), &positions, all(), &Deadline::none()).unwrap();
-    let s = &solution.summary;
+    let s = &solution.totals.summary;
     close(s.mean_driving[0], c["expected"]["cycle_mean_torque_Nm"].as_f64().unwrap(), 1.0, "mean T");
     close(s.rms_driving[0], c["expected"]["cycle_rms_torque_Nm"].as_f64().unwrap(), 1.0, "rms T");
     assert!(s.virtual_power_residual.unwrap() < 1e-12, "{:?}", s.virtual_power_residual);
-    assert_eq!((solution.mobility.dof, solution.mobility.redundant_constraints), (1, 0));
-    assert!(solution.max_constraint_residual < 1e-12);
+    assert_eq!((solution.totals.mobility.dof, solution.totals.mobility.redundant_constraints), (1, 0));
+    assert!(solution.totals.max_constraint_residual < 1e-12);
+}
+
+/// `solve_each` refills one step: from the second position on, its lists
+/// (inputs, driving actions both ways, reactions, the motion) keep the
+/// storage they had (nothing allocated per position), and every step it
+/// hands over equals `solve`'s, whose totals it returns too.
+#[test]
+fn solve_each_refills_one_step_and_agrees_with_solve() {
+    let positions: Vec<Vec<[f64; 3]>> = (0..360).map(|k| vec![[k as f64 * 0.0175, 150.0, 10.0]]).collect();
+    let (m, loads, outputs) = (offset_slider_crank(), gas_force(), Outputs { kinematics: true, ..all() });
+    let whole = solve(&m, &loads, &positions, outputs, &Deadline::none()).unwrap();
+    let mut storage = Vec::new();
+    let totals = solve_each(&m, &loads, &positions, outputs, &Deadline::none(), |step| {
+        assert_eq!(*step, whole.steps[storage.len()], "step {}", storage.len());
+        let motion = step.kinematics.as_ref().expect("asked");
+        storage.push([
+            step.input.as_ptr() as usize,
+            step.driving.as_ptr() as usize,
+            step.driving_virtual_power.as_ptr() as usize,
+            step.reactions.as_ptr() as usize,
+            motion.q.as_ptr() as usize,
+            motion.qdd.as_ptr() as usize,
+        ]);
+        Ok(())
+    })
+    .unwrap();
+    assert_eq!(totals, whole.totals);
+    assert_eq!(storage.len(), positions.len());
+    assert!(storage[1..].iter().all(|s| *s == storage[1]), "a list moved to new storage");
 }
 
 /// Energy balance over a cycle for the sample four-bar at constant speed
@@ -126,7 +155,8 @@ fn four_bar_driving_work_over_a_cycle_is_zero_under_gravity() {
     let n = 512;
     let positions: Vec<Vec<[f64; 3]>> =
         (0..n).map(|k| vec![[2.0 * std::f64::consts::PI * k as f64 / n as f64, 30.0, 0.0]]).collect();
-    let s = solve(&mechdyn::engine::samples::four_bar(), &[], &positions, all(), &Deadline::none()).unwrap().summary;
+    let s =
+        solve(&mechdyn::engine::samples::four_bar(), &[], &positions, all(), &Deadline::none()).unwrap().totals.summary;
     assert!(s.mean_driving[0].abs() < 1e-10 * s.max_abs_driving[0], "{s:?}");
     assert!(s.virtual_power_residual.unwrap() < 1e-12);
 }
@@ -138,7 +168,7 @@ fn four_bar_driving_work_over_a_cycle_is_zero_under_gravity() {
 fn a_prismatic_input_gives_the_same_force_both_ways() {
     let positions: Vec<Vec<[f64; 3]>> = (0..20).map(|k| vec![[0.005 * k as f64, 0.2, 0.5]]).collect();
     let solution = solve(&mechdyn::engine::samples::actuated_arm(), &[], &positions, all(), &Deadline::none()).unwrap();
-    assert!(solution.summary.virtual_power_residual.unwrap() < 1e-12, "{:?}", solution.summary);
+    assert!(solution.totals.summary.virtual_power_residual.unwrap() < 1e-12, "{:?}", solution.totals.summary);
     assert!(solution.steps.iter().all(|s| s.driving[0] > 0.0), "the actuator pushes the arm up");
 }
 

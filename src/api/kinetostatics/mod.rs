@@ -5,14 +5,15 @@ mod request;
 mod result;
 
 pub use request::{KinetostaticsRequest, OutputKind};
-pub use result::{KinetostaticsResult, Scalars, csv_table};
+pub use result::{KinetostaticsResult, Scalars, StepDto, csv_table};
 
 use super::kind::{Kind, Table, unit_in};
 use super::limits::Limits;
+use super::mechanism::names;
 use super::problem::{ApiError, FieldError};
 use super::{create, validated};
 use crate::engine::Deadline;
-use crate::engine::kinetostatics::solve;
+use crate::engine::kinetostatics::solve_each;
 use serde_json::Value;
 
 /// Kinetostatics: `POST /v1/kinetostatics`.
@@ -105,10 +106,17 @@ fn compute(
     let deadline = Deadline::after(limits.budget);
     let problem = validated(unknown, request.to_problem(limits))?;
     let joint_names: Vec<String> = problem.mechanism.joints.iter().map(|j| j.name.clone()).collect();
+    let (joints, bodies) = (names(&joint_names), names(&problem.body_names));
+    // Each step written as the result says it as soon as it is solved: the
+    // engine refills one step and keeps none.
     let solve_over = |positions: &[Vec<[f64; 3]>]| {
-        solve(&problem.mechanism, &problem.loads, positions, problem.outputs, &deadline)
-            .map(|s| KinetostaticsResult::new(s, &problem, &joint_names))
-            .map_err(|e| problem.written.explain(e))
+        let mut steps = Vec::with_capacity(positions.len());
+        let totals = solve_each(&problem.mechanism, &problem.loads, positions, problem.outputs, &deadline, |s| {
+            steps.push(StepDto::new(s, &problem, &joints, &bodies));
+            Ok(())
+        })
+        .map_err(|e| problem.written.explain(e))?;
+        Ok::<_, ApiError>(KinetostaticsResult::new(totals, steps, &problem, &joint_names))
     };
     if problem.positions.len() > 2 {
         refuse_if_too_large(solve_over(&problem.positions[..2])?, problem.positions.len(), limits.result_bytes)?;

@@ -1,8 +1,8 @@
 //! The `result` of a kinetostatics job, as stored and served, and its CSV table.
 
 use super::request::Problem;
-use crate::api::mechanism::{Name, ReactionDto, names};
-use crate::engine::kinetostatics::{Motion, Reaction, Solution, Step};
+use crate::api::mechanism::{Name, ReactionDto};
+use crate::engine::kinetostatics::{Motion, Reaction, Step, Totals};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use std::collections::BTreeMap;
@@ -161,9 +161,8 @@ fn method(closed_form: bool) -> String {
 }
 
 impl KinetostaticsResult {
-    pub fn new(s: Solution, p: &Problem, joint_names: &[String]) -> Self {
-        let (joints, bodies) = (names(joint_names), names(&p.body_names));
-        let steps = s.steps.iter().map(|st| step_dto(st, p, &joints, &bodies)).collect();
+    /// The result of a sweep's `steps` (each from [`StepDto::new`]) and its totals.
+    pub fn new(s: Totals, steps: Vec<StepDto>, p: &Problem, joint_names: &[String]) -> Self {
         let mob = &s.mobility;
         let mut warnings = Vec::new();
         if mob.redundant_constraints > 0 {
@@ -216,7 +215,7 @@ impl KinetostaticsResult {
                 virtual_power_residual: sum.virtual_power_residual,
                 max_constraint_residual: s.max_constraint_residual,
                 max_newton_iterations: s.max_iterations,
-                max_friction_iterations: s.steps.iter().map(|st| st.friction_iterations).max().unwrap_or(0),
+                max_friction_iterations: s.max_friction_iterations,
                 method: method(s.closed_form),
             },
             warnings,
@@ -224,21 +223,24 @@ impl KinetostaticsResult {
     }
 }
 
-fn step_dto(s: &Step, p: &Problem, joint_names: &[Name], names: &[Name]) -> StepDto {
-    let reaction = |r: &Reaction| ReactionDto::new(r, joint_names, names);
-    StepDto {
-        input: Scalars::of(&s.input),
-        driving: (p.outputs.driving && !s.singular).then(|| Scalars::of(&s.driving)),
-        reactions: (p.outputs.reactions && !s.singular).then(|| s.reactions.iter().map(reaction).collect()),
-        reduced_inertia: s.reduced_inertia,
-        reduced_torque: s.reduced_torque,
-        energy_contribution: s
-            .energy_shares
-            .as_ref()
-            .map(|v| names[1..].iter().cloned().zip(v.iter().copied()).collect()),
-        jacobian_condition: s.condition,
-        singular: s.singular,
-        kinematics: s.kinematics.as_ref().map(|m| motion(m, names)),
+impl StepDto {
+    /// The engine's step with the joints' and bodies' names (as [`crate::api::mechanism::names`] makes them).
+    pub fn new(s: &Step, p: &Problem, joint_names: &[Name], names: &[Name]) -> Self {
+        let reaction = |r: &Reaction| ReactionDto::new(r, joint_names, names);
+        StepDto {
+            input: Scalars::of(&s.input),
+            driving: (p.outputs.driving && !s.singular).then(|| Scalars::of(&s.driving)),
+            reactions: (p.outputs.reactions && !s.singular).then(|| s.reactions.iter().map(reaction).collect()),
+            reduced_inertia: s.reduced_inertia,
+            reduced_torque: s.reduced_torque,
+            energy_contribution: s
+                .energy_shares
+                .as_ref()
+                .map(|v| names[1..].iter().cloned().zip(v.iter().copied()).collect()),
+            jacobian_condition: s.condition,
+            singular: s.singular,
+            kinematics: s.kinematics.as_ref().map(|m| motion(m, names)),
+        }
     }
 }
 

@@ -1,0 +1,254 @@
+//! The actions at one position, written into one [`Step`] that a sweep
+//! refills: Q, the virtual-power driving actions, I* and M*, the
+//! multipliers λ of Φ_qᵀλ = Q − M q̈ and every joint's reaction. Once the
+//! step's lists have their length, a position allocates nothing.
+
+use super::loads::{applied_forces_into, point_motion};
+use super::{Motion, Outputs, Reaction, Step, friction, mass_times};
+use crate::engine::EngineError;
+use crate::engine::kinematics::{Configuration, solve_linear};
+use crate::engine::mobility::Mobility;
+use crate::engine::model::{BodyId, JointKind, Mechanism, Pitch, cross, perp, rotate};
+use nalgebra::{DMatrix, DVector};
+
+/// The vectors of one position's actions, kept for the next: Q, M q̈ − Q,
+/// λ, and the first row of every joint.
+#[derive(Default)]
+pub(super) struct Scratch {
+    pub qv: Vec<f64>,
+    pub inertial: Vec<f64>,
+    pub lambda: Vec<f64>,
+    pub offsets: Vec<usize>,
+}
+
+/// The actions at the regular positions of one sweep.
+pub(super) struct Actions<'a> {
+    pub m: &'a Mechanism,
+    pub loads: &'a [super::Load],
+    pub outputs: Outputs,
+    pub scratch: Scratch,
+}
+
+impl Step {
+    /// This step as a singular position: its input and condition number, nothing solved.
+    pub(super) fn set_singular(&mut self, c: &Configuration, inputs: &[[f64; 3]]) {
+        self.input.clear();
+        self.input.extend(inputs.iter().map(|i| i[0]));
+        self.driving.clear();
+        self.driving_virtual_power.clear();
+        self.reactions.clear();
+        (self.reduced_inertia, self.reduced_torque, self.energy_shares, self.kinematics) = (None, None, None, None);
+        (self.condition, self.friction_iterations, self.singular) = (c.condition, 0, true);
+    }
+
+    /// q, q̇ and q̈ where asked, in the storage of the last step's.
+    fn set_motion(&mut self, c: &Configuration, outputs: Outputs) {
+        self.kinematics = outputs.kinematics.then(|| {
+            let mut motion =
+                self.kinematics.take().unwrap_or(Motion { q: Vec::new(), qd: Vec::new(), qdd: Vec::new() });
+            motion.q.clone_from(&c.q);
+            motion.qd.clone_from(&c.qd);
+            motion.qdd.clone_from(&c.qdd);
+            motion
+        });
+    }
+}
+
+impl Actions<'_> {
+    /// The actions at a regular position (step k), into `out`.
+    pub fn step(
+        &mut self,
+        c: &Configuration,
+        inputs: &[[f64; 3]],
+        mobility: &Mobility,
+        k: usize,
+        out: &mut Step,
+    ) -> Result<(), EngineError> {
+        let (m, outputs, s) = (self.m, self.outputs, &mut self.scratch);
+        let motion = out.kinematics.take();
+        out.set_singular(c, inputs);
+        (out.singular, out.kinematics) = (false, motion);
+        out.set_motion(c, outputs);
+        if !(outputs.driving || outputs.reactions || outputs.reduced) {
+            return Ok(());
+        }
+        let phi = inputs[0][0];
+        applied_forces_into(m, self.loads, &c.q, &c.qd, phi, [inputs[0][1], 0.0], &mut s.qv);
+        out.friction_iterations = with_friction(m, c, s, k, phi)?;
+        s.inertial.clear();
+        s.inertial.extend(c.qdd.iter().zip(&s.qv).enumerate().map(|(i, (a, q))| a * m.mass_of(i) - q));
+        virtual_power(m, c, &s.inertial, &mut out.driving_virtual_power);
+        let g = c.g.as_deref().filter(|_| outputs.reduced);
+        out.reduced_inertia = g.map(|g| g.iter().enumerate().map(|(i, v)| m.mass_of(i) * v * v).sum::<f64>());
+        out.reduced_torque = g.map(|g| g.iter().zip(&s.qv).map(|(a, b)| a * b).sum());
+        out.energy_shares = g.zip(out.reduced_inertia).filter(|&(_, total)| total > 0.0).map(|(g, total)| {
+            g.chunks_exact(3)
+                .enumerate()
+                .map(|(b, g)| {
+                    let body = &m.bodies[b + 1];
+                    (body.mass * (g[0] * g[0] + g[1] * g[1]) + body.inertia * g[2] * g[2]) / total
+                })
+                .collect()
+        });
+        if outputs.reactions || m.drivers.len() != 1 {
+            let with = outputs.reactions.then_some(&mobility.indeterminate_joints[..]);
+            multipliers(m, c, s, with, (k, phi), (&mut out.driving, &mut out.reactions))?;
+        } else {
+            out.driving.push(out.driving_virtual_power.first().copied().unwrap_or(f64::NAN));
+        }
+        Ok(())
+    }
+}
+
+/// T_i = g_iᵀ(M q̈ − Q) for every input i into `out`, g_i = ∂q/∂φ_i solving
+/// Φ_q g_i = e_i (the velocity coefficients of one input are kept from the
+/// kinematics).
+fn virtual_power(m: &Mechanism, c: &Configuration, inertial: &[f64], out: &mut Vec<f64>) {
+    let power = |g: &[f64]| g.iter().zip(inertial).map(|(a, b)| a * b).sum::<f64>();
+    out.clear();
+    if let Some(g) = &c.g {
+        out.push(power(g));
+        return;
+    }
+    let rows = c.jacobian.nrows();
+    let first_driver = rows - m.drivers.len();
+    out.extend((first_driver..rows).map(|r| {
+        let mut g = vec![0.0; rows];
+        g[r] = 1.0;
+        if c.lu.solve(&mut g) {
+            return power(&g);
+        }
+        let e = DVector::from_fn(rows, |k, _| if k == r { 1.0 } else { 0.0 });
+        solve_linear(&c.jacobian, &e).map_or(f64::NAN, |g| power(g.as_slice()))
+    }));
+}
+
+/// Adds the joints' friction forces to Q (`s.qv`), iterated to a fixed
+/// point with the reactions: the iterations (0 without friction).
+fn with_friction(
+    m: &Mechanism,
+    c: &Configuration,
+    s: &mut Scratch,
+    step: usize,
+    input: f64,
+) -> Result<usize, EngineError> {
+    if !friction::present(m) {
+        return Ok(0);
+    }
+    let q_applied = DVector::from_column_slice(&s.qv);
+    let mq = mass_times(m, &c.qdd);
+    let scale = q_applied.amax().max(mq.amax()).max(f64::MIN_POSITIVE);
+    let mut qf = DVector::zeros(q_applied.len());
+    let (mut driving, mut reactions) = (Vec::new(), Vec::new());
+    for iteration in 1..=friction::MAX_ITERATIONS {
+        s.inertial.clear();
+        s.inertial.extend((&mq - &q_applied - &qf).iter());
+        multipliers(m, c, s, Some(&[]), (step, input), (&mut driving, &mut reactions))?;
+        let next = friction::forces(m, c, &reactions);
+        let change = (&next - &qf).amax();
+        qf = next;
+        if change <= 1e-13 * scale {
+            s.qv.iter_mut().zip(qf.iter()).for_each(|(q, f)| *q += f);
+            return Ok(iteration);
+        }
+    }
+    Err(EngineError::FrictionDiverged { step, input })
+}
+
+/// λ from Φ_qᵀλ = −(M q̈ − Q) (`s.inertial`): the driving actions into
+/// `driving` and, if asked, every reaction into `reactions` (else it is
+/// left empty); `at` is the step and its input, for the error.
+fn multipliers(
+    m: &Mechanism,
+    c: &Configuration,
+    s: &mut Scratch,
+    reactions_with: Option<&[usize]>,
+    (step, input): (usize, f64),
+    (driving, reactions): (&mut Vec<f64>, &mut Vec<Reaction>),
+) -> Result<(), EngineError> {
+    let lambda = &mut s.lambda;
+    lambda.clear();
+    lambda.extend(s.inertial.iter().map(|v| -v));
+    if !c.lu.solve_transposed(lambda) {
+        let b = DVector::from_iterator(s.inertial.len(), s.inertial.iter().map(|v| -v));
+        let solved = solve_linear(&c.jacobian.transpose(), &b).ok_or(EngineError::Singular { step, input })?;
+        lambda.clear();
+        lambda.extend(solved.iter());
+    }
+    let first_driver = lambda.len() - m.drivers.len();
+    driving.clear();
+    driving.extend(lambda[first_driver..].iter().map(|l| -l));
+    reactions.clear();
+    if let Some(indeterminate) = reactions_with {
+        reactions_into(m, &c.q, &c.jacobian, lambda, (&s.offsets, indeterminate), reactions);
+    }
+    Ok(())
+}
+
+/// Every joint's reaction from the multipliers λ of Φ_qᵀλ = Q − M q̈ (the
+/// joints' rows first in Φ_q, joint k's from `offsets[k]`), flagged where
+/// `indeterminate` lists the joint.
+pub fn reactions(
+    m: &Mechanism,
+    q: &[f64],
+    jac: &DMatrix<f64>,
+    lambda: &[f64],
+    offsets: &[usize],
+    indeterminate: &[usize],
+) -> Vec<Reaction> {
+    let mut out = Vec::with_capacity(m.joints.len());
+    reactions_into(m, q, jac, lambda, (offsets, indeterminate), &mut out);
+    out
+}
+
+/// [`reactions`] appended to `out`.
+fn reactions_into(
+    m: &Mechanism,
+    q: &[f64],
+    jac: &DMatrix<f64>,
+    lambda: &[f64],
+    (offsets, indeterminate): (&[usize], &[usize]),
+    out: &mut Vec<Reaction>,
+) {
+    out.extend(m.joints.iter().enumerate().map(|(k, joint)| {
+        let rows = offsets[k]..offsets[k] + Mechanism::joint_rows(&joint.kind);
+        let force_on = |b: BodyId| -> [f64; 3] {
+            let Some(col) = m.column(b) else { return [0.0; 3] };
+            let f = |d: usize| -rows.clone().map(|r| jac[(r, col + d)] * lambda[r]).sum::<f64>();
+            [f(0), f(1), f(2)]
+        };
+        let [i, j] = joint.bodies;
+        // On the second body, or minus the action on the first when the second is the ground.
+        let (b, sign) = if j != 0 { (j, 1.0) } else { (i, -1.0) };
+        let [fx, fy, mg] = force_on(b);
+        let arm = m.column(b).map_or([0.0; 2], |col| rotate(q[col + 2], m.local(b, joint.at)));
+        let moment = mg - cross(arm, [fx, fy]);
+        let determinate = !indeterminate.contains(&k);
+        if let JointKind::Gear { pitch: Some(pitch), .. } = &joint.kind {
+            let [tx, ty] = tooth_force(m, q, [i, j], pitch, sign * moment);
+            return Reaction { joint: k, on: j, by: i, fx: tx, fy: ty, moment: 0.0, determinate };
+        }
+        Reaction { joint: k, on: j, by: i, fx: sign * fx, fy: sign * fy, moment: sign * moment, determinate }
+    }));
+}
+
+/// The tooth force on the second gear at the pitch point, from the mesh's
+/// couple on it: tangential M₂/r₂, radial |M₂/r₂|·tan α pushing the teeth apart
+/// (towards the gear's centre; outwards for the ring of an internal mesh).
+fn tooth_force(m: &Mechanism, q: &[f64], [i, j]: [BodyId; 2], pitch: &Pitch, couple: f64) -> [f64; 2] {
+    let zero = [0.0; 2];
+    let (c1, _) = point_motion(m, q, &vec![0.0; q.len()], (i, pitch.centers[0]));
+    let (c2, _) = point_motion(m, q, &vec![0.0; q.len()], (j, pitch.centers[1]));
+    let d = [c1[0] - c2[0], c1[1] - c2[1]];
+    let length = d[0].hypot(d[1]);
+    if length == 0.0 {
+        return zero;
+    }
+    // w: from the second gear's centre to the pitch point.
+    let away = pitch.internal && !pitch.second_is_ring;
+    let w = if away { [-d[0] / length, -d[1] / length] } else { [d[0] / length, d[1] / length] };
+    let t = perp(w);
+    let tangential = couple / pitch.radius;
+    let radial = tangential.abs() * pitch.pressure_angle.tan() * if pitch.second_is_ring { 1.0 } else { -1.0 };
+    [tangential * t[0] + radial * w[0], tangential * t[1] + radial * w[1]]
+}
