@@ -118,7 +118,8 @@ fn k1_cycle_mean_and_rms_torque_and_the_virtual_power_residual() {
 }
 
 /// `solve_each` refills one step: from the second position on, its lists
-/// (inputs, driving actions both ways, reactions, the motion) keep the
+/// (inputs, driving actions both ways, reactions, the motion, the energy
+/// shares) keep the
 /// storage they had (nothing allocated per position), and every step it
 /// hands over equals `solve`'s, whose totals it returns too.
 #[test]
@@ -137,6 +138,7 @@ fn solve_each_refills_one_step_and_agrees_with_solve() {
             step.reactions.as_ptr() as usize,
             motion.q.as_ptr() as usize,
             motion.qdd.as_ptr() as usize,
+            step.energy_shares.as_ref().expect("asked").as_ptr() as usize,
         ]);
         Ok(())
     })

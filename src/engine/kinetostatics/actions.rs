@@ -65,7 +65,8 @@ impl Actions<'_> {
         out: &mut Step,
     ) -> Result<(), EngineError> {
         let (m, outputs, s) = (self.m, self.outputs, &mut self.scratch);
-        let motion = out.kinematics.take();
+        // The lists set_singular empties by dropping, kept for their storage.
+        let (motion, shares) = (out.kinematics.take(), out.energy_shares.take());
         out.set_singular(c, inputs);
         (out.singular, out.kinematics) = (false, motion);
         out.set_motion(c, outputs);
@@ -82,13 +83,13 @@ impl Actions<'_> {
         out.reduced_inertia = g.map(|g| g.iter().enumerate().map(|(i, v)| m.mass_of(i) * v * v).sum::<f64>());
         out.reduced_torque = g.map(|g| g.iter().zip(&s.qv).map(|(a, b)| a * b).sum());
         out.energy_shares = g.zip(out.reduced_inertia).filter(|&(_, total)| total > 0.0).map(|(g, total)| {
-            g.chunks_exact(3)
-                .enumerate()
-                .map(|(b, g)| {
-                    let body = &m.bodies[b + 1];
-                    (body.mass * (g[0] * g[0] + g[1] * g[1]) + body.inertia * g[2] * g[2]) / total
-                })
-                .collect()
+            let mut shares = shares.unwrap_or_default();
+            shares.clear();
+            shares.extend(g.chunks_exact(3).enumerate().map(|(b, g)| {
+                let body = &m.bodies[b + 1];
+                (body.mass * (g[0] * g[0] + g[1] * g[1]) + body.inertia * g[2] * g[2]) / total
+            }));
+            shares
         });
         if outputs.reactions || m.drivers.len() != 1 {
             let with = outputs.reactions.then_some(&mobility.indeterminate_joints[..]);
