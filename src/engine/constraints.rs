@@ -21,6 +21,13 @@ pub struct System {
     trig: Vec<(f64, f64)>,
 }
 
+impl System {
+    /// (sin θ, cos θ) of every body (ground first) at the q of the last [`evaluate_into`].
+    pub fn trig(&self) -> &[(f64, f64)] {
+        &self.trig
+    }
+}
+
 /// Coordinates, velocities and the drivers' values at one instant.
 pub struct State<'a> {
     pub q: &'a [f64],

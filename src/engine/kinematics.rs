@@ -39,6 +39,8 @@ pub struct Configuration {
     pub qdd: Vec<f64>,
     /// Velocity coefficients g = dq/dφ (one input only).
     pub g: Option<Vec<f64>>,
+    /// (sin θ, cos θ) of every body at q, ground first (empty at a singular position).
+    pub trig: Vec<(f64, f64)>,
     /// Φ_q here, kept for the reactions (empty at a singular position).
     pub jacobian: DMatrix<f64>,
     /// LU of Φ_q (regular when Φ_q is square and regular), for the

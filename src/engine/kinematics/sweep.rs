@@ -109,6 +109,8 @@ pub fn sweep_each(
             c.g = None;
         }
         base.clone_from(&c.q);
+        c.trig.clear();
+        c.trig.extend_from_slice(ws.sys.trig());
         // Φ_q and its LU change hands: the workspace refills the last ones.
         std::mem::swap(&mut c.jacobian, &mut ws.sys.jacobian);
         std::mem::swap(&mut c.lu, &mut ws.lu);
@@ -126,6 +128,7 @@ impl Configuration {
     fn set_singular(&mut self, condition: f64, iterations: usize, residual: f64) {
         let n = self.q.len();
         (self.qd, self.qdd, self.g, self.jacobian) = (vec![0.0; n], vec![0.0; n], None, DMatrix::zeros(0, 0));
+        self.trig.clear();
         (self.condition, self.iterations, self.residual, self.singular) = (condition, iterations, residual, true);
     }
 }

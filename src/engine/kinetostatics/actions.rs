@@ -8,7 +8,7 @@ use super::{Motion, Outputs, Reaction, Step, friction, mass_times};
 use crate::engine::EngineError;
 use crate::engine::kinematics::{Configuration, solve_linear};
 use crate::engine::mobility::Mobility;
-use crate::engine::model::{BodyId, JointKind, Mechanism, Pitch, cross, perp, rotate};
+use crate::engine::model::{BodyId, JointKind, Mechanism, Pitch, cross, perp};
 use nalgebra::{DMatrix, DVector};
 
 /// The vectors of one position's actions, kept for the next: Q, M q̈ − Q,
@@ -181,7 +181,7 @@ fn multipliers(
     driving.extend(lambda[first_driver..].iter().map(|l| -l));
     reactions.clear();
     if let Some(indeterminate) = reactions_with {
-        reactions_into(m, &c.q, &c.jacobian, lambda, (&s.offsets, indeterminate), reactions);
+        reactions_into(m, (&c.q, &c.trig), &c.jacobian, lambda, (&s.offsets, indeterminate), reactions);
     }
     Ok(())
 }
@@ -197,15 +197,18 @@ pub fn reactions(
     offsets: &[usize],
     indeterminate: &[usize],
 ) -> Vec<Reaction> {
+    let trig: Vec<(f64, f64)> =
+        (0..m.bodies.len()).map(|b| m.column(b).map_or((0.0, 1.0), |c| q[c + 2].sin_cos())).collect();
     let mut out = Vec::with_capacity(m.joints.len());
-    reactions_into(m, q, jac, lambda, (offsets, indeterminate), &mut out);
+    reactions_into(m, (q, &trig), jac, lambda, (offsets, indeterminate), &mut out);
     out
 }
 
-/// [`reactions`] appended to `out`.
+/// [`reactions`] appended to `out`, with (sin θ, cos θ) of every body at q
+/// (ground first) in `trig`.
 fn reactions_into(
     m: &Mechanism,
-    q: &[f64],
+    (q, trig): (&[f64], &[(f64, f64)]),
     jac: &DMatrix<f64>,
     lambda: &[f64],
     (offsets, indeterminate): (&[usize], &[usize]),
@@ -222,7 +225,8 @@ fn reactions_into(
         // On the second body, or minus the action on the first when the second is the ground.
         let (b, sign) = if j != 0 { (j, 1.0) } else { (i, -1.0) };
         let [fx, fy, mg] = force_on(b);
-        let arm = m.column(b).map_or([0.0; 2], |col| rotate(q[col + 2], m.local(b, joint.at)));
+        let ([x, y], (sin, cos)) = (m.local(b, joint.at), trig[b]);
+        let arm = [cos * x - sin * y, sin * x + cos * y];
         let moment = mg - cross(arm, [fx, fy]);
         let determinate = !indeterminate.contains(&k);
         if let JointKind::Gear { pitch: Some(pitch), .. } = &joint.kind {

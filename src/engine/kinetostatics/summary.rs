@@ -39,8 +39,8 @@ pub struct Tally {
     max_abs_driving: Vec<f64>,
     sum: Vec<f64>,
     sum_of_squares: Vec<f64>,
-    /// Per joint: the largest force while every reaction so far was
-    /// determinate (None once one was not), and whether any was computed.
+    /// Per joint: the largest force's square while every reaction so far
+    /// was determinate (None once one was not), and whether any was computed.
     max_reaction: Vec<(Option<f64>, bool)>,
     /// Per input, the largest |T_multipliers − T_virtual_power| of the steps
     /// where both are computed (None: no such step).
@@ -79,7 +79,7 @@ impl Tally {
         }
         for (largest, r) in self.max_reaction.iter_mut().zip(&s.reactions) {
             largest.1 = true;
-            largest.0 = largest.0.filter(|_| r.determinate).map(|m| m.max(r.fx.hypot(r.fy)));
+            largest.0 = largest.0.filter(|_| r.determinate).map(|m| m.max(r.fx * r.fx + r.fy * r.fy));
         }
         let compared =
             s.driving_virtual_power.len() == s.driving.len() && (s.driving.len() > 1 || !s.reactions.is_empty());
@@ -110,7 +110,11 @@ impl Tally {
             mean_driving: self.sum.iter().map(|s| s / count).collect(),
             rms_driving: self.sum_of_squares.iter().map(|s| (s / count).sqrt()).collect(),
             max_abs_driving: self.max_abs_driving,
-            max_reaction: self.max_reaction.into_iter().map(|(largest, any)| largest.filter(|_| any)).collect(),
+            max_reaction: self
+                .max_reaction
+                .into_iter()
+                .map(|(largest, any)| largest.filter(|_| any).map(f64::sqrt))
+                .collect(),
             virtual_power_residual,
             near_singular: self.near_singular,
             singular: self.singular,
