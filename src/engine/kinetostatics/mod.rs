@@ -19,7 +19,8 @@ mod summary;
 
 pub use actions::reactions;
 pub use loads::{Load, applied_forces, applied_forces_into, point_motion, potential};
-pub use summary::{Summary, Tally};
+pub use summary::Summary;
+use summary::Tally;
 
 use super::constraints::joint_offsets;
 use super::kinematics::sweep_each;
