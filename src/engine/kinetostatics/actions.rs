@@ -1,7 +1,9 @@
 //! The actions at one position, written into one [`Step`] that a sweep
 //! refills: Q, the virtual-power driving actions, I* and M*, the
 //! multipliers λ of Φ_qᵀλ = Q − M q̈ and every joint's reaction. Once the
-//! step's lists have their length, a position allocates nothing.
+//! step's lists have their length, a position of a mechanism of one input
+//! allocates nothing (several inputs solve for each g_i in a vector of its
+//! own, and joint friction iterates on vectors of its own).
 
 use super::loads::{applied_forces_into, point_motion};
 use super::{Motion, Outputs, Reaction, Step, friction, mass_times};
