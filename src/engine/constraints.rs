@@ -7,7 +7,7 @@
 //! the first body, a "projection" row is eᵀd: the normal of a slide
 //! (prismatic, pin-in-slot) or the axis of a driven prismatic joint.
 
-use super::model::{BodyId, JointKind, Mechanism, dot, perp};
+use super::model::{BodyId, JointKind, Mechanism, dot, perp, rotate_by};
 use nalgebra::{DMatrix, DVector};
 
 /// Φ, Φ_q and γ at one state; [`evaluate_into`] refills one in place.
@@ -126,8 +126,7 @@ struct Builder<'a, 'w, J> {
 impl<J: Jacobian> Builder<'_, '_, J> {
     /// A(θ_b)·s.
     fn rot(&self, b: BodyId, s: [f64; 2]) -> [f64; 2] {
-        let (sn, cs) = self.trig[b];
-        [cs * s[0] - sn * s[1], sn * s[0] + cs * s[1]]
+        rotate_by(self.trig[b], s)
     }
 
     /// B(θ_b)·s = A(θ_b)·(−s_y, s_x).
@@ -222,7 +221,7 @@ pub fn evaluate_into(m: &Mechanism, s: &State, sys: &mut System) {
     zeroed(&mut sys.phi, rows);
     zeroed(&mut sys.gamma, rows);
     let System { phi, jacobian, gamma, trig } = sys;
-    turns(m, s, trig);
+    m.turns_into(s.q, trig);
     build(m, s, trig, phi.as_mut_slice(), gamma.as_mut_slice(), jacobian);
 }
 
@@ -253,15 +252,9 @@ pub fn evaluate_blocks(m: &Mechanism, s: &State) -> (Vec<f64>, Vec<f64>, Blocks)
     let (mut phi, mut gamma, mut blocks) =
         (vec![0.0; rows], vec![0.0; rows], Blocks { rows: vec![RowBlocks::default(); rows] });
     let mut trig = Vec::new();
-    turns(m, s, &mut trig);
+    m.turns_into(s.q, &mut trig);
     build(m, s, &trig, &mut phi, &mut gamma, &mut blocks);
     (phi, gamma, blocks)
-}
-
-/// (sin θ, cos θ) of every body at a state, ground first.
-fn turns(m: &Mechanism, s: &State, trig: &mut Vec<(f64, f64)>) {
-    trig.clear();
-    trig.extend((0..m.bodies.len()).map(|b| m.column(b).map_or((0.0, 1.0), |c| s.q[c + 2].sin_cos())));
 }
 
 /// Fills Φ, γ and Φ_q (all zero on entry) at a state whose sines and

@@ -101,6 +101,12 @@ impl Mechanism {
         if k % 3 == 2 { body.inertia } else { body.mass }
     }
 
+    /// (sin θ, cos θ) of every body at q, ground first, into `out`.
+    pub fn turns_into(&self, q: &[f64], out: &mut Vec<(f64, f64)>) {
+        out.clear();
+        out.extend((0..self.bodies.len()).map(|b| self.column(b).map_or((0.0, 1.0), |c| q[c + 2].sin_cos())));
+    }
+
     /// Column of the first coordinate of body b (None for the ground).
     pub fn column(&self, b: BodyId) -> Option<usize> {
         (b > 0).then(|| 3 * (b - 1))
@@ -152,7 +158,11 @@ pub struct Grubler {
 
 /// A(θ)·s.
 pub fn rotate(theta: f64, s: [f64; 2]) -> [f64; 2] {
-    let (sn, cs) = theta.sin_cos();
+    rotate_by(theta.sin_cos(), s)
+}
+
+/// A(θ)·s with (sin θ, cos θ) known.
+pub fn rotate_by((sn, cs): (f64, f64), s: [f64; 2]) -> [f64; 2] {
     [cs * s[0] - sn * s[1], sn * s[0] + cs * s[1]]
 }
 

@@ -10,7 +10,7 @@ use super::{Motion, Outputs, Reaction, Step, friction, mass_times};
 use crate::engine::EngineError;
 use crate::engine::kinematics::{Configuration, solve_linear};
 use crate::engine::mobility::Mobility;
-use crate::engine::model::{BodyId, JointKind, Mechanism, Pitch, cross, perp};
+use crate::engine::model::{BodyId, JointKind, Mechanism, Pitch, cross, perp, rotate_by};
 use nalgebra::{DMatrix, DVector};
 
 /// The vectors of one position's actions, kept for the next: Q, M q̈ − Q,
@@ -32,15 +32,23 @@ pub(super) struct Actions<'a> {
 }
 
 impl Step {
-    /// This step as a singular position: its input and condition number, nothing solved.
-    pub(super) fn set_singular(&mut self, c: &Configuration, inputs: &[[f64; 3]]) {
+    /// This step at a new position, nothing solved yet: its input and
+    /// condition number, its lists emptied (their storage kept); the motion
+    /// and the energy shares are left to the caller.
+    fn clear(&mut self, c: &Configuration, inputs: &[[f64; 3]]) {
         self.input.clear();
         self.input.extend(inputs.iter().map(|i| i[0]));
         self.driving.clear();
         self.driving_virtual_power.clear();
         self.reactions.clear();
-        (self.reduced_inertia, self.reduced_torque, self.energy_shares, self.kinematics) = (None, None, None, None);
-        (self.condition, self.friction_iterations, self.singular) = (c.condition, 0, true);
+        (self.reduced_inertia, self.reduced_torque) = (None, None);
+        (self.condition, self.friction_iterations, self.singular) = (c.condition, 0, false);
+    }
+
+    /// This step as a singular position: its input and condition number, nothing solved.
+    pub(super) fn set_singular(&mut self, c: &Configuration, inputs: &[[f64; 3]]) {
+        self.clear(c, inputs);
+        (self.energy_shares, self.kinematics, self.singular) = (None, None, true);
     }
 
     /// q, q̇ and q̈ where asked, in the storage of the last step's.
@@ -67,16 +75,14 @@ impl Actions<'_> {
         out: &mut Step,
     ) -> Result<(), EngineError> {
         let (m, outputs, s) = (self.m, self.outputs, &mut self.scratch);
-        // The lists set_singular empties by dropping, kept for their storage.
-        let (motion, shares) = (out.kinematics.take(), out.energy_shares.take());
-        out.set_singular(c, inputs);
-        (out.singular, out.kinematics) = (false, motion);
+        out.clear(c, inputs);
         out.set_motion(c, outputs);
+        let shares = out.energy_shares.take();
         if !(outputs.driving || outputs.reactions || outputs.reduced) {
             return Ok(());
         }
         let phi = inputs[0][0];
-        applied_forces_into(m, self.loads, &c.q, &c.qd, phi, [inputs[0][1], 0.0], &mut s.qv);
+        applied_forces_into(m, self.loads, (&c.q, &c.trig), &c.qd, phi, [inputs[0][1], 0.0], &mut s.qv);
         out.friction_iterations = with_friction(m, c, s, k, phi)?;
         s.inertial.clear();
         s.inertial.extend(c.qdd.iter().zip(&s.qv).enumerate().map(|(i, (a, q))| a * m.mass_of(i) - q));
@@ -199,8 +205,8 @@ pub fn reactions(
     offsets: &[usize],
     indeterminate: &[usize],
 ) -> Vec<Reaction> {
-    let trig: Vec<(f64, f64)> =
-        (0..m.bodies.len()).map(|b| m.column(b).map_or((0.0, 1.0), |c| q[c + 2].sin_cos())).collect();
+    let mut trig = Vec::new();
+    m.turns_into(q, &mut trig);
     let mut out = Vec::with_capacity(m.joints.len());
     reactions_into(m, (q, &trig), jac, lambda, (offsets, indeterminate), &mut out);
     out
@@ -227,8 +233,7 @@ fn reactions_into(
         // On the second body, or minus the action on the first when the second is the ground.
         let (b, sign) = if j != 0 { (j, 1.0) } else { (i, -1.0) };
         let [fx, fy, mg] = force_on(b);
-        let ([x, y], (sin, cos)) = (m.local(b, joint.at), trig[b]);
-        let arm = [cos * x - sin * y, sin * x + cos * y];
+        let arm = rotate_by(trig[b], m.local(b, joint.at));
         let moment = mg - cross(arm, [fx, fy]);
         let determinate = !indeterminate.contains(&k);
         if let JointKind::Gear { pitch: Some(pitch), .. } = &joint.kind {

@@ -52,8 +52,8 @@ pub fn forces(m: &Mechanism, c: &Configuration, reactions: &[Reaction]) -> DVect
         match joint.kind {
             JointKind::Revolute => {
                 let couple = -f.mu * f.radius * r.fx.hypot(r.fy) * sign(pose(j).1 - pose(i).1);
-                add_force(m, &c.q, qf.as_mut_slice(), j, joint.at, [0.0, 0.0], couple);
-                add_force(m, &c.q, qf.as_mut_slice(), i, joint.at, [0.0, 0.0], -couple);
+                add_force(m, &c.trig, qf.as_mut_slice(), j, joint.at, [0.0, 0.0], couple);
+                add_force(m, &c.trig, qf.as_mut_slice(), i, joint.at, [0.0, 0.0], -couple);
             }
             JointKind::Prismatic { axis } | JointKind::PinSlot { axis } => {
                 let u = rotate(pose(i).0, axis);
@@ -61,8 +61,8 @@ pub fn forces(m: &Mechanism, c: &Configuration, reactions: &[Reaction]) -> DVect
                 let (vj, vi) = (velocity(j, joint.at), velocity(i, joint.at));
                 let slide = sign(dot(u, [vj[0] - vi[0], vj[1] - vi[1]]));
                 let force = [-f.mu * normal * slide * u[0], -f.mu * normal * slide * u[1]];
-                add_force(m, &c.q, qf.as_mut_slice(), j, joint.at, force, 0.0);
-                add_force(m, &c.q, qf.as_mut_slice(), i, joint.at, [-force[0], -force[1]], 0.0);
+                add_force(m, &c.trig, qf.as_mut_slice(), j, joint.at, force, 0.0);
+                add_force(m, &c.trig, qf.as_mut_slice(), i, joint.at, [-force[0], -force[1]], 0.0);
             }
             JointKind::Gear { .. } => {}
         }

@@ -1,7 +1,7 @@
 //! Loads on a mechanism and their generalized forces Q.
 
 use crate::engine::function::{Function, Side};
-use crate::engine::model::{BodyId, Mechanism, cross, dot, rotate, rotate_d};
+use crate::engine::model::{BodyId, Mechanism, cross, dot, rotate, rotate_by, rotate_d};
 use nalgebra::DVector;
 
 /// A load on a body; functions take the first input coordinate φ (and, in
@@ -23,16 +23,18 @@ pub enum Load {
 /// Generalized applied forces Q at a configuration (velocities `qd` for
 /// dampers), with the loads' functions at φ and `[ω, t]`.
 pub fn applied_forces(m: &Mechanism, loads: &[Load], q: &[f64], qd: &[f64], phi: f64, state: [f64; 2]) -> DVector<f64> {
-    let mut qv = Vec::new();
-    applied_forces_into(m, loads, q, qd, phi, state, &mut qv);
+    let (mut qv, mut trig) = (Vec::new(), Vec::new());
+    m.turns_into(q, &mut trig);
+    applied_forces_into(m, loads, (q, &trig), qd, phi, state, &mut qv);
     DVector::from_vec(qv)
 }
 
-/// [`applied_forces`] into `qv`, reusing its storage.
+/// [`applied_forces`] into `qv`, reusing its storage, with (sin θ, cos θ)
+/// of every body at q (ground first) in `trig`.
 pub fn applied_forces_into(
     m: &Mechanism,
     loads: &[Load],
-    q: &[f64],
+    (q, trig): (&[f64], &[(f64, f64)]),
     qd: &[f64],
     phi: f64,
     state: [f64; 2],
@@ -40,7 +42,7 @@ pub fn applied_forces_into(
 ) {
     qv.clear();
     qv.resize(m.n_coordinates(), 0.0);
-    let mut apply = |b: BodyId, at: [f64; 2], f: [f64; 2], couple: f64| add_force(m, q, qv, b, at, f, couple);
+    let mut apply = |b: BodyId, at: [f64; 2], f: [f64; 2], couple: f64| add_force(m, trig, qv, b, at, f, couple);
     for (b, body) in m.bodies.iter().enumerate() {
         apply(b, body.cg, [body.mass * m.gravity[0], body.mass * m.gravity[1]], 0.0);
     }
@@ -87,12 +89,19 @@ pub fn point_motion(m: &Mechanism, q: &[f64], qd: &[f64], (b, p): (BodyId, [f64;
     ([q[c] + a[0], q[c + 1] + a[1]], [qd[c] + ds[0] * qd[c + 2], qd[c + 1] + ds[1] * qd[c + 2]])
 }
 
-/// Adds to Q a force f at point `at` (reference coordinates) of body b, plus a couple.
-pub fn add_force(m: &Mechanism, q: &[f64], qv: &mut [f64], b: BodyId, at: [f64; 2], f: [f64; 2], couple: f64) {
+/// Adds to Q a force f at point `at` (reference coordinates) of body b,
+/// plus a couple; `trig` holds (sin θ, cos θ) of every body, ground first.
+pub fn add_force(
+    m: &Mechanism,
+    trig: &[(f64, f64)],
+    qv: &mut [f64],
+    b: BodyId,
+    at: [f64; 2],
+    f: [f64; 2],
+    couple: f64,
+) {
     if let Some(c) = m.column(b) {
-        // At G (gravity, a body's coordinates' own point) the arm is zero: no turn to compute.
-        let s = m.local(b, at);
-        let arm = if s == [0.0, 0.0] { s } else { rotate(q[c + 2], s) };
+        let arm = rotate_by(trig[b], m.local(b, at));
         qv[c] += f[0];
         qv[c + 1] += f[1];
         qv[c + 2] += cross(arm, f) + couple;
