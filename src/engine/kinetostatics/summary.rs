@@ -22,15 +22,6 @@ pub struct Summary {
     pub max_condition: f64,
 }
 
-impl Summary {
-    /// The summary of `all` the steps of a sweep of a mechanism with `joints` joints.
-    pub fn new(all: &[Step], joints: usize) -> Self {
-        let mut tally = Tally::new(joints);
-        all.iter().for_each(|s| tally.add(s));
-        tally.summary()
-    }
-}
-
 /// A [`Summary`] gathered one step at a time, as a sweep hands them over.
 #[derive(Clone, Debug, Default)]
 pub struct Tally {
@@ -149,7 +140,9 @@ mod tests {
         let mut second = step(2.0, [-4.0, 1.0], [-4.0, 1.5], true, 2e4);
         second.reactions[1].determinate = false;
         let steps = [step(1.0, [2.0, 1.0], [2.5, 1.0], true, 10.0), singular, second];
-        let s = Summary::new(&steps, 2);
+        let mut tally = Tally::new(2);
+        steps.iter().for_each(|s| tally.add(s));
+        let s = tally.summary();
         assert_eq!(s.max_abs_driving, [4.0, 1.0]);
         assert_eq!(s.mean_driving, [-1.0, 1.0], "(2 − 4)/2, (1 + 1)/2 over the regular steps");
         assert_eq!(s.rms_driving, [10f64.sqrt(), 1.0], "√((4 + 16)/2), √((1 + 1)/2)");
