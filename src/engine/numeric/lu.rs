@@ -21,12 +21,12 @@ pub struct Lu {
     /// 1/u_kk: the solves multiply where they would divide (a division's
     /// latency, in the chain of a triangular solve, was half its time).
     inverse_pivots: Vec<f64>,
-    /// No pivot is zero (the solves are defined).
+    /// No pivot is zero or subnormal (the solves are defined).
     regular: bool,
 }
 
 impl Lu {
-    /// Factors `a` into this storage; false if a pivot is zero or `a` is
+    /// Factors `a` into this storage; false if a pivot is zero (or subnormal) or `a` is
     /// not square (the solves then refuse).
     pub fn factor(&mut self, a: &DMatrix<f64>) -> bool {
         self.regular = false;
@@ -45,7 +45,7 @@ impl Lu {
         self.regular
     }
 
-    /// Whether the last factorisation had no zero pivot.
+    /// Whether the last factorisation had no zero (or subnormal) pivot.
     pub fn is_regular(&self) -> bool {
         self.regular
     }
@@ -121,7 +121,8 @@ macro_rules! by_size {
 use by_size;
 
 /// P A = L U in place of A (n×n, column-major), the exchanges in `swaps`
-/// and 1/u_kk in `inverse` (length n); false if a pivot is zero.
+/// and 1/u_kk in `inverse` (length n); false if a pivot is zero or
+/// subnormal (its reciprocal overflows: κ beyond 1e308).
 fn factor_in<const N: usize>(n: usize, a: &mut [f64], swaps: &mut [usize], inverse: &mut [f64]) -> bool {
     let n = if N > 0 { N } else { n };
     let (a, swaps, inverse) = (&mut a[..n * n], &mut swaps[..n], &mut inverse[..n]);
@@ -134,20 +135,14 @@ fn factor_in<const N: usize>(n: usize, a: &mut [f64], swaps: &mut [usize], inver
             (0..n).for_each(|j| a.swap(j * n + k, j * n + p));
         }
         let pivot = a[k * n + k];
-        if pivot == 0.0 {
+        if pivot.abs() < f64::MIN_POSITIVE {
             regular = false;
             continue;
         }
         let (left, right) = a.split_at_mut((k + 1) * n);
         let l = &mut left[k * n + k + 1..];
-        // By the reciprocal, as LAPACK's xGETF2, unless it would overflow (a
-        // subnormal pivot: the solves' products then are not finite, and refuse).
         inverse[k] = 1.0 / pivot;
-        if pivot.abs() >= f64::MIN_POSITIVE {
-            l.iter_mut().for_each(|v| *v *= inverse[k]);
-        } else {
-            l.iter_mut().for_each(|v| *v /= pivot);
-        }
+        l.iter_mut().for_each(|v| *v *= inverse[k]);
         for column in right.chunks_exact_mut(n) {
             let u = column[k];
             if u != 0.0 {
@@ -242,8 +237,8 @@ mod tests {
         let mut x = [2.0, 8.0];
         assert!(lu.solve(&mut x));
         assert_eq!(x, [2.0, 1.0], "x₀ = 8/4, x₁ = 2/2: exact in binary");
-        // A subnormal pivot (κ ~ 1e310): its reciprocal overflows, so the solves refuse.
-        assert!(lu.factor(&DMatrix::from_row_slice(2, 2, &[1e-310, 0.0, 1e-311, 1.0])));
+        // A subnormal pivot (κ ~ 1e310): its reciprocal would overflow, so it counts as zero.
+        assert!(!lu.factor(&DMatrix::from_row_slice(2, 2, &[1e-310, 0.0, 1e-311, 1.0])));
         assert!(!lu.solve(&mut [0.0, 1.0]) && !lu.solve_transposed(&mut [1.0, 0.0]));
     }
 }
