@@ -1,8 +1,9 @@
 //! Work-precision against peers: `cargo bench --bench work_precision` (or
 //! `cargo bench`). For each reference problem it sweeps the requested
 //! tolerance, measures the error against a trusted value and the engine's
-//! wall time (under the service's allocator, mimalloc), runs the Python peer (bench/peers/) on the same problem when
-//! Python with NumPy and SciPy is at hand (skipped with a message
+//! wall time (under the service's allocator, mimalloc), runs the Python
+//! peer (bench/peers/) on the same problem when Python with NumPy and
+//! SciPy is at hand (skipped with a message
 //! otherwise), and writes docs/BENCHMARKS.md with the tables and
 //! docs/work_precision_*.svg. Direct dynamics here, kinetostatics and the
 //! flywheel in their modules. No assertions: benchmarks are not tests.
