@@ -14,8 +14,8 @@
 //! N = 40.
 
 use mechdyn::engine::Deadline;
-use mechdyn::engine::dynamics::End;
 use mechdyn::engine::dynamics::mechanism::{MechanismProblem, MechanismSolution, solve_in};
+use mechdyn::engine::dynamics::{End, KEPT_BYTES};
 use mechdyn::engine::samples::parallelogram_chain;
 use std::f64::consts::FRAC_PI_2;
 use std::fmt::Write as _;
@@ -43,6 +43,7 @@ fn run(n: usize, duration: f64, samples: usize, sparse: bool) -> (f64, Mechanism
         integrator: None,
         conserve_energy: None,
         samples,
+        kept_bytes: KEPT_BYTES,
         deadline: Deadline::none(),
         reactions: false,
     };

@@ -11,7 +11,7 @@ use crate::Point;
 use crate::pendulum::elliptic::{complete_k, sn};
 use mechdyn::engine::Deadline;
 use mechdyn::engine::dynamics::mechanism::{MechanismProblem, solve};
-use mechdyn::engine::dynamics::{End, Integrator};
+use mechdyn::engine::dynamics::{End, Integrator, KEPT_BYTES};
 use mechdyn::engine::kinetostatics::Load;
 use mechdyn::engine::samples::elastic_pendulum;
 use std::f64::consts::PI;
@@ -32,6 +32,7 @@ fn run(tolerance: f64, integrator: Integrator) -> (Point, usize) {
         integrator: Some(integrator),
         conserve_energy: None,
         samples: 101,
+        kept_bytes: KEPT_BYTES,
         deadline: Deadline::none(),
         reactions: false,
     };

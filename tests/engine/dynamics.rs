@@ -5,7 +5,7 @@
 //! integration runs at 1e-11).
 
 use mechdyn::engine::Deadline;
-use mechdyn::engine::dynamics::{DynamicsError, End, EventKind, ReducedProblem, solve};
+use mechdyn::engine::dynamics::{DynamicsError, End, EventKind, KEPT_BYTES, ReducedProblem, solve};
 use mechdyn::engine::expr::Expr;
 use mechdyn::engine::function::Function;
 use serde_json::Value;
@@ -29,6 +29,7 @@ fn problem(end: End, samples: usize) -> ReducedProblem {
         tolerance: 1e-9,
         integrator: None,
         samples,
+        kept_bytes: KEPT_BYTES,
         deadline: Deadline::none(),
     }
 }

@@ -6,7 +6,7 @@
 use crate::elliptic::{complete_k, sn};
 use mechdyn::engine::Deadline;
 use mechdyn::engine::dynamics::mechanism::{MechanismProblem, solve, solve_in};
-use mechdyn::engine::dynamics::{DynamicsError, End, EventKind, Integrator, ReducedProblem};
+use mechdyn::engine::dynamics::{DynamicsError, End, EventKind, Integrator, KEPT_BYTES, ReducedProblem};
 use mechdyn::engine::expr::Expr;
 use mechdyn::engine::function::Function;
 use mechdyn::engine::kinetostatics::Load;
@@ -33,6 +33,7 @@ fn problem(mechanism: Mechanism, loads: Vec<Load>, initial: Vec<[f64; 2]>, end: 
         integrator: None,
         conserve_energy: None,
         samples: 21,
+        kept_bytes: KEPT_BYTES,
         deadline: Deadline::none(),
         reactions: true,
     }
@@ -98,6 +99,7 @@ fn slider_crank_matches_its_reduced_form() {
         tolerance: 1e-10,
         integrator: None,
         samples: 21,
+        kept_bytes: KEPT_BYTES,
         deadline: Deadline::none(),
     })
     .unwrap();
@@ -414,5 +416,38 @@ fn a02_gets_its_answer_where_the_sparse_hold_fails() {
                 speed(theta, w0)
             );
         }
+    }
+}
+
+/// A run ending at an angle after more steps than it may keep is made again
+/// to the end time it found, and reports what a run that kept them reports:
+/// A02's chain of N = 4 from upright at 6 rad/s until it has turned once
+/// (θ = π/2 + 2π), through both flat positions — where the held energy
+/// stops, so the second run must start as the first did. Each sample's θ̇
+/// is also checked against the energy closed form (as in the test above,
+/// within 1e-7 rad/s).
+#[test]
+fn a_run_to_an_angle_made_again_for_its_samples_reports_the_same_motion() {
+    let n = 4.0;
+    let speed = |theta: f64| {
+        let v = |t: f64| ((n + 1.0) / 2.0 + n) * 9.81 * t.sin();
+        (36.0 + 2.0 * (v(PI / 2.0) - v(theta)) / ((n + 1.0) / 3.0 + n)).sqrt()
+    };
+    let run = |kept_bytes: usize| {
+        let end = End::UntilAngle { angle: PI / 2.0 + 2.0 * PI, max_time: 10.0 };
+        let mut p = problem(mechdyn::engine::samples::parallelogram_chain(4), Vec::new(), vec![[PI / 2.0, 6.0]], end);
+        (p.tolerance, p.reactions, p.kept_bytes) = (1e-9, false, kept_bytes);
+        solve(&p).expect("the chain turns")
+    };
+    let (kept, again) = (run(KEPT_BYTES), run(0));
+    assert!(!kept.solution.repeated && again.solution.repeated);
+    assert!(!kept.near_singular.is_empty(), "it passes the flat positions");
+    assert_eq!(again.solution.steps, 2 * kept.solution.steps, "the steps of both runs");
+    assert_eq!(kept.solution.samples, again.solution.samples);
+    assert_eq!(kept.details, again.details);
+    assert_eq!((kept.near_singular, kept.energy_conserved), (again.near_singular, again.energy_conserved));
+    for d in &kept.details {
+        let [theta, omega, _] = d.inputs[0];
+        assert!((omega - speed(theta)).abs() < 1e-7, "θ = {theta}: θ̇ {omega} vs {}", speed(theta));
     }
 }

@@ -6,7 +6,7 @@
 use crate::elliptic::{complete_k, sn};
 use mechdyn::engine::Deadline;
 use mechdyn::engine::dynamics::mechanism::{MechanismProblem, solve};
-use mechdyn::engine::dynamics::{DynamicsError, End, Integrator};
+use mechdyn::engine::dynamics::{DynamicsError, End, Integrator, KEPT_BYTES};
 use mechdyn::engine::kinetostatics::Load;
 use mechdyn::engine::model::Mechanism;
 use mechdyn::engine::samples;
@@ -24,6 +24,7 @@ fn problem(mechanism: Mechanism, loads: Vec<Load>, duration: f64) -> MechanismPr
         integrator: None,
         conserve_energy: None,
         samples: 101,
+        kept_bytes: KEPT_BYTES,
         deadline: Deadline::none(),
         reactions: false,
     }

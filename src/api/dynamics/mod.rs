@@ -12,7 +12,7 @@ use super::{create, validated};
 use crate::api::constants::{self, Constants};
 use crate::engine::Deadline;
 use crate::engine::dynamics::mechanism::{self, MechanismProblem};
-use crate::engine::dynamics::{DynamicsError, End, Integrator, ReducedProblem, solve};
+use crate::engine::dynamics::{DynamicsError, End, Integrator, KEPT_BYTES, ReducedProblem, solve};
 use crate::engine::function::Function;
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
@@ -365,6 +365,7 @@ impl DynamicsRequest {
             tolerance: c.tolerance,
             integrator: IntegratorChoice::engine(self.integrator),
             samples: c.samples,
+            kept_bytes: KEPT_BYTES,
             deadline: c.deadline,
         }))
     }
@@ -384,6 +385,7 @@ impl DynamicsRequest {
             integrator: IntegratorChoice::engine(self.integrator),
             conserve_energy: m.conserve_energy,
             samples: c.samples,
+            kept_bytes: KEPT_BYTES,
             deadline: c.deadline,
             reactions: m.reactions.unwrap_or(true),
         };

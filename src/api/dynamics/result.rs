@@ -2,7 +2,7 @@
 
 use super::{IntegratorChoice, MachineDynamics};
 use crate::api::create;
-use crate::engine::dynamics::{DynamicsSolution, EventKind};
+use crate::engine::dynamics::{DynamicsSolution, EventKind, KEPT_BYTES};
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
@@ -59,7 +59,8 @@ pub struct DynamicsAccuracy {
     /// Chosen automatically, the explicit pair found the model stiff (its
     /// steps held by stability, not accuracy) at this time, s, and the run
     /// was made again from the start with Radau IIA; `steps` and
-    /// `function_evaluations` count both runs.
+    /// `function_evaluations` count both runs (as they do where a run
+    /// ending at an angle was made twice for its samples: see `method`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stiff_at: Option<f64>,
     /// Mechanism form: whether the energy T + V was held to its initial
@@ -158,15 +159,25 @@ impl From<DynamicsSolution> for DynamicsResult {
     }
 }
 
-/// The integrator's name, and why it was chosen when an explicit pair handed over.
+/// The integrator's name, why it was chosen when an explicit pair handed
+/// over, and whether the run was made twice for its samples.
 pub(super) fn integrator_text(s: &DynamicsSolution) -> String {
-    match s.stiff_at {
+    let name = match s.stiff_at {
         Some(t) => format!(
             "{} (the explicit pair chosen first found the model stiff at t = {t:.3e} s: its steps were held \
              by stability, not accuracy; the run was made again from the start)",
             s.integrator.name()
         ),
         None => s.integrator.name().to_string(),
+    };
+    if s.repeated {
+        format!(
+            "{name}; the run, ended at its angle after more steps than a job keeps ({} MiB of them), was \
+             made again to the end time it found for the samples (the steps and evaluations count both)",
+            KEPT_BYTES >> 20
+        )
+    } else {
+        name
     }
 }
 

@@ -267,6 +267,12 @@ impl super::Model for Equations<'_> {
     fn project(&self, y: &mut [f64]) -> f64 {
         Equations::project(self, y)
     }
+
+    /// The folds held so far: the energy is held until the first (a run made
+    /// again from t = 0 holds it as the first run did).
+    fn restart(&self) {
+        self.held_at.borrow_mut().clear();
+    }
 }
 
 /// T = ½ q̇ᵀ M q̇ with M's diagonal `mass`.

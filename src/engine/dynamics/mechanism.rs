@@ -20,7 +20,7 @@
 
 use super::equations::{Equations, kinetic, masses};
 use super::range_space::RangeSpace;
-use super::{DynamicsError, DynamicsSolution, End, Integrator, Sample, Settings, energy_residual, run, sample_states};
+use super::{DynamicsError, DynamicsSolution, End, Integrator, Sample, Settings, energy_residual, run};
 use crate::engine::Deadline;
 use crate::engine::constraints::{State, evaluate, evaluate_blocks, joint_offsets};
 use crate::engine::kinematics::sweep;
@@ -48,6 +48,9 @@ pub struct MechanismProblem {
     /// is ignored where they do not).
     pub conserve_energy: Option<bool>,
     pub samples: usize,
+    /// The memory of kept steps a run ending at an angle may hold before it
+    /// is made again for its samples (the service's: [`super::KEPT_BYTES`]).
+    pub kept_bytes: usize,
     /// The job's compute budget.
     pub deadline: Deadline,
     /// Compute the joint reactions at the samples.
@@ -166,11 +169,11 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
     y0.extend(&start.qd);
     y0.push(0.0);
     let run = run(&dae, y0, &settings)?;
-    let states = sample_states(&run.steps, run.t_end, p.samples);
+    let states = &run.states;
     let t0 = states.first().map_or(0.0, |(_, y)| dae.kinetic(&y[n..2 * n]));
     let mut details = Vec::with_capacity(states.len());
     let mut samples = Vec::with_capacity(states.len());
-    for (t, y) in &states {
+    for (t, y) in states {
         if p.deadline.expired() {
             return Err(over(run.t_end, run.attempted));
         }
@@ -192,6 +195,7 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         evaluations: run.evaluations,
         integrator: run.integrator,
         stiff_at: run.stiff_at,
+        repeated: run.repeated,
         estimated_error: (0..n / 3).map(|b| run.local_errors[3 * b + 2]).fold(0.0, f64::max),
         stopped: run.stopped,
     };
@@ -248,7 +252,8 @@ fn settings(p: &MechanismProblem, q: &[f64], qd: &[f64], length: f64) -> Setting
     let mut atol: Vec<f64> = (0..2 * n).map(|k| rtol * scale(k)).collect();
     atol.push(f64::INFINITY);
     let integrator = p.integrator.unwrap_or_else(|| Integrator::auto(p.tolerance, false));
-    Settings { end: p.end, rtol, atol, integrator, automatic: p.integrator.is_none(), deadline: p.deadline }
+    let (end, samples, automatic, deadline) = (p.end, p.samples, p.integrator.is_none(), p.deadline);
+    Settings { end, samples, kept_bytes: p.kept_bytes, rtol, atol, integrator, automatic, deadline }
 }
 
 /// The energy T + V to hold, when asked or by default and the loads have a potential.

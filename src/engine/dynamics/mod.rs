@@ -21,6 +21,7 @@ pub mod mechanism;
 mod range_space;
 pub mod reduced;
 mod rows;
+mod sampler;
 
 pub use reduced::{ReducedProblem, solve};
 
@@ -29,6 +30,8 @@ use super::numeric::ode::{Dp5, Explicit, Step, Stepper};
 use super::numeric::radau::Radau5;
 use super::numeric::roots::brent;
 use crate::engine::Deadline;
+pub use sampler::KEPT_BYTES;
+use sampler::Sampler;
 use std::f64::consts::PI;
 
 /// The Runge–Kutta method that integrates.
@@ -123,6 +126,10 @@ pub struct DynamicsSolution {
     /// this time and the run was made again with Radau IIA (the steps and
     /// evaluations count both runs).
     pub stiff_at: Option<f64>,
+    /// The run ended at an angle after more steps than it keeps
+    /// ([`KEPT_BYTES`]) and was made again to the end time it found, for the
+    /// states at the instants asked (the steps and evaluations count both).
+    pub repeated: bool,
     /// Σ over the steps of the local error estimate of the angle (rad; for a
     /// mechanism the largest over its bodies' angles): a first-order
     /// estimate of the global error that ignores its growth or decay.
@@ -155,6 +162,15 @@ pub(crate) trait Model {
     /// The first input coordinate φ and its speed.
     fn angle(&self, y: &[f64]) -> f64;
     fn speed(&self, y: &[f64]) -> f64;
+    /// φ̇ at a step's end where the model asks when the motion first turns
+    /// back ([`Run::reversal`]; the reduced form's energy times); None, the
+    /// default, skips it (for a mechanism it would assemble the constraints).
+    fn end_speed(&self, _y: &[f64]) -> Option<f64> {
+        None
+    }
+    /// Forgets what an earlier run from t = 0 left that would change this
+    /// one (a run is made again after a hand-over, or for its samples).
+    fn restart(&self) {}
     /// Moves an accepted state back onto the model's invariants (e.g. the
     /// constraints, the energy); returns the largest constraint violation removed.
     fn project(&self, _y: &mut [f64]) -> f64 {
@@ -166,6 +182,11 @@ pub(crate) trait Model {
 #[derive(Clone, Debug)]
 pub(crate) struct Settings {
     pub end: End,
+    /// How many instants the run reports, evenly spaced over [0, t_end].
+    pub samples: usize,
+    /// The memory of kept steps allowed where the end time is found on the
+    /// way ([`KEPT_BYTES`]).
+    pub kept_bytes: usize,
     pub rtol: f64,
     pub atol: Vec<f64>,
     pub integrator: Integrator,
@@ -178,9 +199,13 @@ pub(crate) struct Settings {
     pub deadline: Deadline,
 }
 
-/// The accepted steps up to the end time, with the events.
+/// The states at the instants asked, with the events.
 pub(crate) struct Run {
-    pub steps: Vec<Step>,
+    /// (t, y) at `samples` instants evenly spaced over [0, t_end].
+    pub states: Vec<(f64, Vec<f64>)>,
+    /// t₀ of the first step whose end speed ([`Model::end_speed`]) is ≤ 0,
+    /// and of the first whose end speed is ≥ 0 (∞ where none is).
+    pub reversal: [f64; 2],
     pub events: Vec<Event>,
     pub t_end: f64,
     pub stopped: Option<String>,
@@ -193,14 +218,33 @@ pub(crate) struct Run {
     /// The method that made the run, and when an explicit one found the model stiff.
     pub integrator: Integrator,
     pub stiff_at: Option<f64>,
+    pub repeated: bool,
 }
 
 const MAX_STEPS: usize = 2_000_000;
 
 /// Integrates the model from y₀ at t = 0 until the end condition; a run
 /// the explicit pair finds stiff is made again with Radau IIA when the
-/// pair was chosen automatically.
+/// pair was chosen automatically. A run that ends at an angle after more
+/// steps than it may keep is made again as a duration to the end time it
+/// found, with the method that finished it: the same steps, the states at
+/// the instants asked, its counts added ([`sampler`]).
 pub(crate) fn run(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Run, DynamicsError> {
+    let mut first = attempt(model, y0.clone(), s)?;
+    if first.states.is_empty() {
+        let again =
+            Settings { end: End::Duration(first.t_end), integrator: first.integrator, automatic: false, ..s.clone() };
+        let second = attempt(model, y0, &again)?;
+        first.states = second.states;
+        first.attempted += second.attempted;
+        first.evaluations += second.evaluations;
+        first.repeated = true;
+    }
+    Ok(first)
+}
+
+/// [`run`] once, with the hand-over to Radau IIA.
+fn attempt(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Run, DynamicsError> {
     let first = match s.integrator {
         Integrator::Dopri5 => drive::<Explicit<Dp5>>(model, y0.clone(), s)?,
         Integrator::Dop853 => drive::<Explicit<Dp853>>(model, y0.clone(), s)?,
@@ -229,13 +273,19 @@ struct Handover {
 
 /// The run with the stepper S, or the handover to Radau IIA.
 fn drive<S: Stepper>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<Result<Run, Handover>, DynamicsError> {
+    model.restart();
     let deadline = s.deadline;
     let mut f = |t: f64, y: &[f64], dy: &mut [f64]| {
         if deadline.expired() { dy.fill(f64::NAN) } else { model.rhs(t, y, dy) }
     };
     let over = |ode: &S| DynamicsError::Budget { seconds: deadline.seconds(), t: ode.time(), steps: ode.counts()[0] };
     let mut ode = S::start(&mut f, 0.0, y0, s.rtol, s.atol.clone());
-    let (mut steps, mut events, mut stopped, mut drift) = (Vec::new(), Vec::new(), None, 0.0f64);
+    let known = match s.end {
+        End::Duration(d) => Some(d),
+        End::UntilAngle { .. } => None,
+    };
+    let mut sampler = Sampler::new(s.samples, known, s.kept_bytes);
+    let (mut events, mut stopped, mut drift, mut reversal) = (Vec::new(), None, 0.0f64, [f64::INFINITY; 2]);
     let t_end = loop {
         if deadline.expired() {
             return Err(over(&ode));
@@ -253,8 +303,12 @@ fn drive<S: Stepper>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<R
         // evaluation assembles the constraints.
         let span = (model.angle(&step.y0), model.angle(&step.y1));
         turns(model, &step, span, &mut events);
+        if let Some(w) = model.end_speed(&step.y1) {
+            let first = |t: f64, reached: bool| if reached { t.min(step.t0) } else { t };
+            reversal = [first(reversal[0], w <= 0.0), first(reversal[1], w >= 0.0)];
+        }
         if let Some(t) = finished(model, s.end, &step, span, &mut events, &mut stopped) {
-            steps.push(step);
+            sampler.accept(step, true);
             break t;
         }
         let mut y = step.y1.clone();
@@ -262,12 +316,13 @@ fn drive<S: Stepper>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<R
         if y != step.y1 {
             ode.project(&mut f, y);
         }
-        steps.push(step);
+        sampler.accept(step, false);
     };
     events.retain(|e| e.kind == EventKind::End || e.t <= t_end);
     let [accepted, rejected, evaluations] = ode.counts();
     Ok(Ok(Run {
-        steps,
+        states: sampler.finish(t_end),
+        reversal,
         events,
         t_end,
         stopped,
@@ -277,6 +332,7 @@ fn drive<S: Stepper>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<R
         local_errors: ode.local_errors().to_vec(),
         integrator: s.integrator,
         stiff_at: None,
+        repeated: false,
     }))
 }
 
@@ -320,22 +376,6 @@ fn finished(
         }
         _ => None,
     }
-}
-
-/// n instants evenly spaced over [0, t_end], both ends included, each with
-/// the dense-output state there.
-pub(crate) fn sample_states(steps: &[Step], t_end: f64, n: usize) -> Vec<(f64, Vec<f64>)> {
-    let n = n.max(2);
-    let mut k = 0;
-    (0..n)
-        .map(|i| {
-            let t = t_end * i as f64 / (n - 1) as f64;
-            while k + 1 < steps.len() && steps[k].t1 < t {
-                k += 1;
-            }
-            (t, steps[k].at(t.min(steps[k].t1)))
-        })
-        .collect()
 }
 
 /// (W − ΔT)/max(|W|, |ΔT|, T₀, T_end).

@@ -12,9 +12,7 @@
 //! events are also timed by the energy form ([`super::energy_form`]).
 
 use super::energy_form;
-use super::{
-    DynamicsError, DynamicsSolution, End, Integrator, Model, Sample, Settings, energy_residual, run, sample_states,
-};
+use super::{DynamicsError, DynamicsSolution, End, Integrator, Model, Sample, Settings, energy_residual, run};
 use crate::engine::Deadline;
 use crate::engine::function::{Function, Side};
 
@@ -32,6 +30,9 @@ pub struct ReducedProblem {
     /// The Runge–Kutta pair (None: [`Integrator::auto`] of the tolerance).
     pub integrator: Option<Integrator>,
     pub samples: usize,
+    /// The memory of kept steps a run ending at an angle may hold before it
+    /// is made again for its samples (the service's: [`super::KEPT_BYTES`]).
+    pub kept_bytes: usize,
     /// The job's compute budget.
     pub deadline: Deadline,
 }
@@ -58,6 +59,10 @@ impl Model for Reduced<'_> {
 
     fn speed(&self, y: &[f64]) -> f64 {
         y[1]
+    }
+
+    fn end_speed(&self, y: &[f64]) -> Option<f64> {
+        Some(y[1])
     }
 }
 
@@ -108,31 +113,33 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
     let atol = rtol * p.speed0.abs().max(1.0);
     let integrator = p.integrator.unwrap_or_else(|| Integrator::auto(p.tolerance, true));
     let automatic = p.integrator.is_none();
-    let settings = Settings { end: p.end, rtol, atol: vec![atol; 3], integrator, automatic, deadline: p.deadline };
+    let (end, samples, kept_bytes, deadline) = (p.end, p.samples, p.kept_bytes, p.deadline);
+    let settings = Settings { end, samples, kept_bytes, rtol, atol: vec![atol; 3], integrator, automatic, deadline };
     let run = run(&model, vec![p.angle0, p.speed0, 0.0], &settings)?;
     let mut dy = [0.0; 3];
     let t0 = p.kinetic(p.angle0, p.speed0);
-    let samples: Vec<Sample> = sample_states(&run.steps, run.t_end, p.samples)
-        .into_iter()
+    let samples: Vec<Sample> = run
+        .states
+        .iter()
         .map(|(t, y)| {
-            model.rhs(t, &y, &mut dy);
+            model.rhs(*t, y, &mut dy);
             let energy_residual = energy_residual(y[2], t0, p.kinetic(y[0], y[1]));
-            Sample { t, angle: y[0], speed: y[1], acceleration: dy[1], energy_residual }
+            Sample { t: *t, angle: y[0], speed: y[1], acceleration: dy[1], energy_residual }
         })
         .collect();
     let (first, last) = (samples[0], samples[samples.len() - 1]);
     // Position-only actions: their work by quadrature over the angle (independent
     // of the integrator); otherwise the integrated power.
     let position_only = !p.torques.iter().any(|(f, _)| f.uses_state());
-    let w = if position_only {
-        p.work(first.angle, last.angle)
-    } else {
-        run.steps.last().map_or(0.0, |s| s.component(run.t_end, 2))
-    };
+    let w = if position_only { p.work(first.angle, last.angle) } else { run.states.last().map_or(0.0, |(_, y)| y[2]) };
     let energy_times = if position_only {
         // The first step whose end moves against the first event's direction.
         let d = run.events.first().map_or(0.0, |e| (e.angle - p.angle0).signum());
-        let reversal = run.steps.iter().find(|s| s.y1[1] * d <= 0.0).map_or(f64::INFINITY, |s| s.t0);
+        let reversal = match d {
+            d if d > 0.0 => run.reversal[0],
+            d if d < 0.0 => run.reversal[1],
+            _ => 0.0,
+        };
         energy_form::event_times(p, &run.events, reversal)
     } else {
         Vec::new()
@@ -150,6 +157,7 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
         evaluations: run.evaluations,
         integrator: run.integrator,
         stiff_at: run.stiff_at,
+        repeated: run.repeated,
         estimated_error: run.local_errors[0],
         stopped: run.stopped,
     })

@@ -34,6 +34,11 @@ pub struct Step {
 }
 
 impl Step {
+    /// How many vectors of coefficients its continuous extension has.
+    pub fn stages(&self) -> usize {
+        self.rcont.len()
+    }
+
     /// Dense-output state at t ∈ [t0, t1].
     pub fn at(&self, t: f64) -> Vec<f64> {
         (0..self.y0.len()).map(|i| self.component(t, i)).collect()
