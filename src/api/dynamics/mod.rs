@@ -231,8 +231,9 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
                  the state projected onto Φ = 0 and Φ_q·q̇ = 0{energy} after every step; \
                  in LU, rows of Φ_q within 1e-5 of dependence held at singular positions, \
                  dependent ones dropped; events by Brent's method on the dense output; \
-                 work as the integrated power",
-                result::integrator_text(&s.solution)
+                 work as the integrated power{}",
+                result::integrator_text(&s.solution),
+                result::repeated_text(&s.solution)
             );
             if let Some(t) = s.near_singular.first() {
                 result.warnings.push(format!(

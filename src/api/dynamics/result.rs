@@ -144,13 +144,14 @@ impl From<DynamicsSolution> for DynamicsResult {
                 energy_conserved: None,
                 energy_held_steps: None,
                 method: format!(
-                    "{} with dense output, events located by Brent's method on it; work {}",
+                    "{} with dense output, events located by Brent's method on it; work {}{}",
                     integrator_text(&s),
                     if s.work_by_quadrature {
                         "by adaptive quadrature over the angle"
                     } else {
                         "as the integrated power"
-                    }
+                    },
+                    repeated_text(&s)
                 ),
             },
             machine: None,
@@ -159,26 +160,28 @@ impl From<DynamicsSolution> for DynamicsResult {
     }
 }
 
-/// The integrator's name, why it was chosen when an explicit pair handed
-/// over, and whether the run was made twice for its samples.
+/// The integrator's name, and why it was chosen when an explicit pair handed over.
 pub(super) fn integrator_text(s: &DynamicsSolution) -> String {
-    let name = match s.stiff_at {
+    match s.stiff_at {
         Some(t) => format!(
             "{} (the explicit pair chosen first found the model stiff at t = {t:.3e} s: its steps were held \
              by stability, not accuracy; the run was made again from the start)",
             s.integrator.name()
         ),
         None => s.integrator.name().to_string(),
-    };
-    if s.repeated {
-        format!(
-            "{name}; the run, ended at its angle after more steps than a job keeps ({} MiB of them), was \
-             made again to the end time it found for the samples (the steps and evaluations count both)",
-            KEPT_BYTES >> 20
-        )
-    } else {
-        name
     }
+}
+
+/// The end of the method's text where the run was made twice for its samples.
+pub(super) fn repeated_text(s: &DynamicsSolution) -> String {
+    if !s.repeated {
+        return String::new();
+    }
+    format!(
+        "; the run ended at its angle after more steps than a job keeps ({} MiB of them) and was made again \
+         to the end time it found, for the samples (the steps and evaluations count both runs)",
+        KEPT_BYTES >> 20
+    )
 }
 
 /// CSV of a stored dynamics result: one row per sample.
