@@ -196,6 +196,11 @@ async fn a_parameter_study_is_one_csv_in_one_csv_out() {
     let j = app.post("/v1/templates/p103-slider-flywheel/table", &json_body).await.json();
     assert_eq!(j["rows"][0]["values"]["inertia_exact"].as_f64().unwrap(), rows[1][2].parse::<f64>().unwrap());
     assert!(j["rows"][1]["error"].as_str().unwrap().contains("F:"), "{j}");
+    // A value its job's result does not have: the row says which, beside the values it has.
+    let json_body = json!({"rows": [{"F": 1200, "eps": 0.03}], "values": ["inertia_exact", "events/1/t"]});
+    let j = app.post("/v1/templates/p103-slider-flywheel/table", &json_body).await.json();
+    assert_eq!(j["rows"][0]["values"]["inertia_exact"].as_f64().unwrap(), rows[1][2].parse::<f64>().unwrap());
+    assert_eq!(j["rows"][0]["error"], "this job's result has no events/1/t", "{j}");
     for body in ["G\n1\n", "G\n", "true"] {
         let unknown = app.post_raw(path, "text/csv", body).await;
         assert_eq!(unknown.status, StatusCode::BAD_REQUEST, "{body}: {}", unknown.text);

@@ -37,7 +37,8 @@ pub struct TableRow {
     pub values: BTreeMap<String, Value>,
     /// The job's id, when it was computed.
     pub job: Option<String>,
-    /// Why this row failed, or null.
+    /// Why this row failed, or which values its job's result does not have
+    /// (with the job's warnings); null when every value is there.
     pub error: Option<String>,
 }
 
@@ -214,7 +215,7 @@ pub(super) async fn run(
         out.push(match job_for(state, t, &given).await {
             Ok((row, _reserved)) => {
                 let result: Value = serde_json::from_slice(&row.result).unwrap_or_default();
-                (pointers.iter().map(|p| value_at(&result, p)).collect(), Some(row.id), None)
+                (pointers.iter().map(|p| value_at(&result, p)).collect(), Some(row.id), absent(&result, pointers))
             }
             Err(e @ (ApiError::Saturated { .. } | ApiError::StorageFull | ApiError::Unavailable(_))) => return Err(e),
             Err(e) => (vec![Value::Null; pointers.len()], None, Some(said(&e))),
@@ -233,6 +234,19 @@ fn value_at(result: &Value, pointer: &str) -> Value {
     at(result, &tokens(pointer)).cloned().unwrap_or(Value::Null)
 }
 
+/// What a row's `error` says where its job's result has no value at some
+/// of the pointers: which, and the job's warnings (often the reason, e.g. an
+/// end angle not reached, so no end event).
+fn absent(result: &Value, pointers: &[String]) -> Option<String> {
+    let missing: Vec<&str> = pointers.iter().filter(|p| at(result, &tokens(p)).is_none()).map(String::as_str).collect();
+    if missing.is_empty() {
+        return None;
+    }
+    let warnings: Vec<&str> = result["warnings"].as_array().into_iter().flatten().filter_map(Value::as_str).collect();
+    let why = if warnings.is_empty() { String::new() } else { format!(" (its warnings: {})", warnings.join("; ")) };
+    Some(format!("this job's result has no {}{why}", missing.join(", ")))
+}
+
 /// An error in one line for a table's `error` cell.
 pub(super) fn said(e: &ApiError) -> String {
     let p = e.problem();
@@ -242,4 +256,25 @@ pub(super) fn said(e: &ApiError) -> String {
         .map(|f| format!("{}: {}", f.parameter.clone().or_else(|| f.pointer.clone()).unwrap_or_default(), f.message))
         .collect();
     if fields.is_empty() { p.detail } else { fields.join("; ") }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::absent;
+    use serde_json::json;
+
+    /// A dynamics result whose end angle was not reached has no end event:
+    /// the row names the missing value and gives the job's warning.
+    #[test]
+    fn a_missing_value_is_named_with_the_jobs_warnings() {
+        let result = json!({"events": [{"t": 0.5}], "warnings": ["the angle 12.57 rad was not reached within 60 s"]});
+        let pointers = ["events/0/t".to_string(), "/events/1/t".to_string()];
+        assert_eq!(
+            absent(&result, &pointers).as_deref(),
+            Some(
+                "this job's result has no /events/1/t (its warnings: the angle 12.57 rad was not reached within 60 s)"
+            )
+        );
+        assert_eq!(absent(&result, &pointers[..1]), None);
+    }
 }

@@ -31,7 +31,8 @@ pub struct Variant {
     pub values: BTreeMap<String, Value>,
     /// The reference job, when values were asked for.
     pub job: Option<String>,
-    /// Why its job failed, or null.
+    /// Why its job failed, or which values its result does not have (with
+    /// the job's warnings); null when every value is there.
     pub error: Option<String>,
 }
 
