@@ -35,6 +35,11 @@ async fn d1_scotch_yoke_start_up_through_the_api() {
         close(&e["t_energy_form"], row["time_s"].as_f64().unwrap(), 1e-10, "t at the turn, energy form");
     }
     assert_eq!(events.last().unwrap()["kind"], "end");
+    // The end at a fixed address, as a spreadsheet's WEBSERVICE reads it: 4π reached at the case's time.
+    assert_eq!(&job["result"]["end"], events.last().unwrap());
+    let url = format!("/v1/jobs/{}/result/end/t", job["id"].as_str().unwrap());
+    let end = app.get(&url).await.text.parse::<f64>().unwrap();
+    close(&json!(end), c["expected"]["at_angle"][6]["time_s"].as_f64().unwrap(), 1e-9, "t at the end");
     let difference = job["result"]["accuracy"]["energy_form_time_difference"].as_f64().unwrap();
     assert!(difference < 1e-9, "{difference}");
     // Actions of φ only: their work is a quadrature over the angle (the brake of tests/api/stiff.rs, of ω: the integrated power).
@@ -80,10 +85,20 @@ async fn a_start_up_that_never_arrives_ends_with_the_reason() {
 #[tokio::test]
 async fn the_end_condition_and_the_inertia_are_checked() {
     let app = TestApp::new().await;
+    // Each end condition a request gives too many or too few of, at its field.
+    let pointers = |r: &crate::helpers::Reply| -> Vec<String> {
+        r.json()["errors"].as_array().unwrap().iter().map(|e| e["pointer"].as_str().unwrap().to_string()).collect()
+    };
     let both = d1(json!({"duration": 1, "until_angle": 3}));
     let r = app.post("/v1/dynamics", &both).await;
     assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY);
-    assert_eq!(r.json()["errors"][0]["pointer"], "");
+    assert_eq!(pointers(&r), ["/duration", "/until_angle"], "{}", r.text);
+    let r = app.post("/v1/dynamics", &d1(json!({}))).await;
+    assert_eq!(pointers(&r), ["/duration"], "{}", r.text);
+    assert!(r.text.contains("required: give \\\"duration\\\""), "{}", r.text);
+    // A longest time for a run that ends at its duration would be ignored: it is refused.
+    let r = app.post("/v1/dynamics", &d1(json!({"duration": 1, "max_duration": 5}))).await;
+    assert_eq!(pointers(&r), ["/max_duration"], "{}", r.text);
     let mut negative = d1(json!({"duration": 1}));
     negative["reduced_inertia"] = json!({"expr": "sin(phi)"});
     let r = app.post("/v1/dynamics", &negative).await;
@@ -182,7 +197,12 @@ async fn machine_form_errors_point_at_the_field() {
     both["reduced_inertia"] = json!(0.1);
     let r = app.post("/v1/dynamics", &both).await;
     assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
-    assert_eq!(r.json()["errors"][0]["pointer"], "");
+    assert_eq!(r.json()["errors"][0]["pointer"], "/machine");
+    assert_eq!(r.json()["errors"][1]["pointer"], "/reduced_inertia");
+    let mut neither = d1_machine(json!({"duration": 1}));
+    neither.as_object_mut().unwrap().remove("machine");
+    let r = app.post("/v1/dynamics", &neither).await;
+    assert_eq!(r.json()["errors"][0]["pointer"], "/machine", "{}", r.text);
     let mut loose = d1_machine(json!({"duration": 1}));
     loose["machine"]["mechanism"]["joints"].as_array_mut().unwrap().pop();
     let r = app.post("/v1/dynamics", &loose).await;

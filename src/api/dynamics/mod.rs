@@ -150,10 +150,15 @@ impl Kind for Dynamics {
     const UNITS: &'static [(&'static str, &'static str)] = &[
         ("/accuracy/constraint_drift", "m or rad"),
         ("/accuracy/energy_form_time_difference", "s"),
+        ("/accuracy/energy_held_steps", "1"),
         ("/accuracy/energy_residual", "1"),
         ("/accuracy/estimated_error", "rad"),
         ("/accuracy/function_evaluations", "1"),
         ("/accuracy/steps", "1"),
+        ("/end/angle", "rad"),
+        ("/end/speed", "rad/s"),
+        ("/end/t", "s"),
+        ("/end/t_energy_form", "s"),
         ("/energy_residual", "1"),
         ("/events/*/angle", "rad"),
         ("/events/*/speed", "rad/s"),
@@ -285,7 +290,15 @@ impl DynamicsRequest {
         let problem = match (&self.machine, reduced) {
             (Some(m), false) => self.machine_problem(&mut e, m, &c),
             (None, true) => self.reduced_problem(&mut e, &c),
-            _ => e.fail("", "give either \"machine\" or the reduced form \"torques\" with \"reduced_inertia\""),
+            (Some(_), true) => {
+                let form = if self.torques.is_empty() { "/reduced_inertia" } else { "/torques" };
+                e.push("/machine", "give either \"machine\" or the reduced form, not both");
+                e.fail(form, "give either the reduced form (\"torques\" with \"reduced_inertia\") or \"machine\", not both")
+            }
+            (None, false) => e.fail(
+                "/machine",
+                "required: give \"machine\" (a mechanism and its loads) or the reduced form \"torques\" with \"reduced_inertia\"",
+            ),
         };
         match problem {
             Some(problem) if e.list.is_empty() => Ok(problem),
@@ -347,7 +360,7 @@ impl DynamicsRequest {
             .collect();
         let inertia = match &self.reduced_inertia {
             Some(f) => e.function(f, Dim::INERTIA, period, "/reduced_inertia"),
-            None => e.fail("", "the reduced form needs \"reduced_inertia\""),
+            None => e.fail("/reduced_inertia", "required with \"torques\": the reduced inertia I*(φ), kg·m²"),
         };
         let initial = self.initial.as_ref();
         let angle0 = initial.and_then(|i| i.angle.as_ref()).map_or(Some(0.0), |q| e.angle(q, "/initial/angle"));
@@ -399,6 +412,11 @@ impl DynamicsRequest {
             e.require(t, |t| t <= MAX_DURATION, at, &format!("must be at most {MAX_DURATION} s"))
         };
         match (&self.duration, &self.until_angle) {
+            (Some(_), None) if self.max_duration.is_some() => e.fail(
+                "/max_duration",
+                "applies only with \"until_angle\" (the longest a run to an angle may take): a run of a \"duration\" \
+                 ends at it",
+            ),
             (Some(d), None) => time(e, d, "/duration").map(End::Duration),
             (None, Some(a)) => {
                 let angle = e.angle(a, "/until_angle")?;
@@ -411,7 +429,14 @@ impl DynamicsRequest {
                 };
                 Some(End::UntilAngle { angle, max_time })
             }
-            _ => e.fail("", "give exactly one of \"duration\" and \"until_angle\""),
+            (Some(_), Some(_)) => {
+                e.push("/duration", "give either \"duration\" or \"until_angle\", not both");
+                e.fail("/until_angle", "give either \"until_angle\" or \"duration\", not both")
+            }
+            (None, None) => e.fail(
+                "/duration",
+                "required: give \"duration\" (how long to run) or \"until_angle\" (the input angle at which to stop)",
+            ),
         }
     }
 }

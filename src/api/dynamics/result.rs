@@ -82,6 +82,10 @@ pub struct DynamicsAccuracy {
 pub struct DynamicsResult {
     pub samples: Vec<SampleDto>,
     pub events: Vec<EventDto>,
+    /// Where the run ended: the last of `events`, at an address that does
+    /// not depend on how many turns came before (`/end/t`, `/end/speed`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub end: Option<EventDto>,
     pub energy_residual: f64,
     pub accuracy: DynamicsAccuracy,
     /// Mechanism form: every input, the reactions and the constraint residual at the samples.
@@ -102,6 +106,18 @@ impl super::create::JobResult for DynamicsResult {
 
 impl From<DynamicsSolution> for DynamicsResult {
     fn from(s: DynamicsSolution) -> Self {
+        let events: Vec<EventDto> = s
+            .events
+            .iter()
+            .enumerate()
+            .map(|(k, v)| EventDto {
+                kind: if v.kind == EventKind::End { "end" } else { "turn" }.into(),
+                angle: v.angle,
+                t: v.t,
+                speed: v.speed,
+                t_energy_form: s.energy_times.get(k).copied().flatten(),
+            })
+            .collect();
         Self {
             samples: s
                 .samples
@@ -114,18 +130,8 @@ impl From<DynamicsSolution> for DynamicsResult {
                     energy_residual: x.energy_residual,
                 })
                 .collect(),
-            events: s
-                .events
-                .iter()
-                .enumerate()
-                .map(|(k, v)| EventDto {
-                    kind: if v.kind == EventKind::End { "end" } else { "turn" }.into(),
-                    angle: v.angle,
-                    t: v.t,
-                    speed: v.speed,
-                    t_energy_form: s.energy_times.get(k).copied().flatten(),
-                })
-                .collect(),
+            end: events.iter().rev().find(|e| e.kind == "end").cloned(),
+            events,
             energy_residual: s.energy_residual,
             accuracy: DynamicsAccuracy {
                 energy_residual: s.energy_residual,
