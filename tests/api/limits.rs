@@ -164,3 +164,22 @@ async fn a_huge_count_of_steps_is_refused_before_anything_is_laid_out() {
     assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
     assert_eq!(r.json()["errors"][0]["pointer"], "/input/steps", "{}", r.text);
 }
+
+/// A long smooth run at a tight tolerance over its budget with the
+/// 5th-order method (the machine form's automatic choice) is told of the
+/// 8th-order one; asked with the 8th-order one, it is not. A01's pendulum
+/// over 100000 s at 1e-12, budget 50 ms.
+#[tokio::test]
+async fn a_long_run_over_its_budget_is_told_of_the_eighth_order_method() {
+    let app = TestApp::with_job_budget(Duration::from_millis(50)).await;
+    let mut body = request("a01_pendulum");
+    (body["duration"], body["tolerance"]) = (json!("100000 s"), json!(1e-12));
+    let hint = "\"integrator\": \"dop853\" takes far fewer steps";
+    assert_over_budget(&app, "/v1/dynamics", &body, "0.05").await;
+    let r = app.post("/v1/dynamics", &body).await;
+    assert!(r.json()["detail"].as_str().unwrap().ends_with(hint), "{}", r.text);
+    body["integrator"] = json!("dop853");
+    let r = app.post("/v1/dynamics", &body).await;
+    assert_eq!(r.json()["type"], "/problems/compute-budget", "{}", r.text);
+    assert!(!r.json()["detail"].as_str().unwrap().contains(hint), "{}", r.text);
+}

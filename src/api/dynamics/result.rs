@@ -64,8 +64,9 @@ pub struct DynamicsAccuracy {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stiff_at: Option<f64>,
     /// Mechanism form: whether the energy T + V was held to its initial
-    /// value throughout (see `machine.conserve_energy`): false where the
-    /// loads have no potential, where the hold was turned off, and where a
+    /// value throughout the run (see `machine.conserve_energy`; skipped near
+    /// turning points, as `energy_held_steps` says): false where the loads
+    /// have no potential, where the hold was turned off, and where a
     /// singular position was met (the hold stops there).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub energy_conserved: Option<bool>,
