@@ -176,6 +176,14 @@ pub fn cell(v: &Value) -> String {
     }
 }
 
+/// The `fields` of each of `n` items of a list as cells (empty where the list is null).
+pub fn list(v: &Value, n: usize, fields: &[&str]) -> Vec<String> {
+    match v.as_array() {
+        Some(items) => items.iter().flat_map(|item| fields.iter().map(|f| cell(&item[*f]))).collect(),
+        None => vec![String::new(); n * fields.len()],
+    }
+}
+
 fn write_csv(records: impl Iterator<Item = Vec<String>>) -> Result<String, ApiError> {
     let mut w = csv::Writer::from_writer(Vec::new());
     let internal = |e: csv::Error| ApiError::Internal(e.to_string());

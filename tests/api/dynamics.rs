@@ -169,6 +169,25 @@ async fn d1_as_a_machine_through_the_api() {
     assert!(last["constraint_residual"].as_f64().unwrap() < 1e-9);
     assert!(result["accuracy"]["constraint_drift"].as_f64().unwrap() < 1e-9);
     assert!(result["energy_residual"].as_f64().unwrap().abs() < 1e-8);
+    // The CSV has every body's position and every reaction beside the input's state: the
+    // crank's centre A at 0.1·(cos φ, sin φ) m, the yoke's at 0.2 + 0.1·cos φ m (its drawn
+    // 0.3 m with A at 0.1 m), the reactions as in the JSON.
+    let csv = app.get(&format!("/v1/jobs/{}/result.csv", r.json()["id"].as_str().unwrap())).await.text;
+    let mut reader = csv::Reader::from_reader(csv.as_bytes());
+    let header: Vec<String> = reader.headers().unwrap().iter().map(String::from).collect();
+    let column = |name: &str| header.iter().position(|h| h == name).unwrap_or_else(|| panic!("{name} in {header:?}"));
+    let (phi, crank_x, crank_y, yoke_x) =
+        (column("angle_rad"), column("crank_x_m"), column("crank_y_m"), column("yoke_x_m"));
+    assert_eq!(header.len(), 4 + 2 * 3 + 3 * 3, "{header:?}");
+    for (k, row) in reader.records().map(|r| r.unwrap()).enumerate() {
+        let x = |c: usize| row[c].parse::<f64>().unwrap();
+        let (cos, sin) = (x(phi).cos(), x(phi).sin());
+        assert!((x(crank_x) - 0.1 * cos).abs() < 1e-12 && (x(crank_y) - 0.1 * sin).abs() < 1e-12, "row {k}");
+        assert!((x(yoke_x) - (0.2 + 0.1 * cos)).abs() < 1e-12, "row {k}");
+        let reaction = &result["machine"]["samples"][k]["reactions"][2];
+        let name = reaction["joint"].as_str().unwrap();
+        assert_eq!(x(column(&format!("{name}_fx_N"))), reaction["fx"].as_f64().unwrap(), "row {k}");
+    }
 }
 
 /// Machine-form mistakes answer 422 at the field: friction, a motion law as

@@ -2,6 +2,7 @@
 
 use super::{IntegratorChoice, MachineDynamics};
 use crate::api::create;
+use crate::api::tables::list;
 use crate::engine::dynamics::{DynamicsSolution, EventKind, KEPT_BYTES};
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
@@ -191,16 +192,37 @@ pub(super) fn repeated_text(s: &DynamicsSolution) -> String {
     )
 }
 
-/// CSV of a stored dynamics result: one row per sample.
+/// CSV of a stored dynamics result: one row per sample; for a mechanism
+/// also every body's position and every joint's reaction at the sample.
 pub fn csv_table(result: &serde_json::Value) -> (Vec<String>, Vec<Vec<String>>) {
     let columns =
         [("t", "t_s"), ("angle", "angle_rad"), ("speed", "speed_rad_s"), ("acceleration", "acceleration_rad_s2")];
-    let header = columns.iter().map(|c| c.1.to_string()).collect();
-    let rows = result["samples"]
-        .as_array()
-        .into_iter()
-        .flatten()
-        .map(|row| columns.iter().map(|c| row[c.0].to_string()).collect())
+    let mut header: Vec<String> = columns.iter().map(|c| c.1.to_string()).collect();
+    let samples = result["samples"].as_array().cloned().unwrap_or_default();
+    let machine = result["machine"]["samples"].as_array().filter(|m| m.len() == samples.len());
+    // The names of a sample's list (bodies, joints of the reactions) from the first sample.
+    let names = |list: &str, key: &str| -> Vec<String> {
+        let first = machine.and_then(|m| m.first()).and_then(|s| s[list].as_array());
+        first.into_iter().flatten().filter_map(|r| r[key].as_str().map(String::from)).collect()
+    };
+    let (bodies, joints) = (names("bodies", "body"), names("reactions", "joint"));
+    for b in &bodies {
+        header.extend([format!("{b}_x_m"), format!("{b}_y_m"), format!("{b}_theta_rad")]);
+    }
+    for j in &joints {
+        header.extend([format!("{j}_fx_N"), format!("{j}_fy_N"), format!("{j}_moment_N_m")]);
+    }
+    let rows = samples
+        .iter()
+        .enumerate()
+        .map(|(k, row)| {
+            let mut cells: Vec<String> = columns.iter().map(|c| row[c.0].to_string()).collect();
+            if let Some(m) = machine {
+                cells.extend(list(&m[k]["bodies"], bodies.len(), &["x", "y", "theta"]));
+                cells.extend(list(&m[k]["reactions"], joints.len(), &["fx", "fy", "moment"]));
+            }
+            cells
+        })
         .collect();
     (header, rows)
 }

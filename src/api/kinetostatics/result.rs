@@ -2,6 +2,7 @@
 
 use super::request::Problem;
 use crate::api::mechanism::{Name, ReactionDto};
+use crate::api::tables::{cell, list};
 use crate::engine::kinetostatics::{Motion, Reaction, Step, Totals};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -337,23 +338,11 @@ const MOTION: [(&str, &str); 9] = [
     ("alpha", "rad_s2"),
 ];
 
-fn cell(v: &Value) -> String {
-    if v.is_null() { String::new() } else { v.to_string() }
-}
-
 /// A number or a list of `n` numbers as `n` cells (empty where null).
 fn cells(v: &Value, n: usize) -> Vec<String> {
     match v {
         Value::Array(a) => a.iter().map(cell).collect(),
         Value::Null => vec![String::new(); n],
         other => vec![cell(other)],
-    }
-}
-
-/// The `fields` of each of `n` items of a list (empty cells where the list is null).
-fn list(v: &Value, n: usize, fields: &[&str]) -> Vec<String> {
-    match v.as_array() {
-        Some(items) => items.iter().flat_map(|item| fields.iter().map(|f| cell(&item[*f]))).collect(),
-        None => vec![String::new(); n * fields.len()],
     }
 }
