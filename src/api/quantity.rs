@@ -25,6 +25,16 @@ pub enum Quantity {
     Text(String),
 }
 
+impl Quantity {
+    /// As the request gave it: a number with the unit it is read in, or the text.
+    pub fn as_given(&self, unit: &str) -> String {
+        match self {
+            Self::Number(x) => format!("{x} {unit}"),
+            Self::Text(t) => t.clone(),
+        }
+    }
+}
+
 struct QuantityVisitor;
 
 impl<'de> Visitor<'de> for QuantityVisitor {

@@ -25,6 +25,8 @@ pub use result::{DynamicsAccuracy, DynamicsResult, EventDto, SampleDto, csv_tabl
 
 /// Longest simulated time, s.
 pub const MAX_DURATION: f64 = 1e5;
+/// The longest a run to an angle takes when `max_duration` is not given, s.
+const DEFAULT_MAX_DURATION: f64 = 60.0;
 const DEFAULT_SAMPLES: usize = 201;
 
 /// A machine — in reduced form (`torques` and `reduced_inertia`) or as a
@@ -207,12 +209,12 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
     match validated(unknown, request.to_problem(limits))? {
         Problem::Reduced(p) => {
             let dopri5 = p.integrator.unwrap_or_else(|| Integrator::auto(p.tolerance, true)) == Integrator::Dopri5;
-            Ok(DynamicsResult::from(solve(&p).map_err(|e| invalid(e, dopri5))?))
+            Ok(request.in_its_words(DynamicsResult::from(solve(&p).map_err(|e| invalid(e, dopri5))?)))
         }
         Problem::Machine(p, joints, bodies) => {
             let dopri5 = p.integrator.unwrap_or_else(|| Integrator::auto(p.tolerance, false)) == Integrator::Dopri5;
             let s = mechanism::solve(&p).map_err(|e| invalid(e, dopri5))?;
-            let mut result = DynamicsResult::from(s.solution.clone());
+            let mut result = request.in_its_words(DynamicsResult::from(s.solution.clone()));
             result.accuracy.constraint_drift = Some(s.drift);
             result.accuracy.energy_conserved = Some(s.energy_conserved);
             result.accuracy.energy_held_steps = Some(s.energy_held_steps);
@@ -291,6 +293,18 @@ struct Common {
 }
 
 impl DynamicsRequest {
+    /// The result with its "not reached" warning (the only one a solution
+    /// carries) in the request's words: `until_angle` and `max_duration` as
+    /// given ("720 deg", not 12.566370614359172 rad).
+    fn in_its_words(&self, mut result: DynamicsResult) -> DynamicsResult {
+        if let (Some(warning), Some(angle)) = (result.warnings.first_mut(), &self.until_angle) {
+            let time =
+                self.max_duration.as_ref().map_or_else(|| format!("{DEFAULT_MAX_DURATION} s"), |q| q.as_given("s"));
+            *warning = format!("the angle {} was not reached within {time}", angle.as_given("rad"));
+        }
+        result
+    }
+
     fn to_problem(&self, limits: &Limits) -> Result<Problem, Vec<FieldError>> {
         let mut e = Errors::new(limits);
         constants::read(self.constants.as_ref(), &mut e);
@@ -434,7 +448,7 @@ impl DynamicsRequest {
                 }
                 let max_time = match &self.max_duration {
                     Some(q) => time(e, q, "/max_duration")?,
-                    None => 60.0,
+                    None => DEFAULT_MAX_DURATION,
                 };
                 Some(End::UntilAngle { angle, max_time })
             }
