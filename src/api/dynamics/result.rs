@@ -198,7 +198,7 @@ pub fn csv_table(result: &serde_json::Value) -> (Vec<String>, Vec<Vec<String>>) 
     let columns =
         [("t", "t_s"), ("angle", "angle_rad"), ("speed", "speed_rad_s"), ("acceleration", "acceleration_rad_s2")];
     let mut header: Vec<String> = columns.iter().map(|c| c.1.to_string()).collect();
-    let samples = result["samples"].as_array().cloned().unwrap_or_default();
+    let samples: &[serde_json::Value] = result["samples"].as_array().map_or(&[], Vec::as_slice);
     let machine = result["machine"]["samples"].as_array().filter(|m| m.len() == samples.len());
     // The names of a sample's list (bodies, joints of the reactions) from the first sample.
     let names = |list: &str, key: &str| -> Vec<String> {
