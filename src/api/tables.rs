@@ -176,6 +176,13 @@ pub fn cell(v: &Value) -> String {
     }
 }
 
+/// The `key` of each item of the list `list` of the first row that has
+/// it: the names of a table's repeated columns (joints, bodies).
+pub fn names(rows: &[Value], list: &str, key: &str) -> Vec<String> {
+    let first = rows.iter().find_map(|r| r[list].as_array());
+    first.into_iter().flatten().filter_map(|item| item[key].as_str().map(String::from)).collect()
+}
+
 /// The `fields` of each of `n` items of a list as cells (empty where the list is null).
 pub fn list(v: &Value, n: usize, fields: &[&str]) -> Vec<String> {
     match v.as_array() {

@@ -2,7 +2,7 @@
 
 use super::{IntegratorChoice, MachineDynamics};
 use crate::api::create;
-use crate::api::tables::list;
+use crate::api::tables::{list, names};
 use crate::engine::dynamics::{DynamicsSolution, EventKind, KEPT_BYTES};
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
@@ -200,12 +200,8 @@ pub fn csv_table(result: &serde_json::Value) -> (Vec<String>, Vec<Vec<String>>) 
     let mut header: Vec<String> = columns.iter().map(|c| c.1.to_string()).collect();
     let samples: &[serde_json::Value] = result["samples"].as_array().map_or(&[], Vec::as_slice);
     let machine = result["machine"]["samples"].as_array().filter(|m| m.len() == samples.len());
-    // The names of a sample's list (bodies, joints of the reactions) from the first sample.
-    let names = |list: &str, key: &str| -> Vec<String> {
-        let first = machine.and_then(|m| m.first()).and_then(|s| s[list].as_array());
-        first.into_iter().flatten().filter_map(|r| r[key].as_str().map(String::from)).collect()
-    };
-    let (bodies, joints) = (names("bodies", "body"), names("reactions", "joint"));
+    let rows = machine.map_or(&[][..], Vec::as_slice);
+    let (bodies, joints) = (names(rows, "bodies", "body"), names(rows, "reactions", "joint"));
     for b in &bodies {
         header.extend([format!("{b}_x_m"), format!("{b}_y_m"), format!("{b}_theta_rad")]);
     }

@@ -2,7 +2,7 @@
 
 use super::request::Problem;
 use crate::api::mechanism::{Name, ReactionDto};
-use crate::api::tables::{cell, list};
+use crate::api::tables::{cell, list, names};
 use crate::engine::kinetostatics::{Motion, Reaction, Step, Totals};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -289,15 +289,9 @@ pub fn csv_table(result: &Value) -> (Vec<String>, Vec<Vec<String>>) {
             .map(|(k, u)| if n == 1 { format!("{name}_{u}") } else { format!("{name}_{}_{u}", k + 1) })
             .collect()
     };
-    // The names of a step's list (joints of the reactions, bodies of the
-    // motion) from the first step that has it.
-    let names = |list: &str, key: &str| -> Vec<String> {
-        let first = steps.iter().find_map(|s| s[list].as_array());
-        first.into_iter().flatten().filter_map(|r| r[key].as_str().map(String::from)).collect()
-    };
     let inputs = units("coordinate_unit").len().max(1);
     let driving = steps.iter().any(|s| !s["driving"].is_null());
-    let (joints, bodies) = (names("reactions", "joint"), names("kinematics", "body"));
+    let (joints, bodies) = (names(&steps, "reactions", "joint"), names(&steps, "kinematics", "body"));
     let mut header = numbered("input", units("coordinate_unit"));
     if driving {
         header.extend(numbered("driving", units("driving_unit")));

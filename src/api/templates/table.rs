@@ -215,7 +215,9 @@ pub(super) async fn run(
         out.push(match job_for(state, t, &given).await {
             Ok((row, _reserved)) => {
                 let result: Value = serde_json::from_slice(&row.result).unwrap_or_default();
-                (pointers.iter().map(|p| value_at(&result, p)).collect(), Some(row.id), absent(&result, pointers))
+                let found: Vec<Option<&Value>> = pointers.iter().map(|p| at(&result, &tokens(p))).collect();
+                let error = absent(&result, pointers, &found);
+                (found.into_iter().map(|v| v.cloned().unwrap_or(Value::Null)).collect(), Some(row.id), error)
             }
             Err(e @ (ApiError::Saturated { .. } | ApiError::StorageFull | ApiError::Unavailable(_))) => return Err(e),
             Err(e) => (vec![Value::Null; pointers.len()], None, Some(said(&e))),
@@ -229,16 +231,11 @@ pub(super) fn unknown_parameter(t: &Template, name: &str) -> FieldError {
     FieldError::parameter(name, format!("no parameter {name} in template {} (its parameters: {known})", t.id))
 }
 
-/// The value at `pointer` (leading `/` optional) as a table cell's value; null when absent.
-fn value_at(result: &Value, pointer: &str) -> Value {
-    at(result, &tokens(pointer)).cloned().unwrap_or(Value::Null)
-}
-
 /// What a row's `error` says where its job's result has no value at some
 /// of the pointers: which, and the job's warnings (often the reason, e.g. an
 /// end angle not reached, so no end event).
-fn absent(result: &Value, pointers: &[String]) -> Option<String> {
-    let missing: Vec<&str> = pointers.iter().filter(|p| at(result, &tokens(p)).is_none()).map(String::as_str).collect();
+fn absent(result: &Value, pointers: &[String], found: &[Option<&Value>]) -> Option<String> {
+    let missing: Vec<&str> = pointers.iter().zip(found).filter(|(_, v)| v.is_none()).map(|(p, _)| p.as_str()).collect();
     if missing.is_empty() {
         return None;
     }
@@ -260,7 +257,7 @@ pub(super) fn said(e: &ApiError) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::absent;
+    use super::{absent, at, tokens};
     use serde_json::json;
 
     /// A dynamics result whose end angle was not reached has no end event:
@@ -269,12 +266,13 @@ mod tests {
     fn a_missing_value_is_named_with_the_jobs_warnings() {
         let result = json!({"events": [{"t": 0.5}], "warnings": ["the angle 12.57 rad was not reached within 60 s"]});
         let pointers = ["events/0/t".to_string(), "/events/1/t".to_string()];
+        let found: Vec<_> = pointers.iter().map(|p| at(&result, &tokens(p))).collect();
         assert_eq!(
-            absent(&result, &pointers).as_deref(),
+            absent(&result, &pointers, &found).as_deref(),
             Some(
                 "this job's result has no /events/1/t (its warnings: the angle 12.57 rad was not reached within 60 s)"
             )
         );
-        assert_eq!(absent(&result, &pointers[..1]), None);
+        assert_eq!(absent(&result, &pointers[..1], &found[..1]), None);
     }
 }
