@@ -171,13 +171,15 @@ async fn d1_as_a_machine_through_the_api() {
     assert!(result["energy_residual"].as_f64().unwrap().abs() < 1e-8);
     // The CSV has every body's position and every reaction beside the input's state: the
     // crank's centre A at 0.1·(cos φ, sin φ) m, the yoke's at 0.2 + 0.1·cos φ m (its drawn
-    // 0.3 m with A at 0.1 m), the reactions as in the JSON.
+    // 0.3 m with A at 0.1 m), to 1e-12 m (the positions are the integrated coordinates, held on
+    // Φ = 0 to 1e-12·L by the projection), the reactions as in the JSON.
     let csv = app.get(&format!("/v1/jobs/{}/result.csv", r.json()["id"].as_str().unwrap())).await.text;
     let mut reader = csv::Reader::from_reader(csv.as_bytes());
     let header: Vec<String> = reader.headers().unwrap().iter().map(String::from).collect();
     let column = |name: &str| header.iter().position(|h| h == name).unwrap_or_else(|| panic!("{name} in {header:?}"));
     let (phi, crank_x, crank_y, yoke_x) =
         (column("angle_rad"), column("crank_x_m"), column("crank_y_m"), column("yoke_x_m"));
+    // t, φ, φ̇, φ̈; x, y, θ of the crank and the yoke; fx, fy, moment of O, slide and pin.
     assert_eq!(header.len(), 4 + 2 * 3 + 3 * 3, "{header:?}");
     for (k, row) in reader.records().map(|r| r.unwrap()).enumerate() {
         let x = |c: usize| row[c].parse::<f64>().unwrap();

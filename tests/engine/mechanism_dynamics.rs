@@ -431,6 +431,7 @@ fn a_run_to_an_angle_made_again_for_its_samples_reports_the_same_motion() {
     let n = 4.0;
     let speed = |theta: f64| {
         let v = |t: f64| ((n + 1.0) / 2.0 + n) * 9.81 * t.sin();
+        // θ̇² = ω₀² + 2(V(π/2) − V(θ))/I*, ω₀ = 6 rad/s.
         (36.0 + 2.0 * (v(PI / 2.0) - v(theta)) / ((n + 1.0) / 3.0 + n)).sqrt()
     };
     let run = |kept_bytes: usize| {
