@@ -34,20 +34,19 @@ pub mod problem;
 pub mod quantity;
 pub mod read;
 pub mod rotor;
+pub mod service;
 pub mod tables;
 pub mod templates;
 
 use crate::store::Store;
 pub use admission::{Admission, Capacity};
-use axum::extract::State;
-use axum::http::{StatusCode, header};
+use axum::Router;
+use axum::http::header;
 use axum::routing::get;
-use axum::{Json, Router};
 pub use limits::Limits;
 pub use middleware::Settings;
 use problem::{ApiError, FieldError, Problem};
-use serde::Serialize;
-use utoipa::{OpenApi, ToSchema};
+use utoipa::OpenApi;
 use utoipa_axum::router::OpenApiRouter;
 use utoipa_swagger_ui::{Config, SwaggerUi};
 
@@ -100,7 +99,7 @@ characters) makes a retry safe: the same key with the same request answers the f
 422, and while the first is still being answered a 409 with `Retry-After`. Keys are kept 7 days."
     ),
     components(schemas(
-        Problem, FieldError, Health, quantity::Quantity, quantity::FunctionDto, quantity::FunctionSpec,
+        Problem, FieldError, service::Health, service::Readiness, quantity::Quantity, quantity::FunctionDto, quantity::FunctionSpec,
         tables::AngleUnit, tables::Format
     )),
     tags(
@@ -112,7 +111,7 @@ characters) makes a retry safe: the same key with the same request answers the f
         (name = "jobs", description = "Stored computations"),
         (name = "templates", description = "Problems with parameters: one number of a job by URL (a spreadsheet's WEBSERVICE), a parameter study as CSV"),
         (name = "grading", description = "Students' answers checked by the engine: tolerances as course platforms define them, feedback naming common slips, seeded per-student variants, a whole class in one CSV"),
-        (name = "service", description = "Health"),
+        (name = "service", description = "Liveness, readiness and metrics, for the operator"),
         (name = "pages", description = "HTML pages for people (no JavaScript): the recent jobs and templates, a job's values and plots, a template's form"),
     )
 )]
@@ -140,7 +139,8 @@ fn routes() -> OpenApiRouter<AppState> {
         .routes(utoipa_axum::routes!(templates::grade))
         .routes(rest_of_path(utoipa_axum::routes!(templates::result), "pointer"))
         .routes(rest_of_path(utoipa_axum::routes!(parts::part), "pointer"))
-        .routes(utoipa_axum::routes!(healthz))
+        .routes(utoipa_axum::routes!(service::healthz))
+        .routes(utoipa_axum::routes!(service::readyz))
         .routes(utoipa_axum::routes!(pages::home))
         .routes(utoipa_axum::routes!(pages::job::job))
         .routes(utoipa_axum::routes!(pages::form::template))
@@ -209,28 +209,6 @@ pub fn router(state: AppState, settings: &Settings) -> Router {
         .method_not_allowed_fallback(|| async { ApiError::MethodNotAllowed })
         .with_state(state.clone());
     middleware::layered(routes, settings, state)
-}
-
-#[derive(Serialize, ToSchema)]
-pub struct Health {
-    #[schema(example = "ok")]
-    pub status: &'static str,
-    pub version: &'static str,
-}
-
-/// Liveness and database check.
-#[utoipa::path(get, path = "/healthz", tag = "service",
-    responses(
-        (status = 200, description = "Service and database up", body = Health),
-        (status = 503, description = "Database unavailable", body = Health),
-    ))]
-pub async fn healthz(State(state): State<AppState>) -> (StatusCode, Json<Health>) {
-    let version = env!("CARGO_PKG_VERSION");
-    if state.store.ping().await {
-        (StatusCode::OK, Json(Health { status: "ok", version }))
-    } else {
-        (StatusCode::SERVICE_UNAVAILABLE, Json(Health { status: "database unavailable", version }))
-    }
 }
 
 /// An engine error as a field error. Engine labels are JSON pointers; errors

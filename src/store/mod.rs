@@ -324,9 +324,22 @@ impl Store {
         Ok(Page { rows: rows.into_iter().map(JobRow::from).collect(), bytes: total, cut })
     }
 
-    /// Whether the database answers.
-    pub async fn ping(&self) -> bool {
-        sqlx::query("SELECT 1").execute(&self.pool).await.is_ok()
+    /// The database's kind, as its URL's scheme names it.
+    pub fn backend(&self) -> &'static str {
+        "sqlite"
+    }
+
+    /// Whether the database answers a query (within the pool's wait for a
+    /// connection); the error says why not.
+    pub async fn check(&self) -> Result<(), StoreError> {
+        sqlx::query("SELECT 1").execute(&self.pool).await?;
+        Ok(())
+    }
+
+    /// Closes the database's connections: every later use fails (a service
+    /// stopping; the tests' database gone away).
+    pub async fn close(&self) {
+        self.pool.close().await;
     }
 
     /// SQLite's own check of the file (`PRAGMA integrity_check`): "ok" or what is wrong.

@@ -45,6 +45,11 @@ impl TestApp {
         Self { app: router(AppState::new(store), settings), url, _dir: dir }
     }
 
+    /// A router built by the test (its own state and settings), on no folder of ours.
+    pub fn serving(app: axum::Router) -> Self {
+        Self { app, url: String::new(), _dir: tempfile::tempdir().unwrap() }
+    }
+
     /// The same database opened again, as after a restart.
     pub async fn restart(self) -> Self {
         let store = Store::open(&self.url).await.unwrap();

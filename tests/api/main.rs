@@ -22,6 +22,7 @@ mod kinetostatics;
 mod libreoffice;
 mod limits;
 mod offline;
+mod operations;
 mod pages;
 mod parts;
 mod peers;
