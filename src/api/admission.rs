@@ -157,6 +157,11 @@ impl Admission {
         short.then(|| self.inline.clone().try_acquire_owned().ok()).flatten()
     }
 
+    /// Jobs computing now.
+    pub fn computing(&self) -> usize {
+        self.capacity.jobs.max(1) - self.compute.available_permits()
+    }
+
     /// Jobs computing or waiting to.
     pub fn in_flight(&self) -> usize {
         self.capacity.jobs.max(1) + self.capacity.queue - self.slots.available_permits()

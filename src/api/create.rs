@@ -99,7 +99,7 @@ where
         kind: kind.into(),
         created_at: now_rfc3339(),
         request,
-        result: result?,
+        result: result.inspect_err(|_| state.metrics.job(kind, false, elapsed))?,
         engine_us: i64::try_from(elapsed.as_micros()).unwrap_or(i64::MAX),
         engine_version: env!("CARGO_PKG_VERSION").into(),
         label: if key.is_some() { None } else { super::label::current() },
@@ -109,7 +109,9 @@ where
         drop(spare);
     }
     drop(computing);
-    Ok((state.store.insert(job).await?, reserved))
+    let stored = state.store.insert(job).await;
+    state.metrics.job(kind, stored.is_ok(), elapsed);
+    Ok((stored?, reserved))
 }
 
 /// The result as JSON bytes, or a 422 when it would exceed `limit` bytes.

@@ -1,6 +1,7 @@
 //! The service's middleware, outermost first: a request id (`x-request-id`,
 //! a random UUID unless the client sent one, echoed on the answer), the
-//! request's log span carrying it, CORS for the origins configured, panics
+//! request's log span carrying it, the request counted and timed by its
+//! route ([`super::metrics`]), CORS for the origins configured, panics
 //! caught and answered 500 problem+json without internals, the optional
 //! bearer token every POST must carry, admission control (a slot per POST,
 //! 503 when none is free), a POST's `?label=` ([`super::label`]), its
@@ -57,6 +58,7 @@ impl Settings {
 pub fn layered(routes: Router, s: &Settings, state: AppState) -> Router {
     let token: Option<Arc<str>> = s.api_token.as_deref().map(Arc::from);
     let (admission, limit, flight) = (state.admission.clone(), s.body_limit, InFlight::default());
+    let metrics = state.metrics.clone();
     let routes = routes
         .layer(DefaultBodyLimit::max(s.body_limit))
         .layer(Extension(BodyLimit(s.body_limit)))
@@ -71,6 +73,7 @@ pub fn layered(routes: Router, s: &Settings, state: AppState) -> Router {
     };
     let request_id = HeaderName::from_static(REQUEST_ID);
     routes
+        .layer(from_fn(move |req, next| super::metrics::track(metrics.clone(), req, next)))
         .layer(PropagateRequestIdLayer::new(request_id.clone()))
         .layer(
             TraceLayer::new_for_http()

@@ -26,6 +26,7 @@ pub mod kinetostatics;
 pub mod label;
 pub mod limits;
 pub mod mechanism;
+pub mod metrics;
 pub mod middleware;
 pub mod pages;
 pub mod parts;
@@ -58,12 +59,14 @@ pub struct AppState {
     pub limits: Limits,
     /// How many jobs compute and wait at once, and the memory of answers.
     pub admission: Admission,
+    /// What `/metrics` reports.
+    pub metrics: metrics::Metrics,
 }
 
 impl AppState {
     /// The state with the default limits and capacity.
     pub fn new(store: Store) -> Self {
-        Self { store, limits: Limits::default(), admission: Admission::default() }
+        Self { store, limits: Limits::default(), admission: Admission::default(), metrics: Default::default() }
     }
 }
 
@@ -141,6 +144,7 @@ fn routes() -> OpenApiRouter<AppState> {
         .routes(rest_of_path(utoipa_axum::routes!(parts::part), "pointer"))
         .routes(utoipa_axum::routes!(service::healthz))
         .routes(utoipa_axum::routes!(service::readyz))
+        .routes(utoipa_axum::routes!(metrics::metrics))
         .routes(utoipa_axum::routes!(pages::home))
         .routes(utoipa_axum::routes!(pages::job::job))
         .routes(utoipa_axum::routes!(pages::form::template))

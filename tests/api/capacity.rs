@@ -93,10 +93,19 @@ async fn a_post_beyond_the_jobs_and_the_queue_is_answered_503_with_retry_after()
     assert_eq!(second.json()["type"], "/problems/saturated", "{}", second.text);
     let retry: u64 = second.headers["retry-after"].to_str().unwrap().parse().unwrap();
     assert!((1..=60).contains(&retry), "Retry-After {retry}");
+    // /metrics counts the POST holding the slot as queued, not computing, and the 503s by route.
+    let metrics = app.get("/metrics").await.text;
+    assert!(
+        metrics.contains("\nmechdyn_queue_depth 1\n") && metrics.contains("\nmechdyn_jobs_computing 0\n"),
+        "{metrics}"
+    );
+    let refused = r#"mechdyn_http_requests_total{method="POST",route="/v1/flywheel",status="503"}"#;
+    assert!(metrics.lines().any(|l| l.starts_with(refused)), "{metrics}");
     sender.send_data(request("p113_pulley").to_string().into()).await.unwrap();
     drop(sender);
     assert_eq!(first.await.unwrap().unwrap().status(), StatusCode::CREATED);
     assert_eq!(app.post("/v1/flywheel", &request("p113_pulley")).await.status, StatusCode::CREATED);
+    assert!(app.get("/metrics").await.text.contains("\nmechdyn_queue_depth 0\n"));
 }
 
 /// An answer holds its memory until it has been sent: with room for one

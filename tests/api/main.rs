@@ -27,6 +27,7 @@ mod pages;
 mod parts;
 mod peers;
 mod plots;
+mod prometheus;
 mod robot_arm;
 mod rotor;
 mod security;

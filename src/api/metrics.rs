@@ -1,0 +1,134 @@
+//! `GET /metrics`: the service's counters in Prometheus's text format
+//! (version 0.0.4, the `prometheus` crate's encoder), one registry per
+//! service so that nothing is global.
+//!
+//! - `mechdyn_http_requests_total{method, route, status}` and
+//!   `mechdyn_http_request_duration_seconds{method, route}`: every request,
+//!   by its route's template (`/v1/jobs/{id}`, never the id itself, so the
+//!   series stay few; `unmatched` for a path no route has);
+//! - `mechdyn_jobs_total{kind, status}`: every job that reached a compute
+//!   slot, `done` (computed and stored) or `failed` (an invalid request,
+//!   refused by the engine, over its budget, or not stored);
+//! - `mechdyn_engine_seconds{kind}`: the engine's time per job;
+//! - `mechdyn_jobs_computing`, `mechdyn_queue_depth`: this replica's jobs
+//!   computing now, and its POSTs not computing yet (their body arriving,
+//!   or waiting for a compute slot), read at the scrape.
+
+use super::AppState;
+use super::admission::Admission;
+use axum::extract::{MatchedPath, Request, State};
+use axum::http::{StatusCode, header};
+use axum::middleware::Next;
+use axum::response::{IntoResponse, Response};
+use prometheus::{
+    HistogramOpts, HistogramVec, IntCounterVec, IntGauge, Opts, Registry, TextEncoder, exponential_buckets,
+};
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+/// The service's metrics, shared by its handlers.
+#[derive(Clone)]
+pub struct Metrics(Arc<Inner>);
+
+struct Inner {
+    registry: Registry,
+    requests: IntCounterVec,
+    request_seconds: HistogramVec,
+    jobs: IntCounterVec,
+    engine_seconds: HistogramVec,
+    computing: IntGauge,
+    queue_depth: IntGauge,
+}
+
+impl Default for Metrics {
+    fn default() -> Self {
+        Self::new().expect("the metrics' names and labels are fixed and valid")
+    }
+}
+
+impl Metrics {
+    fn new() -> prometheus::Result<Self> {
+        let registry = Registry::new();
+        let requests = IntCounterVec::new(
+            Opts::new("mechdyn_http_requests_total", "HTTP requests answered, by route template and status"),
+            &["method", "route", "status"],
+        )?;
+        // 100 µs to ~50 s: a stored job's read to a long dynamics job.
+        let seconds = || exponential_buckets(1e-4, 2.0, 20);
+        let request_seconds = HistogramVec::new(
+            HistogramOpts::new("mechdyn_http_request_duration_seconds", "Time to answer a request, until its head")
+                .buckets(seconds()?),
+            &["method", "route"],
+        )?;
+        let jobs = IntCounterVec::new(
+            Opts::new(
+                "mechdyn_jobs_total",
+                "Jobs by outcome: done (computed and stored) or failed (invalid, refused by the engine, over its budget, not stored)",
+            ),
+            &["kind", "status"],
+        )?;
+        // 10 µs (a gear's geometry) to ~80 s (past the largest compute budget's default).
+        let engine_seconds = HistogramVec::new(
+            HistogramOpts::new("mechdyn_engine_seconds", "The engine's time per job")
+                .buckets(exponential_buckets(1e-5, 2.0, 24)?),
+            &["kind"],
+        )?;
+        let computing = IntGauge::new("mechdyn_jobs_computing", "Jobs computing now on this replica")?;
+        let queue_depth = IntGauge::new(
+            "mechdyn_queue_depth",
+            "POSTs on this replica not computing yet: their body arriving, or waiting for a compute slot",
+        )?;
+        registry.register(Box::new(requests.clone()))?;
+        registry.register(Box::new(request_seconds.clone()))?;
+        registry.register(Box::new(jobs.clone()))?;
+        registry.register(Box::new(engine_seconds.clone()))?;
+        registry.register(Box::new(computing.clone()))?;
+        registry.register(Box::new(queue_depth.clone()))?;
+        Ok(Self(Arc::new(Inner { registry, requests, request_seconds, jobs, engine_seconds, computing, queue_depth })))
+    }
+
+    /// A job of `kind` whose computation took `elapsed`: done or failed.
+    pub fn job(&self, kind: &str, done: bool, elapsed: Duration) {
+        let status = if done { "done" } else { "failed" };
+        self.0.jobs.with_label_values(&[kind, status]).inc();
+        self.0.engine_seconds.with_label_values(&[kind]).observe(elapsed.as_secs_f64());
+    }
+
+    /// A request answered with `status` after `elapsed`.
+    fn request(&self, method: &str, route: &str, status: StatusCode, elapsed: Duration) {
+        self.0.requests.with_label_values(&[method, route, status.as_str()]).inc();
+        self.0.request_seconds.with_label_values(&[method, route]).observe(elapsed.as_secs_f64());
+    }
+
+    /// Every metric in the text format, the gauges read from `admission` now.
+    fn text(&self, admission: &Admission) -> Result<String, prometheus::Error> {
+        let (computing, in_flight) = (admission.computing(), admission.in_flight());
+        self.0.computing.set(i64::try_from(computing).unwrap_or(i64::MAX));
+        self.0.queue_depth.set(i64::try_from(in_flight.saturating_sub(computing)).unwrap_or(i64::MAX));
+        let mut text = String::new();
+        TextEncoder::new().encode_utf8(&self.0.registry.gather(), &mut text)?;
+        Ok(text)
+    }
+}
+
+/// Middleware: counts and times every request by its route's template.
+pub async fn track(metrics: Metrics, req: Request, next: Next) -> Response {
+    let route = req.extensions().get::<MatchedPath>().map_or("unmatched", MatchedPath::as_str).to_string();
+    let method = req.method().as_str().to_string();
+    let start = Instant::now();
+    let response = next.run(req).await;
+    metrics.request(&method, &route, response.status(), start.elapsed());
+    response
+}
+
+/// The service's metrics, in Prometheus's text format.
+#[utoipa::path(get, path = "/metrics", tag = "service",
+    responses((status = 200, description = "Prometheus's text format (version 0.0.4): HTTP requests by route and \
+status, jobs by kind and status, the engine's time per job, jobs computing and waiting", body = String,
+        content_type = "text/plain; version=0.0.4")))]
+pub async fn metrics(State(state): State<AppState>) -> Response {
+    match state.metrics.text(&state.admission) {
+        Ok(text) => ([(header::CONTENT_TYPE, prometheus::TEXT_FORMAT)], text).into_response(),
+        Err(e) => super::problem::ApiError::Internal(format!("metrics: {e}")).into_response(),
+    }
+}
