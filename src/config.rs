@@ -2,6 +2,7 @@
 
 use crate::api::Capacity;
 use crate::api::limits::{Limits, MAX_EXPRESSION_DEPTH};
+use crate::api::retention::Policy;
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
 use std::time::Duration;
@@ -70,6 +71,15 @@ pub struct Cli {
     /// Largest size of the SQLite database, bytes; beyond it POSTs are answered 507 (default: the disk's free space).
     #[arg(long, env = "MECHDYN_MAX_DATABASE_BYTES", global = true)]
     pub max_database_bytes: Option<u64>,
+    /// Delete jobs older than this many days (fractions allowed; default: keep them).
+    #[arg(long, env = "MECHDYN_RETENTION_DAYS", value_parser = positive_days, global = true)]
+    pub retention_days: Option<f64>,
+    /// Keep only the newest this many jobs (default: keep them all).
+    #[arg(long, env = "MECHDYN_RETENTION_JOBS", value_parser = at_least_one_u64, global = true)]
+    pub retention_jobs: Option<u64>,
+    /// Seconds between the retention's sweeps (the first runs at start).
+    #[arg(long, env = "MECHDYN_RETENTION_INTERVAL_SECONDS", default_value_t = 60.0, value_parser = positive_seconds, global = true)]
+    pub retention_interval_seconds: f64,
 }
 
 impl Cli {
@@ -104,6 +114,31 @@ impl Cli {
             queue_wait: Duration::from_secs_f64(self.queue_seconds),
             ..Capacity::default()
         })
+    }
+}
+
+impl Cli {
+    /// The retention of stored jobs.
+    pub fn retention(&self) -> Policy {
+        Policy {
+            max_age: self.retention_days.map(|d| Duration::from_secs_f64(d * 86_400.0)),
+            max_jobs: self.retention_jobs,
+            interval: Duration::from_secs_f64(self.retention_interval_seconds),
+        }
+    }
+}
+
+fn positive_days(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(v) if v > 0.0 && v <= 1e6 => Ok(v),
+        _ => Err(format!("{s:?} is not a number of days in (0, 1000000]")),
+    }
+}
+
+fn at_least_one_u64(s: &str) -> Result<u64, String> {
+    match s.parse::<u64>() {
+        Ok(n) if n >= 1 => Ok(n),
+        _ => Err(format!("{s:?} is not a whole number of at least 1")),
     }
 }
 

@@ -72,6 +72,7 @@ async fn run(cli: &Cli) -> Result<(), String> {
         api_token: cli.api_token.clone().filter(|t| !t.is_empty()),
         cors_origins: cli.cors_origins.iter().map(|o| o.trim().to_string()).filter(|o| !o.is_empty()).collect(),
     };
+    api::retention::spawn(state.clone(), cli.retention());
     let app = api::router(state, &settings);
     let listener = tokio::net::TcpListener::bind(&cli.addr).await.map_err(|e| format!("bind {}: {e}", cli.addr))?;
     let local = listener.local_addr().map_err(|e| e.to_string())?;

@@ -202,7 +202,13 @@ impl io::Write for Counter {
 }
 
 pub fn now_rfc3339() -> String {
+    rfc3339(time::OffsetDateTime::now_utc())
+}
+
+/// A time as jobs store it (`created_at`): RFC 3339 in UTC with
+/// microseconds, so that the text sorts as the time does.
+pub fn rfc3339(t: time::OffsetDateTime) -> String {
     let format =
         time::macros::format_description!("[year]-[month]-[day]T[hour]:[minute]:[second].[subsecond digits:6]Z");
-    time::OffsetDateTime::now_utc().format(&format).unwrap_or_default()
+    t.to_offset(time::UtcOffset::UTC).format(&format).unwrap_or_default()
 }

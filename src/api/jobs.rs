@@ -13,7 +13,7 @@ use crate::store::{Filter, Page};
 use axum::body::Body;
 use axum::extract::rejection::QueryRejection;
 use axum::extract::{Path, Query, State};
-use axum::http::{HeaderMap, header};
+use axum::http::{HeaderMap, StatusCode, header};
 use axum::response::{IntoResponse, Response};
 use std::collections::HashMap;
 use tokio::sync::OwnedSemaphorePermit;
@@ -57,6 +57,32 @@ pub async fn get(
     let mut body = Chunks::default();
     job_chunks(&row, &mut body);
     Ok(json_answer(body, reserved))
+}
+
+/// Deletes a job.
+///
+/// When the service has an API token, this needs it as every POST does. The
+/// job's answer kept under an `Idempotency-Key` goes with it (a retry of its
+/// POST computes it again); a template's job is computed again when its
+/// parameters are next asked.
+#[utoipa::path(delete, path = "/v1/jobs/{id}", operation_id = "delete_job", tag = "jobs",
+    params(("id" = String, Path, description = "Job id")),
+    responses(
+        (status = 204, description = "The job was deleted"),
+        (status = 401, description = "The service has an API token and the request does not carry it",
+            body = Problem, content_type = "application/problem+json"),
+        (status = 404, description = "No job with this id", body = Problem, content_type = "application/problem+json"),
+        (status = 503, description = "The database is unavailable: retry after `Retry-After` seconds",
+            body = Problem, content_type = "application/problem+json",
+            headers(("Retry-After" = u64, description = "Seconds to wait before retrying"))),
+    ))]
+pub async fn delete(State(state): State<AppState>, Path(id): Path<String>) -> Result<StatusCode, ApiError> {
+    if state.store.delete(&id).await? {
+        state.metrics.deleted("request", 1);
+        Ok(StatusCode::NO_CONTENT)
+    } else {
+        Err(ApiError::NotFound(id))
+    }
 }
 
 /// Query of the jobs list.

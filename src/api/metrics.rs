@@ -9,6 +9,8 @@
 //! - `mechdyn_jobs_total{kind, status}`: every job that reached a compute
 //!   slot, `done` (computed and stored) or `failed` (an invalid request,
 //!   refused by the engine, over its budget, or not stored);
+//! - `mechdyn_jobs_deleted_total{reason}`: by a `DELETE` (`request`) or by
+//!   the retention (`age`, `count`);
 //! - `mechdyn_engine_seconds{kind}`: the engine's time per job;
 //! - `mechdyn_jobs_computing`, `mechdyn_queue_depth`: this replica's jobs
 //!   computing now, and its POSTs not computing yet (their body arriving,
@@ -35,6 +37,7 @@ struct Inner {
     requests: IntCounterVec,
     request_seconds: HistogramVec,
     jobs: IntCounterVec,
+    deleted: IntCounterVec,
     engine_seconds: HistogramVec,
     computing: IntGauge,
     queue_depth: IntGauge,
@@ -67,6 +70,10 @@ impl Metrics {
             ),
             &["kind", "status"],
         )?;
+        let deleted = IntCounterVec::new(
+            Opts::new("mechdyn_jobs_deleted_total", "Jobs deleted: by a request, or by the retention's age or count"),
+            &["reason"],
+        )?;
         // 10 µs (a gear's geometry) to ~80 s (past the largest compute budget's default).
         let engine_seconds = HistogramVec::new(
             HistogramOpts::new("mechdyn_engine_seconds", "The engine's time per job")
@@ -81,10 +88,20 @@ impl Metrics {
         registry.register(Box::new(requests.clone()))?;
         registry.register(Box::new(request_seconds.clone()))?;
         registry.register(Box::new(jobs.clone()))?;
+        registry.register(Box::new(deleted.clone()))?;
         registry.register(Box::new(engine_seconds.clone()))?;
         registry.register(Box::new(computing.clone()))?;
         registry.register(Box::new(queue_depth.clone()))?;
-        Ok(Self(Arc::new(Inner { registry, requests, request_seconds, jobs, engine_seconds, computing, queue_depth })))
+        Ok(Self(Arc::new(Inner {
+            registry,
+            requests,
+            request_seconds,
+            jobs,
+            deleted,
+            engine_seconds,
+            computing,
+            queue_depth,
+        })))
     }
 
     /// A job of `kind` whose computation took `elapsed`: done or failed.
@@ -92,6 +109,11 @@ impl Metrics {
         let status = if done { "done" } else { "failed" };
         self.0.jobs.with_label_values(&[kind, status]).inc();
         self.0.engine_seconds.with_label_values(&[kind]).observe(elapsed.as_secs_f64());
+    }
+
+    /// `n` jobs deleted, for `reason` (`request`, `age`, `count`).
+    pub fn deleted(&self, reason: &str, n: u64) {
+        self.0.deleted.with_label_values(&[reason]).inc_by(n);
     }
 
     /// A request answered with `status` after `elapsed`.

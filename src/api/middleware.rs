@@ -3,7 +3,7 @@
 //! request's log span carrying it, the request counted and timed by its
 //! route ([`super::metrics`]), CORS for the origins configured, panics
 //! caught and answered 500 problem+json without internals, the optional
-//! bearer token every POST must carry, admission control (a slot per POST,
+//! bearer token every POST and DELETE must carry, admission control (a slot per POST,
 //! 503 when none is free), a POST's `?label=` ([`super::label`]), its
 //! `Idempotency-Key` ([`super::idempotency`]), and the body limit.
 
@@ -35,7 +35,7 @@ pub const REQUEST_ID: &str = "x-request-id";
 pub struct Settings {
     /// Largest accepted request body, bytes (413 beyond it).
     pub body_limit: usize,
-    /// When set, every POST needs `Authorization: Bearer <token>` (401 without).
+    /// When set, every POST and DELETE needs `Authorization: Bearer <token>` (401 without).
     pub api_token: Option<String>,
     /// Origins allowed by CORS (`*` for any); none: no CORS headers.
     pub cors_origins: Vec<String>,
@@ -113,7 +113,7 @@ fn cors(origins: &[String]) -> Option<CorsLayer> {
     Some(
         CorsLayer::new()
             .allow_origin(allow)
-            .allow_methods([Method::GET, Method::POST])
+            .allow_methods([Method::GET, Method::POST, Method::DELETE])
             .allow_headers([
                 header::CONTENT_TYPE,
                 header::AUTHORIZATION,
@@ -129,11 +129,17 @@ fn cors(origins: &[String]) -> Option<CorsLayer> {
 
 async fn require_token(token: Option<Arc<str>>, req: Request, next: Next) -> Response {
     match token {
-        Some(t) if req.method() == Method::POST && !bearer_matches(req.headers().get(header::AUTHORIZATION), &t) => {
+        Some(t) if changes(req.method()) && !bearer_matches(req.headers().get(header::AUTHORIZATION), &t) => {
             ApiError::Unauthorized.into_response()
         }
         _ => next.run(req).await,
     }
+}
+
+/// Whether a request of this method changes what the service stores (a
+/// POST creates a job, a DELETE removes one): those need the API token.
+fn changes(method: &Method) -> bool {
+    !matches!(*method, Method::GET | Method::HEAD | Method::OPTIONS)
 }
 
 /// A POST takes a slot of admission control before its body is read and

@@ -14,10 +14,12 @@
 //! cannot do is [`StoreError::Unavailable`].
 
 mod idempotency;
+mod retention;
 mod url;
 mod writer;
 
 pub use idempotency::Answer;
+pub use retention::Retention;
 pub use url::{SchemeError, check_scheme, redact};
 
 use bytes::Bytes;

@@ -38,7 +38,13 @@ pub fn free_port() -> u16 {
 
 /// Starts the service on `db` and waits until /healthz answers.
 pub fn start(db: &str, port: u16) -> Child {
+    start_with(db, port, &[])
+}
+
+/// [`start`] with more environment variables.
+pub fn start_with(db: &str, port: u16, env: &[(&str, &str)]) -> Child {
     let child = Command::new(env!("CARGO_BIN_EXE_mechdyn"))
+        .envs(env.iter().copied())
         .env("DATABASE_URL", db)
         .env("MECHDYN_ADDR", format!("127.0.0.1:{port}"))
         .env("RUST_LOG", "warn")
