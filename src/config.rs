@@ -20,7 +20,7 @@ pub struct Cli {
     /// Address to listen on (serve) or to probe (healthcheck).
     #[arg(long, env = "MECHDYN_ADDR", default_value = DEFAULT_ADDR, global = true)]
     pub addr: String,
-    /// Database URL: sqlite://PATH (the only scheme this version serves).
+    /// Database URL: sqlite://PATH (a file of this service's own) or postgres://USER:PASSWORD@HOST:PORT/DB (a server several replicas share).
     #[arg(long, env = "DATABASE_URL", default_value = DEFAULT_DATABASE, global = true)]
     pub database: String,
     /// Largest accepted request body, bytes.
@@ -71,6 +71,9 @@ pub struct Cli {
     /// Largest size of the SQLite database, bytes; beyond it POSTs are answered 507 (default: the disk's free space).
     #[arg(long, env = "MECHDYN_MAX_DATABASE_BYTES", global = true)]
     pub max_database_bytes: Option<u64>,
+    /// Seconds a start waits for a PostgreSQL server that does not answer yet (then the service stops).
+    #[arg(long, env = "MECHDYN_DATABASE_WAIT_SECONDS", default_value_t = 30.0, value_parser = positive_seconds, global = true)]
+    pub database_wait_seconds: f64,
     /// Delete jobs older than this many days (fractions allowed; default: keep them).
     #[arg(long, env = "MECHDYN_RETENTION_DAYS", value_parser = positive_days, global = true)]
     pub retention_days: Option<f64>,

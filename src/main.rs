@@ -62,7 +62,8 @@ async fn run(cli: &Cli) -> Result<(), String> {
     let shown = store::redact(&cli.database);
     store::check_scheme(&cli.database).map_err(|e| e.to_string())?;
     let capacity = cli.capacity()?;
-    let options = store::Options { max_bytes: cli.max_database_bytes };
+    let wait = std::time::Duration::from_secs_f64(cli.database_wait_seconds);
+    let options = store::Options { max_bytes: cli.max_database_bytes, wait };
     let store = Store::open_with(&cli.database, &options)
         .await
         .map_err(|e| format!("database {shown}: {}", e.to_string().replace(&cli.database, &shown)))?;

@@ -126,8 +126,9 @@ async fn keep(state: &AppState, key: &str, fingerprint: String, answer: Response
         kept.body = Some(bytes.to_vec());
         Body::from(bytes)
     };
-    let now = super::create::now_rfc3339();
-    if let Err(e) = state.store.keep_answer(key, &now, &kept).await {
+    let now = time::OffsetDateTime::now_utc();
+    let forget_before = super::create::rfc3339(now - crate::store::KEEP);
+    if let Err(e) = state.store.keep_answer(key, &super::create::rfc3339(now), &forget_before, &kept).await {
         // The job is stored and the answer goes out; only a retry would compute it again.
         tracing::warn!(error = %e, key, "idempotency key not kept");
     }

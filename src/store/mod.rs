@@ -1,6 +1,7 @@
-//! Jobs in SQLite (sqlx): nothing here knows about HTTP or the engine; jobs
-//! go in and come out as JSON text (shared [`Bytes`], so the text stored is
-//! the text served, never copied) with their metadata.
+//! Jobs in SQLite or PostgreSQL (sqlx; [`backend`]): nothing here knows
+//! about HTTP or the engine; jobs go in and come out as JSON text (shared
+//! [`Bytes`], so the text stored is the text served, never copied) with
+//! their metadata.
 //!
 //! Group commit (`writer.rs`): one writer task takes the jobs of concurrent
 //! requests off a channel and inserts all that are waiting in one statement,
@@ -13,25 +14,21 @@
 //! reports and recovers from when space returns; anything else the database
 //! cannot do is [`StoreError::Unavailable`].
 
+pub(crate) mod backend;
 mod idempotency;
 mod retention;
 mod url;
 mod writer;
 
-pub use idempotency::Answer;
+pub use idempotency::{Answer, KEEP};
 pub use retention::Retention;
-pub use url::{SchemeError, check_scheme, redact};
+pub use url::{Backend, SchemeError, check_scheme, redact};
 
+use backend::{Db, on_pool};
 use bytes::Bytes;
-use sqlx::sqlite::{SqliteConnectOptions, SqliteJournalMode, SqlitePool, SqlitePoolOptions, SqliteSynchronous};
-use std::str::FromStr;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::time::Duration;
 use tokio::sync::{mpsc, oneshot};
-
-/// The migrations of `migrations/`, embedded in the binary.
-pub static MIGRATOR: sqlx::migrate::Migrator = sqlx::migrate!("./migrations");
 
 /// Why the store could not do what it was asked.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -47,18 +44,7 @@ pub enum StoreError {
 
 impl From<sqlx::Error> for StoreError {
     fn from(e: sqlx::Error) -> Self {
-        if is_full(&e) { Self::Full } else { Self::Unavailable(e.to_string()) }
-    }
-}
-
-/// SQLITE_FULL (13): the disk, or `max_page_count`, is full.
-fn is_full(e: &sqlx::Error) -> bool {
-    match e {
-        sqlx::Error::Database(db) => {
-            db.code().and_then(|c| c.parse::<i32>().ok()).is_some_and(|c| c & 0xff == 13)
-                || db.message().contains("database or disk is full")
-        }
-        _ => false,
+        backend::classify(e)
     }
 }
 
@@ -91,7 +77,7 @@ pub struct JobSummary {
     pub bytes: i64,
 }
 
-/// A job as SQLite returns it.
+/// A job as the database returns it.
 #[derive(sqlx::FromRow)]
 struct Row {
     seq: i64,
@@ -164,59 +150,46 @@ pub struct Filter<'a> {
 type Pending = (NewJob, oneshot::Sender<Result<i64, StoreError>>);
 
 /// How the database is opened.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct Options {
     /// Largest size of the database file, bytes (SQLite's `max_page_count`);
     /// beyond it inserts fail with [`StoreError::Full`]. None: the disk's.
+    /// PostgreSQL refuses it (its server limits its own space).
     pub max_bytes: Option<u64>,
+    /// How long a start waits for a PostgreSQL server that does not answer.
+    pub wait: std::time::Duration,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Self { max_bytes: None, wait: std::time::Duration::from_secs(30) }
+    }
 }
 
 #[derive(Clone)]
 pub struct Store {
-    pool: SqlitePool,
+    db: Db,
     writer: mpsc::Sender<Pending>,
     /// Transactions the writer has committed.
     commits: Arc<AtomicU64>,
 }
 
 impl Store {
-    /// Opens (creating the file and its folder if needed) the SQLite
-    /// database at `url`, in WAL mode, and applies the migrations.
+    /// Opens the database at `url` (a SQLite file is created with its folder
+    /// if needed, in WAL mode) and applies the migrations.
     pub async fn open(url: &str) -> Result<Self, sqlx::Error> {
         Self::open_with(url, &Options::default()).await
     }
 
     /// [`Store::open`] with options. A URL of another scheme than `sqlite:`
-    /// is refused (see [`url::check_scheme`]).
+    /// or `postgres:` is refused (see [`url::check_scheme`]).
     pub async fn open_with(url: &str, options: &Options) -> Result<Self, sqlx::Error> {
-        url::check_scheme(url).map_err(|e| sqlx::Error::Configuration(Box::new(e)))?;
-        let mut connect = SqliteConnectOptions::from_str(url)?
-            .create_if_missing(true)
-            .journal_mode(SqliteJournalMode::Wal)
-            .synchronous(SqliteSynchronous::Normal)
-            .busy_timeout(Duration::from_secs(10))
-            .foreign_keys(true)
-            // A checkpoint runs inside the commit that crosses the mark and holds up
-            // the jobs waiting behind it: every 100 pages (not SQLite's 1000) those
-            // pauses are short. Measured at 64 connections, flywheel jobs: p99
-            // 20.3–22.9 ms at 1000 pages, 16.3–16.7 ms at 100; a checkpoint beside the
-            // writer instead (PASSIVE) never resets a log that is always being
-            // written, and it grew by 100 MB/s.
-            .pragma("wal_autocheckpoint", "100");
-        if let Some(max) = options.max_bytes {
-            // SQLite's default page size, 4096 bytes (set before the first table).
-            connect = connect.page_size(4096).pragma("max_page_count", (max / 4096).max(1).to_string());
-        }
-        let file = connect.get_filename();
-        if let Some(dir) = file.parent().filter(|d| !d.as_os_str().is_empty()) {
-            std::fs::create_dir_all(dir).map_err(|e| sqlx::Error::Configuration(Box::new(e)))?;
-        }
-        let pool = SqlitePoolOptions::new().max_connections(8).connect_with(connect).await?;
-        MIGRATOR.run(&pool).await?;
+        let backend = url::check_scheme(url).map_err(|e| sqlx::Error::Configuration(Box::new(e)))?;
+        let db = Db::open(url, backend, options).await?;
         let (writer, queue) = mpsc::channel(writer::QUEUE);
         let commits = Arc::new(AtomicU64::new(0));
-        tokio::spawn(writer::write_batches(pool.clone(), queue, commits.clone()));
-        Ok(Self { pool, writer, commits })
+        tokio::spawn(writer::write_batches(db.clone(), queue, commits.clone()));
+        Ok(Self { db, writer, commits })
     }
 
     /// How many transactions the writer has committed (jobs ≥ commits under load).
@@ -237,48 +210,49 @@ impl Store {
     /// `request`, byte for byte (the key only narrows the search; only
     /// requests are compared, and no result is read).
     pub async fn find_by_key(&self, key: &str, request: &[u8]) -> Result<Option<String>, StoreError> {
-        let candidates: Vec<(String, String)> = sqlx::query_as(SELECT_BY_KEY).bind(key).fetch_all(&self.pool).await?;
+        let candidates: Vec<(String, String)> =
+            on_pool!(&self.db, pool => sqlx::query_as(SELECT_BY_KEY).bind(key).fetch_all(pool).await?);
         Ok(candidates.into_iter().find(|(_, r)| r.as_bytes() == request).map(|(id, _)| id))
     }
 
     /// Stores a template's JSON under `id`; false when the id is taken.
     pub async fn insert_template(&self, id: &str, created_at: &str, body: &str) -> Result<bool, StoreError> {
-        let done = sqlx::query("INSERT INTO templates (id, created_at, body) VALUES (?, ?, ?) ON CONFLICT DO NOTHING")
-            .bind(id)
-            .bind(created_at)
-            .bind(body)
-            .execute(&self.pool)
-            .await?;
-        Ok(done.rows_affected() == 1)
+        let sql = "INSERT INTO templates (id, created_at, body) VALUES ($1, $2, $3) ON CONFLICT DO NOTHING";
+        let done = on_pool!(&self.db, pool => {
+            sqlx::query(sql).bind(id).bind(created_at).bind(body).execute(pool).await?.rows_affected()
+        });
+        Ok(done == 1)
     }
 
     /// A stored template's JSON.
     pub async fn template(&self, id: &str) -> Result<Option<String>, StoreError> {
-        Ok(sqlx::query_scalar("SELECT body FROM templates WHERE id = ?").bind(id).fetch_optional(&self.pool).await?)
+        let sql = "SELECT body FROM templates WHERE id = $1";
+        Ok(on_pool!(&self.db, pool => sqlx::query_scalar(sql).bind(id).fetch_optional(pool).await?))
     }
 
     /// Every stored template's JSON, oldest first.
     pub async fn templates(&self) -> Result<Vec<String>, StoreError> {
-        Ok(sqlx::query_scalar("SELECT body FROM templates ORDER BY created_at, id").fetch_all(&self.pool).await?)
+        let sql = "SELECT body FROM templates ORDER BY created_at, id";
+        Ok(on_pool!(&self.db, pool => sqlx::query_scalar(sql).fetch_all(pool).await?))
     }
 
     pub async fn get(&self, id: &str) -> Result<Option<JobRow>, StoreError> {
-        let row: Option<Row> = sqlx::query_as(SELECT_ROW).bind(id).fetch_optional(&self.pool).await?;
+        let row: Option<Row> =
+            on_pool!(&self.db, pool => sqlx::query_as(SELECT_ROW).bind(id).fetch_optional(pool).await?);
         Ok(row.map(JobRow::from))
     }
 
     /// The newest `limit` jobs without their request and result (a page's list).
     pub async fn recent(&self, limit: i64) -> Result<Vec<JobSummary>, StoreError> {
-        Ok(sqlx::query_as("SELECT id, kind, created_at, engine_us, label, bytes FROM jobs ORDER BY seq DESC LIMIT ?")
-            .bind(limit)
-            .fetch_all(&self.pool)
-            .await?)
+        let sql = "SELECT id, kind, created_at, engine_us, label, bytes FROM jobs ORDER BY seq DESC LIMIT $1";
+        Ok(on_pool!(&self.db, pool => sqlx::query_as(sql).bind(limit).fetch_all(pool).await?))
     }
 
     /// Bytes of a job's request and result together, without loading them.
     pub async fn size(&self, id: &str) -> Result<Option<usize>, StoreError> {
+        let sql = "SELECT bytes FROM jobs WHERE id = $1";
         let bytes: Option<i64> =
-            sqlx::query_scalar("SELECT bytes FROM jobs WHERE id = ?").bind(id).fetch_optional(&self.pool).await?;
+            on_pool!(&self.db, pool => sqlx::query_scalar(sql).bind(id).fetch_optional(pool).await?);
         Ok(bytes.map(|b| usize::try_from(b).unwrap_or(0)))
     }
 
@@ -292,16 +266,10 @@ impl Store {
         limit: i64,
         max_bytes: usize,
     ) -> Result<Page, StoreError> {
-        let sizes: Vec<(i64, i64)> = sqlx::query_as(
-            "SELECT seq, bytes FROM jobs WHERE (?1 IS NULL OR kind = ?1) AND (?4 IS NULL OR label = ?4) AND seq < ?2 \
-             ORDER BY seq DESC LIMIT ?3",
-        )
-        .bind(filter.kind)
-        .bind(before.unwrap_or(i64::MAX))
-        .bind(limit)
-        .bind(filter.label)
-        .fetch_all(&self.pool)
-        .await?;
+        let (kind, label, before) = (filter.kind, filter.label, before.unwrap_or(i64::MAX));
+        let sizes: Vec<(i64, i64)> = on_pool!(&self.db, pool => {
+            sqlx::query_as(LIST_SIZES).bind(kind).bind(before).bind(limit).bind(label).fetch_all(pool).await?
+        });
         let (mut total, mut last, mut cut) = (0usize, None, false);
         for (i, &(seq, bytes)) in sizes.iter().enumerate() {
             let bytes = usize::try_from(bytes).unwrap_or(0);
@@ -312,44 +280,49 @@ impl Store {
             (total, last) = (total + bytes, Some(seq));
         }
         let Some(last) = last else { return Ok(Page { rows: Vec::new(), bytes: 0, cut }) };
-        let rows: Vec<Row> = sqlx::query_as(
-            "SELECT seq, id, kind, created_at, request, result, engine_us, engine_version, label FROM jobs \
-             WHERE (?1 IS NULL OR kind = ?1) AND (?4 IS NULL OR label = ?4) AND seq < ?2 AND seq >= ?3 \
-             ORDER BY seq DESC",
-        )
-        .bind(filter.kind)
-        .bind(before.unwrap_or(i64::MAX))
-        .bind(last)
-        .bind(filter.label)
-        .fetch_all(&self.pool)
-        .await?;
+        let rows: Vec<Row> = on_pool!(&self.db, pool => {
+            sqlx::query_as(LIST_ROWS).bind(kind).bind(before).bind(last).bind(label).fetch_all(pool).await?
+        });
         Ok(Page { rows: rows.into_iter().map(JobRow::from).collect(), bytes: total, cut })
     }
 
-    /// The database's kind, as its URL's scheme names it.
-    pub fn backend(&self) -> &'static str {
-        "sqlite"
+    /// The database's kind.
+    pub fn backend(&self) -> Backend {
+        self.db.backend()
     }
 
     /// Whether the database answers a query (within the pool's wait for a
     /// connection); the error says why not.
     pub async fn check(&self) -> Result<(), StoreError> {
-        sqlx::query("SELECT 1").execute(&self.pool).await?;
+        on_pool!(&self.db, pool => {
+            sqlx::query("SELECT 1").execute(pool).await?;
+        });
         Ok(())
     }
 
     /// Closes the database's connections: every later use fails (a service
     /// stopping; the tests' database gone away).
     pub async fn close(&self) {
-        self.pool.close().await;
+        on_pool!(&self.db, pool => pool.close().await);
     }
 
-    /// SQLite's own check of the file (`PRAGMA integrity_check`): "ok" or what is wrong.
+    /// SQLite's own check of the file (`PRAGMA integrity_check`): "ok" or
+    /// what is wrong. A PostgreSQL server checks its own pages.
     pub async fn integrity(&self) -> Result<String, StoreError> {
-        Ok(sqlx::query_scalar("PRAGMA integrity_check").fetch_one(&self.pool).await?)
+        match &self.db {
+            Db::Sqlite(pool) => Ok(sqlx::query_scalar("PRAGMA integrity_check").fetch_one(pool).await?),
+            Db::Postgres(_) => Err(StoreError::Unavailable("integrity_check is SQLite's".into())),
+        }
     }
 }
 
 const SELECT_ROW: &str =
-    "SELECT seq, id, kind, created_at, request, result, engine_us, engine_version, label FROM jobs WHERE id = ?";
-const SELECT_BY_KEY: &str = "SELECT id, request FROM jobs WHERE request_key = ? ORDER BY seq DESC LIMIT 8";
+    "SELECT seq, id, kind, created_at, request, result, engine_us, engine_version, label FROM jobs WHERE id = $1";
+const SELECT_BY_KEY: &str = "SELECT id, request FROM jobs WHERE request_key = $1 ORDER BY seq DESC LIMIT 8";
+/// The sizes of a page's jobs: $1 kind, $2 before, $3 limit, $4 label.
+const LIST_SIZES: &str = "SELECT seq, bytes FROM jobs WHERE ($1 IS NULL OR kind = $1) AND ($4 IS NULL OR label = $4) \
+                          AND seq < $2 ORDER BY seq DESC LIMIT $3";
+/// A page's jobs: $1 kind, $2 before, $3 the last seq, $4 label.
+const LIST_ROWS: &str = "SELECT seq, id, kind, created_at, request, result, engine_us, engine_version, label FROM jobs \
+                         WHERE ($1 IS NULL OR kind = $1) AND ($4 IS NULL OR label = $4) AND seq < $2 AND seq >= $3 \
+                         ORDER BY seq DESC";

@@ -4,6 +4,7 @@
 //! job go with it: a retry of that POST computes the job again instead of
 //! answering with a job that is gone.
 
+use super::backend::on_pool;
 use super::{Store, StoreError};
 
 /// Rows deleted per statement of a sweep.
@@ -21,11 +22,14 @@ pub struct Retention<'a> {
 impl Store {
     /// Deletes the job `id`: whether there was one.
     pub async fn delete(&self, id: &str) -> Result<bool, StoreError> {
-        let mut tx = self.pool.begin().await?;
-        let done = sqlx::query("DELETE FROM jobs WHERE id = $1").bind(id).execute(&mut *tx).await?;
-        sqlx::query("DELETE FROM idempotency WHERE job_id = $1").bind(id).execute(&mut *tx).await?;
-        tx.commit().await?;
-        Ok(done.rows_affected() == 1)
+        let done = on_pool!(&self.db, pool => {
+            let mut tx = pool.begin().await?;
+            let done = sqlx::query("DELETE FROM jobs WHERE id = $1").bind(id).execute(&mut *tx).await?;
+            sqlx::query("DELETE FROM idempotency WHERE job_id = $1").bind(id).execute(&mut *tx).await?;
+            tx.commit().await?;
+            done.rows_affected()
+        });
+        Ok(done == 1)
     }
 
     /// Deletes the jobs `r` does not keep: how many, by age and by count.
@@ -36,18 +40,19 @@ impl Store {
         }
         let mut by_count = 0;
         if let Some(newest) = r.newest {
-            let last_kept: Option<i64> = sqlx::query_scalar("SELECT seq FROM jobs ORDER BY seq DESC LIMIT 1 OFFSET $1")
-                .bind(newest.max(1) - 1)
-                .fetch_optional(&self.pool)
-                .await?;
+            let sql = "SELECT seq FROM jobs ORDER BY seq DESC LIMIT 1 OFFSET $1";
+            let offset = newest.max(1) - 1;
+            let last_kept: Option<i64> =
+                on_pool!(&self.db, pool => sqlx::query_scalar(sql).bind(offset).fetch_optional(pool).await?);
             if let Some(seq) = last_kept {
                 by_count = self.delete_batches(OLDER_THAN, Bound::Int(seq)).await?;
             }
         }
         if by_age + by_count > 0 {
-            sqlx::query("DELETE FROM idempotency WHERE job_id IS NOT NULL AND job_id NOT IN (SELECT id FROM jobs)")
-                .execute(&self.pool)
-                .await?;
+            let sql = "DELETE FROM idempotency WHERE job_id IS NOT NULL AND job_id NOT IN (SELECT id FROM jobs)";
+            on_pool!(&self.db, pool => {
+                sqlx::query(sql).execute(pool).await?;
+            });
         }
         Ok((by_age, by_count))
     }
@@ -57,11 +62,11 @@ impl Store {
     async fn delete_batches(&self, sql: &'static str, value: Bound<'_>) -> Result<u64, StoreError> {
         let mut total = 0;
         loop {
-            let query = match value {
-                Bound::Text(t) => sqlx::query(sql).bind(t),
-                Bound::Int(i) => sqlx::query(sql).bind(i),
-            };
-            let done = query.bind(BATCH).execute(&self.pool).await?.rows_affected();
+            let done = on_pool!(&self.db, pool => match value {
+                Bound::Text(t) => sqlx::query(sql).bind(t).bind(BATCH).execute(pool).await?,
+                Bound::Int(i) => sqlx::query(sql).bind(i).bind(BATCH).execute(pool).await?,
+            }
+            .rows_affected());
             total += done;
             if done == 0 {
                 return Ok(total);

@@ -1,11 +1,30 @@
 //! The database URL: which schemes this version serves, and the URL as it
 //! may be shown (in logs and messages) without its password.
 
+/// The database a URL names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Backend {
+    /// `sqlite://path`, `sqlite:path`, `sqlite::memory:`: a file of this service's own.
+    Sqlite,
+    /// `postgres://` or `postgresql://`: a server several replicas may share.
+    Postgres,
+}
+
+impl Backend {
+    /// The scheme's name, as `/readyz` reports it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Sqlite => "sqlite",
+            Self::Postgres => "postgres",
+        }
+    }
+}
+
 /// A `DATABASE_URL` this version cannot use.
 #[derive(Debug, thiserror::Error)]
 #[error(
-    "DATABASE_URL {url} has the scheme '{scheme}': this version of mechdyn stores jobs in SQLite only \
-     (e.g. sqlite://data/mechdyn.db); PostgreSQL is not supported yet"
+    "DATABASE_URL {url} has the scheme '{scheme}': mechdyn stores jobs in SQLite \
+     (sqlite://data/mechdyn.db) or PostgreSQL (postgres://user:password@host:5432/mechdyn)"
 )]
 pub struct SchemeError {
     /// The URL, redacted.
@@ -13,14 +32,16 @@ pub struct SchemeError {
     pub scheme: String,
 }
 
-/// Accepts `sqlite:` URLs (`sqlite://path`, `sqlite:path`, `sqlite::memory:`).
-pub fn check_scheme(url: &str) -> Result<(), SchemeError> {
+/// The backend of a `sqlite:` or `postgres:` (`postgresql:`) URL.
+pub fn check_scheme(url: &str) -> Result<Backend, SchemeError> {
     let scheme = url.split_once(':').map_or("", |(s, _)| s);
-    if scheme.eq_ignore_ascii_case("sqlite") {
-        Ok(())
-    } else {
-        let scheme = if scheme.is_empty() || scheme.contains('/') { "(none)" } else { scheme };
-        Err(SchemeError { url: redact(url), scheme: scheme.into() })
+    match scheme.to_ascii_lowercase().as_str() {
+        "sqlite" => Ok(Backend::Sqlite),
+        "postgres" | "postgresql" => Ok(Backend::Postgres),
+        _ => {
+            let scheme = if scheme.is_empty() || scheme.contains('/') { "(none)" } else { scheme };
+            Err(SchemeError { url: redact(url), scheme: scheme.into() })
+        }
     }
 }
 
@@ -64,12 +85,14 @@ mod tests {
     }
 
     #[test]
-    fn only_sqlite_urls_are_served() {
-        assert!(check_scheme("sqlite://data/mechdyn.db").is_ok());
-        assert!(check_scheme("sqlite::memory:").is_ok());
-        assert!(check_scheme("SQLITE://x.db").is_ok());
-        let e = check_scheme("postgres://user:secret@db/mechdyn").unwrap_err();
-        assert_eq!(e.scheme, "postgres");
+    fn sqlite_and_postgres_urls_are_served() {
+        assert_eq!(check_scheme("sqlite://data/mechdyn.db").unwrap(), Backend::Sqlite);
+        assert_eq!(check_scheme("sqlite::memory:").unwrap(), Backend::Sqlite);
+        assert_eq!(check_scheme("SQLITE://x.db").unwrap(), Backend::Sqlite);
+        assert_eq!(check_scheme("postgres://user:secret@db/mechdyn").unwrap(), Backend::Postgres);
+        assert_eq!(check_scheme("postgresql://db/mechdyn").unwrap(), Backend::Postgres);
+        let e = check_scheme("mysql://user:secret@db/mechdyn").unwrap_err();
+        assert_eq!(e.scheme, "mysql");
         assert!(!e.to_string().contains("secret"), "{e}");
         assert_eq!(check_scheme("data/mechdyn.db").unwrap_err().scheme, "(none)");
     }

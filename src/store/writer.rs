@@ -4,16 +4,18 @@
 //!
 //! When the batch fails because the storage is full, every job in it fails
 //! with [`StoreError::Full`] (nothing was written; the next batch tries
-//! again, so writes resume when space returns). On any other failure the
-//! jobs are inserted one by one in an explicit transaction, so a bad row
-//! fails alone. The transaction is plain `BEGIN`/`COMMIT`/`ROLLBACK` on one
+//! again, so writes resume when space returns). Where the database refuses
+//! the statement for another reason, the jobs are inserted one by one in an
+//! explicit transaction, so a bad row fails alone; where it cannot be
+//! reached, every job fails at once (no second wait for a connection). The transaction is plain `BEGIN`/`COMMIT`/`ROLLBACK` on one
 //! connection: SQLite may roll a transaction back by itself after an I/O
 //! error, and a rollback that finds nothing to undo is harmless here, where
-//! sqlx's own transaction bookkeeping would be left out of step.
+//! sqlx's own transaction bookkeeping would be left out of step. On
+//! PostgreSQL a failed row would abort the transaction, so each row there
+//! has a savepoint of its own.
 
+use super::backend::{Db, classify, is_constraint, is_full, on_pool};
 use super::{Pending, StoreError};
-use sqlx::SqliteConnection;
-use sqlx::sqlite::SqlitePool;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 use tokio::sync::mpsc;
@@ -27,16 +29,18 @@ const MAX_BATCH_BYTES: usize = 32 << 20;
 /// Jobs waiting for the writer before callers wait to hand theirs over.
 pub const QUEUE: usize = 4096;
 
-const INSERT: &str = "INSERT INTO jobs (id, kind, created_at, request, result, engine_us, engine_version, bytes, \
-                      request_key, label) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)";
+const COLUMNS: &str = "INSERT INTO jobs (id, kind, created_at, request, result, engine_us, engine_version, bytes, \
+                       request_key, label) VALUES ";
+/// The values of one job.
+const ROW: usize = 10;
 
-pub async fn write_batches(pool: SqlitePool, mut queue: mpsc::Receiver<Pending>, commits: Arc<AtomicU64>) {
+pub async fn write_batches(db: Db, mut queue: mpsc::Receiver<Pending>, commits: Arc<AtomicU64>) {
     let mut waiting = Vec::with_capacity(MAX_BATCH);
     while queue.recv_many(&mut waiting, MAX_BATCH).await > 0 {
         while !waiting.is_empty() {
             let take = within_bytes(&waiting);
             let batch: Vec<Pending> = waiting.drain(..take).collect();
-            write(&pool, batch, &commits).await;
+            write(&db, batch, &commits).await;
         }
     }
 }
@@ -52,12 +56,13 @@ fn within_bytes(jobs: &[Pending]) -> usize {
 }
 
 /// One batch in one transaction; each caller answered.
-async fn write(pool: &SqlitePool, batch: Vec<Pending>, commits: &AtomicU64) {
-    let outcome = match insert_together(pool, &batch).await {
+async fn write(db: &Db, batch: Vec<Pending>, commits: &AtomicU64) {
+    let outcome = match insert_together(db, &batch).await {
         Ok(seqs) => Ok(seqs.into_iter().map(Ok).collect()),
-        Err(StoreError::Full) => Err(StoreError::Full),
-        // One bad row fails the whole statement: insert them one by one.
-        Err(_) => insert_all(pool, &batch).await,
+        // The database refused the statement: one bad row fails it whole, so insert them one by one.
+        Err(e) if matches!(e, sqlx::Error::Database(_)) && !is_full(&e) => insert_all(db, &batch).await,
+        // Full, or the database away (no second wait for a connection).
+        Err(e) => Err(classify(e)),
     };
     match outcome {
         Ok(seqs) => {
@@ -80,78 +85,85 @@ fn text(b: &bytes::Bytes) -> &str {
     std::str::from_utf8(b).unwrap_or("null")
 }
 
+/// `$1, …, $10` for the first job, `$11, …` for the next: `rows` groups.
+fn placeholders(rows: usize) -> String {
+    let group =
+        |r: usize| format!("({})", (1..=ROW).map(|c| format!("${}", r * ROW + c)).collect::<Vec<_>>().join(", "));
+    (0..rows).map(group).collect::<Vec<_>>().join(", ")
+}
+
+/// Binds a job's values, in [`COLUMNS`]' order, to a query of either backend.
+macro_rules! bind_job {
+    ($query:expr, $j:expr) => {
+        $query
+            .bind(&$j.id)
+            .bind(&$j.kind)
+            .bind(&$j.created_at)
+            .bind(text(&$j.request))
+            .bind(text(&$j.result))
+            .bind($j.engine_us)
+            .bind(&$j.engine_version)
+            .bind($j.bytes() as i64)
+            .bind(&$j.request_key)
+            .bind(&$j.label)
+    };
+}
+
 /// The whole batch as one multi-row INSERT (one statement: one round trip to
-/// SQLite's connection thread, and atomic): each job's seq, in batch order.
-async fn insert_together(pool: &SqlitePool, batch: &[Pending]) -> Result<Vec<i64>, StoreError> {
-    let rows = vec!["(?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"; batch.len()].join(", ");
-    let sql = format!(
-        "INSERT INTO jobs (id, kind, created_at, request, result, engine_us, engine_version, bytes, request_key, label) \
-         VALUES {rows} \
-         RETURNING id, seq"
-    );
+/// the database, and atomic): each job's seq, in batch order.
+async fn insert_together(db: &Db, batch: &[Pending]) -> Result<Vec<i64>, sqlx::Error> {
+    let sql = format!("{COLUMNS}{} RETURNING id, seq", placeholders(batch.len()));
     // Safe: the text is the fixed columns and one placeholder group per job; every value is bound.
-    let mut query = sqlx::query_as::<_, (String, i64)>(sqlx::AssertSqlSafe(sql));
-    for (j, _) in batch {
-        query = query.bind(&j.id).bind(&j.kind).bind(&j.created_at).bind(text(&j.request)).bind(text(&j.result));
-        query = query.bind(j.engine_us).bind(&j.engine_version).bind(j.bytes() as i64).bind(&j.request_key);
-        query = query.bind(&j.label);
-    }
+    let returned: Vec<(String, i64)> = on_pool!(db, pool => {
+        let mut query = sqlx::query_as(sqlx::AssertSqlSafe(sql));
+        for (j, _) in batch {
+            query = bind_job!(query, j);
+        }
+        query.fetch_all(pool).await?
+    });
     // RETURNING gives the rows in no promised order: match them by id.
-    let seqs: std::collections::HashMap<String, i64> = query.fetch_all(pool).await?.into_iter().collect();
-    let missing = || StoreError::Unavailable("a stored job was not returned".into());
+    let seqs: std::collections::HashMap<String, i64> = returned.into_iter().collect();
+    let missing = || sqlx::Error::Protocol("a stored job was not returned".into());
     batch.iter().map(|(j, _)| seqs.get(&j.id).copied().ok_or_else(missing)).collect()
 }
 
 /// One transaction, row by row: each job's seq, or why its own insert failed.
-async fn insert_all(pool: &SqlitePool, batch: &[Pending]) -> Result<Vec<Result<i64, StoreError>>, StoreError> {
-    let mut conn = pool.acquire().await?;
-    sqlx::query("BEGIN IMMEDIATE").execute(&mut *conn).await?;
-    match insert_rows(&mut conn, batch).await {
-        Ok(seqs) => match sqlx::query("COMMIT").execute(&mut *conn).await {
-            Ok(_) => Ok(seqs),
-            Err(e) => Err(rollback(&mut conn, e.into()).await),
-        },
-        Err(e) => Err(rollback(&mut conn, e).await),
-    }
-}
-
-/// The rows of the batch inside the open transaction.
-async fn insert_rows(
-    conn: &mut SqliteConnection,
-    batch: &[Pending],
-) -> Result<Vec<Result<i64, StoreError>>, StoreError> {
-    let mut seqs = Vec::with_capacity(batch.len());
-    for (j, _) in batch {
-        let done = sqlx::query(INSERT)
-            .bind(&j.id)
-            .bind(&j.kind)
-            .bind(&j.created_at)
-            .bind(text(&j.request))
-            .bind(text(&j.result))
-            .bind(j.engine_us)
-            .bind(&j.engine_version)
-            .bind(j.bytes() as i64)
-            .bind(&j.request_key)
-            .bind(&j.label)
-            .execute(&mut *conn)
-            .await;
-        match done {
-            Ok(d) => seqs.push(Ok(d.last_insert_rowid())),
-            // A row the schema refuses fails alone; anything else ends the transaction.
-            Err(e) if is_constraint(&e) => seqs.push(Err(StoreError::Unavailable(e.to_string()))),
-            Err(e) => return Err(e.into()),
+async fn insert_all(db: &Db, batch: &[Pending]) -> Result<Vec<Result<i64, StoreError>>, StoreError> {
+    let sql = format!("{COLUMNS}{} RETURNING seq", placeholders(1));
+    let (begin, savepoint) = match db {
+        Db::Sqlite(_) => ("BEGIN IMMEDIATE", false),
+        Db::Postgres(_) => ("BEGIN", true),
+    };
+    on_pool!(db, pool => {
+        let mut conn = pool.acquire().await?;
+        sqlx::query(begin).execute(&mut *conn).await?;
+        let rows = async {
+            let mut seqs = Vec::with_capacity(batch.len());
+            for (j, _) in batch {
+                if savepoint {
+                    sqlx::query("SAVEPOINT job").execute(&mut *conn).await?;
+                }
+                let query = bind_job!(sqlx::query_scalar(sqlx::AssertSqlSafe(sql.clone())), j);
+                match query.fetch_one(&mut *conn).await {
+                    Ok(seq) => seqs.push(Ok(seq)),
+                    // A row the schema refuses fails alone; anything else ends the transaction.
+                    Err(e) if is_constraint(&e) => {
+                        if savepoint {
+                            sqlx::query("ROLLBACK TO SAVEPOINT job").execute(&mut *conn).await?;
+                        }
+                        seqs.push(Err(StoreError::Unavailable(e.to_string())));
+                    }
+                    Err(e) => return Err(e),
+                }
+            }
+            sqlx::query("COMMIT").execute(&mut *conn).await?;
+            Ok(seqs)
         }
-    }
-    Ok(seqs)
-}
-
-/// SQLITE_CONSTRAINT (19): this row breaks a rule of the schema (a duplicate id).
-fn is_constraint(e: &sqlx::Error) -> bool {
-    matches!(e, sqlx::Error::Database(db) if db.code().and_then(|c| c.parse::<i32>().ok()).is_some_and(|c| c & 0xff == 19))
-}
-
-/// Undoes the open transaction, if SQLite has not already; `e` is the cause.
-async fn rollback(conn: &mut SqliteConnection, e: StoreError) -> StoreError {
-    let _ = sqlx::query("ROLLBACK").execute(&mut *conn).await;
-    e
+        .await;
+        if rows.is_err() {
+            // Undoes the transaction, if the database has not already.
+            let _ = sqlx::query("ROLLBACK").execute(&mut *conn).await;
+        }
+        Ok(rows?)
+    })
 }

@@ -67,7 +67,11 @@ fn approximate(f: f64, eps: f64, rpm: f64) -> f64 {
 /// scaling of case F1, not from the service.
 #[tokio::test]
 async fn a_class_is_graded_in_one_request() {
-    let app = TestApp::new().await;
+    a_class_is_graded_in_one_request_on(TestApp::new().await).await;
+}
+
+/// The test's body, on any database (`postgres.rs` runs it on PostgreSQL).
+pub async fn a_class_is_graded_in_one_request_on(app: TestApp) {
     let v1 = approximate(600.0, 0.05, 70.0); // variant 1: F 600, eps 0.05, 70 rpm
     let v3 = approximate(350.0, 0.04, 40.0);
     let own = approximate(700.0, 0.03, 90.0);
@@ -142,7 +146,11 @@ async fn a_class_is_graded_in_one_request() {
 /// template's shared jobs carry none.
 #[tokio::test]
 async fn labels_tag_jobs_and_filter_the_list() {
-    let app = TestApp::new().await;
+    labels_tag_jobs_and_filter_the_list_on(TestApp::new().await).await;
+}
+
+/// The test's body, on any database (`postgres.rs` runs it on PostgreSQL).
+pub async fn labels_tag_jobs_and_filter_the_list_on(app: TestApp) {
     let body = json!({"template": "p103-slider-flywheel", "answers": {"inertia_exact": 353.5}});
     for student in ["ana", "ben", "ana"] {
         let r = app.post(&format!("/v1/check?label={student}"), &body).await;
@@ -172,7 +180,11 @@ fn keyed(path: &str, key: &str, content_type: &str, body: &str) -> Request<Body>
 /// same key is a 422.
 #[tokio::test]
 async fn a_retried_post_is_answered_once() {
-    let app = TestApp::new().await;
+    a_retried_post_is_answered_once_on(TestApp::new().await).await;
+}
+
+/// The test's body, on any database (`postgres.rs` runs it on PostgreSQL).
+pub async fn a_retried_post_is_answered_once_on(app: TestApp) {
     let body = json!({"template": "p103-slider-flywheel", "answers": {"inertia_exact": 353.5}}).to_string();
     let first = app.send(keyed("/v1/check", "grader-7", "application/json", &body)).await;
     assert_eq!(first.status, StatusCode::CREATED, "{}", first.text);

@@ -43,13 +43,21 @@ pub fn start(db: &str, port: u16) -> Child {
 
 /// [`start`] with more environment variables.
 pub fn start_with(db: &str, port: u16, env: &[(&str, &str)]) -> Child {
+    start_logged(db, port, &[("RUST_LOG", "warn")].iter().chain(env).copied().collect::<Vec<_>>(), None)
+}
+
+/// [`start_with`], its log (standard output and error) written to `log`.
+pub fn start_logged(db: &str, port: u16, env: &[(&str, &str)], log: Option<std::fs::File>) -> Child {
+    let (stdout, stderr) = match log {
+        Some(file) => (Stdio::from(file.try_clone().unwrap()), Stdio::from(file)),
+        None => (Stdio::null(), Stdio::null()),
+    };
     let child = Command::new(env!("CARGO_BIN_EXE_mechdyn"))
         .envs(env.iter().copied())
         .env("DATABASE_URL", db)
         .env("MECHDYN_ADDR", format!("127.0.0.1:{port}"))
-        .env("RUST_LOG", "warn")
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
+        .stdout(stdout)
+        .stderr(stderr)
         .spawn()
         .unwrap();
     let started = Instant::now();

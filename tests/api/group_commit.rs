@@ -25,14 +25,24 @@ fn job(k: usize) -> NewJob {
     }
 }
 
+/// A fresh SQLite file's URL, in a folder kept while the test runs.
+fn sqlite() -> (tempfile::TempDir, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let url = format!("sqlite://{}/jobs.db", dir.path().display());
+    (dir, url)
+}
+
+#[tokio::test(flavor = "current_thread")]
+async fn waiting_jobs_are_committed_together() {
+    let (_dir, url) = sqlite();
+    committed_together(&url).await;
+}
+
 /// 64 inserts handed over before the writer runs (one thread: the spawned
 /// tasks all run before the writer they wake) go into one transaction;
 /// each comes back with its own seq, and a second connection reads them all.
-#[tokio::test(flavor = "current_thread")]
-async fn waiting_jobs_are_committed_together() {
-    let dir = tempfile::tempdir().unwrap();
-    let url = format!("sqlite://{}/jobs.db", dir.path().display());
-    let store = Store::open(&url).await.unwrap();
+pub async fn committed_together(url: &str) {
+    let store = Store::open(url).await.unwrap();
     let mut tasks = JoinSet::new();
     for k in 0..64 {
         let store = store.clone();
@@ -44,19 +54,23 @@ async fn waiting_jobs_are_committed_together() {
     seqs.dedup();
     assert_eq!(seqs.len(), 64, "one seq per job");
     assert_eq!(store.commits(), 1, "64 waiting jobs, one transaction");
-    let other = Store::open(&url).await.unwrap();
+    let other = Store::open(url).await.unwrap();
     for row in rows {
         let stored = other.get(&row.id).await.unwrap().expect("committed");
         assert_eq!(stored, row, "the row returned to the caller is the row stored");
     }
 }
 
-/// A failing insert (a duplicate id) fails alone; the jobs beside it in the
-/// same transaction are stored.
 #[tokio::test(flavor = "current_thread")]
 async fn one_bad_insert_does_not_sink_its_batch() {
-    let dir = tempfile::tempdir().unwrap();
-    let store = Store::open(&format!("sqlite://{}/jobs.db", dir.path().display())).await.unwrap();
+    let (_dir, url) = sqlite();
+    bad_insert_alone(&url).await;
+}
+
+/// A failing insert (a duplicate id) fails alone; the jobs beside it in the
+/// same transaction are stored.
+pub async fn bad_insert_alone(url: &str) {
+    let store = Store::open(url).await.unwrap();
     store.insert(job(0)).await.unwrap();
     let mut tasks = JoinSet::new();
     for k in [1, 0, 2] {
@@ -70,17 +84,20 @@ async fn one_bad_insert_does_not_sink_its_batch() {
     assert!(store.get("job-2").await.unwrap().is_some());
 }
 
-/// 96 concurrent POSTs through the router on two worker threads: every one
-/// is a 201 whose job another connection reads at once.
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn concurrent_posts_are_all_stored_before_their_201() {
-    let dir = tempfile::tempdir().unwrap();
-    let url = format!("sqlite://{}/jobs.db", dir.path().display());
-    let store = Store::open(&url).await.unwrap();
+    let (_dir, url) = sqlite();
+    stored_before_201(&url).await;
+}
+
+/// 96 concurrent POSTs through the router: every one is a 201 whose job
+/// another connection reads at once.
+pub async fn stored_before_201(url: &str) {
+    let store = Store::open(url).await.unwrap();
     // Room for all 96 at once (the default queue would answer some 503).
     let admission = Admission::new(Capacity { queue: 96, ..Capacity::default() });
     let app = router(AppState { admission, ..AppState::new(store.clone()) }, &Settings::default());
-    let other = Store::open(&url).await.unwrap();
+    let other = Store::open(url).await.unwrap();
     let body = request("p113_pulley").to_string();
     let mut tasks = JoinSet::new();
     for _ in 0..96 {

@@ -45,6 +45,12 @@ impl TestApp {
         Self { app: router(AppState::new(store), settings), url, _dir: dir }
     }
 
+    /// A fresh app on the database at `url` (a test's PostgreSQL database).
+    pub async fn on(url: &str, settings: &Settings) -> Self {
+        let store = Store::open(url).await.unwrap();
+        Self { app: router(AppState::new(store), settings), url: url.into(), _dir: tempfile::tempdir().unwrap() }
+    }
+
     /// A router built by the test (its own state and settings), on no folder of ours.
     pub fn serving(app: axum::Router) -> Self {
         Self { app, url: String::new(), _dir: tempfile::tempdir().unwrap() }

@@ -5,7 +5,11 @@ use axum::http::StatusCode;
 
 #[tokio::test]
 async fn a_post_returns_the_job_exactly_as_a_later_get() {
-    let app = TestApp::new().await;
+    a_post_returns_the_job_exactly_as_a_later_get_on(TestApp::new().await).await;
+}
+
+/// The test's body, on any database (`postgres.rs` runs it on PostgreSQL).
+pub async fn a_post_returns_the_job_exactly_as_a_later_get_on(app: TestApp) {
     let r = app.post("/v1/flywheel", &request("p103_slider")).await;
     assert_eq!(r.status, StatusCode::CREATED);
     let job = r.json();
@@ -30,7 +34,11 @@ async fn the_request_is_stored_as_sent() {
 
 #[tokio::test]
 async fn jobs_survive_a_restart() {
-    let app = TestApp::new().await;
+    jobs_survive_a_restart_on(TestApp::new().await).await;
+}
+
+/// The test's body, on any database (`postgres.rs` runs it on PostgreSQL).
+pub async fn jobs_survive_a_restart_on(app: TestApp) {
     let job = app.flywheel(&request("p113_pulley")).await;
     let before = app.get(&format!("/v1/jobs/{}", job["id"].as_str().unwrap())).await.text;
     let app = app.restart().await;
@@ -41,7 +49,11 @@ async fn jobs_survive_a_restart() {
 
 #[tokio::test]
 async fn the_list_is_newest_first_and_paginated() {
-    let app = TestApp::new().await;
+    the_list_is_newest_first_and_paginated_on(TestApp::new().await).await;
+}
+
+/// The test's body, on any database (`postgres.rs` runs it on PostgreSQL).
+pub async fn the_list_is_newest_first_and_paginated_on(app: TestApp) {
     let mut ids = Vec::new();
     for _ in 0..5 {
         ids.push(app.flywheel(&request("p113_pulley")).await["id"].as_str().unwrap().to_string());

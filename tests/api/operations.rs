@@ -38,8 +38,16 @@ async fn readiness_follows_the_database_and_liveness_does_not() {
 /// answering with one that is gone.
 #[tokio::test]
 async fn a_deleted_job_is_gone_and_its_idempotency_key_with_it() {
-    let settings = Settings { api_token: Some("t0ken".into()), ..Settings::default() };
-    let app = TestApp::with_settings(&settings).await;
+    a_deleted_job_is_gone_on(TestApp::with_settings(&with_token()).await).await;
+}
+
+/// Settings with the API token "t0ken".
+pub fn with_token() -> Settings {
+    Settings { api_token: Some("t0ken".into()), ..Settings::default() }
+}
+
+/// The test's body, on any database, for an app with the settings [`with_token`].
+pub async fn a_deleted_job_is_gone_on(app: TestApp) {
     let body = request("p103_slider").to_string();
     let post = || {
         let req = Request::post("/v1/flywheel").header("content-type", "application/json");
@@ -78,7 +86,12 @@ async fn a_deleted_job_is_gone_and_its_idempotency_key_with_it() {
 #[tokio::test]
 async fn the_retention_deletes_by_count_and_by_age() {
     let dir = tempfile::tempdir().unwrap();
-    let store = Store::open(&format!("sqlite://{}/jobs.db", dir.path().display())).await.unwrap();
+    the_retention_deletes_on(&format!("sqlite://{}/jobs.db", dir.path().display())).await;
+}
+
+/// The test's body, on the database at `url`.
+pub async fn the_retention_deletes_on(url: &str) {
+    let store = Store::open(url).await.unwrap();
     let state = AppState::new(store);
     let app = TestApp::serving(router(state.clone(), &Settings::default()));
     let mut ids = Vec::new();

@@ -141,7 +141,7 @@ async fn the_write_ahead_log_stays_near_a_hundred_pages() {
 async fn the_database_size_cap_refuses_inserts_as_full() {
     let dir = tempfile::tempdir().unwrap();
     let url = format!("sqlite://{}/jobs.db", dir.path().display());
-    let store = Store::open_with(&url, &Options { max_bytes: Some(256 << 10) }).await.unwrap();
+    let store = Store::open_with(&url, &Options { max_bytes: Some(256 << 10), ..Options::default() }).await.unwrap();
     let mut k = 0;
     let error = loop {
         match store.insert(job(k, 20_000)).await {
@@ -158,18 +158,43 @@ async fn the_database_size_cap_refuses_inserts_as_full() {
     assert_eq!(store.integrity().await.unwrap(), "ok");
 }
 
-/// A PostgreSQL URL is refused at start with a clear message, and neither
-/// the message nor the log holds its password.
+/// A URL of a database mechdyn does not serve is refused at start with a
+/// clear message, and neither the message nor the log holds its password.
 #[test]
 fn another_database_scheme_stops_the_service_at_start_without_its_password() {
     let out = Command::new(env!("CARGO_BIN_EXE_mechdyn"))
-        .env("DATABASE_URL", "postgres://user:s3cret@db/mechdyn")
+        .env("DATABASE_URL", "mysql://user:s3cret@db/mechdyn")
         .env("MECHDYN_ADDR", format!("127.0.0.1:{}", crate::crash::free_port()))
         .output()
         .unwrap();
     assert!(!out.status.success());
     let said = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
-    assert!(said.contains("scheme 'postgres'") && said.contains("SQLite"), "{said}");
-    assert!(said.contains("postgres://user:***@db/mechdyn"), "{said}");
+    assert!(said.contains("scheme 'mysql'") && said.contains("SQLite") && said.contains("PostgreSQL"), "{said}");
+    assert!(said.contains("mysql://user:***@db/mechdyn"), "{said}");
     assert!(!said.contains("s3cret"), "{said}");
+}
+
+/// A PostgreSQL server that does not answer within `--database-wait-seconds`
+/// stops the service at start, saying so, its password in no line of the
+/// log; `--max-database-bytes`, SQLite's cap, is refused with PostgreSQL.
+#[test]
+fn an_unreachable_postgres_server_stops_the_service_at_start_without_its_password() {
+    let run = |env: &[(&str, &str)]| {
+        let out = Command::new(env!("CARGO_BIN_EXE_mechdyn"))
+            .env("DATABASE_URL", format!("postgres://user:s3cret@127.0.0.1:{}/mechdyn", crate::crash::free_port()))
+            .env("MECHDYN_ADDR", format!("127.0.0.1:{}", crate::crash::free_port()))
+            .env("MECHDYN_DATABASE_WAIT_SECONDS", "1")
+            .envs(env.iter().copied())
+            .output()
+            .unwrap();
+        assert!(!out.status.success());
+        format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr))
+    };
+    let said = run(&[]);
+    assert!(said.contains("the PostgreSQL server did not answer within 1 s"), "{said}");
+    assert!(said.contains("postgres://user:***@127.0.0.1:"), "{said}");
+    assert!(!said.contains("s3cret"), "{said}");
+    let capped = run(&[("MECHDYN_MAX_DATABASE_BYTES", "1000000")]);
+    assert!(capped.contains("--max-database-bytes") && capped.contains("SQLite"), "{capped}");
+    assert!(!capped.contains("s3cret"), "{capped}");
 }

@@ -86,7 +86,11 @@ async fn one_number_by_url_as_webservice_reads_it() {
 
 #[tokio::test]
 async fn the_same_parameters_reuse_the_stored_job() {
-    let app = TestApp::new().await;
+    the_same_parameters_reuse_the_stored_job_on(TestApp::new().await).await;
+}
+
+/// The test's body, on any database (`postgres.rs` runs it on PostgreSQL).
+pub async fn the_same_parameters_reuse_the_stored_job_on(app: TestApp) {
     let path = "/v1/templates/p103-slider-flywheel/job?F=800&speed=90";
     let first = app.get(path).await;
     let again = app.get(path).await;
@@ -132,7 +136,11 @@ fn gear_template(name: &str) -> Value {
 /// Pitch radius R = m·z/2 (closed form): 5 mm × 40 / 2 = 0.1 m.
 #[tokio::test]
 async fn a_client_creates_a_template_and_uses_it() {
-    let app = TestApp::new().await;
+    a_client_creates_a_template_and_uses_it_on(TestApp::new().await).await;
+}
+
+/// The test's body, on any database (`postgres.rs` runs it on PostgreSQL).
+pub async fn a_client_creates_a_template_and_uses_it_on(app: TestApp) {
     let r = app.post("/v1/templates", &gear_template("my-gear")).await;
     assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
     assert_eq!(r.location.as_deref(), Some("/v1/templates/my-gear"));

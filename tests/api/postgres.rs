@@ -1,0 +1,165 @@
+//! The service on a real PostgreSQL server ([`PgServer`]): the store's
+//! scenarios of the other test files run again on it, and two replicas of
+//! the real binary share one database, through the server's outage.
+
+use crate::crash::{free_port, http, start_logged};
+use crate::helpers::{TestApp, request};
+use crate::pg_server::PgServer;
+use axum::http::StatusCode;
+use mechdyn::api::Settings;
+use serde_json::Value;
+use std::process::Child;
+use std::time::{Duration, Instant};
+
+/// Every scenario of the store that the SQLite tests run, on PostgreSQL:
+/// jobs read back byte for byte, listed, paginated, filtered by kind and
+/// label, after a restart; templates' jobs found again by their key, a
+/// client's template; idempotency keys; a class graded; a job deleted; the
+/// retention; every 201 committed.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_store_behaves_on_postgres_as_on_sqlite() {
+    let Some(server) = PgServer::start("the_store_behaves_on_postgres_as_on_sqlite") else { return };
+    let plain = Settings::default();
+    crate::jobs::a_post_returns_the_job_exactly_as_a_later_get_on(TestApp::on(&server.database().await, &plain).await)
+        .await;
+    crate::jobs::jobs_survive_a_restart_on(TestApp::on(&server.database().await, &plain).await).await;
+    crate::jobs::the_list_is_newest_first_and_paginated_on(TestApp::on(&server.database().await, &plain).await).await;
+    crate::class::labels_tag_jobs_and_filter_the_list_on(TestApp::on(&server.database().await, &plain).await).await;
+    crate::class::a_retried_post_is_answered_once_on(TestApp::on(&server.database().await, &plain).await).await;
+    crate::class::a_class_is_graded_in_one_request_on(TestApp::on(&server.database().await, &plain).await).await;
+    let fresh = TestApp::on(&server.database().await, &plain).await;
+    crate::templates::the_same_parameters_reuse_the_stored_job_on(fresh).await;
+    let fresh = TestApp::on(&server.database().await, &plain).await;
+    crate::templates::a_client_creates_a_template_and_uses_it_on(fresh).await;
+    let token = crate::operations::with_token();
+    crate::operations::a_deleted_job_is_gone_on(TestApp::on(&server.database().await, &token).await).await;
+    crate::operations::the_retention_deletes_on(&server.database().await).await;
+    crate::group_commit::stored_before_201(&server.database().await).await;
+    let ready = TestApp::on(&server.database().await, &plain).await.get("/readyz").await;
+    assert_eq!((ready.status, ready.json()["database"].as_str()), (StatusCode::OK, Some("postgres")));
+}
+
+/// Group commit on PostgreSQL: waiting jobs share one transaction, and a
+/// failing row (a duplicate id) fails alone, its batch stored (one thread,
+/// as the SQLite tests, so that every job waits before the writer runs).
+#[tokio::test(flavor = "current_thread")]
+async fn group_commit_on_postgres() {
+    let Some(server) = PgServer::start("group_commit_on_postgres") else { return };
+    crate::group_commit::committed_together(&server.database().await).await;
+    crate::group_commit::bad_insert_alone(&server.database().await).await;
+}
+
+/// A replica of the real binary on `db`, with its log kept to read.
+struct Replica {
+    child: Child,
+    port: u16,
+    log: tempfile::NamedTempFile,
+}
+
+impl Replica {
+    fn start(db: &str) -> Self {
+        let log = tempfile::NamedTempFile::new().unwrap();
+        let port = free_port();
+        let child = start_logged(db, port, &[("RUST_LOG", "info")], Some(log.reopen().unwrap()));
+        Self { child, port, log }
+    }
+
+    fn log(&self) -> String {
+        std::fs::read_to_string(self.log.path()).unwrap_or_default()
+    }
+}
+
+impl Drop for Replica {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+fn json(text: &str) -> Value {
+    serde_json::from_str(text).unwrap_or_else(|e| panic!("not JSON ({e}): {text}"))
+}
+
+/// Two replicas of the real binary started together on one new database
+/// (the migrations run once, under sqlx's advisory lock): jobs POSTed to
+/// both at once are each readable from either, byte for byte, and listed
+/// once by both. When the server stops, both answer `/readyz` 503 (and
+/// `/healthz` 200) and a POST 503; once it is back, they serve again
+/// without a restart. No line of their logs holds the URL's password.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn two_replicas_share_one_database_and_ride_out_its_outage() {
+    let Some(server) = PgServer::start("two_replicas_share_one_database_and_ride_out_its_outage") else { return };
+    let db = server.database().await;
+    let (a, b) = std::thread::scope(|s| {
+        let a = s.spawn(|| Replica::start(&db));
+        let b = s.spawn(|| Replica::start(&db));
+        (a.join().unwrap(), b.join().unwrap())
+    });
+    let posted: Vec<(String, String)> = std::thread::scope(|s| {
+        let clients: Vec<_> = (0..4)
+            .map(|c| {
+                let port = if c % 2 == 0 { a.port } else { b.port };
+                s.spawn(move || {
+                    (0..10)
+                        .map(|k| {
+                            let mut body = request("p103_slider");
+                            body["irregularity"] = (0.01 + 0.001 * f64::from(c * 10 + k)).into();
+                            let (status, job) = http(port, "POST", "/v1/flywheel", &body.to_string()).unwrap();
+                            assert_eq!(status, 201, "{job}");
+                            (json(&job)["id"].as_str().unwrap().to_string(), job)
+                        })
+                        .collect::<Vec<_>>()
+                })
+            })
+            .collect();
+        clients.into_iter().flat_map(|c| c.join().unwrap()).collect()
+    });
+    for (id, job) in &posted {
+        for replica in [&a, &b] {
+            let (status, read) = http(replica.port, "GET", &format!("/v1/jobs/{id}"), "").unwrap();
+            assert_eq!((status, &read), (200, job), "job {id} from the replica on port {}", replica.port);
+        }
+    }
+    for replica in [&a, &b] {
+        let mut listed = Vec::new();
+        let mut next = Some("/v1/jobs?limit=100".to_string());
+        while let Some(path) = next {
+            let page = json(&http(replica.port, "GET", &path, "").unwrap().1);
+            listed.extend(page["items"].as_array().unwrap().iter().map(|j| j["id"].as_str().unwrap().to_string()));
+            next = page["next"].as_str().map(str::to_string);
+        }
+        let mut expected: Vec<String> = posted.iter().map(|(id, _)| id.clone()).collect();
+        listed.sort();
+        expected.sort();
+        assert_eq!(listed, expected, "every job listed once");
+    }
+
+    server.stop();
+    let body = request("p103_slider").to_string();
+    for replica in [&a, &b] {
+        let (status, ready) = http(replica.port, "GET", "/readyz", "").unwrap();
+        assert_eq!(status, 503, "{ready}");
+        assert!(json(&ready)["reason"].as_str().unwrap().starts_with("the database does not answer"), "{ready}");
+        assert_eq!(http(replica.port, "GET", "/healthz", "").unwrap().0, 200);
+        let (status, problem) = http(replica.port, "POST", "/v1/flywheel", &body).unwrap();
+        assert_eq!(
+            (status, json(&problem)["type"].as_str()),
+            (503, Some("/problems/database-unavailable")),
+            "{problem}"
+        );
+    }
+    server.start_again();
+    let started = Instant::now();
+    for replica in [&a, &b] {
+        while http(replica.port, "GET", "/readyz", "").unwrap().0 != 200 {
+            assert!(started.elapsed() < Duration::from_secs(30), "not ready again within 30 s");
+            std::thread::sleep(Duration::from_millis(100));
+        }
+        assert_eq!(http(replica.port, "POST", "/v1/flywheel", &body).unwrap().0, 201);
+    }
+    for replica in [&a, &b] {
+        let log = replica.log();
+        assert!(log.contains("mechdyn listening") && log.contains("postgres://mechdyn:***@127.0.0.1"), "{log}");
+        assert!(!log.contains("s3cret"), "a password in the log: {log}");
+    }
+}
