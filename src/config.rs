@@ -74,6 +74,15 @@ pub struct Cli {
     /// Seconds a start waits for a PostgreSQL server that does not answer yet (then the service stops).
     #[arg(long, env = "MECHDYN_DATABASE_WAIT_SECONDS", default_value_t = 30.0, value_parser = positive_seconds, global = true)]
     pub database_wait_seconds: f64,
+    /// Jobs POSTed with `Prefer: respond-async` this replica computes at once (0: it only queues them, for other replicas; default: the number of cores).
+    #[arg(long, env = "MECHDYN_ASYNC_WORKERS", default_value_t = crate::api::deferred::Settings::default().workers, global = true)]
+    pub async_workers: usize,
+    /// Jobs POSTed with `Prefer: respond-async` waiting at most (over every replica); beyond them such a POST is answered 503.
+    #[arg(long, env = "MECHDYN_ASYNC_QUEUE", default_value_t = crate::api::deferred::Settings::default().max_queued, value_parser = clap::value_parser!(i64).range(1..), global = true)]
+    pub async_queue: i64,
+    /// Seconds a replica's claim on a deferred job lasts unless renewed (a replica that dies leaves its jobs to others after it).
+    #[arg(long, env = "MECHDYN_ASYNC_LEASE_SECONDS", default_value_t = 30.0, value_parser = positive_seconds, global = true)]
+    pub async_lease_seconds: f64,
     /// Delete jobs older than this many days (fractions allowed; default: keep them).
     #[arg(long, env = "MECHDYN_RETENTION_DAYS", value_parser = positive_days, global = true)]
     pub retention_days: Option<f64>,
@@ -121,6 +130,15 @@ impl Cli {
 }
 
 impl Cli {
+    /// How jobs POSTed with `Prefer: respond-async` are run.
+    pub fn deferred(&self) -> crate::api::deferred::Settings {
+        crate::api::deferred::Settings {
+            workers: self.async_workers,
+            max_queued: self.async_queue,
+            lease: Duration::from_secs_f64(self.async_lease_seconds),
+        }
+    }
+
     /// The retention of stored jobs.
     pub fn retention(&self) -> Policy {
         Policy {

@@ -52,7 +52,10 @@ fn serve(cli: &Cli) -> ExitCode {
         Ok(r) => r,
         Err(e) => return fail(&format!("cannot start the runtime: {e}")),
     };
-    match runtime.block_on(run(cli)) {
+    let ran = runtime.block_on(run(cli));
+    // A deferred job still computing was put back in the queue: its thread is not waited for.
+    runtime.shutdown_timeout(std::time::Duration::from_millis(500));
+    match ran {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => fail(&e),
     }
@@ -67,18 +70,28 @@ async fn run(cli: &Cli) -> Result<(), String> {
     let store = Store::open_with(&cli.database, &options)
         .await
         .map_err(|e| format!("database {shown}: {}", e.to_string().replace(&cli.database, &shown)))?;
-    let state = AppState { limits: cli.limits(), admission: api::Admission::new(capacity), ..AppState::new(store) };
+    let deferred = api::deferred::Deferred::new(cli.deferred());
+    let admission = api::Admission::new(capacity);
+    let state = AppState { limits: cli.limits(), admission, deferred, ..AppState::new(store) };
     let settings = api::Settings {
         body_limit: cli.max_body_bytes,
         api_token: cli.api_token.clone().filter(|t| !t.is_empty()),
         cors_origins: cli.cors_origins.iter().map(|o| o.trim().to_string()).filter(|o| !o.is_empty()).collect(),
     };
     api::retention::spawn(state.clone(), cli.retention());
+    let runner = api::deferred::spawn(state.clone());
     let app = api::router(state, &settings);
     let listener = tokio::net::TcpListener::bind(&cli.addr).await.map_err(|e| format!("bind {}: {e}", cli.addr))?;
     let local = listener.local_addr().map_err(|e| e.to_string())?;
     tracing::info!(addr = %local, database = %shown, "mechdyn listening; docs at http://{local}/docs");
-    axum::serve(listener, app).with_graceful_shutdown(shutdown_signal()).await.map_err(|e| e.to_string())?;
+    let stopping = async move {
+        shutdown_signal().await;
+        // The deferred jobs this replica computes go back to the queue first.
+        if let Some(runner) = runner {
+            runner.stop().await;
+        }
+    };
+    axum::serve(listener, app).with_graceful_shutdown(stopping).await.map_err(|e| e.to_string())?;
     tracing::info!("stopped");
     Ok(())
 }

@@ -6,6 +6,7 @@
 //! service, and nothing is written to disk).
 
 use crate::api::check::{CheckRequest, check_job};
+use crate::api::create::Destination;
 use crate::api::problem::ApiError;
 use crate::api::templates::{self, Template, builtin};
 use crate::api::{AppState, Limits, json, kind, parts};
@@ -43,7 +44,7 @@ fn runtime() -> Result<tokio::runtime::Runtime, ApiError> {
 pub fn check(raw: String) -> Result<Vec<u8>, ApiError> {
     runtime()?.block_on(async {
         let state = state().await?;
-        let (row, _) = check_job(&state, json::parse::<CheckRequest>(raw)?).await?;
+        let (row, _) = check_job(&state, json::parse::<CheckRequest>(raw)?, Destination::POSTED).await?;
         Ok(row.result.to_vec())
     })
 }

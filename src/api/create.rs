@@ -51,7 +51,7 @@ where
     R: JobResult + Send + 'static,
     F: FnOnce() -> Result<R, ApiError> + Send + 'static,
 {
-    let (row, reserved) = compute_and_store(state, kind, request, None, compute).await?;
+    let (row, reserved) = compute_and_store(state, kind, request, Destination::POSTED, compute).await?;
     Ok(created(&row, reserved))
 }
 
@@ -64,14 +64,28 @@ pub fn created(row: &JobRow, reserved: OwnedSemaphorePermit) -> Response {
     (StatusCode::CREATED, headers, guarded(Body::new(body), reserved)).into_response()
 }
 
-/// The job of `compute`, stored (under `key`, for a template's parameters;
-/// else with the request's `?label=`, [`super::label`]): the row, with the
-/// memory of its answer still reserved.
+/// Where a computed job goes.
+#[derive(Clone, Debug)]
+pub enum Destination {
+    /// A new job: under `key` for a template's parameters (a stored job
+    /// found again), else with the request's `?label=` ([`super::label`]).
+    New { key: Option<String> },
+    /// The deferred job `id` this replica claimed as `claim` ([`super::deferred`]).
+    Claimed { id: String, claim: String },
+}
+
+impl Destination {
+    /// A job POSTed directly.
+    pub const POSTED: Self = Self::New { key: None };
+}
+
+/// The job of `compute`, stored at `to`: the row, with the memory of its
+/// answer still reserved.
 pub async fn compute_and_store<R, F>(
     state: &AppState,
     kind: &'static str,
     request: Bytes,
-    key: Option<String>,
+    to: Destination,
     compute: F,
 ) -> Result<(JobRow, OwnedSemaphorePermit), ApiError>
 where
@@ -94,25 +108,37 @@ where
         None => tokio::task::spawn_blocking(run).await.map_err(|e| ApiError::Internal(format!("engine task: {e}")))?,
     };
     state.admission.record(kind, elapsed);
-    let job = NewJob {
-        id: uuid::Uuid::new_v4().to_string(),
-        kind: kind.into(),
-        created_at: now_rfc3339(),
-        request,
-        result: result.inspect_err(|_| state.metrics.job(kind, false, elapsed))?,
-        engine_us: i64::try_from(elapsed.as_micros()).unwrap_or(i64::MAX),
-        engine_version: env!("CARGO_PKG_VERSION").into(),
-        label: if key.is_some() { None } else { super::label::current() },
-        request_key: key,
-    };
-    if let Some(spare) = reserved.num_permits().checked_sub(job.bytes()).and_then(|n| reserved.split(n)) {
+    let result = result.inspect_err(|_| state.metrics.job(kind, false, elapsed))?;
+    let engine_us = i64::try_from(elapsed.as_micros()).unwrap_or(i64::MAX);
+    let bytes = request.len() + result.len();
+    if let Some(spare) = reserved.num_permits().checked_sub(bytes).and_then(|n| reserved.split(n)) {
         drop(spare);
     }
     drop(computing);
-    let stored = state.store.insert(job).await;
+    let stored = match to {
+        Destination::New { key } => {
+            let label = if key.is_some() { None } else { super::label::current() };
+            let (id, created_at, engine_version) = (uuid::Uuid::new_v4().to_string(), now_rfc3339(), VERSION.into());
+            let kind = kind.into();
+            let job =
+                NewJob { id, kind, created_at, request, result, engine_us, engine_version, label, request_key: key };
+            state.store.insert(job).await.map_err(ApiError::from)
+        }
+        // None: deleted, or claimed again after this replica's lease lapsed; not this replica's to store.
+        Destination::Claimed { id, claim } => {
+            match state.store.complete((&id, &claim), &result, engine_us, bytes as i64).await {
+                Ok(Some(row)) => Ok(row),
+                Ok(None) => Err(ApiError::NotFound(id)),
+                Err(e) => Err(e.into()),
+            }
+        }
+    };
     state.metrics.job(kind, stored.is_ok(), elapsed);
     Ok((stored?, reserved))
 }
+
+/// The version of mechdyn that computes the jobs.
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 
 /// The result as JSON bytes, or a 422 when it would exceed `limit` bytes.
 fn serialized<R: JobResult>(result: &R, limit: usize) -> Result<Bytes, ApiError> {

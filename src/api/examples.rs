@@ -37,6 +37,7 @@ pub fn add(doc: &mut Value) {
         let job = json!({
             "id": "0d1e5d8a-6a3c-4f4e-9a53-2f1c0b7e9d41",
             "kind": kind.name(),
+            "status": "done",
             "created_at": "2026-11-23T12:00:00.000000Z",
             "request": request,
             "result": result,

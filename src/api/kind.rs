@@ -5,20 +5,21 @@
 //! document's examples, plots and pages) is written once over [`Kind`] and reaches every kind through
 //! the registry ([`KINDS`]), never through a `match` on a kind's name.
 
-use super::create::JobResult;
+use super::create::{Destination, JobResult};
 use super::json::JsonBody;
 use super::limits::Limits;
 use super::problem::{ApiError, FieldError, PostErrors};
 use super::{AppState, dynamics, equivalent, flywheel, gear_train, gears, job, kinetostatics, plots, rotor};
 use crate::store::JobRow;
 use axum::extract::State;
+use axum::http::HeaderMap;
 use axum::response::Response;
 use bytes::Bytes;
 use serde::de::DeserializeOwned;
 use serde_json::Value;
 use std::marker::PhantomData;
 use tokio::sync::OwnedSemaphorePermit;
-use utoipa::openapi::path::{HttpMethod, OperationBuilder, Paths, PathsBuilder};
+use utoipa::openapi::path::{HttpMethod, OperationBuilder, ParameterBuilder, ParameterIn, Paths, PathsBuilder};
 use utoipa::openapi::request_body::RequestBodyBuilder;
 use utoipa::openapi::{ContentBuilder, HeaderBuilder, Ref, Required, ResponseBuilder, ResponsesBuilder};
 use utoipa::{PartialSchema, ToSchema};
@@ -68,9 +69,17 @@ pub trait Kind: Send + Sync + 'static {
     }
 }
 
-/// The POST of every kind: its body read strictly, computed and stored ([`super::create::create`]).
-pub async fn post<K: Kind>(State(state): State<AppState>, body: JsonBody<K::Request>) -> Result<Response, ApiError> {
+/// The POST of every kind: its body read strictly, computed and stored
+/// ([`super::create::create`]), or deferred ([`super::deferred`]).
+pub async fn post<K: Kind>(
+    State(state): State<AppState>,
+    headers: HeaderMap,
+    body: JsonBody<K::Request>,
+) -> Result<Response, ApiError> {
     let JsonBody { value, raw, unknown } = body;
+    if super::deferred::wanted(&headers) {
+        return super::deferred::accept(&state, K::NAME, raw, unknown).await;
+    }
     let limits = state.limits.clone();
     let request = raw.clone();
     super::create::create(&state, K::NAME, raw, move || compute::<K>(&value, unknown, &request, &limits)).await
@@ -116,9 +125,9 @@ pub trait AnyKind: Send + Sync {
     /// Parses and computes a JSON request as the POST would: the result's
     /// JSON, the same bytes the service stores.
     fn solve(&self, raw: String, limits: &Limits) -> Result<Vec<u8>, ApiError>;
-    /// Computes and stores the job of `request` (JSON text, as it will be
-    /// stored) under `key`: the row, with its answer's memory reserved.
-    fn job<'a>(&'a self, state: &'a AppState, request: Bytes, key: Option<String>) -> StoredJob<'a>;
+    /// Computes the job of `request` (JSON text, as it will be stored) and
+    /// stores it at `to`: the row, with its answer's memory reserved.
+    fn job<'a>(&'a self, state: &'a AppState, request: Bytes, to: Destination) -> StoredJob<'a>;
     fn request_schema(&self) -> String;
     fn result_schema(&self) -> String;
     fn units(&self) -> &'static [(&'static str, &'static str)];
@@ -152,13 +161,13 @@ impl<K: Kind> AnyKind for Registered<K> {
         let result = compute::<K>(&body.value, body.unknown, &body.raw, limits)?;
         serde_json::to_vec(&result).map_err(|e| ApiError::Internal(format!("result: {e}")))
     }
-    fn job<'a>(&'a self, state: &'a AppState, request: Bytes, key: Option<String>) -> StoredJob<'a> {
+    fn job<'a>(&'a self, state: &'a AppState, request: Bytes, to: Destination) -> StoredJob<'a> {
         Box::pin(async move {
             let body = super::json::parse::<K::Request>(request.clone())?;
             let raw = request.clone();
             let limits = state.limits.clone();
             let compute = move || compute::<K>(&body.value, body.unknown, &raw, &limits);
-            super::create::compute_and_store(state, K::NAME, request, key, compute).await
+            super::create::compute_and_store(state, K::NAME, request, to, compute).await
         })
     }
     fn request_schema(&self) -> String {
@@ -208,11 +217,39 @@ pub fn operation_for(path: &str, id: &str, tag: &str, summary: &str, names: (Str
             "application/json",
             ContentBuilder::new().schema(Some(Ref::from_schema_name(format!("JobOf_{result_name}")))).build(),
         );
-    let responses = ResponsesBuilder::new().response("201", created).responses_from_into_responses::<PostErrors>();
+    let accepted = ResponseBuilder::new()
+        .description(
+            "With `Prefer: respond-async`: the job stored `queued`, to be computed by any replica; \
+             `GET /v1/jobs/{id}` answers it `queued` or `running` (no `result`), then `done` with its result, or \
+             `failed` with the `problem` this POST would have answered",
+        )
+        .header(
+            "Location",
+            HeaderBuilder::new().schema(Some(String::schema())).description(Some("/v1/jobs/{id}")).build(),
+        )
+        .header(
+            "Preference-Applied",
+            HeaderBuilder::new().schema(Some(String::schema())).description(Some("respond-async")).build(),
+        )
+        .content("application/json", ContentBuilder::new().schema(Some(Ref::from_schema_name("Job"))).build());
+    let prefer = ParameterBuilder::new()
+        .name("Prefer")
+        .parameter_in(ParameterIn::Header)
+        .required(Required::False)
+        .schema(Some(String::schema()))
+        .description(Some(
+            "`respond-async`: answer 202 at once and compute the job in the background (RFC 7240); a body that \
+             is not JSON, or has a field the kind does not know, is still answered at once",
+        ));
+    let responses = ResponsesBuilder::new()
+        .response("201", created)
+        .response("202", accepted)
+        .responses_from_into_responses::<PostErrors>();
     let op = OperationBuilder::new()
         .tag(tag)
         .summary(Some(summary))
         .operation_id(Some(id))
+        .parameter(prefer)
         .request_body(Some(request.build()))
         .responses(responses);
     PathsBuilder::new().path(path, utoipa::openapi::PathItem::new(HttpMethod::Post, op)).build()

@@ -14,16 +14,20 @@
 //! - `mechdyn_engine_seconds{kind}`: the engine's time per job;
 //! - `mechdyn_jobs_computing`, `mechdyn_queue_depth`: this replica's jobs
 //!   computing now, and its POSTs not computing yet (their body arriving,
-//!   or waiting for a compute slot), read at the scrape.
+//!   or waiting for a compute slot), read at the scrape;
+//! - `mechdyn_deferred_jobs{status}`: jobs POSTed with `Prefer:
+//!   respond-async` `queued` or `running`, over every replica (the
+//!   database's count at the scrape).
 
 use super::AppState;
 use super::admission::Admission;
+use crate::store::Waiting;
 use axum::extract::{MatchedPath, Request, State};
 use axum::http::{StatusCode, header};
 use axum::middleware::Next;
 use axum::response::{IntoResponse, Response};
 use prometheus::{
-    HistogramOpts, HistogramVec, IntCounterVec, IntGauge, Opts, Registry, TextEncoder, exponential_buckets,
+    HistogramOpts, HistogramVec, IntCounterVec, IntGauge, IntGaugeVec, Opts, Registry, TextEncoder, exponential_buckets,
 };
 use std::sync::Arc;
 use std::time::{Duration, Instant};
@@ -41,6 +45,7 @@ struct Inner {
     engine_seconds: HistogramVec,
     computing: IntGauge,
     queue_depth: IntGauge,
+    deferred: IntGaugeVec,
 }
 
 impl Default for Metrics {
@@ -90,6 +95,14 @@ impl Metrics {
         registry.register(Box::new(jobs.clone()))?;
         registry.register(Box::new(deleted.clone()))?;
         registry.register(Box::new(engine_seconds.clone()))?;
+        let deferred = IntGaugeVec::new(
+            Opts::new(
+                "mechdyn_deferred_jobs",
+                "Jobs POSTed with Prefer: respond-async not ended, in the database (every replica's)",
+            ),
+            &["status"],
+        )?;
+        registry.register(Box::new(deferred.clone()))?;
         registry.register(Box::new(computing.clone()))?;
         registry.register(Box::new(queue_depth.clone()))?;
         Ok(Self(Arc::new(Inner {
@@ -101,6 +114,7 @@ impl Metrics {
             engine_seconds,
             computing,
             queue_depth,
+            deferred,
         })))
     }
 
@@ -122,8 +136,13 @@ impl Metrics {
         self.0.request_seconds.with_label_values(&[method, route]).observe(elapsed.as_secs_f64());
     }
 
-    /// Every metric in the text format, the gauges read from `admission` now.
-    fn text(&self, admission: &Admission) -> Result<String, prometheus::Error> {
+    /// Every metric in the text format, the gauges read from `admission`
+    /// and `waiting` (None: the database did not answer, the last values stay) now.
+    fn text(&self, admission: &Admission, waiting: Option<Waiting>) -> Result<String, prometheus::Error> {
+        if let Some(w) = waiting {
+            self.0.deferred.with_label_values(&["queued"]).set(w.queued);
+            self.0.deferred.with_label_values(&["running"]).set(w.running);
+        }
         let (computing, in_flight) = (admission.computing(), admission.in_flight());
         self.0.computing.set(i64::try_from(computing).unwrap_or(i64::MAX));
         self.0.queue_depth.set(i64::try_from(in_flight.saturating_sub(computing)).unwrap_or(i64::MAX));
@@ -149,7 +168,8 @@ pub async fn track(metrics: Metrics, req: Request, next: Next) -> Response {
 status, jobs by kind and status, the engine's time per job, jobs computing and waiting", body = String,
         content_type = "text/plain; version=0.0.4")))]
 pub async fn metrics(State(state): State<AppState>) -> Response {
-    match state.metrics.text(&state.admission) {
+    let waiting = tokio::time::timeout(Duration::from_secs(1), state.store.waiting()).await.ok().and_then(Result::ok);
+    match state.metrics.text(&state.admission, waiting) {
         Ok(text) => ([(header::CONTENT_TYPE, prometheus::TEXT_FORMAT)], text).into_response(),
         Err(e) => super::problem::ApiError::Internal(format!("metrics: {e}")).into_response(),
     }

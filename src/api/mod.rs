@@ -9,6 +9,7 @@ pub mod body;
 pub mod check;
 pub mod constants;
 pub mod create;
+pub mod deferred;
 pub mod dynamics;
 pub mod equivalent;
 pub mod examples;
@@ -62,12 +63,15 @@ pub struct AppState {
     pub admission: Admission,
     /// What `/metrics` reports.
     pub metrics: metrics::Metrics,
+    /// Jobs POSTed with `Prefer: respond-async`, and how they are run.
+    pub deferred: deferred::Deferred,
 }
 
 impl AppState {
     /// The state with the default limits and capacity.
     pub fn new(store: Store) -> Self {
-        Self { store, limits: Limits::default(), admission: Admission::default(), metrics: Default::default() }
+        let (limits, admission) = (Limits::default(), Admission::default());
+        Self { store, limits, admission, metrics: Default::default(), deferred: Default::default() }
     }
 }
 

@@ -2,11 +2,11 @@
 
 use axum::http::{StatusCode, header};
 use axum::response::{IntoResponse, Response};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 /// One invalid input: a JSON pointer into the request body, or a query parameter.
-#[derive(Clone, Debug, PartialEq, Serialize, ToSchema)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, ToSchema)]
 pub struct FieldError {
     /// JSON pointer (RFC 6901) to the field in the request body.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -36,7 +36,7 @@ impl FieldError {
 }
 
 /// An RFC 9457 problem document.
-#[derive(Clone, Debug, Serialize, ToSchema)]
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 #[schema(example = json!({
     "type": "/problems/invalid-request",
     "title": "The request is not a valid problem",
@@ -55,7 +55,7 @@ pub struct Problem {
     pub status: u16,
     pub detail: String,
     /// The invalid inputs, for 400 and 422 answers.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub errors: Vec<FieldError>,
 }
 
@@ -129,6 +129,15 @@ pub enum ReadErrors {
         "detail": "no job with id '0d1e5d8a-6a3c-4f4e-9a53-2f1c0b7e9d41'"
     }))]
     NotFound(Problem),
+    /// A read of a result: the job was deferred (`Prefer: respond-async`) and is queued or
+    /// running (retry after `Retry-After` seconds), or it failed
+    #[response(status = 409, content_type = "application/problem+json",
+        headers(("Retry-After" = u64, description = "Seconds to wait before retrying (queued or running)")),
+        example = json!({
+            "type": "/problems/job-not-done", "title": "The job has no result", "status": 409,
+            "detail": "job '0d1e5d8a-6a3c-4f4e-9a53-2f1c0b7e9d41' is running: its result is not there yet; retry after 1 s"
+        }))]
+    NotDone(Problem),
     /// Too many large answers are being sent, or the database is unavailable: retry after
     /// `Retry-After` seconds
     #[response(status = 503, content_type = "application/problem+json",
@@ -168,6 +177,12 @@ pub enum ApiError {
     /// The first request of an `Idempotency-Key` is still being answered.
     #[error("a request with Idempotency-Key '{0}' is still being answered; retry after 1 s")]
     InProgress(String),
+    /// A read of a result that a deferred job does not have (yet).
+    #[error("{}", not_done(.id, .status))]
+    NotDone { id: String, status: crate::store::Status },
+    /// A deferred job whose replica stopped every time it was claimed.
+    #[error("the job was claimed {0} times and each time its replica stopped before it ended; it was not tried again")]
+    Interrupted(i64),
     #[error("no such resource")]
     NoRoute,
     #[error("method not allowed")]
@@ -214,6 +229,8 @@ impl ApiError {
             Self::NoTemplate(_) => (StatusCode::NOT_FOUND, "not-found", "Template not found"),
             Self::Conflict(_) => (StatusCode::CONFLICT, "conflict", "The name is taken"),
             Self::InProgress(_) => (StatusCode::CONFLICT, "in-progress", "The same request is being answered"),
+            Self::Interrupted(_) => (StatusCode::SERVICE_UNAVAILABLE, "interrupted", "The job was interrupted"),
+            Self::NotDone { .. } => (StatusCode::CONFLICT, "job-not-done", "The job has no result"),
             Self::NoPart { .. } => (StatusCode::NOT_FOUND, "no-such-part", "No such part of the result"),
             Self::NoPlot { .. } => (StatusCode::NOT_FOUND, "no-such-plot", "No such plot of the job"),
             Self::MethodNotAllowed => (StatusCode::METHOD_NOT_ALLOWED, "method-not-allowed", "Method not allowed"),
@@ -314,8 +331,21 @@ impl IntoResponse for ApiError {
             Self::InProgress(_) => {
                 headers.insert(header::RETRY_AFTER, header::HeaderValue::from_static("1"));
             }
+            Self::NotDone { status, .. } if status != crate::store::Status::Failed => {
+                headers.insert(header::RETRY_AFTER, header::HeaderValue::from_static("1"));
+            }
             _ => {}
         }
         response
+    }
+}
+
+/// Why job `id` has no result, in its status's words.
+fn not_done(id: &str, status: &crate::store::Status) -> String {
+    match status {
+        crate::store::Status::Failed => {
+            format!("job '{id}' failed and has no result: GET /v1/jobs/{id} says why (its `problem`)")
+        }
+        s => format!("job '{id}' is {}: its result is not there yet; retry after 1 s", s.as_str()),
     }
 }

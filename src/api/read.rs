@@ -19,6 +19,14 @@ pub async fn load(state: &AppState, id: &str, factor: usize) -> Result<(JobRow, 
     Ok((row, reserved))
 }
 
+/// The job, if it is done: a deferred job queued, running or failed has no result.
+pub fn done(row: &JobRow) -> Result<(), ApiError> {
+    match row.status {
+        crate::store::Status::Done => Ok(()),
+        status => Err(ApiError::NotDone { id: row.id.clone(), status }),
+    }
+}
+
 /// The query of a read: its parameters by name, each checked against `known`.
 pub fn query(
     query: Result<Query<HashMap<String, String>>, QueryRejection>,
@@ -58,6 +66,7 @@ pub async fn result_tree(
     id: &str,
 ) -> Result<(JobRow, Value, tokio::sync::OwnedSemaphorePermit), ApiError> {
     let (row, reserved) = load(state, id, CSV_MEMORY_FACTOR).await?;
+    done(&row)?;
     let result = serde_json::from_slice(&row.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
     Ok((row, result, reserved))
 }

@@ -16,11 +16,13 @@
 
 pub(crate) mod backend;
 mod idempotency;
+mod queue;
 mod retention;
 mod url;
 mod writer;
 
 pub use idempotency::{Answer, KEEP};
+pub use queue::{Claimed, Queued, Waiting};
 pub use retention::Retention;
 pub use url::{Backend, SchemeError, check_scheme, redact};
 
@@ -48,6 +50,36 @@ impl From<sqlx::Error> for StoreError {
     }
 }
 
+/// Where a job is: waiting to be computed, computing, or ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Status {
+    Queued,
+    Running,
+    Done,
+    Failed,
+}
+
+impl Status {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Self::Queued => "queued",
+            Self::Running => "running",
+            Self::Done => "done",
+            Self::Failed => "failed",
+        }
+    }
+
+    /// The status stored as `text` (a job stored before statuses is done).
+    fn stored(text: &str) -> Self {
+        match text {
+            "queued" => Self::Queued,
+            "running" => Self::Running,
+            "failed" => Self::Failed,
+            _ => Self::Done,
+        }
+    }
+}
+
 /// A stored job.
 #[derive(Clone, Debug, PartialEq)]
 pub struct JobRow {
@@ -57,12 +89,15 @@ pub struct JobRow {
     pub created_at: String,
     /// The request body as sent (JSON text).
     pub request: Bytes,
-    /// The result as served (JSON text).
+    /// The result as served (JSON text; `null` until the job is done).
     pub result: Bytes,
     pub engine_us: i64,
     pub engine_version: String,
     /// The label a client stored with the job (`?label=`).
     pub label: Option<String>,
+    pub status: Status,
+    /// Why a failed job failed: a problem+json document (JSON text).
+    pub problem: Option<Bytes>,
 }
 
 /// What a list of jobs shows of each, without its request and result.
@@ -79,7 +114,7 @@ pub struct JobSummary {
 
 /// A job as the database returns it.
 #[derive(sqlx::FromRow)]
-struct Row {
+pub(crate) struct Row {
     seq: i64,
     id: String,
     kind: String,
@@ -89,13 +124,16 @@ struct Row {
     engine_us: i64,
     engine_version: String,
     label: Option<String>,
+    status: String,
+    problem: Option<String>,
 }
 
 impl From<Row> for JobRow {
     fn from(r: Row) -> Self {
-        let Row { seq, id, kind, created_at, request, result, engine_us, engine_version, label } = r;
-        let (request, result) = (request.into(), result.into());
-        Self { seq, id, kind, created_at, request, result, engine_us, engine_version, label }
+        let Row { seq, id, kind, created_at, request, result, engine_us, engine_version, label, status, problem } = r;
+        let (request, result, problem) = (request.into(), result.into(), problem.map(Bytes::from));
+        let status = Status::stored(&status);
+        Self { seq, id, kind, created_at, request, result, engine_us, engine_version, label, status, problem }
     }
 }
 
@@ -120,7 +158,8 @@ pub struct NewJob {
 impl NewJob {
     fn stored(self, seq: i64) -> JobRow {
         let NewJob { id, kind, created_at, request, result, engine_us, engine_version, label, .. } = self;
-        JobRow { seq, id, kind, created_at, request, result, engine_us, engine_version, label }
+        let (status, problem) = (Status::Done, None);
+        JobRow { seq, id, kind, created_at, request, result, engine_us, engine_version, label, status, problem }
     }
 
     /// Bytes of the request and the result together.
@@ -316,13 +355,24 @@ impl Store {
     }
 }
 
-const SELECT_ROW: &str =
-    "SELECT seq, id, kind, created_at, request, result, engine_us, engine_version, label FROM jobs WHERE id = $1";
-const SELECT_BY_KEY: &str = "SELECT id, request FROM jobs WHERE request_key = $1 ORDER BY seq DESC LIMIT 8";
+/// The columns of a [`Row`].
+macro_rules! row_columns {
+    () => {
+        "seq, id, kind, created_at, request, result, engine_us, engine_version, label, status, problem"
+    };
+}
+pub(crate) use row_columns;
+
+const SELECT_ROW: &str = concat!("SELECT ", row_columns!(), " FROM jobs WHERE id = $1");
+const SELECT_BY_KEY: &str =
+    "SELECT id, request FROM jobs WHERE request_key = $1 AND status = 'done' ORDER BY seq DESC LIMIT 8";
 /// The sizes of a page's jobs: $1 kind, $2 before, $3 limit, $4 label.
 const LIST_SIZES: &str = "SELECT seq, bytes FROM jobs WHERE ($1 IS NULL OR kind = $1) AND ($4 IS NULL OR label = $4) \
                           AND seq < $2 ORDER BY seq DESC LIMIT $3";
 /// A page's jobs: $1 kind, $2 before, $3 the last seq, $4 label.
-const LIST_ROWS: &str = "SELECT seq, id, kind, created_at, request, result, engine_us, engine_version, label FROM jobs \
-                         WHERE ($1 IS NULL OR kind = $1) AND ($4 IS NULL OR label = $4) AND seq < $2 AND seq >= $3 \
-                         ORDER BY seq DESC";
+const LIST_ROWS: &str = concat!(
+    "SELECT ",
+    row_columns!(),
+    " FROM jobs WHERE ($1 IS NULL OR kind = $1) AND ($4 IS NULL OR label = $4) AND seq < $2 AND seq >= $3 \
+     ORDER BY seq DESC"
+);

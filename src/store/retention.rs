@@ -82,5 +82,8 @@ enum Bound<'a> {
     Int(i64),
 }
 
-const BY_AGE: &str = "DELETE FROM jobs WHERE seq IN (SELECT seq FROM jobs WHERE created_at < $1 ORDER BY seq LIMIT $2)";
-const OLDER_THAN: &str = "DELETE FROM jobs WHERE seq IN (SELECT seq FROM jobs WHERE seq < $1 ORDER BY seq LIMIT $2)";
+/// Jobs waiting or computing are never swept: they are kept until they end.
+const BY_AGE: &str = "DELETE FROM jobs WHERE seq IN (SELECT seq FROM jobs WHERE created_at < $1 \
+                      AND status IN ('done', 'failed') ORDER BY seq LIMIT $2)";
+const OLDER_THAN: &str = "DELETE FROM jobs WHERE seq IN (SELECT seq FROM jobs WHERE seq < $1 \
+                          AND status IN ('done', 'failed') ORDER BY seq LIMIT $2)";

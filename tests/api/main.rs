@@ -8,6 +8,7 @@ mod class;
 mod cli;
 mod constants;
 mod crash;
+mod deferred;
 mod dynamics;
 mod errors;
 mod examples;

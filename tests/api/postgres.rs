@@ -58,10 +58,22 @@ struct Replica {
 
 impl Replica {
     fn start(db: &str) -> Self {
+        Self::start_with(db, &[])
+    }
+
+    fn start_with(db: &str, env: &[(&str, &str)]) -> Self {
         let log = tempfile::NamedTempFile::new().unwrap();
         let port = free_port();
-        let child = start_logged(db, port, &[("RUST_LOG", "info")], Some(log.reopen().unwrap()));
+        let env: Vec<(&str, &str)> = [("RUST_LOG", "info")].iter().chain(env).copied().collect();
+        let child = start_logged(db, port, &env, Some(log.reopen().unwrap()));
         Self { child, port, log }
+    }
+
+    /// The value of one series of the replica's `/metrics` (0 where absent).
+    fn metric(&self, series: &str) -> f64 {
+        let text = http(self.port, "GET", "/metrics", "").unwrap().1;
+        let line = text.lines().find(|l| l.starts_with(series) && l[series.len()..].starts_with(' '));
+        line.map_or(0.0, |l| l[series.len()..].trim().parse().unwrap())
     }
 
     fn log(&self) -> String {
@@ -162,4 +174,41 @@ async fn two_replicas_share_one_database_and_ride_out_its_outage() {
         assert!(log.contains("mechdyn listening") && log.contains("postgres://mechdyn:***@127.0.0.1"), "{log}");
         assert!(!log.contains("s3cret"), "a password in the log: {log}");
     }
+}
+
+/// Jobs deferred on a replica that computes none (`MECHDYN_ASYNC_WORKERS=0`)
+/// are computed by the two others on the same PostgreSQL database, each
+/// job once (their `/metrics` count 12 jobs done between them), and read
+/// back done from the first.
+#[test]
+fn any_replica_runs_a_queued_job_and_only_one_does() {
+    let Some(server) = PgServer::start("any_replica_runs_a_queued_job_and_only_one_does") else { return };
+    let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+    let db = runtime.block_on(server.database());
+    let front = Replica::start_with(&db, &[("MECHDYN_ASYNC_WORKERS", "0")]);
+    let workers = [Replica::start(&db), Replica::start(&db)];
+    let ids: Vec<String> = (0..12)
+        .map(|k| {
+            let mut body = request("p103_slider");
+            body["irregularity"] = (0.02 + 0.001 * f64::from(k)).into();
+            let (status, job) = crate::deferred::post_async_raw(front.port, "/v1/flywheel", &body.to_string());
+            assert_eq!(status, 202, "{job}");
+            json(&job)["id"].as_str().unwrap().to_string()
+        })
+        .collect();
+    let started = Instant::now();
+    for id in &ids {
+        loop {
+            let job = json(&http(front.port, "GET", &format!("/v1/jobs/{id}"), "").unwrap().1);
+            if job["status"] == "done" {
+                assert!(job["result"]["inertia_exact"].as_f64().unwrap() > 0.0, "{job}");
+                break;
+            }
+            assert!(started.elapsed() < Duration::from_secs(60), "not done in 60 s: {job}");
+            std::thread::sleep(Duration::from_millis(20));
+        }
+    }
+    let done = r#"mechdyn_jobs_total{kind="flywheel",status="done"}"#;
+    assert_eq!(front.metric(done), 0.0, "the front replica computes none");
+    assert_eq!(workers.iter().map(|w| w.metric(done)).sum::<f64>(), 12.0, "each job computed once");
 }

@@ -5,6 +5,7 @@
 //! its route and document, its table and units.
 
 use super::{CheckOutput, CheckRequest, at, grade, table, validate};
+use crate::api::create::Destination;
 use crate::api::json::{JsonBody, parse};
 use crate::api::kind::{self, AnyKind, StoredJob, Table, unit_in};
 use crate::api::limits::Limits;
@@ -13,6 +14,7 @@ use crate::api::templates::{self, Held, RESERVED, Template};
 use crate::api::{AppState, create, job, read};
 use crate::store::JobRow;
 use axum::extract::State;
+use axum::http::HeaderMap;
 use axum::response::Response;
 use bytes::Bytes;
 use serde_json::Value;
@@ -39,15 +41,23 @@ const UNITS: &[(&str, &str)] = &[
 ];
 
 /// `POST /v1/check`: the answers checked, stored as a job of kind `check`.
-pub async fn post(State(state): State<AppState>, body: JsonBody<CheckRequest>) -> Result<Response, ApiError> {
-    let (row, reserved) = check_job(&state, body).await?;
+pub async fn post(
+    State(state): State<AppState>,
+    headers: HeaderMap,
+    body: JsonBody<CheckRequest>,
+) -> Result<Response, ApiError> {
+    if crate::api::deferred::wanted(&headers) {
+        return crate::api::deferred::accept(&state, CHECK.name(), body.raw, body.unknown).await;
+    }
+    let (row, reserved) = check_job(&state, body, Destination::POSTED).await?;
     Ok(create::created(&row, reserved))
 }
 
-/// The check of `body`, computed and stored.
+/// The check of `body`, computed and stored at `to`.
 pub async fn check_job(
     state: &AppState,
     body: JsonBody<CheckRequest>,
+    to: Destination,
 ) -> Result<(JobRow, tokio::sync::OwnedSemaphorePermit), ApiError> {
     let JsonBody { value: r, raw, mut unknown } = body;
     unknown.extend(validate(&r));
@@ -57,7 +67,7 @@ pub async fn check_job(
     // The reference's memory stays reserved until the check is stored.
     let (kind, (reference, _reserved)) = reference(state, &r).await?;
     let (result, id) = (reference.result.clone(), reference.id.clone());
-    create::compute_and_store(state, CHECK.name(), raw, None, move || {
+    create::compute_and_store(state, CHECK.name(), raw, to, move || {
         let result: Value =
             serde_json::from_slice(&result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
         grade(&r, kind, &result, Some(id))
@@ -72,6 +82,7 @@ async fn reference(state: &AppState, r: &CheckRequest) -> Result<(&'static dyn A
             ApiError::NotFound(_) => ApiError::Invalid(vec![FieldError::at("/job", format!("no job with id '{id}'"))]),
             e => e,
         })?;
+        read::done(&row).map_err(|e| ApiError::Invalid(vec![FieldError::at("/job", e.to_string())]))?;
         return Ok((gradable(&row.kind, "/job")?, (row, reserved)));
     }
     if let Some(id) = &r.template {
@@ -190,8 +201,8 @@ format or as PrairieLearn's or Gradescope's results document.";
     fn solve(&self, raw: String, limits: &Limits) -> Result<Vec<u8>, ApiError> {
         solve_offline(raw, limits)
     }
-    fn job<'a>(&'a self, state: &'a AppState, request: Bytes, _key: Option<String>) -> StoredJob<'a> {
-        Box::pin(async move { check_job(state, parse::<CheckRequest>(request)?).await })
+    fn job<'a>(&'a self, state: &'a AppState, request: Bytes, to: Destination) -> StoredJob<'a> {
+        Box::pin(async move { check_job(state, parse::<CheckRequest>(request)?, to).await })
     }
     fn request_schema(&self) -> String {
         CheckRequest::name().into()

@@ -6,10 +6,10 @@ use super::{IdPath, layout};
 use crate::api::AppState;
 use crate::api::kind::{self, AnyKind};
 use crate::api::plots::{self, Listed};
-use crate::api::problem::ApiError;
+use crate::api::problem::{ApiError, Problem};
 use crate::api::read::{self, result_tree};
 use crate::api::tables::{self, Scalar};
-use crate::store::JobRow;
+use crate::store::{JobRow, Status};
 use axum::extract::rejection::QueryRejection;
 use axum::extract::{Query, State};
 use axum::http::StatusCode;
@@ -45,14 +45,33 @@ pub async fn job(
         Err(e) => return layout::error(e),
     };
     match render(&state, &id.0, &q).await {
-        Ok(page) => layout::answer(StatusCode::OK, page),
+        Ok(Rendered::Done(page)) => layout::answer(StatusCode::OK, page),
+        Ok(Rendered::Waiting(page)) => {
+            let mut answer = layout::answer(StatusCode::OK, page);
+            answer.headers_mut().insert("refresh", axum::http::HeaderValue::from_static("2"));
+            answer
+        }
         Err(e) => layout::error(e),
     }
 }
 
-async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Result<Markup, ApiError> {
+/// A job's page: of a done or failed job, or of one still waiting (the
+/// browser asks again every 2 s, by the `Refresh` header: no script).
+enum Rendered {
+    Done(Markup),
+    Waiting(Markup),
+}
+
+async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Result<Rendered, ApiError> {
     let step = plots::step(q)?;
-    let (row, mut result, _reserved) = result_tree(state, id).await?;
+    let (row, mut result, _reserved) = match result_tree(state, id).await {
+        Err(ApiError::NotDone { status, .. }) => {
+            let (row, _reserved) = read::load(state, id, read::READ_MEMORY_FACTOR).await?;
+            let page = not_done(&row);
+            return Ok(if status == Status::Failed { Rendered::Done(page) } else { Rendered::Waiting(page) });
+        }
+        read => read?,
+    };
     let request = serde_json::from_slice::<Value>(&row.request).unwrap_or_default();
     let kind = kind::find(&row.kind).ok_or_else(|| ApiError::Internal(format!("job of kind {}", row.kind)))?;
     let listed = kind.plots(&plots::Job { request: &request, result: &result });
@@ -86,7 +105,29 @@ async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Resu
         h2 { "Request" }
         details { summary { "The request as sent" } pre { (String::from_utf8_lossy(&row.request)) } }
     };
-    Ok(layout::page(&title(&row), body))
+    Ok(Rendered::Done(layout::page(&title(&row), body)))
+}
+
+/// The page of a deferred job not done: where it is, or why it failed.
+fn not_done(row: &JobRow) -> Markup {
+    let problem: Option<Problem> = row.problem.as_deref().and_then(|p| serde_json::from_slice(p).ok());
+    let body = html! {
+        h1 { (title(row)) }
+        p.meta { "job " span.id { (row.id) } " · created " (when(&row.created_at)) " UTC"
+            @if let Some(l) = &row.label { " · label " strong { (plots::svg::clean(l)) } } }
+        @match &problem {
+            Some(p) => {
+                h2 { "Failed: " (p.title) }
+                p.error { (p.detail) }
+                @if !p.errors.is_empty() { ul { @for e in &p.errors { li { (e.describe()) } } } }
+            }
+            None => p { "This job is " strong { (row.status.as_str()) } "; this page shows its result once it is done." }
+        }
+        ul.links.noprint { li { a href=(format!("/v1/jobs/{}", row.id)) { "JSON" } } }
+        h2 { "Request" }
+        details { summary { "The request as sent" } pre { (String::from_utf8_lossy(&row.request)) } }
+    };
+    layout::page(&title(row), body)
 }
 
 fn title(row: &JobRow) -> String {

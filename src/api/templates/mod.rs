@@ -18,6 +18,7 @@ pub use variants::{MAX_SEED, Variant, Variants, draw, drawable};
 
 use super::AppState;
 use super::body::Chunks;
+use super::create::Destination;
 use super::job::job_chunks;
 use super::json::{JsonBody, RawBody};
 use super::kind::{self, AnyKind};
@@ -62,7 +63,7 @@ pub async fn stored_job(state: &AppState, kind: &dyn AnyKind, request: &serde_js
     if let Some(id) = state.store.find_by_key(&key, &bytes).await? {
         return read::load(state, &id, read::READ_MEMORY_FACTOR).await;
     }
-    kind.job(state, bytes.into(), Some(key)).await
+    kind.job(state, bytes.into(), Destination::New { key: Some(key) }).await
 }
 
 /// Lists the templates: the built-in ones (the course's problems), then those clients stored.
@@ -172,7 +173,8 @@ pub async fn create(State(state): State<AppState>, body: JsonBody<NewTemplate>) 
     }
     let (bytes, key) = apply::keyed(&t.kind, &t.request);
     let kind = kind::find(&t.kind).ok_or_else(|| ApiError::Internal(format!("kind {}", t.kind)))?;
-    let (_solved, _reserved) = kind.job(&state, bytes.into(), Some(key)).await.map_err(model::under_request)?;
+    let (_solved, _reserved) =
+        kind.job(&state, bytes.into(), Destination::New { key: Some(key) }).await.map_err(model::under_request)?;
     let text = serde_json::to_string(&t).map_err(|e| ApiError::Internal(e.to_string()))?;
     if !state.store.insert_template(&t.id, &super::create::now_rfc3339(), &text).await? {
         return Err(ApiError::Conflict(format!("a template named '{}' exists", t.id)));
