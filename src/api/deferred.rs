@@ -12,6 +12,9 @@
 //!   stops releases its claims (the jobs go back to the queue), and one
 //!   killed lets them lapse: after the lease any replica claims them again.
 //!   A job claimed [`ATTEMPTS`] times without ending fails as interrupted.
+//!   Leases are times of the claiming replica's clock compared with another
+//!   replica's: their clocks must agree to well within a lease (30 s by
+//!   default; NTP keeps them within milliseconds).
 //! - A job the replica cannot compute or store for now (saturated, the
 //!   database away or full) goes back to the queue, not to `failed`.
 //! - At most `max_queued` jobs wait; beyond them a POST is answered 503.
