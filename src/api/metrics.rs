@@ -154,11 +154,13 @@ impl Metrics {
 
 /// Middleware: counts and times every request by its route's template.
 pub async fn track(metrics: Metrics, req: Request, next: Next) -> Response {
-    let route = req.extensions().get::<MatchedPath>().map_or("unmatched", MatchedPath::as_str).to_string();
-    let method = req.method().as_str().to_string();
+    // Both shared, not copied: a matched path is an `Arc<str>`, a method's name static.
+    let route = req.extensions().get::<MatchedPath>().cloned();
+    let method = req.method().clone();
     let start = Instant::now();
     let response = next.run(req).await;
-    metrics.request(&method, &route, response.status(), start.elapsed());
+    let route = route.as_ref().map_or("unmatched", MatchedPath::as_str);
+    metrics.request(method.as_str(), route, response.status(), start.elapsed());
     response
 }
 
