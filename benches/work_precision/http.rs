@@ -119,7 +119,7 @@ fn jobs() -> Vec<(&'static str, &'static str, Value)> {
     let mut k1 = fixture("requests/k1_offset_slider_crank.json");
     k1["input"]["steps"] = json!(360);
     vec![
-        ("GET /healthz (a database ping: the floor)", "/healthz", Value::Null),
+        ("GET /healthz (liveness: the floor)", "/healthz", Value::Null),
         ("flywheel F1, exact inertia only", "/v1/flywheel", light),
         ("flywheel F1, defaults (check, 361-row table)", "/v1/flywheel", fixture("requests/p103_slider.json")),
         ("kinetostatics K1, 360 steps, every reaction", "/v1/kinetostatics", k1),

@@ -101,8 +101,10 @@ impl Store {
         max_attempts: i64,
         interrupted: &str,
     ) -> Result<Option<Claimed>, StoreError> {
+        // `status IN (…)` as the partial index `jobs_waiting` says it, so that SQLite uses the index.
         let give_up = "UPDATE jobs SET status = 'failed', problem = $3, claimed_by = NULL, claimed_until = NULL \
-                       WHERE status = 'running' AND claimed_until < $1 AND attempts >= $2";
+                       WHERE status IN ('queued', 'running') AND status = 'running' AND claimed_until < $1 \
+                       AND attempts >= $2";
         on_pool!(&self.db, pool => {
             sqlx::query(give_up).bind(now).bind(max_attempts).bind(interrupted).execute(pool).await?;
         });
