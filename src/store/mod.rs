@@ -110,6 +110,8 @@ pub struct JobSummary {
     pub label: Option<String>,
     /// Bytes of its request and result together.
     pub bytes: i64,
+    /// `queued`, `running`, `done` or `failed` ([`Status`]).
+    pub status: String,
 }
 
 /// A job as the database returns it.
@@ -283,7 +285,7 @@ impl Store {
 
     /// The newest `limit` jobs without their request and result (a page's list).
     pub async fn recent(&self, limit: i64) -> Result<Vec<JobSummary>, StoreError> {
-        let sql = "SELECT id, kind, created_at, engine_us, label, bytes FROM jobs ORDER BY seq DESC LIMIT $1";
+        let sql = "SELECT id, kind, created_at, engine_us, label, bytes, status FROM jobs ORDER BY seq DESC LIMIT $1";
         Ok(on_pool!(&self.db, pool => sqlx::query_as(sql).bind(limit).fetch_all(pool).await?))
     }
 

@@ -73,6 +73,7 @@ async fn a_deferred_job_is_queued_then_computed() {
     let page = app.get(&format!("/jobs/{}", queued["id"].as_str().unwrap())).await;
     assert_eq!((page.status, page.headers["refresh"].to_str().unwrap()), (StatusCode::OK, "2"));
     assert!(page.text.contains("queued"), "{}", page.text);
+    assert!(app.get("/").await.text.contains("<td>queued</td>"), "the home page's list says so");
     assert!(app.get("/metrics").await.text.contains("mechdyn_deferred_jobs{status=\"queued\"} 1\n"));
 
     let runner = deferred::spawn(state).unwrap();

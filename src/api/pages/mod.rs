@@ -52,13 +52,13 @@ pub async fn home(State(state): State<AppState>) -> Response {
             p { "No job yet: open a template, or POST a request (see the " a href="/docs/" { "API documentation" } ")." }
         } @else {
             div.scroll { table {
-                thead { tr { th { "job" } th { "kind" } th { "label" } th { "created (UTC)" } th { "engine time" } } }
+                thead { tr { th { "job" } th { "kind" } th { "label" } th { "created (UTC)" } th { "engine time, or status" } } }
                 tbody { @for j in &jobs { tr {
                     td.id { a href=(format!("/jobs/{}", j.id)) { (j.id) } }
                     td { (j.kind) }
                     td { (j.label.as_deref().map(super::plots::svg::clean).unwrap_or_default()) }
                     td.num { (job::when(&j.created_at)) }
-                    td.num { (job::duration(j.engine_us)) }
+                    @if j.status == "done" { td.num { (job::duration(j.engine_us)) } } @else { td { (j.status) } }
                 } } }
             } }
         }
