@@ -68,10 +68,12 @@ impl Status {
             Self::Failed => "failed",
         }
     }
+}
 
-    /// The status stored as `text` (a job stored before statuses is done).
-    fn stored(text: &str) -> Self {
-        match text {
+/// The status stored as text (a job stored before statuses is done).
+impl From<String> for Status {
+    fn from(text: String) -> Self {
+        match text.as_str() {
             "queued" => Self::Queued,
             "running" => Self::Running,
             "failed" => Self::Failed,
@@ -110,8 +112,8 @@ pub struct JobSummary {
     pub label: Option<String>,
     /// Bytes of its request and result together.
     pub bytes: i64,
-    /// `queued`, `running`, `done` or `failed` ([`Status`]).
-    pub status: String,
+    #[sqlx(try_from = "String")]
+    pub status: Status,
 }
 
 /// A job as the database returns it.
@@ -126,7 +128,8 @@ pub(crate) struct Row {
     engine_us: i64,
     engine_version: String,
     label: Option<String>,
-    status: String,
+    #[sqlx(try_from = "String")]
+    status: Status,
     problem: Option<String>,
 }
 
@@ -134,7 +137,6 @@ impl From<Row> for JobRow {
     fn from(r: Row) -> Self {
         let Row { seq, id, kind, created_at, request, result, engine_us, engine_version, label, status, problem } = r;
         let (request, result, problem) = (request.into(), result.into(), problem.map(Bytes::from));
-        let status = Status::stored(&status);
         Self { seq, id, kind, created_at, request, result, engine_us, engine_version, label, status, problem }
     }
 }

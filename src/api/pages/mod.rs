@@ -11,6 +11,7 @@ mod layout;
 use super::AppState;
 use super::problem::ApiError;
 use super::templates::builtin;
+use crate::store::Status;
 use axum::extract::rejection::QueryRejection;
 use axum::extract::{Path, Query, State};
 use axum::http::StatusCode;
@@ -58,7 +59,7 @@ pub async fn home(State(state): State<AppState>) -> Response {
                     td { (j.kind) }
                     td { (j.label.as_deref().map(super::plots::svg::clean).unwrap_or_default()) }
                     td.num { (job::when(&j.created_at)) }
-                    @if j.status == "done" { td.num { (job::duration(j.engine_us)) } } @else { td { (j.status) } }
+                    @if j.status == Status::Done { td.num { (job::duration(j.engine_us)) } } @else { td { (j.status.as_str()) } }
                 } } }
             } }
         }
