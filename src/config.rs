@@ -87,7 +87,7 @@ pub struct Cli {
     #[arg(long, env = "MECHDYN_RETENTION_DAYS", value_parser = positive_days, global = true)]
     pub retention_days: Option<f64>,
     /// Keep only the newest this many jobs (default: keep them all).
-    #[arg(long, env = "MECHDYN_RETENTION_JOBS", value_parser = at_least_one_u64, global = true)]
+    #[arg(long, env = "MECHDYN_RETENTION_JOBS", value_parser = clap::value_parser!(u64).range(1..), global = true)]
     pub retention_jobs: Option<u64>,
     /// Seconds between the retention's sweeps (the first runs at start).
     #[arg(long, env = "MECHDYN_RETENTION_INTERVAL_SECONDS", default_value_t = 60.0, value_parser = positive_seconds, global = true)]
@@ -153,13 +153,6 @@ fn positive_days(s: &str) -> Result<f64, String> {
     match s.parse::<f64>() {
         Ok(v) if v > 0.0 && v <= 1e6 => Ok(v),
         _ => Err(format!("{s:?} is not a number of days in (0, 1000000]")),
-    }
-}
-
-fn at_least_one_u64(s: &str) -> Result<u64, String> {
-    match s.parse::<u64>() {
-        Ok(n) if n >= 1 => Ok(n),
-        _ => Err(format!("{s:?} is not a whole number of at least 1")),
     }
 }
 

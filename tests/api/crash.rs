@@ -16,10 +16,15 @@ const CLIENTS: usize = 4;
 
 /// One HTTP/1.1 exchange on a fresh connection: (status, body).
 pub fn http(port: u16, method: &str, path: &str, body: &str) -> std::io::Result<(u16, String)> {
+    http_with(port, method, path, "", body)
+}
+
+/// [`http`] with more header lines (`extra`: each ending in `\r\n`).
+pub fn http_with(port: u16, method: &str, path: &str, extra: &str, body: &str) -> std::io::Result<(u16, String)> {
     let mut s = TcpStream::connect(("127.0.0.1", port))?;
     s.set_read_timeout(Some(Duration::from_secs(10)))?;
     let head = format!(
-        "{method} {path} HTTP/1.1\r\nHost: localhost\r\nContent-Type: application/json\r\n\
+        "{method} {path} HTTP/1.1\r\nHost: localhost\r\nContent-Type: application/json\r\n{extra}\
          Content-Length: {}\r\nConnection: close\r\n\r\n",
         body.len()
     );

@@ -3,12 +3,13 @@
 //! at once gives) or `failed` (the problem it would have answered); never
 //! lost when their replica stops or is killed.
 
-use crate::crash::{free_port, http, start_with};
+use crate::crash::{free_port, http, http_with, start_with};
 use crate::helpers::{Reply, TestApp, request};
 use axum::body::Body;
 use axum::http::{Request, StatusCode};
-use mechdyn::api::AppState;
 use mechdyn::api::deferred::{self, Deferred, Settings};
+use mechdyn::api::{AppState, router};
+use mechdyn::store::Store;
 use serde_json::{Value, json};
 use std::time::{Duration, Instant};
 
@@ -34,16 +35,10 @@ pub async fn ended(app: &TestApp, location: &str) -> Value {
 /// A fresh app whose deferred jobs are kept as `settings` says, and its
 /// state (to start its runner when the test wants it).
 async fn app_with(settings: Settings) -> (TestApp, AppState) {
-    let app = TestApp::new().await;
-    let mut state = None;
-    let app = app
-        .reopened(|s| {
-            let s = AppState { deferred: Deferred::new(settings), ..s };
-            state = Some(s.clone());
-            s
-        })
-        .await;
-    (app, state.unwrap())
+    let dir = tempfile::tempdir().unwrap();
+    let store = Store::open(&format!("sqlite://{}/jobs.db", dir.path().display())).await.unwrap();
+    let state = AppState { deferred: Deferred::new(settings), ..AppState::new(store) };
+    (TestApp::serving(router(state.clone(), &mechdyn::api::Settings::default()), dir), state)
 }
 
 /// The P.103 flywheel deferred: 202 at once with its `Location` and
@@ -178,19 +173,7 @@ fn wait_for(port: u16, id: &str, wanted: &str) {
 /// POSTs `body` to `path` on the replica on `port` with `Prefer:
 /// respond-async`: (status, body).
 pub fn post_async_raw(port: u16, path: &str, body: &str) -> (u16, String) {
-    use std::io::{Read, Write};
-    let mut s = std::net::TcpStream::connect(("127.0.0.1", port)).unwrap();
-    let head = format!(
-        "POST {path} HTTP/1.1\r\nHost: localhost\r\nContent-Type: application/json\r\n\
-         Prefer: respond-async\r\nContent-Length: {}\r\nConnection: close\r\n\r\n",
-        body.len()
-    );
-    s.write_all(head.as_bytes()).unwrap();
-    s.write_all(body.as_bytes()).unwrap();
-    let mut raw = String::new();
-    s.read_to_string(&mut raw).unwrap();
-    let status = raw[9..12].parse().unwrap();
-    (status, raw.split_once("\r\n\r\n").unwrap().1.to_string())
+    http_with(port, "POST", path, "Prefer: respond-async\r\n", body).unwrap()
 }
 
 /// POSTs the heavy job deferred to the replica on `port`: its id.

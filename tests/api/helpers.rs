@@ -51,9 +51,10 @@ impl TestApp {
         Self { app: router(AppState::new(store), settings), url: url.into(), _dir: tempfile::tempdir().unwrap() }
     }
 
-    /// A router built by the test (its own state and settings), on no folder of ours.
-    pub fn serving(app: axum::Router) -> Self {
-        Self { app, url: String::new(), _dir: tempfile::tempdir().unwrap() }
+    /// A router built by the test (its own state and settings), its
+    /// database in `dir` (kept while the app is).
+    pub fn serving(app: axum::Router, dir: tempfile::TempDir) -> Self {
+        Self { app, url: String::new(), _dir: dir }
     }
 
     /// The same database opened again, as after a restart.
