@@ -156,6 +156,7 @@ impl Runner {
 async fn run(state: AppState, mut stopped: watch::Receiver<bool>) {
     let slots = Arc::new(Semaphore::new(state.deferred.settings.workers));
     let claims = Claims::default();
+    let interrupted = serde_json::to_string(&ApiError::Interrupted(ATTEMPTS).problem()).unwrap_or_default();
     loop {
         let slot = tokio::select! {
             slot = slots.clone().acquire_owned() => slot,
@@ -163,7 +164,7 @@ async fn run(state: AppState, mut stopped: watch::Receiver<bool>) {
         };
         let Ok(slot) = slot else { break };
         let claim = uuid::Uuid::new_v4().to_string();
-        match claim_one(&state, &claim).await {
+        match claim_one(&state, &claim, &interrupted).await {
             Ok(Some(job)) => {
                 claims.lock().unwrap_or_else(|e| e.into_inner()).insert(job.id.clone(), claim.clone());
                 let (state, claims) = (state.clone(), claims.clone());
@@ -199,12 +200,15 @@ async fn run(state: AppState, mut stopped: watch::Receiver<bool>) {
 }
 
 /// The oldest waiting job, claimed as `claim` for a lease.
-async fn claim_one(state: &AppState, claim: &str) -> Result<Option<Claimed>, crate::store::StoreError> {
+/// (`interrupted`: the problem of a job given up after [`ATTEMPTS`] claims.)
+async fn claim_one(
+    state: &AppState,
+    claim: &str,
+    interrupted: &str,
+) -> Result<Option<Claimed>, crate::store::StoreError> {
     let now = OffsetDateTime::now_utc();
     let until = rfc3339(now + state.deferred.settings.lease);
-    let interrupted = ApiError::Interrupted(ATTEMPTS).problem();
-    let interrupted = serde_json::to_string(&interrupted).unwrap_or_default();
-    state.store.claim(&rfc3339(now), &until, claim, ATTEMPTS, &interrupted).await
+    state.store.claim(&rfc3339(now), &until, claim, ATTEMPTS, interrupted).await
 }
 
 /// Computes a claimed job and stores how it ended, its lease renewed meanwhile.
