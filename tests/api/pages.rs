@@ -84,6 +84,10 @@ async fn a_templates_form_computes_its_job_and_shows_errors_at_their_field() {
     // A blank field keeps its default.
     let r = app.get("/templates/p103-slider-flywheel?F=1200&I0=&eps=0.03&speed=").await;
     assert_eq!(r.location.as_deref(), Some(location.as_str()));
+    // A name the template has not, even blank, is refused, not ignored (found by schemathesis, seed 14681382).
+    let r = app.get("/templates/p103-slider-flywheel?F=1200&nope=").await;
+    assert_eq!(r.status, StatusCode::BAD_REQUEST);
+    assert!(html(&r).contains("nope"), "the unknown name is said");
     // A value out of range: the form again, the message at its field, the value kept.
     let r = app.get("/templates/p103-slider-flywheel?F=-3&eps=0.03").await;
     assert_eq!(r.status, StatusCode::BAD_REQUEST);

@@ -45,9 +45,10 @@ pub async fn template(
         return layout::answer(StatusCode::OK, form(&t, &given, None));
     }
     // A field left blank or at its default is not asked: an unchanged form is
-    // the template's own job, the one `/v1/templates/{id}/job` gives.
+    // the template's own job, the one `/v1/templates/{id}/job` gives. A name
+    // the template has not is asked, blank or not, and refused.
     let unchanged = |k: &String, v: &String| {
-        v.trim().is_empty() || t.parameters.get(k).is_some_and(|p| default_text(&t, p) == v.trim())
+        t.parameters.get(k).is_some_and(|p| v.trim().is_empty() || default_text(&t, p) == v.trim())
     };
     let asked: HashMap<String, String> =
         given.iter().filter(|(k, v)| !unchanged(k, v)).map(|(k, v)| (k.clone(), v.clone())).collect();
