@@ -122,14 +122,14 @@ where
             let kind = kind.into();
             let job =
                 NewJob { id, kind, created_at, request, result, engine_us, engine_version, label, request_key: key };
-            state.store.insert(job).await.map_err(ApiError::from)
+            state.store.insert(job).await.map_err(ApiError::not_stored("the job was computed but could not be stored"))
         }
         // None: deleted, or claimed again after this replica's lease lapsed; not this replica's to store.
         Destination::Claimed { id, claim } => {
             match state.store.complete((&id, &claim), &result, engine_us, bytes as i64).await {
                 Ok(Some(row)) => Ok(row),
                 Ok(None) => Err(ApiError::NotFound(id)),
-                Err(e) => Err(e.into()),
+                Err(e) => Err(ApiError::not_stored("the job was computed but its result could not be stored")(e)),
             }
         }
     };

@@ -111,7 +111,7 @@ pub async fn accept(
         label: super::label::current(),
         engine_version: super::create::VERSION.into(),
     };
-    let row = state.store.enqueue(job).await?;
+    let row = state.store.enqueue(job).await.map_err(ApiError::not_stored("the job was not queued"))?;
     state.deferred.queued.notify_one();
     let mut body = Chunks::default();
     job_chunks(&row, &mut body);
@@ -225,7 +225,7 @@ async fn compute(state: &AppState, job: Claimed, claim: String) {
     renewing.abort();
     let ended = match outcome {
         Ok(()) | Err(ApiError::NotFound(_)) => return,
-        Err(e @ (ApiError::Saturated { .. } | ApiError::Unavailable(_) | ApiError::StorageFull)) => {
+        Err(e @ (ApiError::Saturated { .. } | ApiError::Unavailable(_) | ApiError::StorageFull(_))) => {
             tracing::warn!(job = %id, error = %e, "deferred job put back in the queue");
             tokio::time::sleep(POLL).await;
             state.store.release((&id, &claim)).await.map(|_| ())

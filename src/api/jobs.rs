@@ -75,9 +75,12 @@ pub async fn get(
         (status = 503, description = "The database is unavailable: retry after `Retry-After` seconds",
             body = Problem, content_type = "application/problem+json",
             headers(("Retry-After" = u64, description = "Seconds to wait before retrying"))),
+        (status = 507, description = "The service's storage is full: the job was not deleted (a deletion \
+            needs room in the database's log too); retry once space returns",
+            body = Problem, content_type = "application/problem+json"),
     ))]
 pub async fn delete(State(state): State<AppState>, Path(id): Path<String>) -> Result<StatusCode, ApiError> {
-    if state.store.delete(&id).await? {
+    if state.store.delete(&id).await.map_err(ApiError::not_stored("the job was not deleted"))? {
         state.metrics.deleted("request", 1);
         Ok(StatusCode::NO_CONTENT)
     } else {

@@ -114,7 +114,7 @@ pub enum PostErrors {
     /// still work, and jobs are stored again once space returns
     #[response(status = 507, content_type = "application/problem+json", example = json!({
         "type": "/problems/storage-full", "title": "The service's storage is full", "status": 507,
-        "detail": "the job was computed but could not be stored: the service's storage is full; reads still work"
+        "detail": "the job was computed but could not be stored: the service's storage is full; reads still work, and writes resume once space returns"
     }))]
     StorageFull(Problem),
 }
@@ -196,9 +196,9 @@ pub enum ApiError {
     /// Too many jobs computing or waiting, or too many large answers in flight.
     #[error("the service is saturated ({reason}); retry after {retry_after} s")]
     Saturated { reason: String, retry_after: u64 },
-    /// The database's storage is full: nothing was stored.
-    #[error("the job was computed but could not be stored: the service's storage is full; reads still work")]
-    StorageFull,
+    /// The database's storage is full: `.0` says what was not done (nothing was stored).
+    #[error("{0}: the service's storage is full; reads still work, and writes resume once space returns")]
+    StorageFull(&'static str),
     /// The database cannot be used at the moment (logged).
     #[error("the database is unavailable; retry later")]
     Unavailable(String),
@@ -241,7 +241,7 @@ impl ApiError {
                 (StatusCode::UNPROCESSABLE_ENTITY, "result-too-large", "The result would be too large")
             }
             Self::Saturated { .. } => (StatusCode::SERVICE_UNAVAILABLE, "saturated", "The service is saturated"),
-            Self::StorageFull => (StatusCode::INSUFFICIENT_STORAGE, "storage-full", "The service's storage is full"),
+            Self::StorageFull(_) => (StatusCode::INSUFFICIENT_STORAGE, "storage-full", "The service's storage is full"),
             Self::Unavailable(_) => {
                 (StatusCode::SERVICE_UNAVAILABLE, "database-unavailable", "The database is unavailable")
             }
@@ -299,8 +299,15 @@ impl ApiError {
 
 impl From<crate::store::StoreError> for ApiError {
     fn from(e: crate::store::StoreError) -> Self {
-        match e {
-            crate::store::StoreError::Full => Self::StorageFull,
+        Self::not_stored("nothing was stored")(e)
+    }
+}
+
+impl ApiError {
+    /// A store's failure to write, the storage full saying `what` was not done.
+    pub fn not_stored(what: &'static str) -> impl Fn(crate::store::StoreError) -> Self {
+        move |e| match e {
+            crate::store::StoreError::Full => Self::StorageFull(what),
             crate::store::StoreError::Unavailable(why) => Self::Unavailable(why),
         }
     }

@@ -1,5 +1,6 @@
 //! The operator's endpoints: liveness (`/healthz`: the process answers),
-//! readiness (`/readyz`: the service can serve, its database reachable).
+//! readiness (`/readyz`: the service can serve: its database answers, and
+//! its writes commit).
 //!
 //! A container orchestrator restarts a replica whose liveness fails and
 //! stops sending it traffic while its readiness fails: a database that is
@@ -51,24 +52,30 @@ pub struct Readiness {
 /// connection while the database is away.
 const CHECK_WAIT: Duration = Duration::from_secs(1);
 
-/// Readiness: 200 when the service can serve (its database answers within 1 s), 503 otherwise.
+/// Readiness: 200 when the service can serve (its database answers within 1 s
+/// and the last write committed, or a write of its size does now), 503 otherwise.
 #[utoipa::path(get, path = "/readyz", tag = "service",
     responses(
         (status = 200, description = "The service can serve", body = Readiness),
-        (status = 503, description = "The service cannot serve (its database does not answer); `reason` says why",
+        (status = 503, description = "The service cannot serve (its database does not answer, or cannot store jobs: \
+            its storage is full); `reason` says why",
             body = Readiness),
     ))]
 pub async fn readyz(State(state): State<AppState>) -> (StatusCode, Json<Readiness>) {
     let (version, database) = (env!("CARGO_PKG_VERSION"), state.store.backend().name());
-    let checked = match tokio::time::timeout(CHECK_WAIT, state.store.check()).await {
-        Ok(answer) => answer.map_err(|e| e.to_string()),
-        Err(_) => Err(format!("no answer within {} s", CHECK_WAIT.as_secs())),
+    let check = async {
+        state.store.check().await.map_err(|e| format!("the database does not answer: {e}"))?;
+        state.store.writable().await.map_err(|e| format!("the database cannot store jobs: {e}"))
+    };
+    let checked = match tokio::time::timeout(CHECK_WAIT, check).await {
+        Ok(answer) => answer,
+        Err(_) => Err(format!("the database does not answer: no answer within {} s", CHECK_WAIT.as_secs())),
     };
     match checked {
         Ok(()) => (StatusCode::OK, Json(Readiness { status: "ready", database, reason: None, version })),
         Err(e) => {
             tracing::warn!(error = %e, "not ready");
-            let reason = Some(format!("the database does not answer: {e}"));
+            let reason = Some(e);
             (StatusCode::SERVICE_UNAVAILABLE, Json(Readiness { status: "not ready", database, reason, version }))
         }
     }

@@ -34,7 +34,7 @@ impl Store {
         let insert = "INSERT INTO idempotency (key, fingerprint, created_at, status, content_type, job_id, body) \
                       VALUES ($1, $2, $3, $4, $5, $6, $7) ON CONFLICT DO NOTHING";
         let forget = "DELETE FROM idempotency WHERE created_at < $1";
-        on_pool!(&self.db, pool => {
+        let kept: Result<(), sqlx::Error> = on_pool!(&self.db, pool => async {
             sqlx::query(insert)
                 .bind(key)
                 .bind(&a.fingerprint)
@@ -46,7 +46,9 @@ impl Store {
                 .execute(pool)
                 .await?;
             sqlx::query(forget).bind(forget_before).execute(pool).await?;
-        });
-        Ok(())
+            Ok(())
+        }
+        .await);
+        self.noted(kept.map_err(StoreError::from), a.body.as_ref().map_or(0, Vec::len), |()| true)
     }
 }

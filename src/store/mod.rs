@@ -13,8 +13,19 @@
 //! configured size cap) is [`StoreError::Full`], a condition the service
 //! reports and recovers from when space returns; anything else the database
 //! cannot do is [`StoreError::Unavailable`].
+//!
+//! Two rules keep every acknowledged write committed:
+//! - A statement that writes is run to its end (`execute`, `fetch_all`),
+//!   never `fetch_one` or `fetch_optional`: SQLite commits a statement
+//!   outside a transaction when it ends, and sqlx ends a statement read for
+//!   one row by resetting it, dropping that commit's error (SQLITE_FULL on a
+//!   full disk: a row answered, nothing stored).
+//! - An explicit transaction runs on a connection [`held`] for it, which
+//!   goes back to the pool only once its `COMMIT` has succeeded.
 
 pub(crate) mod backend;
+mod health;
+mod held;
 mod idempotency;
 mod queue;
 mod retention;
@@ -215,6 +226,8 @@ pub struct Store {
     writer: mpsc::Sender<Pending>,
     /// Transactions the writer has committed.
     commits: Arc<AtomicU64>,
+    /// The last write that failed, until one commits ([`Store::writable`]).
+    writes: Arc<health::Writes>,
 }
 
 impl Store {
@@ -230,9 +243,9 @@ impl Store {
         let backend = url::check_scheme(url).map_err(|e| sqlx::Error::Configuration(Box::new(e)))?;
         let db = Db::open(url, backend, options).await?;
         let (writer, queue) = mpsc::channel(writer::QUEUE);
-        let commits = Arc::new(AtomicU64::new(0));
-        tokio::spawn(writer::write_batches(db.clone(), queue, commits.clone()));
-        Ok(Self { db, writer, commits })
+        let (commits, writes) = (Arc::new(AtomicU64::new(0)), Arc::new(health::Writes::default()));
+        tokio::spawn(writer::write_batches(db.clone(), queue, commits.clone(), writes.clone()));
+        Ok(Self { db, writer, commits, writes })
     }
 
     /// How many transactions the writer has committed (jobs ≥ commits under load).
@@ -262,9 +275,9 @@ impl Store {
     pub async fn insert_template(&self, id: &str, created_at: &str, body: &str) -> Result<bool, StoreError> {
         let sql = "INSERT INTO templates (id, created_at, body) VALUES ($1, $2, $3) ON CONFLICT DO NOTHING";
         let done = on_pool!(&self.db, pool => {
-            sqlx::query(sql).bind(id).bind(created_at).bind(body).execute(pool).await?.rows_affected()
+            sqlx::query(sql).bind(id).bind(created_at).bind(body).execute(pool).await.map(|d| d.rows_affected())
         });
-        Ok(done == 1)
+        Ok(self.noted(done.map_err(StoreError::from), body.len(), |n| *n > 0)? == 1)
     }
 
     /// A stored template's JSON.

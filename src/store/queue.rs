@@ -73,7 +73,7 @@ impl Store {
                    status) VALUES ($1, $2, $3, $4, 'null', 0, $5, $6, $7, 'queued') RETURNING seq";
         let request = std::str::from_utf8(&job.request).unwrap_or("null");
         let bytes = job.request.len() as i64 + 4;
-        let seq: i64 = on_pool!(&self.db, pool => {
+        let seq: Result<Vec<i64>, sqlx::Error> = on_pool!(&self.db, pool => {
             sqlx::query_scalar(sql)
                 .bind(&job.id)
                 .bind(&job.kind)
@@ -82,9 +82,12 @@ impl Store {
                 .bind(&job.engine_version)
                 .bind(bytes)
                 .bind(&job.label)
-                .fetch_one(pool)
-                .await?
+                .fetch_all(pool)
+                .await
         });
+        let seq = self.noted(seq.map_err(StoreError::from), job.request.len(), |_| true)?;
+        let seq =
+            seq.first().copied().ok_or_else(|| StoreError::Unavailable("the queued job was not returned".into()))?;
         let Queued { id, kind, created_at, request, label, engine_version } = job;
         let (result, status, problem) = (Bytes::from_static(b"null"), Status::Queued, None);
         Ok(JobRow { seq, id, kind, created_at, request, result, engine_us: 0, engine_version, label, status, problem })
@@ -108,17 +111,22 @@ impl Store {
         on_pool!(&self.db, pool => {
             sqlx::query(give_up).bind(now).bind(max_attempts).bind(interrupted).execute(pool).await?;
         });
-        let row: Option<(String, String, String, i64)> = match &self.db {
+        let rows: Vec<(String, String, String, i64)> = match &self.db {
             Db::Sqlite(pool) => {
                 let q = sqlx::query_as(claim!(""));
-                q.bind(now).bind(max_attempts).bind(by).bind(until).fetch_optional(pool).await?
+                q.bind(now).bind(max_attempts).bind(by).bind(until).fetch_all(pool).await?
             }
             Db::Postgres(pool) => {
                 let q = sqlx::query_as(claim!(" FOR UPDATE SKIP LOCKED"));
-                q.bind(now).bind(max_attempts).bind(by).bind(until).fetch_optional(pool).await?
+                q.bind(now).bind(max_attempts).bind(by).bind(until).fetch_all(pool).await?
             }
         };
-        Ok(row.map(|(id, kind, request, attempts)| Claimed { id, kind, request: request.into(), attempts }))
+        Ok(rows.into_iter().next().map(|(id, kind, request, attempts)| Claimed {
+            id,
+            kind,
+            request: request.into(),
+            attempts,
+        }))
     }
 
     /// Extends the claim `by` of job `id` to `until`: false where it is no longer `by`'s.
@@ -146,11 +154,12 @@ impl Store {
             row_columns!()
         );
         let result = std::str::from_utf8(result).unwrap_or("null");
-        let row: Option<Row> = on_pool!(&self.db, pool => {
+        let rows: Result<Vec<Row>, sqlx::Error> = on_pool!(&self.db, pool => {
             let q = sqlx::query_as(sql).bind(result).bind(engine_us).bind(bytes).bind(id).bind(by);
-            q.fetch_optional(pool).await?
+            q.fetch_all(pool).await
         });
-        Ok(row.map(JobRow::from))
+        let rows = self.noted(rows.map_err(StoreError::from), result.len(), |r| !r.is_empty())?;
+        Ok(rows.into_iter().next().map(JobRow::from))
     }
 
     /// Stores why job `id` claimed by `by` failed (`problem`, problem+json
@@ -160,9 +169,10 @@ impl Store {
                    claimed_by = NULL, claimed_until = NULL WHERE id = $4 AND claimed_by = $5 AND status = 'running'";
         let grown = problem.len() as i64;
         let done = on_pool!(&self.db, pool => {
-            sqlx::query(sql).bind(problem).bind(engine_us).bind(grown).bind(id).bind(by).execute(pool).await?.rows_affected()
+            let q = sqlx::query(sql).bind(problem).bind(engine_us).bind(grown).bind(id).bind(by);
+            q.execute(pool).await.map(|d| d.rows_affected())
         });
-        Ok(done == 1)
+        Ok(self.noted(done.map_err(StoreError::from), problem.len(), |n| *n > 0)? == 1)
     }
 
     /// Puts job `id` claimed by `by` back in the queue, the claim not

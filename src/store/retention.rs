@@ -5,6 +5,7 @@
 //! answering with a job that is gone.
 
 use super::backend::on_pool;
+use super::held::Held;
 use super::{Store, StoreError};
 
 /// Rows deleted per statement of a sweep.
@@ -22,14 +23,18 @@ pub struct Retention<'a> {
 impl Store {
     /// Deletes the job `id`: whether there was one.
     pub async fn delete(&self, id: &str) -> Result<bool, StoreError> {
-        let done = on_pool!(&self.db, pool => {
-            let mut tx = pool.begin().await?;
-            let done = sqlx::query("DELETE FROM jobs WHERE id = $1").bind(id).execute(&mut *tx).await?;
-            sqlx::query("DELETE FROM idempotency WHERE job_id = $1").bind(id).execute(&mut *tx).await?;
-            tx.commit().await?;
-            done.rows_affected()
-        });
-        Ok(done == 1)
+        let done: Result<u64, StoreError> = on_pool!(&self.db, pool => async {
+            // Closed, not given back, unless it commits (see `held`).
+            let mut held = Held::acquire(pool).await?;
+            sqlx::query("BEGIN").execute(held.conn()).await?;
+            let done = sqlx::query("DELETE FROM jobs WHERE id = $1").bind(id).execute(held.conn()).await?;
+            sqlx::query("DELETE FROM idempotency WHERE job_id = $1").bind(id).execute(held.conn()).await?;
+            sqlx::query("COMMIT").execute(held.conn()).await?;
+            held.release();
+            Ok(done.rows_affected())
+        }
+        .await);
+        Ok(self.noted(done, 0, |n| *n > 0)? == 1)
     }
 
     /// Deletes the jobs `r` does not keep: how many, by age and by count.

@@ -7,14 +7,16 @@
 //! again, so writes resume when space returns). Where the database refuses
 //! the statement for another reason, the jobs are inserted one by one in an
 //! explicit transaction, so a bad row fails alone; where it cannot be
-//! reached, every job fails at once (no second wait for a connection). The transaction is plain `BEGIN`/`COMMIT`/`ROLLBACK` on one
-//! connection: SQLite may roll a transaction back by itself after an I/O
-//! error, and a rollback that finds nothing to undo is harmless here, where
-//! sqlx's own transaction bookkeeping would be left out of step. On
-//! PostgreSQL a failed row would abort the transaction, so each row there
-//! has a savepoint of its own.
+//! reached, every job fails at once (no second wait for a connection). The
+//! transaction is plain `BEGIN`/`COMMIT` on a connection [`Held`] for it,
+//! which goes back to the pool only once committed (closed otherwise: a
+//! failed transaction's state is the database's to know, not the pool's).
+//! On PostgreSQL a failed row would abort the transaction, so each row
+//! there has a savepoint of its own.
 
 use super::backend::{Db, classify, is_constraint, is_full, on_pool};
+use super::health::Writes;
+use super::held::Held;
 use super::{Pending, StoreError};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -34,13 +36,13 @@ const COLUMNS: &str = "INSERT INTO jobs (id, kind, created_at, request, result, 
 /// The values of one job.
 const ROW: usize = 10;
 
-pub async fn write_batches(db: Db, mut queue: mpsc::Receiver<Pending>, commits: Arc<AtomicU64>) {
+pub async fn write_batches(db: Db, mut queue: mpsc::Receiver<Pending>, commits: Arc<AtomicU64>, writes: Arc<Writes>) {
     let mut waiting = Vec::with_capacity(MAX_BATCH);
     while queue.recv_many(&mut waiting, MAX_BATCH).await > 0 {
         while !waiting.is_empty() {
             let take = within_bytes(&waiting);
             let batch: Vec<Pending> = waiting.drain(..take).collect();
-            write(&db, batch, &commits).await;
+            write(&db, batch, &commits, &writes).await;
         }
     }
 }
@@ -56,7 +58,7 @@ fn within_bytes(jobs: &[Pending]) -> usize {
 }
 
 /// One batch in one transaction; each caller answered.
-async fn write(db: &Db, batch: Vec<Pending>, commits: &AtomicU64) {
+async fn write(db: &Db, batch: Vec<Pending>, commits: &AtomicU64, writes: &Writes) {
     let outcome = match insert_together(db, &batch).await {
         Ok(seqs) => Ok(seqs.into_iter().map(Ok).collect()),
         // The database refused the statement: one bad row fails it whole, so insert them one by one.
@@ -67,12 +69,14 @@ async fn write(db: &Db, batch: Vec<Pending>, commits: &AtomicU64) {
     match outcome {
         Ok(seqs) => {
             commits.fetch_add(1, Ordering::Relaxed);
+            writes.committed();
             for ((_, reply), seq) in batch.into_iter().zip(seqs) {
                 let _ = reply.send(seq);
             }
         }
         Err(e) => {
             tracing::warn!(error = %e, jobs = batch.len(), "jobs not stored");
+            writes.failed(batch.iter().map(|(j, _)| j.bytes()).min().unwrap_or(0));
             for (_, reply) in batch {
                 let _ = reply.send(Err(e.clone()));
             }
@@ -135,35 +139,29 @@ async fn insert_all(db: &Db, batch: &[Pending]) -> Result<Vec<Result<i64, StoreE
         Db::Postgres(_) => ("BEGIN", true),
     };
     on_pool!(db, pool => {
-        let mut conn = pool.acquire().await?;
-        sqlx::query(begin).execute(&mut *conn).await?;
-        let rows = async {
-            let mut seqs = Vec::with_capacity(batch.len());
-            for (j, _) in batch {
-                if savepoint {
-                    sqlx::query("SAVEPOINT job").execute(&mut *conn).await?;
-                }
-                let query = bind_job!(sqlx::query_scalar(sqlx::AssertSqlSafe(sql.clone())), j);
-                match query.fetch_one(&mut *conn).await {
-                    Ok(seq) => seqs.push(Ok(seq)),
-                    // A row the schema refuses fails alone; anything else ends the transaction.
-                    Err(e) if is_constraint(&e) => {
-                        if savepoint {
-                            sqlx::query("ROLLBACK TO SAVEPOINT job").execute(&mut *conn).await?;
-                        }
-                        seqs.push(Err(StoreError::Unavailable(e.to_string())));
-                    }
-                    Err(e) => return Err(e),
-                }
+        // Closed, not given back, unless it commits (see `held`).
+        let mut held = Held::acquire(pool).await?;
+        sqlx::query(begin).execute(held.conn()).await?;
+        let mut seqs = Vec::with_capacity(batch.len());
+        for (j, _) in batch {
+            if savepoint {
+                sqlx::query("SAVEPOINT job").execute(held.conn()).await?;
             }
-            sqlx::query("COMMIT").execute(&mut *conn).await?;
-            Ok(seqs)
+            let query = bind_job!(sqlx::query_scalar(sqlx::AssertSqlSafe(sql.clone())), j);
+            match query.fetch_all(held.conn()).await {
+                Ok(seq) => seqs.push(seq.first().copied().ok_or_else(|| StoreError::Unavailable("no seq returned".into()))),
+                // A row the schema refuses fails alone; anything else ends the transaction.
+                Err(e) if is_constraint(&e) => {
+                    if savepoint {
+                        sqlx::query("ROLLBACK TO SAVEPOINT job").execute(held.conn()).await?;
+                    }
+                    seqs.push(Err(StoreError::Unavailable(e.to_string())));
+                }
+                Err(e) => return Err(e.into()),
+            }
         }
-        .await;
-        if rows.is_err() {
-            // Undoes the transaction, if the database has not already.
-            let _ = sqlx::query("ROLLBACK").execute(&mut *conn).await;
-        }
-        Ok(rows?)
+        sqlx::query("COMMIT").execute(held.conn()).await?;
+        held.release();
+        Ok(seqs)
     })
 }

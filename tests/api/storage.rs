@@ -7,59 +7,24 @@
 //! refusal of a database URL this version cannot serve.
 
 use crate::helpers::request;
+use crate::small_disk::SmallDisk;
 use mechdyn::store::{NewJob, Options, Store, StoreError};
 use serde_json::Value;
-use std::process::{Child, Command, Stdio};
-use std::time::{Duration, Instant};
+use std::process::Command;
 
 /// One HTTP exchange with curl-like plainness: (status, body).
 fn http(port: u16, method: &str, path: &str, body: &str) -> (u16, String) {
     crate::crash::http(port, method, path, body).unwrap_or((0, String::new()))
 }
 
-/// Whether this machine lets the test make a mount namespace with a tmpfs.
-fn can_mount() -> bool {
-    Command::new("unshare")
-        .args(["-m", "sh", "-c", "mount -t tmpfs -o size=1m tmpfs /mnt"])
-        .stderr(Stdio::null())
-        .status()
-        .is_ok_and(|s| s.success())
-}
-
-/// The service on a 3 MiB tmpfs holding `ballast_kib` of ballast.
-fn start_on_small_disk(dir: &str, port: u16, ballast_kib: usize) -> Child {
-    let script = format!(
-        "mount -t tmpfs -o size=3m tmpfs {dir} && dd if=/dev/zero of={dir}/ballast bs=1k count={ballast_kib} \
-         2>/dev/null && exec {bin}",
-        bin = env!("CARGO_BIN_EXE_mechdyn")
-    );
-    let child = Command::new("unshare")
-        .args(["-m", "sh", "-c", &script])
-        .env("DATABASE_URL", format!("sqlite://{dir}/jobs.db"))
-        .env("MECHDYN_ADDR", format!("127.0.0.1:{port}"))
-        .env("RUST_LOG", "warn")
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
-    let started = Instant::now();
-    while http(port, "GET", "/healthz", "").0 != 200 {
-        assert!(started.elapsed() < Duration::from_secs(30), "the service did not start");
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    child
-}
-
 #[test]
 fn a_full_disk_is_answered_507_and_writes_resume_when_space_returns() {
-    if !can_mount() {
+    let Some(disk) = SmallDisk::new(3 << 10, 1024) else {
         eprintln!("skipped: this machine does not allow a tmpfs in a mount namespace (needs root)");
         return;
-    }
-    let dir = tempfile::tempdir().unwrap();
-    let dir = dir.path().display().to_string();
+    };
     let port = crate::crash::free_port();
-    let mut child = start_on_small_disk(&dir, port, 1024);
+    let mut child = disk.start(port, &[]);
     let mut body = request("p113_pulley");
     body["samples"] = 2000.into();
     let body = body.to_string();
@@ -89,9 +54,7 @@ fn a_full_disk_is_answered_507_and_writes_resume_when_space_returns() {
     };
     read_all(&stored);
     // Space returns: the ballast goes; the next POST is stored.
-    let pid = child.id().to_string();
-    let freed = Command::new("nsenter").args(["-t", &pid, "-m", "rm", &format!("{dir}/ballast")]).status().unwrap();
-    assert!(freed.success());
+    disk.free();
     let (status, text) = http(port, "POST", "/v1/flywheel", &body);
     assert_eq!(status, 201, "{text}");
     let job: Value = serde_json::from_str(&text).unwrap();

@@ -127,7 +127,9 @@ pub async fn class(
         }
         let cells = match graded(state, t, &l, (&params, &header), row, (tolerance, reveal), &mut seen).await {
             Ok(cells) => cells,
-            Err(e @ (ApiError::Saturated { .. } | ApiError::StorageFull | ApiError::Unavailable(_))) => return Err(e),
+            Err(e @ (ApiError::Saturated { .. } | ApiError::StorageFull(_) | ApiError::Unavailable(_))) => {
+                return Err(e);
+            }
             Err(ApiError::Invalid(errors))
                 if errors.iter().all(|f| f.pointer.as_deref().is_some_and(|p| p.starts_with("/answers/"))) =>
             {

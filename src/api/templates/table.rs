@@ -219,7 +219,9 @@ pub(super) async fn run(
                 let error = absent(&result, pointers, &found);
                 (found.into_iter().map(|v| v.cloned().unwrap_or(Value::Null)).collect(), Some(row.id), error)
             }
-            Err(e @ (ApiError::Saturated { .. } | ApiError::StorageFull | ApiError::Unavailable(_))) => return Err(e),
+            Err(e @ (ApiError::Saturated { .. } | ApiError::StorageFull(_) | ApiError::Unavailable(_))) => {
+                return Err(e);
+            }
             Err(e) => (vec![Value::Null; pointers.len()], None, Some(said(&e))),
         });
     }
