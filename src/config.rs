@@ -71,6 +71,9 @@ pub struct Cli {
     /// Largest size of the SQLite database, bytes; beyond it POSTs are answered 507 (default: the disk's free space).
     #[arg(long, env = "MECHDYN_MAX_DATABASE_BYTES", global = true)]
     pub max_database_bytes: Option<u64>,
+    /// When a SQLite commit is on disk: `full` (a job answered 201 survives a power loss: an fsync per commit, shared by the jobs committed together) or `normal` (it survives a crash of the process; a power loss may take the last commits).
+    #[arg(long, env = "MECHDYN_SQLITE_SYNCHRONOUS", default_value = "full", value_parser = ["full", "normal"], global = true)]
+    pub sqlite_synchronous: String,
     /// Seconds a start waits for a PostgreSQL server that does not answer yet (then the service stops).
     #[arg(long, env = "MECHDYN_DATABASE_WAIT_SECONDS", default_value_t = 30.0, value_parser = positive_seconds, global = true)]
     pub database_wait_seconds: f64,

@@ -66,7 +66,8 @@ async fn run(cli: &Cli) -> Result<(), String> {
     store::check_scheme(&cli.database).map_err(|e| e.to_string())?;
     let capacity = cli.capacity()?;
     let wait = std::time::Duration::from_secs_f64(cli.database_wait_seconds);
-    let options = store::Options { max_bytes: cli.max_database_bytes, wait };
+    let power_safe = cli.sqlite_synchronous == "full";
+    let options = store::Options { max_bytes: cli.max_database_bytes, wait, power_safe };
     let store = Store::open_with(&cli.database, &options)
         .await
         .map_err(|e| format!("database {shown}: {}", e.to_string().replace(&cli.database, &shown)))?;

@@ -1,7 +1,8 @@
 //! The two databases a store may use, opened, and their failures sorted.
 //!
 //! - **SQLite** (the default): one file of this service's own, in WAL mode,
-//!   with an optional size cap (`max_page_count`).
+//!   synced at every commit unless told otherwise (`synchronous`), with an
+//!   optional size cap (`max_page_count`).
 //! - **PostgreSQL**: a server that several replicas share. At start the
 //!   service waits for it (a container's database may start after it), and
 //!   the migrations run under sqlx's advisory lock, so replicas starting
@@ -78,7 +79,7 @@ async fn sqlite(url: &str, options: &Options) -> Result<SqlitePool, sqlx::Error>
     let mut connect = SqliteConnectOptions::from_str(url)?
         .create_if_missing(true)
         .journal_mode(SqliteJournalMode::Wal)
-        .synchronous(SqliteSynchronous::Normal)
+        .synchronous(if options.power_safe { SqliteSynchronous::Full } else { SqliteSynchronous::Normal })
         .busy_timeout(Duration::from_secs(10))
         .foreign_keys(true)
         // A checkpoint runs inside the commit that crosses the mark and holds up

@@ -212,11 +212,15 @@ pub struct Options {
     pub max_bytes: Option<u64>,
     /// How long a start waits for a PostgreSQL server that does not answer.
     pub wait: std::time::Duration,
+    /// Whether a SQLite commit survives a power loss (`synchronous=FULL`:
+    /// the log is synced at every commit) or only a crash of the process
+    /// (`NORMAL`: synced at checkpoints). PostgreSQL's server decides its own.
+    pub power_safe: bool,
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Self { max_bytes: None, wait: std::time::Duration::from_secs(30) }
+        Self { max_bytes: None, wait: std::time::Duration::from_secs(30), power_safe: true }
     }
 }
 
@@ -360,6 +364,16 @@ impl Store {
     /// stopping; the tests' database gone away).
     pub async fn close(&self) {
         on_pool!(&self.db, pool => pool.close().await);
+    }
+
+    /// When a SQLite commit reaches the disk, as SQLite reports it on a
+    /// connection of the pool: 2 (FULL, at every commit) or 1 (NORMAL, at
+    /// checkpoints). PostgreSQL's server has its own settings.
+    pub async fn synchronous(&self) -> Result<i64, StoreError> {
+        match &self.db {
+            Db::Sqlite(pool) => Ok(sqlx::query_scalar("PRAGMA synchronous").fetch_one(pool).await?),
+            Db::Postgres(_) => Err(StoreError::Unavailable("synchronous is SQLite's".into())),
+        }
     }
 
     /// SQLite's own check of the file (`PRAGMA integrity_check`): "ok" or

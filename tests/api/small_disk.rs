@@ -62,7 +62,7 @@ impl SmallDisk {
 
     /// The service on this disk (its database `jobs.db` there), listening
     /// on `port`, with more environment variables; waits for /healthz.
-    pub fn start(&self, port: u16, env: &[(&str, &str)]) -> Child {
+    pub fn start(&self, port: u16, env: &[(&str, &str)]) -> Running {
         let pid = self.holder.id().to_string();
         let child = Command::new("nsenter")
             .args(["-t", &pid, "-m", env!("CARGO_BIN_EXE_mechdyn")])
@@ -79,7 +79,18 @@ impl SmallDisk {
             assert!(started.elapsed() < Duration::from_secs(30), "the service did not start");
             std::thread::sleep(Duration::from_millis(20));
         }
-        child
+        Running(child)
+    }
+}
+
+/// The service started on a small disk, killed (SIGKILL) when dropped, so
+/// that a test failing half-way leaves no process behind.
+pub struct Running(Child);
+
+impl Drop for Running {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
     }
 }
 

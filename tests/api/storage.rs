@@ -24,7 +24,7 @@ fn a_full_disk_is_answered_507_and_writes_resume_when_space_returns() {
         return;
     };
     let port = crate::crash::free_port();
-    let mut child = disk.start(port, &[]);
+    let _child = disk.start(port, &[]);
     let mut body = request("p113_pulley");
     body["samples"] = 2000.into();
     let body = body.to_string();
@@ -61,8 +61,6 @@ fn a_full_disk_is_answered_507_and_writes_resume_when_space_returns() {
     stored.push((job["id"].as_str().unwrap().to_string(), job["result"].clone()));
     read_all(&stored);
     eprintln!("{} jobs stored before the disk was full, all read back; writes resumed", stored.len() - 1);
-    child.kill().unwrap();
-    child.wait().unwrap();
 }
 
 fn job(k: usize, bytes: usize) -> NewJob {
@@ -160,4 +158,15 @@ fn an_unreachable_postgres_server_stops_the_service_at_start_without_its_passwor
     let capped = run(&[("MECHDYN_MAX_DATABASE_BYTES", "1000000")]);
     assert!(capped.contains("--max-database-bytes") && capped.contains("SQLite"), "{capped}");
     assert!(!capped.contains("s3cret"), "{capped}");
+}
+
+/// A job answered 201 is on disk: SQLite syncs its log at every commit
+/// (`synchronous=FULL`, 2) unless the operator asks for less (`NORMAL`, 1).
+#[tokio::test]
+async fn commits_are_synced_to_disk_unless_told_otherwise() {
+    let dir = tempfile::tempdir().unwrap();
+    let url = format!("sqlite://{}/jobs.db", dir.path().display());
+    assert_eq!(Store::open(&url).await.unwrap().synchronous().await.unwrap(), 2, "FULL by default");
+    let fast = Options { power_safe: false, ..Options::default() };
+    assert_eq!(Store::open_with(&url, &fast).await.unwrap().synchronous().await.unwrap(), 1, "NORMAL when asked");
 }
