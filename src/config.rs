@@ -2,6 +2,7 @@
 
 use crate::api::Capacity;
 use crate::api::limits::{Limits, MAX_EXPRESSION_DEPTH};
+use crate::api::pace::Pace;
 use crate::api::retention::Policy;
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -68,6 +69,15 @@ pub struct Cli {
     /// Bytes of answers carrying jobs held in memory at once (at least the largest result plus the largest body).
     #[arg(long, env = "MECHDYN_ANSWER_MEMORY_BYTES", default_value_t = Capacity::default().memory, value_parser = at_least_one, global = true)]
     pub answer_memory_bytes: usize,
+    /// Bytes of request bodies being received at once (a POST's announced length, or the body limit); beyond them a POST waits, then is answered 503.
+    #[arg(long, env = "MECHDYN_BODY_MEMORY_BYTES", default_value_t = Capacity::default().bodies, value_parser = at_least_one, global = true)]
+    pub body_memory_bytes: usize,
+    /// The slowest a client may send a body or take an answer, bytes per second (after the grace); a slower one gets 408, or its connection closed.
+    #[arg(long, env = "MECHDYN_CLIENT_MIN_RATE", default_value_t = Pace::default().rate, value_parser = clap::value_parser!(u64).range(1..), global = true)]
+    pub client_min_rate: u64,
+    /// Seconds a client may keep the service waiting before the minimal rate applies.
+    #[arg(long, env = "MECHDYN_CLIENT_GRACE_SECONDS", default_value_t = Pace::default().grace.as_secs_f64(), value_parser = positive_seconds, global = true)]
+    pub client_grace_seconds: f64,
     /// Largest size of the SQLite database, bytes; beyond it POSTs are answered 507 (default: the disk's free space).
     #[arg(long, env = "MECHDYN_MAX_DATABASE_BYTES", global = true)]
     pub max_database_bytes: Option<u64>,
@@ -127,8 +137,14 @@ impl Cli {
             queue: self.queue,
             memory: self.answer_memory_bytes,
             queue_wait: Duration::from_secs_f64(self.queue_seconds),
+            bodies: self.body_memory_bytes,
             ..Capacity::default()
         })
+    }
+
+    /// The pace a client must keep sending a body and taking an answer.
+    pub fn pace(&self) -> Pace {
+        Pace { rate: self.client_min_rate, grace: Duration::from_secs_f64(self.client_grace_seconds) }
     }
 }
 

@@ -78,12 +78,15 @@ async fn run(cli: &Cli) -> Result<(), String> {
         body_limit: cli.max_body_bytes,
         api_token: cli.api_token.clone().filter(|t| !t.is_empty()),
         cors_origins: cli.cors_origins.iter().map(|o| o.trim().to_string()).filter(|o| !o.is_empty()).collect(),
+        pace: cli.pace(),
     };
     api::retention::spawn(state.clone(), cli.retention());
     let runner = api::deferred::spawn(state.clone());
     let app = api::router(state, &settings);
     let listener = tokio::net::TcpListener::bind(&cli.addr).await.map_err(|e| format!("bind {}: {e}", cli.addr))?;
     let local = listener.local_addr().map_err(|e| e.to_string())?;
+    // Every connection takes its answers at the client's minimal pace, or is closed.
+    let listener = api::pace::PacedListener::new(listener, cli.pace());
     tracing::info!(addr = %local, database = %shown, "mechdyn listening; docs at http://{local}/docs");
     let stopping = async move {
         shutdown_signal().await;

@@ -1,9 +1,14 @@
 //! Admission control: what bounds the service's memory under any load.
 //!
-//! - **Slots** (`jobs + queue`): every POST takes one before its body is
-//!   read, and keeps it until its answer has been sent. With none free the
-//!   POST is answered 503 at once, with `Retry-After`. This bounds the
-//!   request bodies held (slots × body limit).
+//! - **Bodies** (`bodies` bytes): a POST's body, while it is read, holds
+//!   its announced length (the body limit when it has none), waiting up to
+//!   `wait` for it (then 503). Bodies are read at a minimal pace
+//!   ([`super::pace`]), so a client that trickles one holds its share for
+//!   seconds, not for ever, and holds no slot meanwhile.
+//! - **Slots** (`jobs + queue`): every POST takes one once its body has
+//!   been read, and keeps it until its answer has been sent. With none free
+//!   the POST is answered 503 at once, with `Retry-After`. This bounds the
+//!   whole bodies held (slots × body limit).
 //! - **Compute** (`jobs`, default the number of cores): a job computes, and
 //!   its result is serialised, only while it holds one; the others wait in
 //!   the queue, at most `queue_wait` (then 503). This bounds the engine's
@@ -50,6 +55,8 @@ pub struct Capacity {
     pub queue_wait: Duration,
     /// Jobs computing at once on the async workers.
     pub inline: usize,
+    /// Bytes of request bodies being read at once.
+    pub bodies: usize,
 }
 
 impl Capacity {
@@ -73,6 +80,7 @@ impl Default for Capacity {
             memory: 128 << 20,
             wait: Duration::from_secs(10),
             queue_wait: Duration::from_secs(30),
+            bodies: 64 << 20,
         }
     }
 }
@@ -80,6 +88,7 @@ impl Default for Capacity {
 #[derive(Clone)]
 pub struct Admission {
     slots: Arc<Semaphore>,
+    bodies: Arc<Semaphore>,
     compute: Arc<Semaphore>,
     memory: Arc<Semaphore>,
     capacity: Capacity,
@@ -102,6 +111,7 @@ impl Admission {
         let inline = capacity.inline.min(jobs);
         Self {
             slots: Arc::new(Semaphore::new(jobs + capacity.queue)),
+            bodies: Arc::new(Semaphore::new(capacity.bodies.clamp(1, Semaphore::MAX_PERMITS))),
             compute: Arc::new(Semaphore::new(jobs)),
             memory: Arc::new(Semaphore::new(capacity.memory.clamp(1, Semaphore::MAX_PERMITS))),
             capacity,
@@ -132,11 +142,28 @@ impl Admission {
     /// Reserves `bytes` of answer memory (at most the whole budget), waiting
     /// up to `wait` for answers being sent to release theirs.
     pub async fn memory(&self, bytes: usize) -> Result<OwnedSemaphorePermit, ApiError> {
-        let n = u32::try_from(bytes.clamp(1, self.capacity.memory.max(1))).unwrap_or(u32::MAX);
-        let reserve = self.memory.clone().acquire_many_owned(n);
-        match tokio::time::timeout(self.capacity.wait, reserve).await {
+        let why = "too many large answers are being sent";
+        self.reserve(&self.memory, bytes, self.capacity.memory, why).await
+    }
+
+    /// Reserves `bytes` for a request body being read (at most the whole
+    /// budget), waiting up to `wait` for bodies being read to finish.
+    pub async fn body(&self, bytes: usize) -> Result<OwnedSemaphorePermit, ApiError> {
+        self.reserve(&self.bodies, bytes, self.capacity.bodies, "too many request bodies are being received").await
+    }
+
+    /// `bytes` of `budget` (a semaphore of `total` bytes), waiting up to `wait`.
+    async fn reserve(
+        &self,
+        budget: &Arc<Semaphore>,
+        bytes: usize,
+        total: usize,
+        why: &str,
+    ) -> Result<OwnedSemaphorePermit, ApiError> {
+        let n = u32::try_from(bytes.clamp(1, total.max(1))).unwrap_or(u32::MAX);
+        match tokio::time::timeout(self.capacity.wait, budget.clone().acquire_many_owned(n)).await {
             Ok(Ok(permit)) => Ok(permit),
-            _ => Err(self.saturated("too many large answers are being sent")),
+            _ => Err(self.saturated(why)),
         }
     }
 

@@ -9,15 +9,22 @@
 //! - [`drain`]: reads and discards what a client is still sending before a
 //!   refusal (413, 503) is answered, so that clients that write their whole
 //!   body before reading (Python's urllib) read the answer instead of a
-//!   broken pipe. Bounded in bytes and time.
+//!   broken pipe. Bounded in bytes and time. [`drain_unread`] does it for
+//!   every answer given before its request's body was read (401, 404, 405,
+//!   415, a query's 400).
 
 use axum::body::Body;
+use axum::extract::Request;
+use axum::http::header;
+use axum::middleware::Next;
+use axum::response::Response;
 use bytes::Bytes;
 use http_body::{Frame, SizeHint};
 use http_body_util::BodyExt;
 use std::collections::VecDeque;
 use std::convert::Infallible;
 use std::pin::Pin;
+use std::sync::{Arc, Mutex};
 use std::task::{Context, Poll};
 use std::time::Duration;
 use tokio::sync::OwnedSemaphorePermit;
@@ -124,4 +131,53 @@ pub async fn drain(mut body: Body, announced: Option<u64>) {
         }
     };
     let _ = tokio::time::timeout(DRAIN_TIME, discard).await;
+}
+
+/// A request body the middleware can still reach once the handler has
+/// dropped its own handle ([`drain_unread`]).
+struct Shared(Arc<Mutex<Option<Body>>>);
+
+impl http_body::Body for Shared {
+    type Data = Bytes;
+    type Error = axum::Error;
+
+    fn poll_frame(self: Pin<&mut Self>, cx: &mut Context<'_>) -> Poll<Option<Result<Frame<Bytes>, axum::Error>>> {
+        match self.0.lock().unwrap_or_else(|e| e.into_inner()).as_mut() {
+            Some(body) => Pin::new(body).poll_frame(cx),
+            None => Poll::Ready(None),
+        }
+    }
+
+    fn is_end_stream(&self) -> bool {
+        self.0.lock().unwrap_or_else(|e| e.into_inner()).as_ref().is_none_or(http_body::Body::is_end_stream)
+    }
+
+    fn size_hint(&self) -> SizeHint {
+        self.0
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .as_ref()
+            .map_or_else(SizeHint::default, http_body::Body::size_hint)
+    }
+}
+
+/// The middleware: a request answered before its body was read whole has
+/// the rest drained ([`drain`]) before its answer is sent, unless the
+/// answer closes the connection.
+pub async fn drain_unread(req: Request, next: Next) -> Response {
+    if http_body::Body::is_end_stream(req.body()) {
+        return next.run(req).await;
+    }
+    let (parts, body) = req.into_parts();
+    let kept = Arc::new(Mutex::new(Some(body)));
+    let response = next.run(Request::from_parts(parts, Body::new(Shared(kept.clone())))).await;
+    let rest = kept.lock().unwrap_or_else(|e| e.into_inner()).take();
+    // An answer that closes the connection (a body too slow to wait for) is sent at once.
+    let closing =
+        response.headers().get(header::CONNECTION).is_some_and(|v| v.as_bytes().eq_ignore_ascii_case(b"close"));
+    if let Some(body) = rest.filter(|b| !closing && !http_body::Body::is_end_stream(b)) {
+        let left = http_body::Body::size_hint(&body).exact();
+        drain(body, left).await;
+    }
+    response
 }

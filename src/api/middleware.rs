@@ -2,23 +2,26 @@
 //! a random UUID unless the client sent one, echoed on the answer), the
 //! request's log span carrying it, the request counted and timed by its
 //! route ([`super::metrics`]), CORS for the origins configured, panics
-//! caught and answered 500 problem+json without internals, the optional
-//! bearer token every POST and DELETE must carry, admission control (a slot per POST,
-//! 503 when none is free), a POST's `?label=` ([`super::label`]), its
+//! caught and answered 500 problem+json without internals (and every answer
+//! given before its request's body was read drains that body first), the optional
+//! bearer token every POST and DELETE must carry, admission control (a POST's
+//! body read whole at the client's pace, then a slot, 503 when none is free), a POST's `?label=` ([`super::label`]), its
 //! `Idempotency-Key` ([`super::idempotency`]), and the body limit.
 
 use super::AppState;
 use super::admission::Admission;
-use super::body::{drain, guarded};
+use super::body::{drain, drain_unread, guarded};
 use super::idempotency::{InFlight, idempotent};
 use super::json::BodyLimit;
+use super::pace::{Pace, read_body};
 use super::problem::ApiError;
 use axum::Router;
 use axum::extract::{DefaultBodyLimit, Request};
-use axum::http::{HeaderName, HeaderValue, Method, header};
+use axum::http::{HeaderName, HeaderValue, Method, Version, header};
 use axum::middleware::{Next, from_fn};
 use axum::response::{IntoResponse, Response};
 use axum::{Extension, body::Body};
+use http_body::Body as _;
 use std::any::Any;
 use std::sync::Arc;
 use tower_http::catch_panic::CatchPanicLayer;
@@ -39,11 +42,13 @@ pub struct Settings {
     pub api_token: Option<String>,
     /// Origins allowed by CORS (`*` for any); none: no CORS headers.
     pub cors_origins: Vec<String>,
+    /// The pace a request's body must keep ([`super::pace`]).
+    pub pace: Pace,
 }
 
 impl Default for Settings {
     fn default() -> Self {
-        Self { body_limit: super::DEFAULT_BODY_LIMIT, api_token: None, cors_origins: Vec::new() }
+        Self { body_limit: super::DEFAULT_BODY_LIMIT, api_token: None, cors_origins: Vec::new(), pace: Pace::default() }
     }
 }
 
@@ -57,16 +62,17 @@ impl Settings {
 /// `routes` with the service's middleware.
 pub fn layered(routes: Router, s: &Settings, state: AppState) -> Router {
     let token: Option<Arc<str>> = s.api_token.as_deref().map(Arc::from);
-    let (admission, limit, flight) = (state.admission.clone(), s.body_limit, InFlight::default());
+    let (admission, limit, flight, pace) = (state.admission.clone(), s.body_limit, InFlight::default(), s.pace);
     let metrics = state.metrics.clone();
     let routes = routes
         .layer(DefaultBodyLimit::max(s.body_limit))
         .layer(Extension(BodyLimit(s.body_limit)))
         .layer(from_fn(move |req, next| idempotent(state.clone(), flight.clone(), limit, req, next)))
         .layer(from_fn(super::label::labelled))
-        .layer(from_fn(move |req, next| admit(admission.clone(), req, next)))
+        .layer(from_fn(move |req, next| admit(admission.clone(), (limit, pace), req, next)))
         .layer(from_fn(move |req, next| require_token(token.clone(), req, next)))
-        .layer(CatchPanicLayer::custom(panic_response));
+        .layer(CatchPanicLayer::custom(panic_response))
+        .layer(from_fn(drain_unread));
     let routes = match cors(&s.cors_origins) {
         Some(cors) => routes.layer(cors),
         None => routes,
@@ -142,20 +148,41 @@ fn changes(method: &Method) -> bool {
     !matches!(*method, Method::GET | Method::HEAD | Method::OPTIONS)
 }
 
-/// A POST takes a slot of admission control before its body is read and
-/// keeps it until its answer has been sent; with none free it is answered
-/// 503 with `Retry-After` (after its body has been read and discarded, so
-/// the client reads the answer).
-async fn admit(admission: Admission, req: Request, next: Next) -> Response {
+/// A POST's body is read whole first, within the body limit (413) and at
+/// the client's pace (408), holding its share of the bodies' memory
+/// meanwhile; then the POST takes a slot of admission control and keeps it
+/// until its answer has been sent, or is answered 503 with `Retry-After`.
+/// A slow body never holds a slot.
+async fn admit(admission: Admission, (limit, pace): (usize, Pace), req: Request, next: Next) -> Response {
     if req.method() != Method::POST {
         return next.run(req).await;
     }
+    let (parts, body) = req.into_parts();
+    // HTTP/1.0 has no chunked coding: without a length the body's end is the connection's.
+    if parts.version == Version::HTTP_10 && !parts.headers.contains_key(header::CONTENT_LENGTH) {
+        return ApiError::LengthRequired.into_response();
+    }
+    let announced = body.size_hint().exact();
+    if announced.is_some_and(|n| n > limit as u64) {
+        drain(body, announced).await;
+        return ApiError::PayloadTooLarge(limit).into_response();
+    }
+    let reading = match admission.body(announced.map_or(limit, |n| n as usize)).await {
+        Ok(r) => r,
+        Err(e) => {
+            drain(body, announced).await;
+            return e.into_response();
+        }
+    };
+    let bytes = match read_body(body, limit, pace).await {
+        Ok(b) => b,
+        Err(e) => return e.into_response(),
+    };
+    drop(reading);
     let Some(slot) = admission.enter() else {
-        let announced = req.headers().get(header::CONTENT_LENGTH).and_then(|v| v.to_str().ok()?.parse().ok());
-        drain(req.into_body(), announced).await;
         return admission.saturated("every job slot and queue place is taken").into_response();
     };
-    next.run(req).await.map(|b| guarded(b, slot))
+    next.run(Request::from_parts(parts, Body::from(bytes))).await.map(|b| guarded(b, slot))
 }
 
 /// `Authorization: Bearer <token>`, compared in time independent of where it differs.

@@ -29,6 +29,7 @@ pub mod limits;
 pub mod mechanism;
 pub mod metrics;
 pub mod middleware;
+pub mod pace;
 pub mod pages;
 pub mod parts;
 pub mod plots;

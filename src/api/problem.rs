@@ -204,6 +204,12 @@ pub enum ApiError {
     Unavailable(String),
     #[error("this service needs \"Authorization: Bearer <token>\" on every POST")]
     Unauthorized,
+    /// A request's body fell behind the pace a client must keep ([`super::pace`]).
+    #[error("{0}")]
+    RequestTimeout(String),
+    /// An HTTP/1.0 POST with no `Content-Length`.
+    #[error("an HTTP/1.0 POST needs a Content-Length header: its body's end cannot be told otherwise")]
+    LengthRequired,
     /// Logged; the client sees no details.
     #[error("internal error; the x-request-id header of this answer finds it in the service's log")]
     Internal(String),
@@ -246,6 +252,10 @@ impl ApiError {
                 (StatusCode::SERVICE_UNAVAILABLE, "database-unavailable", "The database is unavailable")
             }
             Self::Unauthorized => (StatusCode::UNAUTHORIZED, "unauthorized", "Missing or wrong bearer token"),
+            Self::RequestTimeout(_) => {
+                (StatusCode::REQUEST_TIMEOUT, "request-timeout", "The request's body did not arrive in time")
+            }
+            Self::LengthRequired => (StatusCode::LENGTH_REQUIRED, "length-required", "The body's length is required"),
             Self::Internal(_) => (StatusCode::INTERNAL_SERVER_ERROR, "internal", "Internal server error"),
         }
     }
@@ -337,6 +347,9 @@ impl IntoResponse for ApiError {
             }
             Self::InProgress(_) => {
                 headers.insert(header::RETRY_AFTER, header::HeaderValue::from_static("1"));
+            }
+            Self::RequestTimeout(_) => {
+                headers.insert(header::CONNECTION, header::HeaderValue::from_static("close"));
             }
             Self::NotDone { status, .. } if status != crate::store::Status::Failed => {
                 headers.insert(header::RETRY_AFTER, header::HeaderValue::from_static("1"));

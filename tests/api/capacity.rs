@@ -8,7 +8,9 @@ use crate::helpers::{TestApp, request};
 use axum::body::Body;
 use axum::http::{Request, StatusCode};
 use http_body_util::BodyExt;
-use mechdyn::api::{Admission, Capacity, Limits};
+use mechdyn::api::pace::Pace;
+use mechdyn::api::{Admission, AppState, Capacity, Limits, Settings, router};
+use mechdyn::store::Store;
 use serde_json::Value;
 use std::time::Duration;
 use tower::ServiceExt;
@@ -70,24 +72,16 @@ fn post(path: &str, body: Body) -> Request<Body> {
 }
 
 /// One job computing and no queue: while a POST holds the only slot (its
-/// body still arriving), another is answered 503 problem+json with
-/// Retry-After; once the first is done, POSTs are served again.
+/// answer not yet taken), another is answered 503 problem+json with
+/// Retry-After; once the first answer is gone, POSTs are served again.
 #[tokio::test]
 async fn a_post_beyond_the_jobs_and_the_queue_is_answered_503_with_retry_after() {
     let admission = Admission::new(Capacity { jobs: 1, queue: 0, ..Capacity::default() });
     let app = TestApp::new().await.reopened(|s| mechdyn::api::AppState { admission, ..s }).await;
-    let (mut sender, slow) = http_body_util::channel::Channel::<bytes::Bytes>::new(1);
-    let first = tokio::spawn(app.app.clone().oneshot(post("/v1/flywheel", Body::new(slow))));
-    tokio::task::yield_now().await;
-    let mut second = app.post("/v1/flywheel", &request("p113_pulley")).await;
-    for _ in 0..100 {
-        if second.status == StatusCode::SERVICE_UNAVAILABLE {
-            break;
-        }
-        // The first request had not yet taken its slot: try again.
-        tokio::time::sleep(Duration::from_millis(10)).await;
-        second = app.post("/v1/flywheel", &request("p113_pulley")).await;
-    }
+    let body = || Body::from(request("p113_pulley").to_string());
+    let first = app.app.clone().oneshot(post("/v1/flywheel", body())).await.unwrap();
+    assert_eq!(first.status(), StatusCode::CREATED);
+    let second = app.post("/v1/flywheel", &request("p113_pulley")).await;
     assert_eq!(second.status, StatusCode::SERVICE_UNAVAILABLE, "{}", second.text);
     assert_eq!(second.content_type, "application/problem+json");
     assert_eq!(second.json()["type"], "/problems/saturated", "{}", second.text);
@@ -101,11 +95,37 @@ async fn a_post_beyond_the_jobs_and_the_queue_is_answered_503_with_retry_after()
     );
     let refused = r#"mechdyn_http_requests_total{method="POST",route="/v1/flywheel",status="503"}"#;
     assert!(metrics.lines().any(|l| l.starts_with(refused)), "{metrics}");
-    sender.send_data(request("p113_pulley").to_string().into()).await.unwrap();
-    drop(sender);
-    assert_eq!(first.await.unwrap().unwrap().status(), StatusCode::CREATED);
+    drop(first);
     assert_eq!(app.post("/v1/flywheel", &request("p113_pulley")).await.status, StatusCode::CREATED);
     assert!(app.get("/metrics").await.text.contains("\nmechdyn_queue_depth 0\n"));
+}
+
+/// A body still arriving holds no slot: with one slot and no queue, a POST
+/// whose body trickles does not stop another from being served; once it
+/// falls behind the pace (here 100 ms of grace, then 1000 bytes/s) it is
+/// answered 408 with the connection closed, saying how much arrived.
+#[tokio::test]
+async fn a_body_still_arriving_holds_no_slot_and_is_cut_off_behind_the_pace() {
+    let admission = Admission::new(Capacity { jobs: 1, queue: 0, ..Capacity::default() });
+    let pace = Pace { rate: 1000, grace: Duration::from_millis(100) };
+    let dir = tempfile::tempdir().unwrap();
+    let store = Store::open(&format!("sqlite://{}/jobs.db", dir.path().display())).await.unwrap();
+    let state = AppState { admission, ..AppState::new(store) };
+    let app = TestApp::serving(router(state, &Settings { pace, ..Settings::default() }), dir);
+    let (mut sender, slow) = http_body_util::channel::Channel::<bytes::Bytes>::new(1);
+    let body = request("p113_pulley").to_string();
+    let first = tokio::spawn(app.app.clone().oneshot(post("/v1/flywheel", Body::new(slow))));
+    sender.send_data(body[..10].to_string().into()).await.unwrap();
+    let second = app.post("/v1/flywheel", &request("p113_pulley")).await;
+    assert_eq!(second.status, StatusCode::CREATED, "{}", second.text);
+    let started = std::time::Instant::now();
+    let timed_out = first.await.unwrap().unwrap();
+    assert_eq!(timed_out.status(), StatusCode::REQUEST_TIMEOUT);
+    assert_eq!(timed_out.headers()["connection"], "close");
+    // 100 ms of grace, and 10 ms more for the 10 bytes at 1000 bytes/s; not the 10 s a drain would take.
+    assert!(started.elapsed() < Duration::from_secs(5), "{:?}", started.elapsed());
+    let text = String::from_utf8(timed_out.into_body().collect().await.unwrap().to_bytes().to_vec()).unwrap();
+    assert!(text.contains("/problems/request-timeout") && text.contains("10 bytes in "), "{text}");
 }
 
 /// An answer holds its memory until it has been sent: with room for one

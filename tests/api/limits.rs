@@ -123,15 +123,21 @@ async fn each_configured_limit_is_enforced_at_its_field() {
     }
 }
 
-/// What Python's urllib sends and then reads, through the real binary.
-fn urllib_post(port: u16, path: &str, megabytes: usize) -> String {
+/// What Python's urllib sends (`method`, a JSON array of about `kib`
+/// KiB, more `headers` as a Python dict's items) and then reads, through
+/// the real binary, five times over (a connection closed unread loses the
+/// answer only now and then): each answer's status, content type and body,
+/// or its error, a line each.
+fn urllib(port: u16, method: &str, path: &str, kib: usize, headers: &str) -> String {
     let script = format!(
         "import urllib.request, urllib.error\n\
-         body = b'[' + b'0,' * ({megabytes} << 19) + b'0]'\n\
-         req = urllib.request.Request('http://127.0.0.1:{port}{path}', data=body, \
-         headers={{'Content-Type': 'application/json'}})\n\
-         try:\n    print(urllib.request.urlopen(req).status)\n\
-         except urllib.error.HTTPError as e:\n    print(e.code, e.headers['Content-Type'], e.read().decode())\n"
+         body = b'[' + b'0,' * ({kib} << 9) + b'0]'\n\
+         for _ in range(5):\n\
+         \x20   req = urllib.request.Request('http://127.0.0.1:{port}{path}', data=body, method='{method}', \
+         headers={{'Content-Type': 'application/json', {headers}}})\n\
+         \x20   try:\n        print(urllib.request.urlopen(req).status)\n\
+         \x20   except urllib.error.HTTPError as e:\n        print(e.code, e.headers['Content-Type'], e.read().decode())\n\
+         \x20   except OSError as e:\n        print('error', e)\n"
     );
     let out = std::process::Command::new("python3").args(["-c", &script]).output().expect("python3 runs");
     format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr))
@@ -145,11 +151,44 @@ fn a_client_that_sends_its_whole_body_first_reads_the_413() {
     let dir = tempfile::tempdir().unwrap();
     let port = crate::crash::free_port();
     let mut child = crate::crash::start(&format!("sqlite://{}/jobs.db", dir.path().display()), port);
-    let said = urllib_post(port, "/v1/flywheel", 5);
+    let said = urllib(port, "POST", "/v1/flywheel", 5 << 10, "");
     child.kill().unwrap();
     child.wait().unwrap();
-    assert!(said.starts_with("413 application/problem+json"), "{said}");
-    assert!(said.contains("/problems/payload-too-large"), "{said}");
+    for line in said.lines() {
+        assert!(line.starts_with("413 application/problem+json"), "{said}");
+        assert!(line.contains("/problems/payload-too-large"), "{said}");
+    }
+}
+
+/// Every answer given before a body was read (a missing token, no such
+/// route or method, a wrong content type, a bad query) reaches a client
+/// that writes its whole body (1 MB, near the limit; 3 MB for the token) first: the service drains
+/// the body (before, it closed the connection and urllib saw a broken pipe).
+#[test]
+fn a_client_that_sends_its_whole_body_first_reads_every_early_answer() {
+    let dir = tempfile::tempdir().unwrap();
+    let port = crate::crash::free_port();
+    let db = format!("sqlite://{}/jobs.db", dir.path().display());
+    let mut child = crate::crash::start_with(&db, port, &[("MECHDYN_API_TOKEN", "t0ken")]);
+    let token = "'Authorization': 'Bearer t0ken'";
+    let cases = [
+        ("POST", "/v1/flywheel", 3 << 10, "", "401", "/problems/unauthorized"),
+        ("POST", "/v1/no-such-kind", 1000, token, "404", "/problems/not-found"),
+        ("PUT", "/v1/flywheel", 1000, token, "405", "/problems/method-not-allowed"),
+        ("POST", "/v1/jobs/5e1b7c43-0d4f-4f7e-9a7e-1b8d2f3c4a5b", 1000, token, "405", "/problems/method-not-allowed"),
+        ("POST", "/v1/flywheel", 1000, &format!("{token}, 'Content-Type': 'text/plain'"), "415", "media-type"),
+        ("POST", "/v1/flywheel?label=", 1000, token, "400", "/problems/invalid-query"),
+    ];
+    let said: Vec<String> = cases.iter().map(|(m, path, kib, h, ..)| urllib(port, m, path, *kib, h)).collect();
+    child.kill().unwrap();
+    child.wait().unwrap();
+    for ((method, path, _, _, status, kind), said) in cases.iter().zip(&said) {
+        assert_eq!(said.lines().count(), 5, "{method} {path}: {said}");
+        for line in said.lines() {
+            assert!(line.starts_with(&format!("{status} application/problem+json")), "{method} {path}: {line}");
+            assert!(line.contains(kind), "{method} {path}: {line}");
+        }
+    }
 }
 
 /// A count of steps far beyond the limit (found by the fuzz test: the

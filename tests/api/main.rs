@@ -36,6 +36,7 @@ mod robot_arm;
 mod rotor;
 mod security;
 mod seed_exams;
+mod slow_clients;
 mod small_disk;
 mod stiff;
 mod storage;
