@@ -14,7 +14,7 @@ use super::body::{drain, drain_unread, guarded};
 use super::idempotency::{InFlight, idempotent};
 use super::json::BodyLimit;
 use super::pace::{Pace, read_body};
-use super::problem::ApiError;
+use super::problem::{ApiError, FieldError};
 use axum::Router;
 use axum::extract::{DefaultBodyLimit, Request};
 use axum::http::{HeaderName, HeaderValue, Method, Version, header};
@@ -71,6 +71,7 @@ pub fn layered(routes: Router, s: &Settings, state: AppState) -> Router {
         .layer(from_fn(super::label::labelled))
         .layer(from_fn(move |req, next| admit(admission.clone(), (limit, pace), req, next)))
         .layer(from_fn(move |req, next| require_token(token.clone(), req, next)))
+        .layer(from_fn(single_parameters))
         .layer(CatchPanicLayer::custom(panic_response))
         .layer(from_fn(drain_unread));
     let routes = match cors(&s.cors_origins) {
@@ -185,11 +186,32 @@ async fn admit(admission: Admission, (limit, pace): (usize, Pace), req: Request,
     next.run(Request::from_parts(parts, Body::from(bytes))).await.map(|b| guarded(b, slot))
 }
 
+/// A query that gives a parameter twice (`F=1&F=2`) is a 400 naming it:
+/// the routes read each parameter once, and taking the last silently would
+/// answer for another question than the one asked.
+async fn single_parameters(req: Request, next: Next) -> Response {
+    let pairs: Vec<(String, String)> = serde_urlencoded::from_str(req.uri().query().unwrap_or("")).unwrap_or_default();
+    let mut seen = std::collections::HashSet::new();
+    let twice: std::collections::BTreeSet<&str> =
+        pairs.iter().map(|(k, _)| k.as_str()).filter(|k| !seen.insert(*k)).collect();
+    if twice.is_empty() {
+        return next.run(req).await;
+    }
+    let error = |name: &str| FieldError::parameter(name, "is given more than once: give it once");
+    ApiError::BadQuery(twice.into_iter().map(error).collect()).into_response()
+}
+
 /// `Authorization: Bearer <token>`, compared in time independent of where it differs.
+/// The scheme's name is case-insensitive and may be followed by several
+/// spaces (RFC 9110, 11.1 and 11.4).
 fn bearer_matches(value: Option<&HeaderValue>, token: &str) -> bool {
-    let Some(given) = value.and_then(|v| v.to_str().ok()).and_then(|v| v.strip_prefix("Bearer ")) else {
+    let Some((scheme, given)) = value.and_then(|v| v.to_str().ok()).and_then(|v| v.split_once(' ')) else {
         return false;
     };
+    if !scheme.eq_ignore_ascii_case("bearer") {
+        return false;
+    }
+    let given = given.trim_start_matches(' ');
     given.len() == token.len() && given.bytes().zip(token.bytes()).fold(0u8, |acc, (a, b)| acc | (a ^ b)) == 0
 }
 
@@ -204,6 +226,11 @@ mod tests {
         assert!(!bearer_matches(Some(&v("Bearer s3creT")), "s3cret"));
         assert!(!bearer_matches(Some(&v("Bearer s3cret2")), "s3cret"));
         assert!(!bearer_matches(Some(&v("Basic s3cret")), "s3cret"));
+        // The scheme in any case, and more than one space after it (RFC 9110).
+        assert!(bearer_matches(Some(&v("bearer s3cret")), "s3cret"));
+        assert!(bearer_matches(Some(&v("BEARER  s3cret")), "s3cret"));
+        assert!(!bearer_matches(Some(&v("Bearers3cret")), "s3cret"));
+        assert!(!bearer_matches(Some(&v("Bearer")), "s3cret"));
         assert!(!bearer_matches(None, "s3cret"));
     }
 }

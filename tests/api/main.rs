@@ -32,6 +32,7 @@ mod pg_server;
 mod plots;
 mod postgres;
 mod prometheus;
+mod protocol;
 mod robot_arm;
 mod rotor;
 mod security;

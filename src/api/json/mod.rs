@@ -86,7 +86,11 @@ pub async fn read_within(body: Body, limit: usize) -> Result<Bytes, ApiError> {
 
 /// Parses a body already read: the same rules as the extractor (used by the CLI too).
 pub fn parse<T: DeserializeOwned>(raw: impl Into<Bytes>) -> Result<JsonBody<T>, ApiError> {
-    let raw = raw.into();
+    let mut raw: Bytes = raw.into();
+    // A UTF-8 byte order mark is not part of the JSON text: ignored, as RFC 8259 (8.1) allows, and not stored.
+    if raw.starts_with(BOM) {
+        raw = raw.slice(BOM.len()..);
+    }
     let value: serde_json::Value =
         serde_json::from_slice(&raw).map_err(|e| ApiError::MalformedJson(words::malformed(&e, &raw)))?;
     let mut unknown = Vec::new();
@@ -102,6 +106,9 @@ pub fn parse<T: DeserializeOwned>(raw: impl Into<Bytes>) -> Result<JsonBody<T>, 
         }
     }
 }
+
+/// The UTF-8 byte order mark some editors and spreadsheets write first.
+pub const BOM: &[u8] = b"\xEF\xBB\xBF";
 
 /// The body limit in force, put in the request extensions by the router.
 #[derive(Clone, Copy, Debug)]
