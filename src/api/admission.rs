@@ -9,6 +9,9 @@
 //!   been read, and keeps it until its answer has been sent. With none free
 //!   the POST is answered 503 at once, with `Retry-After`. This bounds the
 //!   whole bodies held (slots × body limit).
+//!   Anything else that computes a job — a GET of a template's job not
+//!   stored yet, a deferred job — takes a slot for its computation
+//!   ([`Admission::slot`]), so no route bypasses the bound.
 //! - **Compute** (`jobs`, default the number of cores): a job computes, and
 //!   its result is serialised, only while it holds one; the others wait in
 //!   the queue, at most `queue_wait` (then 503). This bounds the engine's
@@ -35,6 +38,7 @@
 
 use super::problem::ApiError;
 use std::collections::HashMap;
+use std::future::Future;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
@@ -64,6 +68,11 @@ impl Capacity {
     pub fn workers(&self) -> usize {
         self.inline + 1
     }
+}
+
+tokio::task_local! {
+    /// Set while a POST that holds its slot is answered.
+    static HOLDING: ();
 }
 
 /// Mean compute time of a kind's recent jobs under which its next job
@@ -128,6 +137,21 @@ impl Admission {
     /// A slot for a POST, or None when every job slot and queue place is taken.
     pub fn enter(&self) -> Option<OwnedSemaphorePermit> {
         self.slots.clone().try_acquire_owned().ok()
+    }
+
+    /// Runs `answer` as a request that holds a slot (a POST once admitted).
+    pub async fn holding<F: Future>(answer: F) -> F::Output {
+        HOLDING.scope((), answer).await
+    }
+
+    /// A slot for a computation: none inside a request that holds one (a
+    /// POST), else one of the free slots (a GET of a template's new job, a
+    /// deferred job), or the 503 of a saturated service.
+    pub fn slot(&self) -> Result<Option<OwnedSemaphorePermit>, ApiError> {
+        if HOLDING.try_with(|()| ()).is_ok() {
+            return Ok(None);
+        }
+        self.enter().map(Some).ok_or_else(|| self.saturated("every job slot and queue place is taken"))
     }
 
     /// The right to compute, once a job ahead has finished (waiting at most `queue_wait`).

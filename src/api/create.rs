@@ -64,6 +64,18 @@ pub fn created(row: &JobRow, reserved: OwnedSemaphorePermit) -> Response {
     (StatusCode::CREATED, headers, guarded(Body::new(body), reserved)).into_response()
 }
 
+tokio::task_local! {
+    /// Whether the request being answered may store a new job: false where
+    /// the service has an API token and the request does not carry it.
+    pub static MAY_STORE: bool;
+}
+
+/// Whether the request being answered may store a new job (outside a
+/// request — a deferred job, the command line — it may).
+pub fn may_store() -> bool {
+    MAY_STORE.try_with(|may| *may).unwrap_or(true)
+}
+
 /// Where a computed job goes.
 #[derive(Clone, Debug)]
 pub enum Destination {
@@ -72,6 +84,9 @@ pub enum Destination {
     New { key: Option<String> },
     /// The deferred job `id` this replica claimed as `claim` ([`super::deferred`]).
     Claimed { id: String, claim: String },
+    /// Nowhere: a template's values for a request that may not store a new
+    /// job ([`may_store`]); the row answered is stored nowhere.
+    Unstored,
 }
 
 impl Destination {
@@ -92,6 +107,7 @@ where
     R: JobResult + Send + 'static,
     F: FnOnce() -> Result<R, ApiError> + Send + 'static,
 {
+    let _slot = state.admission.slot()?;
     let computing = state.admission.compute().await?;
     let limit = state.limits.result_bytes;
     // The largest result is reserved before computing, so that no job is
@@ -116,14 +132,12 @@ where
     }
     drop(computing);
     let stored = match to {
-        Destination::New { key } => {
-            let label = if key.is_some() { None } else { super::label::current() };
-            let (id, created_at, engine_version) = (uuid::Uuid::new_v4().to_string(), now_rfc3339(), VERSION.into());
-            let kind = kind.into();
-            let job =
-                NewJob { id, kind, created_at, request, result, engine_us, engine_version, label, request_key: key };
-            state.store.insert(job).await.map_err(ApiError::not_stored("the job was computed but could not be stored"))
-        }
+        Destination::New { key } => state
+            .store
+            .insert(new_job(kind, (request, result), engine_us, key))
+            .await
+            .map_err(ApiError::not_stored("the job was computed but could not be stored")),
+        Destination::Unstored => Ok(new_job(kind, (request, result), engine_us, None).unstored()),
         // None: deleted, or claimed again after this replica's lease lapsed; not this replica's to store.
         Destination::Claimed { id, claim } => {
             match state.store.complete((&id, &claim), &result, engine_us, bytes as i64).await {
@@ -135,6 +149,14 @@ where
     };
     state.metrics.job(kind, stored.is_ok(), elapsed);
     Ok((stored?, reserved))
+}
+
+/// A new job of `kind` (a fresh id, made now), with the request's label
+/// unless it is keyed (a template's job, shared between requests).
+fn new_job(kind: &str, (request, result): (Bytes, Bytes), engine_us: i64, key: Option<String>) -> NewJob {
+    let label = if key.is_some() { None } else { super::label::current() };
+    let (id, created_at, engine_version) = (uuid::Uuid::new_v4().to_string(), now_rfc3339(), VERSION.into());
+    NewJob { id, kind: kind.into(), created_at, request, result, engine_us, engine_version, label, request_key: key }
 }
 
 /// The version of mechdyn that computes the jobs.

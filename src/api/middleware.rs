@@ -134,13 +134,14 @@ fn cors(origins: &[String]) -> Option<CorsLayer> {
     )
 }
 
+/// A request that would change what the service stores needs the token;
+/// any other is answered with whether it carries it ([`super::create::may_store`]).
 async fn require_token(token: Option<Arc<str>>, req: Request, next: Next) -> Response {
-    match token {
-        Some(t) if changes(req.method()) && !bearer_matches(req.headers().get(header::AUTHORIZATION), &t) => {
-            ApiError::Unauthorized.into_response()
-        }
-        _ => next.run(req).await,
+    let carried = token.is_none_or(|t| bearer_matches(req.headers().get(header::AUTHORIZATION), &t));
+    if !carried && changes(req.method()) {
+        return ApiError::Unauthorized.into_response();
     }
+    super::create::MAY_STORE.scope(carried, next.run(req)).await
 }
 
 /// Whether a request of this method changes what the service stores (a
@@ -183,7 +184,7 @@ async fn admit(admission: Admission, (limit, pace): (usize, Pace), req: Request,
     let Some(slot) = admission.enter() else {
         return admission.saturated("every job slot and queue place is taken").into_response();
     };
-    next.run(Request::from_parts(parts, Body::from(bytes))).await.map(|b| guarded(b, slot))
+    Admission::holding(next.run(Request::from_parts(parts, Body::from(bytes)))).await.map(|b| guarded(b, slot))
 }
 
 /// A query that gives a parameter twice (`F=1&F=2`) is a 400 naming it:

@@ -73,7 +73,7 @@ pub enum PostErrors {
     /// The service was started with an API token (MECHDYN_API_TOKEN) and the request does not carry it
     #[response(status = 401, content_type = "application/problem+json", example = json!({
         "type": "/problems/unauthorized", "title": "Missing or wrong bearer token", "status": 401,
-        "detail": "this service needs \"Authorization: Bearer <token>\" on every POST"
+        "detail": "this service stores and deletes jobs only for a request with \"Authorization: Bearer <token>\": every POST and DELETE, and a GET of a template's job or page that would store a new job"
     }))]
     Unauthorized(Problem),
     /// Body larger than the limit (default 1 MiB)
@@ -202,7 +202,10 @@ pub enum ApiError {
     /// The database cannot be used at the moment (logged).
     #[error("the database is unavailable; retry later")]
     Unavailable(String),
-    #[error("this service needs \"Authorization: Bearer <token>\" on every POST")]
+    #[error(
+        "this service stores and deletes jobs only for a request with \"Authorization: Bearer <token>\": \
+             every POST and DELETE, and a GET of a template's job or page that would store a new job"
+    )]
     Unauthorized,
     /// A request's body fell behind the pace a client must keep ([`super::pace`]).
     #[error("{0}")]

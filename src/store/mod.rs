@@ -171,6 +171,11 @@ pub struct NewJob {
 }
 
 impl NewJob {
+    /// The job as a row that no database holds (seq 0), for an answer that stores nothing.
+    pub fn unstored(self) -> JobRow {
+        self.stored(0)
+    }
+
     fn stored(self, seq: i64) -> JobRow {
         let NewJob { id, kind, created_at, request, result, engine_us, engine_version, label, .. } = self;
         let (status, problem) = (Status::Done, None);

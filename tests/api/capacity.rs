@@ -207,3 +207,24 @@ async fn a_job_that_waits_too_long_in_the_queue_is_answered_503() {
     assert!(second.headers.contains_key("retry-after"));
     assert_eq!(first.await.unwrap().unwrap().status(), StatusCode::CREATED);
 }
+
+/// A GET that computes a template's new job goes through admission as a
+/// POST does: with the only slot held, it is answered 503; a GET of a job
+/// already stored is not held up (before, such GETs computed beside the
+/// jobs and the queue).
+#[tokio::test]
+async fn a_get_that_computes_takes_a_slot_as_a_post_does() {
+    let admission = Admission::new(Capacity { jobs: 1, queue: 0, ..Capacity::default() });
+    let app = TestApp::new().await.reopened(|s| mechdyn::api::AppState { admission, ..s }).await;
+    let stored = "/v1/templates/p103-slider-flywheel/result/inertia_exact?F=1000";
+    assert_eq!(app.get(stored).await.status, StatusCode::OK);
+    let body = Body::from(request("p113_pulley").to_string());
+    let holding = app.app.clone().oneshot(post("/v1/flywheel", body)).await.unwrap();
+    assert_eq!(holding.status(), StatusCode::CREATED);
+    let new = app.get("/v1/templates/p103-slider-flywheel/result/inertia_exact?F=1300").await;
+    assert_eq!(new.status, StatusCode::SERVICE_UNAVAILABLE, "{}", new.text);
+    assert_eq!(new.json()["type"], "/problems/saturated");
+    assert_eq!(app.get(stored).await.status, StatusCode::OK, "a stored job needs no slot");
+    drop(holding);
+    assert_eq!(app.get("/v1/templates/p103-slider-flywheel/result/inertia_exact?F=1300").await.status, StatusCode::OK);
+}

@@ -217,3 +217,23 @@ async fn a_parameter_study_is_one_csv_in_one_csv_out() {
     let nameless = app.get("/v1/templates/p103-slider-flywheel/job?=1").await;
     assert_eq!(nameless.status, StatusCode::BAD_REQUEST);
 }
+
+/// An integer parameter is set by an integer: `?steps=72` gives the job of
+/// 72 positions (before: 422 "got the number 72.0"), by URL, in a study's
+/// CSV and on the form; 72.5 is still refused at its field.
+#[tokio::test]
+async fn an_integer_parameter_is_set_by_an_integer() {
+    let app = TestApp::new().await;
+    let r = app.get("/v1/templates/offset-slider-crank/job?steps=72").await;
+    assert_eq!(r.status, StatusCode::OK, "{}", r.text);
+    assert_eq!(r.json()["request"]["input"]["steps"], 72, "{}", r.json()["request"]);
+    let study =
+        app.post_raw("/v1/templates/offset-slider-crank/table?values=summary", "text/csv", "steps\n72\n24\n").await;
+    assert_eq!(study.status, StatusCode::OK, "{}", study.text);
+    assert!(study.text.lines().skip(1).all(|l| l.ends_with(',')), "a row failed: {}", study.text);
+    let form = app.get("/templates/offset-slider-crank?steps=24").await;
+    assert_eq!(form.status, StatusCode::SEE_OTHER, "{}", form.text);
+    let half = app.get("/v1/templates/offset-slider-crank/job?steps=72.5").await;
+    assert_eq!(half.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", half.text);
+    assert_eq!(half.json()["errors"][0]["parameter"], "steps", "{}", half.text);
+}

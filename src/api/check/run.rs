@@ -91,11 +91,12 @@ async fn reference(state: &AppState, r: &CheckRequest) -> Result<(&'static dyn A
         if r.variant.is_some() {
             templates::drawable(&t).map_err(|why| ApiError::Invalid(vec![FieldError::at("/variant", why)]))?;
         }
-        let row = templates::job_for(state, &t, &given(&t, r)).await.map_err(under_parameters)?;
+        let row = templates::job_for(state, &t, &given(&t, r), templates::Want::Job).await.map_err(under_parameters)?;
         return Ok((kind, row));
     }
     let (kind, request) = kind_request(r)?;
-    let row = templates::stored_job(state, kind, request).await.map_err(|e| e.under("/request"))?;
+    let row =
+        templates::stored_job(state, kind, request, templates::Want::Job).await.map_err(|e| e.under("/request"))?;
     Ok((kind, row))
 }
 

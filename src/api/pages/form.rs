@@ -25,6 +25,7 @@ use std::collections::HashMap;
     responses((status = 200, description = "The form", content_type = "text/html", body = String),
         (status = 303, description = "The job of these parameters: `Location` is its page", headers(("Location" = String, description = "/jobs/{id}"))),
         (status = 400, description = "A value the template refuses: the form again, the message at its field", content_type = "text/html", body = String),
+        (status = 401, description = "The service has an API token, these parameters' job is not stored yet, and the request does not carry the token", content_type = "text/html", body = String),
         (status = 404, description = "No template with this id", content_type = "text/html", body = String),
         (status = 422, description = "These parameters give no valid problem: the form again with why", content_type = "text/html", body = String),
         (status = 503, description = "Saturated or the database unavailable", content_type = "text/html", body = String)))]
@@ -52,7 +53,7 @@ pub async fn template(
     };
     let asked: HashMap<String, String> =
         given.iter().filter(|(k, v)| !unchanged(k, v)).map(|(k, v)| (k.clone(), v.clone())).collect();
-    match templates::job_for(&state, &t, &asked).await {
+    match templates::job_for(&state, &t, &asked, templates::Want::Job).await {
         Ok((row, _)) => (StatusCode::SEE_OTHER, [(header::LOCATION, format!("/jobs/{}", row.id))]).into_response(),
         Err(
             e @ (ApiError::BadQuery(_)

@@ -24,7 +24,7 @@ pub fn request_for(t: &Template, given: &HashMap<String, String>, ignore: &[&str
         };
         match value_for(p, text) {
             Ok(v) => match request.pointer_mut(&p.pointer) {
-                Some(slot) => *slot = v,
+                Some(slot) => *slot = integral(p, slot, text).unwrap_or(v),
                 None => {
                     errors.push(FieldError::parameter(name, format!("points at {}, not in the request", p.pointer)))
                 }
@@ -68,6 +68,14 @@ pub fn value_for(p: &Parameter, text: &str) -> Result<Value, String> {
         }
     };
     Ok(serde_json::Number::from_f64(si).map_or(Value::Null, Value::Number))
+}
+
+/// An integer written as one (`72`) for a parameter without a unit where
+/// the template has an integer (a count of steps): the integer, so that a
+/// field that wants one gets it (not 72.0).
+fn integral(p: &Parameter, default: &Value, text: &str) -> Option<Value> {
+    let integer = p.unit.is_none() && (default.is_i64() || default.is_u64());
+    integer.then(|| text.trim().parse::<i64>().ok().map(Value::from)).flatten()
 }
 
 /// `x` (in the parameter's unit) within its range and choices.

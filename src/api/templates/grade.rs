@@ -8,7 +8,7 @@
 
 use super::model::Template;
 use super::table::{Column, bad, parameters_of, ragged, read_csv, said};
-use super::{RESERVED, job_for, texts, variants};
+use super::{RESERVED, Want, job_for, texts, variants};
 use crate::api::AppState;
 use crate::api::check::{CheckOutput, CheckRequest, ToleranceDto, bare_number, grade_with};
 use crate::api::problem::{ApiError, FieldError};
@@ -217,7 +217,7 @@ async fn graded(
     let (job, result, flat) = match seen.results.get(&asked) {
         Some(found) => found.clone(),
         None => {
-            let (job, _reserved) = job_for(state, t, &given).await?;
+            let (job, _reserved) = job_for(state, t, &given, Want::Job).await?;
             let result: Value =
                 serde_json::from_slice(&job.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
             if seen.bytes + job.result.len() > REFERENCE_BYTES {

@@ -43,13 +43,30 @@ pub async fn find(state: &AppState, id: &str) -> Result<Template, ApiError> {
     serde_json::from_str(&body).map_err(|e| ApiError::Internal(format!("stored template {id}: {e}")))
 }
 
+/// What a request wants of a template's job.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Want {
+    /// The job itself (its id, its page): a new one is stored, which needs
+    /// the API token where the service has one (401 without).
+    Job,
+    /// Its values only: for a request that may not store a new job, the job
+    /// is computed and answered without being stored.
+    Values,
+}
+
 /// The job `t` gives for `given` parameters: the stored one when these
 /// parameters were asked before (same engine version), else computed and
-/// stored under the request's key; with the memory of its row reserved.
-pub async fn job_for(state: &AppState, t: &Template, given: &HashMap<String, String>) -> Result<Held, ApiError> {
+/// stored under the request's key (see [`Want`]); with the memory of its
+/// row reserved.
+pub async fn job_for(
+    state: &AppState,
+    t: &Template,
+    given: &HashMap<String, String>,
+    want: Want,
+) -> Result<Held, ApiError> {
     let request = apply::request_for(t, given, RESERVED)?;
     let kind = kind::find(&t.kind).ok_or_else(|| ApiError::Internal(format!("template kind {}", t.kind)))?;
-    stored_job(state, kind, &request).await.map_err(|e| apply::named(t, e))
+    stored_job(state, kind, &request, want).await.map_err(|e| apply::named(t, e))
 }
 
 /// A job row with the memory it takes reserved (released when dropped).
@@ -57,13 +74,23 @@ pub type Held = (JobRow, tokio::sync::OwnedSemaphorePermit);
 
 /// The job of `request` of `kind`: the stored one of the same request and
 /// engine version (its memory reserved before it is read), else computed
-/// and stored under the request's key.
-pub async fn stored_job(state: &AppState, kind: &dyn AnyKind, request: &serde_json::Value) -> Result<Held, ApiError> {
+/// and stored under the request's key (see [`Want`]).
+pub async fn stored_job(
+    state: &AppState,
+    kind: &dyn AnyKind,
+    request: &serde_json::Value,
+    want: Want,
+) -> Result<Held, ApiError> {
     let (bytes, key) = apply::keyed(kind.name(), request);
     if let Some(id) = state.store.find_by_key(&key, &bytes).await? {
         return read::load(state, &id, read::READ_MEMORY_FACTOR).await;
     }
-    kind.job(state, bytes.into(), Destination::New { key: Some(key) }).await
+    let to = match (super::create::may_store(), want) {
+        (true, _) => Destination::New { key: Some(key) },
+        (false, Want::Values) => Destination::Unstored,
+        (false, Want::Job) => return Err(ApiError::Unauthorized),
+    };
+    kind.job(state, bytes.into(), to).await
 }
 
 /// Lists the templates: the built-in ones (the course's problems), then those clients stored.
@@ -94,6 +121,8 @@ pub async fn get(State(state): State<AppState>, Path(id): Path<String>) -> Resul
     responses(
         (status = 200, description = "The job", body = super::job::Job),
         (status = 400, description = "An unknown parameter or a value out of its range", body = Problem, content_type = "application/problem+json"),
+        (status = 401, description = "The service has an API token, these parameters' job is not stored yet, and \
+            the request does not carry the token (it would store a new job)", body = Problem, content_type = "application/problem+json"),
         (status = 422, description = "These parameters do not give a valid problem", body = Problem, content_type = "application/problem+json"),
         ReadErrors,
     ))]
@@ -104,7 +133,7 @@ pub async fn job(
 ) -> Result<Response, ApiError> {
     let q = parameters(q)?;
     let t = find(&state, &id).await?;
-    let (row, reserved) = job_for(&state, &t, &q).await?;
+    let (row, reserved) = job_for(&state, &t, &q, Want::Job).await?;
     let mut body = Chunks::default();
     job_chunks(&row, &mut body);
     let location = format!("/v1/jobs/{}", row.id);
@@ -118,6 +147,9 @@ pub async fn job(
 /// One part of the result of the job a template gives for its parameters,
 /// as `/v1/jobs/{id}/result/{pointer}` answers it: what a spreadsheet's
 /// `=WEBSERVICE(".../v1/templates/p103-slider-flywheel/result/inertia_exact?F=1200")` reads.
+///
+/// Where the service has an API token and the request does not carry it,
+/// a job not stored yet is computed and answered without being stored.
 #[utoipa::path(get, path = "/v1/templates/{id}/result/{pointer}", operation_id = "get_template_result_part", tag = "templates",
     params(("id" = String, Path, description = "Template id"),
         ("pointer" = String, Path, description = "JSON pointer into the result without its leading `/`, e.g. `inertia_exact`"),
@@ -140,7 +172,7 @@ pub async fn result(
 ) -> Result<Response, ApiError> {
     let q = parameters(q)?;
     let t = find(&state, &id).await?;
-    let (row, mut reserved) = job_for(&state, &t, &q).await?;
+    let (row, mut reserved) = job_for(&state, &t, &q, Want::Values).await?;
     // The row is held (read factor); the parsed tree takes the rest of a part's memory.
     let tree = row.result.len().saturating_mul(read::CSV_MEMORY_FACTOR - read::READ_MEMORY_FACTOR);
     reserved.merge(state.admission.memory(tree).await?);

@@ -4,7 +4,7 @@
 //! its error; the others are still computed.
 
 use super::model::Template;
-use super::{RESERVED, job_for};
+use super::{RESERVED, Want, job_for};
 use crate::api::AppState;
 use crate::api::problem::{ApiError, FieldError};
 use crate::api::tables::{at, cell, tokens};
@@ -62,7 +62,7 @@ pub async fn study(
         let pointers: Vec<String> =
             if request.values.is_empty() { values.map_or_else(Vec::new, |v| pointer_list(v)) } else { request.values };
         let rows = request.rows.iter().map(super::texts).collect();
-        let results = run(state, t, rows, &pointers).await?;
+        let results = run(state, t, rows, (&pointers, Want::Job)).await?;
         let rows = request.rows.into_iter().zip(results).map(|(parameters, (values, job, error))| {
             let values = pointers.iter().cloned().zip(values).collect();
             TableRow { parameters, values, job, error }
@@ -86,7 +86,7 @@ pub async fn study(
         return Err(ApiError::BadQuery(unknown));
     }
     let given = rows.iter().map(|r| parameters_of(&header, r)).collect();
-    let results = run(state, t, given, &pointers).await?;
+    let results = run(state, t, given, (&pointers, Want::Job)).await?;
     let mut out = csv::Writer::from_writer(Vec::new());
     let names = pointers.iter().map(|p| p.trim_start_matches('/').to_string());
     let head: Vec<String> =
@@ -191,7 +191,7 @@ pub(super) async fn run(
     state: &AppState,
     t: &Template,
     rows: Vec<HashMap<String, String>>,
-    pointers: &[String],
+    (pointers, want): (&[String], Want),
 ) -> Result<Vec<(Vec<Value>, Option<String>, Option<String>)>, ApiError> {
     if pointers.is_empty() {
         return Err(bad("values", "give the values to answer, e.g. ?values=inertia_exact,energy_fluctuation"));
@@ -212,12 +212,14 @@ pub(super) async fn run(
     }
     let mut out = Vec::with_capacity(rows.len());
     for given in rows {
-        out.push(match job_for(state, t, &given).await {
+        out.push(match job_for(state, t, &given, want).await {
             Ok((row, _reserved)) => {
                 let result: Value = serde_json::from_slice(&row.result).unwrap_or_default();
                 let found: Vec<Option<&Value>> = pointers.iter().map(|p| at(&result, &tokens(p))).collect();
                 let error = absent(&result, pointers, &found);
-                (found.into_iter().map(|v| v.cloned().unwrap_or(Value::Null)).collect(), Some(row.id), error)
+                // A job answered unstored (seq 0: `NewJob::unstored`) has no id to name.
+                let id = (row.seq > 0).then_some(row.id);
+                (found.into_iter().map(|v| v.cloned().unwrap_or(Value::Null)).collect(), id, error)
             }
             Err(e @ (ApiError::Saturated { .. } | ApiError::StorageFull(_) | ApiError::Unavailable(_))) => {
                 return Err(e);

@@ -103,7 +103,7 @@ pub async fn list(
     let computed = if values.is_empty() {
         vec![(Vec::new(), None, None); given.len()]
     } else {
-        run(state, t, given, values).await?
+        run(state, t, given, (values, super::Want::Values)).await?
     };
     let variants = drawn
         .into_iter()
