@@ -39,12 +39,24 @@ pub async fn labelled(req: Request, next: Next) -> Response {
     }
 }
 
-/// A label: 1 to [`MAX_LABEL`] characters.
+/// A label: 1 to [`MAX_LABEL`] characters, none of them a control
+/// character or a bidirectional override (which would show another text
+/// than the one stored: `U+202E` turns `exe.txt` round).
 pub fn checked(label: String) -> Result<String, ApiError> {
     let bad = |why: &str| ApiError::BadQuery(vec![FieldError::parameter("label", why)]);
+    if let Some(c) = label.chars().find(|c| c.is_control() || is_bidi_control(*c)) {
+        let why = format!("must not hold control characters or bidirectional overrides (it holds U+{:04X})", c as u32);
+        return Err(bad(&why));
+    }
     match label.chars().count() {
         0 => Err(bad("must not be empty")),
         n if n > MAX_LABEL => Err(bad(&format!("must be at most {MAX_LABEL} characters"))),
         _ => Ok(label),
     }
+}
+
+/// Unicode's bidirectional embeddings, overrides and isolates (U+202A to
+/// U+202E, U+2066 to U+2069) and marks (U+200E, U+200F, U+061C).
+fn is_bidi_control(c: char) -> bool {
+    matches!(c, '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}' | '\u{200E}' | '\u{200F}' | '\u{061C}')
 }

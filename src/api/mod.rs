@@ -101,7 +101,7 @@ budget 20 s (a job over it is stopped and answered 422 `/problems/compute-budget
 service has cores, 64 more wait; beyond that a POST is answered 503 `/problems/saturated` with \
 `Retry-After`. A full disk is a 507 `/problems/storage-full` (reads go on). When the service has an API \
 token (`MECHDYN_API_TOKEN`), every POST and DELETE needs `Authorization: Bearer <token>` (401 without it); every \
-answer carries an `x-request-id` header.\n\nOn any POST: `?label=TEXT` (1 to 200 characters) stores a label \
+answer carries an `x-request-id` header.\n\nOn any POST: `?label=TEXT` (1 to 200 characters, no control characters or bidirectional overrides) stores a label \
 with the job it creates (`GET /v1/jobs?label=TEXT` lists them); an `Idempotency-Key` header (1 to 255 visible \
 characters) makes a retry safe: the same key with the same request answers the first successful answer again \
 (with `Idempotent-Replayed: true`), nothing computed or stored twice; the same key with another request is a \

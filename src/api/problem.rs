@@ -322,6 +322,9 @@ impl ApiError {
         move |e| match e {
             crate::store::StoreError::Full => Self::StorageFull(what),
             crate::store::StoreError::Unavailable(why) => Self::Unavailable(why),
+            crate::store::StoreError::Refused(why) => {
+                Self::Invalid(vec![FieldError::at("", format!("the database refused a value of this request: {why}"))])
+            }
         }
     }
 }

@@ -127,9 +127,25 @@ async fn postgres(url: &str, wait: Duration) -> Result<PgPool, sqlx::Error> {
     Ok(pool)
 }
 
-/// Why a statement failed, sorted: the storage full, or anything else.
+/// Why a statement failed, sorted: the storage full, a value refused, or anything else.
 pub fn classify(e: sqlx::Error) -> StoreError {
-    if is_full(&e) { StoreError::Full } else { StoreError::Unavailable(e.to_string()) }
+    if is_full(&e) {
+        StoreError::Full
+    } else if is_refused(&e) {
+        StoreError::Refused(e.as_database_error().map_or_else(|| e.to_string(), |d| d.message().to_string()))
+    } else {
+        StoreError::Unavailable(e.to_string())
+    }
+}
+
+/// A value the database refused: PostgreSQL's class 22 (data exception:
+/// a NUL byte in text, a number out of range), SQLite's SQLITE_TOOBIG (18).
+fn is_refused(e: &sqlx::Error) -> bool {
+    match code(e) {
+        Some(Code::Sqlite(c)) => c == 18,
+        Some(Code::Postgres(state)) => state.starts_with("22"),
+        None => false,
+    }
 }
 
 /// The error's code: PostgreSQL's SQLSTATE (five characters, its class

@@ -53,6 +53,11 @@ pub enum StoreError {
     /// The database could not be used (I/O error, closed, misconfigured).
     #[error("database unavailable: {0}")]
     Unavailable(String),
+    /// The database refused a value it was given (PostgreSQL's class 22,
+    /// data exception; SQLite's SQLITE_TOOBIG): the request's to mend,
+    /// not a condition to retry.
+    #[error("the database refused a value: {0}")]
+    Refused(String),
 }
 
 impl From<sqlx::Error> for StoreError {
@@ -291,6 +296,9 @@ impl Store {
 
     /// A stored template's JSON.
     pub async fn template(&self, id: &str) -> Result<Option<String>, StoreError> {
+        if !findable(id) {
+            return Ok(None);
+        }
         let sql = "SELECT body FROM templates WHERE id = $1";
         Ok(on_pool!(&self.db, pool => sqlx::query_scalar(sql).bind(id).fetch_optional(pool).await?))
     }
@@ -302,6 +310,9 @@ impl Store {
     }
 
     pub async fn get(&self, id: &str) -> Result<Option<JobRow>, StoreError> {
+        if !findable(id) {
+            return Ok(None);
+        }
         let row: Option<Row> =
             on_pool!(&self.db, pool => sqlx::query_as(SELECT_ROW).bind(id).fetch_optional(pool).await?);
         Ok(row.map(JobRow::from))
@@ -315,6 +326,9 @@ impl Store {
 
     /// Bytes of a job's request and result together, without loading them.
     pub async fn size(&self, id: &str) -> Result<Option<usize>, StoreError> {
+        if !findable(id) {
+            return Ok(None);
+        }
         let sql = "SELECT bytes FROM jobs WHERE id = $1";
         let bytes: Option<i64> =
             on_pool!(&self.db, pool => sqlx::query_scalar(sql).bind(id).fetch_optional(pool).await?);
@@ -389,6 +403,14 @@ impl Store {
             Db::Postgres(_) => Err(StoreError::Unavailable("integrity_check is SQLite's".into())),
         }
     }
+}
+
+/// Whether a row's key can be `key`: no stored text holds a NUL byte
+/// (PostgreSQL's text cannot, and the ids stored are UUIDs and slugs), so
+/// a key with one finds nothing without asking the database (which would
+/// refuse it).
+pub(crate) fn findable(key: &str) -> bool {
+    !key.contains('\0')
 }
 
 /// The columns of a [`Row`].

@@ -23,6 +23,9 @@ pub struct Retention<'a> {
 impl Store {
     /// Deletes the job `id`: whether there was one.
     pub async fn delete(&self, id: &str) -> Result<bool, StoreError> {
+        if !super::findable(id) {
+            return Ok(false);
+        }
         let done: Result<u64, StoreError> = on_pool!(&self.db, pool => async {
             // Closed, not given back, unless it commits (see `held`).
             let mut held = Held::acquire(pool).await?;

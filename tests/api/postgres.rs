@@ -14,8 +14,8 @@ use std::time::{Duration, Instant};
 /// Every scenario of the store that the SQLite tests run, on PostgreSQL:
 /// jobs read back byte for byte, listed, paginated, filtered by kind and
 /// label, after a restart; templates' jobs found again by their key, a
-/// client's template; idempotency keys; a class graded; a job deleted; the
-/// retention; every 201 committed.
+/// client's template; idempotency keys; a class graded; a job deleted; ids
+/// and labels with a NUL byte; the retention; every 201 committed.
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn the_store_behaves_on_postgres_as_on_sqlite() {
     let Some(server) = PgServer::start("the_store_behaves_on_postgres_as_on_sqlite") else { return };
@@ -33,6 +33,11 @@ async fn the_store_behaves_on_postgres_as_on_sqlite() {
     crate::templates::a_client_creates_a_template_and_uses_it_on(fresh).await;
     let token = crate::operations::with_token();
     crate::operations::a_deleted_job_is_gone_on(TestApp::on(&server.database().await, &token).await).await;
+    crate::security::text_that_no_row_holds_on(TestApp::on(&server.database().await, &token).await).await;
+    // A value the server refuses, should one get past the API's checks, is the request's to mend (a 422), not a 503.
+    let store = mechdyn::store::Store::open(&server.database().await).await.unwrap();
+    let refused = store.insert_template("a\0b", "2026-11-26T00:00:00.000000Z", "{}").await;
+    assert!(matches!(refused, Err(mechdyn::store::StoreError::Refused(_))), "{refused:?}");
     crate::operations::the_retention_deletes_on(&server.database().await).await;
     crate::group_commit::stored_before_201(&server.database().await).await;
     let ready = TestApp::on(&server.database().await, &plain).await.get("/readyz").await;

@@ -158,3 +158,33 @@ async fn a_get_stores_a_new_job_only_with_the_token() {
     let stored = app.get("/v1/templates/p103-slider-flywheel/job?F=1100").await;
     assert_eq!(stored.status, StatusCode::OK, "a stored job is read without the token: {}", stored.text);
 }
+
+/// SQLite: text that no row holds, as every database answers it.
+#[tokio::test]
+async fn text_that_no_row_holds_is_not_found_or_refused() {
+    text_that_no_row_holds_on(TestApp::with_settings(&crate::operations::with_token()).await).await;
+}
+
+/// A NUL byte in a job's or a template's id finds nothing (404), in a label
+/// it is refused (400), as are a label's other control characters and
+/// bidirectional overrides (U+202E would show a student's label reversed).
+/// On PostgreSQL, whose text cannot hold a NUL, these were "database
+/// unavailable, retry" (503): a client retried for ever. For an app with the
+/// settings [`crate::operations::with_token`].
+pub async fn text_that_no_row_holds_on(app: TestApp) {
+    for path in ["/v1/jobs/%00", "/v1/jobs/a%00b/result/x", "/v1/templates/%00", "/v1/templates/x%00/result/y"] {
+        let r = app.get(path).await;
+        assert_eq!(r.status, StatusCode::NOT_FOUND, "{path}: {}", r.text);
+    }
+    let delete = Request::delete("/v1/jobs/%00").header("authorization", "Bearer t0ken").body(Body::empty()).unwrap();
+    assert_eq!(app.send(delete).await.status, StatusCode::NOT_FOUND);
+    for label in ["%00", "ana%09", "%E2%80%AEfdp.exe", "x%E2%81%A6y"] {
+        let r = app.get(&format!("/v1/jobs?label={label}")).await;
+        assert_eq!(r.status, StatusCode::BAD_REQUEST, "?label={label}: {}", r.text);
+        let req = Request::post(format!("/v1/flywheel?label={label}")).header("content-type", "application/json");
+        let req = req.header("authorization", "Bearer t0ken");
+        let r = app.send(req.body(Body::from(request("p103_slider").to_string())).unwrap()).await;
+        assert_eq!(r.status, StatusCode::BAD_REQUEST, "POST ?label={label}: {}", r.text);
+        assert_eq!(r.json()["errors"][0]["parameter"], "label", "{}", r.text);
+    }
+}
