@@ -192,13 +192,44 @@ pub fn list(v: &Value, n: usize, fields: &[&str]) -> Vec<String> {
 }
 
 fn write_csv(records: impl Iterator<Item = Vec<String>>) -> Result<String, ApiError> {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    let internal = |e: csv::Error| ApiError::Internal(e.to_string());
+    let mut out = Csv::default();
     for record in records {
-        w.write_record(&record).map_err(internal)?;
+        out.record(record)?;
     }
-    let bytes = w.into_inner().map_err(|e| ApiError::Internal(e.to_string()))?;
-    String::from_utf8(bytes).map_err(|e| ApiError::Internal(e.to_string()))
+    out.text()
+}
+
+/// A CSV answer for a spreadsheet to open. A text cell that a spreadsheet
+/// would take for a formula — beginning with `=`, `+`, `-`, `@`, a tab or a
+/// carriage return, such as a student's name `=HYPERLINK(…)` — is written
+/// with a `'` before it, as OWASP recommends against CSV injection; a
+/// number (`-3.5`) is written as it is.
+pub struct Csv(csv::Writer<Vec<u8>>);
+
+impl Default for Csv {
+    fn default() -> Self {
+        Self(csv::Writer::from_writer(Vec::new()))
+    }
+}
+
+impl Csv {
+    /// One row.
+    pub fn record<S: AsRef<str>>(&mut self, cells: impl IntoIterator<Item = S>) -> Result<(), ApiError> {
+        let cells = cells.into_iter().map(|c| inert(c.as_ref()));
+        self.0.write_record(cells).map_err(|e| ApiError::Internal(format!("CSV: {e}")))
+    }
+
+    /// The rows written, as text.
+    pub fn text(self) -> Result<String, ApiError> {
+        let bytes = self.0.into_inner().map_err(|e| ApiError::Internal(format!("CSV: {e}")))?;
+        String::from_utf8(bytes).map_err(|e| ApiError::Internal(format!("CSV: {e}")))
+    }
+}
+
+/// `cell` as a spreadsheet will not evaluate it (see [`Csv`]).
+fn inert(cell: &str) -> String {
+    let formula = cell.starts_with(['=', '+', '-', '@', '\t', '\r']);
+    if formula && cell.trim().parse::<f64>().is_err() { format!("'{cell}") } else { cell.to_string() }
 }
 
 /// The CSV of a stored result: its kind's table, or its values when the

@@ -188,3 +188,34 @@ pub async fn text_that_no_row_holds_on(app: TestApp) {
         assert_eq!(r.json()["errors"][0]["parameter"], "label", "{}", r.text);
     }
 }
+
+/// CSV injection: a name a spreadsheet would evaluate (`=`, `+`, `-`, `@`)
+/// comes back in a CSV answer with a `'` before it (OWASP's advice), so the
+/// sheet shows it as text; numbers, negative ones too, are written as they
+/// are. A graded class (names from the class CSV) and a job's table (names
+/// from the mechanism) both.
+#[tokio::test]
+async fn names_a_spreadsheet_would_evaluate_come_back_as_text() {
+    let app = TestApp::new().await;
+    let class = "student,variant,inertia_exact\n\
+                 \"=HYPERLINK(\"\"http://evil.example\"\",\"\"x\"\")\",1,255\n\
+                 +1+2,2,-300\n@SUM(A1),3,255\n-ana,4,255\n";
+    let r = app.post_raw("/v1/templates/p103-class/grade", "text/csv", class).await;
+    assert_eq!(r.status, StatusCode::OK, "{}", r.text);
+    let rows: Vec<Vec<String>> = csv::Reader::from_reader(r.text.as_bytes())
+        .records()
+        .map(|rec| rec.unwrap().iter().map(String::from).collect())
+        .collect();
+    let students: Vec<&str> = rows.iter().map(|r| r[0].as_str()).collect();
+    assert_eq!(students, ["'=HYPERLINK(\"http://evil.example\",\"x\")", "'+1+2", "'@SUM(A1)", "'-ana"], "{}", r.text);
+    // The second student's answer is negative: its relative error is a number, written as one.
+    let error: f64 = rows[1][3].parse().unwrap_or_else(|_| panic!("{:?}", rows[1]));
+    assert!(error > 1.0, "{error}");
+    let mut mechanism = request("k1_offset_slider_crank");
+    mechanism["input"]["steps"] = 4.into();
+    let text = serde_json::to_string(&mechanism).unwrap().replace("\"crank\"", "\"=crank\"");
+    let job = app.post_raw("/v1/kinetostatics", "application/json", text).await;
+    assert_eq!(job.status, StatusCode::CREATED, "{}", job.text);
+    let table = app.get(&format!("/v1/jobs/{}/result.csv", job.json()["id"].as_str().unwrap())).await;
+    assert!(table.text.contains("'=crank") && !table.text.contains(",=crank"), "{}", table.text);
+}

@@ -12,7 +12,7 @@ use super::{RESERVED, Want, job_for, texts, variants};
 use crate::api::AppState;
 use crate::api::check::{CheckOutput, CheckRequest, ToleranceDto, bare_number, grade_with};
 use crate::api::problem::{ApiError, FieldError};
-use crate::api::tables::Scalar;
+use crate::api::tables::{Csv, Scalar};
 use crate::api::{kind, tables};
 use serde_json::Value;
 use std::collections::{BTreeMap, HashMap, HashSet};
@@ -107,14 +107,13 @@ pub async fn class(
         .filter(|(i, _)| *i != l.student && Some(*i) != l.variant && !l.answers.iter().any(|a| a.0 == *i))
         .map(|(_, c)| c.clone())
         .collect();
-    let mut out = csv::Writer::from_writer(Vec::new());
-    let internal = |e: csv::Error| ApiError::Internal(e.to_string());
+    let mut out = Csv::default();
     let mut head = vec!["student".to_string(), "score".to_string()];
     for (_, name, _) in &l.answers {
         head.extend([format!("{name} pass"), format!("{name} relative_error")]);
     }
     head.extend(["feedback".to_string(), "error".to_string()]);
-    out.write_record(&head).map_err(internal)?;
+    out.record(&head)?;
     let (mut seen, mut students) = (References::default(), HashSet::new());
     for (i, row) in rows.iter().enumerate() {
         let student = row.get(l.student).cloned().unwrap_or_default();
@@ -122,7 +121,7 @@ pub async fn class(
             .or_else(|| student.is_empty().then(|| format!("row {} has no student", i + 1)))
             .or_else(|| (!students.insert(student.clone())).then(|| format!("student {student} appears twice")));
         if let Some(why) = refused {
-            out.write_record(failed(&l, &student, &why)).map_err(internal)?;
+            out.record(failed(&l, &student, &why))?;
             continue;
         }
         let cells = match graded(state, t, &l, (&params, &header), row, (tolerance, reveal), &mut seen).await {
@@ -137,10 +136,9 @@ pub async fn class(
             }
             Err(e) => failed(&l, &student, &said(&e)),
         };
-        out.write_record(&cells).map_err(internal)?;
+        out.record(&cells)?;
     }
-    String::from_utf8(out.into_inner().map_err(|e| ApiError::Internal(e.to_string()))?)
-        .map_err(|e| ApiError::Internal(e.to_string()))
+    out.text()
 }
 
 /// An answer column the result has no number for: the same in every row, so

@@ -7,7 +7,7 @@ use super::model::Template;
 use super::{RESERVED, Want, job_for};
 use crate::api::AppState;
 use crate::api::problem::{ApiError, FieldError};
-use crate::api::tables::{at, cell, tokens};
+use crate::api::tables::{Csv, at, cell, tokens};
 use axum::http::{HeaderMap, header};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -87,22 +87,19 @@ pub async fn study(
     }
     let given = rows.iter().map(|r| parameters_of(&header, r)).collect();
     let results = run(state, t, given, (&pointers, Want::Job)).await?;
-    let mut out = csv::Writer::from_writer(Vec::new());
+    let mut out = Csv::default();
     let names = pointers.iter().map(|p| p.trim_start_matches('/').to_string());
-    let head: Vec<String> =
-        header.iter().map(|(raw, _, _)| raw.clone()).chain(names).chain(["job".into(), "error".into()]).collect();
-    let internal = |e: csv::Error| ApiError::Internal(e.to_string());
-    out.write_record(&head).map_err(internal)?;
+    let head = header.iter().map(|(raw, _, _)| raw.clone()).chain(names).chain(["job".into(), "error".into()]);
+    out.record(head)?;
     for (row, (values, job, error)) in rows.iter().zip(results) {
         let record = row
             .iter()
             .cloned()
             .chain(values.iter().map(cell))
             .chain([job.unwrap_or_default(), error.unwrap_or_default()]);
-        out.write_record(record.collect::<Vec<_>>()).map_err(internal)?;
+        out.record(record)?;
     }
-    let bytes = out.into_inner().map_err(|e| ApiError::Internal(e.to_string()))?;
-    Ok((String::from_utf8(bytes).map_err(|e| ApiError::Internal(e.to_string()))?, true))
+    Ok((out.text()?, true))
 }
 
 /// `values=a,/b, c` as pointers, as written (a leading `/` optional).

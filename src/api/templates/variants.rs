@@ -7,7 +7,7 @@ use super::model::{Parameter, Template};
 use super::table::{bad, run};
 use crate::api::AppState;
 use crate::api::problem::ApiError;
-use crate::api::tables::cell;
+use crate::api::tables::{Csv, cell};
 use crate::engine::variants::{Draw, Range, variant};
 use serde::Serialize;
 use serde_json::Value;
@@ -120,20 +120,15 @@ pub async fn list(
 pub fn csv(t: &Template, v: &Variants, values: &[String]) -> Result<String, ApiError> {
     let names: Vec<&String> = t.parameters.iter().filter(|(_, p)| range(p).is_some()).map(|(n, _)| n).collect();
     let heading = |n: &String| t.parameters[n].unit.as_ref().map_or_else(|| n.clone(), |u| format!("{n} [{u}]"));
-    let mut out = csv::Writer::from_writer(Vec::new());
-    let internal = |e: csv::Error| ApiError::Internal(e.to_string());
+    let mut out = Csv::default();
     let head = ["variant".to_string()].into_iter().chain(names.iter().map(|n| heading(n)));
-    let head: Vec<String> = head.chain(values.iter().map(|p| p.trim_start_matches('/').to_string())).collect();
-    out.write_record(&head).map_err(internal)?;
+    out.record(head.chain(values.iter().map(|p| p.trim_start_matches('/').to_string())))?;
     for row in &v.variants {
         let cells = [row.variant.to_string()].into_iter();
         let cells = cells.chain(names.iter().map(|n| row.parameters.get(*n).map(cell).unwrap_or_default()));
-        let cells: Vec<String> =
-            cells.chain(values.iter().map(|p| row.values.get(p).map(cell).unwrap_or_default())).collect();
-        out.write_record(&cells).map_err(internal)?;
+        out.record(cells.chain(values.iter().map(|p| row.values.get(p).map(cell).unwrap_or_default())))?;
     }
-    String::from_utf8(out.into_inner().map_err(|e| ApiError::Internal(e.to_string()))?)
-        .map_err(|e| ApiError::Internal(e.to_string()))
+    out.text()
 }
 
 /// A drawn number as JSON: whole numbers without a fraction (`600`, not `600.0`).
