@@ -76,6 +76,19 @@ pub enum PostErrors {
         "detail": "this service stores and deletes jobs only for a request with \"Authorization: Bearer <token>\": every POST and DELETE, and a GET of a template's job or page that would store a new job"
     }))]
     Unauthorized(Problem),
+    /// The body did not arrive at the pace a client must keep (by default 32 KiB/s once 5 s
+    /// have passed); the connection is closed
+    #[response(status = 408, content_type = "application/problem+json", example = json!({
+        "type": "/problems/request-timeout", "title": "The request's body did not arrive in time", "status": 408,
+        "detail": "the request's body did not arrive in time: 130 bytes in 5.0 s; this service needs a body to keep arriving at 32768 bytes/s once 5 s have passed"
+    }))]
+    RequestTimeout(Problem),
+    /// An HTTP/1.0 request without `Content-Length`
+    #[response(status = 411, content_type = "application/problem+json", example = json!({
+        "type": "/problems/length-required", "title": "The body's length is required", "status": 411,
+        "detail": "an HTTP/1.0 POST needs a Content-Length header: its body's end cannot be told otherwise"
+    }))]
+    LengthRequired(Problem),
     /// Body larger than the limit (default 1 MiB)
     #[response(status = 413, content_type = "application/problem+json", example = json!({
         "type": "/problems/payload-too-large", "title": "Request body too large", "status": 413,

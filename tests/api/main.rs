@@ -35,6 +35,7 @@ mod prometheus;
 mod protocol;
 mod robot_arm;
 mod rotor;
+mod schema;
 mod security;
 mod seed_exams;
 mod slow_clients;

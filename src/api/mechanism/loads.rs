@@ -36,10 +36,9 @@ pub struct LoadDto {
     pub magnitude: Option<FunctionDto>,
     #[schema(value_type = Option<FunctionDto>)]
     pub value: Option<FunctionDto>,
-    /// [body, point]
-    #[schema(value_type = Option<Vec<Object>>, min_items = 2, max_items = 2)]
+    #[schema(value_type = Option<super::BodyPoint>)]
     pub a: Option<(String, PointRef)>,
-    #[schema(value_type = Option<Vec<Object>>, min_items = 2, max_items = 2)]
+    #[schema(value_type = Option<super::BodyPoint>)]
     pub b: Option<(String, PointRef)>,
     /// N/m
     #[schema(value_type = Option<Quantity>)]

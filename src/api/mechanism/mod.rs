@@ -17,7 +17,7 @@ use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::fmt;
 use utoipa::openapi::RefOr;
-use utoipa::openapi::schema::{ArrayBuilder, ObjectBuilder, OneOfBuilder, Schema, Type};
+use utoipa::openapi::schema::{ArrayBuilder, ArrayItems, ObjectBuilder, OneOfBuilder, Schema, Type};
 use utoipa::{PartialSchema, ToSchema};
 
 /// Most bodies, joints or points in one mechanism.
@@ -69,6 +69,37 @@ impl PartialSchema for PointRef {
     }
 }
 impl ToSchema for PointRef {}
+
+/// `[body, point]`, a body's name and one of its points (a spring's or a
+/// damper's end), as the document states it; read as `(String, PointRef)`.
+pub struct BodyPoint;
+
+impl PartialSchema for BodyPoint {
+    fn schema() -> RefOr<Schema> {
+        let body = ObjectBuilder::new().schema_type(Type::String).max_length(Some(NAME_MAX_LENGTH));
+        let point = OneOfBuilder::new()
+            .item(ObjectBuilder::new().schema_type(Type::String).max_length(Some(NAME_MAX_LENGTH)))
+            .item(coords_schema());
+        ArrayBuilder::new()
+            .prefix_items([Schema::from(body.description(Some("a body's name"))), point.into()])
+            .items(ArrayItems::False)
+            .min_items(Some(2))
+            .max_items(Some(2))
+            .description(Some("[body, point]: a body's name, and one of its points (a name, or [x, y] in m)"))
+            .into()
+    }
+}
+impl ToSchema for BodyPoint {}
+
+/// Coordinates `[x, y]` in m, as the document states them.
+pub struct Coords;
+
+impl PartialSchema for Coords {
+    fn schema() -> RefOr<Schema> {
+        coords_schema().into()
+    }
+}
+impl ToSchema for Coords {}
 
 fn coords_schema() -> ArrayBuilder {
     ArrayBuilder::new()
@@ -150,8 +181,8 @@ pub struct FrictionDto {
 /// example of KinetostaticsRequest).
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct MechanismDto {
-    /// Named points (m) in the drawn configuration.
-    #[schema(value_type = Object)]
+    /// Named points (m) in the drawn configuration: `{NAME: [x, y]}`.
+    #[schema(value_type = Option<BTreeMap<String, Coords>>)]
     pub points: Option<BTreeMap<String, [f64; 2]>>,
     #[schema(min_items = 1, max_items = 200)]
     pub bodies: Vec<BodyDto>,
