@@ -3,7 +3,9 @@
 //! 64 connections of `wrk` on loopback sending a mix of every job kind and
 //! reads for the whole run, its resident memory sampled every 5 s; then the
 //! flood (`soak/flood.rs`): on a fresh service, the largest jobs the limits
-//! allow from 64 and from 256 connections. Writes docs/SOAK.md: throughput,
+//! allow from 64 and from 256 connections; then the faults
+//! (`soak/faults.rs`): SIGKILL under writers, slow clients, the full-disk
+//! cycle, the cost of syncing every commit. Writes docs/SOAK.md: throughput,
 //! latency, answers by status and socket errors, panics and "database is
 //! locked" in the service's log, and memory over time and at its peak. No
 //! assertions: benchmarks are not tests.
@@ -14,6 +16,9 @@ mod http;
 
 #[path = "soak/flood.rs"]
 mod flood;
+
+#[path = "soak/faults.rs"]
+mod faults;
 
 use serde_json::Value;
 use std::fmt::Write as _;
@@ -93,7 +98,8 @@ fn main() {
     let (end, peak) = service.memory();
     let log = service.log();
     drop(service);
-    let report = report(seconds, &text, idle, &samples, end, peak, &log) + &flood_report();
+    let faults = faults::sigkill() + &faults::slow_clients() + &faults::full_disk() + &faults::durability();
+    let report = report(seconds, &text, idle, &samples, end, peak, &log) + &flood_report() + &faults;
     println!("{report}");
     let path = format!("{}/docs/SOAK.md", env!("CARGO_MANIFEST_DIR"));
     std::fs::write(&path, report).expect("write docs/SOAK.md");

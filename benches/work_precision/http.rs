@@ -46,6 +46,11 @@ impl Drop for Service {
 }
 
 pub fn start() -> Result<Service, String> {
+    start_with(&[])
+}
+
+/// [`start`] with more environment variables.
+pub fn start_with(env: &[(&str, &str)]) -> Result<Service, String> {
     let port = TcpListener::bind("127.0.0.1:0").and_then(|l| l.local_addr()).map_err(|e| e.to_string())?.port();
     let addr = format!("127.0.0.1:{port}");
     let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
@@ -54,6 +59,7 @@ pub fn start() -> Result<Service, String> {
         .env("MECHDYN_ADDR", &addr)
         .env("DATABASE_URL", format!("sqlite://{}/jobs.db", dir.path().display()))
         .env("RUST_LOG", "warn")
+        .envs(env.iter().copied())
         .stdout(log)
         .stderr(Stdio::null())
         .spawn()
@@ -71,7 +77,7 @@ pub fn start() -> Result<Service, String> {
 
 /// One wrk run (a POST of `body`, or a GET without one): requests/s, p50
 /// and p99 latency (ms), and non-2xx answers.
-fn wrk(service: &Service, path: &str, body: &Value, connections: u32) -> Result<(f64, f64, f64, u64), String> {
+pub fn wrk(service: &Service, path: &str, body: &Value, connections: u32) -> Result<(f64, f64, f64, u64), String> {
     let script = tempfile::NamedTempFile::new().map_err(|e| e.to_string())?;
     let lua = if body.is_null() {
         String::new()
