@@ -1,12 +1,15 @@
 //! The service's middleware, outermost first: a request id (`x-request-id`,
 //! a random UUID unless the client sent one, echoed on the answer), the
 //! request's log span carrying it, the request counted and timed by its
-//! route ([`super::metrics`]), CORS for the origins configured, panics
-//! caught and answered 500 problem+json without internals (and every answer
-//! given before its request's body was read drains that body first), the optional
-//! bearer token every POST and DELETE must carry, admission control (a POST's
-//! body read whole at the client's pace, then a slot, 503 when none is free), a POST's `?label=` ([`super::label`]), its
-//! `Idempotency-Key` ([`super::idempotency`]), and the body limit.
+//! route ([`super::metrics`]), CORS for the origins configured, every answer
+//! given before its request's body was read draining that body first
+//! ([`super::body::drain_unread`]), panics caught and answered 500
+//! problem+json without internals, a query parameter given twice refused,
+//! the optional bearer token every POST and DELETE must carry (and whether
+//! a GET carries it: [`super::create::may_store`]), admission control (a
+//! POST's body read whole at the client's pace, then a slot, 503 when none
+//! is free), a POST's `?label=` ([`super::label`]), its `Idempotency-Key`
+//! ([`super::idempotency`]), and the body limit.
 
 use super::AppState;
 use super::admission::Admission;
