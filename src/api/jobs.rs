@@ -95,8 +95,12 @@ pub async fn delete(State(state): State<AppState>, Path(id): Path<String>) -> Re
 pub struct ListParams {
     /// Only jobs of this kind (the document lists them).
     kind: Option<String>,
-    /// Only jobs stored with this label (`?label=` on their POST).
-    #[param(min_length = 1, max_length = 200)]
+    /// Only jobs stored with this label (`?label=` on their POST; no control characters or bidirectional overrides).
+    #[param(
+        min_length = 1,
+        max_length = 200,
+        pattern = r"^[^\u0000-\u001F\u007F-\u009F\u061C\u200E\u200F\u202A-\u202E\u2066-\u2069]+$"
+    )]
     label: Option<String>,
     /// Page size, 1 to 100 (default 50).
     #[param(minimum = 1, maximum = 100)]

@@ -202,7 +202,8 @@ async fn single_parameters(req: Request, next: Next) -> Response {
         return next.run(req).await;
     }
     let error = |name: &str| FieldError::parameter(name, "is given more than once: give it once");
-    ApiError::BadQuery(twice.into_iter().map(error).collect()).into_response()
+    let refused = ApiError::BadQuery(twice.into_iter().map(error).collect());
+    if super::pages::is_page(req.uri().path()) { super::pages::error(refused) } else { refused.into_response() }
 }
 
 /// `Authorization: Bearer <token>`, compared in time independent of where it differs.

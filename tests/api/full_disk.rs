@@ -33,16 +33,7 @@ fn deletes_and_writes_around_a_full_disk_survive_a_kill() {
     let body = body.to_string();
 
     // The disk fills.
-    let mut stored: Vec<(String, Value)> = Vec::new();
-    let full = loop {
-        let (status, text) = call(port, "POST", "/v1/flywheel", &body);
-        if status != 201 {
-            break (status, text);
-        }
-        let job = json(&text);
-        stored.push((job["id"].as_str().unwrap().to_string(), job["result"].clone()));
-        assert!(stored.len() < 1000, "3 MiB never filled up");
-    };
+    let (mut stored, full) = crate::small_disk::fill(port, &body);
     assert_eq!(full.0, 507, "{}", full.1);
     assert!(stored.len() > 12, "too few jobs stored to delete ten: {}", stored.len());
     let (status, text) = call(port, "GET", "/readyz", "");

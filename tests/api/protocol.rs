@@ -7,14 +7,17 @@ use axum::body::Body;
 use axum::http::{Request, StatusCode, Version};
 
 /// `F=1&F=2` asks two questions: a 400 naming the parameter, on every
-/// route (before, the last value was taken silently).
+/// route (before, the last value was taken silently); a page's is a page.
 #[tokio::test]
 async fn a_parameter_given_twice_is_a_400_naming_it() {
     let app = TestApp::new().await;
+    let page = app.get("/templates/p103-slider-flywheel?F=1000&eps=0.03&F=1200").await;
+    assert_eq!(page.status, StatusCode::BAD_REQUEST, "{}", page.text);
+    assert!(page.content_type.starts_with("text/html"), "{}", page.content_type);
+    assert!(page.text.contains("F: is given more than once"), "{}", page.text);
     for path in [
         "/v1/templates/p103-slider-flywheel/result/inertia_exact?F=1000&F=1200",
         "/v1/jobs?limit=2&kind=flywheel&limit=3",
-        "/templates/p103-slider-flywheel?F=1000&eps=0.03&F=1200",
     ] {
         let r = app.get(path).await;
         assert_eq!(r.status, StatusCode::BAD_REQUEST, "{path}: {}", r.text);

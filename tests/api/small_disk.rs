@@ -4,6 +4,7 @@
 //! keeps the namespace alive, so the service can be killed and started
 //! again on the same files.
 
+use serde_json::Value;
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
@@ -80,6 +81,21 @@ impl SmallDisk {
             std::thread::sleep(Duration::from_millis(20));
         }
         Running(child)
+    }
+}
+
+/// POSTs `body` to `/v1/flywheel` at `port` until an answer is not a 201:
+/// the jobs stored (id and result), and that answer (status and body).
+pub fn fill(port: u16, body: &str) -> (Vec<(String, Value)>, (u16, String)) {
+    let mut stored = Vec::new();
+    loop {
+        let (status, text) = crate::crash::http(port, "POST", "/v1/flywheel", body).unwrap_or((0, String::new()));
+        if status != 201 {
+            return (stored, (status, text));
+        }
+        let job: Value = serde_json::from_str(&text).unwrap();
+        stored.push((job["id"].as_str().unwrap().to_string(), job["result"].clone()));
+        assert!(stored.len() < 1000, "the small disk never filled up");
     }
 }
 

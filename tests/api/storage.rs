@@ -28,16 +28,7 @@ fn a_full_disk_is_answered_507_and_writes_resume_when_space_returns() {
     let mut body = request("p113_pulley");
     body["samples"] = 2000.into();
     let body = body.to_string();
-    let mut stored: Vec<(String, Value)> = Vec::new();
-    let full = loop {
-        let (status, text) = http(port, "POST", "/v1/flywheel", &body);
-        if status != 201 {
-            break (status, text);
-        }
-        let job: Value = serde_json::from_str(&text).unwrap();
-        stored.push((job["id"].as_str().unwrap().to_string(), job["result"].clone()));
-        assert!(stored.len() < 1000, "3 MiB never filled up");
-    };
+    let (mut stored, full) = crate::small_disk::fill(port, &body);
     assert_eq!(full.0, 507, "{}", full.1);
     let problem: Value = serde_json::from_str(&full.1).unwrap();
     assert_eq!(problem["type"], "/problems/storage-full", "{problem}");

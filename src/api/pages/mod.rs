@@ -19,6 +19,13 @@ use axum::response::Response;
 use maud::html;
 use std::collections::HashMap;
 
+pub use layout::error;
+
+/// Whether `path` is a page's, whose errors are answered as pages too.
+pub fn is_page(path: &str) -> bool {
+    path == "/" || path.starts_with("/jobs/") || path.starts_with("/templates/")
+}
+
 /// How many recent jobs the home page lists.
 const RECENT: i64 = 25;
 
