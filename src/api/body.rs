@@ -142,10 +142,13 @@ impl http_body::Body for Shared {
     type Error = axum::Error;
 
     fn poll_frame(self: Pin<&mut Self>, cx: &mut Context<'_>) -> Poll<Option<Result<Frame<Bytes>, axum::Error>>> {
-        match self.0.lock().unwrap_or_else(|e| e.into_inner()).as_mut() {
-            Some(body) => Pin::new(body).poll_frame(cx),
-            None => Poll::Ready(None),
+        let mut kept = self.0.lock().unwrap_or_else(|e| e.into_inner());
+        let polled = kept.as_mut().map_or(Poll::Ready(None), |body| Pin::new(body).poll_frame(cx));
+        if matches!(polled, Poll::Ready(None)) {
+            // Read to its end: gone, so that nothing polls it again (some bodies panic if polled after their end).
+            *kept = None;
         }
+        polled
     }
 
     fn is_end_stream(&self) -> bool {
@@ -163,9 +166,13 @@ impl http_body::Body for Shared {
 
 /// The middleware: a request answered before its body was read whole has
 /// the rest drained ([`drain`]) before its answer is sent, unless the
-/// answer closes the connection.
+/// answer closes the connection or the client waits for it before sending
+/// (`Expect: 100-continue`).
 pub async fn drain_unread(req: Request, next: Next) -> Response {
-    if http_body::Body::is_end_stream(req.body()) {
+    // A client that asked `Expect: 100-continue` waits for the final answer
+    // before it sends: reading its body would ask it to send what is refused.
+    let expects = req.headers().get(header::EXPECT).is_some_and(|v| v.as_bytes().eq_ignore_ascii_case(b"100-continue"));
+    if expects || http_body::Body::is_end_stream(req.body()) {
         return next.run(req).await;
     }
     let (parts, body) = req.into_parts();

@@ -13,7 +13,7 @@
 
 use super::AppState;
 use super::admission::Admission;
-use super::body::{drain, drain_unread, guarded};
+use super::body::{drain_unread, guarded};
 use super::idempotency::{InFlight, idempotent};
 use super::json::BodyLimit;
 use super::pace::{Pace, read_body};
@@ -41,7 +41,8 @@ pub const REQUEST_ID: &str = "x-request-id";
 pub struct Settings {
     /// Largest accepted request body, bytes (413 beyond it).
     pub body_limit: usize,
-    /// When set, every POST and DELETE needs `Authorization: Bearer <token>` (401 without).
+    /// When set, every POST and DELETE needs `Authorization: Bearer <token>` (401 without),
+    /// and a GET stores a new job only with it ([`super::create::may_store`]).
     pub api_token: Option<String>,
     /// Origins allowed by CORS (`*` for any); none: no CORS headers.
     pub cors_origins: Vec<String>,
@@ -154,10 +155,10 @@ fn changes(method: &Method) -> bool {
 }
 
 /// A POST's body is read whole first, within the body limit (413) and at
-/// the client's pace (408), holding its share of the bodies' memory
-/// meanwhile; then the POST takes a slot of admission control and keeps it
-/// until its answer has been sent, or is answered 503 with `Retry-After`.
-/// A slow body never holds a slot.
+/// the client's pace (408), what has arrived held in the bodies' budget;
+/// then the POST takes a slot of admission control and keeps it until its
+/// answer has been sent, or is answered 503 with `Retry-After`. A slow body
+/// never holds a slot.
 async fn admit(admission: Admission, (limit, pace): (usize, Pace), req: Request, next: Next) -> Response {
     if req.method() != Method::POST {
         return next.run(req).await;
@@ -167,23 +168,14 @@ async fn admit(admission: Admission, (limit, pace): (usize, Pace), req: Request,
     if parts.version == Version::HTTP_10 && !parts.headers.contains_key(header::CONTENT_LENGTH) {
         return ApiError::LengthRequired.into_response();
     }
-    let announced = body.size_hint().exact();
-    if announced.is_some_and(|n| n > limit as u64) {
-        drain(body, announced).await;
+    // A refused body's rest is drained by `drain_unread`, outside.
+    if body.size_hint().exact().is_some_and(|n| n > limit as u64) {
         return ApiError::PayloadTooLarge(limit).into_response();
     }
-    let reading = match admission.body(announced.map_or(limit, |n| n as usize)).await {
-        Ok(r) => r,
-        Err(e) => {
-            drain(body, announced).await;
-            return e.into_response();
-        }
-    };
-    let bytes = match read_body(body, limit, pace).await {
+    let bytes = match read_body(body, limit, pace, &admission).await {
         Ok(b) => b,
         Err(e) => return e.into_response(),
     };
-    drop(reading);
     let Some(slot) = admission.enter() else {
         return admission.saturated("every job slot and queue place is taken").into_response();
     };

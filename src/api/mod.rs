@@ -100,7 +100,9 @@ budget 20 s (a job over it is stopped and answered 422 `/problems/compute-budget
 200 bodies and joints and 500 loads per mechanism.\n\nUnder load: as many jobs compute at once as the \
 service has cores, 64 more wait; beyond that a POST is answered 503 `/problems/saturated` with \
 `Retry-After`. A full disk is a 507 `/problems/storage-full` (reads go on). When the service has an API \
-token (`MECHDYN_API_TOKEN`), every POST and DELETE needs `Authorization: Bearer <token>` (401 without it); every \
+token (`MECHDYN_API_TOKEN`), every POST and DELETE needs `Authorization: Bearer <token>` (401 without it), and a \
+GET stores a new job only with it (a template's value or variants are computed without storing; its job or form for \
+new parameters is a 401); every \
 answer carries an `x-request-id` header.\n\nOn any POST: `?label=TEXT` (1 to 200 characters, no control characters or bidirectional overrides) stores a label \
 with the job it creates (`GET /v1/jobs?label=TEXT` lists them); an `Idempotency-Key` header (1 to 255 visible \
 characters) makes a retry safe: the same key with the same request answers the first successful answer again \

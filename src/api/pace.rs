@@ -10,15 +10,18 @@
 //!   behind the pace is answered `408` and its connection closed.
 //! - **Answers** ([`Paced`], the connection's writing side, through
 //!   [`PacedListener`]): a wait starts when the connection cannot take
-//!   more (the socket's buffers full) and ends when a write goes through
-//!   whole; bytes the kernel took before the first wait do not count. A
-//!   client behind the pace has its connection reset, which drops the
-//!   answer and everything it held, the kernel's buffers included.
+//!   more (the kernel holds [`NOT_SENT`] bytes unsent) and ends when a
+//!   write goes through whole; bytes the kernel took before the first wait
+//!   do not count. A client behind the pace has its connection reset,
+//!   which drops the answer and everything it held, the kernel's buffers
+//!   included. An answer small enough for the kernel's buffers is never
+//!   waited on: the kernel holds it, the service holds nothing.
 //!
 //! Headers are not paced here: a connection sending only headers holds no
-//! body, no slot and no answer (3 000 such connections did not slow the
-//! service; docs/SOAK.md).
+//! body, no slot and no answer (3 000 such connections, in an attack on the
+//! service, slowed nothing).
 
+use super::admission::Admission;
 use super::problem::ApiError;
 use axum::body::Body;
 use bytes::{Bytes, BytesMut};
@@ -30,6 +33,7 @@ use std::task::{Context, Poll};
 use std::time::Duration;
 use tokio::io::{AsyncRead, AsyncWrite, ReadBuf};
 use tokio::net::{TcpListener, TcpStream};
+use tokio::sync::OwnedSemaphorePermit;
 use tokio::time::{Instant, Sleep};
 
 /// The minimal pace of a client.
@@ -57,15 +61,17 @@ impl Pace {
     }
 }
 
-/// Reads a request's whole body, at most `limit` bytes, at `pace`: the
-/// bytes; 413 beyond the limit (the rest drained, as for every refusal),
-/// 408 behind the pace.
-pub async fn read_body(body: Body, limit: usize, pace: Pace) -> Result<Bytes, ApiError> {
+/// Reads a request's whole body, at most `limit` bytes, at `pace`, each
+/// piece of it reserved in the bodies' budget as it arrives (a client that
+/// sends nothing holds nothing): the bytes; 413 beyond the limit, 408 behind
+/// the pace, 503 when the budget stays full. The rest of a refused body is
+/// drained by [`super::body::drain_unread`].
+pub async fn read_body(body: Body, limit: usize, pace: Pace, admission: &Admission) -> Result<Bytes, ApiError> {
     let started = Instant::now();
     let timer = tokio::time::sleep_until(started + pace.grace);
     tokio::pin!(timer);
     let mut body = body;
-    let mut buf = BytesMut::new();
+    let (mut buf, mut held) = (BytesMut::new(), None::<OwnedSemaphorePermit>);
     loop {
         let frame = tokio::select! {
             frame = body.frame() => frame,
@@ -75,8 +81,12 @@ pub async fn read_body(body: Body, limit: usize, pace: Pace) -> Result<Bytes, Ap
         let frame = frame.map_err(|e| ApiError::MalformedJson(format!("the body could not be read: {e}")))?;
         if let Some(data) = frame.data_ref() {
             if buf.len() + data.len() > limit {
-                super::body::drain(body, None).await;
                 return Err(ApiError::PayloadTooLarge(limit));
+            }
+            let more = admission.body(data.len()).await?;
+            match held.as_mut() {
+                Some(h) => h.merge(more),
+                None => held = Some(more),
             }
             buf.extend_from_slice(data);
             timer.as_mut().reset(started + pace.allowance(buf.len() as u64));
@@ -191,6 +201,15 @@ impl AsyncWrite for Paced {
     }
 }
 
+/// Bytes of an answer the kernel holds unsent for a connection
+/// (`TCP_NOTSENT_LOWAT`): a write waits once that much is queued, so a
+/// reader's progress is seen every few KB. Without it Linux wakes a writer
+/// only when half of a send buffer, autotuned up to 4 MiB, has drained:
+/// on a slow network link that can be longer than the grace for a client
+/// reading above the pace. And a reader behind the pace holds little in
+/// the kernel.
+const NOT_SENT: u32 = 64 << 10;
+
 /// A TCP listener whose connections are [`Paced`].
 pub struct PacedListener {
     inner: TcpListener,
@@ -209,6 +228,10 @@ impl axum::serve::Listener for PacedListener {
 
     async fn accept(&mut self) -> (Self::Io, Self::Addr) {
         let (stream, addr) = axum::serve::Listener::accept(&mut self.inner).await;
+        #[cfg(any(target_os = "linux", target_os = "android"))]
+        if let Err(e) = socket2::SockRef::from(&stream).set_tcp_notsent_lowat(NOT_SENT) {
+            tracing::warn!(error = %e, "TCP_NOTSENT_LOWAT not set: a slow reader is seen only once its send buffer drains");
+        }
         (Paced::new(stream, self.pace), addr)
     }
 

@@ -69,7 +69,10 @@ pub async fn readyz(State(state): State<AppState>) -> (StatusCode, Json<Readines
     };
     let checked = match tokio::time::timeout(CHECK_WAIT, check).await {
         Ok(answer) => answer,
-        Err(_) => Err(format!("the database does not answer: no answer within {} s", CHECK_WAIT.as_secs())),
+        Err(_) => Err(format!(
+            "the database does not answer: no answer within {} s (to a query, or to a write while writes were failing)",
+            CHECK_WAIT.as_secs()
+        )),
     };
     match checked {
         Ok(()) => (StatusCode::OK, Json(Readiness { status: "ready", database, reason: None, version })),

@@ -140,7 +140,7 @@ pub fn classify(e: sqlx::Error) -> StoreError {
 
 /// A value the database refused: PostgreSQL's class 22 (data exception:
 /// a NUL byte in text, a number out of range), SQLite's SQLITE_TOOBIG (18).
-fn is_refused(e: &sqlx::Error) -> bool {
+pub fn is_refused(e: &sqlx::Error) -> bool {
     match code(e) {
         Some(Code::Sqlite(c)) => c == 18,
         Some(Code::Postgres(state)) => state.starts_with("22"),

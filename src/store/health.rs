@@ -1,36 +1,46 @@
-//! Whether the store's writes commit. A write that fails (the storage
-//! full, the database away) marks the store failing, with the size of that
-//! write; a write that commits something clears the mark. While it is set,
-//! [`Store::writable`] (readiness) makes a write of that size itself — a
-//! row of `write_probe` filled, then emptied, each committed — so a replica
-//! that no client writes to while it is unready learns when space returns.
-//! (A write of that size passing does not promise that a larger one will.)
+//! Whether the store's writes commit. A write that fails for want of
+//! storage or of the database marks the store failing, with the size of
+//! that write (a value the database refused is the request's, and marks
+//! nothing); a write that commits something clears the mark. While it is
+//! set, [`Store::writable`] (readiness) makes a write of that size itself —
+//! a row of `write_probe` filled, then emptied, each committed — so a
+//! replica that no client writes to while it is unready learns when space
+//! returns. (A write of that size passing does not promise that a larger
+//! one will.)
 
 use super::backend::on_pool;
 use super::{Store, StoreError};
 use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// The largest write a probe makes, bytes.
 const PROBE_MAX: usize = 1 << 20;
 /// The smallest: a page of SQLite's.
 const PROBE_MIN: usize = 4096;
 
-/// The size of the last write that failed, until one commits.
+/// The last write that failed (its size and why), until one commits.
 #[derive(Debug, Default)]
-pub(crate) struct Writes(Mutex<Option<usize>>);
+pub(crate) struct Writes {
+    failing: Mutex<Option<(usize, StoreError)>>,
+    /// A probe is under way (one at a time).
+    probing: AtomicBool,
+}
 
 impl Writes {
-    fn set(&self, failing: Option<usize>) {
-        *self.0.lock().unwrap_or_else(|e| e.into_inner()) = failing;
+    fn set(&self, failing: Option<(usize, StoreError)>) {
+        *self.failing.lock().unwrap_or_else(|e| e.into_inner()) = failing;
     }
 
-    fn failing(&self) -> Option<usize> {
-        *self.0.lock().unwrap_or_else(|e| e.into_inner())
+    fn failing(&self) -> Option<(usize, StoreError)> {
+        self.failing.lock().unwrap_or_else(|e| e.into_inner()).clone()
     }
 
-    /// A write of about `bytes` failed.
-    pub fn failed(&self, bytes: usize) {
-        self.set(Some(bytes));
+    /// A write of about `bytes` failed with `error`: marked where the
+    /// storage or the database failed, not where a value was refused.
+    pub fn failed(&self, bytes: usize, error: &StoreError) {
+        if matches!(error, StoreError::Full | StoreError::Unavailable(_)) {
+            self.set(Some((bytes, error.clone())));
+        }
     }
 
     /// A write committed something.
@@ -52,17 +62,28 @@ impl Store {
         match &outcome {
             Ok(done) if wrote(done) => self.writes.committed(),
             Ok(_) => {}
-            Err(_) => self.writes.failed(bytes),
+            Err(e) => self.writes.failed(bytes, e),
         }
         outcome
     }
 
     /// Whether writes commit: Ok unless the last write failed and a probe
-    /// write of its size still fails (the error says why).
+    /// write of its size still fails (the error says why). The probe runs
+    /// in a task of its own, one at a time: a caller that stops waiting
+    /// (readiness answers within 1 s) does not cut it short, so on a slow
+    /// disk it still ends, and clears the mark for the next caller.
     pub async fn writable(&self) -> Result<(), StoreError> {
-        let Some(bytes) = self.writes.failing() else { return Ok(()) };
-        let probe = self.probe(bytes.clamp(PROBE_MIN, PROBE_MAX)).await;
-        self.noted(probe, bytes, |()| true)
+        let Some((bytes, error)) = self.writes.failing() else { return Ok(()) };
+        if self.writes.probing.swap(true, Ordering::AcqRel) {
+            return Err(error);
+        }
+        let store = self.clone();
+        let probe = tokio::spawn(async move {
+            let outcome = store.probe(bytes.clamp(PROBE_MIN, PROBE_MAX)).await;
+            store.writes.probing.store(false, Ordering::Release);
+            store.noted(outcome, bytes, |()| true)
+        });
+        probe.await.unwrap_or_else(|e| Err(StoreError::Unavailable(format!("the probe write: {e}"))))
     }
 
     /// A row of `bytes` written to `write_probe`, then emptied, each committed.

@@ -101,6 +101,8 @@ impl From<String> for Status {
 /// A stored job.
 #[derive(Clone, Debug, PartialEq)]
 pub struct JobRow {
+    /// Its place in the store (from 1); 0 for a job answered without being
+    /// stored ([`NewJob::unstored`]).
     pub seq: i64,
     pub id: String,
     pub kind: String,

@@ -14,7 +14,7 @@
 //! On PostgreSQL a failed row would abort the transaction, so each row
 //! there has a savepoint of its own.
 
-use super::backend::{Db, classify, is_constraint, is_full, on_pool};
+use super::backend::{Db, classify, is_constraint, is_full, is_refused, on_pool};
 use super::health::Writes;
 use super::held::Held;
 use super::{Pending, StoreError};
@@ -76,7 +76,8 @@ async fn write(db: &Db, batch: Vec<Pending>, commits: &AtomicU64, writes: &Write
         }
         Err(e) => {
             tracing::warn!(error = %e, jobs = batch.len(), "jobs not stored");
-            writes.failed(batch.iter().map(|(j, _)| j.bytes()).min().unwrap_or(0));
+            // The smallest job of the batch: readiness probes with a write that size.
+            writes.failed(batch.iter().map(|(j, _)| j.bytes()).min().unwrap_or(0), &e);
             for (_, reply) in batch {
                 let _ = reply.send(Err(e.clone()));
             }
@@ -150,12 +151,12 @@ async fn insert_all(db: &Db, batch: &[Pending]) -> Result<Vec<Result<i64, StoreE
             let query = bind_job!(sqlx::query_scalar(sqlx::AssertSqlSafe(sql.clone())), j);
             match query.fetch_all(held.conn()).await {
                 Ok(seq) => seqs.push(seq.first().copied().ok_or_else(|| StoreError::Unavailable("no seq returned".into()))),
-                // A row the schema refuses fails alone; anything else ends the transaction.
-                Err(e) if is_constraint(&e) => {
+                // A row the schema or the database refuses fails alone; anything else ends the transaction.
+                Err(e) if is_constraint(&e) || is_refused(&e) => {
                     if savepoint {
                         sqlx::query("ROLLBACK TO SAVEPOINT job").execute(held.conn()).await?;
                     }
-                    seqs.push(Err(StoreError::Unavailable(e.to_string())));
+                    seqs.push(Err(classify(e)));
                 }
                 Err(e) => return Err(e.into()),
             }

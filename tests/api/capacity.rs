@@ -228,3 +228,35 @@ async fn a_get_that_computes_takes_a_slot_as_a_post_does() {
     drop(holding);
     assert_eq!(app.get("/v1/templates/p103-slider-flywheel/result/inertia_exact?F=1300").await.status, StatusCode::OK);
 }
+
+/// A body holds the bodies' budget only for what has arrived: POSTs whose
+/// bodies have not begun hold nothing, so another is served; a body that
+/// has arrived holds its bytes until it is whole, and one that would go
+/// beyond the budget waits, then is answered 503.
+#[tokio::test]
+async fn bodies_hold_their_budget_for_what_has_arrived() {
+    use http_body_util::channel::Channel;
+    let body = request("p103_slider").to_string();
+    let capacity = Capacity { bodies: body.len() + 100, wait: Duration::from_millis(200), ..Capacity::default() };
+    let admission = Admission::new(capacity);
+    let app = TestApp::new().await.reopened(|s| mechdyn::api::AppState { admission, ..s }).await;
+    let silent: Vec<_> = (0..10)
+        .map(|_| {
+            let (sender, nothing) = Channel::<bytes::Bytes>::new(1);
+            (sender, tokio::spawn(app.app.clone().oneshot(post("/v1/flywheel", Body::new(nothing)))))
+        })
+        .collect();
+    tokio::task::yield_now().await;
+    let served = app.post("/v1/flywheel", &request("p103_slider")).await;
+    assert_eq!(served.status, StatusCode::CREATED, "ten silent bodies held the budget: {}", served.text);
+    let (mut sender, arriving) = Channel::<bytes::Bytes>::new(1);
+    let first = tokio::spawn(app.app.clone().oneshot(post("/v1/flywheel", Body::new(arriving))));
+    sender.send_data(body.clone().into()).await.unwrap();
+    tokio::time::sleep(Duration::from_millis(20)).await;
+    let refused = app.post("/v1/flywheel", &request("p103_slider")).await;
+    assert_eq!(refused.status, StatusCode::SERVICE_UNAVAILABLE, "{}", refused.text);
+    assert!(refused.json()["detail"].as_str().unwrap().contains("request bodies"), "{}", refused.text);
+    drop(sender);
+    assert_eq!(first.await.unwrap().unwrap().status(), StatusCode::CREATED);
+    drop(silent);
+}

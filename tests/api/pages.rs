@@ -149,9 +149,24 @@ async fn markup_in_labels_and_names_stays_text() {
     }
     let page = app.get(&format!("/jobs/{id}")).await.text;
     assert!(page.contains("&lt;script&gt;alert(1)&lt;/script&gt;"), "the body's name as text");
-    // A label that would reverse the text after it ("evil" shown as "live") is refused at the POST
-    // (pages still show such a mark as U+FFFD in labels stored before this rule).
+    // A label that would reverse the text after it ("evil" shown as "live") is refused at the POST;
+    // one stored before that rule is shown with its mark as U+FFFD, not obeyed.
     let r = app.post("/v1/kinetostatics?label=%E2%80%AElive", &request("k1_offset_slider_crank")).await;
     assert_eq!(r.status, StatusCode::BAD_REQUEST, "{}", r.text);
     assert_eq!(r.json()["errors"][0]["parameter"], "label", "{}", r.text);
+    let store = mechdyn::store::Store::open(&app.url).await.unwrap();
+    let old = mechdyn::store::NewJob {
+        id: uuid::Uuid::new_v4().to_string(),
+        kind: "flywheel".into(),
+        created_at: "2026-11-01T00:00:00.000000Z".into(),
+        request: "{}".into(),
+        result: "{}".into(),
+        engine_us: 1,
+        engine_version: "0.1.0".into(),
+        request_key: None,
+        label: Some("\u{202E}live".into()),
+    };
+    store.insert(old).await.unwrap();
+    let home = app.get("/").await.text;
+    assert!(home.contains("\u{FFFD}live") && !home.contains('\u{202E}'), "the direction mark is shown, not obeyed");
 }

@@ -174,3 +174,48 @@ fn slow_readers_are_let_go_and_others_are_served() {
         assert!(took < Duration::from_secs(20), "let go after {took:?}");
     }
 }
+
+/// A client that takes its answer faster than the pace gets all of it,
+/// however slow beside loopback: here 4 times the minimal rate (set to
+/// 64 KiB/s), on a connection that buffers 64 KiB, a 3.5 MB answer over
+/// about 14 s. (The service's sockets hold at most 64 KiB unsent,
+/// `TCP_NOTSENT_LOWAT`, so that it sees such a reader's progress often; on
+/// loopback the kernel's send buffer stays small and wakes it often anyway,
+/// so this guards the rule, not that setting.)
+#[test]
+fn a_reader_above_the_pace_gets_its_whole_answer() {
+    let service = Service::start(&[("MECHDYN_CLIENT_MIN_RATE", "65536")]);
+    let port = service.1;
+    let mut large = request("p113_pulley");
+    large["samples"] = 25_000.into();
+    let (status, text) = http(port, "POST", "/v1/flywheel", &large.to_string()).unwrap();
+    assert_eq!(status, 201, "{text}");
+    let id = serde_json::from_str::<Value>(&text).unwrap()["id"].as_str().unwrap().to_string();
+    let rt = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+    let stream = rt.block_on(async {
+        let socket = tokio::net::TcpSocket::new_v4().unwrap();
+        socket.set_recv_buffer_size(64 << 10).unwrap();
+        socket.connect(([127, 0, 0, 1], port).into()).await.unwrap()
+    });
+    let mut s = stream.into_std().unwrap();
+    s.set_nonblocking(false).unwrap();
+    s.set_read_timeout(Some(Duration::from_secs(10))).unwrap();
+    write!(s, "GET /v1/jobs/{id} HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n").unwrap();
+    // 25.6 kB every 100 ms: 256 kB/s.
+    let mut raw = Vec::new();
+    loop {
+        let mut chunk = vec![0u8; 25_600];
+        match s.read(&mut chunk) {
+            Ok(0) => break,
+            Ok(n) => raw.extend_from_slice(&chunk[..n]),
+            Err(e) => panic!("the reader was let go after {} bytes: {e}", raw.len()),
+        }
+        std::thread::sleep(Duration::from_millis(100));
+    }
+    let answer = String::from_utf8_lossy(&raw);
+    let body = answer.split_once("\r\n\r\n").map(|(_, b)| b).unwrap_or_default();
+    assert!(body.len() > 2_000_000, "a large answer: {} bytes", body.len());
+    let job: Value =
+        serde_json::from_str(body).unwrap_or_else(|e| panic!("the answer ends early ({e}): {} bytes", body.len()));
+    assert_eq!(job["id"], id.as_str());
+}

@@ -5,7 +5,6 @@
 mod strict;
 mod words;
 
-use super::body::drain;
 use super::problem::{ApiError, FieldError};
 use axum::body::Body;
 use axum::extract::{FromRequest, Request};
@@ -60,13 +59,12 @@ impl<S: Send + Sync> FromRequest<S> for RawBody {
     }
 }
 
-/// The whole body if it is at most `limit` bytes; else the rest is read and
-/// discarded (within bounds, see [`drain`]) and the answer is 413, so that a
-/// client still sending reads it.
+/// The whole body if it is at most `limit` bytes; else 413 (the rest is
+/// drained by [`super::body::drain_unread`], so that a client still sending
+/// reads the answer).
 pub async fn read_within(body: Body, limit: usize) -> Result<Bytes, ApiError> {
     let announced = body.size_hint().exact();
     if announced.is_some_and(|n| n > limit as u64) {
-        drain(body, announced).await;
         return Err(ApiError::PayloadTooLarge(limit));
     }
     if announced.is_some() {
@@ -81,7 +79,6 @@ pub async fn read_within(body: Body, limit: usize) -> Result<Bytes, ApiError> {
         let frame = frame.map_err(|e| ApiError::MalformedJson(format!("the body could not be read: {e}")))?;
         if let Some(data) = frame.data_ref() {
             if buf.len() + data.len() > limit {
-                drain(body, None).await;
                 return Err(ApiError::PayloadTooLarge(limit));
             }
             buf.extend_from_slice(data);

@@ -102,7 +102,7 @@ pub fn error(e: ApiError) -> Response {
     let status = e.status();
     let details: Vec<String> = e.fields().iter().map(FieldError::describe).collect();
     let title = status.canonical_reason().unwrap_or("Error");
-    answer(
+    let mut response = answer(
         status,
         page(
             title,
@@ -113,5 +113,10 @@ pub fn error(e: ApiError) -> Response {
                 p { a href="/" { "Back to the jobs and templates" } }
             },
         ),
-    )
+    );
+    if status == StatusCode::UNAUTHORIZED {
+        // RFC 9110 (15.5.2): a 401 says which scheme it wants.
+        response.headers_mut().insert(header::WWW_AUTHENTICATE, HeaderValue::from_static("Bearer"));
+    }
+    response
 }
