@@ -71,3 +71,27 @@ async fn a_byte_order_mark_before_a_json_body_is_ignored() {
     let stored = app.get(&format!("/v1/jobs/{}", r.json()["id"].as_str().unwrap())).await;
     assert!(!stored.text.contains('\u{feff}'), "the mark was stored");
 }
+
+/// A client that asks `Expect: 100-continue` (curl does, for large bodies)
+/// waits for the answer before it sends its body: refused at once (401),
+/// it is told so at once, without a `100 Continue` asking it to send a
+/// body that is refused (reading the body to drain it would send one).
+#[test]
+fn a_client_that_waits_to_send_is_answered_at_once() {
+    use std::io::{Read, Write};
+    let dir = tempfile::tempdir().unwrap();
+    let port = crate::crash::free_port();
+    let db = format!("sqlite://{}/jobs.db", dir.path().display());
+    let mut child = crate::crash::start_with(&db, port, &[("MECHDYN_API_TOKEN", "t0ken")]);
+    let mut s = std::net::TcpStream::connect(("127.0.0.1", port)).unwrap();
+    s.set_read_timeout(Some(std::time::Duration::from_secs(5))).unwrap();
+    let head = "POST /v1/flywheel HTTP/1.1\r\nHost: localhost\r\nContent-Type: application/json\r\n\
+                Content-Length: 1000000\r\nExpect: 100-continue\r\n\r\n";
+    s.write_all(head.as_bytes()).unwrap();
+    let mut first = [0u8; 12];
+    let read = s.read_exact(&mut first);
+    child.kill().unwrap();
+    child.wait().unwrap();
+    read.expect("an answer within 5 s, the body unsent");
+    assert_eq!(&first, b"HTTP/1.1 401", "{}", String::from_utf8_lossy(&first));
+}
