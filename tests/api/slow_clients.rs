@@ -102,13 +102,13 @@ fn trickled_bodies_hold_no_slot_and_are_let_go() {
     }
 }
 
-/// A connection whose receive buffer is 4 KiB, so that the service's
+/// A connection whose receive buffer is `bytes`, so that the service's
 /// writes wait on it as on a slow network.
-fn narrow(port: u16) -> TcpStream {
+fn narrow(port: u16, bytes: u32) -> TcpStream {
     let rt = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
     let stream = rt.block_on(async {
         let socket = tokio::net::TcpSocket::new_v4().unwrap();
-        socket.set_recv_buffer_size(4096).unwrap();
+        socket.set_recv_buffer_size(bytes).unwrap();
         socket.connect(([127, 0, 0, 1], port).into()).await.unwrap()
     });
     let stream = stream.into_std().unwrap();
@@ -120,7 +120,7 @@ fn narrow(port: u16) -> TcpStream {
 /// service closed the connection, and how long it took (None: it was still
 /// open after `limit`).
 fn read_slowly(port: u16, path: &str, limit: Duration) -> (usize, Option<Duration>) {
-    let mut s = narrow(port);
+    let mut s = narrow(port, 4096);
     s.set_read_timeout(Some(Duration::from_secs(5))).unwrap();
     write!(s, "GET {path} HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n").unwrap();
     let started = Instant::now();
@@ -191,14 +191,7 @@ fn a_reader_above_the_pace_gets_its_whole_answer() {
     let (status, text) = http(port, "POST", "/v1/flywheel", &large.to_string()).unwrap();
     assert_eq!(status, 201, "{text}");
     let id = serde_json::from_str::<Value>(&text).unwrap()["id"].as_str().unwrap().to_string();
-    let rt = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
-    let stream = rt.block_on(async {
-        let socket = tokio::net::TcpSocket::new_v4().unwrap();
-        socket.set_recv_buffer_size(64 << 10).unwrap();
-        socket.connect(([127, 0, 0, 1], port).into()).await.unwrap()
-    });
-    let mut s = stream.into_std().unwrap();
-    s.set_nonblocking(false).unwrap();
+    let mut s = narrow(port, 64 << 10);
     s.set_read_timeout(Some(Duration::from_secs(10))).unwrap();
     write!(s, "GET /v1/jobs/{id} HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n").unwrap();
     // 25.6 kB every 100 ms: 256 kB/s.
