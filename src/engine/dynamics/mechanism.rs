@@ -18,7 +18,8 @@
 //! Redundant constraints, and the nearly dependent rows at a singular
 //! position, are handled by [`super::rows`]: those reactions are flagged.
 
-use super::equations::{Equations, kinetic, masses};
+pub(crate) mod equations;
+
 use super::range_space::RangeSpace;
 use super::{DynamicsError, DynamicsSolution, End, Integrator, Sample, Settings, energy_residual, run};
 use crate::engine::Deadline;
@@ -27,6 +28,7 @@ use crate::engine::kinematics::sweep;
 use crate::engine::kinetostatics::{Load, Reaction, potential, reactions};
 use crate::engine::mobility::{Mobility, mobility};
 use crate::engine::model::Mechanism;
+use equations::{Equations, kinetic, masses};
 use std::cell::RefCell;
 
 /// A validated mechanism problem in SI units.

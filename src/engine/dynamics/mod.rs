@@ -15,8 +15,6 @@
 //! reached in time; it fails with [`DynamicsError`] when the integration
 //! cannot go on or the compute budget runs out.
 
-mod energy_form;
-pub(crate) mod equations;
 pub mod mechanism;
 mod range_space;
 pub mod reduced;

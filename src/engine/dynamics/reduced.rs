@@ -11,7 +11,8 @@
 //! kinetic energy ΔT = ½I*ω² − ½I*₀ω₀². With actions of φ only, the
 //! events are also timed by the energy form ([`super::energy_form`]).
 
-use super::energy_form;
+mod energy_form;
+
 use super::{DynamicsError, DynamicsSolution, End, Integrator, Model, Sample, Settings, energy_residual, run};
 use crate::engine::Deadline;
 use crate::engine::function::{Function, Side};

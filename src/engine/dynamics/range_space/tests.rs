@@ -3,7 +3,7 @@
 
 use super::*;
 use crate::engine::constraints::{State, evaluate, evaluate_blocks};
-use crate::engine::dynamics::equations::masses;
+use crate::engine::dynamics::mechanism::equations::masses;
 use crate::engine::model::Mechanism;
 use crate::engine::samples::parallelogram_chain as chain;
 use nalgebra::{DMatrix, DVector};

@@ -12,8 +12,8 @@
 //! turns back. From rest (ω₀ = 0) 1/ω is singular at φ₀ like
 //! 1/√(φ − φ₀); the substitution φ = φ₀ + d·s² (d the direction) removes it.
 
-use super::Event;
-use super::reduced::ReducedProblem;
+use super::ReducedProblem;
+use crate::engine::dynamics::Event;
 use crate::engine::function::Side;
 use crate::engine::numeric::quadrature::integrate;
 

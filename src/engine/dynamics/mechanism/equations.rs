@@ -11,10 +11,10 @@
 //!   sparse form holds a combination and a sample asks which joints'
 //!   reactions are indeterminate.
 
-use super::mechanism::MechanismProblem;
-use super::range_space::RangeSpace;
-use super::rows::Rows;
+use super::MechanismProblem;
 use crate::engine::constraints::{State, evaluate, evaluate_blocks};
+use crate::engine::dynamics::range_space::RangeSpace;
+use crate::engine::dynamics::rows::Rows;
 use crate::engine::kinetostatics::{applied_forces, potential};
 use crate::engine::model::Mechanism;
 use nalgebra::{DMatrix, DVector};
@@ -241,7 +241,7 @@ impl Equations<'_> {
 }
 
 /// The ODE the integrator sees: y = (q, q̇, W).
-impl super::Model for Equations<'_> {
+impl crate::engine::dynamics::Model for Equations<'_> {
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
         let n = self.n;
         let (q, qd) = (&y[..n], &y[n..2 * n]);
@@ -281,6 +281,6 @@ pub(super) fn kinetic(mass: &[f64], qd: &[f64]) -> f64 {
 }
 
 /// The diagonal of M: m, m, I_G of every moving body.
-pub(super) fn masses(m: &Mechanism) -> Vec<f64> {
+pub(in crate::engine::dynamics) fn masses(m: &Mechanism) -> Vec<f64> {
     (0..m.n_coordinates()).map(|k| m.mass_of(k)).collect()
 }
