@@ -6,9 +6,9 @@
 //! fastest of several runs on this machine, no assertions. Writes
 //! docs/PLOTS.md.
 
-use mechdyn::api::Limits;
 use mechdyn::api::kind::{AnyKind, find};
 use mechdyn::api::plots::{Job, Options, svg};
+use mechdyn::kind::Limits;
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 use std::time::Instant;

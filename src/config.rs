@@ -1,9 +1,9 @@
 //! Command line and environment settings.
 
 use crate::api::Capacity;
-use crate::api::limits::{Limits, MAX_EXPRESSION_DEPTH};
 use crate::api::pace::Pace;
 use crate::api::retention::Policy;
+use crate::kind::limits::{Limits, MAX_EXPRESSION_DEPTH};
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
 use std::time::Duration;

@@ -9,6 +9,7 @@
 pub mod api;
 pub mod config;
 pub mod engine;
+pub mod kind;
 pub mod offline;
 pub mod store;
 pub mod units;

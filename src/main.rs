@@ -142,7 +142,7 @@ fn healthcheck(addr: &str) -> ExitCode {
 /// its output and a newline on stdout, or the problem on stderr (exit 2).
 fn offline(
     file: &std::path::Path,
-    run: impl FnOnce(String) -> Result<Vec<u8>, mechdyn::api::problem::ApiError>,
+    run: impl FnOnce(String) -> Result<Vec<u8>, mechdyn::kind::problem::ApiError>,
 ) -> ExitCode {
     let mut raw = String::new();
     let read = if file.as_os_str() == "-" {

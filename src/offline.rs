@@ -7,9 +7,10 @@
 
 use crate::api::check::{CheckRequest, check_job};
 use crate::api::create::Destination;
-use crate::api::problem::ApiError;
 use crate::api::templates::{self, Template, builtin};
-use crate::api::{AppState, Limits, json, kind, parts};
+use crate::api::{AppState, json, kind, parts};
+use crate::kind::Limits;
+use crate::kind::problem::ApiError;
 use crate::store::Store;
 use std::collections::HashMap;
 
@@ -18,7 +19,7 @@ use std::collections::HashMap;
 pub fn solve(kind: &str, raw: String, value: Option<&str>, unit: Option<&String>) -> Result<Vec<u8>, ApiError> {
     let Some(k) = kind::find(kind) else {
         let message = format!("unknown kind '{kind}' (known: {})", kind::names().join(", "));
-        return Err(ApiError::Invalid(vec![crate::api::problem::FieldError::at("", message)]));
+        return Err(ApiError::Invalid(vec![crate::kind::problem::FieldError::at("", message)]));
     };
     let result = k.solve(raw, &Limits::default())?;
     let Some(pointer) = value else { return Ok(result) };

@@ -36,7 +36,7 @@
 //! `Retry-After` is the time the jobs ahead would take at the recent mean
 //! time per job (an exponential average), at least 1 s.
 
-use super::problem::ApiError;
+use crate::kind::problem::ApiError;
 use std::collections::HashMap;
 use std::future::Future;
 use std::sync::atomic::{AtomicU64, Ordering};

@@ -4,38 +4,16 @@
 use super::AppState;
 use super::body::{Chunks, guarded};
 use super::job::job_chunks;
-use super::problem::{ApiError, FieldError};
+use crate::kind::problem::ApiError;
+use crate::kind::{JobResult, json_len, too_large};
 use crate::store::{JobRow, NewJob};
 use axum::body::Body;
 use axum::http::{StatusCode, header};
 use axum::response::{IntoResponse, Response};
 use bytes::Bytes;
-use serde::Serialize;
 use std::io;
 use std::time::Instant;
 use tokio::sync::OwnedSemaphorePermit;
-
-/// What sets the size of a result: the request field that says how many rows
-/// it has, how many it has, and what else the user can ask less of.
-pub struct Rows {
-    /// JSON pointer of the field in the request, e.g. `/input/steps`.
-    pub field: String,
-    /// Rows the result has (or would have).
-    pub count: usize,
-    /// Another way to shrink it, e.g. "or fewer outputs"; may be empty.
-    pub also: &'static str,
-}
-
-/// A job's result: serialisable, and saying which request field sets its size.
-pub trait JobResult: Serialize {
-    fn rows(&self) -> Option<Rows> {
-        None
-    }
-    /// The result's `warnings`, for the kinds that have them.
-    fn warnings(&mut self) -> Option<&mut Vec<String>> {
-        None
-    }
-}
 
 /// Runs `compute` once a compute slot is free (off the async workers unless
 /// its kind's jobs are short: [`super::admission`]), serialises its result
@@ -179,38 +157,6 @@ fn serialized<R: JobResult>(result: &R, limit: usize) -> Result<Bytes, ApiError>
     }
 }
 
-/// The 422 of a result of `bytes` (estimated before computing, or measured)
-/// over `limit`, saying how many rows would fit.
-pub fn too_large(bytes: usize, limit: usize, rows: Option<Rows>, estimated: bool) -> ApiError {
-    let would = if estimated { "would be about" } else { "would be" };
-    let size = format!(
-        "the result {would} {} ({bytes} bytes), over the limit of {} on a result (MECHDYN_MAX_RESULT_BYTES)",
-        human(bytes),
-        human(limit)
-    );
-    let error = match rows {
-        Some(Rows { field, count, also }) if count > 0 => {
-            let per_row = bytes as f64 / count as f64;
-            let fit = ((limit as f64 * 0.95) / per_row).floor() as usize;
-            let name = field.rsplit('/').next().unwrap_or("rows").to_string();
-            let advice = format!("at {} each, {name} ≤ {fit} would fit{}", human(per_row as usize), also);
-            FieldError::at(field, format!("{size}; {advice}"))
-        }
-        _ => FieldError::at("", size),
-    };
-    ApiError::ResultTooLarge { limit, errors: vec![error] }
-}
-
-/// Bytes for people: 16 MiB, 140.2 MB.
-fn human(bytes: usize) -> String {
-    match bytes {
-        b if b >= 1 << 20 && b % (1 << 20) == 0 => format!("{} MiB", b >> 20),
-        b if b >= 1_000_000 => format!("{:.1} MB", b as f64 / 1e6),
-        b if b >= 1_000 => format!("{:.1} kB", b as f64 / 1e3),
-        b => format!("{b} B"),
-    }
-}
-
 /// A buffer that refuses to grow beyond `limit`.
 struct Bounded {
     buf: Vec<u8>,
@@ -223,25 +169,6 @@ impl io::Write for Bounded {
             return Err(io::Error::other("over the limit on a result"));
         }
         self.buf.extend_from_slice(data);
-        Ok(data.len())
-    }
-    fn flush(&mut self) -> io::Result<()> {
-        Ok(())
-    }
-}
-
-/// Bytes of `value` as JSON, counted without keeping them.
-pub fn json_len<T: Serialize + ?Sized>(value: &T) -> usize {
-    let mut count = Counter(0);
-    serde_json::to_writer(&mut count, value).map_or(usize::MAX, |()| count.0)
-}
-
-/// Counts bytes written, keeps none.
-struct Counter(usize);
-
-impl io::Write for Counter {
-    fn write(&mut self, data: &[u8]) -> io::Result<usize> {
-        self.0 += data.len();
         Ok(data.len())
     }
     fn flush(&mut self) -> io::Result<()> {

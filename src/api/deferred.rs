@@ -24,7 +24,7 @@ use super::body::Chunks;
 use super::create::{Destination, now_rfc3339, rfc3339};
 use super::job::job_chunks;
 use super::kind;
-use super::problem::{ApiError, FieldError};
+use crate::kind::problem::{ApiError, FieldError};
 use crate::store::{Claimed, Queued};
 use axum::body::Body;
 use axum::http::{HeaderMap, HeaderValue, StatusCode, header};

@@ -1,11 +1,11 @@
 //! `POST /v1/equivalent-masses`: point masses equivalent to a rigid link.
 
-use super::kind::Kind;
-use super::limits::Limits;
-use super::problem::{ApiError, FieldError};
-use super::quantity::{Errors, Quantity};
-use super::validated;
 use crate::engine::equivalent::equivalent_masses;
+use crate::kind::Kind;
+use crate::kind::limits::Limits;
+use crate::kind::problem::{ApiError, FieldError};
+use crate::kind::quantity::{Errors, Quantity};
+use crate::kind::validated;
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
@@ -41,7 +41,7 @@ pub struct EquivalentResult {
     pub warnings: Vec<String>,
 }
 
-impl super::create::JobResult for EquivalentResult {}
+impl crate::kind::JobResult for EquivalentResult {}
 
 /// EquivalentMasses: `POST /v1/equivalent-masses`.
 pub struct EquivalentMasses;

@@ -5,7 +5,7 @@
 //! of the results and the list of kinds, from the registry ([`kind::KINDS`]).
 
 use super::kind::{self, AnyKind};
-use super::limits::Limits;
+use crate::kind::limits::Limits;
 use serde_json::{Value, json};
 
 /// Items kept of a long array in an example.

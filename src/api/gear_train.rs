@@ -1,12 +1,12 @@
 //! `POST /v1/gears/train`: speeds (Willis) and torques (virtual power) of an
 //! ordinary or epicyclic gear train.
 
-use super::kind::Kind;
-use super::limits::Limits;
-use super::problem::{ApiError, FieldError};
-use super::quantity::{Errors, Quantity};
-use super::validated;
 use crate::engine::gear_train::{Mesh, Train, TrainError};
+use crate::kind::Kind;
+use crate::kind::limits::Limits;
+use crate::kind::problem::{ApiError, FieldError};
+use crate::kind::quantity::{Errors, Quantity};
+use crate::kind::validated;
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
@@ -91,7 +91,7 @@ pub struct TrainResult {
     pub method: String,
 }
 
-impl super::create::JobResult for TrainResult {}
+impl crate::kind::JobResult for TrainResult {}
 
 /// GearTrain: `POST /v1/gears/train`.
 pub struct GearTrain;

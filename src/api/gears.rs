@@ -1,11 +1,11 @@
 //! `POST /v1/gears/geometry`: involute spur gear radii and tooth thickness.
 
-use super::kind::Kind;
-use super::limits::Limits;
-use super::problem::{ApiError, FieldError};
-use super::quantity::{Errors, Quantity};
-use super::validated;
 use crate::engine::gears::Gear;
+use crate::kind::Kind;
+use crate::kind::limits::Limits;
+use crate::kind::problem::{ApiError, FieldError};
+use crate::kind::quantity::{Errors, Quantity};
+use crate::kind::validated;
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
@@ -50,7 +50,7 @@ pub struct GearResult {
     pub warnings: Vec<String>,
 }
 
-impl super::create::JobResult for GearResult {}
+impl crate::kind::JobResult for GearResult {}
 
 /// Gears: `POST /v1/gears/geometry`.
 pub struct Gears;

@@ -15,8 +15,8 @@
 use super::AppState;
 use super::body::Chunks;
 use super::job::job_chunks;
-use super::problem::{ApiError, FieldError};
 use super::read::{self, READ_MEMORY_FACTOR};
+use crate::kind::problem::{ApiError, FieldError};
 use crate::store::Answer;
 use axum::body::Body;
 use axum::extract::Request;

@@ -46,7 +46,7 @@ pub struct Job {
     /// Why the job failed (a `failed` job's problem, as a POST answered at
     /// once would have answered it).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub problem: Option<super::problem::Problem>,
+    pub problem: Option<crate::kind::problem::Problem>,
     /// The engine's time: 0 until the job has been computed.
     pub timing: Timing,
     /// Version of mechdyn that computed the result.

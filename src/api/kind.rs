@@ -5,17 +5,17 @@
 //! document's examples, plots and pages) is written once over [`Kind`] and reaches every kind through
 //! the registry ([`KINDS`]), never through a `match` on a kind's name.
 
-use super::create::{Destination, JobResult};
+use super::create::Destination;
 use super::json::JsonBody;
-use super::limits::Limits;
-use super::problem::{ApiError, FieldError, PostErrors};
 use super::{AppState, dynamics, equivalent, flywheel, gear_train, gears, job, kinetostatics, plots, rotor};
+use crate::kind::limits::Limits;
+use crate::kind::problem::{ApiError, PostErrors};
+use crate::kind::{Kind, Table, compute};
 use crate::store::JobRow;
 use axum::extract::State;
 use axum::http::HeaderMap;
 use axum::response::Response;
 use bytes::Bytes;
-use serde::de::DeserializeOwned;
 use serde_json::Value;
 use std::marker::PhantomData;
 use tokio::sync::OwnedSemaphorePermit;
@@ -24,50 +24,6 @@ use utoipa::openapi::request_body::RequestBodyBuilder;
 use utoipa::openapi::{ContentBuilder, HeaderBuilder, Ref, Required, ResponseBuilder, ResponsesBuilder};
 use utoipa::{PartialSchema, ToSchema};
 use utoipa_axum::router::UtoipaMethodRouter;
-
-/// A table of a result: the header (names with units, e.g. `angle_rad`)
-/// and the rows, as text.
-pub type Table = (Vec<String>, Vec<Vec<String>>);
-
-/// The unit of a dimensionless number (a ratio, a count, an error estimate).
-pub const DIMENSIONLESS: &str = "1";
-
-/// One calculation kind of the service.
-pub trait Kind: Send + Sync + 'static {
-    /// The jobs' `kind`, e.g. `flywheel`.
-    const NAME: &'static str;
-    /// Path of the POST that creates its jobs.
-    const PATH: &'static str;
-    /// `operationId` of that POST.
-    const OPERATION_ID: &'static str;
-    /// OpenAPI tag.
-    const TAG: &'static str;
-    /// What the POST computes, in one line.
-    const SUMMARY: &'static str;
-    /// Units of the result's numbers: a JSON pointer pattern (`*` stands for
-    /// any index or key) and the unit, [`DIMENSIONLESS`] for a pure number.
-    const UNITS: &'static [(&'static str, &'static str)];
-    /// Its plots: how a stored job lists them and draws one ([`plots::NONE`]: no curve).
-    const PLOTS: plots::Plots = plots::NONE;
-    type Request: DeserializeOwned + ToSchema + Send + 'static;
-    type Result: JobResult + ToSchema + Send + 'static;
-
-    /// Validates (`unknown`: the body's unknown fields, reported with the
-    /// conversion's errors) and computes a request within `limits`.
-    fn compute(request: &Self::Request, unknown: Vec<FieldError>, limits: &Limits) -> Result<Self::Result, ApiError>;
-
-    /// The main table of a stored result, for CSV; None when it has none.
-    fn table(_result: &Value) -> Option<Table> {
-        None
-    }
-
-    /// The unit of the number at `pointer` (split into tokens) of `result`.
-    /// Kinds whose units depend on the request (a force or a torque drives
-    /// a mechanism) override this and fall back to [`unit_in`].
-    fn unit(_result: &Value, pointer: &[&str]) -> Option<String> {
-        unit_in(Self::UNITS, pointer).map(String::from)
-    }
-}
 
 /// The POST of every kind: its body read strictly, computed and stored
 /// ([`super::create::create`]), or deferred ([`super::deferred`]).
@@ -83,33 +39,6 @@ pub async fn post<K: Kind>(
     let limits = state.limits.clone();
     let request = raw.clone();
     super::create::create(&state, K::NAME, raw, move || compute::<K>(&value, unknown, &request, &limits)).await
-}
-
-/// Computes a request of kind `K` as every way in does (the POST, the CLI):
-/// [`Kind::compute`], then the warnings of the request as sent (`raw`),
-/// such as constants no expression reads.
-pub fn compute<K: Kind>(
-    request: &K::Request,
-    unknown: Vec<FieldError>,
-    raw: &[u8],
-    limits: &Limits,
-) -> Result<K::Result, ApiError> {
-    let mut result = K::compute(request, unknown, limits)?;
-    if let Some(warnings) = result.warnings() {
-        let sent = serde_json::from_slice::<Value>(raw).unwrap_or_default();
-        warnings.extend(super::constants::unused(&sent));
-    }
-    Ok(result)
-}
-
-/// The unit of `pointer` in a table of patterns.
-pub fn unit_in(units: &'static [(&'static str, &'static str)], pointer: &[&str]) -> Option<&'static str> {
-    units.iter().find(|(pattern, _)| matches(pattern, pointer)).map(|(_, u)| *u)
-}
-
-fn matches(pattern: &str, pointer: &[&str]) -> bool {
-    let tokens: Vec<&str> = pattern.split('/').skip(1).collect();
-    tokens.len() == pointer.len() && tokens.iter().zip(pointer).all(|(p, t)| *p == "*" || p == t)
 }
 
 /// A job computed and stored, with the memory of its answer reserved.

@@ -7,7 +7,7 @@
 //! key (a template's parameters, a check's reference) are shared between
 //! requests and carry no label.
 
-use super::problem::{ApiError, FieldError};
+use crate::kind::problem::{ApiError, FieldError};
 use axum::extract::{Query, Request};
 use axum::http::Method;
 use axum::middleware::Next;

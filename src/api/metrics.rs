@@ -173,6 +173,6 @@ pub async fn metrics(State(state): State<AppState>) -> Response {
     let waiting = tokio::time::timeout(Duration::from_secs(1), state.store.waiting()).await.ok().and_then(Result::ok);
     match state.metrics.text(&state.admission, waiting) {
         Ok(text) => ([(header::CONTENT_TYPE, prometheus::TEXT_FORMAT)], text).into_response(),
-        Err(e) => super::problem::ApiError::Internal(format!("metrics: {e}")).into_response(),
+        Err(e) => crate::kind::problem::ApiError::Internal(format!("metrics: {e}")).into_response(),
     }
 }

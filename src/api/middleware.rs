@@ -17,7 +17,7 @@ use super::body::{drain_unread, guarded};
 use super::idempotency::{InFlight, idempotent};
 use super::json::BodyLimit;
 use super::pace::{Pace, read_body};
-use super::problem::{ApiError, FieldError};
+use crate::kind::problem::{ApiError, FieldError};
 use axum::Router;
 use axum::extract::{DefaultBodyLimit, Request};
 use axum::http::{HeaderName, HeaderValue, Method, Version, header};

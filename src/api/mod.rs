@@ -7,15 +7,12 @@
 pub mod admission;
 pub mod body;
 pub mod check;
-pub mod constants;
 pub mod create;
 pub mod deferred;
 pub mod dynamics;
 pub mod equivalent;
 pub mod examples;
 pub mod flywheel;
-pub mod function_csv;
-pub mod function_read;
 pub mod gear_train;
 pub mod gears;
 pub mod idempotency;
@@ -25,7 +22,6 @@ pub mod json;
 pub mod kind;
 pub mod kinetostatics;
 pub mod label;
-pub mod limits;
 pub mod mechanism;
 pub mod metrics;
 pub mod middleware;
@@ -33,8 +29,6 @@ pub mod pace;
 pub mod pages;
 pub mod parts;
 pub mod plots;
-pub mod problem;
-pub mod quantity;
 pub mod read;
 pub mod retention;
 pub mod rotor;
@@ -42,14 +36,15 @@ pub mod service;
 pub mod tables;
 pub mod templates;
 
+use crate::kind::Limits;
+use crate::kind::problem::{ApiError, FieldError, Problem};
+use crate::kind::quantity;
 use crate::store::Store;
 pub use admission::{Admission, Capacity};
 use axum::Router;
 use axum::http::header;
 use axum::routing::get;
-pub use limits::Limits;
 pub use middleware::Settings;
-use problem::{ApiError, FieldError, Problem};
 use utoipa::OpenApi;
 use utoipa_axum::router::OpenApiRouter;
 use utoipa_swagger_ui::{Config, SwaggerUi};
@@ -221,43 +216,4 @@ pub fn router(state: AppState, settings: &Settings) -> Router {
         .method_not_allowed_fallback(|| async { ApiError::MethodNotAllowed })
         .with_state(state.clone());
     middleware::layered(routes, settings, state)
-}
-
-/// An engine error as a field error. Engine labels are JSON pointers; errors
-/// without a field of their own point at `fallback`.
-pub fn engine_error(e: crate::engine::EngineError, fallback: &str) -> FieldError {
-    use crate::engine::EngineError as E;
-    let pointer = match &e {
-        E::NotFinite { function, .. } | E::NegativeInertia { function, .. } => function.clone(),
-        E::NotSteady { .. }
-        | E::NewtonDiverged { .. }
-        | E::Singular { .. }
-        | E::FrictionDiverged { .. }
-        | E::DofMismatch { .. }
-        | E::Locked { .. }
-        | E::BudgetExceeded { .. } => fallback.into(),
-        E::NotFiniteResult => String::new(),
-    };
-    FieldError::at(pointer, e.to_string())
-}
-
-/// An engine error as the API's answer: over budget, or a 422 at its field.
-pub fn engine_failure(e: crate::engine::EngineError, fallback: &str) -> ApiError {
-    match e {
-        crate::engine::EngineError::BudgetExceeded { .. } => ApiError::OverBudget(e.to_string()),
-        e => ApiError::Invalid(vec![engine_error(e, fallback)]),
-    }
-}
-
-/// The converted problem, or every error: the body's unknown fields first,
-/// then those of the conversion.
-pub fn validated<T>(mut unknown: Vec<FieldError>, converted: Result<T, Vec<FieldError>>) -> Result<T, ApiError> {
-    match converted {
-        Ok(p) if unknown.is_empty() => Ok(p),
-        Ok(_) => Err(ApiError::Invalid(unknown)),
-        Err(more) => {
-            unknown.extend(more);
-            Err(ApiError::Invalid(unknown))
-        }
-    }
 }

@@ -22,7 +22,7 @@
 //! service, slowed nothing).
 
 use super::admission::Admission;
-use super::problem::ApiError;
+use crate::kind::problem::ApiError;
 use axum::body::Body;
 use bytes::{Bytes, BytesMut};
 use http_body_util::BodyExt;

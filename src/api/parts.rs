@@ -5,9 +5,9 @@
 use super::AppState;
 use super::body::guarded;
 use super::kind;
-use super::problem::{ApiError, FieldError, Problem, ReadErrors};
 use super::read::{query, result_tree, wants};
 use super::tables::{self, AngleUnit, Angles, Format, Values};
+use crate::kind::problem::{ApiError, FieldError, Problem, ReadErrors};
 use crate::store::JobRow;
 use axum::body::Body;
 use axum::extract::rejection::QueryRejection;
@@ -102,7 +102,7 @@ pub fn text_of(value: &Value, json: bool) -> (&'static str, String) {
     }
     let text = match value.as_f64() {
         Some(x) if !value.is_i64() && !value.is_u64() => tables::number_text(x),
-        _ => tables::cell(value),
+        _ => crate::kind::cell(value),
     };
     ("text/plain; charset=utf-8", text)
 }

@@ -2,7 +2,7 @@
 //! loaded, and the checks every read's query shares.
 
 use super::AppState;
-use super::problem::{ApiError, FieldError};
+use crate::kind::problem::{ApiError, FieldError};
 use crate::store::JobRow;
 use axum::extract::Query;
 use axum::extract::rejection::QueryRejection;

@@ -2,12 +2,12 @@
 //! two bearings — momentum, kinetic energy, driving and gyroscopic moments,
 //! and the bearing reactions (dynamic, static, total; rotating and fixed axes).
 
-use super::kind::Kind;
-use super::limits::Limits;
-use super::problem::{ApiError, FieldError};
-use super::quantity::{Errors, Quantity};
-use super::validated;
 use crate::engine::rotor::{Rotor, RotorState, Support};
+use crate::kind::Kind;
+use crate::kind::limits::Limits;
+use crate::kind::problem::{ApiError, FieldError};
+use crate::kind::quantity::{Errors, Quantity};
+use crate::kind::validated;
 use crate::units::Dim;
 use nalgebra::{Matrix3, Vector3};
 use serde::{Deserialize, Serialize};
@@ -120,7 +120,7 @@ pub struct RotorResult {
     pub method: String,
 }
 
-impl super::create::JobResult for RotorResult {}
+impl crate::kind::JobResult for RotorResult {}
 
 /// RigidRotor: `POST /v1/rotor`.
 pub struct RigidRotor;

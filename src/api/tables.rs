@@ -3,8 +3,10 @@
 //! kind's table or of those values, with angles in degrees on request.
 //! Written once for every kind through the registry ([`AnyKind`]).
 
-use super::kind::{AnyKind, DIMENSIONLESS, Table};
-use super::problem::{ApiError, FieldError};
+use super::kind::AnyKind;
+use crate::kind::cell;
+use crate::kind::problem::{ApiError, FieldError};
+use crate::kind::{DIMENSIONLESS, Table};
 use crate::units::{Dim, parse_unit};
 use serde::Serialize;
 use serde_json::Value;
@@ -165,30 +167,6 @@ pub fn values_csv(values: Vec<Scalar>, angles: Angles) -> Result<String, ApiErro
         vec![s.pointer, value, unit]
     });
     write_csv(std::iter::once(header).chain(rows))
-}
-
-/// A scalar as a CSV cell or a plain answer: text without quotes, null empty.
-pub fn cell(v: &Value) -> String {
-    match v {
-        Value::String(s) => s.clone(),
-        Value::Null => String::new(),
-        other => other.to_string(),
-    }
-}
-
-/// The `key` of each item of the list `list` of the first row that has
-/// it: the names of a table's repeated columns (joints, bodies).
-pub fn names(rows: &[Value], list: &str, key: &str) -> Vec<String> {
-    let first = rows.iter().find_map(|r| r[list].as_array());
-    first.into_iter().flatten().filter_map(|item| item[key].as_str().map(String::from)).collect()
-}
-
-/// The `fields` of each of `n` items of a list as cells (empty where the list is null).
-pub fn list(v: &Value, n: usize, fields: &[&str]) -> Vec<String> {
-    match v.as_array() {
-        Some(items) => items.iter().flat_map(|item| fields.iter().map(|f| cell(&item[*f]))).collect(),
-        None => vec![String::new(); n * fields.len()],
-    }
 }
 
 fn write_csv(records: impl Iterator<Item = Vec<String>>) -> Result<String, ApiError> {

@@ -3,11 +3,11 @@
 //! panic (proptest reports a panic as a failure, with the input shrunk).
 
 use crate::helpers::request;
-use mechdyn::api::Limits;
-use mechdyn::api::kind::Kind;
-use mechdyn::api::problem::ApiError;
 use mechdyn::api::{flywheel, json, kinetostatics};
 use mechdyn::engine::expr::Expr;
+use mechdyn::kind::Kind;
+use mechdyn::kind::Limits;
+use mechdyn::kind::problem::ApiError;
 use mechdyn::units::{Dim, parse_as, parse_quantity};
 use proptest::prelude::*;
 use serde_json::Value;

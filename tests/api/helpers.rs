@@ -66,11 +66,11 @@ impl TestApp {
     /// A fresh app whose jobs have this compute budget (and room for
     /// results of any size, so that the budget is what stops them).
     pub async fn with_job_budget(budget: std::time::Duration) -> Self {
-        Self::with_limits(mechdyn::api::Limits { budget, result_bytes: 1 << 30, ..Default::default() }).await
+        Self::with_limits(mechdyn::kind::Limits { budget, result_bytes: 1 << 30, ..Default::default() }).await
     }
 
     /// A fresh app with these limits on a request.
-    pub async fn with_limits(limits: mechdyn::api::Limits) -> Self {
+    pub async fn with_limits(limits: mechdyn::kind::Limits) -> Self {
         Self::new().await.reopened(|state| AppState { limits, ..state }).await
     }
 

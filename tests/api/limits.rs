@@ -65,8 +65,8 @@ async fn a_heavy_job_does_not_stall_the_health_check() {
 }
 
 /// Small limits, as an operator may configure them.
-fn tight() -> mechdyn::api::Limits {
-    mechdyn::api::Limits {
+fn tight() -> mechdyn::kind::Limits {
+    mechdyn::kind::Limits {
         steps: 10,
         samples: 5,
         table_rows: 3,

@@ -146,7 +146,7 @@ fn an_irregularity_that_overflows_the_inertia_is_refused_not_hung() {
         body["irregularity"] = json!(1e-308);
         let b = mechdyn::api::json::parse::<mechdyn::api::flywheel::FlywheelRequest>(body.to_string()).unwrap();
         let _ = done.send(
-            <mechdyn::api::flywheel::Flywheel as mechdyn::api::kind::Kind>::compute(
+            <mechdyn::api::flywheel::Flywheel as mechdyn::kind::Kind>::compute(
                 &b.value,
                 b.unknown,
                 &Default::default(),

@@ -4,11 +4,12 @@
 //! names the slip a wrong answer matches.
 
 use super::{CheckItem, ToleranceDto};
-use crate::api::kind::{AnyKind, DIMENSIONLESS};
-use crate::api::problem::FieldError;
+use crate::api::kind::AnyKind;
 use crate::api::tables::{self, Scalar};
 use crate::engine::grading::{self, Measure, Rule, Slip, Tolerance, Verdict};
 use crate::engine::variants::round_sig;
+use crate::kind::DIMENSIONLESS;
+use crate::kind::problem::FieldError;
 use crate::units::{Dim, UnitError, parse_as, parse_unit};
 use serde_json::Value;
 

@@ -14,11 +14,11 @@ pub use items::bare_number;
 pub use platforms::{Gradescope, PrairieLearn};
 pub use run::{CHECK, CheckKind, check_job, post};
 
-use super::create::JobResult;
 use super::json::escape;
-use super::kind::Table;
-use super::problem::{ApiError, FieldError};
 use super::tables;
+use crate::kind::JobResult;
+use crate::kind::Table;
+use crate::kind::problem::{ApiError, FieldError};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use std::collections::BTreeMap;
@@ -42,7 +42,7 @@ pub struct CheckRequest {
     pub template: Option<String>,
     /// The template's parameters by name: a number in the parameter's unit, or a quantity (`"300 rpm"`).
     #[serde(skip_serializing_if = "Option::is_none")]
-    #[schema(value_type = Option<BTreeMap<String, super::quantity::Quantity>>)]
+    #[schema(value_type = Option<BTreeMap<String, crate::kind::quantity::Quantity>>)]
     pub parameters: Option<BTreeMap<String, Value>>,
     /// A seeded variant of the template (`GET /v1/templates/{id}/variants` lists them), 0 to 2^63 − 1.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -59,7 +59,7 @@ pub struct CheckRequest {
     pub job: Option<String>,
     /// JSON pointer into the result (the leading `/` optional) → the answer:
     /// a number in SI or `"VALUE UNIT"` (e.g. `"260 slug*ft^2"`).
-    #[schema(value_type = BTreeMap<String, super::quantity::Quantity>)]
+    #[schema(value_type = BTreeMap<String, crate::kind::quantity::Quantity>)]
     pub answers: BTreeMap<String, Value>,
     /// The answers the score counts (pointers): one missing from `answers`
     /// fails as "no answer", so a student gains nothing by leaving one out.
@@ -119,7 +119,7 @@ pub struct CheckItem {
     #[schema(example = "/inertia_exact")]
     pub pointer: String,
     /// The answer as given.
-    #[schema(value_type = super::quantity::Quantity)]
+    #[schema(value_type = crate::kind::quantity::Quantity)]
     pub answer: Value,
     /// The answer in SI (`unit`); null when it could not be read.
     pub given: Option<f64>,
@@ -308,7 +308,7 @@ pub fn table(result: &Value) -> Option<Table> {
     let columns = ["pointer", "answer", "given", "expected", "unit", "relative_error", "pass", "slip", "feedback"];
     let rows = items
         .iter()
-        .map(|i| columns.iter().map(|c| i.get(*c).map_or_else(String::new, tables::cell)).collect())
+        .map(|i| columns.iter().map(|c| i.get(*c).map_or_else(String::new, crate::kind::cell)).collect())
         .collect();
     Some((columns.iter().map(|c| c.to_string()).collect(), rows))
 }

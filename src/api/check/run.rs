@@ -7,11 +7,12 @@
 use super::{CheckOutput, CheckRequest, at, grade, table, validate};
 use crate::api::create::Destination;
 use crate::api::json::{JsonBody, parse};
-use crate::api::kind::{self, AnyKind, StoredJob, Table, unit_in};
-use crate::api::limits::Limits;
-use crate::api::problem::{ApiError, FieldError};
+use crate::api::kind::{self, AnyKind, StoredJob};
 use crate::api::templates::{self, Held, RESERVED, Template};
 use crate::api::{AppState, create, job, read};
+use crate::kind::limits::Limits;
+use crate::kind::problem::{ApiError, FieldError};
+use crate::kind::{Table, unit_in};
 use crate::store::JobRow;
 use axum::extract::State;
 use axum::http::HeaderMap;

@@ -4,10 +4,10 @@
 use super::Initial;
 use crate::api::mechanism::MechanismDto;
 use crate::api::mechanism::{InputDto, Inputs, LoadDto, Name, ReactionDto, convert_loads, names};
-use crate::api::quantity::{Errors, FunctionDto};
 use crate::engine::dynamics::mechanism::MechanismSolution;
 use crate::engine::kinetostatics::Load;
 use crate::engine::model::{Driver, JointKind, Mechanism};
+use crate::kind::quantity::{Errors, FunctionDto};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;

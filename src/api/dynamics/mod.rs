@@ -4,16 +4,16 @@
 mod machine;
 mod result;
 
-use super::kind::{Kind, Table};
-use super::limits::Limits;
-use super::problem::{ApiError, FieldError};
-use super::quantity::{Errors, FunctionDto, Quantity};
-use super::{create, validated};
-use crate::api::constants::{self, Constants};
 use crate::engine::Deadline;
 use crate::engine::dynamics::mechanism::{self, MechanismProblem};
 use crate::engine::dynamics::{DynamicsError, End, Integrator, KEPT_BYTES, ReducedProblem, solve};
 use crate::engine::function::Function;
+use crate::kind::constants::{self, Constants};
+use crate::kind::limits::Limits;
+use crate::kind::problem::{ApiError, FieldError};
+use crate::kind::quantity::{Errors, FunctionDto, Quantity};
+use crate::kind::validated;
+use crate::kind::{Kind, Table};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;

@@ -1,9 +1,8 @@
 //! The `result` of a dynamics job, as stored and served, and its CSV table.
 
 use super::{IntegratorChoice, MachineDynamics};
-use crate::api::create;
-use crate::api::tables::{list, names};
 use crate::engine::dynamics::{DynamicsSolution, EventKind, KEPT_BYTES};
+use crate::kind::{list, names};
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
@@ -96,13 +95,13 @@ pub struct DynamicsResult {
     pub warnings: Vec<String>,
 }
 
-impl super::create::JobResult for DynamicsResult {
+impl crate::kind::JobResult for DynamicsResult {
     fn warnings(&mut self) -> Option<&mut Vec<String>> {
         Some(&mut self.warnings)
     }
-    fn rows(&self) -> Option<create::Rows> {
+    fn rows(&self) -> Option<crate::kind::Rows> {
         let (field, count) = ("/samples".into(), self.samples.len());
-        Some(create::Rows { field, count, also: " (events: one per turn, fewer with a shorter run)" })
+        Some(crate::kind::Rows { field, count, also: " (events: one per turn, fewer with a shorter run)" })
     }
 }
 

@@ -8,12 +8,12 @@ pub use result::{
     AccuracyDto, AreaDto, CSV_COLUMNS, CheckDto, DiskOut, FlywheelResult, InertiaPair, ItemWork, SampleDto, csv_table,
 };
 
-use super::kind::{Kind, Table};
-use super::limits::Limits;
-use super::problem::{ApiError, FieldError};
-use super::{engine_failure, validated};
 use crate::engine::Deadline;
 use crate::engine::flywheel::solve;
+use crate::kind::limits::Limits;
+use crate::kind::problem::{ApiError, FieldError};
+use crate::kind::{Kind, Table};
+use crate::kind::{engine_failure, validated};
 use serde_json::Value;
 
 /// Flywheel: `POST /v1/flywheel`.

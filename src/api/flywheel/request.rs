@@ -1,14 +1,14 @@
 //! `POST /v1/flywheel` request and its conversion into an engine problem.
 
-use crate::api::constants::{self, Constants};
-use crate::api::limits::Limits;
 use crate::api::mechanism::MechanismDto;
 use crate::api::mechanism::{InputDto, LoadDto, machine_parts};
-use crate::api::quantity::{Errors, FunctionDto, Quantity};
 use crate::engine::Deadline;
 use crate::engine::flywheel::{DiskSize, DiskSpec, FlywheelProblem, Load, TorqueItem};
 use crate::engine::function::Function;
 use crate::engine::machine::{Machine, Reduced, ReducedCurve};
+use crate::kind::constants::{self, Constants};
+use crate::kind::limits::Limits;
+use crate::kind::quantity::{Errors, FunctionDto, Quantity};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -128,7 +128,7 @@ impl FlywheelRequest {
         &self,
         limits: &Limits,
         deadline: Deadline,
-    ) -> Result<FlywheelProblem, Vec<crate::api::problem::FieldError>> {
+    ) -> Result<FlywheelProblem, Vec<crate::kind::problem::FieldError>> {
         let mut e = Errors::new(limits);
         constants::read(self.constants.as_ref(), &mut e);
         let period = match &self.period {

@@ -118,13 +118,13 @@ pub struct FlywheelResult {
     pub samples: Vec<SampleDto>,
 }
 
-impl crate::api::create::JobResult for FlywheelResult {
+impl crate::kind::JobResult for FlywheelResult {
     fn warnings(&mut self) -> Option<&mut Vec<String>> {
         Some(&mut self.warnings)
     }
-    fn rows(&self) -> Option<crate::api::create::Rows> {
+    fn rows(&self) -> Option<crate::kind::Rows> {
         let (field, count) = ("/samples".into(), self.samples.len());
-        Some(crate::api::create::Rows { field, count, also: " (0 for no table)" })
+        Some(crate::kind::Rows { field, count, also: " (0 for no table)" })
     }
 }
 

@@ -5,7 +5,7 @@
 mod strict;
 mod words;
 
-use super::problem::{ApiError, FieldError};
+use crate::kind::problem::{ApiError, FieldError};
 use axum::body::Body;
 use axum::extract::{FromRequest, Request};
 use axum::http::header;

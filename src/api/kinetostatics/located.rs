@@ -4,10 +4,10 @@
 //! `/input/end` for one further along the range).
 
 use crate::api::mechanism::InputDto;
-use crate::api::problem::{ApiError, FieldError};
-use crate::api::quantity::Quantity;
-use crate::api::{engine_error, engine_failure};
 use crate::engine::EngineError;
+use crate::kind::problem::{ApiError, FieldError};
+use crate::kind::quantity::Quantity;
+use crate::kind::{engine_error, engine_failure};
 use crate::units::{self, Dim};
 
 /// How the first input was written: where it is and in which unit.

@@ -7,13 +7,13 @@ mod result;
 pub use request::{KinetostaticsRequest, OutputKind};
 pub use result::{KinetostaticsResult, Scalars, StepDto, csv_table};
 
-use super::kind::{Kind, Table, unit_in};
-use super::limits::Limits;
 use super::mechanism::names;
-use super::problem::{ApiError, FieldError};
-use super::{create, validated};
 use crate::engine::Deadline;
 use crate::engine::kinetostatics::solve_each;
+use crate::kind::limits::Limits;
+use crate::kind::problem::{ApiError, FieldError};
+use crate::kind::validated;
+use crate::kind::{Kind, Table, unit_in};
 use serde_json::Value;
 
 /// Kinetostatics: `POST /v1/kinetostatics`.
@@ -129,11 +129,11 @@ fn compute(
 /// drawn position's round numbers, stands for the rest) and refuses the job
 /// before it is computed when that is over `limit`.
 fn refuse_if_too_large(first: KinetostaticsResult, steps: usize, limit: usize) -> Result<(), ApiError> {
-    let step = first.steps.get(1).map_or(0, |s| create::json_len(s) + 1);
-    let estimate = create::json_len(&first) + step * (steps - 2);
+    let step = first.steps.get(1).map_or(0, |s| crate::kind::json_len(s) + 1);
+    let estimate = crate::kind::json_len(&first) + step * (steps - 2);
     if estimate <= limit {
         return Ok(());
     }
-    let rows = create::JobResult::rows(&first).map(|r| create::Rows { count: steps, ..r });
-    Err(create::too_large(estimate, limit, rows, true))
+    let rows = crate::kind::JobResult::rows(&first).map(|r| crate::kind::Rows { count: steps, ..r });
+    Err(crate::kind::too_large(estimate, limit, rows, true))
 }

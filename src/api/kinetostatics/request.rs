@@ -1,14 +1,14 @@
 //! `POST /v1/kinetostatics` request and its conversion into an engine problem.
 
 use super::located::Written;
-use crate::api::constants::{self, Constants};
-use crate::api::limits::Limits;
 use crate::api::mechanism::{InputDto, Inputs, LoadDto, MechanismDto, convert_loads};
-use crate::api::problem::FieldError;
-use crate::api::quantity::{Errors, Quantity};
 use crate::engine::function::{Function, Side};
 use crate::engine::kinetostatics::{Load, Outputs};
 use crate::engine::model::{Driver, JointKind, Mechanism};
+use crate::kind::constants::{self, Constants};
+use crate::kind::limits::Limits;
+use crate::kind::problem::FieldError;
+use crate::kind::quantity::{Errors, Quantity};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;

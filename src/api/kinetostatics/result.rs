@@ -2,8 +2,8 @@
 
 use super::request::Problem;
 use crate::api::mechanism::{Name, ReactionDto};
-use crate::api::tables::{cell, list, names};
 use crate::engine::kinetostatics::{Motion, Reaction, Step, Totals};
+use crate::kind::{cell, list, names};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use std::collections::BTreeMap;
@@ -136,14 +136,14 @@ pub struct KinetostaticsResult {
     pub warnings: Vec<String>,
 }
 
-impl crate::api::create::JobResult for KinetostaticsResult {
+impl crate::kind::JobResult for KinetostaticsResult {
     fn warnings(&mut self) -> Option<&mut Vec<String>> {
         Some(&mut self.warnings)
     }
-    fn rows(&self) -> Option<crate::api::create::Rows> {
+    fn rows(&self) -> Option<crate::kind::Rows> {
         let field = if self.inputs.len() > 1 { "/input/0/steps" } else { "/input/steps" };
         let also = "; or ask for fewer \"outputs\" (every body's kinematics is the largest)";
-        Some(crate::api::create::Rows { field: field.into(), count: self.steps.len(), also })
+        Some(crate::kind::Rows { field: field.into(), count: self.steps.len(), also })
     }
 }
 

@@ -3,9 +3,9 @@
 
 use super::MechanismDto;
 use super::loads::{LoadDto, convert_loads};
-use crate::api::quantity::{Errors, FunctionDto, Quantity};
 use crate::engine::kinetostatics::Load;
 use crate::engine::model::{Driver, JointKind, Mechanism};
+use crate::kind::quantity::{Errors, FunctionDto, Quantity};
 use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
 use std::fmt;

@@ -1,8 +1,8 @@
 //! Loads of a mechanism: wire form and conversion into engine loads.
 
 use crate::api::mechanism::{MechanismDto, PointRef, body_id};
-use crate::api::quantity::{Errors, FunctionDto, Quantity};
 use crate::engine::kinetostatics::Load;
+use crate::kind::quantity::{Errors, FunctionDto, Quantity};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;

@@ -9,8 +9,8 @@ pub use inputs::{InputDto, Inputs, machine_parts};
 pub use loads::{LoadDto, LoadType, MAX_LOADS, convert_loads};
 pub use reactions::{Name, ReactionDto, names};
 
-use super::quantity::{Errors, Quantity};
 use crate::engine::model::{Body, BodyId, Friction, Joint, JointKind, Mechanism, Pitch};
+use crate::kind::quantity::{Errors, Quantity};
 use crate::units::Dim;
 use serde::de::{self, Deserializer, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};

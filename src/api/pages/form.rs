@@ -6,8 +6,8 @@
 
 use super::{IdPath, layout, query_of};
 use crate::api::AppState;
-use crate::api::problem::{ApiError, FieldError};
 use crate::api::templates::{self, Parameter, Template};
+use crate::kind::problem::{ApiError, FieldError};
 use crate::units::parse_unit;
 use axum::extract::rejection::QueryRejection;
 use axum::extract::{Query, State};
@@ -104,7 +104,7 @@ fn form(t: &Template, given: &HashMap<String, String>, error: Option<&ApiError>)
 fn hint(p: &Parameter) -> String {
     let unit = p.unit.as_deref().map_or(String::new(), |u| format!(" {u}"));
     let range = match (p.min, p.max, &p.choices) {
-        (_, _, Some(c)) => format!("one of {}", c.iter().map(crate::api::tables::cell).collect::<Vec<_>>().join(", ")),
+        (_, _, Some(c)) => format!("one of {}", c.iter().map(crate::kind::cell).collect::<Vec<_>>().join(", ")),
         (Some(a), Some(b), None) => format!("from {a} to {b}{unit}"),
         (Some(a), None, None) => format!("at least {a}{unit}"),
         (None, Some(b), None) => format!("at most {b}{unit}"),

@@ -3,7 +3,7 @@
 //! answer's headers (a Content-Security-Policy that allows no script and
 //! nothing from elsewhere). maud escapes every text put in a page.
 
-use crate::api::problem::{ApiError, FieldError};
+use crate::kind::problem::{ApiError, FieldError};
 use axum::http::{HeaderValue, StatusCode, header};
 use axum::response::{IntoResponse, Response};
 use maud::{DOCTYPE, Markup, PreEscaped, html};

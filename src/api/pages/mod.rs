@@ -9,8 +9,8 @@ pub mod job;
 mod layout;
 
 use super::AppState;
-use super::problem::ApiError;
 use super::templates::builtin;
+use crate::kind::problem::ApiError;
 use crate::store::Status;
 use axum::extract::rejection::QueryRejection;
 use axum::extract::{Path, Query, State};
@@ -91,7 +91,8 @@ pub async fn favicon() -> StatusCode {
 
 /// The query of a page, or its error.
 fn query_of(q: Result<Query<HashMap<String, String>>, QueryRejection>) -> Result<HashMap<String, String>, ApiError> {
-    q.map(|Query(q)| q).map_err(|e| ApiError::BadQuery(vec![super::problem::FieldError::parameter("", e.body_text())]))
+    q.map(|Query(q)| q)
+        .map_err(|e| ApiError::BadQuery(vec![crate::kind::problem::FieldError::parameter("", e.body_text())]))
 }
 
 /// The job page's route and the form's take their id from the path.

@@ -2,8 +2,8 @@
 //! work, W(φ) with ΔE, ω(φ) over the cycle, and Wittenbauer's diagram W
 //! against I* with the two tangents that give the exact inertia.
 
-use super::chart::{Arrow, Axis, Chart, Fill, Level, Listed, Pen};
 use super::{Drawn, Job, Options, deg, num, rows, sig, xy};
+use crate::kind::chart::{Arrow, Axis, Chart, Fill, Level, Listed, Pen};
 use serde_json::Value;
 
 const PLOTS: [(&str, &str); 4] = [
@@ -87,7 +87,7 @@ fn torque(job: &Job, title: String) -> Chart {
         c.fills.push(Fill { points: polygon, color: if w >= 0.0 { 2 } else { 1 }, opacity: 0.25 });
         let peak = inside.iter().copied().max_by(|p, q| (p.1 - level).abs().total_cmp(&(q.1 - level).abs()));
         let at = peak.map_or(((from + to) / 2.0, level), |p| ((from + to) / 2.0, (p.1 + level) / 2.0));
-        c.marks.push(super::chart::Mark {
+        c.marks.push(crate::kind::chart::Mark {
             at,
             text: format!("A{} = {}{} J", k + 1, if w > 0.0 { "+" } else { "" }, sig(w)),
             dot: false,

@@ -8,8 +8,8 @@
 //! the half angle ψ(ρ) = s/(2r) + inv α − inv α_ρ from the tooth's axis,
 //! cos α_ρ = r_b/ρ.
 
-use super::chart::{Axis, Chart, Level, Listed, Pen};
 use super::{Drawn, Job, Options, deg, num, rows, sig};
+use crate::kind::chart::{Axis, Chart, Level, Listed, Pen};
 use serde_json::Value;
 use std::f64::consts::FRAC_PI_2;
 

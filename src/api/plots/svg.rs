@@ -6,7 +6,7 @@
 //! pixels can show (the smallest and largest value of every pixel column
 //! kept, so no peak is lost).
 
-use super::chart::{Chart, Level, Line, Pen};
+use crate::kind::chart::{Chart, Level, Line, Pen};
 use plotters::coord::Shift;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;

@@ -4,7 +4,7 @@
 //! key, under which the job it gives is stored and found again.
 
 use super::model::{Parameter, Template};
-use crate::api::problem::{ApiError, FieldError};
+use crate::kind::problem::{ApiError, FieldError};
 use crate::units::{Dim, parse_quantity, parse_unit};
 use serde_json::Value;
 use sha2::{Digest, Sha256};
@@ -38,7 +38,7 @@ pub fn request_for(t: &Template, given: &HashMap<String, String>, ignore: &[&str
 /// Parameters given as JSON (a study's row, a drawn variant, a check's
 /// `parameters`) as the texts a query string would carry them in.
 pub fn texts(parameters: &BTreeMap<String, Value>) -> HashMap<String, String> {
-    parameters.iter().map(|(k, v)| (k.clone(), crate::api::tables::cell(v))).collect()
+    parameters.iter().map(|(k, v)| (k.clone(), crate::kind::cell(v))).collect()
 }
 
 /// The JSON value of a parameter given as `text`: SI when the parameter has

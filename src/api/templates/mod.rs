@@ -23,8 +23,8 @@ use super::job::job_chunks;
 use super::json::{JsonBody, RawBody};
 use super::kind::{self, AnyKind};
 use super::parts;
-use super::problem::{ApiError, FieldError, Problem, ReadErrors};
 use super::read;
+use crate::kind::problem::{ApiError, FieldError, Problem, ReadErrors};
 use crate::store::JobRow;
 use axum::body::Body;
 use axum::extract::rejection::QueryRejection;
@@ -195,7 +195,7 @@ fn parameters(q: Result<Query<HashMap<String, String>>, QueryRejection>) -> Resu
         (status = 201, description = "Template stored", body = Template,
             headers(("Location" = String, description = "/v1/templates/{id}"))),
         (status = 409, description = "A template of this name exists", body = Problem, content_type = "application/problem+json"),
-        super::problem::PostErrors,
+        crate::kind::problem::PostErrors,
     ))]
 pub async fn create(State(state): State<AppState>, body: JsonBody<NewTemplate>) -> Result<Response, ApiError> {
     let JsonBody { value, unknown, .. } = body;

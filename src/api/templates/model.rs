@@ -3,7 +3,7 @@
 //! by name. The built-in ones are the course's problems, kept in the
 //! repository's `library/` folder and compiled into the binary.
 
-use crate::api::problem::{ApiError, FieldError};
+use crate::kind::problem::{ApiError, FieldError};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use std::collections::BTreeMap;

@@ -6,8 +6,9 @@
 use super::model::Template;
 use super::{RESERVED, Want, job_for};
 use crate::api::AppState;
-use crate::api::problem::{ApiError, FieldError};
-use crate::api::tables::{Csv, at, cell, tokens};
+use crate::api::tables::{Csv, at, tokens};
+use crate::kind::cell;
+use crate::kind::problem::{ApiError, FieldError};
 use axum::http::{HeaderMap, header};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;

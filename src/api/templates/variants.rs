@@ -6,9 +6,10 @@
 use super::model::{Parameter, Template};
 use super::table::{bad, run};
 use crate::api::AppState;
-use crate::api::problem::ApiError;
-use crate::api::tables::{Csv, cell};
+use crate::api::tables::Csv;
 use crate::engine::variants::{Draw, Range, variant};
+use crate::kind::cell;
+use crate::kind::problem::ApiError;
 use serde::Serialize;
 use serde_json::Value;
 use std::collections::{BTreeMap, HashMap};

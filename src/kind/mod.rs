@@ -1,0 +1,232 @@
+//! The contract between the calculation kinds (`crate::kinds`) and the
+//! service (`crate::api`): what a kind is ([`Kind`]) and the types both
+//! wings share — problems and field errors ([`problem`]), quantities and
+//! Functions as read from the wire ([`quantity`], [`function_read`],
+//! [`function_csv`], [`constants`]), the limits a request is checked
+//! against ([`limits`]), tables, and charts as data ([`chart`], [`plots`]).
+//! A kind is written against this module only; the service reaches every
+//! kind through it and the registry it is handed, never by a kind's name.
+
+pub mod chart;
+pub mod constants;
+pub mod function_csv;
+pub mod function_read;
+pub mod limits;
+pub mod plots;
+pub mod problem;
+pub mod quantity;
+
+pub use limits::Limits;
+use problem::{ApiError, FieldError};
+use serde::Serialize;
+use serde::de::DeserializeOwned;
+use serde_json::Value;
+use std::io;
+use utoipa::ToSchema;
+
+/// A table of a result: the header (names with units, e.g. `angle_rad`)
+/// and the rows, as text.
+pub type Table = (Vec<String>, Vec<Vec<String>>);
+
+/// The unit of a dimensionless number (a ratio, a count, an error estimate).
+pub const DIMENSIONLESS: &str = "1";
+
+/// One calculation kind of the service.
+pub trait Kind: Send + Sync + 'static {
+    /// The jobs' `kind`, e.g. `flywheel`.
+    const NAME: &'static str;
+    /// Path of the POST that creates its jobs.
+    const PATH: &'static str;
+    /// `operationId` of that POST.
+    const OPERATION_ID: &'static str;
+    /// OpenAPI tag.
+    const TAG: &'static str;
+    /// What the POST computes, in one line.
+    const SUMMARY: &'static str;
+    /// Units of the result's numbers: a JSON pointer pattern (`*` stands for
+    /// any index or key) and the unit, [`DIMENSIONLESS`] for a pure number.
+    const UNITS: &'static [(&'static str, &'static str)];
+    /// Its plots: how a stored job lists them and draws one ([`plots::NONE`]: no curve).
+    const PLOTS: plots::Plots = plots::NONE;
+    type Request: DeserializeOwned + ToSchema + Send + 'static;
+    type Result: JobResult + ToSchema + Send + 'static;
+
+    /// Validates (`unknown`: the body's unknown fields, reported with the
+    /// conversion's errors) and computes a request within `limits`.
+    fn compute(request: &Self::Request, unknown: Vec<FieldError>, limits: &Limits) -> Result<Self::Result, ApiError>;
+
+    /// The main table of a stored result, for CSV; None when it has none.
+    fn table(_result: &Value) -> Option<Table> {
+        None
+    }
+
+    /// The unit of the number at `pointer` (split into tokens) of `result`.
+    /// Kinds whose units depend on the request (a force or a torque drives
+    /// a mechanism) override this and fall back to [`unit_in`].
+    fn unit(_result: &Value, pointer: &[&str]) -> Option<String> {
+        unit_in(Self::UNITS, pointer).map(String::from)
+    }
+}
+
+/// Computes a request of kind `K` as every way in does (the POST, the CLI):
+/// [`Kind::compute`], then the warnings of the request as sent (`raw`),
+/// such as constants no expression reads.
+pub fn compute<K: Kind>(
+    request: &K::Request,
+    unknown: Vec<FieldError>,
+    raw: &[u8],
+    limits: &Limits,
+) -> Result<K::Result, ApiError> {
+    let mut result = K::compute(request, unknown, limits)?;
+    if let Some(warnings) = result.warnings() {
+        let sent = serde_json::from_slice::<Value>(raw).unwrap_or_default();
+        warnings.extend(crate::kind::constants::unused(&sent));
+    }
+    Ok(result)
+}
+
+/// The unit of `pointer` in a table of patterns.
+pub fn unit_in(units: &'static [(&'static str, &'static str)], pointer: &[&str]) -> Option<&'static str> {
+    units.iter().find(|(pattern, _)| matches(pattern, pointer)).map(|(_, u)| *u)
+}
+
+fn matches(pattern: &str, pointer: &[&str]) -> bool {
+    let tokens: Vec<&str> = pattern.split('/').skip(1).collect();
+    tokens.len() == pointer.len() && tokens.iter().zip(pointer).all(|(p, t)| *p == "*" || p == t)
+}
+
+/// What sets the size of a result: the request field that says how many rows
+/// it has, how many it has, and what else the user can ask less of.
+pub struct Rows {
+    /// JSON pointer of the field in the request, e.g. `/input/steps`.
+    pub field: String,
+    /// Rows the result has (or would have).
+    pub count: usize,
+    /// Another way to shrink it, e.g. "or fewer outputs"; may be empty.
+    pub also: &'static str,
+}
+
+/// A job's result: serialisable, and saying which request field sets its size.
+pub trait JobResult: Serialize {
+    fn rows(&self) -> Option<Rows> {
+        None
+    }
+    /// The result's `warnings`, for the kinds that have them.
+    fn warnings(&mut self) -> Option<&mut Vec<String>> {
+        None
+    }
+}
+
+/// The 422 of a result of `bytes` (estimated before computing, or measured)
+/// over `limit`, saying how many rows would fit.
+pub fn too_large(bytes: usize, limit: usize, rows: Option<Rows>, estimated: bool) -> ApiError {
+    let would = if estimated { "would be about" } else { "would be" };
+    let size = format!(
+        "the result {would} {} ({bytes} bytes), over the limit of {} on a result (MECHDYN_MAX_RESULT_BYTES)",
+        human(bytes),
+        human(limit)
+    );
+    let error = match rows {
+        Some(Rows { field, count, also }) if count > 0 => {
+            let per_row = bytes as f64 / count as f64;
+            let fit = ((limit as f64 * 0.95) / per_row).floor() as usize;
+            let name = field.rsplit('/').next().unwrap_or("rows").to_string();
+            let advice = format!("at {} each, {name} ≤ {fit} would fit{}", human(per_row as usize), also);
+            FieldError::at(field, format!("{size}; {advice}"))
+        }
+        _ => FieldError::at("", size),
+    };
+    ApiError::ResultTooLarge { limit, errors: vec![error] }
+}
+
+/// Bytes for people: 16 MiB, 140.2 MB.
+fn human(bytes: usize) -> String {
+    match bytes {
+        b if b >= 1 << 20 && b % (1 << 20) == 0 => format!("{} MiB", b >> 20),
+        b if b >= 1_000_000 => format!("{:.1} MB", b as f64 / 1e6),
+        b if b >= 1_000 => format!("{:.1} kB", b as f64 / 1e3),
+        b => format!("{b} B"),
+    }
+}
+
+/// Bytes of `value` as JSON, counted without keeping them.
+pub fn json_len<T: Serialize + ?Sized>(value: &T) -> usize {
+    let mut count = Counter(0);
+    serde_json::to_writer(&mut count, value).map_or(usize::MAX, |()| count.0)
+}
+
+/// Counts bytes written, keeps none.
+struct Counter(usize);
+
+impl io::Write for Counter {
+    fn write(&mut self, data: &[u8]) -> io::Result<usize> {
+        self.0 += data.len();
+        Ok(data.len())
+    }
+    fn flush(&mut self) -> io::Result<()> {
+        Ok(())
+    }
+}
+
+/// A scalar as a CSV cell or a plain answer: text without quotes, null empty.
+pub fn cell(v: &Value) -> String {
+    match v {
+        Value::String(s) => s.clone(),
+        Value::Null => String::new(),
+        other => other.to_string(),
+    }
+}
+
+/// The `key` of each item of the list `list` of the first row that has
+/// it: the names of a table's repeated columns (joints, bodies).
+pub fn names(rows: &[Value], list: &str, key: &str) -> Vec<String> {
+    let first = rows.iter().find_map(|r| r[list].as_array());
+    first.into_iter().flatten().filter_map(|item| item[key].as_str().map(String::from)).collect()
+}
+
+/// The `fields` of each of `n` items of a list as cells (empty where the list is null).
+pub fn list(v: &Value, n: usize, fields: &[&str]) -> Vec<String> {
+    match v.as_array() {
+        Some(items) => items.iter().flat_map(|item| fields.iter().map(|f| cell(&item[*f]))).collect(),
+        None => vec![String::new(); n * fields.len()],
+    }
+}
+
+/// An engine error as a field error. Engine labels are JSON pointers; errors
+/// without a field of their own point at `fallback`.
+pub fn engine_error(e: crate::engine::EngineError, fallback: &str) -> FieldError {
+    use crate::engine::EngineError as E;
+    let pointer = match &e {
+        E::NotFinite { function, .. } | E::NegativeInertia { function, .. } => function.clone(),
+        E::NotSteady { .. }
+        | E::NewtonDiverged { .. }
+        | E::Singular { .. }
+        | E::FrictionDiverged { .. }
+        | E::DofMismatch { .. }
+        | E::Locked { .. }
+        | E::BudgetExceeded { .. } => fallback.into(),
+        E::NotFiniteResult => String::new(),
+    };
+    FieldError::at(pointer, e.to_string())
+}
+
+/// An engine error as the API's answer: over budget, or a 422 at its field.
+pub fn engine_failure(e: crate::engine::EngineError, fallback: &str) -> ApiError {
+    match e {
+        crate::engine::EngineError::BudgetExceeded { .. } => ApiError::OverBudget(e.to_string()),
+        e => ApiError::Invalid(vec![engine_error(e, fallback)]),
+    }
+}
+
+/// The converted problem, or every error: the body's unknown fields first,
+/// then those of the conversion.
+pub fn validated<T>(mut unknown: Vec<FieldError>, converted: Result<T, Vec<FieldError>>) -> Result<T, ApiError> {
+    match converted {
+        Ok(p) if unknown.is_empty() => Ok(p),
+        Ok(_) => Err(ApiError::Invalid(unknown)),
+        Err(more) => {
+            unknown.extend(more);
+            Err(ApiError::Invalid(unknown))
+        }
+    }
+}

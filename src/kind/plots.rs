@@ -1,0 +1,132 @@
+//! Plots as data: what a kind hands the service to draw. A kind lists the
+//! plots a stored job has and builds each as a [`Chart`] from the stored
+//! result (and the stored request where the geometry lives); the service
+//! renders every chart the same way. The helpers read a stored result's
+//! rows and series.
+
+use super::chart::{self, Chart, Listed};
+use super::problem::{ApiError, FieldError};
+use serde_json::Value;
+use std::collections::HashMap;
+
+/// A kind's plots: how a stored job lists them and how one is drawn.
+#[derive(Clone, Copy)]
+pub struct Plots {
+    pub list: fn(&Job) -> Vec<Listed>,
+    pub draw: fn(&Job, &str, &Options) -> Drawn,
+}
+
+/// A kind without curves.
+pub const NONE: Plots = Plots { list: |_| Vec::new(), draw: |_, _, _| Ok(None) };
+
+/// A stored job as the plots read it.
+pub struct Job<'a> {
+    pub request: &'a Value,
+    pub result: &'a Value,
+}
+
+/// What a plot's query may choose.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Options {
+    /// The step (kinetostatics) or sample (dynamics) a drawing of the mechanism shows.
+    pub step: Option<usize>,
+}
+
+/// What a kind's `plot` answers: the chart, none of that name, or a 400.
+pub type Drawn = Result<Option<Chart>, ApiError>;
+
+/// A step beyond the result's `count` steps, as a 400 at `?step=`.
+pub fn no_step(step: usize, count: usize) -> ApiError {
+    let message = match count {
+        0 => format!("{step}: this job draws no mechanism, so it has no steps to choose"),
+        1 => format!("{step}: the job has 1 step (0)"),
+        n => format!("{step}: the job has {n} steps (0 to {})", n - 1),
+    };
+    ApiError::BadQuery(vec![FieldError::parameter("step", message)])
+}
+
+/// The number at `key` of `row`.
+pub fn num(row: &Value, key: &str) -> Option<f64> {
+    row.get(key).and_then(Value::as_f64)
+}
+
+/// The rows of the array at `key` of `v`.
+pub fn rows<'a>(v: &'a Value, key: &str) -> &'a [Value] {
+    v.get(key).and_then(Value::as_array).map_or(&[], Vec::as_slice)
+}
+
+/// (x, y) of every row where both are numbers.
+pub fn xy(rows: &[Value], x: impl Fn(&Value) -> Option<f64>, y: impl Fn(&Value) -> Option<f64>) -> Vec<(f64, f64)> {
+    rows.iter().filter_map(|r| Some((x(r)?, y(r)?))).collect()
+}
+
+/// A joint's reaction over the rows: its name, the bodies it acts on and
+/// by, and (x, f_x, f_y) wherever it is determinate.
+pub struct Series {
+    pub joint: String,
+    pub on: String,
+    pub by: String,
+    pub points: Vec<(f64, f64, f64)>,
+}
+
+/// Every joint's reaction over the rows (each row's `reactions`, x from
+/// `x`), in one pass; joints in the order first met.
+pub fn reaction_series(rows: &[Value], x: impl Fn(&Value) -> Option<f64>) -> Vec<Series> {
+    let mut out: Vec<Series> = Vec::new();
+    let mut index: HashMap<String, usize> = HashMap::new();
+    let text = |r: &Value, k: &str| r.get(k).and_then(Value::as_str).unwrap_or("").to_string();
+    for row in rows {
+        let Some(x) = x(row) else { continue };
+        for r in self::rows(row, "reactions") {
+            let Some(joint) = r.get("joint").and_then(Value::as_str) else { continue };
+            let k = *index.entry(joint.to_string()).or_insert_with(|| {
+                out.push(Series { joint: joint.to_string(), on: text(r, "on"), by: text(r, "by"), points: Vec::new() });
+                out.len() - 1
+            });
+            if let (Some(fx), Some(fy)) = (num(r, "fx"), num(r, "fy")) {
+                out[k].points.push((x, fx, fy));
+            }
+        }
+    }
+    out
+}
+
+/// The most joints a plot of every joint's reaction draws (the largest);
+/// each joint has its own plot besides.
+pub const MOST_JOINTS: usize = 12;
+
+/// |R| of every joint against x, the [`MOST_JOINTS`] largest, into `c`.
+pub fn magnitudes(mut c: Chart, mut series: Vec<Series>) -> Chart {
+    let largest = |s: &Series| s.points.iter().map(|p| p.1.hypot(p.2)).fold(0.0, f64::max);
+    let total = series.len();
+    series.sort_by(|a, b| largest(b).total_cmp(&largest(a)));
+    for (k, s) in series.iter().take(MOST_JOINTS).enumerate() {
+        let points = s.points.iter().map(|p| (p.0, p.1.hypot(p.2))).collect();
+        // Beyond the palette's eight colours, the same colours dashed.
+        let pen =
+            if k < 8 { chart::Pen::solid(k) } else { chart::Pen { dashed: true, width: 2, ..chart::Pen::solid(k) } };
+        c = c.line(format!("joint {}", s.joint), points, pen);
+    }
+    if total > MOST_JOINTS {
+        c = c.subtitle(format!("the {MOST_JOINTS} largest of {total} joints; each joint's own plot shows the rest"));
+    }
+    c
+}
+
+/// `v` with four significant figures, for labels.
+pub fn sig(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let magnitude = v.abs().log10().floor();
+    if !(-3.0..6.0).contains(&magnitude) {
+        return format!("{v:.3e}");
+    }
+    let decimals = (3.0 - magnitude).max(0.0) as usize;
+    format!("{v:.decimals$}")
+}
+
+/// Radians to degrees, for the angle axes.
+pub fn deg(rad: f64) -> f64 {
+    rad.to_degrees()
+}
