@@ -10,6 +10,7 @@ pub mod api;
 pub mod config;
 pub mod engine;
 pub mod kind;
+pub mod kinds;
 pub mod offline;
 pub mod store;
 pub mod units;

@@ -6,9 +6,9 @@
 //! brentq; the peer at its tightest agrees to 1e-15).
 
 use crate::{Point, fixture, plot, run_peer, time_at};
-use mechdyn::api::flywheel::{Flywheel, FlywheelRequest};
 use mechdyn::kind::Kind;
 use mechdyn::kind::Limits;
+use mechdyn::kinds::flywheel::{Flywheel, FlywheelRequest};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 use std::time::Instant;

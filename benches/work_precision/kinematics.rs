@@ -2,11 +2,11 @@
 //! pylinkage's numba path in the same run.
 
 use crate::run_peer;
-use mechdyn::api::kinetostatics::{self, KinetostaticsRequest};
 use mechdyn::engine::kinematics::{Dyads, Trig};
 use mechdyn::engine::model::rotate;
 use mechdyn::kind::Kind;
 use mechdyn::kind::Limits;
+use mechdyn::kinds::kinetostatics::{self, KinetostaticsRequest};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 use std::hint::black_box;

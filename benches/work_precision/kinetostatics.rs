@@ -1,9 +1,9 @@
 //! Kinetostatics: K1 at 3600 positions against the NumPy peer.
 
 use crate::{fixture, run_peer};
-use mechdyn::api::kinetostatics::{self, KinetostaticsRequest, Scalars};
 use mechdyn::kind::Kind;
 use mechdyn::kind::Limits;
+use mechdyn::kinds::kinetostatics::{self, KinetostaticsRequest, Scalars};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 use std::time::Instant;

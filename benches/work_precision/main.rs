@@ -25,9 +25,9 @@ mod pendulum;
 mod slider_crank;
 mod stiff;
 
-use mechdyn::api::dynamics::{Dynamics, DynamicsRequest, DynamicsResult};
 use mechdyn::kind::Kind;
 use mechdyn::kind::Limits;
+use mechdyn::kinds::dynamics::{Dynamics, DynamicsRequest, DynamicsResult};
 use plotters::prelude::*;
 use serde_json::{Value, json};
 use std::fmt::Write as _;

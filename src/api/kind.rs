@@ -7,10 +7,11 @@
 
 use super::create::Destination;
 use super::json::JsonBody;
-use super::{AppState, dynamics, equivalent, flywheel, gear_train, gears, job, kinetostatics, plots, rotor};
+use super::{AppState, job, plots};
 use crate::kind::limits::Limits;
 use crate::kind::problem::{ApiError, PostErrors};
 use crate::kind::{Kind, Table, compute};
+use crate::kinds::{dynamics, equivalent, flywheel, gear_train, gears, kinetostatics, rotor};
 use crate::store::JobRow;
 use axum::extract::State;
 use axum::http::HeaderMap;

@@ -3,11 +3,12 @@
 //! panic (proptest reports a panic as a failure, with the input shrunk).
 
 use crate::helpers::request;
-use mechdyn::api::{flywheel, json, kinetostatics};
+use mechdyn::api::json;
 use mechdyn::engine::expr::Expr;
 use mechdyn::kind::Kind;
 use mechdyn::kind::Limits;
 use mechdyn::kind::problem::ApiError;
+use mechdyn::kinds::{flywheel, kinetostatics};
 use mechdyn::units::{Dim, parse_as, parse_quantity};
 use proptest::prelude::*;
 use serde_json::Value;

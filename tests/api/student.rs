@@ -144,9 +144,9 @@ fn an_irregularity_that_overflows_the_inertia_is_refused_not_hung() {
     std::thread::spawn(move || {
         let mut body = request("p103_slider_machine");
         body["irregularity"] = json!(1e-308);
-        let b = mechdyn::api::json::parse::<mechdyn::api::flywheel::FlywheelRequest>(body.to_string()).unwrap();
+        let b = mechdyn::api::json::parse::<mechdyn::kinds::flywheel::FlywheelRequest>(body.to_string()).unwrap();
         let _ = done.send(
-            <mechdyn::api::flywheel::Flywheel as mechdyn::kind::Kind>::compute(
+            <mechdyn::kinds::flywheel::Flywheel as mechdyn::kind::Kind>::compute(
                 &b.value,
                 b.unknown,
                 &Default::default(),

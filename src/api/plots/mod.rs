@@ -11,11 +11,6 @@
 //! irregularity, I the flywheel's constant inertia, T₀ the kinetic energy at
 //! φ = 0.
 
-mod drawing;
-mod dynamics;
-mod flywheel;
-mod kinetostatics;
-mod machines;
 pub mod svg;
 
 use super::AppState;
@@ -38,13 +33,6 @@ use utoipa::ToSchema;
 /// cannot match `{name}.svg` within one segment; the handler wants the `.svg`).
 pub const ROUTED: &str = "/v1/jobs/{id}/plots/{name}";
 pub const DOCUMENTED: &str = "/v1/jobs/{id}/plots/{name}.svg";
-
-/// The kinds' plots.
-pub const FLYWHEEL: Plots = Plots { list: flywheel::list, draw: flywheel::draw };
-pub const KINETOSTATICS: Plots = Plots { list: kinetostatics::list, draw: kinetostatics::draw };
-pub const DYNAMICS: Plots = Plots { list: dynamics::list, draw: dynamics::draw };
-pub const ROTOR: Plots = Plots { list: machines::rotor_plots, draw: machines::rotor_plot };
-pub const GEAR: Plots = Plots { list: machines::gear_plots, draw: machines::gear_plot };
 
 /// One plot of a job, as listed.
 #[derive(Serialize, ToSchema)]

@@ -1,6 +1,7 @@
 //! Wire form of a planar mechanism (named points, bodies, joints) and its
 //! conversion into the engine's model, with every error under its pointer.
 
+pub mod drawing;
 mod inputs;
 mod loads;
 mod reactions;
@@ -208,7 +209,7 @@ impl MechanismDto {
         }
         let points = self.points.clone().unwrap_or_default();
         if let Some((name, _)) = points.iter().find(|(_, p)| !p.iter().all(|v| v.is_finite())) {
-            e.push(&format!("{at}/points/{}", super::json::escape(name)), "coordinates must be finite");
+            e.push(&format!("{at}/points/{}", crate::api::json::escape(name)), "coordinates must be finite");
         }
         let point = |e: &mut Errors, p: &PointRef, ptr: &str| match p {
             PointRef::Coords(c) if c.iter().all(|v| v.is_finite()) => Some(*c),

@@ -2,8 +2,8 @@
 //! work, W(φ) with ΔE, ω(φ) over the cycle, and Wittenbauer's diagram W
 //! against I* with the two tangents that give the exact inertia.
 
-use super::{Drawn, Job, Options, deg, num, rows, sig, xy};
 use crate::kind::chart::{Arrow, Axis, Chart, Fill, Level, Listed, Pen};
+use crate::kind::plots::{Drawn, Job, Options, deg, num, rows, sig, xy};
 use serde_json::Value;
 
 const PLOTS: [(&str, &str); 4] = [

@@ -1,7 +1,5 @@
 //! `POST /v1/flywheel` request and its conversion into an engine problem.
 
-use crate::api::mechanism::MechanismDto;
-use crate::api::mechanism::{InputDto, LoadDto, machine_parts};
 use crate::engine::Deadline;
 use crate::engine::flywheel::{DiskSize, DiskSpec, FlywheelProblem, Load, TorqueItem};
 use crate::engine::function::Function;
@@ -9,6 +7,8 @@ use crate::engine::machine::{Machine, Reduced, ReducedCurve};
 use crate::kind::constants::{self, Constants};
 use crate::kind::limits::Limits;
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
+use crate::kinds::mechanism::MechanismDto;
+use crate::kinds::mechanism::{InputDto, LoadDto, machine_parts};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;

@@ -3,8 +3,9 @@
 //! diagram (f_x against f_y over the sweep), I*(φ) and M*(φ), and the
 //! mechanism drawn at a step with its reactions to scale.
 
-use super::{Drawn, Job, Options, deg, drawing, magnitudes, no_step, num, reaction_series, rows, sig, xy};
 use crate::kind::chart::{Axis, Chart, Level, Listed, Mark, Pen};
+use crate::kind::plots::{Drawn, Job, Options, deg, magnitudes, no_step, num, reaction_series, rows, sig, xy};
+use crate::kinds::mechanism::drawing;
 use serde_json::Value;
 
 pub fn list(job: &Job) -> Vec<Listed> {

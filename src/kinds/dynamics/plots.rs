@@ -3,9 +3,10 @@
 //! for a mechanism its joints' reactions, the path of each joint and the
 //! mechanism drawn at a sample over those paths.
 
-use super::{Drawn, Job, Options, deg, drawing, magnitudes, no_step, num, reaction_series, rows, sig, xy};
 use crate::engine::model::Mechanism;
 use crate::kind::chart::{Axis, Chart, Level, Listed, Pen};
+use crate::kind::plots::{Drawn, Job, Options, deg, magnitudes, no_step, num, reaction_series, rows, sig, xy};
+use crate::kinds::mechanism::drawing;
 use serde_json::Value;
 
 const MECHANISM: &str = "/machine/mechanism";

@@ -1,6 +1,5 @@
-//! The plots of the smaller kinds: a rotor's bearing reactions over its
-//! states in fixed axes, and a spur gear's teeth drawn from the computed
-//! geometry (base, pitch, tip and root circles and the tooth thickness).
+//! The spur gear's plot: its teeth drawn from the computed geometry (base,
+//! pitch, tip and root circles and the tooth thickness).
 //!
 //! Symbols of the tooth: r_b the base radius, r the pitch radius, r_a the
 //! tip's, r_f the root's, s the tooth thickness on the pitch circle, α the
@@ -8,54 +7,11 @@
 //! the half angle ψ(ρ) = s/(2r) + inv α − inv α_ρ from the tooth's axis,
 //! cos α_ρ = r_b/ρ.
 
-use super::{Drawn, Job, Options, deg, num, rows, sig};
-use crate::kind::chart::{Axis, Chart, Level, Listed, Pen};
-use serde_json::Value;
+use crate::kind::chart::{Axis, Chart, Listed, Pen};
+use crate::kind::plots::{Drawn, Job, Options, num, sig};
 use std::f64::consts::FRAC_PI_2;
 
-pub fn rotor_plots(job: &Job) -> Vec<Listed> {
-    if rows(job.result, "states").len() < 2 {
-        return Vec::new();
-    }
-    vec![Listed::new("bearings", "Bearing reactions over the states, in fixed axes")]
-}
-
-pub fn rotor_plot(job: &Job, name: &str, _: &Options) -> Drawn {
-    if name != "bearings" || rotor_plots(job).is_empty() {
-        return Ok(None);
-    }
-    let states = rows(job.result, "states");
-    let component = |bearing: &'static str, k: usize| {
-        move |s: &Value| s.pointer(&format!("/reactions_fixed/total/{bearing}/{k}")).and_then(Value::as_f64)
-    };
-    let angle = |s: &Value| num(s, "angle").map(deg);
-    let lines: Vec<(String, Vec<(f64, f64)>)> = ["d", "e"]
-        .into_iter()
-        .flat_map(|b| (0..3).map(move |k| (b, k)))
-        .map(|(b, k)| {
-            (format!("{}_{}", b.to_uppercase(), ["x", "y", "z"][k]), super::xy(states, angle, component(b, k)))
-        })
-        .collect();
-    let largest = lines.iter().flat_map(|l| &l.1).map(|p| p.1.abs()).fold(0.0, f64::max);
-    let mut c = Chart::new(
-        "Bearing reactions over the states, in fixed axes",
-        Axis::new("angle of the frame", "deg"),
-        Axis::new("force on the body", "N"),
-    );
-    let mut shown = 0;
-    for (name, points) in lines {
-        if points.iter().any(|p| p.1.abs() > 1e-9 * largest) {
-            c = c.line(format!("bearing {name}"), points, Pen::solid(shown));
-            shown += 1;
-        }
-    }
-    Ok(Some(
-        c.rule(Level::Y(0.0), "", Pen::dashed(7))
-            .subtitle("total (static and dynamic) reaction of each bearing; components that stay zero are left out"),
-    ))
-}
-
-pub fn gear_plots(job: &Job) -> Vec<Listed> {
+pub fn list(job: &Job) -> Vec<Listed> {
     match tooth_geometry(job) {
         Some(_) => vec![Listed::new("tooth", "The involute teeth, from the computed geometry")],
         None => Vec::new(),
@@ -86,7 +42,7 @@ fn half_angle(rb: f64, r: f64, s: f64, rho: f64) -> f64 {
     s / (2.0 * r) + inv(alpha) - inv((rb / rho.max(rb)).clamp(-1.0, 1.0).acos())
 }
 
-pub fn gear_plot(job: &Job, name: &str, _: &Options) -> Drawn {
+pub fn draw(job: &Job, name: &str, _: &Options) -> Drawn {
     let Some([rb, r, ra, rf, s, z]) = tooth_geometry(job).filter(|_| name == "tooth") else { return Ok(None) };
     let mm = |rho: f64, th: f64| (1e3 * rho * th.cos(), 1e3 * rho * th.sin());
     let alpha = (rb / r).clamp(-1.0, 1.0).acos();

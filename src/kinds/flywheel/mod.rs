@@ -1,5 +1,6 @@
 //! `POST /v1/flywheel`: flywheel design jobs.
 
+mod plots;
 mod request;
 mod result;
 
@@ -11,6 +12,7 @@ pub use result::{
 use crate::engine::Deadline;
 use crate::engine::flywheel::solve;
 use crate::kind::limits::Limits;
+use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::{Kind, Table};
 use crate::kind::{engine_failure, validated};
@@ -67,7 +69,7 @@ impl Kind for Flywheel {
     ];
     type Request = FlywheelRequest;
     type Result = FlywheelResult;
-    const PLOTS: crate::api::plots::Plots = crate::api::plots::FLYWHEEL;
+    const PLOTS: Plots = Plots { list: plots::list, draw: plots::draw };
 
     fn compute(
         request: &FlywheelRequest,

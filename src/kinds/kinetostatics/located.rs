@@ -3,11 +3,11 @@
 //! to the field that asked for it (`/input/start` for the first position,
 //! `/input/end` for one further along the range).
 
-use crate::api::mechanism::InputDto;
 use crate::engine::EngineError;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::quantity::Quantity;
 use crate::kind::{engine_error, engine_failure};
+use crate::kinds::mechanism::InputDto;
 use crate::units::{self, Dim};
 
 /// How the first input was written: where it is and in which unit.

@@ -1,9 +1,9 @@
 //! The `result` of a kinetostatics job, as stored and served, and its CSV table.
 
-use super::request::Problem;
-use crate::api::mechanism::{Name, ReactionDto};
 use crate::engine::kinetostatics::{Motion, Reaction, Step, Totals};
 use crate::kind::{cell, list, names};
+use crate::kinds::kinetostatics::request::Problem;
+use crate::kinds::mechanism::{Name, ReactionDto};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use std::collections::BTreeMap;
@@ -225,7 +225,7 @@ impl KinetostaticsResult {
 }
 
 impl StepDto {
-    /// The engine's step with the joints' and bodies' names (as [`crate::api::mechanism::names`] makes them).
+    /// The engine's step with the joints' and bodies' names (as [`crate::kinds::mechanism::names`] makes them).
     pub fn new(s: &Step, p: &Problem, joint_names: &[Name], names: &[Name]) -> Self {
         let reaction = |r: &Reaction| ReactionDto::new(r, joint_names, names);
         StepDto {

@@ -1,19 +1,21 @@
 //! `POST /v1/kinetostatics`: driving actions and joint reactions of a driven mechanism.
 
 mod located;
+mod plots;
 mod request;
 mod result;
 
 pub use request::{KinetostaticsRequest, OutputKind};
 pub use result::{KinetostaticsResult, Scalars, StepDto, csv_table};
 
-use super::mechanism::names;
 use crate::engine::Deadline;
 use crate::engine::kinetostatics::solve_each;
 use crate::kind::limits::Limits;
+use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::validated;
 use crate::kind::{Kind, Table, unit_in};
+use crate::kinds::mechanism::names;
 use serde_json::Value;
 
 /// Kinetostatics: `POST /v1/kinetostatics`.
@@ -55,7 +57,7 @@ impl Kind for Kinetostatics {
     ];
     type Request = KinetostaticsRequest;
     type Result = KinetostaticsResult;
-    const PLOTS: crate::api::plots::Plots = crate::api::plots::KINETOSTATICS;
+    const PLOTS: Plots = Plots { list: plots::list, draw: plots::draw };
 
     fn compute(
         request: &KinetostaticsRequest,

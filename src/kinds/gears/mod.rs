@@ -1,8 +1,11 @@
 //! `POST /v1/gears/geometry`: involute spur gear radii and tooth thickness.
 
 use crate::engine::gears::Gear;
+mod plots;
+
 use crate::kind::Kind;
 use crate::kind::limits::Limits;
+use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::quantity::{Errors, Quantity};
 use crate::kind::validated;
@@ -64,7 +67,7 @@ impl Kind for Gears {
     const UNITS: &'static [(&'static str, &'static str)] = &[("/thickness_pressure_angle", "rad"), ("/*", "m")];
     type Request = GearRequest;
     type Result = GearResult;
-    const PLOTS: crate::api::plots::Plots = crate::api::plots::GEAR;
+    const PLOTS: Plots = Plots { list: plots::list, draw: plots::draw };
 
     fn compute(request: &GearRequest, unknown: Vec<FieldError>, _limits: &Limits) -> Result<GearResult, ApiError> {
         compute(request, unknown)

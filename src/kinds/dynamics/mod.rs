@@ -2,6 +2,7 @@
 //! reduced form (1 DOF) or as a mechanism (any DOF, see [`machine`]).
 
 mod machine;
+mod plots;
 mod result;
 
 use crate::engine::Deadline;
@@ -10,6 +11,7 @@ use crate::engine::dynamics::{DynamicsError, End, Integrator, KEPT_BYTES, Reduce
 use crate::engine::function::Function;
 use crate::kind::constants::{self, Constants};
 use crate::kind::limits::Limits;
+use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
 use crate::kind::validated;
@@ -188,7 +190,7 @@ impl Kind for Dynamics {
     ];
     type Request = DynamicsRequest;
     type Result = DynamicsResult;
-    const PLOTS: crate::api::plots::Plots = crate::api::plots::DYNAMICS;
+    const PLOTS: Plots = Plots { list: plots::list, draw: plots::draw };
 
     fn compute(
         request: &DynamicsRequest,

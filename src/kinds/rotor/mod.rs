@@ -3,8 +3,11 @@
 //! and the bearing reactions (dynamic, static, total; rotating and fixed axes).
 
 use crate::engine::rotor::{Rotor, RotorState, Support};
+mod plots;
+
 use crate::kind::Kind;
 use crate::kind::limits::Limits;
+use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::quantity::{Errors, Quantity};
 use crate::kind::validated;
@@ -146,7 +149,7 @@ impl Kind for RigidRotor {
     ];
     type Request = RotorRequest;
     type Result = RotorResult;
-    const PLOTS: crate::api::plots::Plots = crate::api::plots::ROTOR;
+    const PLOTS: Plots = Plots { list: plots::list, draw: plots::draw };
 
     fn compute(request: &RotorRequest, unknown: Vec<FieldError>, _limits: &Limits) -> Result<RotorResult, ApiError> {
         compute(request, unknown)

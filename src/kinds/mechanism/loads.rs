@@ -1,8 +1,8 @@
 //! Loads of a mechanism: wire form and conversion into engine loads.
 
-use crate::api::mechanism::{MechanismDto, PointRef, body_id};
 use crate::engine::kinetostatics::Load;
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
+use crate::kinds::mechanism::{MechanismDto, PointRef, body_id};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
@@ -36,9 +36,9 @@ pub struct LoadDto {
     pub magnitude: Option<FunctionDto>,
     #[schema(value_type = Option<FunctionDto>)]
     pub value: Option<FunctionDto>,
-    #[schema(value_type = Option<super::BodyPoint>)]
+    #[schema(value_type = Option<crate::kinds::mechanism::BodyPoint>)]
     pub a: Option<(String, PointRef)>,
-    #[schema(value_type = Option<super::BodyPoint>)]
+    #[schema(value_type = Option<crate::kinds::mechanism::BodyPoint>)]
     pub b: Option<(String, PointRef)>,
     /// N/m
     #[schema(value_type = Option<Quantity>)]
