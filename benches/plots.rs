@@ -6,7 +6,7 @@
 //! fastest of several runs on this machine, no assertions. Writes
 //! docs/PLOTS.md.
 
-use mechdyn::api::kind::{AnyKind, find};
+use mechdyn::api::kind::AnyKind;
 use mechdyn::api::plots::{Job, Options, svg};
 use mechdyn::kind::Limits;
 use serde_json::{Value, json};
@@ -35,7 +35,8 @@ fn largest(kind: &str, mut request: Value, pointer: &str, most: usize, limits: &
     let (parent, key) = pointer.rsplit_once('/').unwrap();
     let set = |request: &mut Value, n: usize| request.pointer_mut(parent).unwrap()[key] = json!(n);
     set(&mut request, 360);
-    let bytes = find(kind).unwrap().solve(request.to_string(), limits).unwrap().len();
+    let bytes =
+        mechdyn::registry().find(kind).unwrap().solve(request.to_string(), limits, &mechdyn::registry()).unwrap().len();
     let rows = (limits.result_bytes as f64 * 0.97 / (bytes as f64 / 360.0)) as usize;
     set(&mut request, rows.min(most));
     request
@@ -44,7 +45,7 @@ fn largest(kind: &str, mut request: Value, pointer: &str, most: usize, limits: &
 fn section(doc: &mut String, title: &str, kind: &dyn AnyKind, request: Value, limits: &Limits) {
     let raw = request.to_string();
     let mut bytes = Vec::new();
-    let compute = best_ms(1, || bytes = kind.solve(raw.clone(), limits).unwrap());
+    let compute = best_ms(1, || bytes = kind.solve(raw.clone(), limits, &mechdyn::registry()).unwrap());
     let mut result = Value::Null;
     let parse = best_ms(3, || result = serde_json::from_slice(&bytes).unwrap());
     let job = Job { request: &request, result: &result };
@@ -75,13 +76,13 @@ fn main() {
     );
     let p103 = largest("flywheel", library("p103_slider"), "/samples", limits.samples, &limits);
     let title = format!("Flywheel: P.103 with {} samples", p103["samples"]);
-    section(&mut doc, &title, find("flywheel").unwrap(), p103, &limits);
+    section(&mut doc, &title, mechdyn::registry().find("flywheel").unwrap(), p103, &limits);
     let k1 = largest("kinetostatics", library("k1_offset_slider_crank"), "/input/steps", limits.steps, &limits);
     let title = format!("Kinetostatics: K1 with {} steps", k1["input"]["steps"]);
-    section(&mut doc, &title, find("kinetostatics").unwrap(), k1, &limits);
+    section(&mut doc, &title, mechdyn::registry().find("kinetostatics").unwrap(), k1, &limits);
     let arm = largest("dynamics", library("p68_two_link_arm"), "/samples", limits.samples, &limits);
     let title = format!("Dynamics: P.68's two-link arm with {} samples", arm["samples"]);
-    section(&mut doc, &title, find("dynamics").unwrap(), arm, &limits);
+    section(&mut doc, &title, mechdyn::registry().find("dynamics").unwrap(), arm, &limits);
     print!("{doc}");
     let path = format!("{}/docs/PLOTS.md", env!("CARGO_MANIFEST_DIR"));
     if let Err(e) = std::fs::write(&path, &doc) {

@@ -14,3 +14,11 @@ pub mod kinds;
 pub mod offline;
 pub mod store;
 pub mod units;
+
+/// The service's kinds: every kind of [`kinds`], then the service's own
+/// `check` — what `main.rs` hands the service, and the tests too. One per
+/// process, so its OpenAPI document is made once.
+pub fn registry() -> api::kind::Registry {
+    static KINDS: std::sync::OnceLock<api::kind::Registry> = std::sync::OnceLock::new();
+    KINDS.get_or_init(|| api::kind::Registry::new(kinds::register)).clone()
+}

@@ -17,17 +17,19 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    // The kinds the service serves: the kinds' wing, then the service's own check.
+    let kinds = mechdyn::registry();
     match &cli.command {
-        None | Some(Command::Serve) => serve(&cli),
+        None | Some(Command::Serve) => serve(&cli, kinds),
         Some(Command::Healthcheck) => healthcheck(&cli.addr),
         Some(Command::Openapi) => {
-            println!("{}", api::openapi_json());
+            println!("{}", kinds.openapi_json());
             ExitCode::SUCCESS
         }
         Some(Command::Solve { kind, file, value, unit }) => {
-            offline(file, |raw| mechdyn::offline::solve(kind, raw, value.as_deref(), unit.as_ref()))
+            offline(file, |raw| mechdyn::offline::solve(&kinds, kind, raw, value.as_deref(), unit.as_ref()))
         }
-        Some(Command::Check { file }) => offline(file, mechdyn::offline::check),
+        Some(Command::Check { file }) => offline(file, |raw| mechdyn::offline::check(&kinds, raw)),
         Some(Command::Grade { template, class, relative, absolute, sigfigs, zero_level, reveal }) => {
             let t = match mechdyn::offline::template(template) {
                 Ok(t) => t,
@@ -36,12 +38,12 @@ fn main() -> ExitCode {
             let options = [("relative", relative), ("absolute", absolute), ("sigfigs", sigfigs)];
             let options = options.into_iter().chain([("zero_level", zero_level), ("reveal", reveal)]);
             let query = options.filter_map(|(k, v)| Some((k.to_string(), v.clone()?))).collect();
-            offline(class, |csv| mechdyn::offline::grade(&t, &query, csv.as_bytes()).map(String::into_bytes))
+            offline(class, |csv| mechdyn::offline::grade(&kinds, &t, &query, csv.as_bytes()).map(String::into_bytes))
         }
     }
 }
 
-fn serve(cli: &Cli) -> ExitCode {
+fn serve(cli: &Cli, kinds: mechdyn::api::kind::Registry) -> ExitCode {
     tracing_subscriber::fmt()
         .with_ansi(std::io::stdout().is_terminal())
         .with_env_filter(EnvFilter::try_from_default_env().unwrap_or_else(|_| EnvFilter::new("info")))
@@ -52,7 +54,7 @@ fn serve(cli: &Cli) -> ExitCode {
         Ok(r) => r,
         Err(e) => return fail(&format!("cannot start the runtime: {e}")),
     };
-    let ran = runtime.block_on(run(cli));
+    let ran = runtime.block_on(run(cli, kinds));
     // A deferred job still computing was put back in the queue: its thread is not waited for.
     runtime.shutdown_timeout(std::time::Duration::from_millis(500));
     match ran {
@@ -61,7 +63,7 @@ fn serve(cli: &Cli) -> ExitCode {
     }
 }
 
-async fn run(cli: &Cli) -> Result<(), String> {
+async fn run(cli: &Cli, kinds: mechdyn::api::kind::Registry) -> Result<(), String> {
     let shown = store::redact(&cli.database);
     store::check_scheme(&cli.database).map_err(|e| e.to_string())?;
     let capacity = cli.capacity()?;
@@ -73,7 +75,7 @@ async fn run(cli: &Cli) -> Result<(), String> {
         .map_err(|e| format!("database {shown}: {}", e.to_string().replace(&cli.database, &shown)))?;
     let deferred = api::deferred::Deferred::new(cli.deferred());
     let admission = api::Admission::new(capacity);
-    let state = AppState { limits: cli.limits(), admission, deferred, ..AppState::new(store) };
+    let state = AppState { limits: cli.limits(), admission, deferred, ..AppState::new(store, kinds) };
     let settings = api::Settings {
         body_limit: cli.max_body_bytes,
         api_token: cli.api_token.clone().filter(|t| !t.is_empty()),

@@ -7,8 +7,9 @@
 
 use crate::api::check::{CheckRequest, check_job};
 use crate::api::create::Destination;
+use crate::api::kind::Registry;
 use crate::api::templates::{self, Template, builtin};
-use crate::api::{AppState, json, kind, parts};
+use crate::api::{AppState, json, parts};
 use crate::kind::Limits;
 use crate::kind::problem::ApiError;
 use crate::store::Store;
@@ -16,12 +17,18 @@ use std::collections::HashMap;
 
 /// The result of `raw` of `kind` as the service stores it; with `value`,
 /// the part at that pointer (in `unit`) as `GET .../result/{pointer}` answers it.
-pub fn solve(kind: &str, raw: String, value: Option<&str>, unit: Option<&String>) -> Result<Vec<u8>, ApiError> {
-    let Some(k) = kind::find(kind) else {
-        let message = format!("unknown kind '{kind}' (known: {})", kind::names().join(", "));
+pub fn solve(
+    kinds: &Registry,
+    kind: &str,
+    raw: String,
+    value: Option<&str>,
+    unit: Option<&String>,
+) -> Result<Vec<u8>, ApiError> {
+    let Some(k) = kinds.find(kind) else {
+        let message = format!("unknown kind '{kind}' (known: {})", kinds.names().join(", "));
         return Err(ApiError::Invalid(vec![crate::kind::problem::FieldError::at("", message)]));
     };
-    let result = k.solve(raw, &Limits::default())?;
+    let result = k.solve(raw, &Limits::default(), kinds)?;
     let Some(pointer) = value else { return Ok(result) };
     let tree: serde_json::Value = serde_json::from_slice(&result).map_err(|e| ApiError::Internal(e.to_string()))?;
     let part = parts::value_at(Some(k), &tree, pointer, unit)?;
@@ -30,11 +37,11 @@ pub fn solve(kind: &str, raw: String, value: Option<&str>, unit: Option<&String>
     Ok(parts::text_of(&part, false).1.into_bytes())
 }
 
-/// The service's state on a store in memory.
-async fn state() -> Result<AppState, ApiError> {
+/// The service's state, of `kinds`, on a store in memory.
+async fn state(kinds: &Registry) -> Result<AppState, ApiError> {
     let store =
         Store::open("sqlite::memory:").await.map_err(|e| ApiError::Internal(format!("in-memory store: {e}")))?;
-    Ok(AppState::new(store))
+    Ok(AppState::new(store, kinds.clone()))
 }
 
 fn runtime() -> Result<tokio::runtime::Runtime, ApiError> {
@@ -42,9 +49,9 @@ fn runtime() -> Result<tokio::runtime::Runtime, ApiError> {
 }
 
 /// The result of the check `raw` (a `POST /v1/check` body), as the service stores it.
-pub fn check(raw: String) -> Result<Vec<u8>, ApiError> {
+pub fn check(kinds: &Registry, raw: String) -> Result<Vec<u8>, ApiError> {
     runtime()?.block_on(async {
-        let state = state().await?;
+        let state = state(kinds).await?;
         let (row, _) = check_job(&state, json::parse::<CheckRequest>(raw)?, Destination::POSTED).await?;
         Ok(row.result.to_vec())
     })
@@ -64,6 +71,6 @@ pub fn template(name: &str) -> Result<Template, String> {
 
 /// The graded class CSV `body` for template `t`, with the query of
 /// `POST /v1/templates/{id}/grade` (`relative`, `sigfigs`, `reveal`, ...).
-pub fn grade(t: &Template, query: &HashMap<String, String>, body: &[u8]) -> Result<String, ApiError> {
-    runtime()?.block_on(async { templates::class(&state().await?, t, query, body).await })
+pub fn grade(kinds: &Registry, t: &Template, query: &HashMap<String, String>, body: &[u8]) -> Result<String, ApiError> {
+    runtime()?.block_on(async { templates::class(&state(kinds).await?, t, query, body).await })
 }

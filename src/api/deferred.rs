@@ -23,7 +23,6 @@ use super::AppState;
 use super::body::Chunks;
 use super::create::{Destination, now_rfc3339, rfc3339};
 use super::job::job_chunks;
-use super::kind;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::store::{Claimed, Queued};
 use axum::body::Body;
@@ -216,7 +215,7 @@ async fn compute(state: &AppState, job: Claimed, claim: String) {
     let Claimed { id, kind, request, .. } = job;
     let renewing = tokio::spawn(renew(state.clone(), id.clone(), claim.clone()));
     let started = Instant::now();
-    let outcome = match kind::find(&kind) {
+    let outcome = match state.kinds.find(&kind) {
         Some(k) => {
             k.job(state, request, Destination::Claimed { id: id.clone(), claim: claim.clone() }).await.map(|_| ())
         }

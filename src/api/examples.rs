@@ -2,7 +2,7 @@
 //! its request example gives, computed by the engine when the document is
 //! built (long arrays shortened to their first items, said in the text), so
 //! the docs never show a result the service would not give. Also the units
-//! of the results and the list of kinds, from the registry ([`kind::KINDS`]).
+//! of the results and the list of kinds, from the registry.
 
 use super::kind::{self, AnyKind};
 use crate::kind::limits::Limits;
@@ -12,23 +12,23 @@ use serde_json::{Value, json};
 const KEEP: usize = 3;
 
 /// The result of the kind's request example.
-fn run(kind: &dyn AnyKind, request: &Value) -> Option<Value> {
-    serde_json::from_slice(&kind.solve(request.to_string(), &Limits::default()).ok()?).ok()
+fn run(kind: &dyn AnyKind, request: &Value, kinds: &kind::Registry) -> Option<Value> {
+    serde_json::from_slice(&kind.solve(request.to_string(), &Limits::default(), kinds).ok()?).ok()
 }
 
 /// `doc` (the OpenAPI document as JSON) with what the registry knows: every
 /// POST's 201 example, the units of every result's fields (`x-units`: JSON
 /// pointer patterns, `*` for any index or key, and units, `1` for a pure
 /// number), and the kinds the jobs list can filter on.
-pub fn add(doc: &mut Value) {
-    let mut kinds = Vec::new();
-    for kind in kind::KINDS {
+pub fn add(doc: &mut Value, kinds: &kind::Registry) {
+    let mut names = Vec::new();
+    for kind in kinds.iter() {
         let units: serde_json::Map<String, Value> =
             kind.units().iter().map(|(pattern, unit)| (pattern.to_string(), json!(unit))).collect();
         doc["components"]["schemas"][kind.result_schema()]["x-units"] = Value::Object(units);
-        kinds.push(json!(kind.name()));
+        names.push(json!(kind.name()));
         let request = doc["components"]["schemas"][kind.request_schema()]["example"].clone();
-        let Some(mut result) = run(kind, &request) else { continue };
+        let Some(mut result) = run(kind, &request, kinds) else { continue };
         shorten(&mut result);
         if let Some(reference) = result.get_mut("job").filter(|j| j.is_null()) {
             // A check's reference job, computed here without a store: an id as the service gives one.
@@ -52,7 +52,7 @@ pub fn add(doc: &mut Value) {
                     .into();
         }
     }
-    list_kinds(doc, kinds);
+    list_kinds(doc, names);
     document_rest_of_path(doc);
 }
 

@@ -129,7 +129,7 @@ pub async fn list(
     query: Result<Query<HashMap<String, String>>, QueryRejection>,
 ) -> Result<Response, ApiError> {
     let Query(q) = query.map_err(|e| ApiError::BadQuery(vec![FieldError::parameter("", e.body_text())]))?;
-    let (kind, limit, before) = list_params(&q)?;
+    let (kind, limit, before) = list_params(&state.kinds, &q)?;
     let label = q.get("label").cloned().map(super::label::checked).transpose()?;
     let page_bytes = state.limits.result_bytes;
     let mut reserved = state.admission.memory(READ_MEMORY_FACTOR * page_bytes).await?;
@@ -164,16 +164,19 @@ pub async fn list(
     Ok(json_answer(body, reserved))
 }
 
-fn list_params(q: &HashMap<String, String>) -> Result<(Option<String>, i64, Option<i64>), ApiError> {
+fn list_params(
+    kinds: &kind::Registry,
+    q: &HashMap<String, String>,
+) -> Result<(Option<String>, i64, Option<i64>), ApiError> {
     let mut errors = Vec::new();
     for key in q.keys().filter(|k| !["kind", "label", "limit", "before"].contains(&k.as_str())) {
         errors.push(FieldError::parameter(key, "unknown parameter (known: kind, label, limit, before)"));
     }
     let kind = q.get("kind").cloned();
     if let Some(k) = &kind
-        && kind::find(k).is_none()
+        && kinds.find(k).is_none()
     {
-        errors.push(FieldError::parameter("kind", format!("must be one of {}", kind::names().join(", "))));
+        errors.push(FieldError::parameter("kind", format!("must be one of {}", kinds.names().join(", "))));
     }
     let int = |name: &str, lo: i64, hi: i64, errors: &mut Vec<FieldError>| match q.get(name).map(|v| v.parse::<i64>()) {
         None => None,
@@ -215,8 +218,8 @@ pub async fn csv(
 async fn csv_answer(state: &AppState, id: &str, angles: Option<&String>) -> Result<Response, ApiError> {
     let angles = Angles::parse(angles).map_err(|e| ApiError::BadQuery(vec![e]))?;
     let (row, result, reserved) = read::result_tree(state, id).await?;
-    let kind = row.kind.clone();
-    let body = tokio::task::spawn_blocking(move || tables::result_csv(kind::find(&kind), &result, angles))
+    let kind = state.kinds.find(&row.kind);
+    let body = tokio::task::spawn_blocking(move || tables::result_csv(kind, &result, angles))
         .await
         .map_err(|e| ApiError::Internal(format!("csv task: {e}")))??;
     let disposition = format!("attachment; filename=\"{}-{id}.csv\"", row.kind);

@@ -10,8 +10,7 @@ use super::json::JsonBody;
 use super::{AppState, job, plots};
 use crate::kind::limits::Limits;
 use crate::kind::problem::{ApiError, PostErrors};
-use crate::kind::{Kind, Table, compute};
-use crate::kinds::{dynamics, equivalent, flywheel, gear_train, gears, kinetostatics, rotor};
+use crate::kind::{Kind, Register, Table, compute};
 use crate::store::JobRow;
 use axum::extract::State;
 use axum::http::HeaderMap;
@@ -19,6 +18,7 @@ use axum::response::Response;
 use bytes::Bytes;
 use serde_json::Value;
 use std::marker::PhantomData;
+use std::sync::{Arc, OnceLock};
 use tokio::sync::OwnedSemaphorePermit;
 use utoipa::openapi::path::{HttpMethod, OperationBuilder, ParameterBuilder, ParameterIn, Paths, PathsBuilder};
 use utoipa::openapi::request_body::RequestBodyBuilder;
@@ -53,8 +53,9 @@ pub trait AnyKind: Send + Sync {
     /// The POST's route with its OpenAPI operation and schemas.
     fn route(&self) -> UtoipaMethodRouter<AppState>;
     /// Parses and computes a JSON request as the POST would: the result's
-    /// JSON, the same bytes the service stores.
-    fn solve(&self, raw: String, limits: &Limits) -> Result<Vec<u8>, ApiError>;
+    /// JSON, the same bytes the service stores (`kinds`: the service's, for
+    /// a kind that computes another's request).
+    fn solve(&self, raw: String, limits: &Limits, kinds: &Registry) -> Result<Vec<u8>, ApiError>;
     /// Computes the job of `request` (JSON text, as it will be stored) and
     /// stores it at `to`: the row, with its answer's memory reserved.
     fn job<'a>(&'a self, state: &'a AppState, request: Bytes, to: Destination) -> StoredJob<'a>;
@@ -86,7 +87,7 @@ impl<K: Kind> AnyKind for Registered<K> {
         schemas.push((job_schema::<K>(), job::JobOf::<K::Result>::schema()));
         (schemas, operation::<K>(), axum::routing::post(post::<K>))
     }
-    fn solve(&self, raw: String, limits: &Limits) -> Result<Vec<u8>, ApiError> {
+    fn solve(&self, raw: String, limits: &Limits, _: &Registry) -> Result<Vec<u8>, ApiError> {
         let body = super::json::parse::<K::Request>(raw)?;
         let result = compute::<K>(&body.value, body.unknown, &body.raw, limits)?;
         serde_json::to_vec(&result).map_err(|e| ApiError::Internal(format!("result: {e}")))
@@ -196,25 +197,66 @@ fn with_article(name: &str) -> String {
     format!("{} {name}", if vowel { "an" } else { "a" })
 }
 
-/// Every kind of the service, in the order of the documentation; `check`
-/// (answers checked against another job) last.
-pub static KINDS: [&dyn AnyKind; 8] = [
-    &Registered::<flywheel::Flywheel>(PhantomData),
-    &Registered::<kinetostatics::Kinetostatics>(PhantomData),
-    &Registered::<dynamics::Dynamics>(PhantomData),
-    &Registered::<gears::Gears>(PhantomData),
-    &Registered::<gear_train::GearTrain>(PhantomData),
-    &Registered::<equivalent::EquivalentMasses>(PhantomData),
-    &Registered::<rotor::RigidRotor>(PhantomData),
-    &super::check::CHECK,
-];
+/// The kinds the service serves, handed to it by the composition root
+/// (`main.rs`, through [`crate::registry`]): the kinds' wing registers each
+/// ([`crate::kind::Register`]), and `check` (answers checked against another
+/// job, a feature of the service) comes last. The OpenAPI document is made
+/// from it once. Cheap to clone.
+#[derive(Clone)]
+pub struct Registry(Arc<Inner>);
 
-/// The kind of this name.
-pub fn find(name: &str) -> Option<&'static dyn AnyKind> {
-    KINDS.iter().copied().find(|k| k.name() == name)
+struct Inner {
+    kinds: Vec<&'static dyn AnyKind>,
+    document: OnceLock<(Value, Bytes)>,
 }
 
-/// The kinds' names, for messages.
-pub fn names() -> Vec<&'static str> {
-    KINDS.iter().map(|k| k.name()).collect()
+/// The registry being built: [`crate::kind::Register`] adds each kind.
+pub struct Builder(Vec<&'static dyn AnyKind>);
+
+impl Register for Builder {
+    fn kind<K: Kind>(&mut self) {
+        // A zero-sized value: leaking it allocates nothing.
+        self.0.push(Box::leak(Box::new(Registered::<K>(PhantomData))));
+    }
+}
+
+impl Registry {
+    /// The kinds `register` adds, in the order of the documentation, then `check`.
+    pub fn new(register: impl FnOnce(&mut Builder)) -> Self {
+        let mut builder = Builder(Vec::new());
+        register(&mut builder);
+        builder.0.push(&super::check::CHECK);
+        Self(Arc::new(Inner { kinds: builder.0, document: OnceLock::new() }))
+    }
+
+    /// Every kind, in the order of the documentation.
+    pub fn iter(&self) -> impl Iterator<Item = &'static dyn AnyKind> + '_ {
+        self.0.kinds.iter().copied()
+    }
+
+    /// The kind of this name.
+    pub fn find(&self, name: &str) -> Option<&'static dyn AnyKind> {
+        self.iter().find(|k| k.name() == name)
+    }
+
+    /// The kinds' names, for messages.
+    pub fn names(&self) -> Vec<&'static str> {
+        self.iter().map(|k| k.name()).collect()
+    }
+
+    /// The OpenAPI document as served at `/openapi.json` ([`super::document`]),
+    /// made once, and its text.
+    pub fn document(&self) -> &(Value, Bytes) {
+        self.0.document.get_or_init(|| super::document(self))
+    }
+
+    /// The OpenAPI document as a value.
+    pub fn openapi(&self) -> Value {
+        self.document().0.clone()
+    }
+
+    /// The OpenAPI document's text, as served and as `cargo run -- openapi` prints it.
+    pub fn openapi_json(&self) -> &str {
+        std::str::from_utf8(&self.document().1).unwrap_or_default()
+    }
 }

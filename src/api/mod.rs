@@ -44,6 +44,8 @@ use utoipa_swagger_ui::{Config, SwaggerUi};
 /// Shared state of the handlers.
 #[derive(Clone)]
 pub struct AppState {
+    /// The kinds served, handed over by `main.rs` ([`crate::registry`]).
+    pub kinds: kind::Registry,
     pub store: Store,
     /// What one request may ask, and the compute budget of a job.
     pub limits: Limits,
@@ -56,10 +58,10 @@ pub struct AppState {
 }
 
 impl AppState {
-    /// The state with the default limits and capacity.
-    pub fn new(store: Store) -> Self {
+    /// The state of a service of `kinds` on `store`, with the default limits and capacity.
+    pub fn new(store: Store, kinds: kind::Registry) -> Self {
         let (limits, admission) = (Limits::default(), Admission::default());
-        Self { store, limits, admission, metrics: Default::default(), deferred: Default::default() }
+        Self { kinds, store, limits, admission, metrics: Default::default(), deferred: Default::default() }
     }
 }
 
@@ -116,10 +118,10 @@ characters) makes a retry safe: the same key with the same request answers the f
 pub struct ApiDoc;
 
 /// Every route of the service with its OpenAPI operation, from one list:
-/// each kind of the registry ([`kind::KINDS`]), then the generic reads.
-fn routes() -> OpenApiRouter<AppState> {
+/// each kind of the registry, then the generic reads.
+fn routes(kinds: &kind::Registry) -> OpenApiRouter<AppState> {
     let mut routes = OpenApiRouter::with_openapi(ApiDoc::openapi());
-    for kind in kind::KINDS {
+    for kind in kinds.iter() {
         routes = routes.routes(kind.route());
     }
     routes
@@ -173,35 +175,27 @@ fn svg_route(
     (schemas, routed, method)
 }
 
-/// The OpenAPI document, as served at `/openapi.json`: the routes' operations
-/// and schemas, then what the registry adds ([`examples`]): every POST's 201
-/// example computed by the engine, the units of every result's fields. Kept
-/// as JSON: utoipa's types cannot read back a schema that allows any value.
-pub fn openapi() -> serde_json::Value {
-    served().0.clone()
-}
-
-/// The document as `cargo run -- openapi` prints it and `/openapi.json` serves it.
-pub fn openapi_json() -> &'static str {
-    &served().1
-}
-
-fn served() -> &'static (serde_json::Value, String) {
-    static DOC: std::sync::OnceLock<(serde_json::Value, String)> = std::sync::OnceLock::new();
-    DOC.get_or_init(|| {
-        let (_, doc) = routes().split_for_parts();
-        let mut value = serde_json::to_value(&doc).unwrap_or_default();
-        examples::add(&mut value);
-        let text = serde_json::to_string_pretty(&value).unwrap_or_default();
-        (value, text)
-    })
+/// The OpenAPI document of a service of `kinds`, as served at
+/// `/openapi.json` (and printed by `cargo run -- openapi`): the routes'
+/// operations and schemas, then what the registry adds ([`examples`]): every
+/// POST's 201 example computed by the engine, the units of every result's
+/// fields. Kept as JSON: utoipa's types cannot read back a schema that
+/// allows any value. [`kind::Registry::document`] makes it once.
+fn document(kinds: &kind::Registry) -> (serde_json::Value, bytes::Bytes) {
+    let (_, doc) = routes(kinds).split_for_parts();
+    let mut value = serde_json::to_value(&doc).unwrap_or_default();
+    examples::add(&mut value, kinds);
+    let text = serde_json::to_string_pretty(&value).unwrap_or_default();
+    (value, text.into())
 }
 
 /// The service's router with its middleware ([`middleware::layered`]).
 pub fn router(state: AppState, settings: &Settings) -> Router {
-    let (routes, _) = routes().split_for_parts();
+    let (routes, _) = routes(&state.kinds).split_for_parts();
+    let kinds = state.kinds.clone();
+    let document = move || async move { ([(header::CONTENT_TYPE, "application/json")], kinds.document().1.clone()) };
     let routes = routes
-        .route("/openapi.json", get(|| async { ([(header::CONTENT_TYPE, "application/json")], openapi_json()) }))
+        .route("/openapi.json", get(document))
         // The validator would send the document's URL to validator.swagger.io and show a broken image offline.
         .merge(SwaggerUi::new("/docs").config(Config::new(["/openapi.json"]).validator_url("none")))
         .fallback(|| async { ApiError::NoRoute })

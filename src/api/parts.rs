@@ -48,19 +48,20 @@ pub async fn part(
 ) -> Result<Response, ApiError> {
     let q = query(q, &["unit"])?;
     let (row, result, _reserved) = result_tree(&state, &id).await?;
-    answer(&row, &result, &pointer, q.get("unit").filter(|u| !u.trim().is_empty()), &headers)
+    answer(&state.kinds, &row, &result, &pointer, q.get("unit").filter(|u| !u.trim().is_empty()), &headers)
 }
 
 /// The part of `result` (of job `row`) at `pointer`, converted to `unit`,
 /// as text or JSON as [`part`] says.
 pub fn answer(
+    kinds: &kind::Registry,
     row: &JobRow,
     result: &Value,
     pointer: &str,
     unit: Option<&String>,
     headers: &HeaderMap,
 ) -> Result<Response, ApiError> {
-    let Some(value) = value_at(kind::find(&row.kind), result, pointer, unit)? else {
+    let Some(value) = value_at(kinds.find(&row.kind), result, pointer, unit)? else {
         let pointer = format!("/{}", pointer.trim_start_matches('/'));
         return Err(ApiError::NoPart { id: row.id.clone(), pointer });
     };
@@ -135,7 +136,7 @@ pub async fn values(
     super::read::format_checked(&q)?;
     let csv = wants(&headers, q.get("format"), "text/csv");
     let (row, result, reserved) = result_tree(&state, &id).await?;
-    let kind = kind::find(&row.kind).ok_or_else(|| ApiError::Internal(format!("stored kind {}", row.kind)))?;
+    let kind = state.kinds.find(&row.kind).ok_or_else(|| ApiError::Internal(format!("stored kind {}", row.kind)))?;
     let (mime, text) = tokio::task::spawn_blocking(move || {
         let mut values = tables::flatten(kind, &result);
         if csv {

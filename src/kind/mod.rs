@@ -68,6 +68,13 @@ pub trait Kind: Send + Sync + 'static {
     }
 }
 
+/// What a registry does with each kind: the kinds' wing lists its kinds
+/// through this (`crate::kinds::register`), and the service keeps each
+/// without its types.
+pub trait Register {
+    fn kind<K: Kind>(&mut self);
+}
+
 /// Computes a request of kind `K` as every way in does (the POST, the CLI):
 /// [`Kind::compute`], then the warnings of the request as sent (`raw`),
 /// such as constants no expression reads.

@@ -3,7 +3,7 @@
 //! error, the computation, the table, the units of the result's fields, the
 //! plots as chart data, the OpenAPI examples. [`mechanism`] is the
 //! mechanism's wire form the mechanism kinds share. Each kind is written
-//! against the contract ([`crate::kind`]) only.
+//! against the contract ([`crate::kind`]) only; [`register`] lists them.
 
 pub mod dynamics;
 pub mod equivalent;
@@ -13,3 +13,17 @@ pub mod gears;
 pub mod kinetostatics;
 pub mod mechanism;
 pub mod rotor;
+
+use crate::kind::Register;
+
+/// Every kind, in the order of the documentation: a new kind is its folder
+/// and one line here.
+pub fn register(r: &mut impl Register) {
+    r.kind::<flywheel::Flywheel>();
+    r.kind::<kinetostatics::Kinetostatics>();
+    r.kind::<dynamics::Dynamics>();
+    r.kind::<gears::Gears>();
+    r.kind::<gear_train::GearTrain>();
+    r.kind::<equivalent::EquivalentMasses>();
+    r.kind::<rotor::RigidRotor>();
+}

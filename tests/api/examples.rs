@@ -7,9 +7,9 @@ use serde_json::Value;
 
 /// Each POST of a job of the OpenAPI document, with the component schema of its body.
 fn operations() -> Vec<(String, String)> {
-    let doc = serde_json::to_value(mechdyn::api::openapi()).unwrap();
+    let doc = serde_json::to_value(mechdyn::registry().openapi()).unwrap();
     let mut ops = Vec::new();
-    let kinds: Vec<&str> = mechdyn::api::kind::KINDS.iter().map(|k| k.path()).collect();
+    let kinds: Vec<&str> = mechdyn::registry().iter().map(|k| k.path()).collect();
     for (path, item) in doc["paths"].as_object().unwrap() {
         let Some(post) = item.get("post").filter(|_| kinds.contains(&path.as_str())) else { continue };
         let schema = &post["requestBody"]["content"]["application/json"]["schema"]["$ref"];
@@ -37,7 +37,7 @@ async fn every_request_example_is_computed_and_stored() {
         let warnings: Vec<&Value> = job["result"]["warnings"].as_array().into_iter().flatten().collect();
         assert!(warnings.is_empty(), "{path}: the example warns {warnings:?}");
         // The documented 201 shows this very result (its long arrays shortened).
-        let doc = serde_json::to_value(mechdyn::api::openapi()).unwrap();
+        let doc = serde_json::to_value(mechdyn::registry().openapi()).unwrap();
         let shown = &doc["paths"][&path]["post"]["responses"]["201"]["content"]["application/json"]["example"];
         assert_eq!(shown["request"], body, "{path}");
         assert_eq!(shown["kind"], job["kind"], "{path}");
@@ -66,7 +66,7 @@ fn shorten(v: &mut Value, keep: usize) {
 /// Each error status of a POST has an example of its own, of its status.
 #[test]
 fn every_error_status_has_its_own_example() {
-    let doc = serde_json::to_value(mechdyn::api::openapi()).unwrap();
+    let doc = serde_json::to_value(mechdyn::registry().openapi()).unwrap();
     let responses = &doc["paths"]["/v1/flywheel"]["post"]["responses"];
     for status in ["400", "401", "413", "415", "422", "503", "507"] {
         let example = &responses[status]["content"]["application/problem+json"]["example"];
@@ -94,7 +94,7 @@ async fn the_root_leads_to_the_docs_which_need_no_outside_validator() {
 /// Client generators name a method after each operationId: they must differ.
 #[test]
 fn operation_ids_are_unique() {
-    let doc = serde_json::to_value(mechdyn::api::openapi()).unwrap();
+    let doc = serde_json::to_value(mechdyn::registry().openapi()).unwrap();
     let mut ids: Vec<&str> = doc["paths"]
         .as_object()
         .unwrap()
@@ -126,8 +126,8 @@ async fn the_template_example_creates_a_template() {
 async fn the_served_document_has_what_the_registry_adds() {
     let app = TestApp::new().await;
     let doc = app.get("/openapi.json").await.json();
-    assert_eq!(doc, mechdyn::api::openapi());
-    for kind in mechdyn::api::kind::KINDS {
+    assert_eq!(doc, mechdyn::registry().openapi());
+    for kind in mechdyn::registry().iter() {
         let created = &doc["paths"][kind.path()]["post"]["responses"]["201"]["content"]["application/json"];
         assert!(created["example"]["result"].is_object(), "{}: no example", kind.name());
         assert!(doc["components"]["schemas"][kind.result_schema()]["x-units"].is_object(), "{}", kind.name());

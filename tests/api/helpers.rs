@@ -42,13 +42,17 @@ impl TestApp {
         let dir = tempfile::tempdir().unwrap();
         let url = format!("sqlite://{}/sub/jobs.db", dir.path().display());
         let store = Store::open(&url).await.unwrap();
-        Self { app: router(AppState::new(store), settings), url, _dir: dir }
+        Self { app: router(AppState::new(store, mechdyn::registry()), settings), url, _dir: dir }
     }
 
     /// A fresh app on the database at `url` (a test's PostgreSQL database).
     pub async fn on(url: &str, settings: &Settings) -> Self {
         let store = Store::open(url).await.unwrap();
-        Self { app: router(AppState::new(store), settings), url: url.into(), _dir: tempfile::tempdir().unwrap() }
+        Self {
+            app: router(AppState::new(store, mechdyn::registry()), settings),
+            url: url.into(),
+            _dir: tempfile::tempdir().unwrap(),
+        }
     }
 
     /// A router built by the test (its own state and settings), its
@@ -60,7 +64,7 @@ impl TestApp {
     /// The same database opened again, as after a restart.
     pub async fn restart(self) -> Self {
         let store = Store::open(&self.url).await.unwrap();
-        Self { app: router(AppState::new(store), &Settings::default()), ..self }
+        Self { app: router(AppState::new(store, mechdyn::registry()), &Settings::default()), ..self }
     }
 
     /// A fresh app whose jobs have this compute budget (and room for
@@ -77,7 +81,7 @@ impl TestApp {
     /// The same database served again with the state `change` makes of the default.
     pub async fn reopened(self, change: impl FnOnce(AppState) -> AppState) -> Self {
         let store = Store::open(&self.url).await.unwrap();
-        Self { app: router(change(AppState::new(store)), &Settings::default()), ..self }
+        Self { app: router(change(AppState::new(store, mechdyn::registry())), &Settings::default()), ..self }
     }
 
     pub async fn send(&self, req: Request<Body>) -> Reply {
@@ -133,7 +137,7 @@ pub fn request(name: &str) -> Value {
 /// The example of a component schema in the served OpenAPI document (what
 /// a user of the interactive docs sends first).
 pub fn example(schema: &str) -> Value {
-    let doc = serde_json::to_value(mechdyn::api::openapi()).unwrap();
+    let doc = serde_json::to_value(mechdyn::registry().openapi()).unwrap();
     let found = doc["components"]["schemas"][schema]["example"].clone();
     assert!(found.is_object(), "the schema {schema} has no example");
     found

@@ -17,7 +17,7 @@ use std::time::Duration;
 async fn readiness_follows_the_database_and_liveness_does_not() {
     let dir = tempfile::tempdir().unwrap();
     let store = Store::open(&format!("sqlite://{}/jobs.db", dir.path().display())).await.unwrap();
-    let app = TestApp::serving(router(AppState::new(store.clone()), &Settings::default()), dir);
+    let app = TestApp::serving(router(AppState::new(store.clone(), mechdyn::registry()), &Settings::default()), dir);
     let ready = app.get("/readyz").await;
     assert_eq!(ready.status, StatusCode::OK, "{}", ready.text);
     assert_eq!((ready.json()["status"].as_str(), ready.json()["database"].as_str()), (Some("ready"), Some("sqlite")));
@@ -92,7 +92,7 @@ async fn the_retention_deletes_by_count_and_by_age() {
 /// The test's body, on the database at `url`.
 pub async fn the_retention_deletes_on(url: &str) {
     let store = Store::open(url).await.unwrap();
-    let state = AppState::new(store);
+    let state = AppState::new(store, mechdyn::registry());
     // The database is at `url` (SQLite's folder kept by the caller, or a PostgreSQL server).
     let app = TestApp::serving(router(state.clone(), &Settings::default()), tempfile::tempdir().unwrap());
     let mut ids = Vec::new();

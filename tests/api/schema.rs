@@ -92,7 +92,7 @@ fn the_document_accepts_every_library_request_template_and_example() {
         eprintln!("skipped: no Python with jsonschema (`.venv/bin/pip install jsonschema`)");
         return;
     };
-    let doc = mechdyn::api::openapi();
+    let doc = mechdyn::registry().openapi();
     let mut cases = Vec::new();
     let root = env!("CARGO_MANIFEST_DIR");
     let files: Vec<String> = std::fs::read_dir(format!("{root}/library/requests"))
@@ -108,7 +108,7 @@ fn the_document_accepts_every_library_request_template_and_example() {
         cases.push(json!({"what": what, "schema": request_schema(&doc, kind.1), "instance": instance}));
     }
     for t in mechdyn::api::templates::builtin() {
-        let kind = mechdyn::api::kind::find(&t.kind).unwrap();
+        let kind = mechdyn::registry().find(&t.kind).unwrap();
         let what = format!("template {}'s request", t.id);
         cases.push(json!({"what": what, "schema": request_schema(&doc, kind.path()), "instance": t.request}));
     }

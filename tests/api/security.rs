@@ -33,7 +33,7 @@ impl std::io::Write for Log {
 #[tokio::test]
 async fn a_panicking_handler_is_answered_500_without_internals() {
     let mut app = TestApp::new().await;
-    let state = mechdyn::api::AppState::new(mechdyn::store::Store::open(&app.url).await.unwrap());
+    let state = mechdyn::api::AppState::new(mechdyn::store::Store::open(&app.url).await.unwrap(), mechdyn::registry());
     app.app = layered(axum::Router::new().route("/boom", get(boom)), &Settings::default(), state);
     // A first panic registers the span's and the events' callsites here,
     // before this test's subscriber exists: setting it then asks each of

@@ -84,29 +84,29 @@ async fn reference(state: &AppState, r: &CheckRequest) -> Result<(&'static dyn A
             e => e,
         })?;
         read::done(&row).map_err(|e| ApiError::Invalid(vec![FieldError::at("/job", e.to_string())]))?;
-        return Ok((gradable(&row.kind, "/job")?, (row, reserved)));
+        return Ok((gradable(&state.kinds, &row.kind, "/job")?, (row, reserved)));
     }
     if let Some(id) = &r.template {
         let t = templates::find(state, id).await.map_err(|e| no_template(e, id))?;
-        let kind = gradable(&t.kind, "/template")?;
+        let kind = gradable(&state.kinds, &t.kind, "/template")?;
         if r.variant.is_some() {
             templates::drawable(&t).map_err(|why| ApiError::Invalid(vec![FieldError::at("/variant", why)]))?;
         }
         let row = templates::job_for(state, &t, &given(&t, r), templates::Want::Job).await.map_err(under_parameters)?;
         return Ok((kind, row));
     }
-    let (kind, request) = kind_request(r)?;
+    let (kind, request) = kind_request(&state.kinds, r)?;
     let row =
         templates::stored_job(state, kind, request, templates::Want::Job).await.map_err(|e| e.under("/request"))?;
     Ok((kind, row))
 }
 
 /// The kind of a reference: any but `check`.
-fn gradable(name: &str, field: &str) -> Result<&'static dyn AnyKind, ApiError> {
-    match kind::find(name).filter(|k| k.name() != CHECK.name()) {
+fn gradable(kinds: &kind::Registry, name: &str, field: &str) -> Result<&'static dyn AnyKind, ApiError> {
+    match kinds.find(name).filter(|k| k.name() != CHECK.name()) {
         Some(k) => Ok(k),
         None => {
-            let known: Vec<&str> = kind::names().into_iter().filter(|n| *n != CHECK.name()).collect();
+            let known: Vec<&str> = kinds.names().into_iter().filter(|n| *n != CHECK.name()).collect();
             Err(ApiError::Invalid(vec![FieldError::at(
                 field,
                 format!("'{name}' is not a kind of job to check against (one of {})", known.join(", ")),
@@ -115,8 +115,11 @@ fn gradable(name: &str, field: &str) -> Result<&'static dyn AnyKind, ApiError> {
     }
 }
 
-fn kind_request(r: &CheckRequest) -> Result<(&'static dyn AnyKind, &Value), ApiError> {
-    let kind = gradable(r.kind.as_deref().unwrap_or_default(), "/kind")?;
+fn kind_request<'a>(
+    kinds: &kind::Registry,
+    r: &'a CheckRequest,
+) -> Result<(&'static dyn AnyKind, &'a Value), ApiError> {
+    let kind = gradable(kinds, r.kind.as_deref().unwrap_or_default(), "/kind")?;
     Ok((kind, r.request.as_ref().unwrap_or(&Value::Null)))
 }
 
@@ -154,7 +157,7 @@ fn under_parameters(e: ApiError) -> ApiError {
 
 /// The check without a store (the document's example): built-in templates
 /// and requests are solved here; a stored job cannot be read.
-fn solve_offline(raw: String, limits: &Limits) -> Result<Vec<u8>, ApiError> {
+fn solve_offline(raw: String, limits: &Limits, kinds: &kind::Registry) -> Result<Vec<u8>, ApiError> {
     let JsonBody { value: r, mut unknown, .. } = parse::<CheckRequest>(raw)?;
     unknown.extend(validate(&r));
     if !unknown.is_empty() {
@@ -170,11 +173,11 @@ fn solve_offline(raw: String, limits: &Limits) -> Result<Vec<u8>, ApiError> {
                 .find(|t| &t.id == id)
                 .ok_or_else(|| no_template(ApiError::NoTemplate(id.clone()), id))?;
             let request = templates::request_for(t, &given(t, &r), RESERVED).map_err(under_parameters)?;
-            (gradable(&t.kind, "/template")?, request)
+            (gradable(kinds, &t.kind, "/template")?, request)
         }
-        (None, None) => kind_request(&r).map(|(k, v)| (k, v.clone()))?,
+        (None, None) => kind_request(kinds, &r).map(|(k, v)| (k, v.clone()))?,
     };
-    let result = kind.solve(request.to_string(), limits).map_err(|e| e.under("/request"))?;
+    let result = kind.solve(request.to_string(), limits, kinds).map_err(|e| e.under("/request"))?;
     let result: Value = serde_json::from_slice(&result).map_err(|e| ApiError::Internal(e.to_string()))?;
     serde_json::to_vec(&grade(&r, kind, &result, None)?).map_err(|e| ApiError::Internal(e.to_string()))
 }
@@ -200,8 +203,8 @@ format or as PrairieLearn's or Gradescope's results document.";
         let paths = kind::operation_for(self.path(), "create_check", "grading", summary, names);
         (schemas, paths, axum::routing::post(post))
     }
-    fn solve(&self, raw: String, limits: &Limits) -> Result<Vec<u8>, ApiError> {
-        solve_offline(raw, limits)
+    fn solve(&self, raw: String, limits: &Limits, kinds: &kind::Registry) -> Result<Vec<u8>, ApiError> {
+        solve_offline(raw, limits, kinds)
     }
     fn job<'a>(&'a self, state: &'a AppState, request: Bytes, to: Destination) -> StoredJob<'a> {
         Box::pin(async move { check_job(state, parse::<CheckRequest>(request)?, to).await })

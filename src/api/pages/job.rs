@@ -4,7 +4,7 @@
 
 use super::{IdPath, layout};
 use crate::api::AppState;
-use crate::api::kind::{self, AnyKind};
+use crate::api::kind::AnyKind;
 use crate::api::plots::{self, Listed};
 use crate::api::read::{self, result_tree};
 use crate::api::tables::{self, Scalar};
@@ -73,7 +73,7 @@ async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Resu
         read => read?,
     };
     let request = serde_json::from_slice::<Value>(&row.request).unwrap_or_default();
-    let kind = kind::find(&row.kind).ok_or_else(|| ApiError::Internal(format!("job of kind {}", row.kind)))?;
+    let kind = state.kinds.find(&row.kind).ok_or_else(|| ApiError::Internal(format!("job of kind {}", row.kind)))?;
     let listed = kind.plots(&plots::Job { request: &request, result: &result });
     if let Some(s) = step {
         let count = steps(&result);

@@ -14,7 +14,6 @@
 pub mod svg;
 
 use super::AppState;
-use super::kind;
 use super::read::{query, result_tree};
 pub use crate::kind::chart::{Chart, Listed};
 pub use crate::kind::plots::*;
@@ -118,7 +117,7 @@ pub async fn render(state: &AppState, id: &str, name: &str, options: Options) ->
     let (row, result, _reserved) = result_tree(state, id).await?;
     let request = serde_json::from_slice::<Value>(&row.request).unwrap_or_default();
     let job = Job { request: &request, result: &result };
-    let kind = kind::find(&row.kind);
+    let kind = state.kinds.find(&row.kind);
     let chart = match kind {
         Some(k) => k.plot(&job, name, &options)?,
         None => None,
@@ -137,7 +136,7 @@ pub async fn render(state: &AppState, id: &str, name: &str, options: Options) ->
 pub async fn listed(state: &AppState, id: &str) -> Result<(Vec<Listed>, crate::store::JobRow), ApiError> {
     let (row, result, _reserved) = result_tree(state, id).await?;
     let request = serde_json::from_slice::<Value>(&row.request).unwrap_or_default();
-    let plots = kind::find(&row.kind).map(|k| k.plots(&Job { request: &request, result: &result }));
+    let plots = state.kinds.find(&row.kind).map(|k| k.plots(&Job { request: &request, result: &result }));
     Ok((plots.unwrap_or_default(), row))
 }
 

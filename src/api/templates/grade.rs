@@ -11,8 +11,8 @@ use super::table::{Column, bad, parameters_of, ragged, read_csv, said};
 use super::{RESERVED, Want, job_for, texts, variants};
 use crate::api::AppState;
 use crate::api::check::{CheckOutput, CheckRequest, ToleranceDto, bare_number, grade_with};
+use crate::api::tables;
 use crate::api::tables::{Csv, Scalar};
-use crate::api::{kind, tables};
 use crate::kind::problem::{ApiError, FieldError};
 use serde_json::Value;
 use std::collections::{BTreeMap, HashMap, HashSet};
@@ -239,7 +239,7 @@ async fn graded(
         })
         .collect();
     let request = CheckRequest { answers, tolerance: Some(tolerance), reveal: Some(reveal), ..CheckRequest::default() };
-    let kind = kind::find(&t.kind).ok_or_else(|| ApiError::Internal(format!("template kind {}", t.kind)))?;
+    let kind = state.kinds.find(&t.kind).ok_or_else(|| ApiError::Internal(format!("template kind {}", t.kind)))?;
     // Off the async workers: a failing answer's slips read every scalar of the result.
     let graded = tokio::task::spawn_blocking(move || grade_with(&request, kind, &result, Some(job), &flat));
     let graded = graded.await.map_err(|e| ApiError::Internal(format!("grading task: {e}")))?;

@@ -21,7 +21,7 @@ use super::body::Chunks;
 use super::create::Destination;
 use super::job::job_chunks;
 use super::json::{JsonBody, RawBody};
-use super::kind::{self, AnyKind};
+use super::kind::AnyKind;
 use super::parts;
 use super::read;
 use crate::kind::problem::{ApiError, FieldError, Problem, ReadErrors};
@@ -65,7 +65,7 @@ pub async fn job_for(
     want: Want,
 ) -> Result<Held, ApiError> {
     let request = apply::request_for(t, given, RESERVED)?;
-    let kind = kind::find(&t.kind).ok_or_else(|| ApiError::Internal(format!("template kind {}", t.kind)))?;
+    let kind = state.kinds.find(&t.kind).ok_or_else(|| ApiError::Internal(format!("template kind {}", t.kind)))?;
     stored_job(state, kind, &request, want).await.map_err(|e| apply::named(t, e))
 }
 
@@ -177,7 +177,7 @@ pub async fn result(
     let tree = row.result.len().saturating_mul(read::CSV_MEMORY_FACTOR - read::READ_MEMORY_FACTOR);
     reserved.merge(state.admission.memory(tree).await?);
     let result = serde_json::from_slice(&row.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
-    parts::answer(&row, &result, &pointer, q.get("unit").filter(|u| !u.trim().is_empty()), &headers)
+    parts::answer(&state.kinds, &row, &result, &pointer, q.get("unit").filter(|u| !u.trim().is_empty()), &headers)
 }
 
 fn parameters(q: Result<Query<HashMap<String, String>>, QueryRejection>) -> Result<HashMap<String, String>, ApiError> {
@@ -199,12 +199,12 @@ fn parameters(q: Result<Query<HashMap<String, String>>, QueryRejection>) -> Resu
     ))]
 pub async fn create(State(state): State<AppState>, body: JsonBody<NewTemplate>) -> Result<Response, ApiError> {
     let JsonBody { value, unknown, .. } = body;
-    let t = model::checked(value, unknown)?;
+    let t = model::checked(&state.kinds, value, unknown)?;
     if builtin().iter().any(|b| b.id == t.id) {
         return Err(ApiError::Conflict(format!("'{}' is a built-in template", t.id)));
     }
     let (bytes, key) = apply::keyed(&t.kind, &t.request);
-    let kind = kind::find(&t.kind).ok_or_else(|| ApiError::Internal(format!("kind {}", t.kind)))?;
+    let kind = state.kinds.find(&t.kind).ok_or_else(|| ApiError::Internal(format!("kind {}", t.kind)))?;
     let (_solved, _reserved) =
         kind.job(&state, bytes.into(), Destination::New { key: Some(key) }).await.map_err(model::under_request)?;
     let text = serde_json::to_string(&t).map_err(|e| ApiError::Internal(e.to_string()))?;

@@ -118,9 +118,13 @@ pub const LIBRARY_FILES: &[(&str, &str)] = &[
 
 /// A new template checked: its kind, name, parameters' names, pointers,
 /// units and ranges (every error at its pointer in the body).
-pub fn checked(t: NewTemplate, mut errors: Vec<FieldError>) -> Result<Template, ApiError> {
-    if crate::api::kind::find(&t.kind).is_none() {
-        let names = crate::api::kind::names().join(", ");
+pub fn checked(
+    kinds: &crate::api::kind::Registry,
+    t: NewTemplate,
+    mut errors: Vec<FieldError>,
+) -> Result<Template, ApiError> {
+    if kinds.find(&t.kind).is_none() {
+        let names = kinds.names().join(", ");
         errors.push(FieldError::at("/kind", format!("unknown kind '{}' (known: {names})", t.kind)));
     }
     if !t.request.is_object() {
