@@ -7,8 +7,9 @@
 //! docs/PLOTS.md.
 
 use mechdyn::api::kind::AnyKind;
-use mechdyn::api::plots::{Job, Options, svg};
+use mechdyn::api::plots::svg;
 use mechdyn::kind::Limits;
+use mechdyn::kind::plots::{Job, Options};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 use std::time::Instant;

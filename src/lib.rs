@@ -20,5 +20,5 @@ pub mod units;
 /// process, so its OpenAPI document is made once.
 pub fn registry() -> api::kind::Registry {
     static KINDS: std::sync::OnceLock<api::kind::Registry> = std::sync::OnceLock::new();
-    KINDS.get_or_init(|| api::kind::Registry::new(kinds::register)).clone()
+    KINDS.get_or_init(|| api::kind::Registry::new(kinds::register, &[&api::check::CHECK])).clone()
 }

@@ -8,7 +8,7 @@
 use crate::api::check::{CheckRequest, check_job};
 use crate::api::create::Destination;
 use crate::api::kind::Registry;
-use crate::api::templates::{self, Template, builtin};
+use crate::api::templates::{Template, builtin};
 use crate::api::{AppState, json, parts};
 use crate::kind::Limits;
 use crate::kind::problem::ApiError;
@@ -72,5 +72,5 @@ pub fn template(name: &str) -> Result<Template, String> {
 /// The graded class CSV `body` for template `t`, with the query of
 /// `POST /v1/templates/{id}/grade` (`relative`, `sigfigs`, `reveal`, ...).
 pub fn grade(kinds: &Registry, t: &Template, query: &HashMap<String, String>, body: &[u8]) -> Result<String, ApiError> {
-    runtime()?.block_on(async { templates::class(&state(kinds).await?, t, query, body).await })
+    runtime()?.block_on(async { crate::api::check::class::class(&state(kinds).await?, t, query, body).await })
 }

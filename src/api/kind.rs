@@ -7,8 +7,9 @@
 
 use super::create::Destination;
 use super::json::JsonBody;
-use super::{AppState, job, plots};
+use super::{AppState, job};
 use crate::kind::limits::Limits;
+use crate::kind::plots;
 use crate::kind::problem::{ApiError, PostErrors};
 use crate::kind::{Kind, Register, Table, compute};
 use crate::store::JobRow;
@@ -64,7 +65,7 @@ pub trait AnyKind: Send + Sync {
     fn units(&self) -> &'static [(&'static str, &'static str)];
     fn table(&self, result: &Value) -> Option<Table>;
     fn unit(&self, result: &Value, pointer: &[&str]) -> Option<String>;
-    fn plots(&self, job: &plots::Job) -> Vec<plots::Listed>;
+    fn plots(&self, job: &plots::Job) -> Vec<crate::kind::chart::Listed>;
     fn plot(&self, job: &plots::Job, name: &str, options: &plots::Options) -> plots::Drawn;
 }
 
@@ -116,7 +117,7 @@ impl<K: Kind> AnyKind for Registered<K> {
     fn unit(&self, result: &Value, pointer: &[&str]) -> Option<String> {
         K::unit(result, pointer)
     }
-    fn plots(&self, job: &plots::Job) -> Vec<plots::Listed> {
+    fn plots(&self, job: &plots::Job) -> Vec<crate::kind::chart::Listed> {
         (K::PLOTS.list)(job)
     }
     fn plot(&self, job: &plots::Job, name: &str, options: &plots::Options) -> plots::Drawn {
@@ -198,10 +199,10 @@ fn with_article(name: &str) -> String {
 }
 
 /// The kinds the service serves, handed to it by the composition root
-/// (`main.rs`, through [`crate::registry`]): the kinds' wing registers each
-/// ([`crate::kind::Register`]), and `check` (answers checked against another
-/// job, a feature of the service) comes last. The OpenAPI document is made
-/// from it once. Cheap to clone.
+/// (`main.rs`, through [`crate::registry`]): those the kinds' wing registers
+/// ([`crate::kind::Register`]), then kinds of the service's own (`check`:
+/// answers checked against another job). The OpenAPI document is made from
+/// it once. Cheap to clone.
 #[derive(Clone)]
 pub struct Registry(Arc<Inner>);
 
@@ -221,11 +222,11 @@ impl Register for Builder {
 }
 
 impl Registry {
-    /// The kinds `register` adds, in the order of the documentation, then `check`.
-    pub fn new(register: impl FnOnce(&mut Builder)) -> Self {
+    /// The kinds `register` adds, in the order of the documentation, then `more`.
+    pub fn new(register: impl FnOnce(&mut Builder), more: &[&'static dyn AnyKind]) -> Self {
         let mut builder = Builder(Vec::new());
         register(&mut builder);
-        builder.0.push(&super::check::CHECK);
+        builder.0.extend(more);
         Self(Arc::new(Inner { kinds: builder.0, document: OnceLock::new() }))
     }
 

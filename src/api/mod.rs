@@ -136,7 +136,7 @@ fn routes(kinds: &kind::Registry) -> OpenApiRouter<AppState> {
         .routes(utoipa_axum::routes!(templates::job))
         .routes(utoipa_axum::routes!(templates::table))
         .routes(utoipa_axum::routes!(templates::variants))
-        .routes(utoipa_axum::routes!(templates::grade))
+        .routes(utoipa_axum::routes!(check::class::grade))
         .routes(rest_of_path(utoipa_axum::routes!(templates::result), "pointer"))
         .routes(rest_of_path(utoipa_axum::routes!(parts::part), "pointer"))
         .routes(utoipa_axum::routes!(service::healthz))

@@ -388,3 +388,8 @@ fn not_done(id: &str, status: &crate::store::Status) -> String {
         s => format!("job '{id}' is {}: its result is not there yet; retry after 1 s", s.as_str()),
     }
 }
+
+/// Escapes one reference token of a JSON pointer (RFC 6901).
+pub fn escape(token: &str) -> String {
+    token.replace('~', "~0").replace('/', "~1")
+}

@@ -66,28 +66,28 @@ async fn a_flywheel_has_its_four_plots_and_their_numbers_are_the_results() {
     // ΔE as the plot writes it: four significant figures of the stored value.
     let texts = svg_texts(&app, &plots[1].2, &plots[1].1).await;
     let de = result["energy_fluctuation"].as_f64().unwrap();
-    assert!(texts.iter().any(|t| t == &format!("ΔE = {} J", mechdyn::api::plots::sig(de))), "{texts:?}");
-    assert_eq!(mechdyn::api::plots::sig(de), "551.1", "four figures of case F1's ΔE = 551.10 J");
+    assert!(texts.iter().any(|t| t == &format!("ΔE = {} J", mechdyn::kind::plots::sig(de))), "{texts:?}");
+    assert_eq!(mechdyn::kind::plots::sig(de), "551.1", "four figures of case F1's ΔE = 551.10 J");
     // Its extremes, each labelled at its line (S_max is at the top of the range, S_min at the bottom).
     let sums: Vec<f64> = result["cumulative"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
     let (lo, hi) = sums.iter().fold((0.0_f64, 0.0_f64), |(a, b), &x| (a.min(x), b.max(x)));
     // ΔE = S_max − S_min by definition; 1e-9 of ΔE: the rounding of a few sums.
     assert!((hi - lo - de).abs() < 1e-9 * de, "ΔE = S_max − S_min");
     for label in
-        [format!("S_max = {} J", mechdyn::api::plots::sig(hi)), format!("S_min = {} J", mechdyn::api::plots::sig(lo))]
+        [format!("S_max = {} J", mechdyn::kind::plots::sig(hi)), format!("S_min = {} J", mechdyn::kind::plots::sig(lo))]
     {
         assert!(texts.contains(&label), "{label} in {texts:?}");
     }
     let texts = svg_texts(&app, &plots[2].2, &plots[2].1).await;
     for (name, key) in [("ω_max", "omega_max"), ("ω_min", "omega_min")] {
-        let label = format!("{name} = {}", mechdyn::api::plots::sig(result[key].as_f64().unwrap()));
+        let label = format!("{name} = {}", mechdyn::kind::plots::sig(result[key].as_f64().unwrap()));
         assert!(texts.contains(&label), "{label} in {texts:?}");
     }
     // Each lobe's area A_i is labelled with its stored work.
     let texts = svg_texts(&app, &plots[0].2, &plots[0].1).await;
     for (k, a) in result["areas"].as_array().unwrap().iter().enumerate() {
         let w = a["work"].as_f64().unwrap();
-        let label = format!("A{} = {}{} J", k + 1, if w > 0.0 { "+" } else { "" }, mechdyn::api::plots::sig(w));
+        let label = format!("A{} = {}{} J", k + 1, if w > 0.0 { "+" } else { "" }, mechdyn::kind::plots::sig(w));
         assert!(texts.contains(&label), "{label} in {texts:?}");
     }
 }

@@ -6,6 +6,7 @@
 //! check is itself a job of kind `check`, its result in the service's own
 //! format or a platform's results document ([`platforms`]).
 
+pub mod class;
 mod items;
 mod platforms;
 mod run;
@@ -14,10 +15,10 @@ pub use items::bare_number;
 pub use platforms::{Gradescope, PrairieLearn};
 pub use run::{CHECK, CheckKind, check_job, post};
 
-use super::json::escape;
 use super::tables;
 use crate::kind::JobResult;
 use crate::kind::Table;
+use crate::kind::problem::escape;
 use crate::kind::problem::{ApiError, FieldError};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;

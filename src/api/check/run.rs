@@ -231,15 +231,15 @@ format or as PrairieLearn's or Gradescope's results document.";
         }
     }
     /// A check has no curve.
-    fn plots(&self, job: &crate::api::plots::Job) -> Vec<crate::api::plots::Listed> {
-        (crate::api::plots::NONE.list)(job)
+    fn plots(&self, job: &crate::kind::plots::Job) -> Vec<crate::api::plots::Listed> {
+        (crate::kind::plots::NONE.list)(job)
     }
     fn plot(
         &self,
-        job: &crate::api::plots::Job,
+        job: &crate::kind::plots::Job,
         name: &str,
-        o: &crate::api::plots::Options,
-    ) -> crate::api::plots::Drawn {
-        (crate::api::plots::NONE.draw)(job, name, o)
+        o: &crate::kind::plots::Options,
+    ) -> crate::kind::plots::Drawn {
+        (crate::kind::plots::NONE.draw)(job, name, o)
     }
 }

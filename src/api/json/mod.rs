@@ -5,6 +5,7 @@
 mod strict;
 mod words;
 
+pub use crate::kind::problem::escape;
 use crate::kind::problem::{ApiError, FieldError};
 use axum::body::Body;
 use axum::extract::{FromRequest, Request};
@@ -116,11 +117,6 @@ pub const BOM: &[u8] = b"\xEF\xBB\xBF";
 /// The body limit in force, put in the request extensions by the router.
 #[derive(Clone, Copy, Debug)]
 pub struct BodyLimit(pub usize);
-
-/// Escapes one reference token of a JSON pointer (RFC 6901).
-pub fn escape(token: &str) -> String {
-    token.replace('~', "~0").replace('/', "~1")
-}
 
 fn ignored_pointer(path: &serde_ignored::Path) -> String {
     use serde_ignored::Path;

@@ -74,11 +74,11 @@ async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Resu
     };
     let request = serde_json::from_slice::<Value>(&row.request).unwrap_or_default();
     let kind = state.kinds.find(&row.kind).ok_or_else(|| ApiError::Internal(format!("job of kind {}", row.kind)))?;
-    let listed = kind.plots(&plots::Job { request: &request, result: &result });
+    let listed = kind.plots(&crate::kind::plots::Job { request: &request, result: &result });
     if let Some(s) = step {
         let count = steps(&result);
         if s >= count {
-            return Err(plots::no_step(s, count));
+            return Err(crate::kind::plots::no_step(s, count));
         }
     }
     let summary = summary(&row, &result);
@@ -170,7 +170,7 @@ fn summary(row: &JobRow, result: &Value) -> Markup {
         @if let Some(a) = accuracy {
             div.scroll { table.accuracy { tbody { @for (k, v) in a { tr {
                 th { (k.replace('_', " ")) }
-                @if let Some(x) = v.as_f64().filter(|x| x.fract() != 0.0) { td.num { (plots::sig(x)) } }
+                @if let Some(x) = v.as_f64().filter(|x| x.fract() != 0.0) { td.num { (crate::kind::plots::sig(x)) } }
                 @else if v.is_number() { td.num { (text(v)) } } @else { td { (text(v)) } }
             } } } } }
         } @else {

@@ -16,7 +16,8 @@ pub mod svg;
 use super::AppState;
 use super::read::{query, result_tree};
 pub use crate::kind::chart::{Chart, Listed};
-pub use crate::kind::plots::*;
+use crate::kind::plots::{Job, Options};
+
 use crate::kind::problem::{ApiError, FieldError, ReadErrors};
 use axum::Json;
 use axum::extract::rejection::QueryRejection;

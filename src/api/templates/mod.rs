@@ -5,13 +5,11 @@
 //! parameter study is one `POST .../table` of CSV ([`table`]).
 
 mod apply;
-mod grade;
 mod model;
-mod table;
-mod variants;
+pub mod table;
+pub mod variants;
 
 pub use apply::{request_for, texts};
-pub use grade::class;
 pub use model::{LIBRARY_FILES, NewTemplate, Parameter, RESERVED, Template, TemplateList, builtin};
 pub use table::{TableRequest, TableResponse, TableRow, study};
 pub use variants::{MAX_SEED, Variant, Variants, draw, drawable};
@@ -285,43 +283,4 @@ pub async fn variants(
         );
     }
     Ok(axum::Json(list).into_response())
-}
-
-/// Grades a class: one row per student (`student`, the student's
-/// parameters or `variant`, answer columns named by pointer, optionally
-/// `pointer [unit]` for bare numbers); answers CSV with `student`, `score`,
-/// per answer `POINTER pass` and `POINTER relative_error`, `feedback` and
-/// `error` (a row that cannot be graded says why; the others are graded).
-#[utoipa::path(post, path = "/v1/templates/{id}/grade", operation_id = "post_template_grade", tag = "grading",
-    params(("id" = String, Path, description = "Template id"),
-        ("relative" = Option<f64>, Query, description = "Relative tolerance (default 0.01)"),
-        ("absolute" = Option<f64>, Query, description = "Absolute tolerance, SI (default 0)"),
-        ("sigfigs" = Option<u32>, Query, description = "Significant figures (PrairieLearn's rule), replacing `relative`"),
-        ("zero_level" = Option<f64>, Query, description = "Below it (SI) an expected value is compared absolutely (default 1e-12)"),
-        ("reveal" = Option<bool>, Query, description = "Whether the feedback shows expected values (default true)")),
-    request_body(description = "CSV: `student`, parameter columns or `variant`, answer columns named by pointer",
-        content((String = "text/csv", example = "student,variant,inertia_exact [kg*m^2],omega_max\nana,1,459.6,6.4\nben,2,512,6.39\n"))),
-    responses(
-        (status = 200, description = "A row per student", body = String, content_type = "text/csv",
-            example = "student,score,inertia_exact pass,inertia_exact relative_error,feedback,error\nana,1,true,0.0009,...,\n"),
-        (status = 400, description = "No student column, no answer column, a malformed CSV or query", body = Problem, content_type = "application/problem+json"),
-        (status = 413, description = "The body is larger than the limit on a request body", body = Problem, content_type = "application/problem+json"),
-        (status = 415, description = "Not text/csv", body = Problem, content_type = "application/problem+json"),
-        ReadErrors,
-    ))]
-pub async fn grade(
-    State(state): State<AppState>,
-    Path(id): Path<String>,
-    headers: HeaderMap,
-    q: Result<Query<HashMap<String, String>>, QueryRejection>,
-    RawBody(body): RawBody,
-) -> Result<Response, ApiError> {
-    let q = read::query(q, grade::QUERY)?;
-    let mime = table::mime(&headers);
-    if !(mime.starts_with("text/csv") || mime.starts_with("text/plain")) {
-        return Err(ApiError::UnsupportedTable);
-    }
-    let t = find(&state, &id).await?;
-    let text = class(&state, &t, &q, &body).await?;
-    Ok(([(header::CONTENT_TYPE, "text/csv; charset=utf-8")], text).into_response())
 }

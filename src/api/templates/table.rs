@@ -104,26 +104,26 @@ pub async fn study(
 }
 
 /// `values=a,/b, c` as pointers, as written (a leading `/` optional).
-pub(super) fn pointer_list(list: &str) -> Vec<String> {
+pub fn pointer_list(list: &str) -> Vec<String> {
     list.split(',').map(|p| p.trim().to_string()).filter(|p| !p.is_empty()).collect()
 }
 
 /// The body's content type, lower-case (empty without one).
-pub(super) fn mime(headers: &HeaderMap) -> String {
+pub fn mime(headers: &HeaderMap) -> String {
     headers.get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok()).unwrap_or("").to_ascii_lowercase()
 }
 
-pub(super) fn bad(parameter: &str, message: impl Into<String>) -> ApiError {
+pub fn bad(parameter: &str, message: impl Into<String>) -> ApiError {
     ApiError::BadQuery(vec![FieldError::parameter(parameter, message)])
 }
 
 /// A header cell `name [unit]`: (as written, name, unit).
-pub(super) type Column = (String, String, Option<String>);
+pub type Column = (String, String, Option<String>);
 
 /// The header and rows of a CSV (`,`, or `;` or tab when the header has no
 /// comma: a European spreadsheet's export). Rows may be ragged here;
 /// [`even`] refuses them where every row must be whole.
-pub(super) fn read_csv(text: &str) -> Result<(Vec<Column>, Vec<Vec<String>>), ApiError> {
+pub fn read_csv(text: &str) -> Result<(Vec<Column>, Vec<Vec<String>>), ApiError> {
     let first = text.lines().next().unwrap_or("");
     let delimiter = if first.contains(',') {
         b','
@@ -162,7 +162,7 @@ pub(super) fn read_csv(text: &str) -> Result<(Vec<Column>, Vec<Vec<String>>), Ap
 }
 
 /// Why a row has not one cell per column, if it has not (`row` counts the data rows from 1).
-pub(super) fn ragged(header: &[Column], row: &[String], i: usize) -> Option<String> {
+pub fn ragged(header: &[Column], row: &[String], i: usize) -> Option<String> {
     (row.len() != header.len()).then(|| format!("row {} has {} cells for {} columns", i + 1, row.len(), header.len()))
 }
 
@@ -175,7 +175,7 @@ fn even(header: &[Column], rows: &[Vec<String>]) -> Result<(), ApiError> {
 }
 
 /// A CSV row's parameters: a cell under `name [unit]` is the quantity `cell unit`; empty cells keep the default.
-pub(super) fn parameters_of(header: &[Column], row: &[String]) -> HashMap<String, String> {
+pub fn parameters_of(header: &[Column], row: &[String]) -> HashMap<String, String> {
     header
         .iter()
         .zip(row)
@@ -185,7 +185,7 @@ pub(super) fn parameters_of(header: &[Column], row: &[String]) -> HashMap<String
 }
 
 /// Every row's values, job and error, in order.
-pub(super) async fn run(
+pub async fn run(
     state: &AppState,
     t: &Template,
     rows: Vec<HashMap<String, String>>,
@@ -228,7 +228,7 @@ pub(super) async fn run(
     Ok(out)
 }
 
-pub(super) fn unknown_parameter(t: &Template, name: &str) -> FieldError {
+pub fn unknown_parameter(t: &Template, name: &str) -> FieldError {
     let known = t.parameters.keys().map(String::as_str).collect::<Vec<_>>().join(", ");
     FieldError::parameter(name, format!("no parameter {name} in template {} (its parameters: {known})", t.id))
 }
@@ -247,7 +247,7 @@ fn absent(result: &Value, pointers: &[String], found: &[Option<&Value>]) -> Opti
 }
 
 /// An error in one line for a table's `error` cell.
-pub(super) fn said(e: &ApiError) -> String {
+pub fn said(e: &ApiError) -> String {
     let p = e.problem();
     let fields: Vec<String> = p
         .errors

@@ -108,7 +108,7 @@ impl EquivalentRequest {
             e.push("/points", "give 1 to 20 points");
         }
         if let Some(name) = self.points.iter().find(|(_, p)| !p.iter().all(|v| v.is_finite())).map(|(n, _)| n) {
-            e.push(&format!("/points/{}", crate::api::json::escape(name)), "coordinates must be finite");
+            e.push(&format!("/points/{}", crate::kind::problem::escape(name)), "coordinates must be finite");
         }
         match (mass, inertia, cg) {
             (Some(m), Some(i), Some(g)) if e.list.is_empty() => {

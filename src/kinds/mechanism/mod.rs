@@ -209,7 +209,7 @@ impl MechanismDto {
         }
         let points = self.points.clone().unwrap_or_default();
         if let Some((name, _)) = points.iter().find(|(_, p)| !p.iter().all(|v| v.is_finite())) {
-            e.push(&format!("{at}/points/{}", crate::api::json::escape(name)), "coordinates must be finite");
+            e.push(&format!("{at}/points/{}", crate::kind::problem::escape(name)), "coordinates must be finite");
         }
         let point = |e: &mut Errors, p: &PointRef, ptr: &str| match p {
             PointRef::Coords(c) if c.iter().all(|v| v.is_finite()) => Some(*c),
