@@ -1,11 +1,11 @@
 //! The `machine` form of `POST /v1/dynamics`: a planar mechanism whose input
 //! joints are free, integrated in its own coordinates (any number of DOF).
 
+use super::Initial;
 use crate::engine::dynamics::mechanism::MechanismSolution;
 use crate::engine::kinetostatics::Load;
 use crate::engine::model::{Driver, JointKind, Mechanism};
 use crate::kind::quantity::{Errors, FunctionDto};
-use crate::kinds::dynamics::Initial;
 use crate::kinds::mechanism::MechanismDto;
 use crate::kinds::mechanism::{InputDto, Inputs, LoadDto, Name, ReactionDto, convert_loads, names};
 use crate::units::Dim;

@@ -1,8 +1,8 @@
 //! The `result` of a dynamics job, as stored and served, and its CSV table.
 
+use super::{IntegratorChoice, MachineDynamics};
 use crate::engine::dynamics::{DynamicsSolution, EventKind, KEPT_BYTES};
 use crate::kind::{list, names};
-use crate::kinds::dynamics::{IntegratorChoice, MachineDynamics};
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 

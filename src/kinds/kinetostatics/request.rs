@@ -1,5 +1,6 @@
 //! `POST /v1/kinetostatics` request and its conversion into an engine problem.
 
+use super::located::Written;
 use crate::engine::function::{Function, Side};
 use crate::engine::kinetostatics::{Load, Outputs};
 use crate::engine::model::{Driver, JointKind, Mechanism};
@@ -7,7 +8,6 @@ use crate::kind::constants::{self, Constants};
 use crate::kind::limits::Limits;
 use crate::kind::problem::FieldError;
 use crate::kind::quantity::{Errors, Quantity};
-use crate::kinds::kinetostatics::located::Written;
 use crate::kinds::mechanism::{InputDto, Inputs, LoadDto, MechanismDto, convert_loads};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};

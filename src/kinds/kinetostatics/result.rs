@@ -1,8 +1,8 @@
 //! The `result` of a kinetostatics job, as stored and served, and its CSV table.
 
+use super::request::Problem;
 use crate::engine::kinetostatics::{Motion, Reaction, Step, Totals};
 use crate::kind::{cell, list, names};
-use crate::kinds::kinetostatics::request::Problem;
 use crate::kinds::mechanism::{Name, ReactionDto};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;

@@ -5,12 +5,12 @@
 //! request (the drawn configuration) and the stored poses (x_G, y_G, θ) of
 //! the bodies; a point P of body b is at r_b + A(θ_b)(P_ref − G_ref).
 
+use super::MechanismDto;
 use crate::engine::model::{JointKind, Mechanism};
 use crate::kind::chart::{Arrow, Axis, Chart, Fill, Line, Pen};
 use crate::kind::limits::Limits;
 use crate::kind::plots::{num, sig};
 use crate::kind::quantity::Errors;
-use crate::kinds::mechanism::MechanismDto;
 use serde_json::Value;
 
 /// The model of the stored request's mechanism (at `pointer`), without drivers.

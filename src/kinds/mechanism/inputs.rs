@@ -1,11 +1,11 @@
 //! The driven inputs of a mechanism (kinetostatics, a flywheel's or a
 //! dynamics job's `machine`), and the parts of a flywheel's machine.
 
+use super::MechanismDto;
+use super::loads::{LoadDto, convert_loads};
 use crate::engine::kinetostatics::Load;
 use crate::engine::model::{Driver, JointKind, Mechanism};
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
-use crate::kinds::mechanism::MechanismDto;
-use crate::kinds::mechanism::loads::{LoadDto, convert_loads};
 use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
 use std::fmt;

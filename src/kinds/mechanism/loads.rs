@@ -1,8 +1,8 @@
 //! Loads of a mechanism: wire form and conversion into engine loads.
 
+use super::{MechanismDto, PointRef, body_id};
 use crate::engine::kinetostatics::Load;
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
-use crate::kinds::mechanism::{MechanismDto, PointRef, body_id};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
