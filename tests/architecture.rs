@@ -81,7 +81,7 @@ fn no_two_schemas_share_a_name() {
 /// Regenerate with `cargo run -- openapi > openapi/openapi.json`.
 #[test]
 fn the_committed_openapi_document_is_up_to_date() {
-    let generated = mechdyn::api::openapi_json();
+    let generated = mechdyn::registry().openapi_json().to_string();
     let path = root().join("openapi/openapi.json");
     let committed = std::fs::read_to_string(&path).unwrap_or_default();
     assert!(
@@ -213,4 +213,46 @@ fn engine_references(code: &str, module: &[String]) -> Vec<String> {
         }
     }
     out
+}
+
+#[path = "architecture/imports.rs"]
+mod imports;
+
+/// No two files of `src/` use each other, directly or through others: each
+/// can be read knowing only what it uses, and the wings stay apart. A
+/// module's file and its own submodules' files are one unit here (a
+/// submodule sees its parent's private items, and `super::` is how it
+/// reads them).
+#[test]
+fn no_file_of_the_crate_is_in_an_import_cycle() {
+    let edges = imports::Crate::read(&root().join("src")).edges();
+    let machine = &edges["engine/machine.rs"];
+    assert!(machine.contains("engine/kinematics.rs"), "the scan sees the machine's uses: {machine:?}");
+    let uses = |from: &str, to: &str| {
+        let found: Vec<String> = edges
+            .iter()
+            .filter(|(file, _)| file.starts_with(from))
+            .flat_map(|(file, targets)| {
+                targets.iter().filter(|t| t.starts_with(to)).map(move |t| format!("{file} uses {t}"))
+            })
+            .collect();
+        found
+    };
+    // The wings: the contract knows neither; the kinds know nothing of the
+    // service; the service never names a kind; a check uses templates, not
+    // the other way.
+    for (from, to) in [
+        ("kind/", "api/"),
+        ("kind/", "kinds/"),
+        ("kinds/", "api/"),
+        ("api/", "kinds/"),
+        ("api/templates/", "api/check/"),
+    ] {
+        let found = uses(from, to);
+        assert!(found.is_empty(), "{from} must not use {to}: {found:?}");
+    }
+    assert!(!uses("api/check/", "api/templates/").is_empty(), "the scan sees a check's use of templates");
+    let cycles = imports::cycles(&edges);
+    let shown: Vec<String> = cycles.iter().map(|c| format!("{} files: {}", c.len(), c.join(", "))).collect();
+    assert!(cycles.is_empty(), "files in import cycles:\n{}", shown.join("\n"));
 }
