@@ -220,9 +220,8 @@ mod imports;
 
 /// No two files of `src/` use each other, directly or through others: each
 /// can be read knowing only what it uses, and the wings stay apart. A
-/// module's file and its own submodules' files are one unit here (a
-/// submodule sees its parent's private items, and `super::` is how it
-/// reads them).
+/// submodule's use of its parent (`super::`, where it sees the parent's
+/// private items) is the one way back left out.
 #[test]
 fn no_file_of_the_crate_is_in_an_import_cycle() {
     let edges = imports::Crate::read(&root().join("src")).edges();

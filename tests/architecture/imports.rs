@@ -35,7 +35,9 @@ impl Crate {
     }
 
     /// Every file's uses: file → the files it uses, leaving out its own
-    /// module's ancestors and descendants (a parent and its submodules).
+    /// module's ancestors (a submodule reads its parent's items through
+    /// `super::`, the parent calls into it: that pair is one module's
+    /// inside; any other way back is a cycle).
     pub fn edges(&self) -> BTreeMap<String, BTreeSet<String>> {
         let mut edges = BTreeMap::new();
         for (module, path) in &self.files {
@@ -43,8 +45,8 @@ impl Crate {
             let tokens: TokenStream = text.parse().unwrap_or_else(|e| panic!("{}: {e:?}", path.display()));
             let mut scan = Scan { krate: self, aliases: BTreeMap::new(), targets: BTreeSet::new() };
             scan.tokens(tokens, module);
-            let related = |m: &Module| m.starts_with(module) || module.starts_with(m);
-            let targets = scan.targets.iter().filter(|m| !related(m)).map(|m| self.name(m)).collect();
+            let ancestor = |m: &Module| module.starts_with(m);
+            let targets = scan.targets.iter().filter(|m| !ancestor(m)).map(|m| self.name(m)).collect();
             edges.insert(self.name(module), targets);
         }
         edges
