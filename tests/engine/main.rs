@@ -2,6 +2,7 @@
 
 mod dynamics;
 mod elliptic;
+mod free_body;
 mod kinetostatics;
 mod mechanism_dynamics;
 mod rotor;

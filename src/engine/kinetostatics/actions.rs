@@ -102,6 +102,9 @@ impl Actions<'_> {
         if outputs.reactions || m.drivers.len() != 1 {
             let with = outputs.reactions.then_some(&mobility.indeterminate_joints[..]);
             multipliers(m, c, s, with, (k, phi), (&mut out.driving, &mut out.reactions))?;
+            if out.friction_iterations > 0 {
+                friction::add_to(m, c, &mut out.reactions);
+            }
         } else {
             out.driving.push(out.driving_virtual_power.first().copied().unwrap_or(f64::NAN));
         }

@@ -10,7 +10,9 @@
 //! opposite on the first). Prismatic and pin-in-slot: force −μ·|N|·sign(v)
 //! along the slide at the joint point, v the sliding speed of the second body.
 //! Where the joint does not move (sign 0) there is no friction (static
-//! friction is not determined by kinetostatics).
+//! friction is not determined by kinetostatics). The reported reaction of a
+//! joint is λ's (normal) part plus its friction ([`add_to`]): every body's
+//! reported forces balance.
 
 use super::Reaction;
 use super::loads::add_force;
@@ -39,33 +41,61 @@ fn sign(v: f64) -> f64 {
 /// Q_f for the given reactions (one per joint, in joint order).
 pub fn forces(m: &Mechanism, c: &Configuration, reactions: &[Reaction]) -> DVector<f64> {
     let mut qf = DVector::zeros(m.n_coordinates());
+    for (k, force, couple) in actions(m, c, reactions) {
+        let [i, j] = m.joints[k].bodies;
+        let at = m.joints[k].at;
+        add_force(m, &c.trig, qf.as_mut_slice(), j, at, force, couple);
+        add_force(m, &c.trig, qf.as_mut_slice(), i, at, [-force[0], -force[1]], -couple);
+    }
+    qf
+}
+
+/// The reported reactions made whole: each joint's friction added to its
+/// reaction (the normal part λ gives), so that every body's reported
+/// forces balance. The friction is the force on the second body at the
+/// joint's point (no moment about it) and, in a revolute joint, its couple.
+pub fn add_to(m: &Mechanism, c: &Configuration, reactions: &mut [Reaction]) {
+    let all: Vec<_> = actions(m, c, reactions).collect();
+    for (k, force, couple) in all {
+        if let Some(r) = reactions.iter_mut().find(|r| r.joint == k) {
+            r.fx += force[0];
+            r.fy += force[1];
+            r.moment += couple;
+        }
+    }
+}
+
+/// Each joint's friction on its second body, from the normal reactions:
+/// (joint, force at the joint's point, couple).
+fn actions<'a>(
+    m: &'a Mechanism,
+    c: &'a Configuration,
+    reactions: &'a [Reaction],
+) -> impl Iterator<Item = (usize, [f64; 2], f64)> + 'a {
     let pose = |b: usize| m.column(b).map_or((0.0, 0.0), |col| (c.q[col + 2], c.qd[col + 2]));
-    let velocity = |b: usize, at: [f64; 2]| {
+    let velocity = move |b: usize, at: [f64; 2]| {
         m.column(b).map_or([0.0, 0.0], |col| {
             let v = rotate_d(c.q[col + 2], m.local(b, at));
             [c.qd[col] + v[0] * c.qd[col + 2], c.qd[col + 1] + v[1] * c.qd[col + 2]]
         })
     };
-    for (joint, r) in m.joints.iter().zip(reactions) {
-        let Some(f) = joint.friction else { continue };
+    reactions.iter().filter_map(move |r| {
+        let joint = &m.joints[r.joint];
+        let f = joint.friction?;
         let [i, j] = joint.bodies;
         match joint.kind {
             JointKind::Revolute => {
                 let couple = -f.mu * f.radius * r.fx.hypot(r.fy) * sign(pose(j).1 - pose(i).1);
-                add_force(m, &c.trig, qf.as_mut_slice(), j, joint.at, [0.0, 0.0], couple);
-                add_force(m, &c.trig, qf.as_mut_slice(), i, joint.at, [0.0, 0.0], -couple);
+                Some((r.joint, [0.0, 0.0], couple))
             }
             JointKind::Prismatic { axis } | JointKind::PinSlot { axis } => {
                 let u = rotate(pose(i).0, axis);
                 let normal = dot(perp(u), [r.fx, r.fy]).abs();
                 let (vj, vi) = (velocity(j, joint.at), velocity(i, joint.at));
                 let slide = sign(dot(u, [vj[0] - vi[0], vj[1] - vi[1]]));
-                let force = [-f.mu * normal * slide * u[0], -f.mu * normal * slide * u[1]];
-                add_force(m, &c.trig, qf.as_mut_slice(), j, joint.at, force, 0.0);
-                add_force(m, &c.trig, qf.as_mut_slice(), i, joint.at, [-force[0], -force[1]], 0.0);
+                Some((r.joint, [-f.mu * normal * slide * u[0], -f.mu * normal * slide * u[1]], 0.0))
             }
-            JointKind::Gear { .. } => {}
+            JointKind::Gear { .. } => None,
         }
-    }
-    qf
+    })
 }

@@ -15,7 +15,9 @@ pub fn names(list: &[String]) -> Vec<Name> {
 }
 
 /// The force body `by` exerts on body `on` at the joint (ground frame) and the
-/// couple about the joint point. Null when redundant constraints leave it undetermined.
+/// couple about the joint point, the joint's friction included (the force
+/// along a slide, the couple of a pin), so that every body's forces
+/// balance. Null when redundant constraints leave it undetermined.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct ReactionDto {
     #[schema(value_type = String)]
