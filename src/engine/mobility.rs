@@ -6,9 +6,15 @@
 //! are unique up to the left null space of the full Φ_q (joints and
 //! drivers): a joint whose rows touch that null space has a reaction the
 //! equations cannot determine — it is flagged, never invented.
+//!
+//! Counted instead (Kutzbach, as the course writes it): n bodies, the
+//! ground among them, and p_k pairs of class k (a pair of class k leaves k
+//! relative freedoms, so it removes 3 − k in the plane and 6 − k in space):
+//! planar M = 3(n − 1) − 2p_I − p_II, spatial M = 6(n − 1) − (5p_I + 4p_II +
+//! 3p_III + 2p_IV + p_V).
 
 use super::constraints::{State, evaluate, joint_offsets};
-use super::model::{Grubler, Mechanism};
+use super::model::{Driver, Grubler, JointKind, Mechanism};
 use super::numeric::svd::singular_values;
 use nalgebra::DMatrix;
 
@@ -48,6 +54,62 @@ pub fn mobility(m: &Mechanism, q: &[f64]) -> Mobility {
     }
 }
 
+/// Where a Kutzbach count is made.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Space {
+    Planar,
+    Spatial,
+}
+
+impl Space {
+    /// Freedoms of one free body: 3 in the plane, 6 in space.
+    pub fn freedoms(self) -> i64 {
+        match self {
+            Space::Planar => 3,
+            Space::Spatial => 6,
+        }
+    }
+}
+
+/// Kutzbach's count of `bodies` bodies (the ground counted) joined by
+/// `pairs[k]` pairs of class k + 1: equations 3(n − 1) or 6(n − 1), unknowns
+/// the freedoms the pairs remove (the reactions' components), their difference.
+pub fn kutzbach(space: Space, bodies: i64, pairs: &[i64]) -> Grubler {
+    let f = space.freedoms();
+    let equations = f * (bodies - 1);
+    let unknowns = (1..).zip(pairs).map(|(class, p)| (f - class) * p).sum::<i64>();
+    Grubler { mobility: equations - unknowns, equations, unknowns }
+}
+
+/// Joints whose coordinates can serve together as the `dof` independent
+/// inputs at `q`: revolute and prismatic joints, taken in order, each kept
+/// when driving it too leaves the mechanism's Jacobian of full row rank
+/// (fewer than `dof` where too few joints can be driven).
+pub fn candidate_inputs(m: &Mechanism, q: &[f64], dof: usize) -> Vec<usize> {
+    let mut driven = Mechanism { drivers: Vec::new(), ..m.clone() };
+    let rank_of = |d: &Mechanism| {
+        let inputs = vec![[0.0; 3]; d.drivers.len()];
+        rank(&evaluate(d, &State { q, qd: None, inputs: &inputs }).jacobian)
+    };
+    let mut reached = rank_of(&driven);
+    for (k, joint) in m.joints.iter().enumerate() {
+        if driven.drivers.len() == dof {
+            break;
+        }
+        if !matches!(joint.kind, JointKind::Revolute | JointKind::Prismatic { .. }) {
+            continue;
+        }
+        driven.drivers.push(Driver { joint: k, reference: 0.0 });
+        match rank_of(&driven) {
+            r if r > reached => reached = r,
+            _ => {
+                driven.drivers.pop();
+            }
+        }
+    }
+    driven.drivers.iter().map(|d| d.joint).collect()
+}
+
 /// Joints with a row in the left null space of Φ_q (eigenvectors of Φ_qΦ_qᵀ
 /// with a zero eigenvalue).
 fn indeterminate(m: &Mechanism, jac: &DMatrix<f64>) -> Vec<usize> {
@@ -75,6 +137,24 @@ mod tests {
     use super::*;
     use crate::engine::model::{Body, Driver, Joint, JointKind};
     use crate::engine::samples::offset_slider_crank;
+
+    /// Seed 002, question 1: five links, five lower pairs and one higher
+    /// pair in the plane, 3·4 − 2·5 − 1 = 1; and a spatial count, a
+    /// four-bar of revolutes in space (Bennett's), 6·3 − 5·4 = −2.
+    #[test]
+    fn kutzbach_counts_as_the_course_writes_them() {
+        assert_eq!(kutzbach(Space::Planar, 5, &[5, 1]), Grubler { mobility: 1, equations: 12, unknowns: 11 });
+        assert_eq!(kutzbach(Space::Spatial, 4, &[4]).mobility, -2);
+    }
+
+    /// The slider-crank is driven by its crank, its first joint; asked for
+    /// no input, none.
+    #[test]
+    fn the_first_joint_that_drives_the_mechanism_is_its_candidate() {
+        let m = offset_slider_crank();
+        assert_eq!(candidate_inputs(&m, &m.reference_q(), 1), vec![0]);
+        assert_eq!(candidate_inputs(&m, &m.reference_q(), 0), Vec::<usize>::new());
+    }
 
     #[test]
     fn the_slider_crank_has_one_dof_and_no_redundancy() {

@@ -12,6 +12,7 @@ pub mod gear_train;
 pub mod gears;
 pub mod kinetostatics;
 pub mod mechanism;
+pub mod mobility;
 pub mod rotor;
 
 use crate::kind::Register;
@@ -26,4 +27,5 @@ pub fn register(r: &mut impl Register) {
     r.kind::<gear_train::GearTrain>();
     r.kind::<equivalent::EquivalentMasses>();
     r.kind::<rotor::RigidRotor>();
+    r.kind::<mobility::Mobility>();
 }

@@ -23,6 +23,7 @@ mod jobs;
 mod kinetostatics;
 mod libreoffice;
 mod limits;
+mod mobility;
 mod offline;
 mod operations;
 mod pages;
