@@ -10,6 +10,7 @@ mod constants;
 mod crash;
 mod deferred;
 mod dynamics;
+mod energy;
 mod errors;
 mod examples;
 mod four_bars;

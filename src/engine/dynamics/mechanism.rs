@@ -25,7 +25,7 @@ use super::{DynamicsError, DynamicsSolution, End, Integrator, Sample, Settings, 
 use crate::engine::Deadline;
 use crate::engine::constraints::{State, evaluate, evaluate_blocks, joint_offsets};
 use crate::engine::kinematics::sweep;
-use crate::engine::kinetostatics::{Load, Reaction, potential, reactions};
+use crate::engine::kinetostatics::{self, Energy, Load, Reaction, potential, reactions};
 use crate::engine::mobility::{Mobility, mobility};
 use crate::engine::model::Mechanism;
 use equations::{Equations, kinetic, masses};
@@ -69,6 +69,8 @@ pub struct MechanismSample {
     pub reactions: Vec<Reaction>,
     /// |Φ| at the sample (dense output, before any projection).
     pub constraint_residual: f64,
+    /// The kinetic energy of every body and the potential of gravity and the springs.
+    pub energy: Energy,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -304,5 +306,6 @@ fn sample(dae: &Equations, mobility: &Mobility, t: f64, y: &[f64]) -> Result<Mec
         Vec::new()
     };
     let poses = q.chunks_exact(3).map(|b| [b[0], b[1], b[2]]).collect();
-    Ok(MechanismSample { inputs: motion.inputs, poses, reactions, constraint_residual: motion.residual })
+    let energy = kinetostatics::energy(&dae.p.mechanism, &dae.p.loads, q, qd);
+    Ok(MechanismSample { inputs: motion.inputs, poses, reactions, constraint_residual: motion.residual, energy })
 }

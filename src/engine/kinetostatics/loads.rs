@@ -145,6 +145,41 @@ pub fn potential(m: &Mechanism, loads: &[Load], q: &[f64]) -> Option<f64> {
     Some(v)
 }
 
+/// The mechanism's energies at (q, q̇), J.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Energy {
+    /// T_b = ½(m v_G² + I_G ω²) of each moving body, in body order.
+    pub bodies: Vec<f64>,
+    /// T = Σ T_b.
+    pub kinetic: f64,
+    /// V_g = −Σ m g·r_G, r_G from the drawing's origin.
+    pub gravity: f64,
+    /// V_s = Σ ½k(l − l₀)² of the springs.
+    pub springs: f64,
+}
+
+/// [`Energy`] at (q, q̇): q holds (x_G, y_G, θ) of every moving body, so v_G
+/// and ω are q̇'s own entries.
+pub fn energy(m: &Mechanism, loads: &[Load], q: &[f64], qd: &[f64]) -> Energy {
+    let bodies: Vec<f64> = m.bodies[1..]
+        .iter()
+        .zip(qd.chunks_exact(3))
+        .map(|(b, v)| 0.5 * (b.mass * (v[0] * v[0] + v[1] * v[1]) + b.inertia * v[2] * v[2]))
+        .collect();
+    let gravity =
+        -m.bodies[1..].iter().zip(q.chunks_exact(3)).map(|(b, g)| b.mass * dot(m.gravity, [g[0], g[1]])).sum::<f64>();
+    let springs = loads
+        .iter()
+        .filter_map(|load| match load {
+            Load::Spring { a, b, stiffness, free_length } => {
+                Some(0.5 * stiffness * (line(m, q, qd, *a, *b).1 - free_length).powi(2))
+            }
+            _ => None,
+        })
+        .sum();
+    Energy { kinetic: bodies.iter().sum(), bodies, gravity, springs }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -18,7 +18,7 @@ mod loads;
 mod summary;
 
 pub use actions::reactions;
-pub use loads::{Load, applied_forces, applied_forces_into, point_motion, potential};
+pub use loads::{Energy, Load, applied_forces, applied_forces_into, energy, point_motion, potential};
 pub use summary::Summary;
 use summary::Tally;
 

@@ -7,7 +7,7 @@ use crate::engine::kinetostatics::Load;
 use crate::engine::model::{Driver, JointKind, Mechanism};
 use crate::kind::quantity::{Errors, FunctionDto};
 use crate::kinds::mechanism::MechanismDto;
-use crate::kinds::mechanism::{InputDto, Inputs, LoadDto, Name, ReactionDto, convert_loads, names};
+use crate::kinds::mechanism::{EnergyDto, InputDto, Inputs, LoadDto, Name, ReactionDto, convert_loads, names};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
@@ -180,6 +180,7 @@ pub struct MachineSample {
     pub reactions: Vec<ReactionDto>,
     /// Largest |Φ| of the joint constraints at the sample, m or rad.
     pub constraint_residual: f64,
+    pub energy: EnergyDto,
 }
 
 /// What the mechanism form adds to a dynamics result.
@@ -225,6 +226,7 @@ impl MachineDynamics {
                     .collect(),
                 reactions: d.reactions.iter().map(|r| ReactionDto::new(r, joint_names, body_names)).collect(),
                 constraint_residual: d.constraint_residual,
+                energy: EnergyDto::new(d.energy.clone(), body_names),
             })
             .collect();
         Self {

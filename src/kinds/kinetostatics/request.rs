@@ -66,6 +66,9 @@ pub enum OutputKind {
     /// `jacobian_condition` as the exact 2-norm condition number at every
     /// step (an SVD per step; not among the defaults).
     Condition,
+    /// Each step's `energy`: kinetic per body and in total, potential of
+    /// gravity and of the springs (not among the defaults).
+    Energy,
 }
 
 /// The validated problem, ready for the engine.
@@ -77,6 +80,10 @@ pub struct Problem {
     pub outputs: Outputs,
     /// Per input: true for a prismatic (linear) input.
     pub linear: Vec<bool>,
+    /// Each step's energies (the engine keeps the motion for them).
+    pub energy: bool,
+    /// Each step's bodies' motion is reported.
+    pub kinematics: bool,
     /// How the first input was written, for errors at a position.
     pub written: Written,
 }
@@ -126,10 +133,12 @@ impl KinetostaticsRequest {
                 driving: outputs.contains(&OutputKind::Driving),
                 reactions: outputs.contains(&OutputKind::Reactions),
                 reduced: outputs.contains(&OutputKind::Reduced),
-                kinematics: outputs.contains(&OutputKind::Kinematics),
+                kinematics: outputs.contains(&OutputKind::Kinematics) || outputs.contains(&OutputKind::Energy),
                 condition: outputs.contains(&OutputKind::Condition),
             },
             linear,
+            energy: outputs.contains(&OutputKind::Energy),
+            kinematics: outputs.contains(&OutputKind::Kinematics),
             written,
         })
     }

@@ -1,9 +1,9 @@
 //! The `result` of a kinetostatics job, as stored and served, and its CSV table.
 
 use super::request::Problem;
-use crate::engine::kinetostatics::{Motion, Reaction, Step, Totals};
+use crate::engine::kinetostatics::{Motion, Reaction, Step, Totals, energy};
 use crate::kind::{cell, list, names};
-use crate::kinds::mechanism::{Name, ReactionDto};
+use crate::kinds::mechanism::{EnergyDto, Name, ReactionDto};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use std::collections::BTreeMap;
@@ -75,6 +75,9 @@ pub struct StepDto {
     /// A singular position (toggle, change point): nothing but the input is computed here.
     pub singular: bool,
     pub kinematics: Option<Vec<BodyMotion>>,
+    /// Where `outputs` has "energy".
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub energy: Option<EnergyDto>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
@@ -240,7 +243,12 @@ impl StepDto {
                 .map(|v| names[1..].iter().cloned().zip(v.iter().copied()).collect()),
             jacobian_condition: s.condition,
             singular: s.singular,
-            kinematics: s.kinematics.as_ref().map(|m| motion(m, names)),
+            kinematics: s.kinematics.as_ref().filter(|_| p.kinematics).map(|m| motion(m, names)),
+            energy: s
+                .kinematics
+                .as_ref()
+                .filter(|_| p.energy)
+                .map(|m| EnergyDto::new(energy(&p.mechanism, &p.loads, &m.q, &m.qd), names)),
         }
     }
 }

@@ -2,10 +2,12 @@
 //! conversion into the engine's model, with every error under its pointer.
 
 pub mod drawing;
+mod energy;
 mod inputs;
 mod loads;
 mod reactions;
 
+pub use energy::EnergyDto;
 pub use inputs::{InputDto, Inputs, machine_parts};
 pub use loads::{LoadDto, LoadType, MAX_LOADS, convert_loads};
 pub use reactions::{Name, ReactionDto, names};
