@@ -46,3 +46,4 @@ mod stiff;
 mod storage;
 mod student;
 mod templates;
+mod track;

@@ -89,6 +89,16 @@ pub fn point_motion(m: &Mechanism, q: &[f64], qd: &[f64], (b, p): (BodyId, [f64;
     ([q[c] + a[0], q[c + 1] + a[1]], [qd[c] + ds[0] * qd[c + 2], qd[c + 1] + ds[1] * qd[c + 2]])
 }
 
+/// Acceleration of a body point (reference coordinates `p`): a_G + α k×s − ω² s,
+/// s the point from G in the ground's axes.
+pub fn point_acceleration(m: &Mechanism, q: &[f64], qd: &[f64], qdd: &[f64], (b, p): (BodyId, [f64; 2])) -> [f64; 2] {
+    let Some(c) = m.column(b) else { return [0.0, 0.0] };
+    let local = m.local(b, p);
+    let (s, ds) = (rotate(q[c + 2], local), rotate_d(q[c + 2], local));
+    let (omega, alpha) = (qd[c + 2], qdd[c + 2]);
+    [qdd[c] + ds[0] * alpha - s[0] * omega * omega, qdd[c + 1] + ds[1] * alpha - s[1] * omega * omega]
+}
+
 /// Adds to Q a force f at point `at` (reference coordinates) of body b,
 /// plus a couple; `trig` holds (sin θ, cos θ) of every body, ground first.
 pub fn add_force(

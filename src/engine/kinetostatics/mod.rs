@@ -18,7 +18,9 @@ mod loads;
 mod summary;
 
 pub use actions::reactions;
-pub use loads::{Energy, Load, applied_forces, applied_forces_into, energy, point_motion, potential};
+pub use loads::{
+    Energy, Load, applied_forces, applied_forces_into, energy, point_acceleration, point_motion, potential,
+};
 pub use summary::Summary;
 use summary::Tally;
 

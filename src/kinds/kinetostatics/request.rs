@@ -8,6 +8,7 @@ use crate::kind::constants::{self, Constants};
 use crate::kind::limits::Limits;
 use crate::kind::problem::FieldError;
 use crate::kind::quantity::{Errors, Quantity};
+use crate::kinds::mechanism::track::{TrackDto, Tracked, resolve};
 use crate::kinds::mechanism::{InputDto, Inputs, LoadDto, MechanismDto, convert_loads};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
@@ -53,6 +54,12 @@ pub struct KinetostaticsRequest {
     /// Compute only these (default: driving, reactions, kinematics and
     /// reduced; "condition" is asked for by name).
     pub outputs: Option<Vec<OutputKind>>,
+    /// Points to follow: each step then has their `points` (position,
+    /// velocity, acceleration). A name from `points` moves with the body its
+    /// joints or centre of mass put it on; `{"name", "body", "at"}` is a
+    /// point of one body (a pin in a slot must say which).
+    #[schema(max_items = 100)]
+    pub track: Option<Vec<TrackDto>>,
 }
 
 /// What to compute.
@@ -69,6 +76,9 @@ pub enum OutputKind {
     /// Each step's `energy`: kinetic per body and in total, potential of
     /// gravity and of the springs (not among the defaults).
     Energy,
+    /// Each step's `points`: the motion of the points of `track` (reported
+    /// whenever `track` is given).
+    Points,
 }
 
 /// The validated problem, ready for the engine.
@@ -82,6 +92,8 @@ pub struct Problem {
     pub linear: Vec<bool>,
     /// Each step's energies (the engine keeps the motion for them).
     pub energy: bool,
+    /// The points followed at every step.
+    pub tracked: Vec<Tracked>,
     /// Each step's bodies' motion is reported.
     pub kinematics: bool,
     /// How the first input was written, for errors at a position.
@@ -97,6 +109,11 @@ impl KinetostaticsRequest {
             vec![OutputKind::Driving, OutputKind::Reactions, OutputKind::Kinematics, OutputKind::Reduced]
         });
         let Some(c) = converted else { return Err(e.list) };
+        let track = self.track.as_deref().unwrap_or_default();
+        let tracked = resolve(&self.mechanism, track, &c.body_names, &mut e, "/track");
+        if outputs.contains(&OutputKind::Points) && track.is_empty() {
+            e.push("/outputs", "\"points\" follows the points of \"track\": give them");
+        }
         let mut mechanism = c.mechanism;
         let inputs = match &self.input {
             Inputs::One(i) => vec![(**i).clone()],
@@ -133,11 +150,14 @@ impl KinetostaticsRequest {
                 driving: outputs.contains(&OutputKind::Driving),
                 reactions: outputs.contains(&OutputKind::Reactions),
                 reduced: outputs.contains(&OutputKind::Reduced),
-                kinematics: outputs.contains(&OutputKind::Kinematics) || outputs.contains(&OutputKind::Energy),
+                kinematics: outputs.contains(&OutputKind::Kinematics)
+                    || outputs.contains(&OutputKind::Energy)
+                    || !tracked.is_empty(),
                 condition: outputs.contains(&OutputKind::Condition),
             },
             linear,
             energy: outputs.contains(&OutputKind::Energy),
+            tracked,
             kinematics: outputs.contains(&OutputKind::Kinematics),
             written,
         })

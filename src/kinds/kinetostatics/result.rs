@@ -3,6 +3,7 @@
 use super::request::Problem;
 use crate::engine::kinetostatics::{Motion, Reaction, Step, Totals, energy};
 use crate::kind::{cell, list, names};
+use crate::kinds::mechanism::track::{PointState, states};
 use crate::kinds::mechanism::{EnergyDto, Name, ReactionDto};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -78,6 +79,9 @@ pub struct StepDto {
     /// Where `outputs` has "energy".
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub energy: Option<EnergyDto>,
+    /// The points of `track`, where given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub points: Option<Vec<PointState>>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
@@ -249,6 +253,11 @@ impl StepDto {
                 .as_ref()
                 .filter(|_| p.energy)
                 .map(|m| EnergyDto::new(energy(&p.mechanism, &p.loads, &m.q, &m.qd), names)),
+            points: s
+                .kinematics
+                .as_ref()
+                .filter(|_| !p.tracked.is_empty())
+                .map(|m| states(&p.mechanism, &p.tracked, [&m.q, &m.qd, &m.qdd])),
         }
     }
 }

@@ -6,6 +6,7 @@ mod energy;
 mod inputs;
 mod loads;
 mod reactions;
+pub mod track;
 
 pub use energy::EnergyDto;
 pub use inputs::{InputDto, Inputs, machine_parts};
