@@ -108,3 +108,19 @@ async fn equivalent_masses_at_overflowing_distances_are_refused() {
     assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
     assert_eq!(r.json()["errors"][0]["pointer"], "/points");
 }
+
+/// A bare module is metres (SI): `"module": 4` is a 4 m gear, computed as
+/// asked and warned of (a module over 0.1 m was most likely meant in mm);
+/// `"4 mm"` and `0.004` are not warned of.
+#[tokio::test]
+async fn a_bare_module_in_millimetres_is_warned_of() {
+    let app = TestApp::new().await;
+    let r = app.post("/v1/gears/geometry", &json!({"module": 4, "teeth": 30})).await;
+    let result = r.json()["result"].clone();
+    assert_eq!(result["pitch_radius"], 60.0, "{}", r.text);
+    assert!(result["warnings"][0].as_str().unwrap().contains("a bare number is SI"), "{result}");
+    for module in [json!("4 mm"), json!(0.004)] {
+        let r = app.post("/v1/gears/geometry", &json!({"module": module, "teeth": 30})).await;
+        assert_eq!(r.json()["result"]["warnings"], json!([]), "{}", r.text);
+    }
+}

@@ -17,6 +17,8 @@ use utoipa::ToSchema;
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 #[schema(example = json!({"module": "4 mm", "teeth": 30}))]
 pub struct GearRequest {
+    /// m: a bare number is SI (`4` is 4 m; write `"4 mm"`); above 0.1 m a
+    /// warning says so.
     #[schema(value_type = Quantity)]
     pub module: Quantity,
     #[schema(minimum = 1)]
@@ -54,6 +56,10 @@ pub struct GearResult {
 }
 
 impl crate::kind::JobResult for GearResult {}
+
+/// The largest module (m) a gear usually has: a bare number above it was
+/// most likely meant in millimetres, and is warned of.
+const PLAUSIBLE_MODULE: f64 = 0.1;
 
 /// Gears: `POST /v1/gears/geometry`.
 pub struct Gears;
@@ -96,11 +102,19 @@ fn compute(request: &GearRequest, unknown: Vec<FieldError>) -> Result<GearResult
             message,
         )]));
     }
-    let warnings = if t.thickness <= 0.0 {
+    let mut warnings = if t.thickness <= 0.0 {
         vec![format!("the tooth is pointed before {at} m: its thickness there would be {:.6e} m", t.thickness)]
     } else {
         Vec::new()
     };
+    if let Quantity::Number(m) = request.module
+        && m > PLAUSIBLE_MODULE
+    {
+        warnings.push(format!(
+            "a module of {m} m: a bare number is SI (metres); for {m} mm write \"{m} mm\" (modules over {} m are rare)",
+            PLAUSIBLE_MODULE
+        ));
+    }
     Ok(GearResult {
         pitch_radius: radii.pitch,
         base_radius: radii.base,

@@ -25,7 +25,9 @@ pub struct InputDto {
     /// Acceleration (rad/s² or m/s²); default 0, or ω·dω/dq for a motion law.
     #[schema(value_type = Option<Quantity>)]
     pub acceleration: Option<Quantity>,
-    /// First coordinate (default 0).
+    /// First coordinate (default 0): an angle for a revolute joint, the
+    /// second body's displacement along the axis in metres for a prismatic
+    /// one (a bare number is SI: rad or m).
     #[schema(value_type = Option<Quantity>)]
     pub start: Option<Quantity>,
     /// End of the range, excluded (default start + 2π for a revolute joint).

@@ -139,7 +139,10 @@ pub enum JointType {
 }
 
 /// A joint between two bodies (`ground` is implicit). `axis` for prismatic and
-/// pin_slot; `ratio` or `teeth` (and `internal`) and optional `carrier` for gears.
+/// pin_slot, fixed in the first body: a prismatic joint's first body is the
+/// guide and its second slides along it; a pin_slot's first body carries
+/// the slot and its second the pin (swapping them is another mechanism).
+/// `ratio` or `teeth` (and `internal`) and optional `carrier` for gears.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct JointDto {
     #[schema(max_length = 100)]
