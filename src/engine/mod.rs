@@ -23,6 +23,7 @@ pub mod model;
 pub mod numeric;
 pub mod rotor;
 pub mod samples;
+pub mod sketch;
 pub mod variants;
 
 pub use deadline::Deadline;

@@ -9,6 +9,7 @@ mod cli;
 mod constants;
 mod crash;
 mod deferred;
+mod dimensions;
 mod dynamics;
 mod energy;
 mod errors;

@@ -65,7 +65,12 @@ fn check_energy(e: &mut Errors, asked: Option<bool>, loads: &[Load]) {
 
 impl DynamicsMachine {
     pub(super) fn convert(&self, e: &mut Errors, initial: Option<&Initial>, period: f64) -> Option<Parts> {
-        let c = self.mechanism.convert(e, "/machine/mechanism")?;
+        let assembled = self.mechanism.assembled(e, "/machine/mechanism");
+        if self.mechanism.dimensions.is_some() && assembled.is_none() {
+            return None;
+        }
+        let dto = assembled.as_ref().map_or(&self.mechanism, |(m, _)| m);
+        let c = dto.convert(e, "/machine/mechanism")?;
         let mut mechanism = c.mechanism;
         for (k, j) in mechanism.joints.iter().enumerate() {
             if j.friction.is_some() {
@@ -94,8 +99,7 @@ impl DynamicsMachine {
         }
         mechanism.drivers = drivers;
         let loads = self.loads.as_deref().unwrap_or_default();
-        let loads =
-            convert_loads(e, loads, &self.mechanism, &c.body_names, period, "/machine/loads", &["phi", "omega", "t"]);
+        let loads = convert_loads(e, loads, dto, &c.body_names, period, "/machine/loads", &["phi", "omega", "t"]);
         if e.list.is_empty() {
             check_energy(e, self.conserve_energy, &loads);
         }

@@ -12,6 +12,7 @@ use crate::kinds::mechanism::track::{TrackDto, Tracked, resolve};
 use crate::kinds::mechanism::{InputDto, Inputs, LoadDto, MechanismDto, convert_loads};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 use std::f64::consts::PI;
 use utoipa::ToSchema;
 
@@ -81,6 +82,12 @@ pub enum OutputKind {
     Points,
 }
 
+/// Where a mechanism's dimensions put its points, and what they said.
+pub struct Assembled {
+    pub points: BTreeMap<String, [f64; 2]>,
+    pub warnings: Vec<String>,
+}
+
 /// The validated problem, ready for the engine.
 pub struct Problem {
     pub mechanism: Mechanism,
@@ -94,6 +101,8 @@ pub struct Problem {
     pub energy: bool,
     /// The points followed at every step.
     pub tracked: Vec<Tracked>,
+    /// The points assembled from the mechanism's dimensions.
+    pub assembled: Option<Assembled>,
     /// Each step's bodies' motion is reported.
     pub kinematics: bool,
     /// How the first input was written, for errors at a position.
@@ -104,13 +113,18 @@ impl KinetostaticsRequest {
     pub fn to_problem(&self, limits: &Limits) -> Result<Problem, Vec<FieldError>> {
         let mut e = Errors::new(limits);
         constants::read(self.constants.as_ref(), &mut e);
-        let converted = self.mechanism.convert(&mut e, "/mechanism");
+        let assembled = self.mechanism.assembled(&mut e, "/mechanism");
+        if self.mechanism.dimensions.is_some() && assembled.is_none() {
+            return Err(e.list);
+        }
+        let dto = assembled.as_ref().map_or(&self.mechanism, |(m, _)| m);
+        let converted = dto.convert(&mut e, "/mechanism");
         let outputs = self.outputs.clone().unwrap_or_else(|| {
             vec![OutputKind::Driving, OutputKind::Reactions, OutputKind::Kinematics, OutputKind::Reduced]
         });
         let Some(c) = converted else { return Err(e.list) };
         let track = self.track.as_deref().unwrap_or_default();
-        let tracked = resolve(&self.mechanism, track, &c.body_names, &mut e, "/track");
+        let tracked = resolve(dto, track, &c.body_names, &mut e, "/track");
         if outputs.contains(&OutputKind::Points) && track.is_empty() {
             e.push("/outputs", "\"points\" follows the points of \"track\": give them");
         }
@@ -132,7 +146,7 @@ impl KinetostaticsRequest {
         let loads = convert_loads(
             &mut e,
             self.loads.as_deref().unwrap_or_default(),
-            &self.mechanism,
+            dto,
             &c.body_names,
             period,
             "/loads",
@@ -158,6 +172,7 @@ impl KinetostaticsRequest {
             linear,
             energy: outputs.contains(&OutputKind::Energy),
             tracked,
+            assembled: assembled.map(|(m, warnings)| Assembled { points: m.points.unwrap_or_default(), warnings }),
             kinematics: outputs.contains(&OutputKind::Kinematics),
             written,
         })

@@ -141,6 +141,10 @@ pub struct KinetostaticsResult {
     pub summary: SummaryDto,
     pub accuracy: KinetostaticsAccuracy,
     pub warnings: Vec<String>,
+    /// Where the points went, for a mechanism given by its `dimensions` (m).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schema(value_type = Option<BTreeMap<String, Vec<f64>>>)]
+    pub assembled_points: Option<BTreeMap<String, [f64; 2]>>,
 }
 
 impl crate::kind::JobResult for KinetostaticsResult {
@@ -172,7 +176,7 @@ impl KinetostaticsResult {
     /// The result of a sweep's `steps` (each from [`StepDto::new`]) and its totals.
     pub fn new(s: Totals, steps: Vec<StepDto>, p: &Problem, joint_names: &[String]) -> Self {
         let mob = &s.mobility;
-        let mut warnings = Vec::new();
+        let mut warnings: Vec<String> = p.assembled.iter().flat_map(|a| a.warnings.iter().cloned()).collect();
         if mob.redundant_constraints > 0 {
             warnings.push(format!(
                 "{} redundant constraint(s): the reactions of joints {:?} are not determined by equilibrium and are reported as null",
@@ -227,6 +231,7 @@ impl KinetostaticsResult {
                 method: method(s.closed_form),
             },
             warnings,
+            assembled_points: p.assembled.as_ref().map(|a| a.points.clone()),
         }
     }
 }

@@ -16,7 +16,10 @@ use serde_json::Value;
 /// The model of the stored request's mechanism (at `pointer`), without drivers.
 pub fn model(request: &Value, pointer: &str) -> Option<Mechanism> {
     let dto: MechanismDto = serde_json::from_value(request.pointer(pointer)?.clone()).ok()?;
-    dto.convert(&mut Errors::new(&Limits::default()), pointer).map(|c| c.mechanism)
+    let mut e = Errors::new(&Limits::default());
+    let assembled = dto.assembled(&mut e, pointer);
+    let dto = assembled.as_ref().map_or(&dto, |(m, _)| m);
+    dto.convert(&mut e, pointer).map(|c| c.mechanism)
 }
 
 /// A body's pose: centre of mass and rotation from the drawn configuration.

@@ -1,6 +1,7 @@
 //! Wire form of a planar mechanism (named points, bodies, joints) and its
 //! conversion into the engine's model, with every error under its pointer.
 
+mod dimensions;
 pub mod drawing;
 mod energy;
 mod inputs;
@@ -8,6 +9,7 @@ mod loads;
 mod reactions;
 pub mod track;
 
+pub use dimensions::DimensionDto;
 pub use energy::EnergyDto;
 pub use inputs::{InputDto, Inputs, machine_parts};
 pub use loads::{LoadDto, LoadType, MAX_LOADS, convert_loads};
@@ -198,6 +200,12 @@ pub struct MechanismDto {
     /// Gravitational acceleration [gx, gy], m/s² (default none).
     #[schema(min_items = 2, max_items = 2)]
     pub gravity: Option<Vec<f64>>,
+    /// The statement's dimensions: `points` are then a sketch, moved as
+    /// little as they can be (a point on the ground weighs 10⁶ times
+    /// another, and the sketch picks the branch) until every dimension
+    /// holds; the result's `assembled_points` says where they went.
+    #[schema(max_items = 400)]
+    pub dimensions: Option<Vec<DimensionDto>>,
 }
 
 /// The model and the names needed to read results back.

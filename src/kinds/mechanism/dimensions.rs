@@ -1,0 +1,121 @@
+//! A mechanism given by its dimensions: `points` are then a sketch, and the
+//! points used are the least change from it that meets every dimension
+//! ([`crate::engine::sketch`]).
+
+use super::MechanismDto;
+use crate::engine::sketch::{Dimension, solve};
+use crate::kind::quantity::{Errors, Quantity};
+use crate::units::Dim;
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+use utoipa::ToSchema;
+
+/// Most dimensions of one mechanism.
+pub const MAX_DIMENSIONS: usize = 400;
+/// How much more a point on the ground weighs in the least change.
+const GROUND_WEIGHT: f64 = 1e6;
+
+/// One dimension of the statement: exactly one of `distance` ([P, Q]: |PQ|),
+/// `angle` ([P, Q]: the direction of P→Q from +x, counter-clockwise), `x`
+/// or `y` (P's coordinate), and its `value` (a length or an angle).
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[schema(example = json!({"distance": ["O2", "A"], "value": "100 mm"}))]
+pub struct DimensionDto {
+    #[schema(min_items = 2, max_items = 2)]
+    pub distance: Option<Vec<String>>,
+    #[schema(min_items = 2, max_items = 2)]
+    pub angle: Option<Vec<String>>,
+    pub x: Option<String>,
+    pub y: Option<String>,
+    #[schema(value_type = Quantity)]
+    pub value: Quantity,
+}
+
+impl MechanismDto {
+    /// The mechanism with its points assembled from its `dimensions`
+    /// (None without dimensions, or when they are in error: then in `e`).
+    /// Its `warnings` say where a point was left free to move.
+    pub fn assembled(&self, e: &mut Errors, at: &str) -> Option<(MechanismDto, Vec<String>)> {
+        let dimensions = self.dimensions.as_ref()?;
+        let sketch = self.points.clone().unwrap_or_default();
+        let names: Vec<&String> = sketch.keys().collect();
+        if dimensions.len() > MAX_DIMENSIONS {
+            return e.fail(&format!("{at}/dimensions"), format!("at most {MAX_DIMENSIONS} dimensions"));
+        }
+        let read: Vec<Option<Dimension>> =
+            dimensions.iter().enumerate().map(|(k, d)| read(e, d, &names, &format!("{at}/dimensions/{k}"))).collect();
+        let read: Vec<Dimension> = read.into_iter().collect::<Option<_>>()?;
+        let on_ground = |name: &str| {
+            self.joints.iter().any(|j| {
+                matches!(&j.at, Some(super::PointRef::Name(n)) if n == name) && j.bodies.iter().any(|b| b == "ground")
+            })
+        };
+        let weights: Vec<f64> = names.iter().map(|n| if on_ground(n) { GROUND_WEIGHT } else { 1.0 }).collect();
+        let points: Vec<[f64; 2]> = sketch.values().copied().collect();
+        let solved = match solve(&points, &weights, &read) {
+            Ok(s) => s,
+            Err(c) => {
+                for k in c.dimensions {
+                    let message = format!(
+                        "the dimensions cannot all hold: this one and those named with it (off by {:.3e} at the least change)",
+                        c.residual
+                    );
+                    e.push(&format!("{at}/dimensions/{k}"), message);
+                }
+                return None;
+            }
+        };
+        for k in crate::engine::sketch::reversed(&solved.points, &read) {
+            e.push(
+                &format!("{at}/dimensions/{k}/angle"),
+                "the sketch draws this line the other way round: swap its points, or the angle by 180°",
+            );
+        }
+        let mut warnings = Vec::new();
+        if solved.underdetermined {
+            warnings.push(
+                "the dimensions leave some points free to move: they stay as near the sketch as the others allow"
+                    .into(),
+            );
+        }
+        let assembled: BTreeMap<String, [f64; 2]> = names.into_iter().cloned().zip(solved.points).collect();
+        let dto = MechanismDto { points: Some(assembled), dimensions: None, ..self.clone() };
+        Some((dto, warnings))
+    }
+}
+
+/// One dimension by point index, its value in SI.
+fn read(e: &mut Errors, d: &DimensionDto, names: &[&String], at: &str) -> Option<Dimension> {
+    let index = |e: &mut Errors, name: &String, ptr: &str| {
+        names
+            .iter()
+            .position(|n| *n == name)
+            .or_else(|| e.fail(ptr, format!("unknown point '{name}' (dimensions join named points)")))
+    };
+    let pair = |e: &mut Errors, list: &Vec<String>, ptr: &str| match list.as_slice() {
+        [p, q] => Some([index(e, p, &format!("{ptr}/0"))?, index(e, q, &format!("{ptr}/1"))?]),
+        _ => e.fail(ptr, "must name two points"),
+    };
+    let given = [d.distance.is_some(), d.angle.is_some(), d.x.is_some(), d.y.is_some()].iter().filter(|g| **g).count();
+    if given != 1 {
+        return e.fail(at, "give exactly one of \"distance\", \"angle\", \"x\" and \"y\"");
+    }
+    let value = format!("{at}/value");
+    if let Some(list) = &d.distance {
+        let v = e.quantity(&d.value, Dim::LENGTH, &value);
+        let v = e.require(v, |v| v > 0.0, &value, "must be positive");
+        return Some(Dimension::Distance(pair(e, list, &format!("{at}/distance"))?, v?));
+    }
+    if let Some(list) = &d.angle {
+        let v = e.angle(&d.value, &value);
+        return Some(Dimension::Angle(pair(e, list, &format!("{at}/angle"))?, v?));
+    }
+    let (name, is_x) = match (&d.x, &d.y) {
+        (Some(p), _) => (p, true),
+        (_, Some(p)) => (p, false),
+        _ => return None,
+    };
+    let p = index(e, name, &format!("{at}/{}", if is_x { "x" } else { "y" }));
+    let v = e.quantity(&d.value, Dim::LENGTH, &value);
+    Some(if is_x { Dimension::X(p?, v?) } else { Dimension::Y(p?, v?) })
+}
