@@ -186,8 +186,9 @@ pub fn energy(m: &Mechanism, loads: &[Load], q: &[f64], qd: &[f64]) -> Energy {
             }
             _ => None,
         })
-        .sum();
-    Energy { kinetic: bodies.iter().sum(), bodies, gravity, springs }
+        .sum::<f64>();
+    // + 0.0: an empty sum is −0.0 (Rust's float sum starts there), shown as "-0.0".
+    Energy { kinetic: bodies.iter().sum::<f64>() + 0.0, bodies, gravity: gravity + 0.0, springs: springs + 0.0 }
 }
 
 #[cfg(test)]
@@ -228,5 +229,16 @@ mod tests {
             assert!(!load.has_potential());
             assert_eq!(potential(&m, &[load], &q), None);
         }
+    }
+
+    /// No gravity, no spring, at rest: every energy is +0 (an empty float
+    /// sum is −0.0, which a result would show as "-0.0").
+    #[test]
+    fn energies_of_nothing_are_plus_zero() {
+        let mut m = offset_slider_crank();
+        m.gravity = [0.0, 0.0];
+        let q = m.reference_q();
+        let e = energy(&m, &[], &q, &vec![0.0; q.len()]);
+        assert!([e.kinetic, e.gravity, e.springs].iter().all(|v| *v == 0.0 && v.is_sign_positive()), "{e:?}");
     }
 }
