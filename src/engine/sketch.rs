@@ -55,6 +55,9 @@ const MAX_ITERATIONS: usize = 60;
 
 /// The least change from `sketch` (weights per point) meeting `dimensions`.
 pub fn solve(sketch: &[[f64; 2]], weights: &[f64], dimensions: &[Dimension]) -> Result<Solved, Contradiction> {
+    if dimensions.is_empty() {
+        return Ok(Solved { points: sketch.to_vec(), iterations: 0, residual: 0.0, underdetermined: false });
+    }
     let x0 = DVector::from_iterator(2 * sketch.len(), sketch.iter().flatten().copied());
     let size = sketch
         .iter()
@@ -200,6 +203,14 @@ mod tests {
             }
             assert!(s.points[0][0].abs() < 1e-12 && (s.points[1][0] - 0.3).abs() < 1e-12, "the frame stays");
         }
+    }
+
+    /// No dimensions: the sketch as drawn (schemathesis sent `"dimensions": []`,
+    /// and an SVD of the empty system panicked).
+    #[test]
+    fn no_dimensions_leave_the_sketch_as_drawn() {
+        let s = solve(&[[0.0, 0.0], [1.0, 0.5]], &[1.0; 2], &[]).unwrap();
+        assert_eq!(s.points, vec![[0.0, 0.0], [1.0, 0.5]]);
     }
 
     /// A triangle 1, 1, 3 does not close: the three distances are named.

@@ -93,3 +93,15 @@ async fn dimensions_that_cannot_hold_are_named() {
         r.json()["errors"].as_array().unwrap().iter().map(|e| e["pointer"].as_str().unwrap().to_string()).collect();
     assert_eq!(pointers, ["/mechanism/dimensions/0/distance/1", "/mechanism/dimensions/1"], "{}", r.text);
 }
+
+/// `"dimensions": []` (sent by schemathesis, which found a panic there): the
+/// drawing as drawn, the same job as without the field.
+#[tokio::test]
+async fn no_dimensions_are_the_drawing_as_drawn() {
+    let app = TestApp::new().await;
+    let drawn = json!({"O2": [0, 0], "O4": [0.3, 0], "A": [0.05, 3f64.sqrt() / 20.0], "B": b(true)});
+    let with = app.post("/v1/kinetostatics", &four_bar(drawn.clone(), Some(json!([])))).await;
+    assert_eq!(with.status, StatusCode::CREATED, "{}", with.text);
+    let without = app.post("/v1/kinetostatics", &four_bar(drawn, None)).await.json();
+    assert_eq!(with.json()["result"]["steps"], without["result"]["steps"]);
+}
