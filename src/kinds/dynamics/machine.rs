@@ -65,11 +65,8 @@ fn check_energy(e: &mut Errors, asked: Option<bool>, loads: &[Load]) {
 
 impl DynamicsMachine {
     pub(super) fn convert(&self, e: &mut Errors, initial: Option<&Initial>, period: f64) -> Option<Parts> {
-        let assembled = self.mechanism.assembled(e, "/machine/mechanism");
-        if self.mechanism.dimensions.is_some() && assembled.is_none() {
-            return None;
-        }
-        let dto = assembled.as_ref().map_or(&self.mechanism, |(m, _)| m);
+        let (dto, _) = self.mechanism.assembled(e, "/machine/mechanism")?;
+        let dto = dto.as_ref();
         let c = dto.convert(e, "/machine/mechanism")?;
         let mut mechanism = c.mechanism;
         for (k, j) in mechanism.joints.iter().enumerate() {

@@ -113,11 +113,8 @@ impl KinetostaticsRequest {
     pub fn to_problem(&self, limits: &Limits) -> Result<Problem, Vec<FieldError>> {
         let mut e = Errors::new(limits);
         constants::read(self.constants.as_ref(), &mut e);
-        let assembled = self.mechanism.assembled(&mut e, "/mechanism");
-        if self.mechanism.dimensions.is_some() && assembled.is_none() {
-            return Err(e.list);
-        }
-        let dto = assembled.as_ref().map_or(&self.mechanism, |(m, _)| m);
+        let Some((dto, warnings)) = self.mechanism.assembled(&mut e, "/mechanism") else { return Err(e.list) };
+        let dto = dto.as_ref();
         let converted = dto.convert(&mut e, "/mechanism");
         let outputs = self.outputs.clone().unwrap_or_else(|| {
             vec![OutputKind::Driving, OutputKind::Reactions, OutputKind::Kinematics, OutputKind::Reduced]
@@ -172,7 +169,11 @@ impl KinetostaticsRequest {
             linear,
             energy: outputs.contains(&OutputKind::Energy),
             tracked,
-            assembled: assembled.map(|(m, warnings)| Assembled { points: m.points.unwrap_or_default(), warnings }),
+            assembled: self
+                .mechanism
+                .dimensions
+                .is_some()
+                .then(|| Assembled { points: dto.points.clone().unwrap_or_default(), warnings }),
             kinematics: outputs.contains(&OutputKind::Kinematics),
             written,
         })

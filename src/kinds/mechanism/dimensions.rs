@@ -7,6 +7,7 @@ use crate::engine::sketch::{Dimension, solve};
 use crate::kind::quantity::{Errors, Quantity};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
+use std::borrow::Cow;
 use std::collections::BTreeMap;
 use utoipa::ToSchema;
 
@@ -32,11 +33,12 @@ pub struct DimensionDto {
 }
 
 impl MechanismDto {
-    /// The mechanism with its points assembled from its `dimensions`
-    /// (None without dimensions, or when they are in error: then in `e`).
-    /// Its `warnings` say where a point was left free to move.
-    pub fn assembled(&self, e: &mut Errors, at: &str) -> Option<(MechanismDto, Vec<String>)> {
-        let dimensions = self.dimensions.as_ref()?;
+    /// The mechanism to work on: itself without `dimensions`, else a copy
+    /// with its points assembled from them and the warnings that says
+    /// (a point left free to move); None when the dimensions are in error
+    /// (the errors are in `e`).
+    pub fn assembled(&self, e: &mut Errors, at: &str) -> Option<(Cow<'_, MechanismDto>, Vec<String>)> {
+        let Some(dimensions) = self.dimensions.as_ref() else { return Some((Cow::Borrowed(self), Vec::new())) };
         let sketch = self.points.clone().unwrap_or_default();
         let names: Vec<&String> = sketch.keys().collect();
         if dimensions.len() > MAX_DIMENSIONS {
@@ -80,7 +82,7 @@ impl MechanismDto {
         }
         let assembled: BTreeMap<String, [f64; 2]> = names.into_iter().cloned().zip(solved.points).collect();
         let dto = MechanismDto { points: Some(assembled), dimensions: None, ..self.clone() };
-        Some((dto, warnings))
+        Some((Cow::Owned(dto), warnings))
     }
 }
 

@@ -17,8 +17,7 @@ use serde_json::Value;
 pub fn model(request: &Value, pointer: &str) -> Option<Mechanism> {
     let dto: MechanismDto = serde_json::from_value(request.pointer(pointer)?.clone()).ok()?;
     let mut e = Errors::new(&Limits::default());
-    let assembled = dto.assembled(&mut e, pointer);
-    let dto = assembled.as_ref().map_or(&dto, |(m, _)| m);
+    let (dto, _) = dto.assembled(&mut e, pointer)?;
     dto.convert(&mut e, pointer).map(|c| c.mechanism)
 }
 

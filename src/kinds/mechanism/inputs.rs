@@ -96,11 +96,8 @@ pub fn machine_parts(
     period: f64,
     at: &str,
 ) -> Option<(Mechanism, Vec<Load>)> {
-    let assembled = mech.assembled(e, &format!("{at}/mechanism"));
-    if mech.dimensions.is_some() && assembled.is_none() {
-        return None;
-    }
-    let mech = assembled.as_ref().map_or(mech, |(m, _)| m);
+    let (mech, _) = mech.assembled(e, &format!("{at}/mechanism"))?;
+    let mech = mech.as_ref();
     let c = mech.convert(e, &format!("{at}/mechanism"))?;
     let mut mechanism = c.mechanism;
     let joint = match mechanism.joints.iter().position(|j| j.name == input.joint) {

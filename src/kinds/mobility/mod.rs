@@ -129,9 +129,7 @@ impl Kind for Mobility {
 /// The mobility of a drawn mechanism.
 fn drawn(dto: &MechanismDto, unknown: Vec<FieldError>, limits: &Limits) -> Result<MobilityResult, ApiError> {
     let mut e = Errors::new(limits);
-    let assembled = dto.assembled(&mut e, "/mechanism");
-    let dto = assembled.as_ref().map_or(dto, |(m, _)| m);
-    let converted = dto.convert(&mut e, "/mechanism").filter(|_| dto.dimensions.is_none());
+    let converted = dto.assembled(&mut e, "/mechanism").and_then(|(dto, _)| dto.convert(&mut e, "/mechanism"));
     let converted = validated(unknown, converted.filter(|_| e.list.is_empty()).ok_or(e.list))?;
     let m = &converted.mechanism;
     let q = m.reference_q();
