@@ -134,16 +134,19 @@ impl Mechanism {
     /// Grübler's count for a planar mechanism: G = 3(N − 1) − 2·P_I − P_II,
     /// N counting the ground; P_I joints remove 2 freedoms, P_II joints 1.
     pub fn grubler(&self) -> Grubler {
-        let (mut p1, mut p2) = (0, 0);
-        for j in &self.joints {
-            match Self::joint_rows(&j.kind) {
-                2 => p1 += 1,
-                _ => p2 += 1,
-            }
-        }
+        let [p1, p2] = self.pairs();
         let equations = 3 * (self.bodies.len() as i64 - 1);
         let reactions = 2 * p1 + p2;
         Grubler { mobility: equations - reactions, equations, unknowns: reactions + self.drivers.len() as i64 }
+    }
+}
+
+impl Mechanism {
+    /// The joints by class, [P_I, P_II]: a class-I pair (revolute,
+    /// prismatic) removes 2 freedoms, a class-II pair (pin in a slot, gears) 1.
+    pub fn pairs(&self) -> [i64; 2] {
+        let p1 = self.joints.iter().filter(|j| Self::joint_rows(&j.kind) == 2).count() as i64;
+        [p1, self.joints.len() as i64 - p1]
     }
 }
 

@@ -50,6 +50,7 @@ async fn tracked_points_move_as_their_bodies_do() {
         }
         let piston = s["kinematics"].as_array().unwrap().iter().find(|k| k["body"] == "piston").unwrap();
         for key in ["x", "y", "vx", "vy", "ax", "ay"] {
+            // The crank pin's own scales bound the piston's: rω = 12 m/s, rω² = 1800 m/s².
             let scale = if key.starts_with('a') { 2000.0 } else { 15.0 };
             assert!((f(&bp[key]) - f(&piston[key])).abs() <= 1e-12 * scale, "B.{key} at φ = {phi}");
             let mean = (f(&a[key]) + f(&bp[key])) / 2.0;

@@ -57,7 +57,8 @@ pub fn forces(m: &Mechanism, c: &Configuration, reactions: &[Reaction]) -> DVect
 pub fn add_to(m: &Mechanism, c: &Configuration, reactions: &mut [Reaction]) {
     let all: Vec<_> = actions(m, c, reactions).collect();
     for (k, force, couple) in all {
-        if let Some(r) = reactions.iter_mut().find(|r| r.joint == k) {
+        // The reactions are in joint order (one per joint).
+        if let Some(r) = reactions.get_mut(k).filter(|r| r.joint == k) {
             r.fx += force[0];
             r.fy += force[1];
             r.moment += couple;

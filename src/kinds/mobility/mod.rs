@@ -137,7 +137,6 @@ fn drawn(dto: &MechanismDto, unknown: Vec<FieldError>, limits: &Limits) -> Resul
     let name = |k: &usize| m.joints[*k].name.clone();
     let dof = found.dof as i64;
     let g = found.grubler;
-    let classes = pair_classes(m);
     let mut warnings = Vec::new();
     if g.mobility != dof {
         warnings.push(format!(
@@ -149,7 +148,7 @@ fn drawn(dto: &MechanismDto, unknown: Vec<FieldError>, limits: &Limits) -> Resul
     Ok(MobilityResult {
         dof: Some(dof),
         grubler: Count {
-            formula: formula(Space::Planar, m.bodies.len() as i64, &classes, g.mobility),
+            formula: formula(Space::Planar, m.bodies.len() as i64, &m.pairs(), g.mobility),
             mobility: g.mobility,
             equations: g.equations,
             unknowns: g.unknowns,
@@ -160,12 +159,6 @@ fn drawn(dto: &MechanismDto, unknown: Vec<FieldError>, limits: &Limits) -> Resul
         indeterminate_joints: found.indeterminate_joints.iter().map(name).collect(),
         warnings,
     })
-}
-
-/// The pairs of a planar model by class: [p_I, p_II].
-fn pair_classes(m: &crate::engine::model::Mechanism) -> Vec<i64> {
-    let p1 = m.joints.iter().filter(|j| crate::engine::model::Mechanism::joint_rows(&j.kind) == 2).count() as i64;
-    vec![p1, m.joints.len() as i64 - p1]
 }
 
 /// The mobility of counted bodies and pairs.
