@@ -2,12 +2,13 @@
 //! Jacobian Φ_q and the acceleration right-hand side γ (Φ_q q̈ = γ).
 //!
 //! Rows: the joints in order (revolute 2, prismatic 2, pin-in-slot 1, gear 1),
-//! then one row per driver. With d = P_j − P_i the separation of the joint
+//! then one row per driver (a joint's coordinate, a point's displacement
+//! along a direction of the ground, or a body's rotation). With d = P_j − P_i the separation of the joint
 //! point on the second and first body and e = A(θ_i)e' a direction fixed in
 //! the first body, a "projection" row is eᵀd: the normal of a slide
 //! (prismatic, pin-in-slot) or the axis of a driven prismatic joint.
 
-use super::model::{BodyId, JointKind, Mechanism, dot, perp, rotate_by};
+use super::model::{BodyId, Coordinate, JointKind, Mechanism, dot, perp, rotate_by};
 use nalgebra::{DMatrix, DVector};
 
 /// Φ, Φ_q and γ at one state; [`evaluate_into`] refills one in place.
@@ -192,6 +193,18 @@ impl<J: Jacobian> Builder<'_, '_, J> {
         self.gamma[row] = dot(e, d) * wi * wi - 2.0 * wi * dot(de, dd) - dot(e, centripetal);
     }
 
+    /// Row c_k(q) − target, c_k joint k's coordinate: its relative rotation
+    /// (revolute) or its displacement along the axis (prismatic).
+    fn joint_coordinate(&mut self, row: usize, k: usize, target: f64) {
+        let m = self.m;
+        let joint = &m.joints[k];
+        let [i, j] = joint.bodies;
+        match &joint.kind {
+            JointKind::Prismatic { axis } => self.projection(row, joint.bodies, joint.at, *axis, target),
+            _ => self.angles(row, &[(j, 1.0), (i, -1.0)], target),
+        }
+    }
+
     /// Row a·θ_i + b·θ_j + c·θ_c − target.
     fn angles(&mut self, row: usize, terms: &[(BodyId, f64)], target: f64) {
         self.phi[row] = terms.iter().map(|&(b, k)| k * self.pose(b).1).sum::<f64>() - target;
@@ -285,12 +298,11 @@ fn build<J: Jacobian>(
         row += Mechanism::joint_rows(&joint.kind);
     }
     for (d, input) in m.drivers.iter().zip(s.inputs) {
-        let joint = &m.joints[d.joint];
-        let [i, j] = joint.bodies;
         let value = input[0] - d.reference;
-        match &joint.kind {
-            JointKind::Prismatic { axis } => b.projection(row, joint.bodies, joint.at, *axis, value),
-            _ => b.angles(row, &[(j, 1.0), (i, -1.0)], value),
+        match d.coordinate {
+            Coordinate::Joint(k) => b.joint_coordinate(row, k, value),
+            Coordinate::Point { body, at, direction } => b.projection(row, [0, body], at, direction, value),
+            Coordinate::Body(body) => b.angles(row, &[(body, 1.0)], value),
         }
         // Φ_d = f(q) − φ(t): Φ_q q̈ = γ_f + φ̈.
         b.gamma[row] += input[2];

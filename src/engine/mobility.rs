@@ -14,7 +14,7 @@
 //! 3p_III + 2p_IV + p_V).
 
 use super::constraints::{State, evaluate, joint_offsets};
-use super::model::{Driver, Grubler, JointKind, Mechanism};
+use super::model::{Coordinate, Driver, Grubler, JointKind, Mechanism};
 use super::numeric::svd::singular_values;
 use nalgebra::DMatrix;
 
@@ -99,7 +99,7 @@ pub fn candidate_inputs(m: &Mechanism, q: &[f64], dof: usize) -> Vec<usize> {
         if !matches!(joint.kind, JointKind::Revolute | JointKind::Prismatic { .. }) {
             continue;
         }
-        driven.drivers.push(Driver { joint: k, reference: 0.0 });
+        driven.drivers.push(Driver::joint(k, 0.0));
         match rank_of(&driven) {
             r if r > reached => reached = r,
             _ => {
@@ -107,7 +107,14 @@ pub fn candidate_inputs(m: &Mechanism, q: &[f64], dof: usize) -> Vec<usize> {
             }
         }
     }
-    driven.drivers.iter().map(|d| d.joint).collect()
+    driven
+        .drivers
+        .iter()
+        .filter_map(|d| match d.coordinate {
+            Coordinate::Joint(k) => Some(k),
+            _ => None,
+        })
+        .collect()
 }
 
 /// Joints with a row in the left null space of Φ_q (eigenvectors of Φ_qΦ_qᵀ
@@ -196,7 +203,7 @@ mod tests {
                 rev("O3", [0, 4], [1.0, 0.0]),
                 rev("C", [4, 2], [1.0, 1.0]),
             ],
-            drivers: vec![Driver { joint: 0, reference: 0.0 }],
+            drivers: vec![Driver::joint(0, 0.0)],
             gravity: [0.0, -9.81],
         };
         let mob = mobility(&m, &m.reference_q());

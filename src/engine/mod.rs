@@ -74,6 +74,12 @@ pub enum EngineError {
          for the mechanism to be driven there (self-locking)"
     )]
     FrictionDiverged { step: usize, input: f64 },
+    /// The actuators' efforts do no work on the inputs' motion here: they cannot drive them.
+    #[error(
+        "the actuator(s) {actuators} cannot drive the inputs at input {input} (step {step}): moving the inputs \
+         does not move them (their effort would be carried by the joints); choose an actuator the input's motion moves"
+    )]
+    Unactuated { step: usize, input: f64, actuators: String },
     /// The computation produced a non-finite number (never returned as a result).
     #[error("the computation produced a non-finite number; the input is numerically degenerate")]
     NotFiniteResult,

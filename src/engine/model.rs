@@ -71,12 +71,42 @@ pub struct Friction {
     pub radius: f64,
 }
 
-/// A driven joint: its relative rotation (revolute) or displacement along the
-/// axis (prismatic) equals the input coordinate minus `reference`.
+/// What an input coordinate φ measures: its change from the drawn
+/// configuration, plus the driver's `reference`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Coordinate {
+    /// A joint's relative rotation (revolute) or its second body's
+    /// displacement along the axis (prismatic).
+    Joint(usize),
+    /// The displacement of point `at` (reference coordinates) of `body`
+    /// along the ground's unit `direction`.
+    Point { body: BodyId, at: [f64; 2], direction: [f64; 2] },
+    /// The absolute rotation of `body`.
+    Body(BodyId),
+}
+
+/// An input: its coordinate equals φ − `reference`. Its driving effort acts
+/// at the `actuator` joint (a torque at a revolute joint, a force along a
+/// prismatic one's axis); without one, the effort is the generalized force
+/// of the coordinate itself (the input joint's torque or force, a force on
+/// the point along the direction, a torque on the body).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Driver {
-    pub joint: usize,
+    pub coordinate: Coordinate,
     pub reference: f64,
+    pub actuator: Option<usize>,
+}
+
+impl Driver {
+    /// A driven joint, its own actuator.
+    pub fn joint(joint: usize, reference: f64) -> Self {
+        Self { coordinate: Coordinate::Joint(joint), reference, actuator: None }
+    }
+
+    /// The effort acts elsewhere than on the input's own coordinate.
+    pub fn actuated_elsewhere(&self) -> bool {
+        self.actuator.is_some_and(|a| self.coordinate != Coordinate::Joint(a))
+    }
 }
 
 /// A mechanism: bodies (index 0 is the ground, with no coordinates), joints,
@@ -142,6 +172,15 @@ impl Mechanism {
 }
 
 impl Mechanism {
+    /// A coordinate is a length (a prismatic joint's, a point's), not an angle.
+    pub fn is_length(&self, c: Coordinate) -> bool {
+        match c {
+            Coordinate::Joint(k) => matches!(self.joints[k].kind, JointKind::Prismatic { .. }),
+            Coordinate::Point { .. } => true,
+            Coordinate::Body(_) => false,
+        }
+    }
+
     /// The joints by class, [P_I, P_II]: a class-I pair (revolute,
     /// prismatic) removes 2 freedoms, a class-II pair (pin in a slot, gears) 1.
     pub fn pairs(&self) -> [i64; 2] {

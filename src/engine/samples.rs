@@ -32,7 +32,7 @@ pub fn offset_slider_crank() -> Mechanism {
             joint("B", JointKind::Revolute, [2, 3], b),
             joint("guide", JointKind::Prismatic { axis: [1.0, 0.0] }, [0, 3], b),
         ],
-        drivers: vec![Driver { joint: 0, reference: 0.0 }],
+        drivers: vec![Driver::joint(0, 0.0)],
         gravity: [0.0, -9.81],
     }
 }
@@ -51,7 +51,7 @@ pub fn scotch_yoke() -> Mechanism {
             joint("slide", JointKind::Prismatic { axis: [1.0, 0.0] }, [0, 2], [0.3, 0.0]),
             joint("pin", JointKind::PinSlot { axis: [0.0, 1.0] }, [2, 1], [0.1, 0.0]),
         ],
-        drivers: vec![Driver { joint: 0, reference: 0.0 }],
+        drivers: vec![Driver::joint(0, 0.0)],
         gravity: [0.0, -9.81],
     }
 }
@@ -76,7 +76,7 @@ pub fn four_bar() -> Mechanism {
             joint("B", JointKind::Revolute, [2, 3], b),
             joint("O4", JointKind::Revolute, [3, 0], o4),
         ],
-        drivers: vec![Driver { joint: 0, reference: 0.0 }],
+        drivers: vec![Driver::joint(0, 0.0)],
         gravity: [0.0, -9.81],
     }
 }
@@ -106,7 +106,7 @@ pub fn watt_six_bar() -> Mechanism {
             revolute("F", [4, 5], f),
             revolute("O6", [5, 0], o6),
         ],
-        drivers: vec![Driver { joint: 0, reference: 0.0 }],
+        drivers: vec![Driver::joint(0, 0.0)],
         gravity: [0.0, -9.81],
     }
 }
@@ -132,7 +132,7 @@ pub fn planetary_train() -> Mechanism {
             joint("sun-planet", gear(-2.0), [1, 3], [0.0, 0.0]),
             joint("planet-ring", gear(0.25), [3, 4], [0.0, 0.0]),
         ],
-        drivers: vec![Driver { joint: 1, reference: 0.0 }, Driver { joint: 3, reference: 0.0 }],
+        drivers: vec![Driver::joint(1, 0.0), Driver::joint(3, 0.0)],
         gravity: [0.0, 0.0],
     }
 }
@@ -156,7 +156,7 @@ pub fn actuated_arm() -> Mechanism {
             joint("stroke", JointKind::Prismatic { axis }, [2, 3], p),
             joint("P", JointKind::Revolute, [3, 1], p),
         ],
-        drivers: vec![Driver { joint: 2, reference: 0.0 }],
+        drivers: vec![Driver::joint(2, 0.0)],
         gravity: [0.0, -9.81],
     }
 }
@@ -178,7 +178,7 @@ pub fn slider_crank(r: f64, l: f64) -> Mechanism {
             joint("B", JointKind::Revolute, [2, 3], b),
             joint("guide", JointKind::Prismatic { axis: [1.0, 0.0] }, [0, 3], b),
         ],
-        drivers: vec![Driver { joint: 0, reference: 0.0 }],
+        drivers: vec![Driver::joint(0, 0.0)],
         gravity: [0.0, 0.0],
     }
 }
@@ -207,7 +207,7 @@ pub fn slotted_lever() -> Mechanism {
             joint("slot6", JointKind::Prismatic { axis: [1.0, 0.0] }, [5, 4], [a, 0.0]),
             joint("guide6", JointKind::Prismatic { axis: [0.0, 1.0] }, [0, 5], [a, 0.2]),
         ],
-        drivers: vec![Driver { joint: 0, reference: 0.0 }],
+        drivers: vec![Driver::joint(0, 0.0)],
         gravity: [0.0, 0.0],
     }
 }
@@ -235,7 +235,7 @@ pub fn scissor_lift() -> Mechanism {
             joint("B", JointKind::Revolute, [4, 2], b),
             joint("piston", JointKind::Prismatic { axis: [1.0, 0.0] }, [0, 4], b),
         ],
-        drivers: vec![Driver { joint: 5, reference: 0.0 }],
+        drivers: vec![Driver::joint(5, 0.0)],
         gravity: [0.0, -9.81],
     }
 }
@@ -255,12 +255,7 @@ pub fn parallelogram_chain(n: usize) -> Mechanism {
         joints.push(pin(format!("A{i}"), [i + 1, n + 2 + i], [i as f64, 1.0]));
         joints.push(pin(format!("B{i}"), [i + 2, n + 2 + i], [i as f64 + 1.0, 1.0]));
     }
-    Mechanism {
-        bodies,
-        joints,
-        drivers: vec![Driver { joint: 0, reference: std::f64::consts::FRAC_PI_2 }],
-        gravity: [0.0, -9.81],
-    }
+    Mechanism { bodies, joints, drivers: vec![Driver::joint(0, std::f64::consts::FRAC_PI_2)], gravity: [0.0, -9.81] }
 }
 
 /// IFToMM A01's pendulum made elastic: a massless arm pinned at O, the
@@ -279,7 +274,7 @@ pub fn elastic_pendulum() -> Mechanism {
             joint("O", JointKind::Revolute, [0, 1], [0.0, 0.0]),
             joint("slide", JointKind::Prismatic { axis: [1.0, 0.0] }, [1, 2], [1.0, 0.0]),
         ],
-        drivers: vec![Driver { joint: 0, reference: 0.0 }, Driver { joint: 1, reference: 0.0 }],
+        drivers: vec![Driver::joint(0, 0.0), Driver::joint(1, 0.0)],
         gravity: [0.0, -9.81],
     }
 }

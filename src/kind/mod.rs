@@ -210,6 +210,7 @@ pub fn engine_error(e: crate::engine::EngineError, fallback: &str) -> FieldError
         | E::Singular { .. }
         | E::FrictionDiverged { .. }
         | E::DofMismatch { .. }
+        | E::Unactuated { .. }
         | E::Locked { .. }
         | E::BudgetExceeded { .. } => fallback.into(),
         E::NotFiniteResult => String::new(),

@@ -21,6 +21,7 @@ mod gears;
 mod grading;
 mod group_commit;
 mod helpers;
+mod inputs;
 mod jobs;
 mod kinetostatics;
 mod libreoffice;

@@ -6,7 +6,7 @@ use crate::helpers::{TestApp, case, request};
 use axum::http::StatusCode;
 use serde_json::{Value, json};
 
-const BUILTIN: [&str; 8] = [
+const BUILTIN: [&str; 10] = [
     "p103-slider-flywheel",
     "p103-class",
     "p107-two-stroke-engine",
@@ -15,6 +15,8 @@ const BUILTIN: [&str; 8] = [
     "four-bar",
     "scotch-yoke-startup",
     "rotor-disk",
+    "scissor-lift",
+    "bar-on-slider",
 ];
 
 async fn number(app: &TestApp, path: &str) -> f64 {

@@ -1,7 +1,7 @@
 //! Every body's free-body diagram balances with the reactions as reported:
 //! the forces and couples of its joints (the force on the second body at
-//! the joint's point and its opposite on the first), the driving action on
-//! its input joint, gravity, and d'Alembert's inertia forces −m a_G and
+//! the joint's point and its opposite on the first), the driving action at
+//! its actuator (the input joint, or the joint named as the actuator), gravity, and d'Alembert's inertia forces −m a_G and
 //! −I_G α, with Coulomb friction in every kind of joint (revolute,
 //! prismatic, pin-in-slot). Independent of how the engine solves: the sums
 //! are made here from the reported numbers and the bodies' motion only.
@@ -9,7 +9,7 @@
 
 use mechdyn::engine::Deadline;
 use mechdyn::engine::kinetostatics::{Outputs, Step, solve};
-use mechdyn::engine::model::{Friction, JointKind, Mechanism, rotate};
+use mechdyn::engine::model::{Coordinate, Friction, JointKind, Mechanism, rotate};
 use mechdyn::engine::samples::{offset_slider_crank, scotch_yoke};
 
 /// The residual of body `b`'s equilibrium at `step`: (force, moment about
@@ -39,7 +39,11 @@ fn residual(m: &Mechanism, step: &Step, b: usize) -> (f64, f64) {
         }
     }
     for (driver, action) in m.drivers.iter().zip(&step.driving) {
-        let joint = &m.joints[driver.joint];
+        let own = match driver.coordinate {
+            Coordinate::Joint(k) => Some(k),
+            _ => None,
+        };
+        let joint = &m.joints[driver.actuator.or(own).expect("an actuator")];
         let [i, j] = joint.bodies;
         let sign = if j == b {
             1.0
@@ -72,15 +76,20 @@ fn residual(m: &Mechanism, step: &Step, b: usize) -> (f64, f64) {
 /// Solves `m` over a turn of its crank at ω = 10 rad/s, α = 30 rad/s² and
 /// checks every moving body at every step; the friction must change the
 /// driving action (or the test would not test it).
-fn balances(mut m: Mechanism) {
+fn balances(m: Mechanism) {
     let positions: Vec<Vec<[f64; 3]>> =
         (0..24).map(|k| vec![[f64::from(k) * std::f64::consts::TAU / 24.0 + 0.1, 10.0, 30.0]]).collect();
+    balances_over(m, &positions);
+}
+
+/// [`balances`] over the given positions of its input.
+fn balances_over(mut m: Mechanism, positions: &[Vec<[f64; 3]>]) {
     let outputs = Outputs { driving: true, reactions: true, reduced: false, kinematics: true, condition: false };
-    let without = solve(&m, &[], &positions, outputs, &Deadline::none()).unwrap();
+    let without = solve(&m, &[], positions, outputs, &Deadline::none()).unwrap();
     for joint in &mut m.joints {
         joint.friction = Some(Friction { mu: 0.3, radius: 0.02 });
     }
-    let with = solve(&m, &[], &positions, outputs, &Deadline::none()).unwrap();
+    let with = solve(&m, &[], positions, outputs, &Deadline::none()).unwrap();
     let changed = with.steps.iter().zip(&without.steps).any(|(a, b)| (a.driving[0] - b.driving[0]).abs() > 1e-3);
     assert!(changed, "friction changes the driving torque");
     for step in &with.steps {
@@ -107,4 +116,17 @@ fn every_body_balances_with_friction_in_every_joint_of_a_scotch_yoke() {
 #[test]
 fn every_body_balances_with_friction_in_every_joint_of_a_slider_crank() {
     balances(offset_slider_crank());
+}
+
+/// Seed 002's scissor lift as its statement puts it: the platform's point C
+/// descending at 0.3 m/s is the input, the piston (a prismatic joint) the
+/// actuator; friction in every joint, the platform lowered 0.2 m.
+#[test]
+fn every_body_balances_in_a_scissor_lift_driven_by_its_platform_with_the_piston_as_actuator() {
+    let mut m = mechdyn::engine::samples::scissor_lift();
+    let c = m.joints[2].at;
+    m.drivers[0].coordinate = Coordinate::Point { body: 3, at: c, direction: [0.0, -1.0] };
+    m.drivers[0].actuator = Some(5);
+    let positions: Vec<Vec<[f64; 3]>> = (0..8).map(|k| vec![[0.025 * f64::from(k), 0.3, 0.0]]).collect();
+    balances_over(m, &positions);
 }

@@ -1,5 +1,6 @@
 //! Engine-level golden tests against the reference cases in tests/fixtures/cases.
 
+mod actuators;
 mod dynamics;
 mod elliptic;
 mod free_body;

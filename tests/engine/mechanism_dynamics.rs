@@ -251,7 +251,7 @@ fn pendulum() -> Mechanism {
             at: [0.0, 0.0],
             friction: None,
         }],
-        drivers: vec![Driver { joint: 0, reference: 0.0 }],
+        drivers: vec![Driver::joint(0, 0.0)],
         gravity: [0.0, -9.81],
     }
 }
@@ -280,7 +280,7 @@ fn double_pendulum_matches_its_lagrange_equations() {
         bodies: vec![point("ground", 0.0, 0.0), point("m1", m1, l1), point("m2", m2, l1 + l2)],
         joints: vec![pin("O", [0, 1], 0.0), pin("A", [1, 2], l1)],
         // φ₁ the first rod's absolute angle from +x, φ₂ the second's relative to the first.
-        drivers: vec![Driver { joint: 0, reference: 0.0 }, Driver { joint: 1, reference: 0.0 }],
+        drivers: vec![Driver::joint(0, 0.0), Driver::joint(1, 0.0)],
         gravity: [0.0, -g],
     };
     let (phi1, phi2) = (-PI / 6.0, -PI / 6.0);
@@ -356,7 +356,7 @@ fn a_start_whose_motions_move_no_mass_is_refused_at_once() {
     let m = Mechanism {
         bodies: vec![body("ground", 0.0, [0.0, 0.0]), body("arm", 0.0, [0.5, 0.0]), body("bob", 1.0, [2.0, 0.0])],
         joints: vec![revolute("O", [0, 1], [0.0, 0.0]), revolute("A", [1, 2], [1.0, 0.0])],
-        drivers: vec![Driver { joint: 0, reference: 0.0 }, Driver { joint: 1, reference: 0.0 }],
+        drivers: vec![Driver::joint(0, 0.0), Driver::joint(1, 0.0)],
         gravity: [0.0, -9.81],
     };
     let mut p = problem(m, Vec::new(), vec![[0.0, 0.0]; 2], End::Duration(1.0));

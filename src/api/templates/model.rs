@@ -114,6 +114,8 @@ pub const LIBRARY_FILES: &[(&str, &str)] = &[
     ("four-bar.json", include_str!("../../../library/four-bar.json")),
     ("scotch-yoke-startup.json", include_str!("../../../library/scotch-yoke-startup.json")),
     ("rotor-disk.json", include_str!("../../../library/rotor-disk.json")),
+    ("scissor-lift.json", include_str!("../../../library/scissor-lift.json")),
+    ("bar-on-slider.json", include_str!("../../../library/bar-on-slider.json")),
 ];
 
 /// A new template checked: its kind, name, parameters' names, pointers,

@@ -12,7 +12,7 @@
 //! other joint (a gear, a pin in a slot, a joint left over) has no such
 //! decomposition and is solved by Newton alone.
 
-use crate::engine::model::{BodyId, JointKind, Mechanism, cross, dot, perp};
+use crate::engine::model::{BodyId, Coordinate, Driver, JointKind, Mechanism, cross, dot, perp};
 use std::f64::consts::TAU;
 
 /// A joint of a dyad's body to a body placed before it.
@@ -60,8 +60,8 @@ impl Dyads {
     /// The decomposition of a mechanism with one input, a revolute joint
     /// to the ground, into dyads; None where it has none.
     pub fn new(m: &Mechanism) -> Option<Self> {
-        let [driver] = m.drivers[..] else { return None };
-        let joint = &m.joints[driver.joint];
+        let [Driver { coordinate: Coordinate::Joint(driven), reference, .. }] = m.drivers[..] else { return None };
+        let joint = &m.joints[driven];
         let (crank, sign) = match (&joint.kind, joint.bodies) {
             (JointKind::Revolute, [0, b]) if b != 0 => (b, 1.0),
             (JointKind::Revolute, [b, 0]) if b != 0 => (b, -1.0),
@@ -69,7 +69,7 @@ impl Dyads {
         };
         let mut placed = vec![false; m.bodies.len()];
         let mut used = vec![false; m.joints.len()];
-        (placed[0], placed[crank], used[driver.joint]) = (true, true, true);
+        (placed[0], placed[crank], used[driven]) = (true, true, true);
         let mut groups = Vec::new();
         while let Some((group, joints)) = next_group(m, &placed, &used) {
             joints.into_iter().for_each(|j| used[j] = true);
@@ -80,7 +80,7 @@ impl Dyads {
             groups.push(group);
         }
         let whole = placed.iter().all(|&p| p) && used.iter().all(|&u| u);
-        whole.then_some(Self { crank, pivot: joint.at, sign, reference: driver.reference, groups })
+        whole.then_some(Self { crank, pivot: joint.at, sign, reference, groups })
     }
 
     /// Places every body at input φ, each dyad on the side its bodies are

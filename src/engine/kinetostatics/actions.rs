@@ -5,6 +5,7 @@
 //! allocates nothing (several inputs solve for each g_i in a vector of its
 //! own, and joint friction iterates on vectors of its own).
 
+use super::actuators::Actuated;
 use super::loads::{applied_forces_into, point_motion};
 use super::{Motion, Outputs, Reaction, Step, friction, mass_times};
 use crate::engine::EngineError;
@@ -21,6 +22,8 @@ pub(super) struct Scratch {
     pub inertial: Vec<f64>,
     pub lambda: Vec<f64>,
     pub offsets: Vec<usize>,
+    /// J_a, where an input's effort acts at another joint ([`Actuated`]).
+    pub actuated: Option<Actuated>,
 }
 
 /// The actions at the regular positions of one sweep.
@@ -82,11 +85,21 @@ impl Actions<'_> {
             return Ok(());
         }
         let phi = inputs[0][0];
+        if let Some(a) = s.actuated.as_mut()
+            && !a.at(&c.q, inputs)
+        {
+            let actuators = m.drivers.iter().filter_map(|d| d.actuator).map(|a| m.joints[a].name.as_str());
+            return Err(EngineError::Unactuated {
+                step: k,
+                input: phi,
+                actuators: actuators.collect::<Vec<_>>().join(", "),
+            });
+        }
         applied_forces_into(m, self.loads, (&c.q, &c.trig), &c.qd, phi, [inputs[0][1], 0.0], &mut s.qv);
         out.friction_iterations = with_friction(m, c, s, k, phi)?;
         s.inertial.clear();
         s.inertial.extend(c.qdd.iter().zip(&s.qv).enumerate().map(|(i, (a, q))| a * m.mass_of(i) - q));
-        virtual_power(m, c, &s.inertial, &mut out.driving_virtual_power);
+        virtual_power(m, c, &s.inertial, s.actuated.as_ref(), &mut out.driving_virtual_power);
         let g = c.g.as_deref().filter(|_| outputs.reduced);
         out.reduced_inertia = g.map(|g| g.iter().enumerate().map(|(i, v)| m.mass_of(i) * v * v).sum::<f64>());
         out.reduced_torque = g.map(|g| g.iter().zip(&s.qv).map(|(a, b)| a * b).sum());
@@ -114,25 +127,32 @@ impl Actions<'_> {
 
 /// T_i = g_iᵀ(M q̈ − Q) for every input i into `out`, g_i = ∂q/∂φ_i solving
 /// Φ_q g_i = e_i (the velocity coefficients of one input are kept from the
-/// kinematics).
-fn virtual_power(m: &Mechanism, c: &Configuration, inertial: &[f64], out: &mut Vec<f64>) {
+/// kinematics); with actuators elsewhere, their efforts from the T_i.
+fn virtual_power(m: &Mechanism, c: &Configuration, inertial: &[f64], actuated: Option<&Actuated>, out: &mut Vec<f64>) {
     let power = |g: &[f64]| g.iter().zip(inertial).map(|(a, b)| a * b).sum::<f64>();
     out.clear();
-    if let Some(g) = &c.g {
+    if let (Some(g), None) = (&c.g, actuated) {
         out.push(power(g));
         return;
     }
     let rows = c.jacobian.nrows();
     let first_driver = rows - m.drivers.len();
-    out.extend((first_driver..rows).map(|r| {
-        let mut g = vec![0.0; rows];
-        g[r] = 1.0;
-        if c.lu.solve(&mut g) {
-            return power(&g);
-        }
-        let e = DVector::from_fn(rows, |k, _| if k == r { 1.0 } else { 0.0 });
-        solve_linear(&c.jacobian, &e).map_or(f64::NAN, |g| power(g.as_slice()))
-    }));
+    let g: Vec<Vec<f64>> = (first_driver..rows)
+        .map(|r| {
+            let mut g = vec![0.0; rows];
+            g[r] = 1.0;
+            if c.lu.solve(&mut g) {
+                return g;
+            }
+            let e = DVector::from_fn(rows, |k, _| if k == r { 1.0 } else { 0.0 });
+            solve_linear(&c.jacobian, &e).map_or_else(|| vec![f64::NAN; c.q.len()], |g| g.as_slice().to_vec())
+        })
+        .collect();
+    let t: Vec<f64> = g.iter().map(|g| power(g)).collect();
+    match actuated {
+        Some(a) => out.extend(a.efforts(&g, &t)),
+        None => out.extend(t),
+    }
 }
 
 /// Adds the joints' friction forces to Q (`s.qv`), iterated to a fixed
@@ -178,12 +198,13 @@ fn multipliers(
     (step, input): (usize, f64),
     (driving, reactions): (&mut Vec<f64>, &mut Vec<Reaction>),
 ) -> Result<(), EngineError> {
+    let (jacobian, lu) = s.actuated.as_ref().map_or((&c.jacobian, &c.lu), |a| (a.jacobian(), &a.lu));
     let lambda = &mut s.lambda;
     lambda.clear();
     lambda.extend(s.inertial.iter().map(|v| -v));
-    if !c.lu.solve_transposed(lambda) {
+    if !lu.solve_transposed(lambda) {
         let b = DVector::from_iterator(s.inertial.len(), s.inertial.iter().map(|v| -v));
-        let solved = solve_linear(&c.jacobian.transpose(), &b).ok_or(EngineError::Singular { step, input })?;
+        let solved = solve_linear(&jacobian.transpose(), &b).ok_or(EngineError::Singular { step, input })?;
         lambda.clear();
         lambda.extend(solved.iter());
     }

@@ -10,9 +10,11 @@
 //! driving action (−λ_d). Virtual power gives the driving action of every
 //! input independently, one equation per independent virtual motion: with
 //! g_i = ∂q/∂φ_i (Φ_q g_i = e_i, the row of driver i), T_i = g_iᵀ(M q̈ − Q);
-//! and, for one input, I* = gᵀMg, M* = gᵀQ (Zhukovsky).
+//! and, for one input, I* = gᵀMg, M* = gᵀQ (Zhukovsky). An input whose
+//! effort acts at another joint (an actuator) is solved in `actuators.rs`.
 
 mod actions;
+mod actuators;
 mod friction;
 mod loads;
 mod summary;
@@ -30,6 +32,7 @@ use super::mobility::{Mobility, mobility as mobility_at};
 use super::model::{BodyId, Mechanism};
 use super::{Deadline, EngineError};
 use actions::{Actions, Scratch};
+use actuators::Actuated;
 use nalgebra::DVector;
 
 /// What to compute at every position.
@@ -151,8 +154,12 @@ pub fn solve_each(
     let mut mobility: Option<Mobility> = None;
     let (mut max_iterations, mut max_constraint_residual, mut closed_form) = (0, 0.0f64, true);
     let inputs = m.drivers.len();
-    let mut actions =
-        Actions { m, loads, outputs, scratch: Scratch { offsets: joint_offsets(m), ..Scratch::default() } };
+    let mut actions = Actions {
+        m,
+        loads,
+        outputs,
+        scratch: Scratch { offsets: joint_offsets(m), actuated: Actuated::new(m), ..Scratch::default() },
+    };
     let (mut step, mut tally) = (Step::default(), Tally::new(m.joints.len()));
     // Each position solved as soon as it is assembled, once the mobility at
     // the first regular one has been found to match the inputs (where it

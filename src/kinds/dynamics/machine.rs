@@ -4,10 +4,10 @@
 use super::Initial;
 use crate::engine::dynamics::mechanism::MechanismSolution;
 use crate::engine::kinetostatics::Load;
-use crate::engine::model::{Driver, JointKind, Mechanism};
-use crate::kind::quantity::{Errors, FunctionDto};
-use crate::kinds::mechanism::MechanismDto;
+use crate::engine::model::{Driver, Mechanism};
+use crate::kind::quantity::{Errors, FunctionDto, Quantity};
 use crate::kinds::mechanism::{EnergyDto, InputDto, Inputs, LoadDto, Name, ReactionDto, convert_loads, names};
+use crate::kinds::mechanism::{MechanismDto, coordinate};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
@@ -16,8 +16,10 @@ use utoipa::ToSchema;
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct DynamicsMachine {
     pub mechanism: MechanismDto,
-    /// The revolute joint(s) whose relative angles are the coordinates, one per
-    /// degree of freedom (a list for several). Each input's `start` and
+    /// The input coordinate(s), one per degree of freedom (a list for
+    /// several): a revolute joint's relative angle, a prismatic joint's
+    /// displacement, a point's displacement along a direction, a body's
+    /// rotation (as in kinetostatics; m and m/s for the lengths). Each input's `start` and
     /// `speed` (a constant) are its state at t = 0 (default 0; `initial` may
     /// give the first input's instead); `reference` as in kinetostatics;
     /// `acceleration`, `end` and `steps` do not apply.
@@ -89,7 +91,7 @@ impl DynamicsMachine {
         for (k, input) in inputs.iter().enumerate() {
             let at = if many { format!("/machine/input/{k}") } else { "/machine/input".into() };
             let given = if k == 0 { initial } else { None };
-            if let Some((driver, state)) = free_input(e, &mechanism, input, given, &at) {
+            if let Some((driver, state)) = free_input(e, (dto, &mechanism, &c.body_names), input, given, &at) {
                 drivers.push(driver);
                 states.push(state);
             }
@@ -105,10 +107,11 @@ impl DynamicsMachine {
     }
 }
 
-/// The driver and initial [angle, speed] of one free input.
+/// The driver and initial [coordinate, speed] of one free input: an angle
+/// (a revolute joint, a body) or a length (a prismatic joint, a point).
 fn free_input(
     e: &mut Errors,
-    m: &Mechanism,
+    parts: (&MechanismDto, &Mechanism, &[String]),
     input: &InputDto,
     initial: Option<&Initial>,
     at: &str,
@@ -121,36 +124,37 @@ fn free_input(
     for (name, _) in unused.iter().filter(|u| u.1) {
         e.push(&format!("{at}/{name}"), "does not apply to dynamics (the motion is the result)");
     }
-    let joint = match m.joints.iter().position(|j| j.name == input.joint) {
-        Some(j) if m.joints[j].kind == JointKind::Revolute => Some(j),
-        Some(_) => e.fail(&format!("{at}/joint"), "a dynamics input must be a revolute joint"),
-        None => e.fail(&format!("{at}/joint"), format!("unknown joint '{}'", input.joint)),
-    };
-    let reference = input.reference.as_ref().map_or(Some(0.0), |q| e.angle(q, &format!("{at}/reference")));
+    let coordinate = coordinate(e, parts, input, at);
+    let length = coordinate.is_some_and(|c| c.1);
+    let (dim, rate) = if length { (Dim::LENGTH, Dim::SPEED) } else { (Dim::ANGLE, Dim::ANGULAR_SPEED) };
+    let value = |e: &mut Errors, q: &Quantity, at: &str| if length { e.quantity(q, dim, at) } else { e.angle(q, at) };
+    let reference = input.reference.as_ref().map_or(Some(0.0), |q| value(e, q, &format!("{at}/reference")));
     let from_initial = initial.is_some_and(|i| i.angle.is_some() || i.speed.is_some());
     if from_initial && (input.start.is_some() || input.speed.is_some()) {
         e.push("/initial", "give the first input's state once: in \"initial\" or in its \"start\"/\"speed\"");
     }
-    let angle = match (initial.and_then(|i| i.angle.as_ref()), &input.start) {
-        (Some(q), _) => e.angle(q, "/initial/angle"),
-        (None, Some(q)) => e.angle(q, &format!("{at}/start")),
+    let start = match (initial.and_then(|i| i.angle.as_ref()), &input.start) {
+        (Some(q), _) => value(e, q, "/initial/angle"),
+        (None, Some(q)) => value(e, q, &format!("{at}/start")),
         (None, None) => Some(0.0),
     };
     let speed = match (initial.and_then(|i| i.speed.as_ref()), &input.speed) {
-        (Some(q), _) => e.quantity(q, Dim::ANGULAR_SPEED, "/initial/speed"),
-        (None, Some(FunctionDto::Constant(q))) => e.quantity(q, Dim::ANGULAR_SPEED, &format!("{at}/speed")),
+        (Some(q), _) => e.quantity(q, rate, "/initial/speed"),
+        (None, Some(FunctionDto::Constant(q))) => e.quantity(q, rate, &format!("{at}/speed")),
         (None, Some(FunctionDto::Spec(_))) => {
             e.fail(&format!("{at}/speed"), "must be a constant: the input's speed at t = 0")
         }
         (None, None) => Some(0.0),
     };
-    Some((Driver { joint: joint?, reference: reference? }, [angle?, speed?]))
+    let driver = Driver { coordinate: coordinate?.0, reference: reference?, actuator: None };
+    Some((driver, [start?, speed?]))
 }
 
 /// One input's state at a sample.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct InputState {
-    /// rad (relative angle of the input joint from its reference).
+    /// The input's coordinate (its `reference` plus its change from the
+    /// drawing): rad, or m for a prismatic joint or a point (`input_units`).
     pub angle: f64,
     pub speed: f64,
     pub acceleration: f64,
@@ -198,11 +202,14 @@ pub struct MachineDynamics {
     /// reactions of the joints involved are not determinate. Singular
     /// positions the steps passed over at a distance are not listed.
     pub near_singular: Vec<f64>,
+    /// Each input's coordinate unit: "rad" (a revolute joint, a body) or
+    /// "m" (a prismatic joint, a point); speeds and accelerations per second.
+    pub input_units: Vec<String>,
     pub samples: Vec<MachineSample>,
 }
 
 impl MachineDynamics {
-    pub(super) fn new(s: &MechanismSolution, joint_names: &[String], body_names: &[String]) -> Self {
+    pub(super) fn new(s: &MechanismSolution, m: &Mechanism, joint_names: &[String], body_names: &[String]) -> Self {
         let (joint_names, body_names) = (&names(joint_names), &names(body_names));
         let samples = s
             .details
@@ -234,6 +241,7 @@ impl MachineDynamics {
             dof: s.mobility.dof,
             redundant_constraints: s.mobility.redundant_constraints,
             near_singular: s.near_singular.clone(),
+            input_units: m.drivers.iter().map(|d| if m.is_length(d.coordinate) { "m" } else { "rad" }.into()).collect(),
             samples,
         }
     }

@@ -15,7 +15,7 @@ use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
 use crate::kind::validated;
-use crate::kind::{Kind, Table};
+use crate::kind::{Kind, Table, unit_in};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -207,6 +207,22 @@ impl Kind for Dynamics {
     fn table(result: &Value) -> Option<Table> {
         Some(csv_table(result))
     }
+
+    /// A machine's input in metres (a prismatic joint, a point) has its
+    /// coordinate in m, its speed in m/s; the table says rad otherwise.
+    fn unit(result: &Value, pointer: &[&str]) -> Option<String> {
+        if let ["machine", "samples", _, "inputs", k, field] = pointer
+            && result["machine"]["input_units"][k.parse::<usize>().ok()?] == "m"
+        {
+            let unit = match *field {
+                "angle" => "m",
+                "speed" => "m/s",
+                _ => "m/s^2",
+            };
+            return Some(unit.into());
+        }
+        unit_in(Self::UNITS, pointer).map(String::from)
+    }
 }
 
 /// Validates and solves a request within `limits`, stopping the integration
@@ -259,7 +275,7 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
                     s.near_singular.len()
                 ));
             }
-            result.machine = Some(MachineDynamics::new(&s, &joints, &bodies));
+            result.machine = Some(MachineDynamics::new(&s, &p.mechanism, &joints, &bodies));
             Ok(result)
         }
     }

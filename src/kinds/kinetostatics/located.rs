@@ -67,10 +67,23 @@ impl Written {
                 "joint friction does not settle",
                 "the friction coefficients are too large for the mechanism to be driven there (self-locking)".into(),
             ),
+            EngineError::Unactuated { step, input, actuators } => (
+                *step,
+                *input,
+                "the actuators cannot drive the inputs",
+                format!(
+                    "moving the inputs does not move {actuators} there, so its effort would be carried by the \
+                     joints; name in \"actuators\" a joint the input's motion moves"
+                ),
+            ),
             EngineError::Locked { .. } => return ApiError::Invalid(vec![engine_error(e, "/mechanism")]),
             _ => return engine_failure(e, &self.at),
         };
         let (field, which) = if step == 0 { ("start", ", the start") } else { ("end", "") };
+        let pointer = match e {
+            EngineError::Unactuated { .. } => "/actuators".to_string(),
+            _ => format!("{}/{field}", self.at),
+        };
         let at = if step == 0 { self.start } else { input };
         let mut message =
             format!("{head} at input {} (step {} of {}{which}): {tail}", self.value(at), step + 1, self.steps);
@@ -80,7 +93,7 @@ impl Written {
                 self.value(input)
             );
         }
-        ApiError::Invalid(vec![FieldError::at(format!("{}/{field}", self.at), message)])
+        ApiError::Invalid(vec![FieldError::at(pointer, message)])
     }
 }
 

@@ -1,5 +1,6 @@
 //! `POST /v1/kinetostatics`: driving actions and joint reactions of a driven mechanism.
 
+mod inputs;
 mod located;
 mod plots;
 mod request;

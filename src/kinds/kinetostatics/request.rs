@@ -1,22 +1,19 @@
 //! `POST /v1/kinetostatics` request and its conversion into an engine problem.
 
+use super::inputs::positions;
 use super::located::Written;
-use crate::engine::function::{Function, Side};
 use crate::engine::kinetostatics::{Load, Outputs};
-use crate::engine::model::{Driver, JointKind, Mechanism};
+use crate::engine::model::Mechanism;
 use crate::kind::constants::{self, Constants};
 use crate::kind::limits::Limits;
 use crate::kind::problem::FieldError;
 use crate::kind::quantity::{Errors, Quantity};
 use crate::kinds::mechanism::track::{TrackDto, Tracked, resolve};
-use crate::kinds::mechanism::{InputDto, Inputs, LoadDto, MechanismDto, convert_loads};
-use crate::units::Dim;
+use crate::kinds::mechanism::{Inputs, LoadDto, MechanismDto, convert_loads};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
 use utoipa::ToSchema;
-
-const DEFAULT_STEPS: usize = 360;
 
 /// A kinetostatic (inverse dynamics) problem: a mechanism, its driven input(s) and its loads.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
@@ -61,6 +58,13 @@ pub struct KinetostaticsRequest {
     /// point of one body (a pin in a slot must say which).
     #[schema(max_items = 100)]
     pub track: Option<Vec<TrackDto>>,
+    /// Where each input's driving effort acts, one joint per input in
+    /// order: a revolute joint (a torque) or a prismatic one (a force along
+    /// its axis); `driving` is then the actuators' efforts. Default: each
+    /// input's own joint; for an input on a point, a force on the point
+    /// along its direction; on a body, a torque on the body.
+    #[schema(max_items = 10)]
+    pub actuators: Option<Vec<String>>,
 }
 
 /// What to compute.
@@ -95,8 +99,10 @@ pub struct Problem {
     pub loads: Vec<Load>,
     pub positions: Vec<Vec<[f64; 3]>>,
     pub outputs: Outputs,
-    /// Per input: true for a prismatic (linear) input.
+    /// Per input: true for a coordinate in metres (a prismatic joint, a point).
     pub linear: Vec<bool>,
+    /// Per input: the point it names, if any.
+    pub input_points: Vec<Option<String>>,
     /// Each step's energies (the engine keeps the motion for them).
     pub energy: bool,
     /// The points followed at every step.
@@ -131,7 +137,8 @@ impl KinetostaticsRequest {
             Inputs::Many(v) => v.clone(),
         };
         let many = matches!(self.input, Inputs::Many(_));
-        let (drivers, positions, linear) = positions(&mut e, &mechanism, &inputs, many);
+        let parts = (dto, &mechanism, &c.body_names[..]);
+        let (drivers, positions, linear) = positions(&mut e, parts, &inputs, self.actuators.as_deref(), many);
         let written = Written::new(
             inputs.first(),
             if many { "/input/0".into() } else { "/input".into() },
@@ -167,6 +174,7 @@ impl KinetostaticsRequest {
                 condition: outputs.contains(&OutputKind::Condition),
             },
             linear,
+            input_points: inputs.iter().map(|i| i.point.clone()).collect(),
             energy: outputs.contains(&OutputKind::Energy),
             tracked,
             assembled: self
@@ -178,100 +186,4 @@ impl KinetostaticsRequest {
             written,
         })
     }
-}
-
-/// Drivers and the positions (coordinate, speed, acceleration per input) of every step.
-fn positions(
-    e: &mut Errors,
-    m: &Mechanism,
-    inputs: &[InputDto],
-    many: bool,
-) -> (Vec<Driver>, Vec<Vec<[f64; 3]>>, Vec<bool>) {
-    let mut drivers = Vec::new();
-    let mut ranges = Vec::new();
-    let mut linear = Vec::new();
-    let steps = inputs.first().and_then(|i| i.steps).unwrap_or(DEFAULT_STEPS);
-    if inputs.is_empty() || inputs.len() > 10 {
-        e.push("/input", "give 1 to 10 inputs");
-    }
-    let max = e.limits.steps;
-    if steps == 0 || steps > max {
-        e.push(if many { "/input/0/steps" } else { "/input/steps" }, format!("must be 1 to {max}"));
-    }
-    for (k, input) in inputs.iter().enumerate() {
-        let at = if many { format!("/input/{k}") } else { "/input".to_string() };
-        if k > 0 && input.steps.is_some_and(|s| s != steps) {
-            e.push(&format!("{at}/steps"), "all inputs share the steps of the first");
-        }
-        let Some(j) = m.joints.iter().position(|j| j.name == input.joint) else {
-            e.push(&format!("{at}/joint"), format!("unknown joint '{}'", input.joint));
-            continue;
-        };
-        let prismatic = match m.joints[j].kind {
-            JointKind::Revolute => false,
-            JointKind::Prismatic { .. } => true,
-            _ => {
-                e.push(&format!("{at}/joint"), "an input must be a revolute or prismatic joint");
-                continue;
-            }
-        };
-        if let Some((driver, range)) = input_range(e, input, j, prismatic, &at) {
-            drivers.push(driver);
-            ranges.push(range);
-            linear.push(prismatic);
-        }
-    }
-    // Only a valid count of steps is laid out (a count over the limit would not fit in memory).
-    let valid = ranges.len() == inputs.len() && (1..=max).contains(&steps);
-    let positions = match valid {
-        true => (0..steps).map(|s| ranges.iter().map(|r: &Range| r.at(s as f64 / steps as f64)).collect()).collect(),
-        false => Vec::new(),
-    };
-    (drivers, positions, linear)
-}
-
-struct Range {
-    start: f64,
-    end: f64,
-    speed: Function,
-    slope: Option<Function>,
-    acceleration: Option<f64>,
-}
-
-impl Range {
-    fn at(&self, fraction: f64) -> [f64; 3] {
-        let x = self.start + fraction * (self.end - self.start);
-        let w = self.speed.eval(x, Side::Right);
-        let a = self.acceleration.unwrap_or_else(|| self.slope.as_ref().map_or(0.0, |s| w * s.eval(x, Side::Right)));
-        [x, w, a]
-    }
-}
-
-fn input_range(e: &mut Errors, input: &InputDto, joint: usize, prismatic: bool, at: &str) -> Option<(Driver, Range)> {
-    let (coordinate, speed_dim, accel_dim) = if prismatic {
-        (Dim::LENGTH, Dim::SPEED, Dim::ACCELERATION)
-    } else {
-        (Dim::ANGLE, Dim::ANGULAR_SPEED, Dim::ANGULAR_ACCELERATION)
-    };
-    let value = |e: &mut Errors, q: &Option<Quantity>, name: &str| match q {
-        None => Some(None),
-        Some(q) if !prismatic => e.angle(q, &format!("{at}/{name}")).map(Some),
-        Some(q) => e.quantity(q, coordinate, &format!("{at}/{name}")).map(Some),
-    };
-    let start = value(e, &input.start, "start")?.unwrap_or(0.0);
-    let end = match value(e, &input.end, "end")? {
-        Some(v) => v,
-        None if !prismatic => start + 2.0 * PI,
-        None => return e.fail(at, "a prismatic input needs \"end\""),
-    };
-    let reference = value(e, &input.reference, "reference")?.unwrap_or(0.0);
-    let period = if prismatic { (end - start).abs().max(f64::MIN_POSITIVE) } else { 2.0 * PI };
-    let Some(speed) = &input.speed else { return e.fail(at, "\"speed\" is required") };
-    let speed = e.function(speed, speed_dim, period, &format!("{at}/speed"))?;
-    let acceleration = match &input.acceleration {
-        Some(q) => Some(e.quantity(q, accel_dim, &format!("{at}/acceleration"))?),
-        None => None,
-    };
-    let slope = speed.constant().is_none().then(|| speed.derivative());
-    Some((Driver { joint, reference }, Range { start, end, speed, slope, acceleration }))
 }

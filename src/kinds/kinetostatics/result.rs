@@ -2,6 +2,7 @@
 
 use super::request::Problem;
 use crate::engine::kinetostatics::{Motion, Reaction, Step, Totals, energy};
+use crate::engine::model::{Coordinate, Driver};
 use crate::kind::{cell, list, names};
 use crate::kinds::mechanism::track::{PointState, states};
 use crate::kinds::mechanism::{EnergyDto, Name, ReactionDto};
@@ -122,11 +123,44 @@ pub struct KinetostaticsAccuracy {
 /// A driven input: its joint and the units of its coordinate and driving action.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct InputInfo {
-    pub joint: String,
-    /// "rad" (revolute) or "m" (prismatic).
+    /// The input joint (absent for an input on a point or a body).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub joint: Option<String>,
+    /// The point whose displacement along a direction is the input.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub point: Option<String>,
+    /// The body the input's point belongs to, or whose rotation is the input.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub body: Option<String>,
+    /// The joint where the driving effort acts (the input's own joint by default).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub actuator: Option<String>,
+    /// "rad" (a revolute joint, a body) or "m" (a prismatic joint, a point).
     pub coordinate_unit: String,
-    /// "N*m" (revolute) or "N" (prismatic).
+    /// "N*m" (a torque: at a revolute joint, on a body) or "N" (a force:
+    /// along a prismatic joint, on a point).
     pub driving_unit: String,
+}
+
+impl InputInfo {
+    /// What driver `d` names and its units; `point` its point's name.
+    fn new(p: &Problem, d: &Driver, point: Option<&String>, joint_names: &[String]) -> Self {
+        let m = &p.mechanism;
+        let (joint, body) = match d.coordinate {
+            Coordinate::Joint(k) => (Some(joint_names[k].clone()), None),
+            Coordinate::Point { body, .. } | Coordinate::Body(body) => (None, Some(p.body_names[body].clone())),
+        };
+        let linear = m.is_length(d.coordinate);
+        let effort_linear = d.actuator.map_or(linear, |a| m.is_length(Coordinate::Joint(a)));
+        Self {
+            actuator: d.actuator.map(|a| joint_names[a].clone()).or_else(|| joint.clone()),
+            joint,
+            point: point.filter(|_| matches!(d.coordinate, Coordinate::Point { .. })).cloned(),
+            body,
+            coordinate_unit: if linear { "m" } else { "rad" }.into(),
+            driving_unit: if effort_linear { "N" } else { "N*m" }.into(),
+        }
+    }
 }
 
 /// Result of a kinetostatics job (SI units).
@@ -186,16 +220,8 @@ impl KinetostaticsResult {
         }
         let sum = &s.summary;
         let driving = |v: &Vec<f64>| p.outputs.driving.then(|| Scalars::of(v));
-        let inputs = p
-            .mechanism
-            .drivers
-            .iter()
-            .zip(&p.linear)
-            .map(|(d, &linear)| InputInfo {
-                joint: joint_names[d.joint].clone(),
-                coordinate_unit: if linear { "m" } else { "rad" }.into(),
-                driving_unit: if linear { "N" } else { "N*m" }.into(),
-            })
+        let inputs = (p.mechanism.drivers.iter().zip(&p.input_points))
+            .map(|(d, point)| InputInfo::new(p, d, point.as_ref(), joint_names))
             .collect();
         Self {
             inputs,

@@ -1,10 +1,11 @@
 //! The driven inputs of a mechanism (kinetostatics, a flywheel's or a
 //! dynamics job's `machine`), and the parts of a flywheel's machine.
 
-use super::MechanismDto;
 use super::loads::{LoadDto, convert_loads};
+use super::track::body_of;
+use super::{Coords, JointType, MechanismDto, PointRef, body_id};
 use crate::engine::kinetostatics::Load;
-use crate::engine::model::{Driver, JointKind, Mechanism};
+use crate::engine::model::{Coordinate, Driver, JointKind, Mechanism};
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
 use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
@@ -13,11 +14,25 @@ use utoipa::openapi::schema::{ArrayBuilder, OneOfBuilder, Schema};
 use utoipa::openapi::{Ref, RefOr};
 use utoipa::{PartialSchema, ToSchema};
 
-/// A driven joint and the range of its coordinate.
+/// An input coordinate and its range: a driven joint, or where the
+/// statement puts the motion (a point along a direction, a body's rotation).
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct InputDto {
-    /// A revolute (crank) or prismatic (linear actuator) joint.
-    pub joint: String,
+    /// A revolute (crank) or prismatic (linear actuator) joint: its relative
+    /// rotation or displacement along the axis.
+    #[schema(max_length = 100)]
+    pub joint: Option<String>,
+    /// Instead of a joint: a point of `points` whose displacement along
+    /// `direction` (a fixed direction of the ground) is the coordinate, m.
+    #[schema(max_length = 100)]
+    pub point: Option<String>,
+    /// With `point`: the direction [x, y] of its motion (any length).
+    #[schema(value_type = Option<Coords>)]
+    pub direction: Option<[f64; 2]>,
+    /// With `point`: the body it belongs to, where several hold it (a pin
+    /// in a slot). Alone: the body whose absolute rotation is the coordinate.
+    #[schema(max_length = 100)]
+    pub body: Option<String>,
     /// Speed (rad/s or m/s), or a Function of the coordinate (a motion law).
     /// Required for kinetostatics; a flywheel's machine runs at its mean speed.
     #[schema(value_type = Option<FunctionDto>)]
@@ -25,9 +40,10 @@ pub struct InputDto {
     /// Acceleration (rad/s² or m/s²); default 0, or ω·dω/dq for a motion law.
     #[schema(value_type = Option<Quantity>)]
     pub acceleration: Option<Quantity>,
-    /// First coordinate (default 0): an angle for a revolute joint, the
-    /// second body's displacement along the axis in metres for a prismatic
-    /// one (a bare number is SI: rad or m).
+    /// First coordinate (default 0): an angle for a revolute joint or a
+    /// body, the second body's displacement along the axis in metres for a
+    /// prismatic one, the point's along `direction` (a bare number is SI:
+    /// rad or m). Coordinates count from the drawn configuration plus `reference`.
     #[schema(value_type = Option<Quantity>)]
     pub start: Option<Quantity>,
     /// End of the range, excluded (default start + 2π for a revolute joint).
@@ -86,6 +102,77 @@ impl ToSchema for Inputs {
     }
 }
 
+/// What an input names, resolved (pointers under `at`): its coordinate, and
+/// whether that is a length (a prismatic joint, a point) or an angle.
+pub fn coordinate(
+    e: &mut Errors,
+    (dto, m, names): (&MechanismDto, &Mechanism, &[String]),
+    input: &InputDto,
+    at: &str,
+) -> Option<(Coordinate, bool)> {
+    let moving = |e: &mut Errors, name: &str, ptr: &str| match body_id(names, name) {
+        Some(0) => e.fail(ptr, "the ground does not move: name a moving body"),
+        Some(b) => Some(b),
+        None => e.fail(ptr, format!("unknown body '{name}'")),
+    };
+    match (&input.joint, &input.point, &input.body) {
+        (Some(joint), None, None) => {
+            let Some(k) = m.joints.iter().position(|j| &j.name == joint) else {
+                return e.fail(&format!("{at}/joint"), format!("unknown joint '{joint}'"));
+            };
+            match m.joints[k].kind {
+                JointKind::Revolute => Some((Coordinate::Joint(k), false)),
+                JointKind::Prismatic { .. } => Some((Coordinate::Joint(k), true)),
+                _ => e.fail(&format!("{at}/joint"), "an input must be a revolute or prismatic joint"),
+            }
+        }
+        (None, Some(point), body) => {
+            let direction = unit_direction(e, input.direction, &format!("{at}/direction"));
+            let Some(drawn) = dto.points.as_ref().and_then(|p| p.get(point).copied()) else {
+                return e.fail(&format!("{at}/point"), format!("unknown point '{point}'"));
+            };
+            let body = match body {
+                Some(b) => moving(e, b, &format!("{at}/body")),
+                None => body_of(dto, point, names, e, &format!("{at}/point")),
+            };
+            if body.is_some_and(|b| b == 0 || pinned_to_ground(dto, point, &names[b])) {
+                return e.fail(&format!("{at}/point"), format!("'{point}' is on the ground: it does not move"));
+            }
+            Some((Coordinate::Point { body: body?, at: drawn, direction: direction? }, true))
+        }
+        (None, None, Some(body)) => {
+            if input.direction.is_some() {
+                e.push(&format!("{at}/direction"), "belongs to a \"point\" input");
+            }
+            Some((Coordinate::Body(moving(e, body, &format!("{at}/body"))?), false))
+        }
+        (None, None, None) => {
+            e.fail(at, "name the input's \"joint\", or a \"point\" and its \"direction\", or a \"body\"")
+        }
+        _ => e.fail(at, "name one of \"joint\", \"point\" (with \"direction\") or \"body\""),
+    }
+}
+
+/// Point `point` of `body` is pinned to the ground there (a revolute joint).
+fn pinned_to_ground(dto: &MechanismDto, point: &str, body: &str) -> bool {
+    dto.joints.iter().any(|j| {
+        matches!(j.kind, JointType::Revolute)
+            && matches!(&j.at, Some(PointRef::Name(n)) if n == point)
+            && j.bodies.iter().any(|b| b == "ground")
+            && j.bodies.iter().any(|b| b == body)
+    })
+}
+
+/// A direction's unit vector (pointer `at`).
+fn unit_direction(e: &mut Errors, direction: Option<[f64; 2]>, at: &str) -> Option<[f64; 2]> {
+    let Some([x, y]) = direction else { return e.fail(at, "a \"point\" input needs its \"direction\" [x, y]") };
+    let length = x.hypot(y);
+    match length.is_finite() && length > 0.0 {
+        true => Some([x / length, y / length]),
+        false => e.fail(at, "must be a finite, non-zero [x, y]"),
+    }
+}
+
 /// The mechanism, its loads and a revolute driver for a flywheel's `machine`
 /// (pointers under `at`).
 pub fn machine_parts(
@@ -100,16 +187,21 @@ pub fn machine_parts(
     let mech = mech.as_ref();
     let c = mech.convert(e, &format!("{at}/mechanism"))?;
     let mut mechanism = c.mechanism;
-    let joint = match mechanism.joints.iter().position(|j| j.name == input.joint) {
+    if input.point.is_some() || input.body.is_some() {
+        e.push(&format!("{at}/input"), "a flywheel's input is its shaft: a revolute \"joint\"");
+    }
+    let shaft = input.joint.as_deref().unwrap_or_default();
+    let joint = match mechanism.joints.iter().position(|j| j.name == shaft) {
         Some(j) if mechanism.joints[j].kind == JointKind::Revolute => Some(j),
         Some(_) => e.fail(&format!("{at}/input/joint"), "the flywheel's shaft must be a revolute joint"),
-        None => e.fail(&format!("{at}/input/joint"), format!("unknown joint '{}'", input.joint)),
+        None if input.joint.is_none() => e.fail(&format!("{at}/input/joint"), "name the shaft, a revolute joint"),
+        None => e.fail(&format!("{at}/input/joint"), format!("unknown joint '{shaft}'")),
     };
     let reference = match &input.reference {
         Some(q) => e.angle(q, &format!("{at}/input/reference")),
         None => Some(0.0),
     };
     let loads = convert_loads(e, loads, mech, &c.body_names, period, &format!("{at}/loads"), &["phi"]);
-    mechanism.drivers = vec![Driver { joint: joint?, reference: reference? }];
+    mechanism.drivers = vec![Driver::joint(joint?, reference?)];
     Some((mechanism, loads))
 }

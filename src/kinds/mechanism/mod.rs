@@ -11,7 +11,7 @@ pub mod track;
 
 pub use dimensions::DimensionDto;
 pub use energy::EnergyDto;
-pub use inputs::{InputDto, Inputs, machine_parts};
+pub use inputs::{InputDto, Inputs, coordinate, machine_parts};
 pub use loads::{LoadDto, LoadType, MAX_LOADS, convert_loads};
 pub use reactions::{Name, ReactionDto, names};
 

@@ -111,7 +111,7 @@ pub fn resolve(dto: &MechanismDto, track: &[TrackDto], names: &[String], e: &mut
 
 /// The body a named point moves with: a moving body whose joint or centre
 /// of mass is at it; a pin in a slot (two motions) must be told which.
-fn body_of(dto: &MechanismDto, point: &str, names: &[String], e: &mut Errors, ptr: &str) -> Option<BodyId> {
+pub(super) fn body_of(dto: &MechanismDto, point: &str, names: &[String], e: &mut Errors, ptr: &str) -> Option<BodyId> {
     let named = |p: &Option<PointRef>| matches!(p, Some(PointRef::Name(n)) if n == point);
     let joints: Vec<_> = dto.joints.iter().filter(|j| named(&j.at)).collect();
     if let Some(slot) = joints.iter().find(|j| matches!(j.kind, JointType::PinSlot)) {
