@@ -46,6 +46,7 @@ fn run(n: usize, duration: f64, samples: usize, sparse: bool) -> (f64, Mechanism
         kept_bytes: KEPT_BYTES,
         deadline: Deadline::none(),
         reactions: false,
+        motion: false,
     };
     let start = Instant::now();
     let s = solve_in(&p, sparse).expect("the chain moves");

@@ -35,6 +35,7 @@ fn run(tolerance: f64, integrator: Integrator) -> (Point, usize) {
         kept_bytes: KEPT_BYTES,
         deadline: Deadline::none(),
         reactions: false,
+        motion: false,
     };
     let start = Instant::now();
     let s = solve(&p).expect("the pendulum swings");

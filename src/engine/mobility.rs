@@ -186,6 +186,7 @@ mod tests {
             bodies: b,
             at,
             friction: None,
+            length: None,
         };
         let m = Mechanism {
             bodies: vec![

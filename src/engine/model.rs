@@ -59,11 +59,16 @@ pub struct Joint {
     /// The joint's point in the reference configuration.
     pub at: [f64; 2],
     pub friction: Option<Friction>,
+    /// A prismatic joint's guide length L, centred on `at`: its reaction is
+    /// then borne as two normal forces at the guide's ends, each with its
+    /// own friction (None: one normal force).
+    pub length: Option<f64>,
 }
 
 /// Coulomb friction of a joint: a revolute joint resists with a couple
 /// μ·r·|R| (r the pin radius, R the reaction force); a prismatic or
-/// pin-in-slot joint with a force μ·|N| along the slide (N the normal reaction).
+/// pin-in-slot joint with a force μ·|N| along the slide (N the normal
+/// reaction; μ(|N₁| + |N₂|) for a guide of a given length).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Friction {
     pub mu: f64,

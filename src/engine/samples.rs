@@ -7,7 +7,7 @@ fn body(name: &str, mass: f64, inertia: f64, cg: [f64; 2]) -> Body {
 }
 
 fn joint(name: &str, kind: JointKind, bodies: [usize; 2], at: [f64; 2]) -> Joint {
-    Joint { name: name.into(), kind, bodies, at, friction: None }
+    Joint { name: name.into(), kind, bodies, at, friction: None, length: None }
 }
 
 /// The offset slider-crank of reference case K1, drawn at φ = 0: crank

@@ -105,3 +105,35 @@ async fn no_dimensions_are_the_drawing_as_drawn() {
     let without = app.post("/v1/kinetostatics", &four_bar(drawn, None)).await.json();
     assert_eq!(with.json()["result"]["steps"], without["result"]["steps"]);
 }
+
+/// The same statement in a flywheel's and a dynamics job's `machine`: each
+/// result says where the points went (B above, as sketched: 1e-12 m of the
+/// circles' intersection), and a sketch whose dimensions leave a point free
+/// (O4's y not given) is solved and says so in the dynamics job's warnings.
+#[tokio::test]
+async fn every_machine_reports_its_assembled_points() {
+    let app = TestApp::new().await;
+    let sketch = json!({"O2": [0, 0], "O4": [0.3, 0], "A": [0.04, 0.1], "B": [0.3, 0.3]});
+    let mechanism = four_bar(sketch, Some(statement()))["mechanism"].clone();
+    let input = json!({"joint": "O2", "reference": "60 deg"});
+    let torque = json!({"type": "torque", "body": "rocker", "value": {"expr": "5*sin(phi)"}});
+    let flywheel = json!({"mean_speed": "60 rpm", "irregularity": 0.04, "torques": [{"name": "motor", "balance": true}],
+        "machine": {"mechanism": mechanism, "input": input, "loads": [torque]}});
+    let dynamics = json!({"machine": {"mechanism": mechanism, "input": input}, "duration": "0.1 s", "samples": 2});
+    for (path, body, at) in [("/v1/flywheel", flywheel, ""), ("/v1/dynamics", dynamics.clone(), "/machine")] {
+        let r = app.post(path, &body).await;
+        assert_eq!(r.status, StatusCode::CREATED, "{path}: {}", r.text);
+        let points = r.json()["result"].pointer(&format!("{at}/assembled_points/B")).cloned().unwrap();
+        let expected = b(true);
+        for k in 0..2 {
+            let got = points[k].as_f64().unwrap();
+            assert!((got - expected[k]).abs() < 1e-12, "{path}: B[{k}] {got} against {}", expected[k]);
+        }
+    }
+    let mut loose = dynamics;
+    loose["machine"]["mechanism"]["dimensions"].as_array_mut().unwrap().pop();
+    let r = app.post("/v1/dynamics", &loose).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let warnings = r.json()["result"]["warnings"].to_string();
+    assert!(warnings.contains("free to move"), "{warnings}");
+}

@@ -50,7 +50,8 @@ async fn the_scissor_lift_driven_by_its_platform_needs_the_printed_piston_force(
 /// the vertical, the slider at v and the bar turning at ω — two inputs, the
 /// slider's joint and the bar's rotation. The printed T = ½mv² + ⅔mω²L² −
 /// (√3/2)mvωL, at the template's defaults (m = 1 kg, L = 0.5 m, v = 1 m/s,
-/// ω = 2 rad/s) and at v = −0.5 m/s, ω = 3 rad/s (1e-12 relative).
+/// ω = 2 rad/s) and at v = −0.5 m/s, ω = 3 rad/s (1e-12 relative). The
+/// massless slider, drawn without a centre of mass, reports its rotation only.
 #[tokio::test]
 async fn the_bar_on_a_slider_has_the_printed_kinetic_energy() {
     let app = TestApp::new().await;
@@ -61,6 +62,9 @@ async fn the_bar_on_a_slider_has_the_printed_kinetic_energy() {
     let result = r.json()["result"].clone();
     close(&result["steps"][0]["energy"]["kinetic"]["bodies"]["bar"], printed(1.0, 2.0), 1e-12, "T of the bar");
     close(&result["steps"][0]["kinematics"][1]["omega"], 2.0, 1e-12, "the bar turns at ω");
+    let slider = &result["steps"][0]["kinematics"][0];
+    assert!(["x", "y", "vx", "vy", "ax", "ay"].iter().all(|f| slider[f].is_null()), "no centre of mass: {slider}");
+    assert_eq!((&slider["theta"], &slider["omega"]), (&json!(0.0), &json!(0.0)), "its rotation only");
     assert_eq!(result["inputs"][1]["body"], "bar");
     assert_eq!(result["inputs"][1]["coordinate_unit"], "rad");
     let other = value(&app, "bar-on-slider", "steps/0/energy/kinetic/total", "v=-0.5&omega=3").await;

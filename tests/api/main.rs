@@ -20,6 +20,7 @@ mod fuzz;
 mod gears;
 mod grading;
 mod group_commit;
+mod guide;
 mod helpers;
 mod inputs;
 mod jobs;

@@ -82,3 +82,48 @@ async fn tracking_errors_point_at_the_field() {
     let r = app.post("/v1/kinetostatics", &bare).await;
     assert_eq!(r.json()["errors"][0]["pointer"], "/outputs", "{}", r.text);
 }
+
+/// A dynamics machine follows points too: a pendulum (a 1 kg bob at the
+/// end of a massless 0.8 m rod, drawn hanging, released at 50°) tracks its
+/// tip P, which moves as l(sin θ, −cos θ) with θ the pivot's reported
+/// angle: v = lθ̇(cos θ, sin θ), a = lθ̈(cos θ, sin θ) + lθ̇²(−sin θ, cos θ)
+/// (1e-9 of lθ̇², lθ̈ scales, from the same sample's θ, θ̇, θ̈).
+#[tokio::test]
+async fn a_dynamics_machine_reports_its_tracked_points() {
+    let app = TestApp::new().await;
+    let l = 0.8;
+    let body = json!({
+        "machine": {
+            "mechanism": {
+                "points": {"O": [0, 0], "P": [0, -l]},
+                "bodies": [{"name": "rod", "mass": 1, "cg": "P"}],
+                "joints": [{"name": "O", "type": "revolute", "bodies": ["ground", "rod"], "at": "O"}],
+                "gravity": [0, -9.81]
+            },
+            "input": {"joint": "O", "start": "50 deg"},
+            "track": [{"name": "P", "body": "rod"}]
+        },
+        "duration": "1 s", "tolerance": 1e-10, "samples": 11
+    });
+    let r = app.post("/v1/dynamics", &body).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let scale = 2.0 * 9.81;
+    for s in r.json()["result"]["machine"]["samples"].as_array().unwrap() {
+        let (theta, w, alpha) =
+            (f(&s["inputs"][0]["angle"]), f(&s["inputs"][0]["speed"]), f(&s["inputs"][0]["acceleration"]));
+        let (sn, c) = theta.sin_cos();
+        let p = &s["points"][0];
+        assert_eq!((p["name"].as_str(), p["body"].as_str()), (Some("P"), Some("rod")));
+        let expected = [
+            ("x", l * sn),
+            ("y", -l * c),
+            ("vx", l * w * c),
+            ("vy", l * w * sn),
+            ("ax", l * alpha * c - l * w * w * sn),
+            ("ay", l * alpha * sn + l * w * w * c),
+        ];
+        for (key, want) in expected {
+            assert!((f(&p[key]) - want).abs() < 1e-9 * scale, "{key} at t = {}: {} vs {want}", s["t"], p[key]);
+        }
+    }
+}

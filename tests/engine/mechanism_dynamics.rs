@@ -36,6 +36,7 @@ fn problem(mechanism: Mechanism, loads: Vec<Load>, initial: Vec<[f64; 2]>, end: 
         kept_bytes: KEPT_BYTES,
         deadline: Deadline::none(),
         reactions: true,
+        motion: false,
     }
 }
 
@@ -250,6 +251,7 @@ fn pendulum() -> Mechanism {
             bodies: [0, 1],
             at: [0.0, 0.0],
             friction: None,
+            length: None,
         }],
         drivers: vec![Driver::joint(0, 0.0)],
         gravity: [0.0, -9.81],
@@ -275,6 +277,7 @@ fn double_pendulum_matches_its_lagrange_equations() {
         bodies,
         at: [x, 0.0],
         friction: None,
+        length: None,
     };
     let m = Mechanism {
         bodies: vec![point("ground", 0.0, 0.0), point("m1", m1, l1), point("m2", m2, l1 + l2)],
@@ -352,6 +355,7 @@ fn a_start_whose_motions_move_no_mass_is_refused_at_once() {
         bodies,
         at,
         friction: None,
+        length: None,
     };
     let m = Mechanism {
         bodies: vec![body("ground", 0.0, [0.0, 0.0]), body("arm", 0.0, [0.5, 0.0]), body("bob", 1.0, [2.0, 0.0])],

@@ -27,6 +27,7 @@ fn problem(mechanism: Mechanism, loads: Vec<Load>, duration: f64) -> MechanismPr
         kept_bytes: KEPT_BYTES,
         deadline: Deadline::none(),
         reactions: false,
+        motion: false,
     }
 }
 

@@ -25,7 +25,7 @@ use super::{DynamicsError, DynamicsSolution, End, Integrator, Sample, Settings, 
 use crate::engine::Deadline;
 use crate::engine::constraints::{State, evaluate, evaluate_blocks, joint_offsets};
 use crate::engine::kinematics::sweep;
-use crate::engine::kinetostatics::{self, Energy, Load, Reaction, potential, reactions};
+use crate::engine::kinetostatics::{self, Energy, Load, Motion, Reaction, potential, reactions};
 use crate::engine::mobility::{Mobility, mobility};
 use crate::engine::model::Mechanism;
 use equations::{Equations, kinetic, masses};
@@ -57,6 +57,8 @@ pub struct MechanismProblem {
     pub deadline: Deadline,
     /// Compute the joint reactions at the samples.
     pub reactions: bool,
+    /// Keep q, q̇ and q̈ at the samples (for the motion of any point).
+    pub motion: bool,
 }
 
 /// The mechanism at one sample.
@@ -71,6 +73,8 @@ pub struct MechanismSample {
     pub constraint_residual: f64,
     /// The kinetic energy of every body and the potential of gravity and the springs.
     pub energy: Energy,
+    /// q, q̇ and q̈, where the problem asks for the motion.
+    pub motion: Option<Motion>,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -307,5 +311,13 @@ fn sample(dae: &Equations, mobility: &Mobility, t: f64, y: &[f64]) -> Result<Mec
     };
     let poses = q.chunks_exact(3).map(|b| [b[0], b[1], b[2]]).collect();
     let energy = kinetostatics::energy(&dae.p.mechanism, &dae.p.loads, q, qd);
-    Ok(MechanismSample { inputs: motion.inputs, poses, reactions, constraint_residual: motion.residual, energy })
+    let kept = dae.p.motion.then(|| Motion { q: q.to_vec(), qd: qd.to_vec(), qdd: motion.qdd.clone() });
+    Ok(MechanismSample {
+        inputs: motion.inputs,
+        poses,
+        reactions,
+        constraint_residual: motion.residual,
+        energy,
+        motion: kept,
+    })
 }

@@ -11,7 +11,7 @@ use super::{Motion, Outputs, Reaction, Step, friction, mass_times};
 use crate::engine::EngineError;
 use crate::engine::kinematics::{Configuration, solve_linear};
 use crate::engine::mobility::Mobility;
-use crate::engine::model::{BodyId, JointKind, Mechanism, Pitch, cross, perp, rotate_by};
+use crate::engine::model::{BodyId, JointKind, Mechanism, Pitch, cross, dot, perp, rotate_by};
 use nalgebra::{DMatrix, DVector};
 
 /// The vectors of one position's actions, kept for the next: Q, M q̈ − Q,
@@ -262,9 +262,17 @@ fn reactions_into(
         let determinate = !indeterminate.contains(&k);
         if let JointKind::Gear { pitch: Some(pitch), .. } = &joint.kind {
             let [tx, ty] = tooth_force(m, q, [i, j], pitch, sign * moment);
-            return Reaction { joint: k, on: j, by: i, fx: tx, fy: ty, moment: 0.0, determinate };
+            return Reaction { joint: k, on: j, by: i, fx: tx, fy: ty, moment: 0.0, ends: None, determinate };
         }
-        Reaction { joint: k, on: j, by: i, fx: sign * fx, fy: sign * fy, moment: sign * moment, determinate }
+        let [fx, fy, moment] = [sign * fx, sign * fy, sign * moment];
+        let ends = match (&joint.kind, joint.length) {
+            (JointKind::Prismatic { axis }, Some(length)) => {
+                let normal = dot(perp(rotate_by(trig[i], *axis)), [fx, fy]);
+                Some([normal / 2.0 - moment / length, normal / 2.0 + moment / length])
+            }
+            _ => None,
+        };
+        Reaction { joint: k, on: j, by: i, fx, fy, moment, ends, determinate }
     }));
 }
 

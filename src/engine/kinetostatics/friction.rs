@@ -8,7 +8,10 @@
 //!
 //! Revolute: couple −μ·r·|R|·sign(ω₂ − ω₁) on the second body (and its
 //! opposite on the first). Prismatic and pin-in-slot: force −μ·|N|·sign(v)
-//! along the slide at the joint point, v the sliding speed of the second body.
+//! along the slide at the joint point, v the sliding speed of the second body;
+//! a guide of length L bears N as N₁ and N₂ at its ends (N₁ + N₂ = N,
+//! (L/2)(N₂ − N₁) = the couple M), each with its friction: −μ(|N₁| + |N₂|)·sign(v),
+//! whose moment about the joint point is nil (both act along the axis).
 //! Where the joint does not move (sign 0) there is no friction (static
 //! friction is not determined by kinetostatics). The reported reaction of a
 //! joint is λ's (normal) part plus its friction ([`add_to`]): every body's
@@ -91,7 +94,7 @@ fn actions<'a>(
             }
             JointKind::Prismatic { axis } | JointKind::PinSlot { axis } => {
                 let u = rotate(pose(i).0, axis);
-                let normal = dot(perp(u), [r.fx, r.fy]).abs();
+                let normal = r.ends.map_or(dot(perp(u), [r.fx, r.fy]).abs(), |[n1, n2]| n1.abs() + n2.abs());
                 let (vj, vi) = (velocity(j, joint.at), velocity(i, joint.at));
                 let slide = sign(dot(u, [vj[0] - vi[0], vj[1] - vi[1]]));
                 Some((r.joint, [-f.mu * normal * slide * u[0], -f.mu * normal * slide * u[1]], 0.0))

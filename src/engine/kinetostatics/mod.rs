@@ -60,6 +60,9 @@ pub struct Reaction {
     pub fx: f64,
     pub fy: f64,
     pub moment: f64,
+    /// A guide of a given length: the normal forces N₁ at its end at − u·L/2
+    /// and N₂ at at + u·L/2 (u the axis), along perp(u), on the second body.
+    pub ends: Option<[f64; 2]>,
     /// False when redundant constraints leave this reaction undetermined
     /// (the values are then one of many equilibrium solutions).
     pub determinate: bool,

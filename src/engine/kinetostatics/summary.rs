@@ -120,7 +120,8 @@ mod tests {
     use crate::engine::kinetostatics::Reaction;
 
     fn step(input: f64, driving: [f64; 2], virtual_power: [f64; 2], determinate: bool, condition: f64) -> Step {
-        let reaction = |fx: f64, fy: f64| Reaction { joint: 0, on: 1, by: 0, fx, fy, moment: 0.0, determinate };
+        let reaction =
+            |fx: f64, fy: f64| Reaction { joint: 0, on: 1, by: 0, fx, fy, moment: 0.0, ends: None, determinate };
         Step {
             input: vec![input],
             driving: driving.to_vec(),

@@ -4,12 +4,15 @@
 use super::Initial;
 use crate::engine::dynamics::mechanism::MechanismSolution;
 use crate::engine::kinetostatics::Load;
+use crate::engine::kinetostatics::Motion;
 use crate::engine::model::{Driver, Mechanism};
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
+use crate::kinds::mechanism::track::{PointState, TrackDto, Tracked, resolve, states};
+use crate::kinds::mechanism::{Assembled, MechanismDto, coordinate};
 use crate::kinds::mechanism::{EnergyDto, InputDto, Inputs, LoadDto, Name, ReactionDto, convert_loads, names};
-use crate::kinds::mechanism::{MechanismDto, coordinate};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 use utoipa::ToSchema;
 
 /// A mechanism with free input joints, and its loads.
@@ -29,6 +32,10 @@ pub struct DynamicsMachine {
     /// Joint friction is not supported in dynamics.
     #[schema(max_items = 500)]
     pub loads: Option<Vec<LoadDto>>,
+    /// Points to follow, as in kinetostatics: each sample then has their
+    /// `points` (position, velocity, acceleration).
+    #[schema(max_items = 100)]
+    pub track: Option<Vec<TrackDto>>,
     /// Report the joint reactions at every sample (default true).
     pub reactions: Option<bool>,
     /// Hold the energy T + V to its initial value after every step (the
@@ -40,13 +47,21 @@ pub struct DynamicsMachine {
     pub conserve_energy: Option<bool>,
 }
 
-/// The converted machine: model, loads, initial state and names.
+/// The converted machine: model, loads, initial state, and what its result reports.
 pub(super) struct Parts {
     pub mechanism: Mechanism,
     pub loads: Vec<Load>,
     pub initial: Vec<[f64; 2]>,
+    pub report: Report,
+}
+
+/// What a machine's result says beside the engine's solution: the names,
+/// where the dimensions put the points, the points followed.
+pub(super) struct Report {
     pub joint_names: Vec<String>,
     pub body_names: Vec<String>,
+    pub assembled: Option<Assembled>,
+    pub tracked: Vec<Tracked>,
 }
 
 /// Refuses `conserve_energy: true` with a load that has no potential.
@@ -67,8 +82,9 @@ fn check_energy(e: &mut Errors, asked: Option<bool>, loads: &[Load]) {
 
 impl DynamicsMachine {
     pub(super) fn convert(&self, e: &mut Errors, initial: Option<&Initial>, period: f64) -> Option<Parts> {
-        let (dto, _) = self.mechanism.assembled(e, "/machine/mechanism")?;
+        let (dto, warnings) = self.mechanism.assembled(e, "/machine/mechanism")?;
         let dto = dto.as_ref();
+        let assembled = Assembled::of(&self.mechanism, dto, warnings);
         let c = dto.convert(e, "/machine/mechanism")?;
         let mut mechanism = c.mechanism;
         for (k, j) in mechanism.joints.iter().enumerate() {
@@ -102,8 +118,10 @@ impl DynamicsMachine {
         if e.list.is_empty() {
             check_energy(e, self.conserve_energy, &loads);
         }
+        let tracked = resolve(dto, self.track.as_deref().unwrap_or_default(), &c.body_names, e, "/machine/track");
         let joint_names = mechanism.joints.iter().map(|j| j.name.clone()).collect();
-        e.list.is_empty().then_some(Parts { mechanism, loads, initial: states, joint_names, body_names: c.body_names })
+        let report = Report { joint_names, body_names: c.body_names, assembled, tracked };
+        e.list.is_empty().then_some(Parts { mechanism, loads, initial: states, report })
     }
 }
 
@@ -186,6 +204,9 @@ pub struct MachineSample {
     /// Largest |Φ| of the joint constraints at the sample, m or rad.
     pub constraint_residual: f64,
     pub energy: EnergyDto,
+    /// The points of `track`, where given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub points: Option<Vec<PointState>>,
 }
 
 /// What the mechanism form adds to a dynamics result.
@@ -206,11 +227,17 @@ pub struct MachineDynamics {
     /// "m" (a prismatic joint, a point); speeds and accelerations per second.
     pub input_units: Vec<String>,
     pub samples: Vec<MachineSample>,
+    /// Where the points went, for a mechanism given by its `dimensions` (m).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schema(value_type = Option<BTreeMap<String, Vec<f64>>>)]
+    pub assembled_points: Option<BTreeMap<String, [f64; 2]>>,
 }
 
 impl MachineDynamics {
-    pub(super) fn new(s: &MechanismSolution, m: &Mechanism, joint_names: &[String], body_names: &[String]) -> Self {
-        let (joint_names, body_names) = (&names(joint_names), &names(body_names));
+    pub(super) fn new(s: &MechanismSolution, m: &Mechanism, report: Report) -> Self {
+        let (joint_names, body_names) = (&names(&report.joint_names), &names(&report.body_names));
+        let points =
+            |motion: &Option<Motion>| motion.as_ref().map(|k| states(m, &report.tracked, [&k.q, &k.qd, &k.qdd]));
         let samples = s
             .details
             .iter()
@@ -235,12 +262,14 @@ impl MachineDynamics {
                 reactions: d.reactions.iter().map(|r| ReactionDto::new(r, joint_names, body_names)).collect(),
                 constraint_residual: d.constraint_residual,
                 energy: EnergyDto::new(d.energy.clone(), body_names),
+                points: points(&d.motion),
             })
             .collect();
         Self {
             dof: s.mobility.dof,
             redundant_constraints: s.mobility.redundant_constraints,
             near_singular: s.near_singular.clone(),
+            assembled_points: report.assembled.map(|a| a.points),
             input_units: m.drivers.iter().map(|d| if m.is_length(d.coordinate) { "m" } else { "rad" }.into()).collect(),
             samples,
         }

@@ -17,6 +17,7 @@ use crate::kind::quantity::{Errors, FunctionDto, Quantity};
 use crate::kind::validated;
 use crate::kind::{Kind, Table, unit_in};
 use crate::units::Dim;
+use machine::Report;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use std::f64::consts::PI;
@@ -182,9 +183,17 @@ impl Kind for Dynamics {
         ("/machine/samples/*/inputs/*/angle", "rad"),
         ("/machine/samples/*/inputs/*/speed", "rad/s"),
         ("/machine/samples/*/inputs/*/acceleration", "rad/s^2"),
+        ("/machine/samples/*/points/*/x", "m"),
+        ("/machine/samples/*/points/*/y", "m"),
+        ("/machine/samples/*/points/*/vx", "m/s"),
+        ("/machine/samples/*/points/*/vy", "m/s"),
+        ("/machine/samples/*/points/*/ax", "m/s^2"),
+        ("/machine/samples/*/points/*/ay", "m/s^2"),
+        ("/machine/assembled_points/*/*", "m"),
         ("/machine/samples/*/reactions/*/fx", "N"),
         ("/machine/samples/*/reactions/*/fy", "N"),
         ("/machine/samples/*/reactions/*/moment", "N*m"),
+        ("/machine/samples/*/reactions/*/ends/*", "N"),
         ("/machine/samples/*/t", "s"),
         ("/samples/*/acceleration", "rad/s^2"),
         ("/samples/*/angle", "rad"),
@@ -233,7 +242,7 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
             let dopri5 = p.integrator.unwrap_or_else(|| Integrator::auto(p.tolerance, true)) == Integrator::Dopri5;
             Ok(request.in_its_words(DynamicsResult::from(solve(&p).map_err(|e| invalid(e, dopri5))?)))
         }
-        Problem::Machine(p, joints, bodies) => {
+        Problem::Machine(p, report) => {
             let dopri5 = p.integrator.unwrap_or_else(|| Integrator::auto(p.tolerance, false)) == Integrator::Dopri5;
             let s = mechanism::solve(&p).map_err(|e| invalid(e, dopri5))?;
             let mut result = request.in_its_words(DynamicsResult::from(s.solution.clone()));
@@ -275,7 +284,10 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
                     s.near_singular.len()
                 ));
             }
-            result.machine = Some(MachineDynamics::new(&s, &p.mechanism, &joints, &bodies));
+            if let Some(a) = &report.assembled {
+                result.warnings.extend(a.warnings.iter().cloned());
+            }
+            result.machine = Some(MachineDynamics::new(&s, &p.mechanism, report));
             Ok(result)
         }
     }
@@ -301,7 +313,8 @@ fn invalid(e: DynamicsError, dopri5: bool) -> ApiError {
 enum Problem {
     Reduced(ReducedProblem),
     /// With the joint and body names.
-    Machine(MechanismProblem, Vec<String>, Vec<String>),
+    /// The mechanism problem, and what its result reports beside the solution.
+    Machine(MechanismProblem, Report),
 }
 
 /// The settings both forms share, validated (defaults stand in for invalid
@@ -447,8 +460,9 @@ impl DynamicsRequest {
             kept_bytes: KEPT_BYTES,
             deadline: c.deadline,
             reactions: m.reactions.unwrap_or(true),
+            motion: !parts.report.tracked.is_empty(),
         };
-        Some(Problem::Machine(problem, parts.joint_names, parts.body_names))
+        Some(Problem::Machine(problem, parts.report))
     }
 
     fn end(&self, e: &mut Errors, angle0: f64) -> Option<End> {

@@ -14,8 +14,10 @@ use crate::engine::flywheel::solve;
 use crate::kind::limits::Limits;
 use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
+use crate::kind::quantity::Errors;
 use crate::kind::{Kind, Table};
 use crate::kind::{engine_failure, validated};
+use crate::kinds::mechanism::Assembled;
 use serde_json::Value;
 
 /// Flywheel: `POST /v1/flywheel`.
@@ -29,6 +31,7 @@ impl Kind for Flywheel {
     const SUMMARY: &'static str = "Designs a flywheel: balance torque, lobes of M*, energy fluctuation, and the inertia by the approximate and the exact (Wittenbauer) method, checked by a time simulation.";
     const UNITS: &'static [(&'static str, &'static str)] = &[
         ("/accuracy/check_relative_difference", "1"),
+        ("/assembled_points/*/*", "m"),
         ("/accuracy/estimated_relative_error", "1"),
         ("/accuracy/function_evaluations", "1"),
         ("/accuracy/quadrature_error", "J"),
@@ -92,5 +95,15 @@ fn compute(request: &FlywheelRequest, unknown: Vec<FieldError>, limits: &Limits)
         false => e,
     })?;
     let solution = solve(&p).map_err(|e| engine_failure(e, "/torques"))?;
-    Ok(FlywheelResult::new(solution, p.torques.iter().map(|t| t.name.clone())))
+    let mut result = FlywheelResult::new(solution, p.torques.iter().map(|t| t.name.clone()));
+    // Where a machine's dimensions put its points: the sketch solved again
+    // (microseconds) rather than carried through the engine's problem.
+    if let Some(m) = request.machine.as_ref().filter(|m| m.mechanism.dimensions.is_some())
+        && let Some((dto, warnings)) = m.mechanism.assembled(&mut Errors::new(limits), "/machine/mechanism")
+        && let Some(a) = Assembled::of(&m.mechanism, &dto, warnings)
+    {
+        result.warnings.extend(a.warnings);
+        result.assembled_points = Some(a.points);
+    }
+    Ok(result)
 }

@@ -2,6 +2,7 @@
 
 use crate::engine::flywheel as fw;
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 use utoipa::ToSchema;
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
@@ -116,6 +117,10 @@ pub struct FlywheelResult {
     pub accuracy: AccuracyDto,
     pub warnings: Vec<String>,
     pub samples: Vec<SampleDto>,
+    /// Where a machine's points went, for a mechanism given by its `dimensions` (m).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schema(value_type = Option<BTreeMap<String, Vec<f64>>>)]
+    pub assembled_points: Option<BTreeMap<String, [f64; 2]>>,
 }
 
 impl crate::kind::JobResult for FlywheelResult {
@@ -173,6 +178,7 @@ impl FlywheelResult {
                 method: s.accuracy.method,
             },
             warnings: s.warnings,
+            assembled_points: None,
             samples: s
                 .samples
                 .iter()

@@ -9,9 +9,8 @@ use crate::kind::limits::Limits;
 use crate::kind::problem::FieldError;
 use crate::kind::quantity::{Errors, Quantity};
 use crate::kinds::mechanism::track::{TrackDto, Tracked, resolve};
-use crate::kinds::mechanism::{Inputs, LoadDto, MechanismDto, convert_loads};
+use crate::kinds::mechanism::{Assembled, Inputs, LoadDto, MechanismDto, convert_loads};
 use serde::{Deserialize, Serialize};
-use std::collections::BTreeMap;
 use std::f64::consts::PI;
 use utoipa::ToSchema;
 
@@ -86,12 +85,6 @@ pub enum OutputKind {
     Points,
 }
 
-/// Where a mechanism's dimensions put its points, and what they said.
-pub struct Assembled {
-    pub points: BTreeMap<String, [f64; 2]>,
-    pub warnings: Vec<String>,
-}
-
 /// The validated problem, ready for the engine.
 pub struct Problem {
     pub mechanism: Mechanism,
@@ -103,6 +96,8 @@ pub struct Problem {
     pub linear: Vec<bool>,
     /// Per input: the point it names, if any.
     pub input_points: Vec<Option<String>>,
+    /// Per moving body: it has a centre of mass to report (a `cg`, or mass).
+    pub centred: Vec<bool>,
     /// Each step's energies (the engine keeps the motion for them).
     pub energy: bool,
     /// The points followed at every step.
@@ -175,13 +170,10 @@ impl KinetostaticsRequest {
             },
             linear,
             input_points: inputs.iter().map(|i| i.point.clone()).collect(),
+            centred: dto.bodies.iter().map(|b| b.cg.is_some()).collect(),
             energy: outputs.contains(&OutputKind::Energy),
             tracked,
-            assembled: self
-                .mechanism
-                .dimensions
-                .is_some()
-                .then(|| Assembled { points: dto.points.clone().unwrap_or_default(), warnings }),
+            assembled: Assembled::of(&self.mechanism, dto, warnings),
             kinematics: outputs.contains(&OutputKind::Kinematics),
             written,
         })

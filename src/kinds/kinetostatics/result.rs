@@ -35,20 +35,22 @@ pub struct GrublerDto {
     pub unknowns: i64,
 }
 
-/// Position, velocity and acceleration of a body's centre of mass and rotation.
+/// Position, velocity and acceleration of a body's centre of mass and
+/// rotation. A massless body drawn without `cg` has no centre of mass:
+/// its x, y, v and a are null (`track` follows any of its points).
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct BodyMotion {
     #[schema(value_type = String)]
     pub body: Name,
-    pub x: f64,
-    pub y: f64,
+    pub x: Option<f64>,
+    pub y: Option<f64>,
     /// Rotation from the drawn configuration, rad.
     pub theta: f64,
-    pub vx: f64,
-    pub vy: f64,
+    pub vx: Option<f64>,
+    pub vy: Option<f64>,
     pub omega: f64,
-    pub ax: f64,
-    pub ay: f64,
+    pub ax: Option<f64>,
+    pub ay: Option<f64>,
     pub alpha: f64,
 }
 
@@ -278,7 +280,7 @@ impl StepDto {
                 .map(|v| names[1..].iter().cloned().zip(v.iter().copied()).collect()),
             jacobian_condition: s.condition,
             singular: s.singular,
-            kinematics: s.kinematics.as_ref().filter(|_| p.kinematics).map(|m| motion(m, names)),
+            kinematics: s.kinematics.as_ref().filter(|_| p.kinematics).map(|m| motion(m, names, &p.centred)),
             energy: s
                 .kinematics
                 .as_ref()
@@ -293,20 +295,23 @@ impl StepDto {
     }
 }
 
-fn motion(m: &Motion, names: &[Name]) -> Vec<BodyMotion> {
+/// Every moving body's motion; `centred[b]` says whether moving body b has
+/// a centre of mass to report.
+fn motion(m: &Motion, names: &[Name], centred: &[bool]) -> Vec<BodyMotion> {
     (0..m.q.len() / 3)
         .map(|b| {
             let c = 3 * b;
+            let at = |v: &[f64], k: usize| centred[b].then_some(v[c + k]);
             BodyMotion {
                 body: names[b + 1].clone(),
-                x: m.q[c],
-                y: m.q[c + 1],
+                x: at(&m.q, 0),
+                y: at(&m.q, 1),
                 theta: m.q[c + 2],
-                vx: m.qd[c],
-                vy: m.qd[c + 1],
+                vx: at(&m.qd, 0),
+                vy: at(&m.qd, 1),
                 omega: m.qd[c + 2],
-                ax: m.qdd[c],
-                ay: m.qdd[c + 1],
+                ax: at(&m.qdd, 0),
+                ay: at(&m.qdd, 1),
                 alpha: m.qdd[c + 2],
             }
         })

@@ -32,6 +32,21 @@ pub struct DimensionDto {
     pub value: Quantity,
 }
 
+/// Where a mechanism's dimensions put its points, and what they said.
+#[derive(Clone, Debug)]
+pub struct Assembled {
+    pub points: BTreeMap<String, [f64; 2]>,
+    pub warnings: Vec<String>,
+}
+
+impl Assembled {
+    /// For a result: what [`MechanismDto::assembled`] made of `given`
+    /// (`dto`, its `warnings`); None for a mechanism without dimensions.
+    pub fn of(given: &MechanismDto, dto: &MechanismDto, warnings: Vec<String>) -> Option<Self> {
+        given.dimensions.is_some().then(|| Self { points: dto.points.clone().unwrap_or_default(), warnings })
+    }
+}
+
 impl MechanismDto {
     /// The mechanism to work on: itself without `dimensions`, else a copy
     /// with its points assembled from them and the warnings that says

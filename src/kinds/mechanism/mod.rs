@@ -9,7 +9,7 @@ mod loads;
 mod reactions;
 pub mod track;
 
-pub use dimensions::DimensionDto;
+pub use dimensions::{Assembled, DimensionDto};
 pub use energy::EnergyDto;
 pub use inputs::{InputDto, Inputs, coordinate, machine_parts};
 pub use loads::{LoadDto, LoadType, MAX_LOADS, convert_loads};
@@ -173,6 +173,11 @@ pub struct JointDto {
     pub pressure_angle: Option<Quantity>,
     /// Coulomb friction: {"mu", "radius"} on a revolute joint, {"mu"} on a prismatic or pin-in-slot joint.
     pub friction: Option<FrictionDto>,
+    /// A prismatic joint's guide length, centred on `at`: the reaction is
+    /// borne as two normal forces at its ends (the reaction's `ends`), each
+    /// with its own friction μ|N₁| + μ|N₂|.
+    #[schema(value_type = Option<Quantity>)]
+    pub length: Option<Quantity>,
 }
 
 /// Coulomb friction of a joint.
@@ -287,7 +292,8 @@ impl MechanismDto {
             let kind = joint_kind(e, j, &names, &ptr);
             if let (Some(b0), Some(b1), Some(at_point), Some(kind)) = (b0, b1, at_point, kind) {
                 let friction = friction(e, j, &ptr);
-                joints.push(Joint { name: j.name.clone(), kind, bodies: [b0, b1], at: at_point, friction });
+                let length = guide_length(e, j, &ptr);
+                joints.push(Joint { name: j.name.clone(), kind, bodies: [b0, b1], at: at_point, friction, length });
             }
         }
         for (k, j) in self.joints.iter().enumerate() {
@@ -357,6 +363,15 @@ impl MechanismDto {
             Some(PointRef::Name(n)) => points.get(n).copied(),
             None => None,
         })
+    }
+}
+
+/// A prismatic joint's guide length (> 0), checked against its type.
+fn guide_length(e: &mut Errors, j: &JointDto, at: &str) -> Option<f64> {
+    let length = j.length.as_ref()?;
+    match j.kind {
+        JointType::Prismatic => e.positive(length, Dim::LENGTH, &format!("{at}/length")),
+        _ => e.fail(&format!("{at}/length"), "applies to prismatic joints only (a guide's length)"),
     }
 }
 

@@ -29,6 +29,10 @@ pub struct ReactionDto {
     pub fx: Option<f64>,
     pub fy: Option<f64>,
     pub moment: Option<f64>,
+    /// A prismatic joint with a `length`: the normal forces N₁, N₂ at the
+    /// guide's ends (at − L/2 and at + L/2 along the axis), N, on `on`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ends: Option<[f64; 2]>,
     pub determinate: bool,
 }
 
@@ -43,6 +47,7 @@ impl ReactionDto {
             fx: v(r.fx),
             fy: v(r.fy),
             moment: v(r.moment),
+            ends: r.ends.filter(|_| r.determinate),
             determinate: r.determinate,
         }
     }
