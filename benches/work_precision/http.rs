@@ -117,6 +117,12 @@ fn millis(v: &str) -> f64 {
     number.parse::<f64>().map_or(f64::NAN, |x| x * scale)
 }
 
+/// A built-in template's request (`library/NAME.json`).
+pub fn library(name: &str) -> Value {
+    let path = format!("{}/library/{name}.json", env!("CARGO_MANIFEST_DIR"));
+    serde_json::from_str::<Value>(&std::fs::read_to_string(path).expect("template")).expect("JSON")["request"].clone()
+}
+
 /// The jobs sent: what each exercises, its path and body.
 fn jobs() -> Vec<(&'static str, &'static str, Value)> {
     let mut light = fixture("requests/p103_slider.json");
@@ -129,6 +135,7 @@ fn jobs() -> Vec<(&'static str, &'static str, Value)> {
         ("flywheel F1, exact inertia only", "/v1/flywheel", light),
         ("flywheel F1, defaults (check, 361-row table)", "/v1/flywheel", fixture("requests/p103_slider.json")),
         ("kinetostatics K1, 360 steps, every reaction", "/v1/kinetostatics", k1),
+        ("kinetostatics, one instant: seed 002's scissor lift as stated", "/v1/kinetostatics", library("scissor-lift")),
         (
             "GET of a template's number, parameters asked before (the stored job: nothing computed)",
             "/v1/templates/p103-slider-flywheel/result/inertia_exact?F=1200&eps=0.03",

@@ -23,6 +23,7 @@ mod kinetostatics;
 mod large;
 mod pendulum;
 mod slider_crank;
+mod statements;
 mod stiff;
 
 use mechdyn::kind::Kind;
@@ -219,9 +220,9 @@ type Section = fn() -> String;
 
 fn main() {
     // `cargo bench --bench work_precision -- grading` (or large, flywheel, http, kinetostatics,
-    // kinematics, stiff): that section alone, printed, docs/ left as they are (the flywheel's plot in the
+    // kinematics, stiff, statements): that section alone, printed, docs/ left as they are (the flywheel's plot in the
     // temporary folder).
-    let alone: [(&str, Section); 7] = [
+    let alone: [(&str, Section); 8] = [
         ("kinematics", kinematics::section),
         ("stiff", stiff::section),
         ("grading", grading::section),
@@ -229,6 +230,7 @@ fn main() {
         ("large", large::section),
         ("flywheel", || flywheel::section(&std::env::temp_dir().to_string_lossy())),
         ("http", http::section),
+        ("statements", statements::section),
     ];
     if let Some((_, section)) = alone.iter().find(|(name, _)| std::env::args().any(|a| a == *name)) {
         print!("{}", section());
@@ -332,7 +334,9 @@ fn write_docs() {
     let (text, slider_crank) = slider_crank::section();
     doc.push_str(&text);
     points.extend(slider_crank);
-    for section in [large::section(), stiff::section(), kinetostatics, kinematics, flywheel, http, grading] {
+    let statements = statements::section();
+    for section in [large::section(), stiff::section(), kinetostatics, kinematics, statements, flywheel, http, grading]
+    {
         doc.push('\n');
         doc.push_str(&section);
     }

@@ -78,8 +78,9 @@ async fn pointers(app: &TestApp, body: &Value) -> Vec<String> {
     r.json()["errors"].as_array().unwrap().iter().map(|e| e["pointer"].as_str().unwrap().to_string()).collect()
 }
 
-/// Inputs that cannot be: each a 422 at its field — a point on no body or on the ground, no direction, a
-/// joint and a body at once, an actuator that is not a revolute or
+/// Inputs that cannot be: each a 422 at its field — an unknown point, a
+/// point on no body (drawn, but no joint or centre of mass is there), a
+/// point pinned to the ground, no direction, a joint and a body at once, an actuator that is not a revolute or
 /// prismatic joint or is unknown, more actuators than inputs, and one
 /// actuator for two inputs (the bar on a slider's both by its guide).
 #[tokio::test]
@@ -93,8 +94,11 @@ async fn inputs_that_cannot_be_are_refused_at_their_field() {
         body
     };
     let point = |p: &str| json!({"point": p, "direction": [0, -1], "speed": 0.3, "end": 0.01, "steps": 1});
+    let mut nowhere = with(point("Z"), json!(["piston"]));
+    nowhere["mechanism"]["points"]["Z"] = json!([1, 1]);
     let cases = [
         (with(point("Q"), json!(["piston"])), vec!["/input/point"]),
+        (nowhere, vec!["/input/point"]),
         (with(point("D"), json!(["piston"])), vec!["/input/point"]),
         (
             with(json!({"point": "C", "body": "platform", "speed": 1, "end": 1}), json!(["piston"])),
