@@ -7,6 +7,7 @@
 
 pub mod cam;
 pub mod constraints;
+pub mod curves;
 pub mod deadline;
 pub mod dynamics;
 pub mod equivalent;
