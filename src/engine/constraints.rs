@@ -8,6 +8,8 @@
 //! the first body, a "projection" row is eᵀd: the normal of a slide
 //! (prismatic, pin-in-slot) or the axis of a driven prismatic joint.
 
+mod contact;
+
 use super::model::{BodyId, Coordinate, JointKind, Mechanism, dot, perp, rotate_by};
 use nalgebra::{DMatrix, DVector};
 
@@ -64,28 +66,37 @@ pub struct Blocks {
     pub rows: Vec<RowBlocks>,
 }
 
-/// The blocks of one row of Φ_q.
+/// The blocks of one row of Φ_q: up to three bodies' (x, y, θ), and up to
+/// two single entries (a contact's curve parameters).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct RowBlocks {
     pub len: usize,
     pub col: [usize; 3],
     pub val: [[f64; 3]; 3],
+    pub singles: usize,
+    pub single: [(usize, f64); 2],
 }
 
 impl RowBlocks {
+    /// The bodies' blocks (the single entries apart: the sparse range-space
+    /// form, which reads these, is not used for mechanisms with contacts).
     pub fn iter(&self) -> impl Iterator<Item = (usize, &[f64; 3])> {
         self.col[..self.len].iter().copied().zip(&self.val[..self.len])
     }
 
-    /// Σ Φ_q,k·v over the row's blocks.
+    /// Σ Φ_q,k·v over the row's blocks and single entries.
     pub fn dot(&self, v: &[f64]) -> f64 {
-        self.iter().map(|(c, d)| d[0] * v[c] + d[1] * v[c + 1] + d[2] * v[c + 2]).sum()
+        let blocks: f64 = self.iter().map(|(c, d)| d[0] * v[c] + d[1] * v[c + 1] + d[2] * v[c + 2]).sum();
+        blocks + self.single[..self.singles].iter().map(|&(c, d)| d * v[c]).sum::<f64>()
     }
 }
 
 /// Where the Builder writes Φ_q: a dense matrix or [`Blocks`].
 trait Jacobian {
+    /// A body's block (x, y, θ) from column `col`.
     fn add(&mut self, row: usize, col: usize, d: [f64; 3]);
+    /// One entry (a curve parameter's column).
+    fn add_one(&mut self, row: usize, col: usize, d: f64);
 }
 
 impl Jacobian for DMatrix<f64> {
@@ -94,11 +105,15 @@ impl Jacobian for DMatrix<f64> {
             self[(row, col + k)] += v;
         }
     }
+    fn add_one(&mut self, row: usize, col: usize, d: f64) {
+        self[(row, col)] += d;
+    }
 }
 
 /// Φ_q not written: [`evaluate_gamma`] at a q whose Φ_q is known.
 impl Jacobian for () {
     fn add(&mut self, _: usize, _: usize, _: [f64; 3]) {}
+    fn add_one(&mut self, _: usize, _: usize, _: f64) {}
 }
 
 impl Jacobian for Blocks {
@@ -111,6 +126,16 @@ impl Jacobian for Blocks {
             r.len - 1
         });
         (0..3).for_each(|i| r.val[k][i] += d[i]);
+    }
+    fn add_one(&mut self, row: usize, col: usize, d: f64) {
+        let r = &mut self.rows[row];
+        match r.single[..r.singles].iter().position(|&(c, _)| c == col) {
+            Some(k) => r.single[k].1 += d,
+            None => {
+                r.single[r.singles] = (col, d);
+                r.singles += 1;
+            }
+        }
     }
 }
 
@@ -281,7 +306,7 @@ fn build<J: Jacobian>(
     jacobian: &mut J,
 ) {
     let mut b = Builder { m, s, trig, phi, gamma, jacobian };
-    let mut row = 0;
+    let (mut row, mut parameter) = (0, m.n_body_coordinates());
     for joint in &m.joints {
         let [i, j] = joint.bodies;
         match &joint.kind {
@@ -293,6 +318,10 @@ fn build<J: Jacobian>(
             JointKind::PinSlot { axis } => b.projection(row, joint.bodies, joint.at, perp(*axis), 0.0),
             JointKind::Gear { ratio, carrier, .. } => {
                 b.angles(row, &[(j, 1.0), (i, -ratio), (*carrier, ratio - 1.0)], 0.0);
+            }
+            JointKind::Contact(c) => {
+                b.contact(row, joint.bodies, c, parameter);
+                parameter += c.parameters();
             }
         }
         row += Mechanism::joint_rows(&joint.kind);
@@ -324,9 +353,25 @@ pub fn nu(m: &Mechanism, inputs: &[[f64; 3]]) -> DVector<f64> {
 mod tests {
     use super::*;
     use crate::engine::samples::{
-        actuated_arm, four_bar, offset_slider_crank, planetary_train, scissor_lift, scotch_yoke, slider_crank,
-        slotted_lever,
+        actuated_arm, eccentric_cam, four_bar, offset_slider_crank, planetary_train, scissor_lift, scotch_yoke,
+        slider_crank, slotted_lever,
     };
+
+    /// The eccentric cam with a polar cam ρ = 0.04 + 0.005 cos ψ and a
+    /// roller of radius 0.01 on the follower: a contact of two curves
+    /// that both turn (not assembled: the rows are only evaluated here).
+    fn polar_cam_and_roller() -> Mechanism {
+        use crate::engine::curves::Curve;
+        use crate::engine::expr::Expr;
+        use crate::engine::function::Function;
+        let mut m = eccentric_cam();
+        if let JointKind::Contact(c) = &mut m.joints[2].kind {
+            let rho = Function::Expr(Expr::compile("0.04 + 0.005*cos(phi)", &["phi"]).unwrap());
+            c.curves =
+                [Curve::polar([0.0, 0.0], rho), Curve::Circle { centre: [0.0, 0.055], radius: 0.01, inside: false }];
+        }
+        m
+    }
 
     /// Every sample, covering every joint and driver type, at a displaced state.
     fn cases() -> Vec<(&'static str, Mechanism, Vec<f64>, Vec<f64>)> {
@@ -339,6 +384,8 @@ mod tests {
             ("slider-crank r/l = 0.95", slider_crank(0.095, 0.1)),
             ("slotted lever", slotted_lever()),
             ("scissor lift", scissor_lift()),
+            ("eccentric cam (a contact)", eccentric_cam()),
+            ("polar cam under a roller (two curved curves)", polar_cam_and_roller()),
         ];
         samples
             .into_iter()
@@ -392,6 +439,7 @@ mod tests {
                 for (c, d) in row.iter() {
                     (0..3).for_each(|k| from_blocks[(r, c + k)] += d[k]);
                 }
+                row.single[..row.singles].iter().for_each(|&(c, d)| from_blocks[(r, c)] += d);
             }
             assert_eq!(dense.jacobian, from_blocks, "{name}");
         }

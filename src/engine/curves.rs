@@ -10,7 +10,7 @@
 //! to the left of its tangent (a circle run counter-clockwise: 1/R).
 
 use super::function::{Function, Side};
-use super::model::{cross, perp};
+use super::numeric::plane::{cross, perp};
 use nalgebra::DMatrix;
 use std::f64::consts::TAU;
 

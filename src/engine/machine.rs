@@ -159,10 +159,7 @@ impl Machine {
         ws.assemble(m, &mut q, &unit, 0).ok()?;
         ws.motion(m, &q, &unit).then_some(())?;
         let (g, h) = (&ws.qd, &ws.qdd);
-        let mass = |k: usize| {
-            let b = &m.bodies[k / 3 + 1];
-            if k % 3 == 2 { b.inertia } else { b.mass }
-        };
+        let mass = |k: usize| m.mass_of(k);
         let inertia = (0..g.len()).map(|k| mass(k) * g[k] * g[k]).sum();
         let slope = 2.0 * (0..g.len()).map(|k| mass(k) * g[k] * h[k]).sum::<f64>();
         let qd: Vec<f64> = g.iter().map(|v| v * self.speed).collect();

@@ -10,6 +10,9 @@
 //! - Φ(q, φ) = 0 are the joint constraints and the driving constraints of the
 //!   inputs (coordinates φ), Φ_q their Jacobian.
 
+use super::curves::{Curve, Domain};
+pub use super::numeric::plane::{cross, dot, perp};
+
 /// Index of a body; 0 is the ground.
 pub type BodyId = usize;
 
@@ -35,6 +38,32 @@ pub enum JointKind {
     PinSlot { axis: [f64; 2] },
     /// ω₂ − ω_c = k·(ω₁ − ω_c); with `pitch`, the reaction is the tooth force.
     Gear { ratio: f64, carrier: BodyId, pitch: Option<Pitch> },
+    /// A higher pair: a curve of each body, touching (`contact.rs` in
+    /// constraints); each curve's parameter is a coordinate of its own.
+    Contact(Box<Contact>),
+}
+
+/// The curves of a higher pair, the first body's and the second's, in
+/// reference coordinates. They touch: one point in common and, where both
+/// have a parameter, a common tangent (sliding: one freedom removed).
+#[derive(Clone, Debug)]
+pub struct Contact {
+    pub curves: [Curve; 2],
+}
+
+impl PartialEq for Contact {
+    /// Curves hold Functions, which have no equality: contacts are the same
+    /// when they are the same object.
+    fn eq(&self, other: &Self) -> bool {
+        std::ptr::eq(self, other)
+    }
+}
+
+impl Contact {
+    /// How many of its curves have a parameter (a point has none).
+    pub fn parameters(&self) -> usize {
+        self.curves.iter().filter(|c| c.domain() != Domain::None).count()
+    }
 }
 
 /// Pitch geometry of a mesh, for the tooth force at the pitch point.
@@ -125,14 +154,40 @@ pub struct Mechanism {
 }
 
 impl Mechanism {
-    /// Number of coordinates, 3 per moving body.
+    /// Number of coordinates: 3 per moving body, then one per curve
+    /// parameter of every contact.
     pub fn n_coordinates(&self) -> usize {
+        self.n_body_coordinates() + self.n_parameters()
+    }
+
+    /// The bodies' coordinates, 3 per moving body (the curve parameters follow).
+    pub fn n_body_coordinates(&self) -> usize {
         3 * (self.bodies.len() - 1)
     }
 
-    /// Coordinate k's entry of the mass matrix M = diag(m, m, I_G, …).
+    /// Where contact joint k touches at q, as a point of body b (one of its
+    /// two) in reference coordinates; None for another joint.
+    pub fn contact_point(&self, k: usize, b: BodyId, q: &[f64]) -> Option<[f64; 2]> {
+        let JointKind::Contact(c) = &self.joints[k].kind else { return None };
+        let before: usize =
+            self.joints[..k].iter().map(|j| if let JointKind::Contact(c) = &j.kind { c.parameters() } else { 0 }).sum();
+        let side = usize::from(self.joints[k].bodies[1] == b);
+        let column =
+            self.n_body_coordinates() + before + usize::from(side == 1 && c.curves[0].domain() != Domain::None);
+        let curve = &c.curves[side];
+        let u = if curve.domain() == Domain::None { 0.0 } else { q[column] };
+        Some(curve.at(u).r)
+    }
+
+    /// The contacts' curve parameters.
+    pub fn n_parameters(&self) -> usize {
+        self.joints.iter().map(|j| if let JointKind::Contact(c) = &j.kind { c.parameters() } else { 0 }).sum()
+    }
+
+    /// Coordinate k's entry of the mass matrix M = diag(m, m, I_G, …, 0 for
+    /// the curve parameters, which carry no mass).
     pub fn mass_of(&self, k: usize) -> f64 {
-        let body = &self.bodies[k / 3 + 1];
+        let Some(body) = self.bodies.get(k / 3 + 1).filter(|_| k < self.n_body_coordinates()) else { return 0.0 };
         if k % 3 == 2 { body.inertia } else { body.mass }
     }
 
@@ -152,6 +207,7 @@ impl Mechanism {
         match kind {
             JointKind::Revolute | JointKind::Prismatic { .. } => 2,
             JointKind::PinSlot { .. } | JointKind::Gear { .. } => 1,
+            JointKind::Contact(c) => 2 + usize::from(c.parameters() == 2),
         }
     }
 
@@ -162,8 +218,17 @@ impl Mechanism {
     }
 
     /// The reference configuration q₀: every G where drawn, every θ = 0.
+    /// A contact's curve parameters there are those of the curves' points
+    /// nearest to its drawn point `at` (where they touch as drawn).
     pub fn reference_q(&self) -> Vec<f64> {
-        self.bodies[1..].iter().flat_map(|b| [b.cg[0], b.cg[1], 0.0]).collect()
+        let mut q: Vec<f64> = self.bodies[1..].iter().flat_map(|b| [b.cg[0], b.cg[1], 0.0]).collect();
+        for j in &self.joints {
+            if let JointKind::Contact(c) = &j.kind {
+                let near = |curve: &Curve| curve.nearest_anywhere(j.at, 16).unwrap_or(0.0);
+                q.extend(c.curves.iter().filter(|k| k.domain() != Domain::None).map(near));
+            }
+        }
+        q
     }
 
     /// Grübler's count for a planar mechanism: G = 3(N − 1) − 2·P_I − P_II,
@@ -187,9 +252,11 @@ impl Mechanism {
     }
 
     /// The joints by class, [P_I, P_II]: a class-I pair (revolute,
-    /// prismatic) removes 2 freedoms, a class-II pair (pin in a slot, gears) 1.
+    /// prismatic) removes 2 freedoms, a class-II pair (pin in a slot,
+    /// gears, a sliding contact) 1.
     pub fn pairs(&self) -> [i64; 2] {
-        let p1 = self.joints.iter().filter(|j| Self::joint_rows(&j.kind) == 2).count() as i64;
+        let first = |k: &JointKind| matches!(k, JointKind::Revolute | JointKind::Prismatic { .. });
+        let p1 = self.joints.iter().filter(|j| first(&j.kind)).count() as i64;
         [p1, self.joints.len() as i64 - p1]
     }
 }
@@ -216,18 +283,4 @@ pub fn rotate_by((sn, cs): (f64, f64), s: [f64; 2]) -> [f64; 2] {
 /// B(θ)·s = dA/dθ·s = A(θ)·(−s_y, s_x).
 pub fn rotate_d(theta: f64, s: [f64; 2]) -> [f64; 2] {
     rotate(theta, [-s[1], s[0]])
-}
-
-/// The unit normal (−u_y, u_x) of a direction u.
-pub fn perp(u: [f64; 2]) -> [f64; 2] {
-    [-u[1], u[0]]
-}
-
-pub fn dot(a: [f64; 2], b: [f64; 2]) -> f64 {
-    a[0] * b[0] + a[1] * b[1]
-}
-
-/// z-component of a × b.
-pub fn cross(a: [f64; 2], b: [f64; 2]) -> f64 {
-    a[0] * b[1] - a[1] * b[0]
 }

@@ -1,6 +1,7 @@
 //! Canonical mechanisms shared by tests, docs and examples.
 
-use super::model::{Body, Driver, Joint, JointKind, Mechanism};
+use super::curves::Curve;
+use super::model::{Body, Contact, Driver, Joint, JointKind, Mechanism};
 
 fn body(name: &str, mass: f64, inertia: f64, cg: [f64; 2]) -> Body {
     Body { name: name.into(), mass, inertia, cg }
@@ -209,6 +210,36 @@ pub fn slotted_lever() -> Mechanism {
         ],
         drivers: vec![Driver::joint(0, 0.0)],
         gravity: [0.0, 0.0],
+    }
+}
+
+/// An eccentric circular cam under a flat-faced follower (a higher pair):
+/// the cam pinned at O (0, 0), its disk of radius R = 0.05 m centred e =
+/// 0.02 m below O as drawn (the follower at its lowest); the follower (2 kg)
+/// slides vertically, its face the line y = R − e touching the disk's top.
+/// The cam's rotation from the drawing is the input; the lift is e(1 − cos θ)
+/// and the contact is e·sin θ along the face (a Scotch yoke's motion).
+pub fn eccentric_cam() -> Mechanism {
+    let (r, e) = (0.05, 0.02);
+    let contact = Contact {
+        curves: [
+            Curve::Circle { centre: [0.0, -e], radius: r, inside: false },
+            Curve::Line { at: [0.0, r - e], direction: [1.0, 0.0] },
+        ],
+    };
+    Mechanism {
+        bodies: vec![
+            body("ground", 0.0, 0.0, [0.0, 0.0]),
+            body("cam", 1.0, 0.002, [0.0, 0.0]),
+            body("follower", 2.0, 0.01, [0.0, 0.1]),
+        ],
+        joints: vec![
+            joint("O", JointKind::Revolute, [0, 1], [0.0, 0.0]),
+            joint("guide", JointKind::Prismatic { axis: [0.0, 1.0] }, [0, 2], [0.0, 0.1]),
+            joint("contact", JointKind::Contact(Box::new(contact)), [1, 2], [0.0, r - e]),
+        ],
+        drivers: vec![Driver::joint(0, 0.0)],
+        gravity: [0.0, -9.81],
     }
 }
 

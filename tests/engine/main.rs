@@ -1,6 +1,7 @@
 //! Engine-level golden tests against the reference cases in tests/fixtures/cases.
 
 mod actuators;
+mod contact;
 mod dynamics;
 mod elliptic;
 mod free_body;

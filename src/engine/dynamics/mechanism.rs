@@ -150,8 +150,11 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
     let (phi, _, jac) = evaluate_blocks(m, &State { q: &start.q, qd: None, inputs: &vec![[0.0; 3]; m.drivers.len()] });
     let r = phi.len() - m.drivers.len();
     let energy = energy(p, &mass, &start.q, &start.qd);
-    let sparse =
-        (sparse && mobility.redundant_constraints == 0).then(|| RangeSpace::new(&jac, r, &mass, hold)).flatten();
+    // The range-space form needs M⁻¹ and reads the bodies' blocks only: not
+    // for contacts, whose curve parameters carry no mass (the dense LU takes them).
+    let sparse = (sparse && mobility.redundant_constraints == 0 && m.n_parameters() == 0)
+        .then(|| RangeSpace::new(&jac, r, &mass, hold))
+        .flatten();
     let dae = Equations {
         p,
         n,
@@ -204,7 +207,7 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         integrator: run.integrator,
         stiff_at: run.stiff_at,
         repeated: run.repeated,
-        estimated_error: (0..n / 3).map(|b| run.local_errors[3 * b + 2]).fold(0.0, f64::max),
+        estimated_error: (0..p.mechanism.bodies.len() - 1).map(|b| run.local_errors[3 * b + 2]).fold(0.0, f64::max),
         stopped: run.stopped,
     };
     let near_singular = clusters(&dae.held_at.borrow(), run.t_end);
@@ -245,7 +248,7 @@ fn clusters(held_at: &[f64], t_end: f64) -> Vec<f64> {
 fn settings(p: &MechanismProblem, q: &[f64], qd: &[f64], length: f64) -> Settings {
     let n = q.len();
     let g = p.mechanism.gravity[0].hypot(p.mechanism.gravity[1]);
-    let spin = (0..n / 3).map(|b| qd[3 * b + 2].abs()).fold(0.0, f64::max);
+    let spin = (0..p.mechanism.bodies.len() - 1).map(|b| qd[3 * b + 2].abs()).fold(0.0, f64::max);
     let rate = 1.0f64.max((g / length).sqrt()).max(spin);
     let rtol = (0.01 * p.tolerance).clamp(1e-13, 1e-4);
     let scale = |k: usize| {
@@ -309,7 +312,7 @@ fn sample(dae: &Equations, mobility: &Mobility, t: f64, y: &[f64]) -> Result<Mec
     } else {
         Vec::new()
     };
-    let poses = q.chunks_exact(3).map(|b| [b[0], b[1], b[2]]).collect();
+    let poses = q[..dae.p.mechanism.n_body_coordinates()].chunks_exact(3).map(|b| [b[0], b[1], b[2]]).collect();
     let energy = kinetostatics::energy(&dae.p.mechanism, &dae.p.loads, q, qd);
     let kept = dae.p.motion.then(|| Motion { q: q.to_vec(), qd: qd.to_vec(), qdd: motion.qdd.clone() });
     Ok(MechanismSample {

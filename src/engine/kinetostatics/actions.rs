@@ -106,7 +106,7 @@ impl Actions<'_> {
         out.energy_shares = g.zip(out.reduced_inertia).filter(|&(_, total)| total > 0.0).map(|(g, total)| {
             let mut shares = shares.unwrap_or_default();
             shares.clear();
-            shares.extend(g.chunks_exact(3).enumerate().map(|(b, g)| {
+            shares.extend(g[..m.n_body_coordinates()].chunks_exact(3).enumerate().map(|(b, g)| {
                 let body = &m.bodies[b + 1];
                 (body.mass * (g[0] * g[0] + g[1] * g[1]) + body.inertia * g[2] * g[2]) / total
             }));
@@ -257,7 +257,9 @@ fn reactions_into(
         // On the second body, or minus the action on the first when the second is the ground.
         let (b, sign) = if j != 0 { (j, 1.0) } else { (i, -1.0) };
         let [fx, fy, mg] = force_on(b);
-        let arm = rotate_by(trig[b], m.local(b, joint.at));
+        // About the joint's point, carried by the body; a contact's where it touches now.
+        let at = m.contact_point(k, b, q).unwrap_or(joint.at);
+        let arm = rotate_by(trig[b], m.local(b, at));
         let moment = mg - cross(arm, [fx, fy]);
         let determinate = !indeterminate.contains(&k);
         if let JointKind::Gear { pitch: Some(pitch), .. } = &joint.kind {

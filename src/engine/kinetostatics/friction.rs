@@ -99,7 +99,8 @@ fn actions<'a>(
                 let slide = sign(dot(u, [vj[0] - vi[0], vj[1] - vi[1]]));
                 Some((r.joint, [-f.mu * normal * slide * u[0], -f.mu * normal * slide * u[1]], 0.0))
             }
-            JointKind::Gear { .. } => None,
+            // A contact's friction is not modelled yet (the service refuses it).
+            JointKind::Gear { .. } | JointKind::Contact(_) => None,
         }
     })
 }

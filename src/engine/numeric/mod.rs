@@ -1,10 +1,11 @@
 //! Numerical building blocks with no mechanics in them: quadrature, root
-//! finding, ODE integration (two explicit Runge–Kutta pairs and the implicit Radau IIA), a dense LU over reused storage, a sparse LDLᵀ, and an SVD that always returns.
+//! finding, ODE integration (two explicit Runge–Kutta pairs and the implicit Radau IIA), a dense LU over reused storage, a sparse LDLᵀ, an SVD that always returns, and the plane's vector products.
 
 pub mod dop853;
 pub mod ldl;
 pub mod lu;
 pub mod ode;
+pub mod plane;
 pub mod quadrature;
 pub mod radau;
 pub mod roots;

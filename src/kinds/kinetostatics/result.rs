@@ -298,7 +298,7 @@ impl StepDto {
 /// Every moving body's motion; `centred[b]` says whether moving body b has
 /// a centre of mass to report.
 fn motion(m: &Motion, names: &[Name], centred: &[bool]) -> Vec<BodyMotion> {
-    (0..m.q.len() / 3)
+    (0..names.len() - 1)
         .map(|b| {
             let c = 3 * b;
             let at = |v: &[f64], k: usize| centred[b].then_some(v[c + k]);
