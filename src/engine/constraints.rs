@@ -373,6 +373,14 @@ mod tests {
         m
     }
 
+    /// The sample's contact made a rolling one (its rows only evaluated).
+    fn rolling(mut m: Mechanism) -> Mechanism {
+        if let JointKind::Contact(c) = &mut m.joints[2].kind {
+            c.rolling = true;
+        }
+        m
+    }
+
     /// Every sample, covering every joint and driver type, at a displaced state.
     fn cases() -> Vec<(&'static str, Mechanism, Vec<f64>, Vec<f64>)> {
         let samples = [
@@ -386,6 +394,8 @@ mod tests {
             ("scissor lift", scissor_lift()),
             ("eccentric cam (a contact)", eccentric_cam()),
             ("polar cam under a roller (two curved curves)", polar_cam_and_roller()),
+            ("the eccentric cam rolling", rolling(eccentric_cam())),
+            ("a polar cam rolling on a roller (arc lengths by quadrature)", rolling(polar_cam_and_roller())),
         ];
         samples
             .into_iter()

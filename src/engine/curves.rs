@@ -11,6 +11,7 @@
 
 use super::function::{Function, Side};
 use super::numeric::plane::{cross, perp};
+use super::numeric::quadrature::integrate;
 use nalgebra::DMatrix;
 use std::f64::consts::TAU;
 
@@ -191,6 +192,24 @@ impl Curve {
                 }
             }
             Curve::Spline(s) => s.at(u),
+        }
+    }
+
+    /// |r′(u)|: the arc length run per unit of u.
+    pub fn speed(&self, u: f64) -> f64 {
+        let d = self.at(u).d1;
+        d[0].hypot(d[1])
+    }
+
+    /// The arc length from u = 0 to u (negative below 0): exact for lines
+    /// and circles, by adaptive Gauss–Kronrod quadrature (1e-13 relative)
+    /// for polar curves and splines.
+    pub fn arc(&self, u: f64) -> f64 {
+        match self {
+            Curve::Point(_) => 0.0,
+            Curve::Line { .. } => u,
+            Curve::Circle { radius, .. } => radius * u,
+            Curve::Polar { .. } | Curve::Spline(_) => integrate(|v| self.speed(v), 0.0, u, 0.0, 1e-13, 20_000).value,
         }
     }
 

@@ -45,10 +45,15 @@ pub enum JointKind {
 
 /// The curves of a higher pair, the first body's and the second's, in
 /// reference coordinates. They touch: one point in common and, where both
-/// have a parameter, a common tangent (sliding: one freedom removed).
+/// have a parameter, a common tangent (sliding: one freedom removed);
+/// rolling without slipping, the arc lengths run on each curve are equal
+/// too (two removed).
 #[derive(Clone, Debug)]
 pub struct Contact {
     pub curves: [Curve; 2],
+    pub rolling: bool,
+    /// Each curve's parameter where they touch as drawn (0 for a point).
+    pub drawn: [f64; 2],
 }
 
 impl PartialEq for Contact {
@@ -60,6 +65,20 @@ impl PartialEq for Contact {
 }
 
 impl Contact {
+    /// The contact of `curves` touching at `at` as drawn (each curve's
+    /// parameter there: its point nearest to `at`).
+    pub fn new(curves: [Curve; 2], rolling: bool, at: [f64; 2]) -> Self {
+        let drawn = curves.each_ref().map(|c| c.nearest_anywhere(at, 16).unwrap_or(0.0));
+        let rolling = rolling && curves.iter().all(|c| c.domain() != Domain::None);
+        Self { curves, rolling, drawn }
+    }
+
+    /// Rows of its constraint equations: the coincidence (2), the common
+    /// tangent of two curves (1), equal arc lengths when rolling (1).
+    pub fn rows(&self) -> usize {
+        2 + usize::from(self.parameters() == 2) + usize::from(self.rolling)
+    }
+
     /// How many of its curves have a parameter (a point has none).
     pub fn parameters(&self) -> usize {
         self.curves.iter().filter(|c| c.domain() != Domain::None).count()
@@ -207,7 +226,7 @@ impl Mechanism {
         match kind {
             JointKind::Revolute | JointKind::Prismatic { .. } => 2,
             JointKind::PinSlot { .. } | JointKind::Gear { .. } => 1,
-            JointKind::Contact(c) => 2 + usize::from(c.parameters() == 2),
+            JointKind::Contact(c) => c.rows(),
         }
     }
 
@@ -218,14 +237,13 @@ impl Mechanism {
     }
 
     /// The reference configuration q₀: every G where drawn, every θ = 0.
-    /// A contact's curve parameters there are those of the curves' points
-    /// nearest to its drawn point `at` (where they touch as drawn).
+    /// A contact's curve parameters there are where its curves touch as drawn.
     pub fn reference_q(&self) -> Vec<f64> {
         let mut q: Vec<f64> = self.bodies[1..].iter().flat_map(|b| [b.cg[0], b.cg[1], 0.0]).collect();
         for j in &self.joints {
             if let JointKind::Contact(c) = &j.kind {
-                let near = |curve: &Curve| curve.nearest_anywhere(j.at, 16).unwrap_or(0.0);
-                q.extend(c.curves.iter().filter(|k| k.domain() != Domain::None).map(near));
+                let has = |k: &usize| c.curves[*k].domain() != Domain::None;
+                q.extend((0..2).filter(has).map(|k| c.drawn[k]));
             }
         }
         q
@@ -252,10 +270,14 @@ impl Mechanism {
     }
 
     /// The joints by class, [P_I, P_II]: a class-I pair (revolute,
-    /// prismatic) removes 2 freedoms, a class-II pair (pin in a slot,
-    /// gears, a sliding contact) 1.
+    /// prismatic, a rolling contact) removes 2 freedoms, a class-II pair
+    /// (pin in a slot, gears, a sliding contact) 1.
     pub fn pairs(&self) -> [i64; 2] {
-        let first = |k: &JointKind| matches!(k, JointKind::Revolute | JointKind::Prismatic { .. });
+        let first = |k: &JointKind| match k {
+            JointKind::Revolute | JointKind::Prismatic { .. } => true,
+            JointKind::Contact(c) => c.rolling,
+            _ => false,
+        };
         let p1 = self.joints.iter().filter(|j| first(&j.kind)).count() as i64;
         [p1, self.joints.len() as i64 - p1]
     }

@@ -221,12 +221,11 @@ pub fn slotted_lever() -> Mechanism {
 /// and the contact is e·sin θ along the face (a Scotch yoke's motion).
 pub fn eccentric_cam() -> Mechanism {
     let (r, e) = (0.05, 0.02);
-    let contact = Contact {
-        curves: [
-            Curve::Circle { centre: [0.0, -e], radius: r, inside: false },
-            Curve::Line { at: [0.0, r - e], direction: [1.0, 0.0] },
-        ],
-    };
+    let curves = [
+        Curve::Circle { centre: [0.0, -e], radius: r, inside: false },
+        Curve::Line { at: [0.0, r - e], direction: [1.0, 0.0] },
+    ];
+    let contact = Contact::new(curves, false, [0.0, r - e]);
     Mechanism {
         bodies: vec![
             body("ground", 0.0, 0.0, [0.0, 0.0]),

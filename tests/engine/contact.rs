@@ -80,3 +80,113 @@ fn a_free_cam_turned_by_its_follower_keeps_its_energy() {
     }
     assert!(moved > 0.1 * scale, "it turns: T reached {moved} J");
 }
+
+/// A coin rolling round an equal fixed coin (radius R = 0.05 m), kept on
+/// it by the rolling contact alone, driven by its own rotation θ: it turns
+/// twice per orbit, so its centre is at 2R(cos θ/2, sin θ/2) with velocity
+/// Rθ̇(−sin θ/2, cos θ/2) (1e-9 of R; the classic coin paradox).
+#[test]
+fn a_coin_rolling_round_an_equal_coin_turns_twice_per_orbit() {
+    use mechdyn::engine::curves::Curve;
+    use mechdyn::engine::model::{Body, Contact, Coordinate, Driver, Joint, JointKind, Mechanism};
+    let r = 0.05;
+    let curves = [
+        Curve::Circle { centre: [0.0, 0.0], radius: r, inside: false },
+        Curve::Circle { centre: [2.0 * r, 0.0], radius: r, inside: false },
+    ];
+    let coin = Joint {
+        name: "rim".into(),
+        kind: JointKind::Contact(Box::new(Contact::new(curves, true, [r, 0.0]))),
+        bodies: [0, 1],
+        at: [r, 0.0],
+        friction: None,
+        length: None,
+    };
+    let body = |name: &str, mass: f64, cg: [f64; 2]| Body { name: name.into(), mass, inertia: 0.5 * mass * r * r, cg };
+    let m = Mechanism {
+        bodies: vec![body("ground", 0.0, [0.0, 0.0]), body("coin", 0.01, [2.0 * r, 0.0])],
+        joints: vec![coin],
+        drivers: vec![Driver { coordinate: Coordinate::Body(1), reference: 0.0, actuator: None }],
+        gravity: [0.0, 0.0],
+    };
+    let w = 3.0;
+    let positions: Vec<Vec<[f64; 3]>> = (0..12).map(|k| vec![[0.25 * f64::from(k), w, 0.0]]).collect();
+    let outputs = Outputs { driving: true, reactions: false, reduced: false, kinematics: true, condition: false };
+    let solution = solve(&m, &[], &positions, outputs, &Deadline::none()).unwrap();
+    assert_eq!(solution.totals.mobility.dof, 1);
+    for (p, step) in positions.iter().zip(&solution.steps) {
+        let (theta, k) = (p[0][0], step.kinematics.as_ref().unwrap());
+        let (s, c) = (theta / 2.0).sin_cos();
+        let want = [2.0 * r * c, 2.0 * r * s, -r * w * s, r * w * c];
+        let got = [k.q[0], k.q[1], k.qd[0], k.qd[1]];
+        for (g, e) in got.iter().zip(want) {
+            assert!((g - e).abs() < 1e-9 * r * w, "θ = {theta}: {got:?} vs {want:?}");
+        }
+    }
+}
+
+/// A disk (m = 2 kg, R = 0.1 m, I = ½mR²) rolling from rest down a 30°
+/// incline, free: a = ⅔ g sin α along it, so after t it has gone ½at² and
+/// turned −½at²/R, and the friction that makes it roll is ⅓ m g sin α up
+/// the slope, the normal force m g cos α (1e-7 of the scales: tolerance 1e-10).
+#[test]
+fn a_disk_rolls_down_an_incline_at_two_thirds_g_sin_alpha() {
+    use mechdyn::engine::curves::Curve;
+    use mechdyn::engine::dynamics::mechanism::{MechanismProblem, solve as integrate};
+    use mechdyn::engine::dynamics::{End, KEPT_BYTES};
+    use mechdyn::engine::model::{Body, Contact, Coordinate, Driver, Joint, JointKind, Mechanism};
+    let (m, r, g, alpha) = (2.0, 0.1, 9.81, 30f64.to_radians());
+    let (sa, ca) = alpha.sin_cos();
+    let (d, n) = ([ca, -sa], [sa, ca]);
+    let centre = [r * n[0], r * n[1]];
+    let curves = [Curve::Line { at: [0.0, 0.0], direction: d }, Curve::Circle { centre, radius: r, inside: false }];
+    let contact = Joint {
+        name: "slope".into(),
+        kind: JointKind::Contact(Box::new(Contact::new(curves, true, [0.0, 0.0]))),
+        bodies: [0, 1],
+        at: [0.0, 0.0],
+        friction: None,
+        length: None,
+    };
+    let mechanism = Mechanism {
+        bodies: vec![
+            Body { name: "ground".into(), mass: 0.0, inertia: 0.0, cg: [0.0, 0.0] },
+            Body { name: "disk".into(), mass: m, inertia: 0.5 * m * r * r, cg: centre },
+        ],
+        joints: vec![contact],
+        drivers: vec![Driver { coordinate: Coordinate::Body(1), reference: 0.0, actuator: None }],
+        gravity: [0.0, -g],
+    };
+    let problem = MechanismProblem {
+        mechanism,
+        loads: Vec::new(),
+        period: std::f64::consts::TAU,
+        initial: vec![[0.0, 0.0]],
+        end: End::Duration(1.0),
+        tolerance: 1e-10,
+        integrator: None,
+        conserve_energy: Some(false),
+        samples: 5,
+        kept_bytes: KEPT_BYTES,
+        deadline: Deadline::none(),
+        reactions: true,
+        motion: true,
+    };
+    let run = integrate(&problem).unwrap();
+    let a = 2.0 / 3.0 * g * sa;
+    for (sample, detail) in run.solution.samples.iter().zip(&run.details) {
+        let t = sample.t;
+        let q = &detail.motion.as_ref().unwrap().q;
+        let along = (q[0] - centre[0]) * d[0] + (q[1] - centre[1]) * d[1];
+        assert!((along - 0.5 * a * t * t).abs() < 1e-7 * a, "t = {t}: {along} vs {}", 0.5 * a * t * t);
+        assert!(
+            (detail.inputs[0][0] + 0.5 * a * t * t / r).abs() < 1e-7 * a / r,
+            "t = {t}: turned {}",
+            detail.inputs[0][0]
+        );
+        let f = &detail.reactions[0];
+        let (tangential, normal) = (f.fx * d[0] + f.fy * d[1], f.fx * n[0] + f.fy * n[1]);
+        assert!((tangential + m * g * sa / 3.0).abs() < 1e-7 * m * g, "t = {t}: friction {tangential}");
+        assert!((normal - m * g * ca).abs() < 1e-7 * m * g, "t = {t}: normal {normal}");
+    }
+}

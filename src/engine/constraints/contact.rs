@@ -61,6 +61,31 @@ impl<J: Jacobian> Builder<'_, '_, J> {
         if c1.is_some() && c2.is_some() {
             self.tangency(row + 2, &one, &two);
         }
+        if contact.rolling {
+            self.rolling(row + 3, contact, [&one, &two]);
+        }
+    }
+
+    /// Row a₁(u₁) − σ a₂(u₂) − (a₁ − σ a₂ as drawn) = 0: a the arc length
+    /// along each curve, σ = ±1 as the tangents run the same way or not
+    /// (the contact point advances as far along both curves).
+    fn rolling(&mut self, row: usize, contact: &Contact, [one, two]: [&Side; 2]) {
+        let [k1, k2] = &contact.curves;
+        let (t1, t2) = (self.rot(one.body, one.l.d1), self.rot(two.body, two.l.d1));
+        let sigma = if t1[0] * t2[0] + t1[1] * t2[1] >= 0.0 { 1.0 } else { -1.0 };
+        let (u1, u2) = (one.column.map_or(0.0, |c| self.s.q[c]), two.column.map_or(0.0, |c| self.s.q[c]));
+        let drawn = k1.arc(contact.drawn[0]) - sigma * k2.arc(contact.drawn[1]);
+        self.phi[row] = k1.arc(u1) - sigma * k2.arc(u2) - drawn;
+        let speed = |l: &Local| l.d1[0].hypot(l.d1[1]);
+        // d|c′|/du = c′·c″/|c′|.
+        let bend = |l: &Local| (l.d1[0] * l.d2[0] + l.d1[1] * l.d2[1]) / speed(l);
+        if let Some(c) = one.column {
+            self.jacobian.add_one(row, c, speed(&one.l));
+        }
+        if let Some(c) = two.column {
+            self.jacobian.add_one(row, c, -sigma * speed(&two.l));
+        }
+        self.gamma[row] = -(bend(&one.l) * one.ud * one.ud - sigma * bend(&two.l) * two.ud * two.ud);
     }
 
     /// Rows 2: P₂ − P₁ = 0.
