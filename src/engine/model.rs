@@ -10,7 +10,7 @@
 //! - Φ(q, φ) = 0 are the joint constraints and the driving constraints of the
 //!   inputs (coordinates φ), Φ_q their Jacobian.
 
-use super::curves::{Curve, Domain};
+use super::curves::{Curve, Domain, Local};
 pub use super::numeric::plane::{cross, dot, perp};
 
 /// Index of a body; 0 is the ground.
@@ -187,6 +187,25 @@ impl Mechanism {
     /// Where contact joint k touches at q, as a point of body b (one of its
     /// two) in reference coordinates; None for another joint.
     pub fn contact_point(&self, k: usize, b: BodyId, q: &[f64]) -> Option<[f64; 2]> {
+        self.contact_local(k, b, q).map(|l| l.r)
+    }
+
+    /// The common unit tangent of contact joint k at q (ground frame): the
+    /// second curve's, or the first's where the second is a point.
+    pub fn contact_tangent(&self, k: usize, q: &[f64]) -> Option<[f64; 2]> {
+        let [i, j] = self.joints[k].bodies;
+        let (l, b) = match self.contact_local(k, j, q)? {
+            l if l.d1 != [0.0, 0.0] => (l, j),
+            _ => (self.contact_local(k, i, q)?, i),
+        };
+        let theta = self.column(b).map_or(0.0, |c| q[c + 2]);
+        let t = rotate(theta, l.d1);
+        let n = t[0].hypot(t[1]);
+        (n > 0.0).then(|| [t[0] / n, t[1] / n])
+    }
+
+    /// Contact joint k's curve of body b at q: its point and derivatives.
+    fn contact_local(&self, k: usize, b: BodyId, q: &[f64]) -> Option<Local> {
         let JointKind::Contact(c) = &self.joints[k].kind else { return None };
         let before: usize =
             self.joints[..k].iter().map(|j| if let JointKind::Contact(c) = &j.kind { c.parameters() } else { 0 }).sum();
@@ -195,7 +214,7 @@ impl Mechanism {
             self.n_body_coordinates() + before + usize::from(side == 1 && c.curves[0].domain() != Domain::None);
         let curve = &c.curves[side];
         let u = if curve.domain() == Domain::None { 0.0 } else { q[column] };
-        Some(curve.at(u).r)
+        Some(curve.at(u))
     }
 
     /// The contacts' curve parameters.

@@ -40,6 +40,30 @@ fn an_eccentric_cam_under_a_flat_follower_is_a_scotch_yoke() {
     }
 }
 
+/// With friction μ = 0.1 at the contact (the guide and the pin without):
+/// the follower slides on the cam at ω(R − e cos θ) along the face, so the
+/// friction μN acts on it against that (−x), on the cam at the contact
+/// (R − e cos θ above O): the torque is N(e sin θ + μ(R − e cos θ)), the
+/// normal force unchanged (the guide takes the friction), 1e-9.
+#[test]
+fn contact_friction_adds_mu_n_at_the_contact_to_the_torque() {
+    let (r, e, m, g, w, mu) = (0.05, 0.02, 2.0, 9.81, 10.0, 0.1);
+    let mut mechanism = eccentric_cam();
+    mechanism.joints[2].friction = Some(mechdyn::engine::model::Friction { mu, radius: 0.0 });
+    let angles: Vec<f64> = (0..12).map(|k| 0.1 + 0.5 * f64::from(k)).collect();
+    let positions: Vec<Vec<[f64; 3]>> = angles.iter().map(|&a| vec![[a, w, 0.0]]).collect();
+    let outputs = Outputs { driving: true, reactions: true, reduced: false, kinematics: false, condition: false };
+    let solution = solve(&mechanism, &[], &positions, outputs, &Deadline::none()).unwrap();
+    for (theta, step) in angles.iter().zip(&solution.steps) {
+        let (s, c) = theta.sin_cos();
+        let n = m * (g + e * w * w * c);
+        let torque = n * (e * s + mu * (r - e * c));
+        assert!((step.driving[0] - torque).abs() < 1e-9 * m * g * r, "θ = {theta}: {} vs {torque}", step.driving[0]);
+        let contact = &step.reactions[2];
+        assert!((contact.fx + mu * n).abs() < 1e-9 * m * g && (contact.fy - n).abs() < 1e-9 * m * g, "{contact:?}");
+    }
+}
+
 /// The same cam left free: the follower's weight turns it from 0.5 rad at
 /// rest, through the contact alone. Only gravity works, so every sample's
 /// T + V is the first's (1e-8 of m g e: tolerance 1e-10, the energy not

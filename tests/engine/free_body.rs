@@ -31,7 +31,8 @@ fn residual(m: &Mechanism, step: &Step, b: usize) -> (f64, f64) {
     };
     for r in &step.reactions {
         let joint = &m.joints[r.joint];
-        let at = point(r.on, joint.at);
+        // A contact's reaction acts where its curves touch now.
+        let at = point(r.on, m.contact_point(r.joint, r.on, &motion.q).unwrap_or(joint.at));
         if r.on == b {
             terms.push((at, [r.fx, r.fy], r.moment));
         } else if r.by == b {
@@ -129,4 +130,11 @@ fn every_body_balances_in_a_scissor_lift_driven_by_its_platform_with_the_piston_
     m.drivers[0].actuator = Some(5);
     let positions: Vec<Vec<[f64; 3]>> = (0..8).map(|k| vec![[0.025 * f64::from(k), 0.3, 0.0]]).collect();
     balances_over(m, &positions);
+}
+
+/// A higher pair: the eccentric cam under its flat follower, with friction
+/// at the contact (against the sliding there), the pin and the guide.
+#[test]
+fn every_body_balances_with_friction_in_an_eccentric_cam() {
+    balances(mechdyn::engine::samples::eccentric_cam());
 }

@@ -12,8 +12,10 @@
 //! a guide of length L bears N as N₁ and N₂ at its ends (N₁ + N₂ = N,
 //! (L/2)(N₂ − N₁) = the couple M), each with its friction: −μ(|N₁| + |N₂|)·sign(v),
 //! whose moment about the joint point is nil (both act along the axis).
-//! Where the joint does not move (sign 0) there is no friction (static
-//! friction is not determined by kinetostatics). The reported reaction of a
+//! A contact: force −μ·|N|·sign(v) along the common tangent at the
+//! contact point, v the second body's material point sliding on the
+//! first's there. Where the joint does not move (sign 0) there is no
+//! friction (static friction is not determined by kinetostatics). The reported reaction of a
 //! joint is λ's (normal) part plus its friction ([`add_to`]): every body's
 //! reported forces balance.
 
@@ -46,9 +48,10 @@ pub fn forces(m: &Mechanism, c: &Configuration, reactions: &[Reaction]) -> DVect
     let mut qf = DVector::zeros(m.n_coordinates());
     for (k, force, couple) in actions(m, c, reactions) {
         let [i, j] = m.joints[k].bodies;
-        let at = m.joints[k].at;
-        add_force(m, &c.trig, qf.as_mut_slice(), j, at, force, couple);
-        add_force(m, &c.trig, qf.as_mut_slice(), i, at, [-force[0], -force[1]], -couple);
+        // At the joint's point; a contact's where its curves touch now.
+        let at = |b: usize| m.contact_point(k, b, &c.q).unwrap_or(m.joints[k].at);
+        add_force(m, &c.trig, qf.as_mut_slice(), j, at(j), force, couple);
+        add_force(m, &c.trig, qf.as_mut_slice(), i, at(i), [-force[0], -force[1]], -couple);
     }
     qf
 }
@@ -99,8 +102,17 @@ fn actions<'a>(
                 let slide = sign(dot(u, [vj[0] - vi[0], vj[1] - vi[1]]));
                 Some((r.joint, [-f.mu * normal * slide * u[0], -f.mu * normal * slide * u[1]], 0.0))
             }
-            // A contact's friction is not modelled yet (the service refuses it).
-            JointKind::Gear { .. } | JointKind::Contact(_) => None,
+            // Rolling: the tangential force is the constraint's own, not friction.
+            JointKind::Contact(ref contact) if contact.rolling => None,
+            JointKind::Contact(_) => {
+                let t = m.contact_tangent(r.joint, &c.q)?;
+                let normal = dot(perp(t), [r.fx, r.fy]).abs();
+                let (pj, pi) = (m.contact_point(r.joint, j, &c.q)?, m.contact_point(r.joint, i, &c.q)?);
+                let (vj, vi) = (velocity(j, pj), velocity(i, pi));
+                let slide = sign(dot(t, [vj[0] - vi[0], vj[1] - vi[1]]));
+                Some((r.joint, [-f.mu * normal * slide * t[0], -f.mu * normal * slide * t[1]], 0.0))
+            }
+            JointKind::Gear { .. } => None,
         }
     })
 }
