@@ -195,6 +195,22 @@ impl Curve {
         }
     }
 
+    /// For a closed curve, +1 where its parameter runs counter-clockwise
+    /// (its outward normal is then −perp(t)), −1 clockwise; None for an
+    /// open curve or a point. A circle's and a polar curve's run
+    /// counter-clockwise; a closed spline's as its points are drawn.
+    pub fn orientation(&self) -> Option<f64> {
+        match self {
+            Curve::Circle { .. } | Curve::Polar { .. } => Some(1.0),
+            Curve::Spline(s) if s.closed => {
+                let n = s.points.len();
+                let area: f64 = (0..n).map(|k| cross(s.points[k], s.points[(k + 1) % n])).sum();
+                Some(if area >= 0.0 { 1.0 } else { -1.0 })
+            }
+            _ => None,
+        }
+    }
+
     /// |r′(u)|: the arc length run per unit of u.
     pub fn speed(&self, u: f64) -> f64 {
         let d = self.at(u).d1;

@@ -204,17 +204,22 @@ impl Mechanism {
         (n > 0.0).then(|| [t[0] / n, t[1] / n])
     }
 
-    /// Contact joint k's curve of body b at q: its point and derivatives.
-    fn contact_local(&self, k: usize, b: BodyId, q: &[f64]) -> Option<Local> {
+    /// The parameter of contact joint k's curve `side` (0 the first body's,
+    /// 1 the second's) at q (0 for a point); None for another joint.
+    pub fn contact_parameter(&self, k: usize, side: usize, q: &[f64]) -> Option<f64> {
         let JointKind::Contact(c) = &self.joints[k].kind else { return None };
         let before: usize =
             self.joints[..k].iter().map(|j| if let JointKind::Contact(c) = &j.kind { c.parameters() } else { 0 }).sum();
-        let side = usize::from(self.joints[k].bodies[1] == b);
         let column =
             self.n_body_coordinates() + before + usize::from(side == 1 && c.curves[0].domain() != Domain::None);
-        let curve = &c.curves[side];
-        let u = if curve.domain() == Domain::None { 0.0 } else { q[column] };
-        Some(curve.at(u))
+        Some(if c.curves[side].domain() == Domain::None { 0.0 } else { q[column] })
+    }
+
+    /// Contact joint k's curve of body b at q: its point and derivatives.
+    fn contact_local(&self, k: usize, b: BodyId, q: &[f64]) -> Option<Local> {
+        let JointKind::Contact(c) = &self.joints[k].kind else { return None };
+        let side = usize::from(self.joints[k].bodies[1] == b);
+        Some(c.curves[side].at(self.contact_parameter(k, side, q)?))
     }
 
     /// The contacts' curve parameters.

@@ -8,7 +8,7 @@
 //! the follower (0, N) with no couple about the contact point.
 
 use mechdyn::engine::Deadline;
-use mechdyn::engine::kinetostatics::{Outputs, solve};
+use mechdyn::engine::kinetostatics::{Outputs, contact_state, solve};
 use mechdyn::engine::samples::eccentric_cam;
 
 #[test]
@@ -44,7 +44,10 @@ fn an_eccentric_cam_under_a_flat_follower_is_a_scotch_yoke() {
 /// the follower slides on the cam at ω(R − e cos θ) along the face, so the
 /// friction μN acts on it against that (−x), on the cam at the contact
 /// (R − e cos θ above O): the torque is N(e sin θ + μ(R − e cos θ)), the
-/// normal force unchanged (the guide takes the friction), 1e-9.
+/// normal force unchanged (the guide takes the friction), 1e-9. The
+/// contact's state says the same: at (e sin θ, R − e cos θ), normal N,
+/// tangential −μN, sliding ω(R − e cos θ), radii [R, straight], pressure
+/// angle 0 (a flat-faced follower).
 #[test]
 fn contact_friction_adds_mu_n_at_the_contact_to_the_torque() {
     let (r, e, m, g, w, mu) = (0.05, 0.02, 2.0, 9.81, 10.0, 0.1);
@@ -52,12 +55,20 @@ fn contact_friction_adds_mu_n_at_the_contact_to_the_torque() {
     mechanism.joints[2].friction = Some(mechdyn::engine::model::Friction { mu, radius: 0.0 });
     let angles: Vec<f64> = (0..12).map(|k| 0.1 + 0.5 * f64::from(k)).collect();
     let positions: Vec<Vec<[f64; 3]>> = angles.iter().map(|&a| vec![[a, w, 0.0]]).collect();
-    let outputs = Outputs { driving: true, reactions: true, reduced: false, kinematics: false, condition: false };
+    let outputs = Outputs { driving: true, reactions: true, reduced: false, kinematics: true, condition: false };
     let solution = solve(&mechanism, &[], &positions, outputs, &Deadline::none()).unwrap();
     for (theta, step) in angles.iter().zip(&solution.steps) {
         let (s, c) = theta.sin_cos();
         let n = m * (g + e * w * w * c);
         let torque = n * (e * s + mu * (r - e * c));
+        let k = step.kinematics.as_ref().unwrap();
+        let state = contact_state(&mechanism, &k.q, &k.qd, &step.reactions[2]).unwrap();
+        let near = |a: f64, b: f64, scale: f64| (a - b).abs() < 1e-9 * scale;
+        assert!(near(state.point[0], e * s, e) && near(state.point[1], r - e * c, e), "{state:?}");
+        assert!(near(state.normal, n, m * g) && near(state.tangential, -mu * n, m * g), "{state:?}");
+        assert!(near(state.sliding_velocity, w * (r - e * c), w * r), "{state:?}");
+        assert!(near(state.curvature_radius[0].unwrap(), r, r) && state.curvature_radius[1].is_none(), "{state:?}");
+        assert!(state.pressure_angle.unwrap() < 1e-9, "a flat follower's pressure angle is 0: {state:?}");
         assert!((step.driving[0] - torque).abs() < 1e-9 * m * g * r, "θ = {theta}: {} vs {torque}", step.driving[0]);
         let contact = &step.reactions[2];
         assert!((contact.fx + mu * n).abs() < 1e-9 * m * g && (contact.fy - n).abs() < 1e-9 * m * g, "{contact:?}");
@@ -212,5 +223,39 @@ fn a_disk_rolls_down_an_incline_at_two_thirds_g_sin_alpha() {
         let (tangential, normal) = (f.fx * d[0] + f.fy * d[1], f.fx * n[0] + f.fy * n[1]);
         assert!((tangential + m * g * sa / 3.0).abs() < 1e-7 * m * g, "t = {t}: friction {tangential}");
         assert!((normal - m * g * ca).abs() < 1e-7 * m * g, "t = {t}: normal {normal}");
+        let motion = detail.motion.as_ref().unwrap();
+        let state = contact_state(&problem.mechanism, &motion.q, &motion.qd, f).unwrap();
+        assert!((state.normal - m * g * ca).abs() < 1e-7 * m * g, "pressing: {state:?}");
+        assert!((state.tangential + m * g * sa / 3.0).abs() < 1e-7 * m * g, "{state:?}");
+        assert!(state.sliding_velocity.abs() < 1e-7 * a, "rolling, not sliding: {state:?}");
+    }
+}
+
+/// The eccentric cam under a radial roller follower (roller ρ = 0.015 m):
+/// the contact normal is the line of centres, so the pressure angle is
+/// asin(e sin θ/(R + ρ)) — the disk's centre e sin θ off the follower's
+/// line, R + ρ from the roller's centre (1e-9).
+#[test]
+fn a_roller_follower_s_pressure_angle_is_that_of_the_line_of_centres() {
+    use mechdyn::engine::curves::Curve;
+    use mechdyn::engine::model::{Contact, JointKind};
+    let (r, e, rho, w) = (0.05, 0.02, 0.015, 10.0);
+    let mut mechanism = eccentric_cam();
+    let curves = [
+        Curve::Circle { centre: [0.0, -e], radius: r, inside: false },
+        Curve::Circle { centre: [0.0, r - e + rho], radius: rho, inside: false },
+    ];
+    mechanism.joints[2].kind = JointKind::Contact(Box::new(Contact::new(curves, false, [0.0, r - e])));
+    let angles: Vec<f64> = (0..12).map(|k| 0.1 + 0.5 * f64::from(k)).collect();
+    let positions: Vec<Vec<[f64; 3]>> = angles.iter().map(|&a| vec![[a, w, 0.0]]).collect();
+    let outputs = Outputs { driving: true, reactions: true, reduced: false, kinematics: true, condition: false };
+    let solution = solve(&mechanism, &[], &positions, outputs, &Deadline::none()).unwrap();
+    for (theta, step) in angles.iter().zip(&solution.steps) {
+        let k = step.kinematics.as_ref().unwrap();
+        let state = contact_state(&mechanism, &k.q, &k.qd, &step.reactions[2]).unwrap();
+        let want = (e * theta.sin() / (r + rho)).asin().abs();
+        let got = state.pressure_angle.unwrap();
+        assert!((got - want).abs() < 1e-9, "θ = {theta}: {got} vs {want}");
+        assert!(state.normal > 0.0, "the follower presses on the cam: {state:?}");
     }
 }

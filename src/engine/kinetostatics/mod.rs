@@ -15,11 +15,13 @@
 
 mod actions;
 mod actuators;
+mod contacts;
 mod friction;
 mod loads;
 mod summary;
 
 pub use actions::reactions;
+pub use contacts::{ContactState, contact_state};
 pub use loads::{
     Energy, Load, applied_forces, applied_forces_into, energy, point_acceleration, point_motion, potential,
 };

@@ -1,0 +1,105 @@
+//! What a contact does at a position, as a higher pair's questions ask it:
+//! where the curves touch, the normal and tangential parts of the reaction,
+//! the sliding velocity, each curve's radius of curvature there and, for a
+//! follower, the pressure angle.
+//!
+//! Symbols: t the common unit tangent (the second curve's, or the first's
+//! where the second is a point), n the normal pointing from the first body
+//! into the second (out of the first curve where it is closed — into it
+//! for `inside` — else into the second curve where that is closed, else
+//! towards the second body's centre of mass); N = F·n with F the force on
+//! the second body (N ≥ 0: they press on each other), F_t = F·t; the
+//! sliding velocity (v₂ − v₁)·t of the two material points at the contact.
+
+use super::Reaction;
+use super::loads::point_motion;
+use crate::engine::curves::Curve;
+use crate::engine::model::{BodyId, JointKind, Mechanism, dot, perp, rotate};
+
+/// A contact at one position.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactState {
+    pub joint: usize,
+    /// Where the curves touch (ground frame).
+    pub point: [f64; 2],
+    pub normal: f64,
+    pub tangential: f64,
+    pub sliding_velocity: f64,
+    /// 1/κ of each curve there, signed as the curve turns (None: straight, or a point).
+    pub curvature_radius: [Option<f64>; 2],
+    /// The angle between the contact normal and the velocity of the
+    /// follower's point there, where the second body turns or slides on
+    /// the ground (rad, 0 to π/2; None otherwise or where it does not move).
+    pub pressure_angle: Option<f64>,
+}
+
+/// The state of contact joint `r.joint` at (q, q̇) with its reaction `r`.
+pub fn contact_state(m: &Mechanism, q: &[f64], qd: &[f64], r: &Reaction) -> Option<ContactState> {
+    let k = r.joint;
+    let JointKind::Contact(c) = &m.joints[k].kind else { return None };
+    let [i, j] = m.joints[k].bodies;
+    let t = m.contact_tangent(k, q)?;
+    let at = |b: BodyId| m.contact_point(k, b, q);
+    let ((point, v2), (_, v1)) = (point_motion(m, q, qd, (j, at(j)?)), point_motion(m, q, qd, (i, at(i)?)));
+    let n = normal_direction(m, q, (k, [i, j]), t, point, &c.curves);
+    let f = [r.fx, r.fy];
+    let radius = |side: usize| {
+        let kappa = c.curves[side].at(m.contact_parameter(k, side, q)?).curvature();
+        (kappa != 0.0).then(|| 1.0 / kappa)
+    };
+    Some(ContactState {
+        joint: k,
+        point,
+        normal: dot(f, n),
+        tangential: dot(f, t),
+        sliding_velocity: dot([v2[0] - v1[0], v2[1] - v1[1]], t),
+        curvature_radius: [radius(0), radius(1)],
+        pressure_angle: follower(m, j).then(|| pressure_angle(n, v2)).flatten(),
+    })
+}
+
+/// n from the first body into the second (see the module's symbols).
+fn normal_direction(
+    m: &Mechanism,
+    q: &[f64],
+    (k, [i, j]): (usize, [BodyId; 2]),
+    t: [f64; 2],
+    point: [f64; 2],
+    curves: &[Curve; 2],
+) -> [f64; 2] {
+    let left = perp(t);
+    // The tangent t is the second curve's unless it is a point; flip it into each curve's own direction.
+    let along = |side: usize, b: BodyId| {
+        let u = m.contact_parameter(k, side, q).unwrap_or(0.0);
+        let theta = m.column(b).map_or(0.0, |col| q[col + 2]);
+        let own = rotate(theta, curves[side].at(u).d1);
+        if dot(own, t) >= 0.0 { 1.0 } else { -1.0 }
+    };
+    let inside = |c: &Curve| if matches!(c, Curve::Circle { inside: true, .. }) { -1.0 } else { 1.0 };
+    let sign = if let Some(o) = curves[0].orientation() {
+        // Out of the first curve: −perp(t′) for a counter-clockwise t′.
+        -o * along(0, i) * inside(&curves[0])
+    } else if let Some(o) = curves[1].orientation() {
+        // Into the second curve: perp(t′) for a counter-clockwise t′.
+        o * along(1, j) * inside(&curves[1])
+    } else {
+        let g = m.column(j).map_or(point, |col| [q[col], q[col + 1]]);
+        if dot(left, [g[0] - point[0], g[1] - point[1]]) >= 0.0 { 1.0 } else { -1.0 }
+    };
+    [sign * left[0], sign * left[1]]
+}
+
+/// The second body turns or slides on the ground (a follower).
+fn follower(m: &Mechanism, b: BodyId) -> bool {
+    m.joints.iter().any(|joint| {
+        joint.bodies.contains(&0)
+            && joint.bodies.contains(&b)
+            && matches!(joint.kind, JointKind::Revolute | JointKind::Prismatic { .. })
+    })
+}
+
+/// The angle between the normal line and the velocity v (0 to π/2).
+fn pressure_angle(n: [f64; 2], v: [f64; 2]) -> Option<f64> {
+    let speed = v[0].hypot(v[1]);
+    (speed > 0.0).then(|| (dot(n, v).abs() / speed).clamp(0.0, 1.0).acos())
+}
