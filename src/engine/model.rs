@@ -208,8 +208,7 @@ impl Mechanism {
     /// 1 the second's) at q (0 for a point); None for another joint.
     pub fn contact_parameter(&self, k: usize, side: usize, q: &[f64]) -> Option<f64> {
         let JointKind::Contact(c) = &self.joints[k].kind else { return None };
-        let before: usize =
-            self.joints[..k].iter().map(|j| if let JointKind::Contact(c) = &j.kind { c.parameters() } else { 0 }).sum();
+        let before: usize = self.joints[..k].iter().map(|j| parameters_of(&j.kind)).sum();
         let column =
             self.n_body_coordinates() + before + usize::from(side == 1 && c.curves[0].domain() != Domain::None);
         Some(if c.curves[side].domain() == Domain::None { 0.0 } else { q[column] })
@@ -224,7 +223,7 @@ impl Mechanism {
 
     /// The contacts' curve parameters.
     pub fn n_parameters(&self) -> usize {
-        self.joints.iter().map(|j| if let JointKind::Contact(c) = &j.kind { c.parameters() } else { 0 }).sum()
+        self.joints.iter().map(|j| parameters_of(&j.kind)).sum()
     }
 
     /// Coordinate k's entry of the mass matrix M = diag(m, m, I_G, …, 0 for
@@ -314,6 +313,11 @@ pub struct Grubler {
     pub mobility: i64,
     pub equations: i64,
     pub unknowns: i64,
+}
+
+/// The curve parameters a joint adds as coordinates (a contact's).
+fn parameters_of(kind: &JointKind) -> usize {
+    if let JointKind::Contact(c) = kind { c.parameters() } else { 0 }
 }
 
 /// A(θ)·s.
