@@ -9,6 +9,7 @@
 //! signed curvature κ = (r′ × r″)/|r′|³, positive where the curve turns
 //! to the left of its tangent (a circle run counter-clockwise: 1/R).
 
+use super::cam::Program;
 use super::function::{Function, Side};
 use super::numeric::plane::{cross, perp};
 use super::numeric::quadrature::integrate;
@@ -139,6 +140,19 @@ pub enum Curve {
         radius: Box<[Function; 4]>,
     },
     Spline(Spline),
+    /// A disk cam's profile for a flat-faced translating follower whose axis
+    /// runs through `centre` at angle `zero` (as drawn), its face square to
+    /// it at distance `base` + s: the envelope of the faces. At the cam's
+    /// angle u (from +x, counter-clockwise, in the cam), the follower's axis
+    /// lies at u when the cam has turned by `zero` − u, so the face's
+    /// distance is P(u) = base + s(zero − u) and the profile is
+    /// r = c + P e + P′ e⊥ (e = (cos u, sin u), e⊥ = perp(e)).
+    Cam {
+        centre: [f64; 2],
+        zero: f64,
+        base: f64,
+        program: Box<Program>,
+    },
 }
 
 impl Curve {
@@ -154,7 +168,7 @@ impl Curve {
         match self {
             Curve::Point(_) => Domain::None,
             Curve::Line { .. } => Domain::Unbounded,
-            Curve::Circle { .. } | Curve::Polar { .. } => Domain::Periodic(TAU),
+            Curve::Circle { .. } | Curve::Polar { .. } | Curve::Cam { .. } => Domain::Periodic(TAU),
             Curve::Spline(s) if s.closed => Domain::Periodic(s.segments() as f64),
             Curve::Spline(s) => Domain::Interval(0.0, s.segments() as f64),
         }
@@ -192,6 +206,22 @@ impl Curve {
                 }
             }
             Curve::Spline(s) => s.at(u),
+            Curve::Cam { centre: c, zero, base, program } => {
+                // P^(k)(u) = (−1)^k s^(k)(zero − u); r = P e + P′ e⊥ and, with e⊥′ = −e:
+                // r′ = (P + P″) e⊥, r″ = (P′ + P‴) e⊥ − (P + P″) e, r‴ = (P⁗ − P) e⊥ − 2(P′ + P‴) e.
+                let s = program.eval(zero - u);
+                let p = [base + s[0], -s[1], s[2], -s[3], s[4]];
+                let (sn, co) = u.sin_cos();
+                let (e, f) = ([co, sn], [-sn, co]);
+                let comb = |a: f64, b: f64| [a * e[0] + b * f[0], a * e[1] + b * f[1]];
+                let r = comb(p[0], p[1]);
+                Local {
+                    r: [c[0] + r[0], c[1] + r[1]],
+                    d1: comb(0.0, p[0] + p[2]),
+                    d2: comb(-(p[0] + p[2]), p[1] + p[3]),
+                    d3: comb(-2.0 * (p[1] + p[3]), p[4] - p[0]),
+                }
+            }
         }
     }
 
@@ -201,7 +231,7 @@ impl Curve {
     /// counter-clockwise; a closed spline's as its points are drawn.
     pub fn orientation(&self) -> Option<f64> {
         match self {
-            Curve::Circle { .. } | Curve::Polar { .. } => Some(1.0),
+            Curve::Circle { .. } | Curve::Polar { .. } | Curve::Cam { .. } => Some(1.0),
             Curve::Spline(s) if s.closed => {
                 let n = s.points.len();
                 let area: f64 = (0..n).map(|k| cross(s.points[k], s.points[(k + 1) % n])).sum();
@@ -225,7 +255,9 @@ impl Curve {
             Curve::Point(_) => 0.0,
             Curve::Line { .. } => u,
             Curve::Circle { radius, .. } => radius * u,
-            Curve::Polar { .. } | Curve::Spline(_) => integrate(|v| self.speed(v), 0.0, u, 0.0, 1e-13, 20_000).value,
+            Curve::Polar { .. } | Curve::Spline(_) | Curve::Cam { .. } => {
+                integrate(|v| self.speed(v), 0.0, u, 0.0, 1e-13, 20_000).value
+            }
         }
     }
 
@@ -284,6 +316,15 @@ mod tests {
         Function::Expr(Expr::compile(text, &["phi"]).unwrap())
     }
 
+    /// A cam whose follower's axis is at π/2: a cycloidal rise of 10 mm
+    /// over [0, π] of the program, a return over [π, 2π]; base 40 mm.
+    fn cam() -> Curve {
+        use crate::engine::cam::{Law, Program, Segment};
+        let seg = |start: f64, from, to| Segment { law: Law::Cycloidal, start, span: std::f64::consts::PI, from, to };
+        let program = Program::new(vec![seg(0.0, 0.0, 0.01), seg(std::f64::consts::PI, 0.01, 0.0)]).unwrap();
+        Curve::Cam { centre: [0.0, 0.0], zero: std::f64::consts::FRAC_PI_2, base: 0.04, program: Box::new(program) }
+    }
+
     fn curves() -> Vec<(&'static str, Curve, f64)> {
         let circle: Vec<[f64; 2]> =
             (0..12).map(|k| (TAU * f64::from(k) / 12.0).sin_cos()).map(|(s, c)| [c, s]).collect();
@@ -299,6 +340,7 @@ mod tests {
             ),
             ("closed spline", Curve::Spline(Spline::new(circle, true).unwrap()), 4.3),
             ("open spline", Curve::Spline(Spline::new(wavy, false).unwrap()), 2.6),
+            ("cam for a flat follower (a cycloidal rise under u)", cam(), 0.9),
         ]
     }
 

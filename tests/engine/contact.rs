@@ -259,3 +259,42 @@ fn a_roller_follower_s_pressure_angle_is_that_of_the_line_of_centres() {
         assert!(state.normal > 0.0, "the follower presses on the cam: {state:?}");
     }
 }
+
+/// A cam designed from its program (dwell 90°, cycloidal rise of 10 mm over
+/// 90°, dwell, cycloidal return; base radius 40 mm) under the flat-faced
+/// follower it was designed for: turned by φ, the cam lifts the follower by
+/// s(φ) exactly, and its radius of curvature at the contact is
+/// R_b + s + s″ (the flat follower's closed form), the pressure angle 0
+/// (1e-9 of the lift).
+#[test]
+fn a_cam_made_from_its_program_lifts_its_flat_follower_by_the_program() {
+    use mechdyn::engine::cam::{Law, Program, Segment};
+    use mechdyn::engine::curves::Curve;
+    use mechdyn::engine::model::{Contact, JointKind};
+    use std::f64::consts::FRAC_PI_2 as Q;
+    let (base, h) = (0.04, 0.01);
+    let seg = |law, start: f64, from, to| Segment { law, start, span: Q, from, to };
+    let program = Program::new(vec![
+        seg(Law::Dwell, 0.0, 0.0, 0.0),
+        seg(Law::Cycloidal, Q, 0.0, h),
+        seg(Law::Dwell, 2.0 * Q, h, h),
+        seg(Law::Cycloidal, 3.0 * Q, h, 0.0),
+    ])
+    .unwrap();
+    let mut mechanism = eccentric_cam();
+    let cam = Curve::Cam { centre: [0.0, 0.0], zero: Q, base, program: Box::new(program.clone()) };
+    let face = Curve::Line { at: [0.0, base], direction: [1.0, 0.0] };
+    mechanism.joints[2].kind = JointKind::Contact(Box::new(Contact::new([cam, face], false, [0.0, base])));
+    let angles: Vec<f64> = (0..72).map(|k| 0.087 * f64::from(k)).collect();
+    let positions: Vec<Vec<[f64; 3]>> = angles.iter().map(|&a| vec![[a, 10.0, 0.0]]).collect();
+    let outputs = Outputs { driving: true, reactions: true, reduced: false, kinematics: true, condition: false };
+    let solution = solve(&mechanism, &[], &positions, outputs, &Deadline::none()).unwrap();
+    for (phi, step) in angles.iter().zip(&solution.steps) {
+        let [s, _, s2, ..] = program.eval(*phi);
+        let k = step.kinematics.as_ref().unwrap();
+        assert!((k.q[4] - 0.1 - s).abs() < 1e-9 * h, "φ = {phi}: lift {} vs {s}", k.q[4] - 0.1);
+        let state = contact_state(&mechanism, &k.q, &k.qd, &step.reactions[2]).unwrap();
+        let rho = state.curvature_radius[0].unwrap();
+        assert!((rho - (base + s + s2)).abs() < 1e-9 * base, "φ = {phi}: ρ {rho} vs {}", base + s + s2);
+    }
+}

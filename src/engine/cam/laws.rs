@@ -1,6 +1,7 @@
 //! The textbook follower motion laws, in normalized form: over a segment's
 //! fraction x ∈ [0, 1] of its cam angle, the fraction y(x) ∈ [0, 1] of its
-//! lift, with y′, y″ and y‴ (d/dx) — all in closed form.
+//! lift, with y′, y″, y‴ and y⁗ (d/dx) — all in closed form (the fourth,
+//! the snap, for a cam profile's third derivative).
 //!
 //! Symbols: x = (θ − θ₀)/β the fraction of the segment's span β, y the
 //! fraction of its lift h; the follower's s = s₀ + h·y, and its
@@ -33,18 +34,18 @@ pub enum Law {
 }
 
 impl Law {
-    /// [y, y′, y″, y‴] at x (clamped to [0, 1]).
-    pub fn eval(self, x: f64) -> [f64; 4] {
+    /// [y, y′, y″, y‴, y⁗] at x (clamped to [0, 1]).
+    pub fn eval(self, x: f64) -> [f64; 5] {
         let x = x.clamp(0.0, 1.0);
         match self {
-            Law::Dwell => [0.0; 4],
+            Law::Dwell => [0.0; 5],
             Law::Harmonic => {
                 let (s, c) = (PI * x).sin_cos();
-                [(1.0 - c) / 2.0, PI / 2.0 * s, PI * PI / 2.0 * c, -PI.powi(3) / 2.0 * s]
+                [(1.0 - c) / 2.0, PI / 2.0 * s, PI * PI / 2.0 * c, -PI.powi(3) / 2.0 * s, -PI.powi(4) / 2.0 * c]
             }
             Law::Cycloidal => {
                 let (s, c) = (2.0 * PI * x).sin_cos();
-                [x - s / (2.0 * PI), 1.0 - c, 2.0 * PI * s, 4.0 * PI * PI * c]
+                [x - s / (2.0 * PI), 1.0 - c, 2.0 * PI * s, 4.0 * PI * PI * c, -8.0 * PI.powi(3) * s]
             }
             Law::Poly345 => polynomial(&[0.0, 0.0, 0.0, 10.0, -15.0, 6.0], x),
             Law::Poly4567 => polynomial(&[0.0, 0.0, 0.0, 0.0, 35.0, -84.0, 70.0, -20.0], x),
@@ -60,20 +61,20 @@ impl Law {
     }
 }
 
-/// Σ c_k x^k and its first three derivatives.
-fn polynomial(c: &[f64], x: f64) -> [f64; 4] {
-    let mut out = [0.0; 4];
+/// Σ c_k x^k and its first four derivatives.
+fn polynomial(c: &[f64], x: f64) -> [f64; 5] {
+    let mut out = [0.0; 5];
     for (k, &ck) in c.iter().enumerate() {
         let k = k as i32;
-        out[0] += ck * x.powi(k);
-        if k >= 1 {
-            out[1] += ck * f64::from(k) * x.powi(k - 1);
-        }
-        if k >= 2 {
-            out[2] += ck * f64::from(k * (k - 1)) * x.powi(k - 2);
-        }
-        if k >= 3 {
-            out[3] += ck * f64::from(k * (k - 1) * (k - 2)) * x.powi(k - 3);
+        // d^d/dx^d x^k = k(k−1)…(k−d+1) x^(k−d).
+        let mut falling = 1;
+        for (d, o) in out.iter_mut().enumerate() {
+            let d = d as i32;
+            if d > k {
+                break;
+            }
+            *o += ck * f64::from(falling) * x.powi(k - d);
+            falling *= k - d;
         }
     }
     out
@@ -112,11 +113,11 @@ const MODIFIED_TRAPEZOID: [Piece; 5] = [
 ];
 
 impl Piece {
-    /// [y, y′, y″, y‴] at t from the piece's start, given y and y′ there.
-    fn at(&self, t: f64, [y0, v0]: [f64; 2]) -> [f64; 4] {
+    /// [y, y′, y″, y‴, y⁗] at t from the piece's start, given y and y′ there.
+    fn at(&self, t: f64, [y0, v0]: [f64; 2]) -> [f64; 5] {
         let Piece { k, a, b, c, .. } = *self;
         if k == 0.0 {
-            return [y0 + v0 * t + c * t * t / 2.0, v0 + c * t, c, 0.0];
+            return [y0 + v0 * t + c * t * t / 2.0, v0 + c * t, c, 0.0, 0.0];
         }
         let (s, co) = (k * t).sin_cos();
         [
@@ -124,13 +125,14 @@ impl Piece {
             v0 + a * (1.0 - co) / k + b * s / k + c * t,
             a * s + b * co + c,
             a * k * co - b * k * s,
+            -k * k * (a * s + b * co),
         ]
     }
 }
 
 /// [y, y′, y″, y‴] of a law given by its pulses, integrated exactly from
 /// rest at 0 and scaled to y(1) = 1.
-fn pulses(pieces: &[Piece], x: f64) -> [f64; 4] {
+fn pulses(pieces: &[Piece], x: f64) -> [f64; 5] {
     let raw = |x: f64| {
         let mut state = [0.0, 0.0];
         for (i, p) in pieces.iter().enumerate() {
@@ -168,7 +170,7 @@ mod tests {
             let h = 1e-6;
             for x in [0.05, 0.2, 0.33, 0.5, 0.7, 0.93] {
                 let (p, m, at) = (law.eval(x + h), law.eval(x - h), law.eval(x));
-                for d in 0..3 {
+                for d in 0..4 {
                     let fd = (p[d] - m[d]) / (2.0 * h);
                     assert!((fd - at[d + 1]).abs() < 1e-6 * (1.0 + at[d + 1].abs()), "{law:?} at {x}: d{d}");
                 }
@@ -196,7 +198,7 @@ mod tests {
         for (law, v, a) in printed {
             let (mut vmax, mut amax) = (0.0f64, 0.0f64);
             for k in 0..=100_000 {
-                let [_, dv, da, _] = law.eval(f64::from(k) / 100_000.0);
+                let [_, dv, da, ..] = law.eval(f64::from(k) / 100_000.0);
                 (vmax, amax) = (vmax.max(dv.abs()), amax.max(da.abs()));
             }
             assert!((vmax - v).abs() < 6e-5, "{law:?}: peak y′ {vmax} vs {v}");

@@ -24,11 +24,16 @@ pub struct Segment {
 }
 
 impl Segment {
-    /// [s, s′, s″, s‴] at θ within the segment.
-    pub fn eval(&self, theta: f64) -> [f64; 4] {
-        let [y, dy, ddy, dddy] = self.law.eval((theta - self.start) / self.span);
+    /// [s, s′, s″, s‴, s⁗] at θ within the segment.
+    pub fn eval(&self, theta: f64) -> [f64; 5] {
+        let y = self.law.eval((theta - self.start) / self.span);
         let h = self.to - self.from;
-        [self.from + h * y, h * dy / self.span, h * ddy / self.span.powi(2), h * dddy / self.span.powi(3)]
+        let mut out = [0.0; 5];
+        for (d, o) in out.iter_mut().enumerate() {
+            *o = h * y[d] / self.span.powi(d as i32);
+        }
+        out[0] += self.from;
+        out
     }
 }
 
@@ -106,8 +111,8 @@ impl Program {
         self.segments.iter().rposition(|s| s.start <= theta).unwrap_or(0)
     }
 
-    /// [s, s′, s″, s‴] at θ (any angle: the program repeats every turn).
-    pub fn eval(&self, theta: f64) -> [f64; 4] {
+    /// [s, s′, s″, s‴, s⁗] at θ (any angle: the program repeats every turn).
+    pub fn eval(&self, theta: f64) -> [f64; 5] {
         let theta = theta.rem_euclid(TAU);
         self.segments[self.segment_at(theta)].eval(theta)
     }
