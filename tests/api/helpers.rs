@@ -104,6 +104,13 @@ impl TestApp {
         self.post_raw(path, "application/json", body.to_string()).await
     }
 
+    /// The pointers of a POST's 422 errors, in order (asserting the 422).
+    pub async fn pointers(&self, path: &str, body: &Value) -> Vec<String> {
+        let r = self.post(path, body).await;
+        assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+        r.json()["errors"].as_array().unwrap().iter().map(|e| e["pointer"].as_str().unwrap().to_string()).collect()
+    }
+
     pub async fn get(&self, path: &str) -> Reply {
         self.send(Request::get(path).body(Body::empty()).unwrap()).await
     }

@@ -71,13 +71,6 @@ async fn the_bar_on_a_slider_has_the_printed_kinetic_energy() {
     assert!((other - printed(-0.5, 3.0)).abs() < 1e-12, "{other} vs {}", printed(-0.5, 3.0));
 }
 
-/// The pointers of a 422's errors.
-async fn pointers(app: &TestApp, body: &Value) -> Vec<String> {
-    let r = app.post("/v1/kinetostatics", body).await;
-    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
-    r.json()["errors"].as_array().unwrap().iter().map(|e| e["pointer"].as_str().unwrap().to_string()).collect()
-}
-
 /// Inputs that cannot be: each a 422 at its field — an unknown point, a
 /// point on no body (drawn, but no joint or centre of mass is there), a
 /// point pinned to the ground, no direction, a joint and a body at once, an actuator that is not a revolute or
@@ -111,11 +104,11 @@ async fn inputs_that_cannot_be_are_refused_at_their_field() {
         (with(point("C"), json!(["piston", "D"])), vec!["/actuators"]),
     ];
     for (body, expected) in cases {
-        assert_eq!(pointers(&app, &body).await, expected, "{}", body["input"]);
+        assert_eq!(app.pointers("/v1/kinetostatics", &body).await, expected, "{}", body["input"]);
     }
     let mut twice = template(&app, "bar-on-slider").await;
     twice["actuators"] = json!(["guide", "guide"]);
-    assert_eq!(pointers(&app, &twice).await, ["/actuators/1"]);
+    assert_eq!(app.pointers("/v1/kinetostatics", &twice).await, ["/actuators/1"]);
 }
 
 /// A pendulum on a free cart, integrated with the cart's prismatic joint

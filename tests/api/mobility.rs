@@ -12,12 +12,6 @@ async fn mobility(app: &TestApp, body: &Value) -> Value {
     r.json()["result"].clone()
 }
 
-async fn pointers(app: &TestApp, body: &Value) -> Vec<String> {
-    let r = app.post("/v1/mobility", body).await;
-    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
-    r.json()["errors"].as_array().unwrap().iter().map(|e| e["pointer"].as_str().unwrap().to_string()).collect()
-}
-
 /// Seed 002, question 1 (the document's example): five links, five lower
 /// pairs and one higher pair in the plane, 3(5 − 1) − 2·5 − 1 = 1 (the
 /// seed's answer). In space, four links of four revolutes (Bennett's
@@ -95,14 +89,14 @@ async fn a_five_bar_needs_two_inputs() {
 #[tokio::test]
 async fn mobility_errors_point_at_the_field() {
     let app = TestApp::new().await;
-    assert_eq!(pointers(&app, &json!({})).await, [""]);
+    assert_eq!(app.pointers("/v1/mobility", &json!({})).await, [""]);
     let counts = json!({"space": "planar", "bodies": 0, "pairs": {"I": 1, "III": 1, "X": 2}});
-    let got = pointers(&app, &json!({"counts": counts})).await;
+    let got = app.pointers("/v1/mobility", &json!({"counts": counts})).await;
     assert_eq!(got, ["/counts/bodies", "/counts/pairs/III", "/counts/pairs/X"]);
     let both =
         json!({"counts": {"space": "spatial", "bodies": 2, "pairs": {}}, "mechanism": {"bodies": [], "joints": []}});
-    assert_eq!(pointers(&app, &both).await, [""]);
+    assert_eq!(app.pointers("/v1/mobility", &both).await, [""]);
     let unknown = json!({"mechanism": {"bodies": [bar("a")], "joints": [pin("O", "ground", "b", [0.0, 0.0])]}});
-    let got = pointers(&app, &unknown).await;
+    let got = app.pointers("/v1/mobility", &unknown).await;
     assert!(got.iter().all(|p| p.starts_with("/mechanism/joints/0")), "{got:?}");
 }

@@ -53,12 +53,6 @@ impl Law {
             Law::ModifiedTrapezoid => pulses(&MODIFIED_TRAPEZOID, x),
         }
     }
-
-    /// [y″(0), y″(1)]: zero but for the harmonic law (±π²/2), whose ends
-    /// break the fundamental law of cam design against a dwell.
-    pub fn acceleration_at_ends(self) -> [f64; 2] {
-        [self.eval(0.0)[2], self.eval(1.0)[2]]
-    }
 }
 
 /// Σ c_k x^k and its first four derivatives.
@@ -211,7 +205,7 @@ mod tests {
     #[test]
     fn only_the_harmonic_law_breaks_the_acceleration_at_its_ends() {
         for law in LAWS {
-            let [a0, a1] = law.acceleration_at_ends();
+            let [a0, a1] = [law.eval(0.0)[2], law.eval(1.0)[2]];
             if law == Law::Harmonic {
                 assert!((a0 - PI * PI / 2.0).abs() < 1e-12 && (a1 + PI * PI / 2.0).abs() < 1e-12);
             } else {
