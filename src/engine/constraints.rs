@@ -219,13 +219,15 @@ impl<J: Jacobian> Builder<'_, '_, J> {
     }
 
     /// Row c_k(q) − target, c_k joint k's coordinate: its relative rotation
-    /// (revolute) or its displacement along the axis (prismatic).
+    /// (revolute), its displacement along the axis (prismatic), or the arc
+    /// length run along its first curve (contact).
     fn joint_coordinate(&mut self, row: usize, k: usize, target: f64) {
         let m = self.m;
         let joint = &m.joints[k];
         let [i, j] = joint.bodies;
         match &joint.kind {
             JointKind::Prismatic { axis } => self.projection(row, joint.bodies, joint.at, *axis, target),
+            JointKind::Contact(c) => self.contact_arc(row, k, c, target),
             _ => self.angles(row, &[(j, 1.0), (i, -1.0)], target),
         }
     }

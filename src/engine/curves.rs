@@ -134,9 +134,11 @@ pub enum Curve {
         radius: f64,
         inside: bool,
     },
-    /// r(ψ) = c + ρ(ψ)(cos ψ, sin ψ), ρ > 0 a Function of ψ and its three derivatives.
+    /// r(ψ) = c + ρ(ψ)(cos(ψ + ψ₀), sin(ψ + ψ₀)), ψ from the direction ψ₀
+    /// (`zero`, from +x as drawn), ρ > 0 a Function of ψ and its three derivatives.
     Polar {
         centre: [f64; 2],
+        zero: f64,
         radius: Box<[Function; 4]>,
     },
     Spline(Spline),
@@ -156,12 +158,13 @@ pub enum Curve {
 }
 
 impl Curve {
-    /// A polar curve r = ρ(ψ) about `centre`, its derivatives formed once.
-    pub fn polar(centre: [f64; 2], rho: Function) -> Self {
+    /// A polar curve r = ρ(ψ) about `centre`, ψ from the direction at angle
+    /// `zero` (rad, from +x), its derivatives formed once.
+    pub fn polar(centre: [f64; 2], zero: f64, rho: Function) -> Self {
         let d1 = rho.derivative();
         let d2 = d1.derivative();
         let d3 = d2.derivative();
-        Curve::Polar { centre, radius: Box::new([rho, d1, d2, d3]) }
+        Curve::Polar { centre, zero, radius: Box::new([rho, d1, d2, d3]) }
     }
 
     pub fn domain(&self) -> Domain {
@@ -191,10 +194,10 @@ impl Curve {
                     d3: [k * s, -k * co],
                 }
             }
-            Curve::Polar { centre: c, radius } => {
+            Curve::Polar { centre: c, zero, radius } => {
                 let [p0, p1, p2, p3] = radius.as_ref().each_ref().map(|f| f.eval(u, Side::Right));
-                let (s, co) = u.sin_cos();
-                // r = c + ρ e, e = (cos ψ, sin ψ), e′ = perp(e): Leibniz on ρ·e.
+                let (s, co) = (u + zero).sin_cos();
+                // r = c + ρ e, e = (cos(ψ + ψ₀), sin(ψ + ψ₀)), e′ = perp(e): Leibniz on ρ·e.
                 let (e, f) = ([co, s], [-s, co]);
                 let comb = |a: f64, b: f64| [a * e[0] + b * f[0], a * e[1] + b * f[1]];
                 let r = comb(p0, 0.0);
@@ -332,10 +335,10 @@ mod tests {
         vec![
             ("line", Curve::Line { at: [0.2, -0.1], direction: [0.6, 0.8] }, 0.7),
             ("circle", Curve::Circle { centre: [0.1, 0.2], radius: 0.05, inside: false }, 1.1),
-            ("polar ellipse-like", Curve::polar([0.0, 0.0], expr("0.04 + 0.01*cos(2*phi)")), 0.9),
+            ("polar ellipse-like, ψ from 0.3 rad", Curve::polar([0.0, 0.0], 0.3, expr("0.04 + 0.01*cos(2*phi)")), 0.9),
             (
                 "polar eccentric",
-                Curve::polar([0.0, 0.0], expr("0.03*cos(phi) + sqrt(0.05^2 - (0.03*sin(phi))^2)")),
+                Curve::polar([0.0, 0.0], 0.0, expr("0.03*cos(phi) + sqrt(0.05^2 - (0.03*sin(phi))^2)")),
                 2.3,
             ),
             ("closed spline", Curve::Spline(Spline::new(circle, true).unwrap()), 4.3),
@@ -368,7 +371,7 @@ mod tests {
     #[test]
     fn circles_have_curvature_one_over_their_radius() {
         let circle = Curve::Circle { centre: [0.0, 0.0], radius: 0.05, inside: false };
-        let constant = Curve::polar([0.0, 0.0], Function::Constant(0.05));
+        let constant = Curve::polar([0.0, 0.0], 0.0, Function::Constant(0.05));
         let eccentric = &curves()[3].1;
         for u in [0.0, 0.4, 1.9, 3.5, 5.0] {
             for c in [&circle, &constant, eccentric] {

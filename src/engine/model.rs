@@ -54,6 +54,11 @@ pub struct Contact {
     pub rolling: bool,
     /// Each curve's parameter where they touch as drawn (0 for a point).
     pub drawn: [f64; 2],
+    /// The body whose curve is a point is a particle (a ring threaded on a
+    /// rim, with no inertia and no other joint): its rotation, which nothing
+    /// determines, is held as drawn by one more row, and Grübler's count
+    /// leaves it out too.
+    pub particle: bool,
 }
 
 impl PartialEq for Contact {
@@ -70,13 +75,20 @@ impl Contact {
     pub fn new(curves: [Curve; 2], rolling: bool, at: [f64; 2]) -> Self {
         let drawn = curves.each_ref().map(|c| c.nearest_anywhere(at, 16).unwrap_or(0.0));
         let rolling = rolling && curves.iter().all(|c| c.domain() != Domain::None);
-        Self { curves, rolling, drawn }
+        Self { curves, rolling, drawn, particle: false }
     }
 
     /// Rows of its constraint equations: the coincidence (2), the common
-    /// tangent of two curves (1), equal arc lengths when rolling (1).
+    /// tangent of two curves (1), equal arc lengths when rolling (1), a
+    /// particle's rotation (1).
     pub fn rows(&self) -> usize {
-        2 + usize::from(self.parameters() == 2) + usize::from(self.rolling)
+        2 + usize::from(self.parameters() == 2) + usize::from(self.rolling) + usize::from(self.particle)
+    }
+
+    /// The side (0 the first body's curve, 1 the second's) of its first
+    /// curve with a parameter: the one whose arc length is the joint's coordinate.
+    pub fn measured_side(&self) -> Option<usize> {
+        (0..2).find(|&k| self.curves[k].domain() != Domain::None)
     }
 
     /// How many of its curves have a parameter (a point has none).
@@ -207,11 +219,18 @@ impl Mechanism {
     /// The parameter of contact joint k's curve `side` (0 the first body's,
     /// 1 the second's) at q (0 for a point); None for another joint.
     pub fn contact_parameter(&self, k: usize, side: usize, q: &[f64]) -> Option<f64> {
+        let JointKind::Contact(_) = &self.joints[k].kind else { return None };
+        Some(self.contact_column(k, side).map_or(0.0, |c| q[c]))
+    }
+
+    /// The column of contact joint k's curve parameter `side` (None for a
+    /// point, or another joint).
+    pub fn contact_column(&self, k: usize, side: usize) -> Option<usize> {
         let JointKind::Contact(c) = &self.joints[k].kind else { return None };
         let before: usize = self.joints[..k].iter().map(|j| parameters_of(&j.kind)).sum();
         let column =
             self.n_body_coordinates() + before + usize::from(side == 1 && c.curves[0].domain() != Domain::None);
-        Some(if c.curves[side].domain() == Domain::None { 0.0 } else { q[column] })
+        (c.curves[side].domain() != Domain::None).then_some(column)
     }
 
     /// Contact joint k's curve of body b at q: its point and derivatives.
@@ -273,10 +292,12 @@ impl Mechanism {
     }
 
     /// Grübler's count for a planar mechanism: G = 3(N − 1) − 2·P_I − P_II,
-    /// N counting the ground; P_I joints remove 2 freedoms, P_II joints 1.
+    /// N counting the ground (a particle counting 2, not 3); P_I joints
+    /// remove 2 freedoms, P_II joints 1.
     pub fn grubler(&self) -> Grubler {
         let [p1, p2] = self.pairs();
-        let equations = 3 * (self.bodies.len() as i64 - 1);
+        let particles = self.joints.iter().filter(|j| matches!(&j.kind, JointKind::Contact(c) if c.particle)).count();
+        let equations = 3 * (self.bodies.len() as i64 - 1) - particles as i64;
         let reactions = 2 * p1 + p2;
         Grubler { mobility: equations - reactions, equations, unknowns: reactions + self.drivers.len() as i64 }
     }
@@ -286,7 +307,7 @@ impl Mechanism {
     /// A coordinate is a length (a prismatic joint's, a point's), not an angle.
     pub fn is_length(&self, c: Coordinate) -> bool {
         match c {
-            Coordinate::Joint(k) => matches!(self.joints[k].kind, JointKind::Prismatic { .. }),
+            Coordinate::Joint(k) => matches!(self.joints[k].kind, JointKind::Prismatic { .. } | JointKind::Contact(_)),
             Coordinate::Point { .. } => true,
             Coordinate::Body(_) => false,
         }

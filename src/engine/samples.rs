@@ -308,3 +308,27 @@ pub fn elastic_pendulum() -> Mechanism {
         gravity: [0.0, -9.81],
     }
 }
+
+/// Seed 002 question 4: a disk of radius R = 0.1 m pinned at O, its centre
+/// C drawn d = 0.05 m to the right of O, and a ring P (0.5 kg, a particle)
+/// threaded on its rim, drawn at the rim's top (0.05, 0.1). Two inputs:
+/// the disk's rotation and the arc length the ring has run along the rim.
+pub fn ring_on_rim() -> Mechanism {
+    let (r, d) = (0.1, 0.05);
+    let rim = Curve::Circle { centre: [d, 0.0], radius: r, inside: false };
+    let mut contact = Contact::new([rim, Curve::Point([d, r])], false, [d, r]);
+    contact.particle = true;
+    Mechanism {
+        bodies: vec![
+            body("ground", 0.0, 0.0, [0.0, 0.0]),
+            body("disk", 2.0, 0.01, [d, 0.0]),
+            body("ring", 0.5, 0.0, [d, r]),
+        ],
+        joints: vec![
+            joint("O", JointKind::Revolute, [0, 1], [0.0, 0.0]),
+            joint("rim", JointKind::Contact(Box::new(contact)), [1, 2], [d, r]),
+        ],
+        drivers: vec![Driver::joint(0, 0.0), Driver::joint(1, 0.0)],
+        gravity: [0.0, 0.0],
+    }
+}

@@ -7,5 +7,6 @@ mod elliptic;
 mod free_body;
 mod kinetostatics;
 mod mechanism_dynamics;
+mod particle;
 mod rotor;
 mod stiff;

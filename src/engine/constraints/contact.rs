@@ -61,9 +61,32 @@ impl<J: Jacobian> Builder<'_, '_, J> {
         if c1.is_some() && c2.is_some() {
             self.tangency(row + 2, &one, &two);
         }
+        let mut next_row = row + 2 + usize::from(c1.is_some() && c2.is_some());
         if contact.rolling {
-            self.rolling(row + 3, contact, [&one, &two]);
+            self.rolling(next_row, contact, [&one, &two]);
+            next_row += 1;
         }
+        if contact.particle {
+            // The particle's rotation held as drawn: θ = 0.
+            let particle = if c1.is_none() { i } else { j };
+            self.angles(next_row, &[(particle, 1.0)], 0.0);
+        }
+    }
+
+    /// Row a(u) − a(u as drawn) − target: the arc length the contact point
+    /// has run along contact joint k's first curve with a parameter. With
+    /// d|c′|/du = c′·c″/|c′|, its second derivative's quadratic part is
+    /// (c′·c″/|c′|) u̇².
+    pub(super) fn contact_arc(&mut self, row: usize, k: usize, contact: &Contact, target: f64) {
+        let Some(side) = contact.measured_side() else { return };
+        let Some(column) = self.m.contact_column(k, side) else { return };
+        let curve = &contact.curves[side];
+        let (u, ud) = (self.s.q[column], self.s.qd.map_or(0.0, |qd| qd[column]));
+        let l = curve.at(u);
+        let speed = l.d1[0].hypot(l.d1[1]);
+        self.phi[row] = curve.arc(u) - curve.arc(contact.drawn[side]) - target;
+        self.jacobian.add_one(row, column, speed);
+        self.gamma[row] = -(l.d1[0] * l.d2[0] + l.d1[1] * l.d2[1]) / speed * ud * ud;
     }
 
     /// Row a₁(u₁) − σ a₂(u₂) − (a₁ − σ a₂ as drawn) = 0: a the arc length

@@ -2,8 +2,8 @@
 
 use super::*;
 use crate::engine::samples::{
-    actuated_arm, eccentric_cam, four_bar, offset_slider_crank, planetary_train, scissor_lift, scotch_yoke,
-    slider_crank, slotted_lever,
+    actuated_arm, eccentric_cam, four_bar, offset_slider_crank, planetary_train, ring_on_rim, scissor_lift,
+    scotch_yoke, slider_crank, slotted_lever,
 };
 
 /// The eccentric cam with a polar cam ρ = 0.04 + 0.005 cos ψ and a
@@ -16,7 +16,8 @@ fn polar_cam_and_roller() -> Mechanism {
     let mut m = eccentric_cam();
     if let JointKind::Contact(c) = &mut m.joints[2].kind {
         let rho = Function::Expr(Expr::compile("0.04 + 0.005*cos(phi)", &["phi"]).unwrap());
-        c.curves = [Curve::polar([0.0, 0.0], rho), Curve::Circle { centre: [0.0, 0.055], radius: 0.01, inside: false }];
+        c.curves =
+            [Curve::polar([0.0, 0.0], 0.0, rho), Curve::Circle { centre: [0.0, 0.055], radius: 0.01, inside: false }];
     }
     m
 }
@@ -44,6 +45,7 @@ fn cases() -> Vec<(&'static str, Mechanism, Vec<f64>, Vec<f64>)> {
         ("polar cam under a roller (two curved curves)", polar_cam_and_roller()),
         ("the eccentric cam rolling", rolling(eccentric_cam())),
         ("a polar cam rolling on a roller (arc lengths by quadrature)", rolling(polar_cam_and_roller())),
+        ("a ring on a rim (a particle; the arc length as an input)", ring_on_rim()),
     ];
     samples
         .into_iter()
