@@ -26,6 +26,7 @@ pub mod numeric;
 pub mod rotor;
 pub mod samples;
 pub mod sketch;
+pub mod touch;
 pub mod variants;
 
 pub use deadline::Deadline;

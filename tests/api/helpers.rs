@@ -179,3 +179,10 @@ pub fn all_close(actual: &Value, expected: &Value, tol: f64, what: &str) {
         close(x, y.as_f64().unwrap(), tol, &format!("{what}[{i}]"));
     }
 }
+
+/// The request of built-in template `id` (library/`id`.json) at its defaults.
+pub fn template_request(id: &str) -> Value {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("library/{id}.json"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    serde_json::from_str::<Value>(&text).unwrap()["request"].clone()
+}

@@ -7,6 +7,7 @@ mod cases;
 mod class;
 mod cli;
 mod constants;
+mod contact;
 mod crash;
 mod deferred;
 mod dimensions;

@@ -6,7 +6,7 @@ use crate::helpers::{TestApp, case, request};
 use axum::http::StatusCode;
 use serde_json::{Value, json};
 
-const BUILTIN: [&str; 10] = [
+const BUILTIN: [&str; 12] = [
     "p103-slider-flywheel",
     "p103-class",
     "p107-two-stroke-engine",
@@ -17,6 +17,8 @@ const BUILTIN: [&str; 10] = [
     "rotor-disk",
     "scissor-lift",
     "bar-on-slider",
+    "cam-flat-follower",
+    "ring-on-rim",
 ];
 
 async fn number(app: &TestApp, path: &str) -> f64 {

@@ -100,6 +100,12 @@ impl<'de> Deserializer<'de> for Strict<'de> {
     ) -> Result<V::Value, Error> {
         match self.0 {
             Value::String(s) => visitor.visit_enum(StrDeserializer::<Error>::new(s)),
+            // An externally tagged variant with data: {"name": value}.
+            Value::Object(m) if m.len() == 1 => {
+                let (key, value) = m.iter().next().expect("one member");
+                visitor.visit_enum(Variant { key, value })
+            }
+            Value::Object(m) => Err(de::Error::invalid_length(m.len(), &"an object of one member, its kind")),
             other => Err(de::Error::invalid_type(unexpected(other), &"one of the names listed")),
         }
     }
@@ -142,6 +148,42 @@ impl<'de> de::MapAccess<'de> for Members<'de> {
 
     fn size_hint(&self) -> Option<usize> {
         Some(self.iter.len())
+    }
+}
+
+/// An externally tagged enum's variant with its data, `{"key": value}`.
+struct Variant<'de> {
+    key: &'de str,
+    value: &'de Value,
+}
+
+impl<'de> de::EnumAccess<'de> for Variant<'de> {
+    type Error = Error;
+    type Variant = Self;
+
+    fn variant_seed<V: DeserializeSeed<'de>>(self, seed: V) -> Result<(V::Value, Self), Error> {
+        let name = seed.deserialize(StrDeserializer::<Error>::new(self.key))?;
+        Ok((name, self))
+    }
+}
+
+impl<'de> de::VariantAccess<'de> for Variant<'de> {
+    type Error = Error;
+
+    fn unit_variant(self) -> Result<(), Error> {
+        match self.value {
+            Value::Null => Ok(()),
+            other => Err(de::Error::invalid_type(unexpected(other), &"null")),
+        }
+    }
+    fn newtype_variant_seed<T: DeserializeSeed<'de>>(self, seed: T) -> Result<T::Value, Error> {
+        seed.deserialize(Strict(self.value))
+    }
+    fn tuple_variant<V: Visitor<'de>>(self, _: usize, visitor: V) -> Result<V::Value, Error> {
+        Strict(self.value).deserialize_any(visitor)
+    }
+    fn struct_variant<V: Visitor<'de>>(self, fields: &'static [&'static str], visitor: V) -> Result<V::Value, Error> {
+        Strict(self.value).deserialize_struct("", fields, visitor)
     }
 }
 

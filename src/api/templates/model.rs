@@ -116,6 +116,8 @@ pub const LIBRARY_FILES: &[(&str, &str)] = &[
     ("rotor-disk.json", include_str!("../../../library/rotor-disk.json")),
     ("scissor-lift.json", include_str!("../../../library/scissor-lift.json")),
     ("bar-on-slider.json", include_str!("../../../library/bar-on-slider.json")),
+    ("cam-flat-follower.json", include_str!("../../../library/cam-flat-follower.json")),
+    ("ring-on-rim.json", include_str!("../../../library/ring-on-rim.json")),
 ];
 
 /// A new template checked: its kind, name, parameters' names, pointers,

@@ -44,6 +44,7 @@ impl Step {
         self.driving.clear();
         self.driving_virtual_power.clear();
         self.reactions.clear();
+        self.contacts.clear();
         (self.reduced_inertia, self.reduced_torque) = (None, None);
         (self.condition, self.friction_iterations, self.singular) = (c.condition, 0, false);
     }
@@ -117,6 +118,10 @@ impl Actions<'_> {
             multipliers(m, c, s, with, (k, phi), (&mut out.driving, &mut out.reactions))?;
             if out.friction_iterations > 0 {
                 friction::add_to(m, c, &mut out.reactions);
+            }
+            if outputs.reactions {
+                let states = out.reactions.iter().filter(|r| r.determinate);
+                out.contacts.extend(states.filter_map(|r| super::contact_state(m, &c.q, &c.qd, r)));
             }
         } else {
             out.driving.push(out.driving_virtual_power.first().copied().unwrap_or(f64::NAN));

@@ -25,6 +25,9 @@ pub struct ContactState {
     pub normal: f64,
     pub tangential: f64,
     pub sliding_velocity: f64,
+    /// The velocity of the material point at the contact of each body
+    /// (the first's, the second's; ground frame).
+    pub velocities: [[f64; 2]; 2],
     /// 1/κ of each curve there, signed as the curve turns (None: straight, or a point).
     pub curvature_radius: [Option<f64>; 2],
     /// The angle between the contact normal and the velocity of the
@@ -53,6 +56,7 @@ pub fn contact_state(m: &Mechanism, q: &[f64], qd: &[f64], r: &Reaction) -> Opti
         normal: dot(f, n),
         tangential: dot(f, t),
         sliding_velocity: dot([v2[0] - v1[0], v2[1] - v1[1]], t),
+        velocities: [v1, v2],
         curvature_radius: [radius(0), radius(1)],
         pressure_angle: follower(m, j).then(|| pressure_angle(n, v2)).flatten(),
     })

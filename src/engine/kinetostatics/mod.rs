@@ -109,6 +109,8 @@ pub struct Step {
     /// The same from virtual power, per input (empty where not computed).
     pub driving_virtual_power: Vec<f64>,
     pub reactions: Vec<Reaction>,
+    /// The state of every contact joint whose reaction is determinate (with the reactions).
+    pub contacts: Vec<ContactState>,
     pub reduced_inertia: Option<f64>,
     pub reduced_torque: Option<f64>,
     /// Quinn's energy-contribution coefficients ε_b = T_b/T of the moving

@@ -161,7 +161,8 @@ fn mechanism(job: &Job, title: String, step: usize) -> Drawn {
     let samples = machine_samples(job.result);
     let s = samples.get(step).ok_or_else(|| no_step(step, samples.len()))?;
     let Some(m) = drawing::model(job.request, MECHANISM) else { return Ok(None) };
-    let mut c = drawing::draw(&m, &drawing::poses(&m, rows(s, "bodies")), rows(s, "reactions"), title);
+    let mut c =
+        drawing::draw(&m, &drawing::poses(&m, rows(s, "bodies")), rows(s, "reactions"), rows(s, "contacts"), title);
     if let Some(p) = paths(job, String::new(), None) {
         c.lines.extend(p.lines.into_iter().map(|mut l| {
             l.label = None;

@@ -38,7 +38,7 @@ impl Written {
 
     /// `value` (SI) in the written unit, to 6 significant digits; radians
     /// also in degrees.
-    fn value(&self, si: f64) -> String {
+    pub fn value(&self, si: f64) -> String {
         let shown = format!("{} {}", six_digits(si / self.unit.1), self.unit.0);
         if self.unit.0 == "rad" { format!("{shown} = {} deg", six_digits(si.to_degrees())) } else { shown }
     }

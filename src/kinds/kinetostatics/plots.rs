@@ -138,7 +138,7 @@ fn mechanism(job: &Job, title: String, step: usize) -> Drawn {
     let reactions = s.get("reactions").and_then(Value::as_array).map_or(&[][..], Vec::as_slice);
     let x = input(job.result)(s).map_or(String::new(), sig);
     let unit = if angular(job.result) { "°" } else { " m" };
-    let mut c = drawing::draw(&m, &poses, reactions, title);
+    let mut c = drawing::draw(&m, &poses, reactions, rows(s, "contacts"), title);
     c.subtitle = Some(format!("step {step} of 0 to {}: input {x}{unit}", steps.len() - 1));
     Ok(Some(c))
 }

@@ -5,7 +5,7 @@ use crate::engine::kinetostatics::{Motion, Reaction, Step, Totals, energy};
 use crate::engine::model::{Coordinate, Driver};
 use crate::kind::{cell, list, names};
 use crate::kinds::mechanism::track::{PointState, states};
-use crate::kinds::mechanism::{EnergyDto, Name, ReactionDto};
+use crate::kinds::mechanism::{ContactDto, EnergyDto, Name, ReactionDto, annotate, contact_warnings};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use std::collections::BTreeMap;
@@ -85,6 +85,9 @@ pub struct StepDto {
     /// The points of `track`, where given.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub points: Option<Vec<PointState>>,
+    /// Every contact joint's state, with the reactions.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub contacts: Option<Vec<ContactDto>>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
@@ -220,6 +223,12 @@ impl KinetostaticsResult {
                 mob.indeterminate_joints.iter().map(|&j| &joint_names[j]).collect::<Vec<_>>()
             ));
         }
+        let first = |s: &StepDto| match &s.input {
+            Scalars::One(v) => *v,
+            Scalars::Many(v) => v[0],
+        };
+        let contacts = steps.iter().filter_map(|s| Some((first(s), s.contacts.as_deref()?)));
+        warnings.extend(contact_warnings(contacts, &p.mechanism, |v| p.written.value(v)));
         let sum = &s.summary;
         let driving = |v: &Vec<f64>| p.outputs.driving.then(|| Scalars::of(v));
         let inputs = (p.mechanism.drivers.iter().zip(&p.input_points))
@@ -268,10 +277,17 @@ impl StepDto {
     /// The engine's step with the joints' and bodies' names (as [`crate::kinds::mechanism::names`] makes them).
     pub fn new(s: &Step, p: &Problem, joint_names: &[Name], names: &[Name]) -> Self {
         let reaction = |r: &Reaction| ReactionDto::new(r, joint_names, names);
+        let mut reactions: Option<Vec<ReactionDto>> =
+            (p.outputs.reactions && !s.singular).then(|| s.reactions.iter().map(reaction).collect());
+        if let Some(r) = reactions.as_mut() {
+            annotate(r, &s.contacts, &p.mechanism, joint_names);
+        }
+        let contacts = (reactions.is_some() && !s.contacts.is_empty())
+            .then(|| s.contacts.iter().map(|c| ContactDto::new(c, joint_names)).collect());
         StepDto {
             input: Scalars::of(&s.input),
             driving: (p.outputs.driving && !s.singular).then(|| Scalars::of(&s.driving)),
-            reactions: (p.outputs.reactions && !s.singular).then(|| s.reactions.iter().map(reaction).collect()),
+            reactions,
             reduced_inertia: s.reduced_inertia,
             reduced_torque: s.reduced_torque,
             energy_contribution: s
@@ -291,6 +307,7 @@ impl StepDto {
                 .as_ref()
                 .filter(|_| !p.tracked.is_empty())
                 .map(|m| states(&p.mechanism, &p.tracked, [&m.q, &m.qd, &m.qdd])),
+            contacts,
         }
     }
 }

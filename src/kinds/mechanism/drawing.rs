@@ -1,11 +1,14 @@
 //! A planar mechanism drawn at one instant, to scale: each body as lines
 //! between its joints (a polygon for a body of three or more), sliders as
 //! boxes on their guides, the ground's pivots as dots, and the joints'
-//! reactions as arrows to one scale. The geometry comes from the stored
+//! reactions as arrows to one scale (a contact's at its contact point);
+//! a contact's curves (cams, disks, tracks, faces) as drawn on their
+//! bodies. The geometry comes from the stored
 //! request (the drawn configuration) and the stored poses (x_G, y_G, θ) of
 //! the bodies; a point P of body b is at r_b + A(θ_b)(P_ref − G_ref).
 
 use super::MechanismDto;
+use crate::engine::curves::{Curve, Domain};
 use crate::engine::model::{JointKind, Mechanism};
 use crate::kind::chart::{Arrow, Axis, Chart, Fill, Line, Pen};
 use crate::kind::limits::Limits;
@@ -58,14 +61,25 @@ pub fn point_of(m: &Mechanism, poses: &[Option<Pose>], j: &crate::engine::model:
     place(m, poses, if j.bodies[1] != 0 { j.bodies[1] } else { j.bodies[0] }, j.at)
 }
 
-/// The mechanism at the poses, with the reactions (`joint`, `fx`, `fy`) as arrows.
-pub fn draw(m: &Mechanism, poses: &[Option<Pose>], reactions: &[Value], title: String) -> Chart {
+/// The mechanism at the poses, with the reactions (`joint`, `fx`, `fy`) as
+/// arrows, a contact's from its `point` in `contacts`.
+pub fn draw(m: &Mechanism, poses: &[Option<Pose>], reactions: &[Value], contacts: &[Value], title: String) -> Chart {
     let mut c = Chart::new(title, Axis::new("x", "m"), Axis::new("y", "m"));
     c.equal = true;
-    let joints: Vec<Option<(f64, f64)>> = m.joints.iter().map(|j| point_of(m, poses, j)).collect();
+    let mut joints: Vec<Option<(f64, f64)>> = m.joints.iter().map(|j| point_of(m, poses, j)).collect();
     let span = extent(&joints);
     for b in 1..m.bodies.len() {
         body(&mut c, m, poses, &joints, b);
+    }
+    for (k, j) in m.joints.iter().enumerate() {
+        if let JointKind::Contact(contact) = &j.kind {
+            for (side, curve) in contact.curves.iter().enumerate() {
+                draw_curve(&mut c, m, poses, (j.bodies[side], curve), j.at, span);
+            }
+            let named = |v: &&Value| v.get("joint").and_then(Value::as_str) == Some(j.name.as_str());
+            let stored = contacts.iter().find(named).and_then(|v| v.get("point")?.as_array().cloned());
+            joints[k] = stored.and_then(|p| Some((p.first()?.as_f64()?, p.get(1)?.as_f64()?))).or(joints[k]);
+        }
     }
     for (k, j) in m.joints.iter().enumerate() {
         let Some(at) = joints[k] else { continue };
@@ -81,6 +95,32 @@ pub fn draw(m: &Mechanism, poses: &[Option<Pose>], reactions: &[Value], title: S
     }
     arrows(&mut c, m, &joints, reactions, span);
     c
+}
+
+/// Curve `curve` of body `b` at the poses: a closed curve whole, an open
+/// one over its length, a line as long as the mechanism about `at`.
+fn draw_curve(
+    c: &mut Chart,
+    m: &Mechanism,
+    poses: &[Option<Pose>],
+    (b, curve): (usize, &Curve),
+    at: [f64; 2],
+    span: f64,
+) {
+    let (from, to) = match (curve.domain(), curve) {
+        (Domain::None, _) => return,
+        (Domain::Unbounded, Curve::Line { at: p, direction: d }) => {
+            let u = (at[0] - p[0]) * d[0] + (at[1] - p[1]) * d[1];
+            (u - 0.6 * span, u + 0.6 * span)
+        }
+        (Domain::Unbounded, _) => return,
+        (Domain::Periodic(p), _) => (0.0, p),
+        (Domain::Interval(a, z), _) => (a, z),
+    };
+    let n = 180;
+    let points =
+        (0..=n).filter_map(|k| place(m, poses, b, curve.at(from + (to - from) * f64::from(k) / f64::from(n)).r));
+    c.lines.push(Line { label: None, points: points.collect(), pen: Pen { color: b, dashed: false, width: 2 } });
 }
 
 fn extent(points: &[Option<(f64, f64)>]) -> f64 {

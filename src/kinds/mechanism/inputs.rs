@@ -123,7 +123,12 @@ pub fn coordinate(
             match m.joints[k].kind {
                 JointKind::Revolute => Some((Coordinate::Joint(k), false)),
                 JointKind::Prismatic { .. } => Some((Coordinate::Joint(k), true)),
-                _ => e.fail(&format!("{at}/joint"), "an input must be a revolute or prismatic joint"),
+                // The arc length run along its first curve (a ring driven along a rim).
+                JointKind::Contact(ref c) if c.measured_side().is_some() => Some((Coordinate::Joint(k), true)),
+                _ => e.fail(
+                    &format!("{at}/joint"),
+                    "an input must be a revolute, prismatic or contact joint (the arc length along its curve)",
+                ),
             }
         }
         (None, Some(point), body) => {

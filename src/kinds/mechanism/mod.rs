@@ -1,6 +1,7 @@
 //! Wire form of a planar mechanism (named points, bodies, joints) and its
 //! conversion into the engine's model, with every error under its pointer.
 
+mod contact;
 mod dimensions;
 pub mod drawing;
 mod energy;
@@ -9,11 +10,12 @@ mod loads;
 mod reactions;
 pub mod track;
 
+pub use contact::{CircleDto, CurveDto, LineDto, PolarDto, SplineDto};
 pub use dimensions::{Assembled, DimensionDto};
 pub use energy::EnergyDto;
 pub use inputs::{InputDto, Inputs, coordinate, machine_parts};
 pub use loads::{LoadDto, LoadType, MAX_LOADS, convert_loads};
-pub use reactions::{Name, ReactionDto, names};
+pub use reactions::{ContactDto, Name, ReactionDto, annotate, contact_warnings, names};
 
 use crate::engine::model::{Body, BodyId, Friction, Joint, JointKind, Mechanism, Pitch};
 use crate::kind::quantity::{Errors, Quantity};
@@ -138,6 +140,8 @@ pub enum JointType {
     Prismatic,
     PinSlot,
     Gear,
+    /// A higher pair: a curve of each body touching (`curves`, `rolling`).
+    Contact,
 }
 
 /// A joint between two bodies (`ground` is implicit). `axis` for prismatic and
@@ -145,6 +149,9 @@ pub enum JointType {
 /// guide and its second slides along it; a pin_slot's first body carries
 /// the slot and its second the pin (swapping them is another mechanism).
 /// `ratio` or `teeth` (and `internal`) and optional `carrier` for gears.
+/// A contact's `curves` (the first body's, then the second's) must touch as
+/// drawn; its `at` is where they do (optional: a hint where they touch at
+/// several points).
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct JointDto {
     #[schema(max_length = 100)]
@@ -171,13 +178,18 @@ pub struct JointDto {
     pub module: Option<Quantity>,
     #[schema(value_type = Option<Quantity>)]
     pub pressure_angle: Option<Quantity>,
-    /// Coulomb friction: {"mu", "radius"} on a revolute joint, {"mu"} on a prismatic or pin-in-slot joint.
+    /// Coulomb friction: {"mu", "radius"} on a revolute joint, {"mu"} on a prismatic, pin-in-slot or contact joint.
     pub friction: Option<FrictionDto>,
     /// A prismatic joint's guide length, centred on `at`: the reaction is
     /// borne as two normal forces at its ends (the reaction's `ends`), each
     /// with its own friction μ|N₁| + μ|N₂|.
     #[schema(value_type = Option<Quantity>)]
     pub length: Option<Quantity>,
+    /// Contact: the curve fixed in each body, in `bodies` order.
+    #[schema(min_items = 2, max_items = 2)]
+    pub curves: Option<Vec<CurveDto>>,
+    /// Contact: rolling without slipping (equal arc lengths; default false, sliding).
+    pub rolling: Option<bool>,
 }
 
 /// Coulomb friction of a joint.
@@ -268,6 +280,7 @@ impl MechanismDto {
             Some(i) => Some(i),
             None => e.fail(ptr, format!("unknown body '{n}'")),
         };
+        let size = self.size(&points);
         let mut joints = Vec::with_capacity(self.joints.len());
         for (k, j) in self.joints.iter().enumerate() {
             let ptr = format!("{at}/joints/{k}");
@@ -286,16 +299,25 @@ impl MechanismDto {
             }
             let at_point = match &j.at {
                 Some(p) => point(e, p, &format!("{ptr}/at")),
-                None if j.kind == JointType::Gear => Some([0.0, 0.0]),
+                None if matches!(j.kind, JointType::Gear | JointType::Contact) => Some([0.0, 0.0]),
                 None => e.fail(&ptr, "\"at\" is required"),
             };
-            let kind = joint_kind(e, j, &names, &ptr);
+            let hint = j.at.as_ref().and(at_point);
+            let (kind, at_point) = match j.kind {
+                JointType::Contact => match contact::contact(e, j, hint, &point, size, &ptr) {
+                    Some((kind, touching)) => (Some(kind), Some(touching)),
+                    None => (None, at_point),
+                },
+                _ => (joint_kind(e, j, &names, &ptr), at_point),
+            };
+            not_for_others(e, j, &ptr);
             if let (Some(b0), Some(b1), Some(at_point), Some(kind)) = (b0, b1, at_point, kind) {
                 let friction = friction(e, j, &ptr);
                 let length = guide_length(e, j, &ptr);
                 joints.push(Joint { name: j.name.clone(), kind, bodies: [b0, b1], at: at_point, friction, length });
             }
         }
+        contact::mark_particles(&mut joints, |b| bodies[b].inertia);
         for (k, j) in self.joints.iter().enumerate() {
             if j.module.is_some() {
                 self.pitch(e, k, &mut joints, &format!("{at}/joints/{k}"));
@@ -356,6 +378,19 @@ impl MechanismDto {
         }
     }
 
+    /// The mechanism's size (m): the diagonal of the box holding its named
+    /// points, for the tolerance of a drawing (1 m where it has none).
+    fn size(&self, points: &BTreeMap<String, [f64; 2]>) -> f64 {
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for p in points.values().filter(|p| p.iter().all(|v| v.is_finite())) {
+            for k in 0..2 {
+                (lo[k], hi[k]) = (lo[k].min(p[k]), hi[k].max(p[k]));
+            }
+        }
+        let diagonal = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);
+        if diagonal.is_finite() && diagonal > 0.0 { diagonal } else { 1.0 }
+    }
+
     /// The point of the first joint that names this body (the cg of a massless link).
     fn first_joint_point(&self, body: &str, points: &BTreeMap<String, [f64; 2]>) -> Option<[f64; 2]> {
         self.joints.iter().filter(|j| j.bodies.iter().any(|b| b == body)).find_map(|j| match &j.at {
@@ -387,8 +422,10 @@ fn friction(e: &mut Errors, j: &JointDto, at: &str) -> Option<Friction> {
             e.positive(r, Dim::LENGTH, &format!("{at}/radius")).map(|radius| Friction { mu: f.mu, radius })
         }
         (JointType::Revolute, None) => e.fail(&at, "a revolute joint's friction needs the pin \"radius\""),
-        (JointType::Prismatic | JointType::PinSlot, None) => Some(Friction { mu: f.mu, radius: 0.0 }),
-        (JointType::Prismatic | JointType::PinSlot, Some(_)) => {
+        (JointType::Prismatic | JointType::PinSlot | JointType::Contact, None) => {
+            Some(Friction { mu: f.mu, radius: 0.0 })
+        }
+        (JointType::Prismatic | JointType::PinSlot | JointType::Contact, Some(_)) => {
             e.fail(&format!("{at}/radius"), "applies to revolute joints only")
         }
         (JointType::Gear, _) => e.fail(&at, "friction is not modelled for gears"),
@@ -411,8 +448,20 @@ fn unit_axis(e: &mut Errors, axis: Option<&[f64]>, at: &str) -> Option<[f64; 2]>
     }
 }
 
+/// `curves` and `rolling` belong to a contact joint only.
+fn not_for_others(e: &mut Errors, j: &JointDto, at: &str) {
+    if j.kind != JointType::Contact {
+        for (field, given) in [("curves", j.curves.is_some()), ("rolling", j.rolling.is_some())] {
+            if given {
+                e.push(&format!("{at}/{field}"), "applies to contact joints only");
+            }
+        }
+    }
+}
+
 fn joint_kind(e: &mut Errors, j: &JointDto, names: &[String], at: &str) -> Option<JointKind> {
     match j.kind {
+        JointType::Contact => None,
         JointType::Revolute => Some(JointKind::Revolute),
         JointType::Prismatic => unit_axis(e, j.axis.as_deref(), at).map(|axis| JointKind::Prismatic { axis }),
         JointType::PinSlot => unit_axis(e, j.axis.as_deref(), at).map(|axis| JointKind::PinSlot { axis }),

@@ -1,6 +1,8 @@
-//! A joint reaction as the results say it, with its joint's and bodies' names.
+//! A joint reaction as the results say it, with its joint's and bodies'
+//! names, and a contact's state at a step.
 
-use crate::engine::kinetostatics::Reaction;
+use crate::engine::kinetostatics::{ContactState, Reaction};
+use crate::engine::model::{JointKind, Mechanism};
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
 use utoipa::ToSchema;
@@ -33,7 +35,66 @@ pub struct ReactionDto {
     /// guide's ends (at − L/2 and at + L/2 along the axis), N, on `on`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ends: Option<[f64; 2]>,
+    /// A contact: the normal force (N ≥ 0 when the bodies press on each other).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub normal: Option<f64>,
+    /// A contact: the force along the common tangent (the friction, or the force rolling needs).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tangential: Option<f64>,
+    /// A rolling contact: |tangential|/normal, the least friction coefficient that rolls.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mu_required: Option<f64>,
     pub determinate: bool,
+}
+
+/// A contact joint at a step: where its curves touch and what passes there.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct ContactDto {
+    #[schema(value_type = String)]
+    pub joint: Name,
+    /// [x, y] (m), ground frame.
+    pub point: [f64; 2],
+    /// (v₂ − v₁)·t of the material points at the contact (m/s): 0 rolling.
+    pub sliding_velocity: f64,
+    /// The velocity (m/s, [vx, vy]) of the material point at the contact
+    /// of each body: the first's, then the second's.
+    pub velocities: [[f64; 2]; 2],
+    /// The first body's force on the second along the normal (N ≥ 0 pressing).
+    pub normal: f64,
+    /// ... and along the common tangent (N).
+    pub tangential: f64,
+    /// Each curve's radius of curvature there (m; signed as the curve
+    /// turns; null: straight, or a point).
+    pub curvature_radius: [Option<f64>; 2],
+    /// The angle between the normal and the follower's velocity there (rad),
+    /// where the second body turns or slides on the ground.
+    pub pressure_angle: Option<f64>,
+}
+
+impl ContactDto {
+    pub fn new(c: &ContactState, joint_names: &[Name]) -> Self {
+        Self {
+            joint: joint_names[c.joint].clone(),
+            point: c.point,
+            sliding_velocity: c.sliding_velocity,
+            velocities: c.velocities,
+            normal: c.normal,
+            tangential: c.tangential,
+            curvature_radius: c.curvature_radius,
+            pressure_angle: c.pressure_angle,
+        }
+    }
+}
+
+/// The contacts' normal and tangential forces (and, rolling, the friction
+/// they need) in their reactions.
+pub fn annotate(reactions: &mut [ReactionDto], contacts: &[ContactState], m: &Mechanism, joint_names: &[Name]) {
+    for c in contacts {
+        let Some(r) = reactions.iter_mut().find(|r| r.joint == joint_names[c.joint]) else { continue };
+        let rolling = matches!(&m.joints[c.joint].kind, JointKind::Contact(k) if k.rolling);
+        (r.normal, r.tangential) = (Some(c.normal), Some(c.tangential));
+        r.mu_required = rolling.then(|| c.tangential.abs() / c.normal).filter(|v| v.is_finite());
+    }
 }
 
 impl ReactionDto {
@@ -48,7 +109,69 @@ impl ReactionDto {
             fy: v(r.fy),
             moment: v(r.moment),
             ends: r.ends.filter(|_| r.determinate),
+            normal: None,
+            tangential: None,
+            mu_required: None,
             determinate: r.determinate,
         }
     }
+}
+
+/// The warnings a sweep's contacts call for, each over the runs of
+/// consecutive positions where it holds (`at` the position, shown by
+/// `show`): a negative normal force (the bodies would separate there: a
+/// follower jump, a disk leaving its track), and a rolling contact needing
+/// more friction than its `friction` gives (it would slip). A particle's
+/// contact (a ring threaded on a rim) holds both ways: no warning.
+pub fn contact_warnings<'a>(
+    steps: impl Iterator<Item = (f64, &'a [ContactDto])>,
+    m: &Mechanism,
+    show: impl Fn(f64) -> String,
+) -> Vec<String> {
+    let joints: Vec<(usize, &str)> = (m.joints.iter().enumerate())
+        .filter(|(_, j)| matches!(&j.kind, JointKind::Contact(c) if !c.particle))
+        .map(|(k, j)| (k, j.name.as_str()))
+        .collect();
+    // Per contact joint and condition, the runs [from, to] of positions.
+    let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new(); 2 * joints.len()];
+    let mut open = vec![false; 2 * joints.len()];
+    for (at, contacts) in steps {
+        for (i, &(k, name)) in joints.iter().enumerate() {
+            let c = contacts.iter().find(|c| &*c.joint == name);
+            let mu = m.joints[k].friction.map(|f| f.mu);
+            let rolling = matches!(&m.joints[k].kind, JointKind::Contact(c) if c.rolling);
+            let slips = |c: &ContactDto| rolling && mu.is_some_and(|mu| c.tangential.abs() > mu * c.normal.max(0.0));
+            for (slot, holds) in [(2 * i, c.is_some_and(|c| c.normal < 0.0)), (2 * i + 1, c.is_some_and(slips))] {
+                match (holds, open[slot]) {
+                    (true, true) => runs[slot].last_mut().expect("an open run").1 = at,
+                    (true, false) => runs[slot].push((at, at)),
+                    _ => {}
+                }
+                open[slot] = holds;
+            }
+        }
+    }
+    let span = |r: &[(f64, f64)]| {
+        r.iter()
+            .map(|&(a, b)| if a == b { show(a) } else { format!("{} to {}", show(a), show(b)) })
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let mut out = Vec::new();
+    for (i, &(k, name)) in joints.iter().enumerate() {
+        if !runs[2 * i].is_empty() {
+            out.push(format!(
+                "contact {name}: the normal force is negative at {}: the bodies would separate there (a follower jump, a disk leaving its track) unless something holds them together",
+                span(&runs[2 * i])
+            ));
+        }
+        if let (false, Some(f)) = (runs[2 * i + 1].is_empty(), m.joints[k].friction) {
+            out.push(format!(
+                "contact {name}: rolling needs more friction than mu = {} gives at {} (see mu_required): it would slip there",
+                f.mu,
+                span(&runs[2 * i + 1])
+            ));
+        }
+    }
+    out
 }

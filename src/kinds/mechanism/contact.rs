@@ -1,0 +1,222 @@
+//! The `contact` joint's wire form (a higher pair: a curve of each body,
+//! touching) and its conversion: the curves read in the drawing's frame,
+//! where they touch found from the drawing (a 422 at the joint naming the
+//! gap, or the crossing, where they do not), and a particle recognised.
+
+use super::{JointDto, PointRef};
+use crate::engine::curves::{Curve, Spline};
+use crate::engine::function::Side;
+use crate::engine::model::{Contact, Joint, JointKind};
+use crate::engine::touch::{NoTouch, touching};
+use crate::kind::quantity::{Errors, FunctionDto, Quantity};
+use crate::units::Dim;
+use serde::{Deserialize, Serialize};
+use std::f64::consts::TAU;
+use utoipa::ToSchema;
+
+/// Most points of a spline curve.
+pub const MAX_SPLINE_POINTS: usize = 2000;
+/// The drawing must show a contact's curves within this share of the
+/// mechanism's size of each other.
+const TOUCH_TOLERANCE: f64 = 1e-6;
+
+/// A curve fixed in a body, in the drawn configuration: exactly one of
+/// `point`, `line`, `circle`, `polar`, `spline`.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum CurveDto {
+    /// A knife edge, a ring, a pin: a point (its name or [x, y]).
+    #[schema(value_type = PointRef)]
+    Point(PointRef),
+    /// A flat face, a straight track, a slot's side.
+    Line(LineDto),
+    /// A roller, a disk, an eccentric cam, a rim, a circular track.
+    Circle(CircleDto),
+    /// A disk cam's profile r(ψ).
+    Polar(PolarDto),
+    /// A C² cubic spline through points.
+    Spline(SplineDto),
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct LineDto {
+    #[schema(value_type = PointRef)]
+    pub through: PointRef,
+    /// Its direction as drawn, [x, y] (any length but 0).
+    #[schema(min_items = 2, max_items = 2)]
+    pub direction: Vec<f64>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct CircleDto {
+    #[schema(value_type = PointRef)]
+    pub center: PointRef,
+    /// m (> 0).
+    #[schema(value_type = Quantity)]
+    pub radius: Quantity,
+    /// The other curve touches it from within (a track, a ring's inside); default false.
+    pub inside: Option<bool>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct PolarDto {
+    #[schema(value_type = PointRef)]
+    pub center: PointRef,
+    /// r(ψ) > 0 (m), a Function of `psi` (rad, counter-clockwise from `zero`).
+    #[schema(value_type = FunctionDto)]
+    pub radius: FunctionDto,
+    /// The body-fixed direction ψ = 0 as drawn, [x, y]; default [1, 0].
+    #[schema(min_items = 2, max_items = 2)]
+    pub zero: Option<Vec<f64>>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct SplineDto {
+    /// At least 4 points [x, y] (m), as drawn, in order.
+    #[schema(value_type = Vec<super::Coords>, min_items = 4, max_items = 2000)]
+    pub points: Vec<[f64; 2]>,
+    /// Periodic through the last point back to the first; default false.
+    pub closed: Option<bool>,
+}
+
+/// Reads a point of the drawing (a name or coordinates) at a pointer.
+pub type PointReader<'a> = dyn Fn(&mut Errors, &PointRef, &str) -> Option<[f64; 2]> + 'a;
+
+/// The contact joint `j` at pointer `at`: its kind and where its curves
+/// touch (the joint's point), in a mechanism of size `size` (m).
+pub fn contact(
+    e: &mut Errors,
+    j: &JointDto,
+    hint: Option<[f64; 2]>,
+    point: &PointReader,
+    size: f64,
+    at: &str,
+) -> Option<(JointKind, [f64; 2])> {
+    let Some(list) = j.curves.as_deref() else { return e.fail(at, "a contact joint needs \"curves\": one per body") };
+    if list.len() != 2 {
+        return e.fail(&format!("{at}/curves"), "must hold exactly two curves, the first body's and the second's");
+    }
+    let read: Vec<Option<Curve>> =
+        list.iter().enumerate().map(|(k, c)| curve(e, c, point, &format!("{at}/curves/{k}"))).collect();
+    let [Some(a), Some(b)] = <[Option<Curve>; 2]>::try_from(read).ok()? else { return None };
+    let curves = [a, b];
+    let tolerance = TOUCH_TOLERANCE * size;
+    match touching(&curves, tolerance, hint) {
+        Ok(p) => {
+            let rolling = j.rolling.unwrap_or(false);
+            if rolling && list.iter().any(|c| matches!(c, CurveDto::Point(_))) {
+                return e.fail(&format!("{at}/rolling"), "a point cannot roll: rolling needs two curves");
+            }
+            Some((JointKind::Contact(Box::new(Contact::new(curves, rolling, p))), p))
+        }
+        Err(NoTouch::Gap { gap, point }) => e.fail(
+            &format!("{at}/curves"),
+            format!(
+                "the curves do not touch as drawn: {gap:.6e} m apart near ({:.6}, {:.6}) (they must meet within {tolerance:.1e} m, 1e-6 of the mechanism's size)",
+                point[0], point[1]
+            ),
+        ),
+        Err(NoTouch::Cross { point, angle }) => e.fail(
+            &format!("{at}/curves"),
+            format!(
+                "the curves cross at ({:.6}, {:.6}) at {:.3}° instead of touching (a common tangent): draw them touching",
+                point[0],
+                point[1],
+                angle.to_degrees()
+            ),
+        ),
+        Err(NoTouch::Lines) => e.fail(
+            &format!("{at}/curves"),
+            "two lines do not make a contact (they touch along their length or cross): use a prismatic joint",
+        ),
+    }
+}
+
+/// One curve, at pointer `at`.
+fn curve(e: &mut Errors, c: &CurveDto, point: &PointReader, at: &str) -> Option<Curve> {
+    match c {
+        CurveDto::Point(p) => point(e, p, &format!("{at}/point")).map(Curve::Point),
+        CurveDto::Line(l) => {
+            let at = format!("{at}/line");
+            let through = point(e, &l.through, &format!("{at}/through"));
+            let direction = unit(e, &l.direction, &format!("{at}/direction"));
+            Some(Curve::Line { at: through?, direction: direction? })
+        }
+        CurveDto::Circle(c) => {
+            let at = format!("{at}/circle");
+            let centre = point(e, &c.center, &format!("{at}/center"));
+            let radius = e.positive(&c.radius, Dim::LENGTH, &format!("{at}/radius"));
+            Some(Curve::Circle { centre: centre?, radius: radius?, inside: c.inside.unwrap_or(false) })
+        }
+        CurveDto::Polar(p) => polar(e, p, point, &format!("{at}/polar")),
+        CurveDto::Spline(s) => {
+            let at = format!("{at}/spline");
+            if !(4..=MAX_SPLINE_POINTS).contains(&s.points.len()) {
+                return e.fail(&format!("{at}/points"), format!("must hold 4 to {MAX_SPLINE_POINTS} points"));
+            }
+            if let Some(k) = s.points.iter().position(|p| !p.iter().all(|v| v.is_finite())) {
+                return e.fail(&format!("{at}/points/{k}"), "coordinates must be finite");
+            }
+            match Spline::new(s.points.clone(), s.closed.unwrap_or(false)) {
+                Some(spline) => Some(Curve::Spline(spline)),
+                None => e.fail(&format!("{at}/points"), "no spline passes through these points"),
+            }
+        }
+    }
+}
+
+/// A polar curve: r(ψ) read as a Function of `psi` over a turn, positive
+/// at every degree (sampled).
+fn polar(e: &mut Errors, p: &PolarDto, point: &PointReader, at: &str) -> Option<Curve> {
+    let centre = point(e, &p.center, &format!("{at}/center"));
+    let zero = match p.zero.as_deref() {
+        None => Some([1.0, 0.0]),
+        Some(z) => unit(e, z, &format!("{at}/zero")),
+    };
+    let rho = e.function_of(&p.radius, Dim::LENGTH, TAU, &format!("{at}/radius"), &["psi"]);
+    let (centre, zero, rho) = (centre?, zero?, rho?);
+    if let Some(bad) = (0..360)
+        .map(|k| f64::from(k).to_radians())
+        .find(|&psi| !matches!(rho.eval(psi, Side::Right).partial_cmp(&0.0), Some(std::cmp::Ordering::Greater)))
+    {
+        return e.fail(
+            &format!("{at}/radius"),
+            format!(
+                "must be positive over the whole turn: r({:.0}°) = {}",
+                bad.to_degrees(),
+                rho.eval(bad, Side::Right)
+            ),
+        );
+    }
+    Some(Curve::polar(centre, zero[1].atan2(zero[0]), rho))
+}
+
+/// A unit vector from a finite, non-zero [x, y].
+fn unit(e: &mut Errors, v: &[f64], at: &str) -> Option<[f64; 2]> {
+    match v {
+        [x, y] if x.is_finite() && y.is_finite() && x.hypot(*y) > 0.0 => {
+            let n = x.hypot(*y);
+            Some([x / n, y / n])
+        }
+        _ => e.fail(at, "must be a finite, non-zero vector [x, y]"),
+    }
+}
+
+/// Marks as particles the bodies that have no inertia and whose only joint
+/// is a contact where their curve is a point (a ring threaded on a rim):
+/// nothing determines their rotation.
+pub fn mark_particles(joints: &mut [Joint], inertia: impl Fn(usize) -> f64) {
+    for k in 0..joints.len() {
+        let JointKind::Contact(c) = &joints[k].kind else { continue };
+        let Some(side) = (0..2).find(|&s| matches!(c.curves[s], Curve::Point(_))) else { continue };
+        let body = joints[k].bodies[side];
+        let alone = joints.iter().filter(|j| j.bodies.contains(&body)).count() == 1;
+        if body != 0
+            && alone
+            && inertia(body) == 0.0
+            && let JointKind::Contact(c) = &mut joints[k].kind
+        {
+            c.particle = true;
+        }
+    }
+}

@@ -1,0 +1,146 @@
+//! The `contact` joint over HTTP: curves in the drawing, where they touch,
+//! the contact's state in every step and its forces in the reaction, the
+//! errors at their fields.
+
+use crate::helpers::{TestApp, template_request};
+use axum::http::StatusCode;
+use serde_json::{Value, json};
+
+/// |actual − expected| ≤ 1e-9·scale.
+#[track_caller]
+fn near(actual: &Value, expected: f64, scale: f64, what: &str) {
+    let a = actual.as_f64().unwrap_or_else(|| panic!("{what}: {actual} is not a number"));
+    assert!((a - expected).abs() <= 1e-9 * scale, "{what}: {a} vs {expected}");
+}
+
+async fn kinetostatics(app: &TestApp, body: &Value) -> Value {
+    let r = app.post("/v1/kinetostatics", body).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    r.json()["result"].clone()
+}
+
+/// Template `cam-flat-follower` (seed 002 q2) with its eccentric disk: a
+/// Scotch yoke (R = 0.05, e = 0.02, m = 2 kg, g = 9.81, ω = 10 rad/s, μ =
+/// 0.1). At θ the follower is lifted e(1 − cos θ), the contact lies at
+/// (e sin θ, R − e cos θ), N = m(g + eω² cos θ), the friction on the
+/// follower −μN (it slides at ω(R − e cos θ) along +x on the cam), the
+/// cam's torque N(e sin θ + μ(R − e cos θ)); the contact point moves on
+/// the cam at ω × OK and on the follower at (0, eω sin θ); the radii are
+/// [R, straight] and a flat follower's pressure angle 0 (1e-9).
+#[tokio::test]
+async fn the_eccentric_cam_under_a_flat_follower_is_a_scotch_yoke() {
+    let app = TestApp::new().await;
+    let (r, e, m, g, w, mu) = (0.05, 0.02, 2.0, 9.81, 10.0, 0.1);
+    let result = kinetostatics(&app, &template_request("cam-flat-follower")).await;
+    assert_eq!((result["dof"].as_i64(), result["grubler"]["mobility"].as_i64()), (Some(1), Some(1)), "{result}");
+    let steps = result["steps"].as_array().unwrap();
+    assert_eq!(steps.len(), 36);
+    for step in steps {
+        let theta = step["input"].as_f64().unwrap();
+        let (s, c) = theta.sin_cos();
+        let n = m * (g + e * w * w * c);
+        let what = |x: &str| format!("θ = {theta}: {x}");
+        near(&step["driving"], n * (e * s + mu * (r - e * c)), m * g * r, &what("cam torque"));
+        let contact = &step["contacts"][0];
+        assert_eq!(contact["joint"], "K");
+        near(&contact["point"][0], e * s, r, &what("contact x"));
+        near(&contact["point"][1], r - e * c, r, &what("contact y"));
+        near(&contact["normal"], n, m * g, &what("N"));
+        near(&contact["tangential"], -mu * n, m * g, &what("friction on the follower"));
+        near(&contact["sliding_velocity"], w * (r - e * c), w * r, &what("sliding"));
+        near(&contact["velocities"][0][0], -w * (r - e * c), w * r, &what("v on the cam, x"));
+        near(&contact["velocities"][0][1], w * e * s, w * r, &what("v on the cam, y"));
+        near(&contact["velocities"][1][0], 0.0, w * r, &what("v on the follower, x"));
+        near(&contact["velocities"][1][1], e * w * s, w * r, &what("v on the follower, y"));
+        near(&contact["curvature_radius"][0], r, r, &what("the disk's radius"));
+        assert!(contact["curvature_radius"][1].is_null(), "a flat face is straight");
+        // (Null where the follower stands still: at θ = 0 exactly.)
+        if theta == 0.0 {
+            assert!(contact["pressure_angle"].is_null(), "a follower at rest has no pressure angle: {contact}");
+        } else {
+            near(&contact["pressure_angle"], 0.0, 1.0, &what("pressure angle"));
+        }
+        let reaction = step["reactions"].as_array().unwrap().iter().find(|x| x["joint"] == "K").unwrap();
+        assert_eq!((reaction["on"].as_str(), reaction["by"].as_str()), (Some("follower"), Some("cam")));
+        near(&reaction["fx"], -mu * n, m * g, &what("reaction fx"));
+        near(&reaction["fy"], n, m * g, &what("reaction fy"));
+        near(&reaction["normal"], n, m * g, &what("reaction's normal"));
+        near(&reaction["tangential"], -mu * n, m * g, &what("reaction's tangential"));
+        assert!(reaction.get("mu_required").is_none(), "a sliding contact needs no μ: {reaction}");
+    }
+    assert!(result["warnings"].as_array().unwrap().is_empty(), "{}", result["warnings"]);
+}
+
+/// Turned fast enough (eω² > g: ω > √(9.81/0.02) = 22.1 rad/s) the
+/// follower would leave the cam near the top of the lift, where
+/// N = m(g + eω² cos θ) < 0: a warning names the range, the numbers stay.
+#[tokio::test]
+async fn a_follower_that_would_jump_is_a_warning_with_its_range() {
+    let app = TestApp::new().await;
+    let mut body = template_request("cam-flat-follower");
+    body["input"]["speed"] = json!(30);
+    let result = kinetostatics(&app, &body).await;
+    let warnings = result["warnings"].to_string();
+    // cos θ < −g/(eω²) = −0.545: θ in (123°, 237°), the sampled 130° to 230°.
+    assert!(warnings.contains("contact K: the normal force is negative at 130 deg to 230 deg"), "{warnings}");
+    let negative =
+        result["steps"].as_array().unwrap().iter().filter(|s| s["contacts"][0]["normal"].as_f64().unwrap() < 0.0);
+    assert_eq!(negative.count(), 11);
+}
+
+/// Curves that do not touch as drawn, or cross, are a 422 at the joint's
+/// `curves` saying so; a contact without curves, curves on another joint,
+/// a point that rolls and a bad radius point where they are.
+#[tokio::test]
+async fn contacts_that_are_not_drawn_touching_are_refused_at_their_curves() {
+    let app = TestApp::new().await;
+    let curves = "/mechanism/joints/2/curves";
+    let mut gap = template_request("cam-flat-follower");
+    gap["mechanism"]["points"]["F"] = json!([0, 0.031]);
+    let r = app.post("/v1/kinetostatics", &gap).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let error = &r.json()["errors"][0];
+    assert_eq!(error["pointer"], curves);
+    assert!(error["message"].as_str().unwrap().contains("do not touch as drawn: 1.000000e-3 m apart"), "{error}");
+    let mut cross = template_request("cam-flat-follower");
+    cross["mechanism"]["points"]["F"] = json!([0, 0.02]);
+    let r = app.post("/v1/kinetostatics", &cross).await;
+    assert!(r.json()["errors"][0]["message"].as_str().unwrap().contains("cross at"), "{}", r.text);
+    let mut bad = template_request("cam-flat-follower");
+    bad["mechanism"]["joints"][2]["curves"][0]["circle"]["radius"] = json!("-5 mm");
+    bad["mechanism"]["joints"][1]["rolling"] = json!(true);
+    assert_eq!(
+        app.pointers("/v1/kinetostatics", &bad).await,
+        ["/mechanism/joints/1/rolling", "/mechanism/joints/2/curves/0/circle/radius"]
+    );
+    let mut none = template_request("cam-flat-follower");
+    none["mechanism"]["joints"][2].as_object_mut().unwrap().remove("curves");
+    assert_eq!(app.pointers("/v1/kinetostatics", &none).await, ["/mechanism/joints/2"]);
+    let mut point = template_request("cam-flat-follower");
+    point["mechanism"]["joints"][2]["curves"][1] = json!({"point": [0, 0.03]});
+    point["mechanism"]["joints"][2]["rolling"] = json!(true);
+    assert_eq!(app.pointers("/v1/kinetostatics", &point).await, ["/mechanism/joints/2/rolling"]);
+}
+
+/// Template `ring-on-rim` (seed 002 q4: R = 0.1 m, the pin O R/2 left of
+/// the centre C, the ring P at the rim's top, ω = 2 rad/s, v = 0.5 m/s,
+/// both constant): v_P = ω × OP + v e_t = (−0.2 − 0.5, 0.1) and a_P =
+/// −ω² OP − (v²/R) e_r + 2ω × v e_t = (−0.2, −0.4 − 2.5 − 2.0) m/s²
+/// (hand-worked, 1e-12). The ring is a particle: two inputs move the
+/// whole (Grübler: 3·2 − 1 − 2 − 1 = 2), its rotation stays 0, and its
+/// contact, which holds both ways, warns of nothing.
+#[tokio::test]
+async fn a_ring_on_a_rim_moves_as_the_composition_of_motions_says() {
+    let app = TestApp::new().await;
+    let result = kinetostatics(&app, &template_request("ring-on-rim")).await;
+    assert_eq!((result["dof"].as_i64(), result["grubler"]["mobility"].as_i64()), (Some(2), Some(2)), "{result}");
+    assert_eq!(result["inputs"][1]["coordinate_unit"], "m");
+    let p = &result["steps"][0]["points"][0];
+    for (field, want) in [("vx", -0.7), ("vy", 0.1), ("ax", -0.2), ("ay", -4.9)] {
+        near(&p[field], want, 1e-3, field);
+    }
+    let ring = &result["steps"][0]["kinematics"][1];
+    assert_eq!((ring["theta"].as_f64(), ring["omega"].as_f64()), (Some(0.0), Some(0.0)), "{ring}");
+    near(&result["steps"][0]["contacts"][0]["sliding_velocity"], 0.5, 1e-3, "the ring along the rim");
+    assert!(result["warnings"].as_array().unwrap().is_empty(), "{}", result["warnings"]);
+}
