@@ -144,3 +144,82 @@ async fn a_ring_on_a_rim_moves_as_the_composition_of_motions_says() {
     near(&result["steps"][0]["contacts"][0]["sliding_velocity"], 0.5, 1e-3, "the ring along the rim");
     assert!(result["warnings"].as_array().unwrap().is_empty(), "{}", result["warnings"]);
 }
+
+async fn dynamics(app: &TestApp, body: &Value) -> Value {
+    let r = app.post("/v1/dynamics", body).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    r.json()["result"].clone()
+}
+
+/// Template `rolling-disk`: a uniform disk rolling from rest down an
+/// incline (drawn level, gravity g(sin α, −cos α) tilted by α = 30°).
+/// The closed forms: s = ½at² with a = g sin α/(1 + I/(mR²)) = ⅔ g sin α,
+/// the incline's friction on it ⅓ m g sin α up the slope, normal m g cos α,
+/// so mu_required = tan α/3 (1e-9); made a hoop (I = mR²), a = ½ g sin α.
+/// Energy is conserved (rolling does no work) to the integrator's 1e-10.
+#[tokio::test]
+async fn a_disk_rolls_down_an_incline_at_two_thirds_g_sin_alpha() {
+    let app = TestApp::new().await;
+    let mut body = template_request("rolling-disk");
+    let (m, r) = (2.0, 0.1);
+    let gravity = &body["machine"]["mechanism"]["gravity"];
+    let (g_sin, g_cos) = (gravity[0].as_f64().unwrap(), -gravity[1].as_f64().unwrap());
+    for (inertia, share) in [(0.5 * m * r * r, 2.0 / 3.0), (m * r * r, 0.5)] {
+        body["machine"]["mechanism"]["bodies"][0]["inertia"] = json!(inertia);
+        let result = dynamics(&app, &body).await;
+        assert!(result["energy_residual"].as_f64().unwrap().abs() < 1e-9, "{}", result["energy_residual"]);
+        let a = share * g_sin;
+        for sample in result["machine"]["samples"].as_array().unwrap() {
+            let t = sample["t"].as_f64().unwrap();
+            let input = &sample["inputs"][0];
+            near(&input["angle"], 0.5 * a * t * t, a, &format!("s at t = {t}"));
+            near(&input["acceleration"], a, a, &format!("a at t = {t}"));
+            let reaction = &sample["reactions"][0];
+            near(&reaction["normal"], m * g_cos, m * g_cos, "N = m g cos α");
+            near(
+                &json!(reaction["tangential"].as_f64().unwrap().abs()),
+                m * g_sin * (1.0 - share),
+                m * g_sin,
+                "friction",
+            );
+            near(&reaction["mu_required"], (1.0 - share) * g_sin / g_cos, 1.0, "μ_min");
+            near(&sample["contacts"][0]["sliding_velocity"], 0.0, 1.0, "rolling does not slide");
+        }
+    }
+}
+
+/// A disk (r = 0.1 m, I = ½mr²) rolling inside a circular track (R = 0.5
+/// m, `inside`), released from rest 0.01 rad from the bottom, swings with
+/// ω² = 2g/(3(R − r)) (the rolling pendulum; amplitude 0.01 lengthens the
+/// period by 6e-6): half a period later the contact has run −2Rθ₀ along the
+/// track (1e-5 relative), and T + V stays E₀ to the integrator's tolerance.
+#[tokio::test]
+async fn a_disk_rolling_in_a_circular_track_swings_as_its_pendulum() {
+    let app = TestApp::new().await;
+    let (big, small, g, theta) = (0.5, 0.1, 9.81, 0.01f64);
+    let centre = [(big - small) * theta.sin(), big - (big - small) * theta.cos()];
+    let period = std::f64::consts::TAU * (3.0 * (big - small) / (2.0 * g)).sqrt();
+    let body = json!({
+        "machine": {
+            "mechanism": {
+                "points": {"O": [0, big], "C": centre},
+                "bodies": [{"name": "disk", "mass": 1, "inertia": 0.5 * small * small, "cg": "C"}],
+                "joints": [{"name": "K", "type": "contact", "bodies": ["ground", "disk"], "rolling": true,
+                    "curves": [{"circle": {"center": "O", "radius": big, "inside": true}},
+                               {"circle": {"center": "C", "radius": small}}]}],
+                "gravity": [0, -g]
+            },
+            "input": {"joint": "K"}
+        },
+        "initial": {"angle": 0, "speed": 0},
+        "duration": period / 2.0,
+        "tolerance": 1e-11,
+        "samples": 3
+    });
+    let result = dynamics(&app, &body).await;
+    let last = result["machine"]["samples"].as_array().unwrap().last().unwrap().clone();
+    let s = last["inputs"][0]["angle"].as_f64().unwrap();
+    assert!((s.abs() - 2.0 * big * theta).abs() < 1e-5 * 2.0 * big * theta, "s(T/2) = {s}");
+    assert!(result["energy_residual"].as_f64().unwrap().abs() < 1e-9, "{}", result["energy_residual"]);
+    assert!(result["warnings"].as_array().unwrap().is_empty(), "{}", result["warnings"]);
+}

@@ -6,7 +6,7 @@ use crate::helpers::{TestApp, case, request};
 use axum::http::StatusCode;
 use serde_json::{Value, json};
 
-const BUILTIN: [&str; 12] = [
+const BUILTIN: [&str; 13] = [
     "p103-slider-flywheel",
     "p103-class",
     "p107-two-stroke-engine",
@@ -19,6 +19,7 @@ const BUILTIN: [&str; 12] = [
     "bar-on-slider",
     "cam-flat-follower",
     "ring-on-rim",
+    "rolling-disk",
 ];
 
 async fn number(app: &TestApp, path: &str) -> f64 {

@@ -118,6 +118,7 @@ pub const LIBRARY_FILES: &[(&str, &str)] = &[
     ("bar-on-slider.json", include_str!("../../../library/bar-on-slider.json")),
     ("cam-flat-follower.json", include_str!("../../../library/cam-flat-follower.json")),
     ("ring-on-rim.json", include_str!("../../../library/ring-on-rim.json")),
+    ("rolling-disk.json", include_str!("../../../library/rolling-disk.json")),
 ];
 
 /// A new template checked: its kind, name, parameters' names, pointers,

@@ -25,7 +25,7 @@ use super::{DynamicsError, DynamicsSolution, End, Integrator, Sample, Settings, 
 use crate::engine::Deadline;
 use crate::engine::constraints::{State, evaluate, evaluate_blocks, joint_offsets};
 use crate::engine::kinematics::sweep;
-use crate::engine::kinetostatics::{self, Energy, Load, Motion, Reaction, potential, reactions};
+use crate::engine::kinetostatics::{self, ContactState, Energy, Load, Motion, Reaction, potential, reactions};
 use crate::engine::mobility::{Mobility, mobility};
 use crate::engine::model::Mechanism;
 use equations::{Equations, kinetic, masses};
@@ -69,6 +69,8 @@ pub struct MechanismSample {
     /// (x_G, y_G, θ) of every moving body, in body order.
     pub poses: Vec<[f64; 3]>,
     pub reactions: Vec<Reaction>,
+    /// The state of every contact joint whose reaction is determinate.
+    pub contacts: Vec<ContactState>,
     /// |Φ| at the sample (dense output, before any projection).
     pub constraint_residual: f64,
     /// The kinetic energy of every body and the potential of gravity and the springs.
@@ -184,13 +186,16 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
     let t0 = states.first().map_or(0.0, |(_, y)| dae.kinetic(&y[n..2 * n]));
     let mut details = Vec::with_capacity(states.len());
     let mut samples = Vec::with_capacity(states.len());
+    let mut peak = 0.0f64;
     for (t, y) in states {
         if p.deadline.expired() {
             return Err(over(run.t_end, run.attempted));
         }
         let detail = sample(&dae, &mobility, *t, y)?;
         let [angle, speed, acceleration] = detail.inputs[0];
-        let energy_residual = energy_residual(y[2 * n], t0, dae.kinetic(&y[n..2 * n]));
+        let kinetic = dae.kinetic(&y[n..2 * n]);
+        peak = peak.max(kinetic);
+        let energy_residual = energy_residual(y[2 * n], t0, kinetic, peak);
         samples.push(Sample { t: *t, angle, speed, acceleration, energy_residual });
         details.push(detail);
     }
@@ -201,7 +206,7 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         events: run.events,
         energy_times: Vec::new(),
         work_by_quadrature: false,
-        energy_residual: energy_residual(work, dae.kinetic(&first[n..2 * n]), dae.kinetic(&last[n..2 * n])),
+        energy_residual: energy_residual(work, dae.kinetic(&first[n..2 * n]), dae.kinetic(&last[n..2 * n]), peak),
         steps: run.attempted,
         evaluations: run.evaluations,
         integrator: run.integrator,
@@ -312,6 +317,8 @@ fn sample(dae: &Equations, mobility: &Mobility, t: f64, y: &[f64]) -> Result<Mec
     } else {
         Vec::new()
     };
+    let states = reactions.iter().filter(|r| r.determinate);
+    let contacts = states.filter_map(|r| kinetostatics::contact_state(&dae.p.mechanism, q, qd, r)).collect();
     let poses = q[..dae.p.mechanism.n_body_coordinates()].chunks_exact(3).map(|b| [b[0], b[1], b[2]]).collect();
     let energy = kinetostatics::energy(&dae.p.mechanism, &dae.p.loads, q, qd);
     let kept = dae.p.motion.then(|| Motion { q: q.to_vec(), qd: qd.to_vec(), qdd: motion.qdd.clone() });
@@ -319,6 +326,7 @@ fn sample(dae: &Equations, mobility: &Mobility, t: f64, y: &[f64]) -> Result<Mec
         inputs: motion.inputs,
         poses,
         reactions,
+        contacts,
         constraint_residual: motion.residual,
         energy,
         motion: kept,

@@ -85,7 +85,7 @@ pub struct Sample {
     pub angle: f64,
     pub speed: f64,
     pub acceleration: f64,
-    /// (W − ΔT)/max(|W|, |ΔT|, T₀, T) from the start to this sample, W the
+    /// (W − ΔT)/max(|W|, |ΔT|, T₀, T, T_peak) from the start to this sample, W the
     /// integrated power of the actions: how the energy balance drifts.
     pub energy_residual: f64,
 }
@@ -112,7 +112,7 @@ pub struct DynamicsSolution {
     /// Reduced form with actions of φ only: each event's time by the energy
     /// form t = ∫dφ/ω (None once the motion has turned back); else empty.
     pub energy_times: Vec<Option<f64>>,
-    /// (W − ΔT)/max(|W|, |ΔT|, T₀, T_end).
+    /// (W − ΔT)/max(|W|, |ΔT|, T₀, T_end, T_peak).
     pub energy_residual: f64,
     /// W by quadrature over the angle (the reduced form's actions of φ
     /// only); else the integrated power.
@@ -376,9 +376,11 @@ fn finished(
     }
 }
 
-/// (W − ΔT)/max(|W|, |ΔT|, T₀, T_end).
-pub(crate) fn energy_residual(work: f64, t0: f64, t1: f64) -> f64 {
+/// (W − ΔT)/max(|W|, |ΔT|, T₀, T_end, T_peak), T_peak the largest kinetic
+/// energy sampled so far (a swing that ends at rest, as it started, is
+/// measured against the energy it swung with, not the ~0 at its ends).
+pub(crate) fn energy_residual(work: f64, t0: f64, t1: f64, peak: f64) -> f64 {
     let dt = t1 - t0;
-    let denom = work.abs().max(dt.abs()).max(t0).max(t1);
+    let denom = work.abs().max(dt.abs()).max(t0).max(t1).max(peak);
     if denom > 0.0 { (work - dt) / denom } else { 0.0 }
 }

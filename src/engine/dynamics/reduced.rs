@@ -119,12 +119,15 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
     let run = run(&model, vec![p.angle0, p.speed0, 0.0], &settings)?;
     let mut dy = [0.0; 3];
     let t0 = p.kinetic(p.angle0, p.speed0);
+    let mut peak = 0.0f64;
     let samples: Vec<Sample> = run
         .states
         .iter()
         .map(|(t, y)| {
             model.rhs(*t, y, &mut dy);
-            let energy_residual = energy_residual(y[2], t0, p.kinetic(y[0], y[1]));
+            let kinetic = p.kinetic(y[0], y[1]);
+            peak = peak.max(kinetic);
+            let energy_residual = energy_residual(y[2], t0, kinetic, peak);
             Sample { t: *t, angle: y[0], speed: y[1], acceleration: dy[1], energy_residual }
         })
         .collect();
@@ -152,7 +155,12 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
         samples,
         energy_times,
         work_by_quadrature: position_only,
-        energy_residual: energy_residual(w, p.kinetic(first.angle, first.speed), p.kinetic(last.angle, last.speed)),
+        energy_residual: energy_residual(
+            w,
+            p.kinetic(first.angle, first.speed),
+            p.kinetic(last.angle, last.speed),
+            peak,
+        ),
         events: run.events,
         steps: run.attempted,
         evaluations: run.evaluations,

@@ -9,7 +9,9 @@ use crate::engine::model::{Driver, Mechanism};
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
 use crate::kinds::mechanism::track::{PointState, TrackDto, Tracked, resolve, states};
 use crate::kinds::mechanism::{Assembled, MechanismDto, coordinate};
-use crate::kinds::mechanism::{EnergyDto, InputDto, Inputs, LoadDto, Name, ReactionDto, convert_loads, names};
+use crate::kinds::mechanism::{
+    ContactDto, EnergyDto, InputDto, Inputs, LoadDto, Name, ReactionDto, annotate, convert_loads, names,
+};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
@@ -88,10 +90,16 @@ impl DynamicsMachine {
         let c = dto.convert(e, "/machine/mechanism")?;
         let mut mechanism = c.mechanism;
         for (k, j) in mechanism.joints.iter().enumerate() {
+            let contact = matches!(j.kind, crate::engine::model::JointKind::Contact(_));
             if j.friction.is_some() {
                 e.push(
                     &format!("/machine/mechanism/joints/{k}/friction"),
-                    "joint friction is not supported in dynamics",
+                    if contact {
+                        "friction at a contact is not modelled in dynamics: leave it out, and a rolling contact \
+                         rolls (each sample's reaction says the mu_required), a sliding one slides freely"
+                    } else {
+                        "joint friction is not supported in dynamics"
+                    },
                 );
             }
         }
@@ -207,6 +215,9 @@ pub struct MachineSample {
     /// The points of `track`, where given.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub points: Option<Vec<PointState>>,
+    /// Every contact joint's state, with the reactions.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub contacts: Option<Vec<ContactDto>>,
 }
 
 /// What the mechanism form adds to a dynamics result.
@@ -259,7 +270,14 @@ impl MachineDynamics {
                     .zip(body_names.iter().skip(1))
                     .map(|(p, body)| BodyPosition { body: body.clone(), x: p[0], y: p[1], theta: p[2] })
                     .collect(),
-                reactions: d.reactions.iter().map(|r| ReactionDto::new(r, joint_names, body_names)).collect(),
+                reactions: {
+                    let mut list: Vec<ReactionDto> =
+                        d.reactions.iter().map(|r| ReactionDto::new(r, joint_names, body_names)).collect();
+                    annotate(&mut list, &d.contacts, m, joint_names);
+                    list
+                },
+                contacts: (!d.contacts.is_empty())
+                    .then(|| d.contacts.iter().map(|c| ContactDto::new(c, joint_names)).collect()),
                 constraint_residual: d.constraint_residual,
                 energy: EnergyDto::new(d.energy.clone(), body_names),
                 points: points(&d.motion),

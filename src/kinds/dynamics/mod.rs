@@ -16,6 +16,7 @@ use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
 use crate::kind::validated;
 use crate::kind::{Kind, Table, unit_in};
+use crate::kinds::mechanism::contact_warnings;
 use crate::units::Dim;
 use machine::Report;
 use serde::{Deserialize, Serialize};
@@ -194,6 +195,16 @@ impl Kind for Dynamics {
         ("/machine/samples/*/reactions/*/fy", "N"),
         ("/machine/samples/*/reactions/*/moment", "N*m"),
         ("/machine/samples/*/reactions/*/ends/*", "N"),
+        ("/machine/samples/*/reactions/*/normal", "N"),
+        ("/machine/samples/*/reactions/*/tangential", "N"),
+        ("/machine/samples/*/reactions/*/mu_required", "1"),
+        ("/machine/samples/*/contacts/*/point/*", "m"),
+        ("/machine/samples/*/contacts/*/sliding_velocity", "m/s"),
+        ("/machine/samples/*/contacts/*/velocities/*/*", "m/s"),
+        ("/machine/samples/*/contacts/*/normal", "N"),
+        ("/machine/samples/*/contacts/*/tangential", "N"),
+        ("/machine/samples/*/contacts/*/curvature_radius/*", "m"),
+        ("/machine/samples/*/contacts/*/pressure_angle", "rad"),
         ("/machine/samples/*/t", "s"),
         ("/samples/*/acceleration", "rad/s^2"),
         ("/samples/*/angle", "rad"),
@@ -287,7 +298,10 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
             if let Some(a) = &report.assembled {
                 result.warnings.extend(a.warnings.iter().cloned());
             }
-            result.machine = Some(MachineDynamics::new(&s, &p.mechanism, report));
+            let machine = MachineDynamics::new(&s, &p.mechanism, report);
+            let contacts = machine.samples.iter().filter_map(|x| Some((x.t, x.contacts.as_deref()?)));
+            result.warnings.extend(contact_warnings(contacts, &p.mechanism, |t| format!("t = {t:.6} s")));
+            result.machine = Some(machine);
             Ok(result)
         }
     }

@@ -56,7 +56,7 @@ pub fn draw(job: &Job, name: &str, options: &Options) -> Drawn {
             xy(samples, |s| num(s, "angle").map(deg), |s| num(s, "speed")),
             Pen::solid(0),
         ),
-        "energy" => Chart::new(title, time(), Axis::new("energy residual (W − ΔT)/max(|W|, |ΔT|, T₀, T)", "1"))
+        "energy" => Chart::new(title, time(), Axis::new("energy residual (W − ΔT)/max(|W|, |ΔT|, T₀, T, T_peak)", "1"))
             .line(
                 "integrated power W against the kinetic energy T",
                 xy(samples, |s| num(s, "t"), |s| num(s, "energy_residual")),

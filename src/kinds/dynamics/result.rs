@@ -14,8 +14,9 @@ pub struct SampleDto {
     pub angle: f64,
     pub speed: f64,
     pub acceleration: f64,
-    /// (W − ΔT)/max(|W|, |ΔT|, T₀, T) from the start to this sample, W the
-    /// integrated power of the actions: the energy balance's drift.
+    /// (W − ΔT)/max(|W|, |ΔT|, T₀, T, T_peak) from the start to this sample, W the
+    /// integrated power of the actions, T_peak the largest T sampled so far:
+    /// the energy balance's drift.
     pub energy_residual: f64,
 }
 
@@ -35,7 +36,7 @@ pub struct EventDto {
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct DynamicsAccuracy {
-    /// (W − ΔT)/max(|W|, |ΔT|, T₀, T_end): the work of the actions against
+    /// (W − ΔT)/max(|W|, |ΔT|, T₀, T_end, T_peak): the work of the actions against
     /// the change of kinetic energy. W is a quadrature over the angle when the
     /// reduced actions depend on φ only, else the integrated power.
     pub energy_residual: f64,
