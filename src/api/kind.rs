@@ -67,6 +67,13 @@ pub trait AnyKind: Send + Sync {
     fn unit(&self, result: &Value, pointer: &[&str]) -> Option<String>;
     fn plots(&self, job: &plots::Job) -> Vec<crate::kind::chart::Listed>;
     fn plot(&self, job: &plots::Job, name: &str, options: &plots::Options) -> plots::Drawn;
+    /// Its files' names and content types, and one made from a result.
+    fn files(&self) -> &'static [(&'static str, &'static str)] {
+        &[]
+    }
+    fn file(&self, _result: &Value, _name: &str) -> Option<Vec<u8>> {
+        None
+    }
 }
 
 /// A [`Kind`] in the registry.
@@ -122,6 +129,12 @@ impl<K: Kind> AnyKind for Registered<K> {
     }
     fn plot(&self, job: &plots::Job, name: &str, options: &plots::Options) -> plots::Drawn {
         (K::PLOTS.draw)(job, name, options)
+    }
+    fn files(&self) -> &'static [(&'static str, &'static str)] {
+        K::FILES
+    }
+    fn file(&self, result: &Value, name: &str) -> Option<Vec<u8>> {
+        K::file(result, name)
     }
 }
 

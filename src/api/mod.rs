@@ -10,6 +10,7 @@ pub mod check;
 pub mod create;
 pub mod deferred;
 pub mod examples;
+pub mod files;
 pub mod idempotency;
 pub mod job;
 pub mod jobs;
@@ -146,6 +147,7 @@ fn routes(kinds: &kind::Registry) -> OpenApiRouter<AppState> {
         .routes(utoipa_axum::routes!(pages::job::job))
         .routes(utoipa_axum::routes!(pages::form::template))
         .routes(utoipa_axum::routes!(pages::favicon))
+        .routes(utoipa_axum::routes!(files::file))
 }
 
 /// A route whose last path parameter takes the rest of the path (a JSON

@@ -60,6 +60,15 @@ pub trait Kind: Send + Sync + 'static {
         None
     }
 
+    /// The files a job of this kind offers besides its JSON and CSV
+    /// (`GET /v1/jobs/{id}/{name}`), each with its content type.
+    const FILES: &'static [(&'static str, &'static str)] = &[];
+
+    /// File `name` (one of [`Kind::FILES`]) made from a stored result.
+    fn file(_result: &Value, _name: &str) -> Option<Vec<u8>> {
+        None
+    }
+
     /// The unit of the number at `pointer` (split into tokens) of `result`.
     /// Kinds whose units depend on the request (a force or a torque drives
     /// a mechanism) override this and fall back to [`unit_in`].

@@ -183,6 +183,8 @@ pub enum ApiError {
     NoPart { id: String, pointer: String },
     #[error("job '{id}' has no plot '{name}' ({})", if .known.is_empty() { "it has no plots".to_string() } else { format!("its plots: {}", .known.join(", ")) })]
     NoPlot { id: String, name: String, known: Vec<String> },
+    #[error("job '{id}' has no file '{name}' ({})", if .known.is_empty() { "it has none".to_string() } else { format!("its files: {}", .known.join(", ")) })]
+    NoFile { id: String, name: String, known: Vec<String> },
     #[error("no template with id '{0}' (GET /v1/templates lists them)")]
     NoTemplate(String),
     #[error("{0}")]
@@ -255,6 +257,7 @@ impl ApiError {
             Self::NotDone { .. } => (StatusCode::CONFLICT, "job-not-done", "The job has no result"),
             Self::NoPart { .. } => (StatusCode::NOT_FOUND, "no-such-part", "No such part of the result"),
             Self::NoPlot { .. } => (StatusCode::NOT_FOUND, "no-such-plot", "No such plot of the job"),
+            Self::NoFile { .. } => (StatusCode::NOT_FOUND, "no-such-file", "No such file of the job"),
             Self::MethodNotAllowed => (StatusCode::METHOD_NOT_ALLOWED, "method-not-allowed", "Method not allowed"),
             Self::OverBudget(_) => {
                 (StatusCode::UNPROCESSABLE_ENTITY, "compute-budget", "The job ran out of its compute budget")

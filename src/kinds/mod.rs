@@ -5,6 +5,7 @@
 //! mechanism's wire form the mechanism kinds share. Each kind is written
 //! against the contract ([`crate::kind`]) only; [`register`] lists them.
 
+pub mod cams;
 pub mod dynamics;
 pub mod equivalent;
 pub mod flywheel;
@@ -28,4 +29,5 @@ pub fn register(r: &mut impl Register) {
     r.kind::<equivalent::EquivalentMasses>();
     r.kind::<rotor::RigidRotor>();
     r.kind::<mobility::Mobility>();
+    r.kind::<cams::Cams>();
 }

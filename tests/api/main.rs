@@ -2,6 +2,7 @@
 
 mod andrews;
 mod browser;
+mod cams;
 mod capacity;
 mod cases;
 mod class;

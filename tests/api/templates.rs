@@ -6,7 +6,7 @@ use crate::helpers::{TestApp, case, request};
 use axum::http::StatusCode;
 use serde_json::{Value, json};
 
-const BUILTIN: [&str; 13] = [
+const BUILTIN: [&str; 14] = [
     "p103-slider-flywheel",
     "p103-class",
     "p107-two-stroke-engine",
@@ -20,6 +20,7 @@ const BUILTIN: [&str; 13] = [
     "cam-flat-follower",
     "ring-on-rim",
     "rolling-disk",
+    "cam-design",
 ];
 
 async fn number(app: &TestApp, path: &str) -> f64 {

@@ -119,6 +119,7 @@ pub const LIBRARY_FILES: &[(&str, &str)] = &[
     ("cam-flat-follower.json", include_str!("../../../library/cam-flat-follower.json")),
     ("ring-on-rim.json", include_str!("../../../library/ring-on-rim.json")),
     ("rolling-disk.json", include_str!("../../../library/rolling-disk.json")),
+    ("cam-design.json", include_str!("../../../library/cam-design.json")),
 ];
 
 /// A new template checked: its kind, name, parameters' names, pointers,

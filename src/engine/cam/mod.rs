@@ -7,6 +7,7 @@
 //! per unit cam speed squared) and s‴ (jerk). At cam speed ω (constant):
 //! v = s′ω, a = s″ω², j = s‴ω³.
 
+pub mod design;
 pub mod laws;
 
 pub use laws::Law;

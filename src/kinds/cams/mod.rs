@@ -1,0 +1,149 @@
+//! `POST /v1/cams`: a disk cam designed for its follower and motion
+//! program — the follower's lift, velocity, acceleration and jerk (SVAJ),
+//! the pitch curve and profile, pressure angle and radii of curvature,
+//! undercut, a flat face's width, the smallest base radius meeting a
+//! pressure angle or a radius of curvature, and with the follower's
+//! dynamics the contact force, cam torque, separation, critical speed and
+//! least preload. The symbols are the engine's ([`crate::engine::cam`]).
+
+mod dxf;
+mod plots;
+mod request;
+mod result;
+
+pub use request::CamRequest;
+pub use result::CamResult;
+
+use crate::engine::cam::design::{Cam, CamError, Lift, smallest_base, turn};
+use crate::kind::limits::Limits;
+use crate::kind::plots::Plots;
+use crate::kind::problem::{ApiError, FieldError};
+use crate::kind::{Kind, Table, cell, validated};
+use request::Problem;
+use serde_json::Value;
+
+/// Cam design: `POST /v1/cams`.
+pub struct Cams;
+
+impl Kind for Cams {
+    const NAME: &'static str = "cams";
+    const PATH: &'static str = "/v1/cams";
+    const OPERATION_ID: &'static str = "create_cam_job";
+    const TAG: &'static str = "calculators";
+    const SUMMARY: &'static str = "A disk cam for its follower and motion program: SVAJ, profile, pressure angle, curvature, undercut, size, and the follower's dynamics.";
+    const UNITS: &'static [(&'static str, &'static str)] = &[
+        ("/samples/*/theta", "rad"),
+        ("/samples/*/lift", "m"),
+        ("/samples/*/velocity", "m/s"),
+        ("/samples/*/acceleration", "m/s^2"),
+        ("/samples/*/jerk", "m/s^3"),
+        ("/samples/*/dlift", "m"),
+        ("/samples/*/d2lift", "m"),
+        ("/samples/*/d3lift", "m"),
+        ("/samples/*/pressure_angle", "rad"),
+        ("/samples/*/pitch_point/*", "m"),
+        ("/samples/*/profile_point/*", "m"),
+        ("/samples/*/curvature_radius", "m"),
+        ("/samples/*/pitch_curvature_radius", "m"),
+        ("/samples/*/contact_force", "N"),
+        ("/samples/*/cam_torque", "N*m"),
+        ("/summary/base_radius", "m"),
+        ("/summary/max_pressure_angle/*", "rad"),
+        ("/summary/min_curvature_radius/value", "m"),
+        ("/summary/min_curvature_radius/theta", "rad"),
+        ("/summary/face_width", "m"),
+        ("/summary/separation/*/*", "rad"),
+        ("/summary/critical_speed", "rad/s"),
+        ("/summary/min_preload", "N"),
+        ("/segments/*/from", "rad"),
+        ("/segments/*/to", "rad"),
+        ("/segments/*/peak_velocity", "m/s"),
+        ("/segments/*/peak_acceleration", "m/s^2"),
+        ("/segments/*/peak_jerk", "m/s^3"),
+    ];
+    type Request = CamRequest;
+    type Result = CamResult;
+    const PLOTS: Plots = Plots { list: plots::list, draw: plots::draw };
+    const FILES: &'static [(&'static str, &'static str)] = &[("profile.dxf", "application/dxf")];
+
+    fn file(result: &Value, name: &str) -> Option<Vec<u8>> {
+        (name == "profile.dxf").then(|| dxf::profile(result)).flatten()
+    }
+
+    fn compute(request: &CamRequest, unknown: Vec<FieldError>, limits: &Limits) -> Result<CamResult, ApiError> {
+        let problem = validated(unknown, request.to_problem(limits))?;
+        let lift = result::lift_of(&problem);
+        let reader = Lift::Function(&lift);
+        let base = match problem.size {
+            None => problem.cam.base,
+            Some(size) => sized(&problem, &reader, size)?,
+        };
+        let cam = Cam { base, ..problem.cam };
+        let samples = turn(&cam, &reader, problem.samples).map_err(|e| refused(&e))?;
+        Ok(result::result(&problem, &cam, &samples))
+    }
+
+    /// The samples, one row each.
+    fn table(result: &Value) -> Option<Table> {
+        let rows = result["samples"].as_array()?;
+        let fields = [
+            "theta",
+            "lift",
+            "velocity",
+            "acceleration",
+            "jerk",
+            "dlift",
+            "d2lift",
+            "d3lift",
+            "pressure_angle",
+            "curvature_radius",
+            "pitch_curvature_radius",
+            "contact_force",
+            "cam_torque",
+        ];
+        let mut header: Vec<String> = fields.iter().map(|f| (*f).to_string()).collect();
+        header.extend(["pitch_x", "pitch_y", "profile_x", "profile_y"].map(String::from));
+        let body = rows
+            .iter()
+            .map(|r| {
+                let mut row: Vec<String> = fields.iter().map(|f| cell(&r[*f])).collect();
+                row.extend(
+                    [&r["pitch_point"][0], &r["pitch_point"][1], &r["profile_point"][0], &r["profile_point"][1]]
+                        .map(cell),
+                );
+                row
+            })
+            .collect();
+        Some((header, body))
+    }
+}
+
+/// The smallest base radius meeting `size` ([largest pressure angle, smallest
+/// radius of curvature]) without undercut.
+fn sized(p: &Problem, lift: &Lift, [angle, rho]: [Option<f64>; 2]) -> Result<f64, ApiError> {
+    let follower = p.cam.follower;
+    let ok = |turn: &[crate::engine::cam::design::Sample]| {
+        let cam = Cam { follower, ..p.cam };
+        let angle_ok = angle.is_none_or(|a| turn.iter().all(|x| x.pressure_angle.abs() <= a));
+        let convex = |x: &&crate::engine::cam::design::Sample| {
+            x.pitch_curvature_radius > 0.0 || follower == crate::engine::cam::design::Follower::Flat
+        };
+        let rho_ok = rho.is_none_or(|r| turn.iter().filter(convex).all(|x| x.curvature_radius >= r));
+        angle_ok && rho_ok && !result::undercut(&cam, turn)
+    };
+    smallest_base(p.cam, lift, p.samples, ok).ok_or_else(|| {
+        ApiError::Invalid(vec![FieldError::at(
+            "/size",
+            "no base radius up to 100 times the lift meets it: ask for a larger pressure angle or a smaller radius of curvature",
+        )])
+    })
+}
+
+/// A cam that cannot be made, at its field.
+fn refused(e: &CamError) -> ApiError {
+    let at = match e {
+        CamError::Offset { .. } => "/follower/offset",
+        CamError::Negative { .. } => "/program",
+    };
+    ApiError::Invalid(vec![FieldError::at(at, e.to_string())])
+}

@@ -1,0 +1,353 @@
+//! The cam design request and its conversion, every error at its pointer.
+
+use crate::engine::cam::design::{Cam, Follower, Loads};
+use crate::engine::cam::{Law, Program, ProgramError, Segment};
+use crate::engine::function::{Function, Side};
+use crate::kind::limits::Limits;
+use crate::kind::problem::FieldError;
+use crate::kind::quantity::{Errors, FunctionDto, Quantity};
+use crate::units::Dim;
+use serde::{Deserialize, Serialize};
+use std::f64::consts::TAU;
+use utoipa::ToSchema;
+
+/// Most samples over a turn.
+pub const MAX_SAMPLES: usize = 36_000;
+/// Most segments of a program.
+pub const MAX_SEGMENTS: usize = 100;
+
+/// A disk cam to design (see the example).
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[schema(example = json!({
+    "follower": {"type": "roller", "motion": "translating", "offset": "0 mm", "roller_radius": "10 mm"},
+    "program": [
+        {"to": "90 deg", "law": "cycloidal", "lift": "20 mm"},
+        {"to": "180 deg", "law": "dwell", "lift": "20 mm"},
+        {"to": "270 deg", "law": "polynomial-345", "lift": "0 mm"},
+        {"to": "360 deg", "law": "dwell", "lift": "0 mm"}
+    ],
+    "size": {"max_pressure_angle": "30 deg"},
+    "speed": "300 rpm",
+    "dynamics": {"follower_mass": "0.5 kg", "spring": {"stiffness": "2000 N/m", "preload": "20 N"}},
+    "samples": 360
+}))]
+pub struct CamRequest {
+    pub follower: FollowerDto,
+    /// The follower's motion over one turn from lift 0 at angle 0: segments
+    /// `{"to", "law", "lift"}` end to end, the last ending at 360° at lift 0;
+    /// or `{"lift": Function of theta}`.
+    pub program: ProgramDto,
+    /// The profile's smallest radius (a roller's cam: base + roller radius is the pitch circle), m.
+    #[schema(value_type = Option<Quantity>)]
+    pub base_radius: Option<Quantity>,
+    /// Instead of `base_radius`: the smallest base radius meeting these.
+    pub size: Option<SizeDto>,
+    /// The cam's angular speed (constant), rad/s.
+    #[schema(value_type = Quantity)]
+    pub speed: Quantity,
+    /// The cam's sense of rotation; default ccw.
+    pub direction: Option<Sense>,
+    pub dynamics: Option<CamDynamicsDto>,
+    /// Angles evenly spaced over the turn (default 360).
+    #[schema(minimum = 4, maximum = 36000)]
+    pub samples: Option<usize>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum Sense {
+    Ccw,
+    Cw,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum FollowerType {
+    Flat,
+    Roller,
+    Knife,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum FollowerMotion {
+    Translating,
+    Oscillating,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct FollowerDto {
+    #[serde(rename = "type")]
+    pub kind: FollowerType,
+    /// Default translating.
+    pub motion: Option<FollowerMotion>,
+    /// Signed distance of the follower's axis from the cam centre (m; > 0
+    /// to the left of its motion seen from the cam centre); default 0.
+    #[schema(value_type = Option<Quantity>)]
+    pub offset: Option<Quantity>,
+    /// A roller's radius, m.
+    #[schema(value_type = Option<Quantity>)]
+    pub roller_radius: Option<Quantity>,
+    /// Oscillating: distance from the cam centre to the follower's pivot, m.
+    #[schema(value_type = Option<Quantity>)]
+    pub pivot: Option<Quantity>,
+    /// Oscillating: pivot to the roller's centre or to the face's line, m.
+    #[schema(value_type = Option<Quantity>)]
+    pub arm: Option<Quantity>,
+}
+
+/// Segments end to end, or a lift Function of `theta`.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[serde(untagged)]
+pub enum ProgramDto {
+    Segments(Vec<SegmentDto>),
+    Lift(LiftDto),
+}
+
+/// A segment ending at `to` with the follower at `lift` by `law`.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct SegmentDto {
+    #[schema(value_type = Quantity)]
+    pub to: Quantity,
+    /// dwell, harmonic, cycloidal, polynomial-345, polynomial-4567, modified-sine or modified-trapezoid.
+    pub law: String,
+    /// m (a dwell's may be left out: it holds).
+    #[schema(value_type = Option<Quantity>)]
+    pub lift: Option<Quantity>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct LiftDto {
+    /// s(θ) in m, a Function of `theta`, periodic over a turn, ≥ 0.
+    #[schema(value_type = FunctionDto)]
+    pub lift: FunctionDto,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct SizeDto {
+    #[schema(value_type = Option<Quantity>)]
+    pub max_pressure_angle: Option<Quantity>,
+    #[schema(value_type = Option<Quantity>)]
+    pub min_curvature_radius: Option<Quantity>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct CamDynamicsDto {
+    #[schema(value_type = Quantity)]
+    pub follower_mass: Quantity,
+    pub spring: Option<SpringDto>,
+    /// An external force on the follower along its motion away from the cam (N), a Function of `theta`.
+    #[schema(value_type = Option<FunctionDto>)]
+    pub force: Option<FunctionDto>,
+    /// Friction at a flat face.
+    pub friction: Option<crate::kinds::mechanism::FrictionDto>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct SpringDto {
+    /// N/m.
+    #[schema(value_type = Quantity)]
+    pub stiffness: Quantity,
+    /// The spring's force at lift 0, N.
+    #[schema(value_type = Option<Quantity>)]
+    pub preload: Option<Quantity>,
+}
+
+/// The lift as the engine takes it.
+pub enum Motion {
+    Program(Program, Vec<&'static str>),
+    Function(Box<[Function; 4]>),
+}
+
+/// A validated request, SI.
+pub struct Problem {
+    pub cam: Cam,
+    pub motion: Motion,
+    pub size: Option<[Option<f64>; 2]>,
+    pub speed: f64,
+    pub loads: Option<(Loads, Option<Function>)>,
+    pub samples: usize,
+}
+
+/// The wire name of each law.
+pub const LAWS: [(&str, Law); 7] = [
+    ("dwell", Law::Dwell),
+    ("harmonic", Law::Harmonic),
+    ("cycloidal", Law::Cycloidal),
+    ("polynomial-345", Law::Poly345),
+    ("polynomial-4567", Law::Poly4567),
+    ("modified-sine", Law::ModifiedSine),
+    ("modified-trapezoid", Law::ModifiedTrapezoid),
+];
+
+impl CamRequest {
+    pub fn to_problem(&self, limits: &Limits) -> Result<Problem, Vec<FieldError>> {
+        let mut e = Errors::new(limits);
+        let cam = self.cam(&mut e);
+        let motion = self.motion(&mut e);
+        let size = match (&self.base_radius, &self.size) {
+            (Some(_), Some(_)) => e.fail("/size", "give \"base_radius\" or \"size\", not both"),
+            (None, None) => e.fail("", "give the cam's \"base_radius\", or \"size\" to find the smallest"),
+            (Some(_), None) => Some(None),
+            (None, Some(s)) => {
+                let angle = s.max_pressure_angle.as_ref().and_then(|q| {
+                    let v = e.angle(q, "/size/max_pressure_angle")?;
+                    e.require(Some(v), |v| v > 0.0 && v < 1.5, "/size/max_pressure_angle", "must be between 0 and 85°")
+                });
+                let rho = s
+                    .min_curvature_radius
+                    .as_ref()
+                    .and_then(|q| e.positive(q, Dim::LENGTH, "/size/min_curvature_radius"));
+                if s.max_pressure_angle.is_none() && s.min_curvature_radius.is_none() {
+                    e.push("/size", "give \"max_pressure_angle\" and/or \"min_curvature_radius\"");
+                }
+                Some(Some([angle, rho]))
+            }
+        };
+        let speed = e.quantity(&self.speed, Dim::ANGULAR_SPEED, "/speed");
+        let speed = e.require(speed, |w| w > 0.0, "/speed", "must be greater than 0 (the sense is \"direction\")");
+        let loads = self.dynamics.as_ref().map(|d| loads(&mut e, d, cam.map(|c| c.follower)));
+        let samples = self.samples.unwrap_or(360);
+        if !(4..=MAX_SAMPLES).contains(&samples) {
+            e.push("/samples", format!("must be between 4 and {MAX_SAMPLES}"));
+        }
+        if !e.list.is_empty() {
+            return Err(e.list);
+        }
+        let (cam, motion, size, speed) = (cam.unwrap(), motion.unwrap(), size.unwrap(), speed.unwrap());
+        let loads = match loads {
+            Some(Some(l)) => Some(l),
+            _ => None,
+        };
+        Ok(Problem { cam, motion, size, speed, loads, samples })
+    }
+
+    fn cam(&self, e: &mut Errors) -> Option<Cam> {
+        let f = &self.follower;
+        if f.motion == Some(FollowerMotion::Oscillating) {
+            return e.fail(
+                "/follower/motion",
+                "oscillating followers are not designed by this service yet: a translating one (with \"offset\") is",
+            );
+        }
+        for (field, given) in [("pivot", f.pivot.is_some()), ("arm", f.arm.is_some())] {
+            if given {
+                e.push(&format!("/follower/{field}"), "applies to an oscillating follower only");
+            }
+        }
+        let offset = f.offset.as_ref().map_or(Some(0.0), |q| e.quantity(q, Dim::LENGTH, "/follower/offset"));
+        let follower = match (f.kind, &f.roller_radius) {
+            (FollowerType::Roller, Some(r)) => {
+                e.positive(r, Dim::LENGTH, "/follower/roller_radius").map(Follower::Roller)
+            }
+            (FollowerType::Roller, None) => e.fail("/follower", "a roller follower needs its \"roller_radius\""),
+            (_, Some(_)) => e.fail("/follower/roller_radius", "applies to a roller follower only"),
+            (FollowerType::Flat, None) => Some(Follower::Flat),
+            (FollowerType::Knife, None) => Some(Follower::Roller(0.0)),
+        };
+        let base = match &self.base_radius {
+            Some(q) => e.positive(q, Dim::LENGTH, "/base_radius"),
+            None => Some(0.0),
+        };
+        let clockwise = self.direction == Some(Sense::Cw);
+        Some(Cam { follower: follower?, offset: offset?, base: base?, clockwise })
+    }
+
+    fn motion(&self, e: &mut Errors) -> Option<Motion> {
+        match &self.program {
+            ProgramDto::Lift(l) => {
+                let s = e.function_of(&l.lift, Dim::LENGTH, TAU, "/program/lift", &["theta"])?;
+                let (a, b) = (s.eval(0.0, Side::Right), s.eval(TAU, Side::Left));
+                if (a - b).abs() > 1e-9 * a.abs().max(b.abs()).max(1e-3) {
+                    return e.fail(
+                        "/program/lift",
+                        format!("must return to its start over a turn: s(0) = {a}, s(360°) = {b}"),
+                    );
+                }
+                let d1 = s.derivative();
+                let d2 = d1.derivative();
+                let d3 = d2.derivative();
+                Some(Motion::Function(Box::new([s, d1, d2, d3])))
+            }
+            ProgramDto::Segments(list) => program(e, list),
+        }
+    }
+}
+
+fn program(e: &mut Errors, list: &[SegmentDto]) -> Option<Motion> {
+    if list.is_empty() || list.len() > MAX_SEGMENTS {
+        return e.fail("/program", format!("must hold 1 to {MAX_SEGMENTS} segments"));
+    }
+    let (mut start, mut from, mut segments, mut names) = (0.0, 0.0, Vec::new(), Vec::new());
+    for (k, s) in list.iter().enumerate() {
+        let at = format!("/program/{k}");
+        let to = e.angle(&s.to, &format!("{at}/to"));
+        let law = match LAWS.iter().find(|(name, _)| *name == s.law) {
+            Some(&(name, law)) => Some((name, law)),
+            None => e.fail(
+                &format!("{at}/law"),
+                format!("unknown law '{}': one of {}", s.law, LAWS.map(|(n, _)| n).join(", ")),
+            ),
+        };
+        let lift = match (&s.lift, law) {
+            (Some(q), _) => e.quantity(q, Dim::LENGTH, &format!("{at}/lift")),
+            (None, Some((_, Law::Dwell))) => Some(from),
+            (None, Some(_)) => e.fail(&at, "a segment that moves needs its \"lift\" at its end"),
+            (None, None) => None,
+        };
+        let (Some(to), Some((name, law)), Some(lift)) = (to, law, lift) else { return None };
+        segments.push(Segment { law, start, span: to - start, from, to: lift });
+        names.push(name);
+        (start, from) = (to, lift);
+    }
+    match Program::new(segments) {
+        Ok(p) => Some(Motion::Program(p, names)),
+        Err(err) => {
+            let last = list.len() - 1;
+            let (at, message) = match err {
+                ProgramError::Empty { segment, .. } => {
+                    (format!("/program/{segment}/to"), "must be after the end of the segment before".to_string())
+                }
+                ProgramError::MovingDwell { segment, .. } => {
+                    (format!("/program/{segment}/lift"), "a dwell holds the lift of the segment before".into())
+                }
+                ProgramError::NotATurn { .. } => {
+                    (format!("/program/{last}/to"), "the last segment must end at 360°".into())
+                }
+                ProgramError::NotClosed { .. } => {
+                    (format!("/program/{last}/lift"), "the last segment must end at lift 0".into())
+                }
+                other => ("/program".to_string(), other.to_string()),
+            };
+            e.fail(&at, message)
+        }
+    }
+}
+
+/// The follower's dynamics (None inside: in error).
+fn loads(e: &mut Errors, d: &CamDynamicsDto, follower: Option<Follower>) -> Option<(Loads, Option<Function>)> {
+    let mass = e.quantity(&d.follower_mass, Dim::MASS, "/dynamics/follower_mass");
+    let mass = e.require(mass, |m| m >= 0.0, "/dynamics/follower_mass", "must not be negative");
+    let (stiffness, preload) = match &d.spring {
+        None => (Some(0.0), Some(0.0)),
+        Some(s) => {
+            let k = e.quantity(&s.stiffness, Dim::STIFFNESS, "/dynamics/spring/stiffness");
+            let k = e.require(k, |k| k >= 0.0, "/dynamics/spring/stiffness", "must not be negative");
+            let f0 = s.preload.as_ref().map_or(Some(0.0), |q| e.quantity(q, Dim::FORCE, "/dynamics/spring/preload"));
+            (k, f0)
+        }
+    };
+    let force = match &d.force {
+        None => Some(None),
+        Some(f) => e.function_of(f, Dim::FORCE, TAU, "/dynamics/force", &["theta"]).map(Some),
+    };
+    let mu = match (&d.friction, follower) {
+        (None, _) => Some(0.0),
+        (Some(f), Some(Follower::Flat)) if f.mu.is_finite() && f.mu >= 0.0 && f.radius.is_none() => Some(f.mu),
+        (Some(_), Some(Follower::Flat)) => e.fail("/dynamics/friction", "must be {\"mu\"} with μ ≥ 0"),
+        (Some(_), _) => {
+            e.fail("/dynamics/friction", "applies to a flat face (a roller rolls; a knife's friction is not modelled)")
+        }
+    };
+    Some((Loads { mass: mass?, stiffness: stiffness?, preload: preload?, mu: mu? }, force?))
+}

@@ -1,0 +1,299 @@
+//! The `result` of a cam design job and how it is made from the engine's samples.
+
+use super::request::{Motion, Problem};
+use crate::engine::cam::design::{Cam, Follower, Sample};
+use crate::engine::function::Side;
+use serde::{Deserialize, Serialize};
+use std::f64::consts::TAU;
+use utoipa::ToSchema;
+
+/// Pressure angles beyond which a translating follower is warned of (rad).
+const PRESSURE_LIMIT: f64 = 30.0 * std::f64::consts::PI / 180.0;
+/// Samples per segment for its peaks.
+const PEAK_SAMPLES: usize = 2000;
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct CamSample {
+    /// Cam angle, rad.
+    pub theta: f64,
+    /// s, m.
+    pub lift: f64,
+    /// s′ω, m/s.
+    pub velocity: f64,
+    /// s″ω², m/s².
+    pub acceleration: f64,
+    /// s‴ω³, m/s³.
+    pub jerk: f64,
+    /// s′ = ds/dθ, m/rad.
+    pub dlift: f64,
+    pub d2lift: f64,
+    pub d3lift: f64,
+    /// rad (0 for a flat face), signed.
+    pub pressure_angle: f64,
+    /// [x, y] (m) in the cam's frame (x: the follower's direction at θ = 0):
+    /// a roller's centre, a knife's edge, a flat face's point on its axis.
+    pub pitch_point: [f64; 2],
+    /// The contact point on the profile, [x, y] (m) in the cam's frame.
+    pub profile_point: [f64; 2],
+    /// The profile's radius of curvature (m; > 0 convex, < 0 concave).
+    pub curvature_radius: f64,
+    /// A roller's pitch curve's radius of curvature (m).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pitch_curvature_radius: Option<f64>,
+    /// With `dynamics`: the force between cam and follower (N; < 0: they would separate).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub contact_force: Option<f64>,
+    /// With `dynamics`: the torque that turns the cam at `speed` (N·m).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cam_torque: Option<f64>,
+}
+
+/// A value and the cam angle where it is.
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, ToSchema)]
+pub struct AtAngle {
+    pub value: f64,
+    pub theta: f64,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct CamSummary {
+    /// m (given, or the smallest meeting `size`).
+    pub base_radius: f64,
+    /// The largest |pressure angle|, rad.
+    pub max_pressure_angle: AtAngle,
+    /// The profile's smallest radius of curvature where it is convex (m).
+    pub min_curvature_radius: AtAngle,
+    /// The profile folds on itself (a roller larger than the pitch curve's
+    /// convex radius; a flat face on a concave stretch).
+    pub undercut: bool,
+    /// A flat face: the smallest width that keeps contact (m).
+    pub face_width: Option<f64>,
+    /// With `dynamics`: the angle ranges [from, to] (rad) where the contact force is negative.
+    pub separation: Option<Vec<[f64; 2]>>,
+    /// With `dynamics`: the cam speed above which the follower leaves the cam (rad/s; null: none).
+    pub critical_speed: Option<f64>,
+    /// With `dynamics`: the least spring preload that keeps contact at `speed` (N).
+    pub min_preload: Option<f64>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct SegmentPeaks {
+    /// rad.
+    pub from: f64,
+    pub to: f64,
+    pub law: String,
+    /// The largest |s′|ω (m/s), |s″|ω² (m/s²), |s‴|ω³ (m/s³) in the segment.
+    pub peak_velocity: f64,
+    pub peak_acceleration: f64,
+    pub peak_jerk: f64,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct CamResult {
+    pub samples: Vec<CamSample>,
+    pub summary: CamSummary,
+    /// A program's segments (empty for a lift Function).
+    pub segments: Vec<SegmentPeaks>,
+    /// How the numbers were made.
+    pub method: String,
+    pub warnings: Vec<String>,
+}
+
+impl crate::kind::JobResult for CamResult {
+    fn warnings(&mut self) -> Option<&mut Vec<String>> {
+        Some(&mut self.warnings)
+    }
+}
+
+/// The lift of a problem as the engine reads it.
+pub fn lift_of(p: &Problem) -> impl Fn(f64) -> [f64; 4] + '_ {
+    move |theta| match &p.motion {
+        Motion::Program(program, _) => {
+            let s = program.eval(theta);
+            [s[0], s[1], s[2], s[3]]
+        }
+        Motion::Function(f) => f.as_ref().each_ref().map(|f| f.eval(theta.rem_euclid(TAU), Side::Right)),
+    }
+}
+
+/// The result from the turn's samples of the designed cam.
+pub fn result(p: &Problem, cam: &Cam, turn: &[Sample]) -> CamResult {
+    let w = p.speed;
+    let external =
+        |theta: f64| p.loads.as_ref().and_then(|(_, f)| f.as_ref()).map_or(0.0, |f| f.eval(theta, Side::Right));
+    let forces: Vec<Option<[f64; 3]>> =
+        turn.iter().map(|x| p.loads.as_ref().map(|(l, _)| cam.forces(x, l, w, external(x.theta)))).collect();
+    let samples = turn
+        .iter()
+        .zip(&forces)
+        .map(|(x, f)| {
+            let [s, s1, s2, s3] = x.lift;
+            CamSample {
+                theta: x.theta,
+                lift: s,
+                velocity: s1 * w,
+                acceleration: s2 * w * w,
+                jerk: s3 * w * w * w,
+                dlift: s1,
+                d2lift: s2,
+                d3lift: s3,
+                pressure_angle: x.pressure_angle,
+                pitch_point: x.pitch_point,
+                profile_point: x.profile_point,
+                curvature_radius: x.curvature_radius,
+                pitch_curvature_radius: matches!(cam.follower, Follower::Roller(r) if r > 0.0)
+                    .then_some(x.pitch_curvature_radius),
+                contact_force: f.map(|f| f[1]),
+                cam_torque: f.map(|f| f[2]),
+            }
+        })
+        .collect();
+    let mut warnings = Vec::new();
+    let summary = summary(p, cam, turn, &forces, &mut warnings);
+    let segments = match &p.motion {
+        Motion::Program(program, names) => {
+            // A jump of the jerk keeps the acceleration continuous: only
+            // velocity and acceleration jumps break the fundamental law.
+            for b in program.breaks().into_iter().filter(|b| b.derivative <= 2) {
+                let what = ["", "velocity", "acceleration"][b.derivative];
+                warnings.push(format!(
+                    "the fundamental law of cam design is broken at {:.4}°: the {what} jumps by {:.6e} (per rad^{})",
+                    b.theta.to_degrees(),
+                    b.jump,
+                    b.derivative
+                ));
+            }
+            program.segments().iter().zip(names).map(|(s, name)| peaks(s, name, w)).collect()
+        }
+        Motion::Function(_) => Vec::new(),
+    };
+    CamResult {
+        samples,
+        summary,
+        segments,
+        method: "the laws in closed form and their derivatives to the jerk; the pitch curve and profile from the \
+                 follower's position in the cam's frame, their curvature from exact derivatives (a flat face's \
+                 ρ = R_b + s + s″); forces from the follower's equation along its axis"
+            .into(),
+        warnings,
+    }
+}
+
+fn peaks(s: &crate::engine::cam::Segment, name: &str, w: f64) -> SegmentPeaks {
+    let mut peak = [0.0f64; 3];
+    for k in 0..=PEAK_SAMPLES {
+        let theta = s.start + s.span * k as f64 / PEAK_SAMPLES as f64;
+        let v = s.eval(theta.min(s.start + s.span));
+        for d in 0..3 {
+            peak[d] = peak[d].max(v[d + 1].abs() * w.powi(d as i32 + 1));
+        }
+    }
+    SegmentPeaks {
+        from: s.start,
+        to: s.start + s.span,
+        law: name.to_string(),
+        peak_velocity: peak[0],
+        peak_acceleration: peak[1],
+        peak_jerk: peak[2],
+    }
+}
+
+fn summary(
+    p: &Problem,
+    cam: &Cam,
+    turn: &[Sample],
+    forces: &[Option<[f64; 3]>],
+    warnings: &mut Vec<String>,
+) -> CamSummary {
+    let at = |x: &Sample, v: f64| AtAngle { value: v, theta: x.theta };
+    let max_angle = turn
+        .iter()
+        .map(|x| at(x, x.pressure_angle.abs()))
+        .fold(at(&turn[0], 0.0), |a, b| if b.value > a.value { b } else { a });
+    let convex = turn.iter().filter(|x| x.pitch_curvature_radius > 0.0 || cam.follower == Follower::Flat);
+    let min_rho = convex
+        .map(|x| at(x, x.curvature_radius))
+        .fold(AtAngle { value: f64::INFINITY, theta: 0.0 }, |a, b| if b.value < a.value { b } else { a });
+    let undercut = undercut(cam, turn);
+    if undercut {
+        warnings.push(format!(
+            "undercut: the profile folds on itself near {:.2}° (radius of curvature {:.6e} m): a larger base circle{}",
+            min_rho.theta.to_degrees(),
+            min_rho.value,
+            if cam.follower == Follower::Flat { "" } else { " or a smaller roller" }
+        ));
+    }
+    if cam.follower != Follower::Flat && max_angle.value > PRESSURE_LIMIT {
+        warnings.push(format!(
+            "the pressure angle reaches {:.2}° at {:.2}° (over 30° for a translating follower): a larger base circle, or an offset",
+            max_angle.value.to_degrees(),
+            max_angle.theta.to_degrees()
+        ));
+    }
+    let face = turn.iter().map(|x| x.face_offset);
+    let face_width = (cam.follower == Follower::Flat)
+        .then(|| face.clone().fold(f64::NEG_INFINITY, f64::max) - face.fold(f64::INFINITY, f64::min));
+    let (separation, critical_speed, min_preload) = match &p.loads {
+        Some((loads, _)) => dynamics(p, turn, forces, loads),
+        None => (None, None, None),
+    };
+    if let Some(ranges) = separation.as_ref().filter(|r| !r.is_empty()) {
+        let list: Vec<String> =
+            ranges.iter().map(|[a, b]| format!("{:.1}° to {:.1}°", a.to_degrees(), b.to_degrees())).collect();
+        warnings.push(format!("the follower would leave the cam at {} (negative contact force)", list.join(", ")));
+    }
+    CamSummary {
+        base_radius: cam.base,
+        max_pressure_angle: max_angle,
+        min_curvature_radius: min_rho,
+        undercut,
+        face_width,
+        separation,
+        critical_speed,
+        min_preload,
+    }
+}
+
+/// The profile folds: a roller larger than a convex pitch radius, a flat face on a concave stretch.
+pub fn undercut(cam: &Cam, turn: &[Sample]) -> bool {
+    match cam.follower {
+        Follower::Flat => turn.iter().any(|x| x.curvature_radius < 0.0),
+        Follower::Roller(r) => turn.iter().any(|x| x.pitch_curvature_radius > 0.0 && x.pitch_curvature_radius < r),
+    }
+}
+
+type Dynamics = (Option<Vec<[f64; 2]>>, Option<f64>, Option<f64>);
+
+/// Separation ranges, critical speed and least preload: with N_x = m s″ω² + G,
+/// G = F₀ + k s − F, contact holds while N_x ≥ 0.
+fn dynamics(
+    p: &Problem,
+    turn: &[Sample],
+    forces: &[Option<[f64; 3]>],
+    loads: &crate::engine::cam::design::Loads,
+) -> Dynamics {
+    let mut ranges: Vec<[f64; 2]> = Vec::new();
+    let mut open = false;
+    for (x, f) in turn.iter().zip(forces) {
+        let negative = f.is_some_and(|f| f[0] < 0.0);
+        match (negative, open) {
+            (true, true) => ranges.last_mut().expect("open")[1] = x.theta,
+            (true, false) => ranges.push([x.theta, x.theta]),
+            _ => {}
+        }
+        open = negative;
+    }
+    let w = p.speed;
+    let mut critical = f64::INFINITY;
+    for (x, f) in turn.iter().zip(forces) {
+        let (Some(f), s2) = (f, x.lift[2]) else { continue };
+        let g = f[0] - loads.mass * s2 * w * w;
+        if g < 0.0 {
+            critical = 0.0;
+        } else if s2 < 0.0 && loads.mass > 0.0 {
+            critical = critical.min((g / (-loads.mass * s2)).sqrt());
+        }
+    }
+    let preload = forces.iter().flatten().map(|f| loads.preload - f[0]).fold(0.0f64, f64::max);
+    (Some(ranges), critical.is_finite().then_some(critical), Some(preload))
+}

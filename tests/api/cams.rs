@@ -1,0 +1,216 @@
+//! `POST /v1/cams` against closed forms and against the mechanism solver.
+
+use crate::helpers::{TestApp, template_request};
+use axum::http::StatusCode;
+use serde_json::{Value, json};
+use std::f64::consts::PI;
+
+async fn cam(app: &TestApp, body: &Value) -> Value {
+    let r = app.post("/v1/cams", body).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    r.json()["result"].clone()
+}
+
+#[track_caller]
+fn near(actual: &Value, expected: f64, tol: f64, what: &str) {
+    let a = actual.as_f64().unwrap_or_else(|| panic!("{what}: {actual} is not a number"));
+    assert!((a - expected).abs() <= tol, "{what}: {a} vs {expected} (±{tol})");
+}
+
+/// A cycloidal rise of h = 20 mm over β = 90° at ω = 10π rad/s (300 rpm):
+/// s = h(x − sin 2πx/2π), v = (h/β)(1 − cos 2πx)ω, a = (2πh/β²) sin 2πx ω²,
+/// j = (4π²h/β³) cos 2πx ω³ (x = θ/β; closed forms, 1e-9 relative); the
+/// segment's peaks 2hω/β, 2πhω²/β², 4π²hω³/β³; a 3-4-5 return's peaks
+/// 1.875, 5.7735 and 60 times h/β^k ω^k (the textbook's coefficients,
+/// 1e-4); a dwell after a cycloid is smooth to the acceleration, the 3-4-5
+/// too: no warning of the fundamental law.
+#[tokio::test]
+async fn a_cycloidal_rise_moves_as_its_closed_form() {
+    let app = TestApp::new().await;
+    let body = json!({
+        "follower": {"type": "roller", "roller_radius": "10 mm"},
+        "program": [{"to": "90 deg", "law": "cycloidal", "lift": "20 mm"}, {"to": "180 deg", "law": "dwell"},
+                    {"to": "270 deg", "law": "polynomial-345", "lift": 0}, {"to": "360 deg", "law": "dwell"}],
+        "base_radius": "40 mm", "speed": "300 rpm", "samples": 72
+    });
+    let r = cam(&app, &body).await;
+    let (h, beta, w) = (0.02, PI / 2.0, 10.0 * PI);
+    for s in r["samples"].as_array().unwrap().iter().filter(|s| s["theta"].as_f64().unwrap() < beta) {
+        let x = s["theta"].as_f64().unwrap() / beta;
+        let (sn, cs) = (2.0 * PI * x).sin_cos();
+        near(&s["lift"], h * (x - sn / (2.0 * PI)), 1e-12, "s");
+        near(&s["velocity"], h / beta * (1.0 - cs) * w, 1e-9 * 2.0 * h / beta * w, "v");
+        near(&s["acceleration"], 2.0 * PI * h / (beta * beta) * sn * w * w, 1e-9 * 50.0, "a");
+        near(&s["jerk"], 4.0 * PI * PI * h / beta.powi(3) * cs * w.powi(3), 1e-9 * 7000.0, "j");
+    }
+    let rise = &r["segments"][0];
+    near(&rise["peak_velocity"], 2.0 * h * w / beta, 1e-9, "peak v");
+    near(&rise["peak_acceleration"], 2.0 * PI * h * w * w / (beta * beta), 1e-7, "peak a");
+    near(&rise["peak_jerk"], 4.0 * PI * PI * h * w.powi(3) / beta.powi(3), 1e-5, "peak j");
+    let ret = &r["segments"][2];
+    assert_eq!(ret["law"], "polynomial-345");
+    near(&ret["peak_velocity"], 1.875 * h * w / beta, 1e-4, "3-4-5 peak v");
+    near(&ret["peak_acceleration"], 5.7735 * h * w * w / (beta * beta), 1e-4 * 46.0, "3-4-5 peak a");
+    near(&ret["peak_jerk"], 60.0 * h * (w / beta).powi(3), 1e-9 * 9600.0, "3-4-5 peak j");
+    assert!(r["warnings"].as_array().unwrap().is_empty(), "{}", r["warnings"]);
+}
+
+/// An eccentric circle (R = 50 mm, its centre e = 20 mm from the pivot)
+/// written as the lift of a 10 mm roller on a radial follower, s(θ) =
+/// √((R + r)² − e² sin²θ) − e cos θ − (R + r − e): the cam made from that
+/// lift is the circle again — every profile point R from the circle's
+/// centre, the profile's radius of curvature R and the pitch curve's R + r,
+/// the pressure angle asin(e sin θ/(R + r)) (the normal through the
+/// circle's centre); base radius R − e (closed forms, 1e-7).
+#[tokio::test]
+async fn an_eccentric_lift_makes_the_eccentric_circle_again() {
+    let app = TestApp::new().await;
+    let (big, e, r) = (0.05, 0.02, 0.01);
+    let body = json!({
+        "follower": {"type": "roller", "roller_radius": r},
+        "program": {"lift": {"expr": "sqrt(0.06^2 - (0.02*sin(theta))^2) - 0.02*cos(theta) - 0.04"}},
+        "base_radius": big - e, "speed": 10, "samples": 36
+    });
+    let result = cam(&app, &body).await;
+    for s in result["samples"].as_array().unwrap() {
+        let theta = s["theta"].as_f64().unwrap();
+        let p = &s["profile_point"];
+        let from_centre = (p[0].as_f64().unwrap() + e).hypot(p[1].as_f64().unwrap());
+        near(&json!(from_centre), big, 1e-9, &format!("θ = {theta}: on the circle"));
+        near(&s["curvature_radius"], big, 1e-7, "ρ = R");
+        near(&s["pitch_curvature_radius"], big + r, 1e-7, "pitch ρ = R + r");
+        near(&s["pressure_angle"], (e * theta.sin() / (big + r)).asin(), 1e-9, "φ");
+    }
+    near(&result["summary"]["min_curvature_radius"]["value"], big, 1e-7, "smallest ρ");
+    assert_eq!(result["summary"]["undercut"], false);
+}
+
+/// The same eccentric disk under template cam-flat-follower's flat face
+/// (s = e(1 − cos θ), base R − e, follower 2 kg under gravity, μ = 0.1,
+/// 10 rad/s), designed here and solved there as a mechanism: the cam
+/// torque here equals the driving torque there at every 10° (1e-9 of
+/// m g R; two methods: the follower's equation along its axis and power,
+/// against the multipliers of the whole mechanism). The face must be 2e
+/// wide; ρ = R everywhere.
+#[tokio::test]
+async fn a_designed_flat_follower_cam_agrees_with_the_mechanism_solver() {
+    let app = TestApp::new().await;
+    let (big, e, m, g) = (0.05, 0.02, 2.0, 9.81);
+    let body = json!({
+        "follower": {"type": "flat"},
+        "program": {"lift": {"expr": "0.02*(1 - cos(theta))"}},
+        "base_radius": big - e, "speed": 10, "samples": 36,
+        "dynamics": {"follower_mass": m, "force": -m * g, "friction": {"mu": 0.1}}
+    });
+    let designed = cam(&app, &body).await;
+    near(&designed["summary"]["face_width"], 2.0 * e, 1e-9, "face width");
+    let r = app.post("/v1/kinetostatics", &template_request("cam-flat-follower")).await;
+    let solved = r.json()["result"]["steps"].clone();
+    for (a, b) in designed["samples"].as_array().unwrap().iter().zip(solved.as_array().unwrap()) {
+        near(&a["theta"], b["input"].as_f64().unwrap(), 1e-12, "the same angles");
+        near(&a["cam_torque"], b["driving"].as_f64().unwrap(), 1e-9 * m * g * big, "torque");
+        near(&a["contact_force"], b["contacts"][0]["normal"].as_f64().unwrap(), 1e-9 * m * g, "N");
+        near(&a["curvature_radius"], big, 1e-9, "ρ = R");
+    }
+}
+
+/// Sizing: the smallest base radius for a 30° pressure angle reaches it
+/// (1e-6) and a base 1% smaller exceeds it; errors at their fields.
+#[tokio::test]
+async fn the_smallest_base_meets_its_pressure_angle_and_errors_point_at_fields() {
+    let app = TestApp::new().await;
+    let mut body = json!({
+        "follower": {"type": "knife", "offset": "-5 mm"},
+        "program": [{"to": "120 deg", "law": "modified-sine", "lift": "25 mm"}, {"to": "200 deg", "law": "dwell"},
+                    {"to": "320 deg", "law": "harmonic", "lift": 0}, {"to": "360 deg", "law": "dwell"}],
+        "size": {"max_pressure_angle": "30 deg"}, "speed": 20
+    });
+    let r = cam(&app, &body).await;
+    let base = r["summary"]["base_radius"].as_f64().unwrap();
+    near(&r["summary"]["max_pressure_angle"]["value"], PI / 6.0, 1e-6, "φ_max at the smallest base");
+    let warnings = r["warnings"].to_string();
+    assert!(warnings.contains("broken at 200.0000°: the acceleration jumps"), "{warnings}");
+    body.as_object_mut().unwrap().remove("size");
+    body["base_radius"] = json!(0.99 * base);
+    let smaller = cam(&app, &body).await;
+    assert!(smaller["summary"]["max_pressure_angle"]["value"].as_f64().unwrap() > PI / 6.0 + 1e-6);
+    let mut bad = body.clone();
+    bad["program"][1]["law"] = json!("parabolic");
+    bad["program"][3]["to"] = json!("350 deg");
+    assert_eq!(app.pointers("/v1/cams", &bad).await, ["/program/1/law"]);
+    bad["program"][1]["law"] = json!("dwell");
+    assert_eq!(app.pointers("/v1/cams", &bad).await, ["/program/3/to"]);
+    bad["follower"] = json!({"type": "roller", "motion": "oscillating"});
+    assert_eq!(app.pointers("/v1/cams", &bad).await, ["/follower/motion", "/program/3/to"]);
+}
+
+/// The Python that has `ezdxf` (a real DXF reader, from PyPI), or None.
+fn ezdxf_python() -> Option<String> {
+    let venv = format!("{}/.venv/bin/python", env!("CARGO_MANIFEST_DIR"));
+    let has =
+        |p: &str| std::process::Command::new(p).args(["-c", "import ezdxf"]).output().is_ok_and(|o| o.status.success());
+    [venv.as_str(), "python3"].into_iter().find(|p| has(p)).map(String::from)
+}
+
+/// `GET /v1/jobs/{id}/profile.dxf`: the profile as a closed polyline in mm
+/// whose vertices are the result's profile points (read back by ezdxf, a
+/// real DXF reader: its audit finds no error, the PROFILE polyline is
+/// closed with one vertex per sample at 1000 × profile_point to 1e-9 mm,
+/// the base circle R_b); a roller's pitch curve on its own layer. Another
+/// kind's job has no such file (a 404 listing the files it has).
+#[tokio::test]
+async fn a_cam_s_profile_is_a_dxf_that_cad_reads() {
+    let app = TestApp::new().await;
+    let body = json!({
+        "follower": {"type": "roller", "roller_radius": "8 mm", "offset": "4 mm"},
+        "program": [{"to": "100 deg", "law": "modified-trapezoid", "lift": "15 mm"}, {"to": "160 deg", "law": "dwell"},
+                    {"to": "280 deg", "law": "polynomial-4567", "lift": 0}, {"to": "360 deg", "law": "dwell"}],
+        "base_radius": "35 mm", "speed": 30, "samples": 90
+    });
+    let r = app.post("/v1/cams", &body).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let job = r.json();
+    let file = app.get(&format!("/v1/jobs/{}/profile.dxf", job["id"].as_str().unwrap())).await;
+    assert_eq!(file.status, StatusCode::OK, "{}", file.text);
+    assert!(file.text.starts_with("0\nSECTION\n2\nHEADER") && file.text.ends_with("0\nEOF\n"));
+    let other = app.post("/v1/kinetostatics", &template_request("cam-flat-follower")).await.json();
+    let missing = app.get(&format!("/v1/jobs/{}/profile.dxf", other["id"].as_str().unwrap())).await;
+    assert_eq!(missing.status, StatusCode::NOT_FOUND);
+    assert!(missing.text.contains("no file 'profile.dxf'"), "{}", missing.text);
+    let Some(python) = ezdxf_python() else {
+        assert!(
+            std::env::var_os("MECHDYN_REQUIRE_EZDXF").is_none(),
+            "MECHDYN_REQUIRE_EZDXF is set and no Python has ezdxf"
+        );
+        eprintln!("skipped the DXF reader: no Python with ezdxf (`.venv/bin/pip install ezdxf`)");
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("profile.dxf");
+    std::fs::write(&path, &file.text).unwrap();
+    let script = "import ezdxf, json, sys\n\
+        doc = ezdxf.readfile(sys.argv[1])\n\
+        audit = doc.audit()\n\
+        msp = doc.modelspace()\n\
+        out = {'errors': len(audit.errors), 'layers': sorted(e.dxf.layer for e in msp)}\n\
+        p = [e for e in msp if e.dxftype() == 'POLYLINE' and e.dxf.layer == 'PROFILE'][0]\n\
+        out['closed'] = p.is_closed\n\
+        out['profile'] = [[v.dxf.location.x, v.dxf.location.y] for v in p.vertices]\n\
+        out['base'] = [e.dxf.radius for e in msp if e.dxftype() == 'CIRCLE'][0]\n\
+        print(json.dumps(out))\n";
+    let out = std::process::Command::new(python).args(["-c", script, path.to_str().unwrap()]).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let read: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(read["errors"], 0, "{read}");
+    assert_eq!(read["layers"], json!(["BASE", "PITCH", "PROFILE"]));
+    assert_eq!(read["closed"], true);
+    let samples = job["result"]["samples"].as_array().unwrap();
+    let vertices = read["profile"].as_array().unwrap();
+    assert_eq!(vertices.len(), samples.len());
+    for (v, s) in vertices.iter().zip(samples) {
+        for k in 0..2 {
+            near(&v[k], 1e3 * s["profile_point"][k].as_f64().unwrap(), 1e-9, "vertex");
+        }
+    }
+    near(&read["base"], 35.0, 1e-9, "base circle (mm)");
+}
