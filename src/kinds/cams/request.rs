@@ -32,21 +32,21 @@ pub const MAX_SEGMENTS: usize = 100;
     "samples": 360
 }))]
 pub struct CamRequest {
-    pub follower: FollowerDto,
+    pub follower: CamFollowerDto,
     /// The follower's motion over one turn from lift 0 at angle 0: segments
     /// `{"to", "law", "lift"}` end to end, the last ending at 360° at lift 0;
     /// or `{"lift": Function of theta}`.
-    pub program: ProgramDto,
+    pub program: CamProgramDto,
     /// The profile's smallest radius (a roller's cam: base + roller radius is the pitch circle), m.
     #[schema(value_type = Option<Quantity>)]
     pub base_radius: Option<Quantity>,
     /// Instead of `base_radius`: the smallest base radius meeting these.
-    pub size: Option<SizeDto>,
+    pub size: Option<CamSizeDto>,
     /// The cam's angular speed (constant), rad/s.
     #[schema(value_type = Quantity)]
     pub speed: Quantity,
     /// The cam's sense of rotation; default ccw.
-    pub direction: Option<Sense>,
+    pub direction: Option<CamSense>,
     pub dynamics: Option<CamDynamicsDto>,
     /// Angles evenly spaced over the turn (default 360).
     #[schema(minimum = 4, maximum = 36000)]
@@ -55,14 +55,14 @@ pub struct CamRequest {
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
 #[serde(rename_all = "lowercase")]
-pub enum Sense {
+pub enum CamSense {
     Ccw,
     Cw,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
 #[serde(rename_all = "lowercase")]
-pub enum FollowerType {
+pub enum CamFollowerType {
     Flat,
     Roller,
     Knife,
@@ -70,17 +70,17 @@ pub enum FollowerType {
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
 #[serde(rename_all = "lowercase")]
-pub enum FollowerMotion {
+pub enum CamFollowerMotion {
     Translating,
     Oscillating,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
-pub struct FollowerDto {
+pub struct CamFollowerDto {
     #[serde(rename = "type")]
-    pub kind: FollowerType,
+    pub kind: CamFollowerType,
     /// Default translating.
-    pub motion: Option<FollowerMotion>,
+    pub motion: Option<CamFollowerMotion>,
     /// Signed distance of the follower's axis from the cam centre (m; > 0
     /// to the left of its motion seen from the cam centre); default 0.
     #[schema(value_type = Option<Quantity>)]
@@ -99,14 +99,14 @@ pub struct FollowerDto {
 /// Segments end to end, or a lift Function of `theta`.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 #[serde(untagged)]
-pub enum ProgramDto {
-    Segments(Vec<SegmentDto>),
-    Lift(LiftDto),
+pub enum CamProgramDto {
+    Segments(Vec<CamSegmentDto>),
+    Lift(CamLiftDto),
 }
 
 /// A segment ending at `to` with the follower at `lift` by `law`.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
-pub struct SegmentDto {
+pub struct CamSegmentDto {
     #[schema(value_type = Quantity)]
     pub to: Quantity,
     /// dwell, harmonic, cycloidal, polynomial-345, polynomial-4567, modified-sine or modified-trapezoid.
@@ -117,14 +117,14 @@ pub struct SegmentDto {
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
-pub struct LiftDto {
+pub struct CamLiftDto {
     /// s(θ) in m, a Function of `theta`, periodic over a turn, ≥ 0.
     #[schema(value_type = FunctionDto)]
     pub lift: FunctionDto,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
-pub struct SizeDto {
+pub struct CamSizeDto {
     #[schema(value_type = Option<Quantity>)]
     pub max_pressure_angle: Option<Quantity>,
     #[schema(value_type = Option<Quantity>)]
@@ -135,7 +135,7 @@ pub struct SizeDto {
 pub struct CamDynamicsDto {
     #[schema(value_type = Quantity)]
     pub follower_mass: Quantity,
-    pub spring: Option<SpringDto>,
+    pub spring: Option<CamSpringDto>,
     /// An external force on the follower along its motion away from the cam (N), a Function of `theta`.
     #[schema(value_type = Option<FunctionDto>)]
     pub force: Option<FunctionDto>,
@@ -144,7 +144,7 @@ pub struct CamDynamicsDto {
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
-pub struct SpringDto {
+pub struct CamSpringDto {
     /// N/m.
     #[schema(value_type = Quantity)]
     pub stiffness: Quantity,
@@ -224,7 +224,7 @@ impl CamRequest {
 
     fn cam(&self, e: &mut Errors) -> Option<Cam> {
         let f = &self.follower;
-        if f.motion == Some(FollowerMotion::Oscillating) {
+        if f.motion == Some(CamFollowerMotion::Oscillating) {
             return e.fail(
                 "/follower/motion",
                 "oscillating followers are not designed by this service yet: a translating one (with \"offset\") is",
@@ -237,25 +237,25 @@ impl CamRequest {
         }
         let offset = f.offset.as_ref().map_or(Some(0.0), |q| e.quantity(q, Dim::LENGTH, "/follower/offset"));
         let follower = match (f.kind, &f.roller_radius) {
-            (FollowerType::Roller, Some(r)) => {
+            (CamFollowerType::Roller, Some(r)) => {
                 e.positive(r, Dim::LENGTH, "/follower/roller_radius").map(Follower::Roller)
             }
-            (FollowerType::Roller, None) => e.fail("/follower", "a roller follower needs its \"roller_radius\""),
+            (CamFollowerType::Roller, None) => e.fail("/follower", "a roller follower needs its \"roller_radius\""),
             (_, Some(_)) => e.fail("/follower/roller_radius", "applies to a roller follower only"),
-            (FollowerType::Flat, None) => Some(Follower::Flat),
-            (FollowerType::Knife, None) => Some(Follower::Roller(0.0)),
+            (CamFollowerType::Flat, None) => Some(Follower::Flat),
+            (CamFollowerType::Knife, None) => Some(Follower::Roller(0.0)),
         };
         let base = match &self.base_radius {
             Some(q) => e.positive(q, Dim::LENGTH, "/base_radius"),
             None => Some(0.0),
         };
-        let clockwise = self.direction == Some(Sense::Cw);
+        let clockwise = self.direction == Some(CamSense::Cw);
         Some(Cam { follower: follower?, offset: offset?, base: base?, clockwise })
     }
 
     fn motion(&self, e: &mut Errors) -> Option<Motion> {
         match &self.program {
-            ProgramDto::Lift(l) => {
+            CamProgramDto::Lift(l) => {
                 let s = e.function_of(&l.lift, Dim::LENGTH, TAU, "/program/lift", &["theta"])?;
                 let (a, b) = (s.eval(0.0, Side::Right), s.eval(TAU, Side::Left));
                 if (a - b).abs() > 1e-9 * a.abs().max(b.abs()).max(1e-3) {
@@ -269,12 +269,12 @@ impl CamRequest {
                 let d3 = d2.derivative();
                 Some(Motion::Function(Box::new([s, d1, d2, d3])))
             }
-            ProgramDto::Segments(list) => program(e, list),
+            CamProgramDto::Segments(list) => program(e, list),
         }
     }
 }
 
-fn program(e: &mut Errors, list: &[SegmentDto]) -> Option<Motion> {
+fn program(e: &mut Errors, list: &[CamSegmentDto]) -> Option<Motion> {
     if list.is_empty() || list.len() > MAX_SEGMENTS {
         return e.fail("/program", format!("must hold 1 to {MAX_SEGMENTS} segments"));
     }
