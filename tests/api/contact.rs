@@ -223,3 +223,24 @@ async fn a_disk_rolling_in_a_circular_track_swings_as_its_pendulum() {
     assert!(result["energy_residual"].as_f64().unwrap().abs() < 1e-9, "{}", result["energy_residual"]);
     assert!(result["warnings"].as_array().unwrap().is_empty(), "{}", result["warnings"]);
 }
+
+/// A flywheel's `machine` may hold a contact: the eccentric cam of
+/// `cam-flat-follower` (no friction) at 300 rpm, δ = 0.02, needs the same
+/// flywheel as its reduced functions written by hand — I*(φ) = I_cam +
+/// m(e sin φ)² (the follower moves at eω sin φ) and the weight's M*(φ) =
+/// −m g e sin φ — to 1e-9 (two paths: the mechanism solver's I*, M* at
+/// every angle against the expressions).
+#[tokio::test]
+async fn a_flywheel_machine_with_a_cam_equals_its_reduced_functions() {
+    let app = TestApp::new().await;
+    let mut mechanism = template_request("cam-flat-follower")["mechanism"].clone();
+    mechanism["joints"][2].as_object_mut().unwrap().remove("friction");
+    let machine = json!({"mean_speed": "300 rpm", "irregularity": 0.02, "torques": [{"name": "motor", "balance": true}],
+        "machine": {"mechanism": mechanism, "input": {"joint": "O"}}});
+    let written = json!({"mean_speed": "300 rpm", "irregularity": 0.02,
+        "torques": [{"name": "gravity", "value": {"expr": "-2*9.81*0.02*sin(phi)"}}, {"name": "motor", "balance": true}],
+        "reduced_inertia": {"expr": "0.002 + 2*(0.02*sin(phi))^2"}});
+    let (a, b) = (app.flywheel(&machine).await, app.flywheel(&written).await);
+    let (a, b) = (a["result"]["inertia_exact"].as_f64().unwrap(), b["result"]["inertia_exact"].as_f64().unwrap());
+    assert!((a - b).abs() < 1e-9 * b, "{a} vs {b}");
+}

@@ -3,6 +3,7 @@
 //! where they touch found from the drawing (a 422 at the joint naming the
 //! gap, or the crossing, where they do not), and a particle recognised.
 
+use super::joints::unit;
 use super::{JointDto, PointRef};
 use crate::engine::curves::{Curve, Spline};
 use crate::engine::function::Side;
@@ -189,17 +190,6 @@ fn polar(e: &mut Errors, p: &PolarDto, point: &PointReader, at: &str) -> Option<
         );
     }
     Some(Curve::polar(centre, zero[1].atan2(zero[0]), rho))
-}
-
-/// A unit vector from a finite, non-zero [x, y].
-fn unit(e: &mut Errors, v: &[f64], at: &str) -> Option<[f64; 2]> {
-    match v {
-        [x, y] if x.is_finite() && y.is_finite() && x.hypot(*y) > 0.0 => {
-            let n = x.hypot(*y);
-            Some([x / n, y / n])
-        }
-        _ => e.fail(at, "must be a finite, non-zero vector [x, y]"),
-    }
 }
 
 /// Marks as particles the bodies that have no inertia and whose only joint

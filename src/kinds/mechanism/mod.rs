@@ -6,6 +6,7 @@ mod dimensions;
 pub mod drawing;
 mod energy;
 mod inputs;
+mod joints;
 mod loads;
 mod reactions;
 pub mod track;
@@ -17,7 +18,7 @@ pub use inputs::{InputDto, Inputs, coordinate, machine_parts};
 pub use loads::{LoadDto, LoadType, MAX_LOADS, convert_loads};
 pub use reactions::{ContactDto, Name, ReactionDto, annotate, contact_warnings, names};
 
-use crate::engine::model::{Body, BodyId, Friction, Joint, JointKind, Mechanism, Pitch};
+use crate::engine::model::{Body, BodyId, Joint, JointKind, Mechanism, Pitch};
 use crate::kind::quantity::{Errors, Quantity};
 use crate::units::Dim;
 use serde::de::{self, Deserializer, SeqAccess, Visitor};
@@ -308,12 +309,12 @@ impl MechanismDto {
                     Some((kind, touching)) => (Some(kind), Some(touching)),
                     None => (None, at_point),
                 },
-                _ => (joint_kind(e, j, &names, &ptr), at_point),
+                _ => (joints::joint_kind(e, j, &names, &ptr), at_point),
             };
-            not_for_others(e, j, &ptr);
+            joints::not_for_others(e, j, &ptr);
             if let (Some(b0), Some(b1), Some(at_point), Some(kind)) = (b0, b1, at_point, kind) {
-                let friction = friction(e, j, &ptr);
-                let length = guide_length(e, j, &ptr);
+                let friction = joints::friction(e, j, &ptr);
+                let length = joints::guide_length(e, j, &ptr);
                 joints.push(Joint { name: j.name.clone(), kind, bodies: [b0, b1], at: at_point, friction, length });
             }
         }
@@ -401,88 +402,9 @@ impl MechanismDto {
     }
 }
 
-/// A prismatic joint's guide length (> 0), checked against its type.
-fn guide_length(e: &mut Errors, j: &JointDto, at: &str) -> Option<f64> {
-    let length = j.length.as_ref()?;
-    match j.kind {
-        JointType::Prismatic => e.positive(length, Dim::LENGTH, &format!("{at}/length")),
-        _ => e.fail(&format!("{at}/length"), "applies to prismatic joints only (a guide's length)"),
-    }
-}
-
-/// The joint's friction, checked against its type.
-fn friction(e: &mut Errors, j: &JointDto, at: &str) -> Option<Friction> {
-    let f = j.friction.as_ref()?;
-    let at = format!("{at}/friction");
-    if !(f.mu.is_finite() && f.mu >= 0.0) {
-        return e.fail(&format!("{at}/mu"), "must be a finite number ≥ 0");
-    }
-    match (j.kind, &f.radius) {
-        (JointType::Revolute, Some(r)) => {
-            e.positive(r, Dim::LENGTH, &format!("{at}/radius")).map(|radius| Friction { mu: f.mu, radius })
-        }
-        (JointType::Revolute, None) => e.fail(&at, "a revolute joint's friction needs the pin \"radius\""),
-        (JointType::Prismatic | JointType::PinSlot | JointType::Contact, None) => {
-            Some(Friction { mu: f.mu, radius: 0.0 })
-        }
-        (JointType::Prismatic | JointType::PinSlot | JointType::Contact, Some(_)) => {
-            e.fail(&format!("{at}/radius"), "applies to revolute joints only")
-        }
-        (JointType::Gear, _) => e.fail(&at, "friction is not modelled for gears"),
-    }
-}
-
 fn non_negative(e: &mut Errors, q: Option<&Quantity>, dim: Dim, at: &str) -> Option<f64> {
     let v = q.map_or(Some(0.0), |q| e.quantity(q, dim, at))?;
     if v >= 0.0 { Some(v) } else { e.fail(at, "must not be negative") }
-}
-
-fn unit_axis(e: &mut Errors, axis: Option<&[f64]>, at: &str) -> Option<[f64; 2]> {
-    match axis {
-        Some([x, y]) if x.is_finite() && y.is_finite() && x.hypot(*y) > 0.0 => {
-            let n = x.hypot(*y);
-            Some([x / n, y / n])
-        }
-        Some(_) => e.fail(&format!("{at}/axis"), "must be a finite, non-zero vector [x, y]"),
-        None => e.fail(at, "\"axis\" is required for this joint type"),
-    }
-}
-
-/// `curves` and `rolling` belong to a contact joint only.
-fn not_for_others(e: &mut Errors, j: &JointDto, at: &str) {
-    if j.kind != JointType::Contact {
-        for (field, given) in [("curves", j.curves.is_some()), ("rolling", j.rolling.is_some())] {
-            if given {
-                e.push(&format!("{at}/{field}"), "applies to contact joints only");
-            }
-        }
-    }
-}
-
-fn joint_kind(e: &mut Errors, j: &JointDto, names: &[String], at: &str) -> Option<JointKind> {
-    match j.kind {
-        JointType::Contact => None,
-        JointType::Revolute => Some(JointKind::Revolute),
-        JointType::Prismatic => unit_axis(e, j.axis.as_deref(), at).map(|axis| JointKind::Prismatic { axis }),
-        JointType::PinSlot => unit_axis(e, j.axis.as_deref(), at).map(|axis| JointKind::PinSlot { axis }),
-        JointType::Gear => {
-            let carrier = match &j.carrier {
-                None => Some(0),
-                Some(c) => match names.iter().position(|n| n == c) {
-                    Some(i) => Some(i),
-                    None => e.fail(&format!("{at}/carrier"), format!("unknown body '{c}'")),
-                },
-            };
-            let ratio = match (j.ratio, j.teeth.as_deref()) {
-                (Some(k), None) if k.is_finite() && k != 0.0 => Some(k),
-                (None, Some([z1, z2])) if *z1 > 0.0 && *z2 > 0.0 => {
-                    Some(if j.internal.unwrap_or(false) { z1 / z2 } else { -z1 / z2 })
-                }
-                _ => e.fail(at, "a gear needs a finite non-zero \"ratio\" or \"teeth\": [z1, z2] (positive)"),
-            };
-            Some(JointKind::Gear { ratio: ratio?, carrier: carrier?, pitch: None })
-        }
-    }
 }
 
 /// The id of a named body.

@@ -1,0 +1,94 @@
+//! A joint's own fields read against its type: the kind of a lower pair
+//! or a gear, its friction and a guide's length, and the fields that
+//! belong to another type.
+
+use super::{JointDto, JointType};
+use crate::engine::model::{Friction, JointKind};
+use crate::kind::quantity::Errors;
+use crate::units::Dim;
+
+/// A prismatic joint's guide length (> 0), checked against its type.
+pub fn guide_length(e: &mut Errors, j: &JointDto, at: &str) -> Option<f64> {
+    let length = j.length.as_ref()?;
+    match j.kind {
+        JointType::Prismatic => e.positive(length, Dim::LENGTH, &format!("{at}/length")),
+        _ => e.fail(&format!("{at}/length"), "applies to prismatic joints only (a guide's length)"),
+    }
+}
+
+/// The joint's friction, checked against its type.
+pub fn friction(e: &mut Errors, j: &JointDto, at: &str) -> Option<Friction> {
+    let f = j.friction.as_ref()?;
+    let at = format!("{at}/friction");
+    if !(f.mu.is_finite() && f.mu >= 0.0) {
+        return e.fail(&format!("{at}/mu"), "must be a finite number ≥ 0");
+    }
+    match (j.kind, &f.radius) {
+        (JointType::Revolute, Some(r)) => {
+            e.positive(r, Dim::LENGTH, &format!("{at}/radius")).map(|radius| Friction { mu: f.mu, radius })
+        }
+        (JointType::Revolute, None) => e.fail(&at, "a revolute joint's friction needs the pin \"radius\""),
+        (JointType::Prismatic | JointType::PinSlot | JointType::Contact, None) => {
+            Some(Friction { mu: f.mu, radius: 0.0 })
+        }
+        (JointType::Prismatic | JointType::PinSlot | JointType::Contact, Some(_)) => {
+            e.fail(&format!("{at}/radius"), "applies to revolute joints only")
+        }
+        (JointType::Gear, _) => e.fail(&at, "friction is not modelled for gears"),
+    }
+}
+
+fn unit_axis(e: &mut Errors, axis: Option<&[f64]>, at: &str) -> Option<[f64; 2]> {
+    match axis {
+        Some(v) => unit(e, v, &format!("{at}/axis")),
+        None => e.fail(at, "\"axis\" is required for this joint type"),
+    }
+}
+
+/// A unit vector from a finite, non-zero [x, y] (at pointer `at`).
+pub fn unit(e: &mut Errors, v: &[f64], at: &str) -> Option<[f64; 2]> {
+    match v {
+        [x, y] if x.is_finite() && y.is_finite() && x.hypot(*y) > 0.0 => {
+            let n = x.hypot(*y);
+            Some([x / n, y / n])
+        }
+        _ => e.fail(at, "must be a finite, non-zero vector [x, y]"),
+    }
+}
+
+/// `curves` and `rolling` belong to a contact joint only.
+pub fn not_for_others(e: &mut Errors, j: &JointDto, at: &str) {
+    if j.kind != JointType::Contact {
+        for (field, given) in [("curves", j.curves.is_some()), ("rolling", j.rolling.is_some())] {
+            if given {
+                e.push(&format!("{at}/{field}"), "applies to contact joints only");
+            }
+        }
+    }
+}
+
+pub fn joint_kind(e: &mut Errors, j: &JointDto, names: &[String], at: &str) -> Option<JointKind> {
+    match j.kind {
+        JointType::Contact => None,
+        JointType::Revolute => Some(JointKind::Revolute),
+        JointType::Prismatic => unit_axis(e, j.axis.as_deref(), at).map(|axis| JointKind::Prismatic { axis }),
+        JointType::PinSlot => unit_axis(e, j.axis.as_deref(), at).map(|axis| JointKind::PinSlot { axis }),
+        JointType::Gear => {
+            let carrier = match &j.carrier {
+                None => Some(0),
+                Some(c) => match names.iter().position(|n| n == c) {
+                    Some(i) => Some(i),
+                    None => e.fail(&format!("{at}/carrier"), format!("unknown body '{c}'")),
+                },
+            };
+            let ratio = match (j.ratio, j.teeth.as_deref()) {
+                (Some(k), None) if k.is_finite() && k != 0.0 => Some(k),
+                (None, Some([z1, z2])) if *z1 > 0.0 && *z2 > 0.0 => {
+                    Some(if j.internal.unwrap_or(false) { z1 / z2 } else { -z1 / z2 })
+                }
+                _ => e.fail(at, "a gear needs a finite non-zero \"ratio\" or \"teeth\": [z1, z2] (positive)"),
+            };
+            Some(JointKind::Gear { ratio: ratio?, carrier: carrier?, pitch: None })
+        }
+    }
+}
