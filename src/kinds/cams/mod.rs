@@ -11,7 +11,7 @@ mod plots;
 mod request;
 mod result;
 
-pub use request::CamRequest;
+pub use request::{CamFollowerDto, CamFollowerMotion, CamFollowerType, CamProgramDto, CamRequest, CamSense, program};
 pub use result::CamResult;
 
 use crate::engine::cam::design::{Cam, CamError, Lift, smallest_base, turn};

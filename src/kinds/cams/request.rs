@@ -140,7 +140,15 @@ pub struct CamDynamicsDto {
     #[schema(value_type = Option<FunctionDto>)]
     pub force: Option<FunctionDto>,
     /// Friction at a flat face.
-    pub friction: Option<crate::kinds::mechanism::FrictionDto>,
+    pub friction: Option<CamFrictionDto>,
+}
+
+/// Coulomb friction at a flat face.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct CamFrictionDto {
+    /// μ ≥ 0.
+    #[schema(minimum = 0.0)]
+    pub mu: f64,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
@@ -269,18 +277,20 @@ impl CamRequest {
                 let d3 = d2.derivative();
                 Some(Motion::Function(Box::new([s, d1, d2, d3])))
             }
-            CamProgramDto::Segments(list) => program(e, list),
+            CamProgramDto::Segments(list) => program(e, list, "/program").map(|(p, names)| Motion::Program(p, names)),
         }
     }
 }
 
-fn program(e: &mut Errors, list: &[CamSegmentDto]) -> Option<Motion> {
+/// A program of segments at pointer `at` (`/program`), with each segment's law's name.
+pub fn program(e: &mut Errors, list: &[CamSegmentDto], at: &str) -> Option<(Program, Vec<&'static str>)> {
+    let root = at;
     if list.is_empty() || list.len() > MAX_SEGMENTS {
-        return e.fail("/program", format!("must hold 1 to {MAX_SEGMENTS} segments"));
+        return e.fail(root, format!("must hold 1 to {MAX_SEGMENTS} segments"));
     }
     let (mut start, mut from, mut segments, mut names) = (0.0, 0.0, Vec::new(), Vec::new());
     for (k, s) in list.iter().enumerate() {
-        let at = format!("/program/{k}");
+        let at = format!("{root}/{k}");
         let to = e.angle(&s.to, &format!("{at}/to"));
         let law = match LAWS.iter().find(|(name, _)| *name == s.law) {
             Some(&(name, law)) => Some((name, law)),
@@ -301,15 +311,15 @@ fn program(e: &mut Errors, list: &[CamSegmentDto]) -> Option<Motion> {
         (start, from) = (to, lift);
     }
     match Program::new(segments) {
-        Ok(p) => Some(Motion::Program(p, names)),
+        Ok(p) => Some((p, names)),
         Err(err) => {
             let last = list.len() - 1;
             let (at, message) = match err {
                 ProgramError::Empty { segment, .. } => {
-                    (format!("/program/{segment}/to"), "must be after the end of the segment before".to_string())
+                    (format!("{root}/{segment}/to"), "must be after the end of the segment before".to_string())
                 }
                 ProgramError::MovingDwell { segment, .. } => {
-                    (format!("/program/{segment}/lift"), "a dwell holds the lift of the segment before".into())
+                    (format!("{root}/{segment}/lift"), "a dwell holds the lift of the segment before".into())
                 }
                 ProgramError::NotATurn { .. } => {
                     (format!("/program/{last}/to"), "the last segment must end at 360°".into())
@@ -343,8 +353,8 @@ fn loads(e: &mut Errors, d: &CamDynamicsDto, follower: Option<Follower>) -> Opti
     };
     let mu = match (&d.friction, follower) {
         (None, _) => Some(0.0),
-        (Some(f), Some(Follower::Flat)) if f.mu.is_finite() && f.mu >= 0.0 && f.radius.is_none() => Some(f.mu),
-        (Some(_), Some(Follower::Flat)) => e.fail("/dynamics/friction", "must be {\"mu\"} with μ ≥ 0"),
+        (Some(f), Some(Follower::Flat)) if f.mu.is_finite() && f.mu >= 0.0 => Some(f.mu),
+        (Some(_), Some(Follower::Flat)) => e.fail("/dynamics/friction/mu", "must be a finite number ≥ 0"),
         (Some(_), _) => {
             e.fail("/dynamics/friction", "applies to a flat face (a roller rolls; a knife's friction is not modelled)")
         }

@@ -10,6 +10,7 @@ use crate::engine::function::Side;
 use crate::engine::model::{Contact, Joint, JointKind};
 use crate::engine::touch::{NoTouch, touching};
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
+use crate::kinds::cams::{CamFollowerDto, CamFollowerMotion, CamFollowerType, CamProgramDto, CamSense, program};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::TAU;
@@ -22,7 +23,7 @@ pub const MAX_SPLINE_POINTS: usize = 2000;
 const TOUCH_TOLERANCE: f64 = 1e-6;
 
 /// A curve fixed in a body, in the drawn configuration: exactly one of
-/// `point`, `line`, `circle`, `polar`, `spline`.
+/// `point`, `line`, `circle`, `polar`, `spline`, `cam`.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum CurveDto {
@@ -37,6 +38,32 @@ pub enum CurveDto {
     Polar(PolarDto),
     /// A C² cubic spline through points.
     Spline(SplineDto),
+    /// A disk cam's profile generated from its follower's program.
+    Cam(CamCurveDto),
+}
+
+/// A disk cam's profile made for a flat-faced translating follower from
+/// its program (the fields of `POST /v1/cams` that shape it): the envelope
+/// of the follower's face, lift s(θ) at the cam's counter-clockwise turn θ
+/// from the drawing.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct CamCurveDto {
+    /// The cam's centre (its pivot).
+    #[schema(value_type = PointRef)]
+    pub center: PointRef,
+    /// The follower's direction (from the centre towards it) as drawn, at
+    /// θ = 0, [x, y]; default [1, 0].
+    #[schema(min_items = 2, max_items = 2)]
+    pub zero: Option<Vec<f64>>,
+    #[schema(value_type = crate::kinds::cams::CamFollowerDto)]
+    pub follower: CamFollowerDto,
+    #[schema(value_type = crate::kinds::cams::CamProgramDto)]
+    pub program: CamProgramDto,
+    /// m.
+    #[schema(value_type = Quantity)]
+    pub base_radius: Quantity,
+    /// Default ccw (the only sense a cam curve is made for).
+    pub direction: Option<CamSense>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
@@ -150,6 +177,7 @@ fn curve(e: &mut Errors, c: &CurveDto, point: &PointReader, at: &str) -> Option<
             Some(Curve::Circle { centre: centre?, radius: radius?, inside: c.inside.unwrap_or(false) })
         }
         CurveDto::Polar(p) => polar(e, p, point, &format!("{at}/polar")),
+        CurveDto::Cam(c) => cam(e, c, point, &format!("{at}/cam")),
         CurveDto::Spline(s) => {
             let at = format!("{at}/spline");
             if !(4..=MAX_SPLINE_POINTS).contains(&s.points.len()) {
@@ -190,6 +218,35 @@ fn polar(e: &mut Errors, p: &PolarDto, point: &PointReader, at: &str) -> Option<
         );
     }
     Some(Curve::polar(centre, zero[1].atan2(zero[0]), rho))
+}
+
+/// A cam curve: a flat-faced translating follower's, from a program of segments, counter-clockwise.
+fn cam(e: &mut Errors, c: &CamCurveDto, point: &PointReader, at: &str) -> Option<Curve> {
+    let centre = point(e, &c.center, &format!("{at}/center"));
+    let zero = match c.zero.as_deref() {
+        None => Some([1.0, 0.0]),
+        Some(z) => unit(e, z, &format!("{at}/zero")),
+    };
+    let flat = c.follower.kind == CamFollowerType::Flat && c.follower.motion != Some(CamFollowerMotion::Oscillating);
+    if !flat {
+        e.push(
+            &format!("{at}/follower"),
+            "a cam curve is made for a flat-faced translating follower: for a roller, put its circle on the follower and the cam's profile as a polar or spline curve",
+        );
+    }
+    if c.direction == Some(CamSense::Cw) {
+        e.push(
+            &format!("{at}/direction"),
+            "a cam curve's program runs counter-clockwise: write it in the cam's ccw angle",
+        );
+    }
+    let base = e.positive(&c.base_radius, Dim::LENGTH, &format!("{at}/base_radius"));
+    let program = match &c.program {
+        CamProgramDto::Segments(list) => program(e, list, &format!("{at}/program")).map(|(p, _)| p),
+        CamProgramDto::Lift(_) => e.fail(&format!("{at}/program"), "a cam curve takes a program of segments"),
+    };
+    let (centre, zero, base, program) = (centre?, zero?, base?, program?);
+    flat.then(|| Curve::Cam { centre, zero: zero[1].atan2(zero[0]), base, program: Box::new(program) })
 }
 
 /// Marks as particles the bodies that have no inertia and whose only joint
