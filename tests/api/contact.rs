@@ -244,3 +244,49 @@ async fn a_flywheel_machine_with_a_cam_equals_its_reduced_functions() {
     let (a, b) = (a["result"]["inertia_exact"].as_f64().unwrap(), b["result"]["inertia_exact"].as_f64().unwrap());
     assert!((a - b).abs() < 1e-9 * b, "{a} vs {b}");
 }
+
+/// Mobility with contacts: a sliding contact is a class-II pair and rolling
+/// a class-I one in Grübler's count, a particle counts two coordinates, and
+/// the Jacobian's rank agrees — the cam 3·2 − 2·2 − 1 = 1, the rolling disk
+/// 3·1 − 2 = 1, the ring on its rim 3·2 − 1 − 2 − 1 = 2.
+#[tokio::test]
+async fn contacts_count_as_their_class_and_the_rank_agrees() {
+    let app = TestApp::new().await;
+    for (template, machine, dof) in
+        [("cam-flat-follower", false, 1), ("rolling-disk", true, 1), ("ring-on-rim", false, 2)]
+    {
+        let request = template_request(template);
+        let mechanism = if machine { request["machine"]["mechanism"].clone() } else { request["mechanism"].clone() };
+        let r = app.post("/v1/mobility", &json!({"mechanism": mechanism})).await;
+        assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+        let result = &r.json()["result"];
+        assert_eq!(
+            (result["dof"].as_i64(), result["grubler"]["mobility"].as_i64()),
+            (Some(dof), Some(dof)),
+            "{template}: {result}"
+        );
+    }
+}
+
+/// A ring driven along an open spline track (ground) beyond the track's
+/// end: the steps past it are warned of, never passed off as a contact.
+#[tokio::test]
+async fn a_contact_that_runs_off_an_open_curve_is_a_warning() {
+    let app = TestApp::new().await;
+    let body = json!({
+        "mechanism": {
+            "points": {"P": [0.1, 0.02]},
+            "bodies": [{"name": "ring", "mass": 0.1, "cg": "P"}],
+            "joints": [{"name": "track", "type": "contact", "bodies": ["ground", "ring"],
+                "curves": [{"spline": {"points": [[0, 0], [0.1, 0.02], [0.2, 0], [0.3, 0.02]]}}, {"point": "P"}]}]
+        },
+        "input": {"joint": "track", "start": 0, "end": 0.4, "steps": 9, "speed": 1},
+        "outputs": ["driving", "reactions", "kinematics"]
+    });
+    let result = kinetostatics(&app, &body).await;
+    let warnings = result["warnings"].to_string();
+    assert!(warnings.contains("contact track: the contact runs off the end of an open curve at"), "{warnings}");
+    let steps = result["steps"].as_array().unwrap();
+    assert!(steps[0]["contacts"][0].get("off_end").is_none(), "on the track at the start");
+    assert_eq!(steps.last().unwrap()["contacts"][0]["off_end"], true);
+}

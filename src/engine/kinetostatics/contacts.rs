@@ -13,7 +13,7 @@
 
 use super::Reaction;
 use super::loads::point_motion;
-use crate::engine::curves::Curve;
+use crate::engine::curves::{Curve, Domain};
 use crate::engine::model::{BodyId, JointKind, Mechanism, dot, perp, rotate};
 
 /// A contact at one position.
@@ -34,6 +34,9 @@ pub struct ContactState {
     /// follower's point there, where the second body turns or slides on
     /// the ground (rad, 0 to π/2; None otherwise or where it does not move).
     pub pressure_angle: Option<f64>,
+    /// The contact has run off the end of an open curve (a spline's): the
+    /// curves no longer touch as the equations say.
+    pub off_end: bool,
 }
 
 /// The state of contact joint `r.joint` at (q, q̇) with its reaction `r`.
@@ -59,6 +62,10 @@ pub fn contact_state(m: &Mechanism, q: &[f64], qd: &[f64], r: &Reaction) -> Opti
         velocities: [v1, v2],
         curvature_radius: [radius(0), radius(1)],
         pressure_angle: follower(m, j).then(|| pressure_angle(n, v2)).flatten(),
+        off_end: (0..2).any(|side| match (c.curves[side].domain(), m.contact_parameter(k, side, q)) {
+            (Domain::Interval(a, b), Some(u)) => u < a - 1e-9 || u > b + 1e-9,
+            _ => false,
+        }),
     })
 }
 

@@ -69,6 +69,9 @@ pub struct ContactDto {
     /// The angle between the normal and the follower's velocity there (rad),
     /// where the second body turns or slides on the ground.
     pub pressure_angle: Option<f64>,
+    /// The contact ran off the end of an open curve here (a warning says where).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub off_end: bool,
 }
 
 impl ContactDto {
@@ -82,6 +85,7 @@ impl ContactDto {
             tangential: c.tangential,
             curvature_radius: c.curvature_radius,
             pressure_angle: c.pressure_angle,
+            off_end: c.off_end,
         }
     }
 }
@@ -121,7 +125,8 @@ impl ReactionDto {
 /// consecutive positions where it holds (`at` the position, shown by
 /// `show`): a negative normal force (the bodies would separate there: a
 /// follower jump, a disk leaving its track), and a rolling contact needing
-/// more friction than its `friction` gives (it would slip). A particle's
+/// more friction than its `friction` gives (it would slip), a contact run
+/// off the end of an open curve. A particle's
 /// contact (a ring threaded on a rim) holds both ways: no warning.
 pub fn contact_warnings<'a>(
     steps: impl Iterator<Item = (f64, &'a [ContactDto])>,
@@ -129,19 +134,22 @@ pub fn contact_warnings<'a>(
     show: impl Fn(f64) -> String,
 ) -> Vec<String> {
     let joints: Vec<(usize, &str)> = (m.joints.iter().enumerate())
-        .filter(|(_, j)| matches!(&j.kind, JointKind::Contact(c) if !c.particle))
+        .filter(|(_, j)| matches!(j.kind, JointKind::Contact(_)))
         .map(|(k, j)| (k, j.name.as_str()))
         .collect();
     // Per contact joint and condition, the runs [from, to] of positions.
-    let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new(); 2 * joints.len()];
-    let mut open = vec![false; 2 * joints.len()];
+    let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new(); 3 * joints.len()];
+    let mut open = vec![false; 3 * joints.len()];
     for (at, contacts) in steps {
         for (i, &(k, name)) in joints.iter().enumerate() {
             let c = contacts.iter().find(|c| &*c.joint == name);
             let mu = m.joints[k].friction.map(|f| f.mu);
             let rolling = matches!(&m.joints[k].kind, JointKind::Contact(c) if c.rolling);
             let slips = |c: &ContactDto| rolling && mu.is_some_and(|mu| c.tangential.abs() > mu * c.normal.max(0.0));
-            for (slot, holds) in [(2 * i, c.is_some_and(|c| c.normal < 0.0)), (2 * i + 1, c.is_some_and(slips))] {
+            let threaded = matches!(&m.joints[k].kind, JointKind::Contact(c) if c.particle);
+            let separates = c.is_some_and(|c| c.normal < 0.0) && !threaded;
+            let conditions = [separates, c.is_some_and(slips), c.is_some_and(|c| c.off_end)];
+            for (slot, holds) in conditions.into_iter().enumerate().map(|(n, h)| (3 * i + n, h)) {
                 match (holds, open[slot]) {
                     (true, true) => runs[slot].last_mut().expect("an open run").1 = at,
                     (true, false) => runs[slot].push((at, at)),
@@ -159,17 +167,23 @@ pub fn contact_warnings<'a>(
     };
     let mut out = Vec::new();
     for (i, &(k, name)) in joints.iter().enumerate() {
-        if !runs[2 * i].is_empty() {
+        if !runs[3 * i + 2].is_empty() {
             out.push(format!(
-                "contact {name}: the normal force is negative at {}: the bodies would separate there (a follower jump, a disk leaving its track) unless something holds them together",
-                span(&runs[2 * i])
+                "contact {name}: the contact runs off the end of an open curve at {}: the results there are not a contact's (extend the curve)",
+                span(&runs[3 * i + 2])
             ));
         }
-        if let (false, Some(f)) = (runs[2 * i + 1].is_empty(), m.joints[k].friction) {
+        if !runs[3 * i].is_empty() {
+            out.push(format!(
+                "contact {name}: the normal force is negative at {}: the bodies would separate there (a follower jump, a disk leaving its track) unless something holds them together",
+                span(&runs[3 * i])
+            ));
+        }
+        if let (false, Some(f)) = (runs[3 * i + 1].is_empty(), m.joints[k].friction) {
             out.push(format!(
                 "contact {name}: rolling needs more friction than mu = {} gives at {} (see mu_required): it would slip there",
                 f.mu,
-                span(&runs[2 * i + 1])
+                span(&runs[3 * i + 1])
             ));
         }
     }
