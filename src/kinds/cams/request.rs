@@ -96,12 +96,34 @@ pub struct CamFollowerDto {
     pub arm: Option<Quantity>,
 }
 
-/// Segments end to end, or a lift Function of `theta`.
-#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+/// Segments end to end (a list), or a lift Function of `theta` (an object).
+#[derive(Clone, Debug, Serialize, ToSchema)]
 #[serde(untagged)]
 pub enum CamProgramDto {
     Segments(Vec<CamSegmentDto>),
     Lift(CamLiftDto),
+}
+
+/// Read by its JSON type (a list or an object), not by trying each variant
+/// in turn: serde's untagged enums would take `[0]` as a lift of 0 (a
+/// struct from a sequence) and lose every field's pointer.
+impl<'de> Deserialize<'de> for CamProgramDto {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct Program;
+        impl<'de> serde::de::Visitor<'de> for Program {
+            type Value = CamProgramDto;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a list of segments or {\"lift\": Function}")
+            }
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(self, seq: A) -> Result<CamProgramDto, A::Error> {
+                Vec::deserialize(serde::de::value::SeqAccessDeserializer::new(seq)).map(CamProgramDto::Segments)
+            }
+            fn visit_map<A: serde::de::MapAccess<'de>>(self, map: A) -> Result<CamProgramDto, A::Error> {
+                CamLiftDto::deserialize(serde::de::value::MapAccessDeserializer::new(map)).map(CamProgramDto::Lift)
+            }
+        }
+        d.deserialize_any(Program)
+    }
 }
 
 /// A segment ending at `to` with the follower at `lift` by `law`.
