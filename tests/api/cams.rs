@@ -265,3 +265,56 @@ async fn a_designed_cam_drawn_in_a_mechanism_lifts_and_loads_its_follower_alike(
         near(&b["contacts"][0]["normal"], a["contact_force"].as_f64().unwrap(), 1e-8 * 9.81, "contact force");
     }
 }
+
+/// The peer: the Python package `mechanism` (PyPI, gabemorris12), whose
+/// `Cam.get_base_circle` sizes a cam for the same dwell–cycloidal rise of
+/// 20 mm over 90°–dwell–cycloidal fall–dwell, on its own grid of 1014
+/// angles: a 10 mm roller at 30° (its fsolve may land on the root with the
+/// pitch radius negated: |R_b + R_f| − R_f is its base radius), a flat face
+/// with ρ ≥ 10 mm, and the flat face's width. Ours on our grid of 1014
+/// angles agrees to 1e-4 (the grids differ), the width too (and with 4h/β).
+#[tokio::test]
+async fn the_peer_mechanism_sizes_the_same_cams() {
+    let venv = format!("{}/.venv/bin/python", env!("CARGO_MANIFEST_DIR"));
+    let has = |p: &str| {
+        std::process::Command::new(p).args(["-c", "import mechanism"]).output().is_ok_and(|o| o.status.success())
+    };
+    let Some(python) = [venv.as_str(), "python3"].into_iter().find(|p| has(p)) else {
+        assert!(
+            std::env::var_os("MECHDYN_REQUIRE_MECHANISM").is_none(),
+            "MECHDYN_REQUIRE_MECHANISM is set and no Python has mechanism"
+        );
+        eprintln!("skipped: no Python with the peer `mechanism` (`.venv/bin/pip install mechanism`)");
+        return;
+    };
+    let script = "import warnings, json\nwarnings.filterwarnings('ignore')\nfrom mechanism import Cam\n\
+        cam = Cam(motion=[('Dwell', 60), ('Rise', 0.02, 90), ('Dwell', 60), ('Fall', 0.02, 90), ('Dwell', 60)], degrees=True, omega=10)\n\
+        r = cam.get_base_circle(kind='cycloidal', follower='roller', roller_radius=0.01, eccentricity=0, max_pressure_angle=30)\n\
+        f = cam.get_base_circle(kind='cycloidal', follower='flat', desired_min_rho=0.01)\n\
+        print(json.dumps({'roller': abs(float(r['Rb']) + 0.01) - 0.01, 'flat': float(f['Rb']), 'face': float(f['Min Face Width'])}))\n";
+    let out = std::process::Command::new(python).args(["-c", script]).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let peer: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let app = TestApp::new().await;
+    let program = json!([{"to": "60 deg", "law": "dwell"}, {"to": "150 deg", "law": "cycloidal", "lift": 0.02},
+        {"to": "210 deg", "law": "dwell"}, {"to": "300 deg", "law": "cycloidal", "lift": 0}, {"to": "360 deg", "law": "dwell"}]);
+    let roller = cam(
+        &app,
+        &json!({"follower": {"type": "roller", "roller_radius": 0.01}, "program": program,
+        "size": {"max_pressure_angle": "30 deg"}, "speed": 10, "samples": 1014}),
+    )
+    .await;
+    let flat = cam(
+        &app,
+        &json!({"follower": {"type": "flat"}, "program": program,
+        "size": {"min_curvature_radius": 0.01}, "speed": 10, "samples": 1014}),
+    )
+    .await;
+    let (a, b) = (peer["roller"].as_f64().unwrap(), peer["flat"].as_f64().unwrap());
+    near(&roller["summary"]["base_radius"], a, 1e-4 * a, "roller's base radius");
+    near(&flat["summary"]["base_radius"], b, 1e-4 * b, "flat face's base radius");
+    // The width is 2·(2h/β) in closed form (the rise's and the fall's peaks of s′), each grid a little short of it.
+    let width = 4.0 * 0.02 / (PI / 2.0);
+    near(&flat["summary"]["face_width"], peer["face"].as_f64().unwrap(), 1e-4 * width, "face width against the peer");
+    near(&flat["summary"]["face_width"], width, 1e-4 * width, "face width against its closed form");
+}
