@@ -345,3 +345,30 @@ async fn the_peer_s_published_flat_follower_example() {
     near(&json!(r["summary"]["face_width"].as_f64().unwrap() / inch), 2.55, 0.005, "face width (in)");
     near(&json!(r["summary"]["face_width"].as_f64().unwrap() / inch), 4.0 / (PI / 2.0), 1e-6, "2·2h/β");
 }
+
+/// An offset roller (the two published pressure-angle formulas disagree
+/// there): the eccentric circle (R = 50 mm, ε = 20 mm) under a 10 mm roller
+/// whose axis is offset e = 8 mm, its lift written from the geometry, d(θ)
+/// = −ε cos θ + √((R + r)² − (e + ε sin θ)²). The normal passes through the
+/// circle's centre, so sin φ = (e + ε sin θ)/(R + r) (closed form, 1e-9;
+/// the base circle √(d_min² + e²) − r, d_min the lowest reach),
+/// and every profile point lies R from the circle's centre (−ε, 0).
+#[tokio::test]
+async fn an_offset_roller_s_pressure_angle_is_that_of_the_line_of_centres() {
+    let app = TestApp::new().await;
+    let (big, r, eps, e): (f64, f64, f64, f64) = (0.05, 0.01, 0.02, 0.008);
+    // The follower's lowest reach (off θ = 0 with an offset), less 1 nm so that s ≥ 0 on any grid.
+    let d = |t: f64| -eps * t.cos() + ((big + r).powi(2) - (e + eps * t.sin()).powi(2)).sqrt();
+    let d0 = (0..200_000).map(|k| d(std::f64::consts::TAU * f64::from(k) / 2e5)).fold(f64::INFINITY, f64::min) - 1e-9;
+    let lift = format!("-0.02*cos(theta) + sqrt(0.06^2 - (0.008 + 0.02*sin(theta))^2) - {d0:.17}");
+    let body = json!({"follower": {"type": "roller", "roller_radius": r, "offset": e},
+        "program": {"lift": {"expr": lift}}, "base_radius": (d0 * d0 + e * e).sqrt() - r, "speed": 5, "samples": 48});
+    let result = cam(&app, &body).await;
+    for s in result["samples"].as_array().unwrap() {
+        let theta = s["theta"].as_f64().unwrap();
+        near(&s["pressure_angle"], ((e + eps * theta.sin()) / (big + r)).asin(), 1e-9, &format!("φ at {theta}"));
+        let p = &s["profile_point"];
+        let from_centre = (p[0].as_f64().unwrap() + eps).hypot(p[1].as_f64().unwrap());
+        near(&json!(from_centre), big, 1e-9, "on the circle");
+    }
+}
