@@ -372,3 +372,37 @@ async fn an_offset_roller_s_pressure_angle_is_that_of_the_line_of_centres() {
         near(&json!(from_centre), big, 1e-9, "on the circle");
     }
 }
+
+/// The rest of the bad input, each at its pointer or a warning: a
+/// segment ending before the one before (overlap), lifts that do not
+/// return to 0, a spline of 3 points and a polar radius that reaches 0 in
+/// a contact, and a roller larger than the pitch curve's convex radius
+/// (an undercut: a warning, the summary's flag).
+#[tokio::test]
+async fn bad_programs_curves_and_undercuts_are_said_where_they_are() {
+    let app = TestApp::new().await;
+    let program = |to1: &str, last: f64| {
+        json!([{"to": to1, "law": "cycloidal", "lift": "10 mm"}, {"to": "90 deg", "law": "dwell"},
+               {"to": "360 deg", "law": "harmonic", "lift": last}])
+    };
+    let body = |p: Value| json!({"follower": {"type": "flat"}, "program": p, "base_radius": "30 mm", "speed": 1});
+    assert_eq!(app.pointers("/v1/cams", &body(program("120 deg", 0.0))).await, ["/program/1/to"]);
+    assert_eq!(app.pointers("/v1/cams", &body(program("60 deg", 0.002))).await, ["/program/2/lift"]);
+    let mut sharp = json!({"follower": {"type": "roller", "roller_radius": "40 mm"}, "base_radius": "10 mm", "speed": 1,
+        "program": [{"to": "30 deg", "law": "cycloidal", "lift": "20 mm"}, {"to": "60 deg", "law": "cycloidal", "lift": 0},
+                    {"to": "360 deg", "law": "dwell"}]});
+    let r = cam(&app, &sharp).await;
+    assert_eq!(r["summary"]["undercut"], true);
+    assert!(r["warnings"].to_string().contains("undercut"), "{}", r["warnings"]);
+    sharp["base_radius"] = json!("200 mm");
+    assert_eq!(cam(&app, &sharp).await["summary"]["undercut"], false, "a large enough base circle does not undercut");
+    let mut curves = template_request("cam-flat-follower");
+    curves["mechanism"]["joints"][2]["curves"][0] = json!({"spline": {"points": [[0, 0], [0.1, 0], [0.1, 0.1]]}});
+    assert_eq!(app.pointers("/v1/kinetostatics", &curves).await, ["/mechanism/joints/2/curves/0/spline/points"]);
+    curves["mechanism"]["joints"][2]["curves"][0] =
+        json!({"polar": {"center": "O", "radius": {"expr": "0.03*cos(psi)"}}});
+    let r = app.post("/v1/kinetostatics", &curves).await;
+    let error = &r.json()["errors"][0];
+    assert_eq!(error["pointer"], "/mechanism/joints/2/curves/0/polar/radius");
+    assert!(error["message"].as_str().unwrap().contains("must be positive over the whole turn"), "{error}");
+}
