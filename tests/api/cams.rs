@@ -406,3 +406,28 @@ async fn bad_programs_curves_and_undercuts_are_said_where_they_are() {
     assert_eq!(error["pointer"], "/mechanism/joints/2/curves/0/polar/radius");
     assert!(error["message"].as_str().unwrap().contains("must be positive over the whole turn"), "{error}");
 }
+
+/// The critical speed is where contact is first lost: just below it no
+/// separation (null), just above it a range where the contact force is
+/// negative, warned of; the least preload at a speed keeps every contact
+/// force ≥ 0 with the smallest at 0 (1e-9 N).
+#[tokio::test]
+async fn the_critical_speed_and_least_preload_bound_the_contact() {
+    let app = TestApp::new().await;
+    let mut body = template_request("cam-design");
+    let critical = cam(&app, &body).await["summary"]["critical_speed"].as_f64().unwrap();
+    body["speed"] = json!(0.99 * critical);
+    let below = cam(&app, &body).await;
+    assert!(below["summary"]["separation"].is_null(), "{}", below["summary"]);
+    body["speed"] = json!(1.01 * critical);
+    let above = cam(&app, &body).await;
+    assert!(!above["summary"]["separation"].as_array().unwrap().is_empty(), "{}", above["summary"]);
+    assert!(above["warnings"].to_string().contains("would leave the cam"), "{}", above["warnings"]);
+    let least = above["summary"]["min_preload"].as_f64().unwrap();
+    body["dynamics"]["spring"]["preload"] = json!(least);
+    let held = cam(&app, &body).await;
+    let forces: Vec<f64> =
+        held["samples"].as_array().unwrap().iter().map(|s| s["contact_force"].as_f64().unwrap()).collect();
+    let smallest = forces.iter().copied().fold(f64::INFINITY, f64::min);
+    assert!(smallest.abs() < 1e-9, "the least preload leaves {smallest} N at the worst angle");
+}

@@ -68,7 +68,7 @@ pub struct CamSummary {
     pub undercut: bool,
     /// A flat face: the smallest width that keeps contact (m).
     pub face_width: Option<f64>,
-    /// With `dynamics`: the angle ranges [from, to] (rad) where the contact force is negative.
+    /// With `dynamics`: the angle ranges [from, to] (rad) where the contact force is negative (null: none).
     pub separation: Option<Vec<[f64; 2]>>,
     /// With `dynamics`: the cam speed above which the follower leaves the cam (rad/s; null: none).
     pub critical_speed: Option<f64>,
@@ -295,5 +295,5 @@ fn dynamics(
         }
     }
     let preload = forces.iter().flatten().map(|f| loads.preload - f[0]).fold(0.0f64, f64::max);
-    (Some(ranges), critical.is_finite().then_some(critical), Some(preload))
+    ((!ranges.is_empty()).then_some(ranges), critical.is_finite().then_some(critical), Some(preload))
 }
