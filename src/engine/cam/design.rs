@@ -23,7 +23,6 @@
 //! N_x / cos φ; the cam torque T = N_x s′ (power), plus μ N h for a
 //! flat face with friction μ (the face slides on the cam).
 
-use super::Program;
 use crate::engine::numeric::plane::{cross, perp};
 use std::f64::consts::TAU;
 
@@ -36,24 +35,8 @@ pub enum Follower {
     Roller(f64),
 }
 
-/// How the follower's lift is given: a program, or s(θ) with its three derivatives.
-pub enum Lift<'a> {
-    Program(&'a Program),
-    Function(&'a dyn Fn(f64) -> [f64; 4]),
-}
-
-impl Lift<'_> {
-    /// [s, s′, s″, s‴] at θ.
-    pub fn at(&self, theta: f64) -> [f64; 4] {
-        match self {
-            Lift::Program(p) => {
-                let s = p.eval(theta);
-                [s[0], s[1], s[2], s[3]]
-            }
-            Lift::Function(f) => f(theta),
-        }
-    }
-}
+/// The follower's lift: [s, s′, s″, s‴] at θ (a program's, or a Function's).
+pub type Lift<'a> = &'a dyn Fn(f64) -> [f64; 4];
 
 /// A cam's geometry: follower, offset e, base radius R_b, sense.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -182,16 +165,16 @@ fn rotate(phi: f64, v: [f64; 2]) -> [f64; 2] {
 }
 
 /// The samples of a turn, n angles 2πk/n.
-pub fn turn(cam: &Cam, lift: &Lift, n: usize) -> Result<Vec<Sample>, CamError> {
-    (0..n).map(|k| TAU * k as f64 / n as f64).map(|t| cam.at(t, lift.at(t))).collect()
+pub fn turn(cam: &Cam, lift: Lift, n: usize) -> Result<Vec<Sample>, CamError> {
+    (0..n).map(|k| TAU * k as f64 / n as f64).map(|t| cam.at(t, lift(t))).collect()
 }
 
 /// The smallest base radius (to 1e-9 of the lift's scale) in (0, 100·scale]
 /// whose turn meets `ok` (a test that holds for every base radius above
 /// the smallest that meets it, such as a largest pressure angle or a
 /// smallest radius of curvature), or None where even 100·scale does not.
-pub fn smallest_base(cam: Cam, lift: &Lift, n: usize, ok: impl Fn(&[Sample]) -> bool) -> Option<f64> {
-    let scale = (0..n).map(|k| lift.at(TAU * k as f64 / n as f64)[0].abs()).fold(1e-6, f64::max);
+pub fn smallest_base(cam: Cam, lift: Lift, n: usize, ok: impl Fn(&[Sample]) -> bool) -> Option<f64> {
+    let scale = (0..n).map(|k| lift(TAU * k as f64 / n as f64)[0].abs()).fold(1e-6, f64::max);
     let meets = |base: f64| turn(&Cam { base, ..cam }, lift, n).is_ok_and(|s| ok(&s));
     let (mut lo, mut hi) = (0.0, 100.0 * scale + cam.offset.abs());
     if !meets(hi) {
@@ -207,7 +190,7 @@ pub fn smallest_base(cam: Cam, lift: &Lift, n: usize, ok: impl Fn(&[Sample]) -> 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::engine::cam::{Law, Segment};
+    use crate::engine::cam::{Law, Program, Segment};
     use std::f64::consts::PI;
 
     /// A cycloidal rise of h over β = π/2, dwell, cycloidal return, dwell.
@@ -229,19 +212,22 @@ mod tests {
     #[test]
     fn the_radius_of_curvature_is_that_of_the_profile_drawn() {
         let p = program(0.02);
-        let lift = Lift::Program(&p);
+        let lift = |t: f64| {
+            let s = p.eval(t);
+            [s[0], s[1], s[2], s[3]]
+        };
         for (follower, offset, clockwise) in
             [(Follower::Flat, 0.0, false), (Follower::Roller(0.01), 0.005, false), (Follower::Roller(0.0), -0.01, true)]
         {
             let cam = Cam { follower, offset, base: 0.04, clockwise };
             for theta in [0.3, 0.9, 2.0, 3.5, 4.0] {
                 let h = 1e-4;
-                let [a, b, c] = [theta - h, theta, theta + h].map(|t| cam.at(t, lift.at(t)).unwrap().profile_point);
+                let [a, b, c] = [theta - h, theta, theta + h].map(|t| cam.at(t, lift(t)).unwrap().profile_point);
                 let area = cross([b[0] - a[0], b[1] - a[1]], [c[0] - a[0], c[1] - a[1]]);
                 let sides = [(a, b), (b, c), (a, c)].map(|(x, y)| (x[0] - y[0]).hypot(x[1] - y[1]));
                 // Circumradius abc/(4·area), signed: convex where the profile runs clockwise.
                 let drawn = -sides[0] * sides[1] * sides[2] / (2.0 * area);
-                let x = cam.at(theta, lift.at(theta)).unwrap();
+                let x = cam.at(theta, lift(theta)).unwrap();
                 let drawn = if clockwise { -drawn } else { drawn };
                 assert!(
                     (x.curvature_radius - drawn).abs() < 1e-5,

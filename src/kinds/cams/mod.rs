@@ -14,7 +14,7 @@ mod result;
 pub use request::{CamFollowerDto, CamFollowerMotion, CamFollowerType, CamProgramDto, CamRequest, CamSense, program};
 pub use result::CamResult;
 
-use crate::engine::cam::design::{Cam, CamError, Lift, smallest_base, turn};
+use crate::engine::cam::design::{Cam, CamError, Lift, Sample, smallest_base, turn};
 use crate::kind::limits::Limits;
 use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
@@ -73,13 +73,12 @@ impl Kind for Cams {
     fn compute(request: &CamRequest, unknown: Vec<FieldError>, limits: &Limits) -> Result<CamResult, ApiError> {
         let problem = validated(unknown, request.to_problem(limits))?;
         let lift = result::lift_of(&problem);
-        let reader = Lift::Function(&lift);
         let base = match problem.size {
             None => problem.cam.base,
-            Some(size) => sized(&problem, &reader, size)?,
+            Some(size) => sized(&problem, &lift, size)?,
         };
         let cam = Cam { base, ..problem.cam };
-        let samples = turn(&cam, &reader, problem.samples).map_err(|e| refused(&e))?;
+        let samples = turn(&cam, &lift, problem.samples).map_err(|e| refused(&e))?;
         Ok(result::result(&problem, &cam, &samples))
     }
 
@@ -120,16 +119,13 @@ impl Kind for Cams {
 
 /// The smallest base radius meeting `size` ([largest pressure angle, smallest
 /// radius of curvature]) without undercut.
-fn sized(p: &Problem, lift: &Lift, [angle, rho]: [Option<f64>; 2]) -> Result<f64, ApiError> {
+fn sized(p: &Problem, lift: Lift, [angle, rho]: [Option<f64>; 2]) -> Result<f64, ApiError> {
     let follower = p.cam.follower;
-    let ok = |turn: &[crate::engine::cam::design::Sample]| {
-        let cam = Cam { follower, ..p.cam };
+    let ok = |turn: &[Sample]| {
         let angle_ok = angle.is_none_or(|a| turn.iter().all(|x| x.pressure_angle.abs() <= a));
-        let convex = |x: &&crate::engine::cam::design::Sample| {
-            x.pitch_curvature_radius > 0.0 || follower == crate::engine::cam::design::Follower::Flat
-        };
+        let convex = |x: &&Sample| result::convex(follower, x);
         let rho_ok = rho.is_none_or(|r| turn.iter().filter(convex).all(|x| x.curvature_radius >= r));
-        angle_ok && rho_ok && !result::undercut(&cam, turn)
+        angle_ok && rho_ok && !result::undercut(follower, turn)
     };
     smallest_base(p.cam, lift, p.samples, ok).ok_or_else(|| {
         ApiError::Invalid(vec![FieldError::at(

@@ -210,11 +210,11 @@ fn summary(
         .iter()
         .map(|x| at(x, x.pressure_angle.abs()))
         .fold(at(&turn[0], 0.0), |a, b| if b.value > a.value { b } else { a });
-    let convex = turn.iter().filter(|x| x.pitch_curvature_radius > 0.0 || cam.follower == Follower::Flat);
+    let convex = turn.iter().filter(|x| convex(cam.follower, x));
     let min_rho = convex
         .map(|x| at(x, x.curvature_radius))
         .fold(AtAngle { value: f64::INFINITY, theta: 0.0 }, |a, b| if b.value < a.value { b } else { a });
-    let undercut = undercut(cam, turn);
+    let undercut = undercut(cam.follower, turn);
     if undercut {
         warnings.push(format!(
             "undercut: the profile folds on itself near {:.2}° (radius of curvature {:.6e} m): a larger base circle{}",
@@ -254,9 +254,15 @@ fn summary(
     }
 }
 
+/// Where the profile is convex (a flat face's profile must be everywhere;
+/// a roller's where its pitch curve is).
+pub fn convex(follower: Follower, x: &Sample) -> bool {
+    follower == Follower::Flat || x.pitch_curvature_radius > 0.0
+}
+
 /// The profile folds: a roller larger than a convex pitch radius, a flat face on a concave stretch.
-pub fn undercut(cam: &Cam, turn: &[Sample]) -> bool {
-    match cam.follower {
+pub fn undercut(follower: Follower, turn: &[Sample]) -> bool {
+    match follower {
         Follower::Flat => turn.iter().any(|x| x.curvature_radius < 0.0),
         Follower::Roller(r) => turn.iter().any(|x| x.pitch_curvature_radius > 0.0 && x.pitch_curvature_radius < r),
     }
