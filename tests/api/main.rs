@@ -45,6 +45,7 @@ mod rotor;
 mod schema;
 mod security;
 mod seed_exams;
+mod slipping;
 mod slow_clients;
 mod small_disk;
 mod stiff;

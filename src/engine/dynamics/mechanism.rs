@@ -19,6 +19,8 @@
 //! position, are handled by [`super::rows`]: those reactions are flagged.
 
 pub(crate) mod equations;
+mod grip;
+mod ode;
 
 use super::range_space::RangeSpace;
 use super::{DynamicsError, DynamicsSolution, End, Integrator, Sample, Settings, energy_residual, run};
@@ -29,6 +31,7 @@ use crate::engine::kinetostatics::{self, ContactState, Energy, Load, Motion, Rea
 use crate::engine::mobility::{Mobility, mobility};
 use crate::engine::model::Mechanism;
 use equations::{Equations, kinetic, masses};
+use grip::{Grips, Mode};
 use std::cell::RefCell;
 
 /// A validated mechanism problem in SI units.
@@ -157,7 +160,9 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
     let sparse = (sparse && mobility.redundant_constraints == 0 && m.n_parameters() == 0)
         .then(|| RangeSpace::new(&jac, r, &mass, hold))
         .flatten();
-    let dae = Equations {
+    // Friction may dissipate: the energy is not held where a contact has it.
+    let grips = grip::grips(m);
+    let mut dae = Equations {
         p,
         n,
         r,
@@ -167,8 +172,12 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         sparse: sparse.map(RefCell::new),
         held_at: RefCell::new(Vec::new()),
         dense: Default::default(),
-        energy,
+        energy: energy.filter(|_| grips.is_empty()),
         energy_held: Default::default(),
+        held: RefCell::new(Grips { modes: vec![Mode::Roll; grips.len()], slipped: vec![0.0; grips.len()] }),
+        start: Grips { modes: vec![Mode::Roll; grips.len()], slipped: vec![0.0; grips.len()] },
+        history: RefCell::new(Vec::new()),
+        grips,
     };
     if dae.motion(0.0, &start.q, &start.qd, false).is_none() {
         return Err(initial(
@@ -181,6 +190,7 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
     let mut y0 = start.q.clone();
     y0.extend(&start.qd);
     y0.push(0.0);
+    dae.settle(&y0);
     let run = run(&dae, y0, &settings)?;
     let states = &run.states;
     let t0 = states.first().map_or(0.0, |(_, y)| dae.kinetic(&y[n..2 * n]));
@@ -191,6 +201,7 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         if p.deadline.expired() {
             return Err(over(run.t_end, run.attempted));
         }
+        *dae.held.borrow_mut() = dae.grips_at(*t);
         let detail = sample(&dae, &mobility, *t, y)?;
         let [angle, speed, acceleration] = detail.inputs[0];
         let kinetic = dae.kinetic(&y[n..2 * n]);

@@ -15,6 +15,7 @@
 //! reached in time; it fails with [`DynamicsError`] when the integration
 //! cannot go on or the compute budget runs out.
 
+mod events;
 pub mod mechanism;
 mod range_space;
 pub mod reduced;
@@ -24,13 +25,11 @@ mod sampler;
 pub use reduced::{ReducedProblem, solve};
 
 use super::numeric::dop853::Dp853;
-use super::numeric::ode::{Dp5, Explicit, Step, Stepper};
+use super::numeric::ode::{Dp5, Explicit, Stepper};
 use super::numeric::radau::Radau5;
-use super::numeric::roots::brent;
 use crate::engine::Deadline;
 pub use sampler::KEPT_BYTES;
 use sampler::Sampler;
-use std::f64::consts::PI;
 
 /// The Runge–Kutta method that integrates.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -94,6 +93,10 @@ pub struct Sample {
 pub enum EventKind {
     /// φ crossed a multiple of 2π.
     Turn,
+    /// A rolling contact began to slip (or its slip turned back).
+    Slip,
+    /// A slipping contact began to roll.
+    Roll,
     End,
 }
 
@@ -103,6 +106,8 @@ pub struct Event {
     pub angle: f64,
     pub t: f64,
     pub speed: f64,
+    /// The joint whose contact changed (slip, roll).
+    pub joint: Option<usize>,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -174,6 +179,26 @@ pub(crate) trait Model {
     fn project(&self, _y: &mut [f64]) -> f64 {
         0.0
     }
+    /// The guards of the model's present equations at (t, y), each ≥ 0 while
+    /// they hold (a rolling contact's μN − |F_t|, a slip's direction, a
+    /// contact's normal force): one that crosses 0 within a step is an
+    /// event there ([`events`]). None, the default: the equations never change.
+    fn guards(&self, _t: f64, _y: &[f64]) -> Vec<f64> {
+        Vec::new()
+    }
+    /// Guard k crossed 0 at (t, y): the model changes its equations there,
+    /// or the run stops.
+    fn cross(&self, _k: usize, _t: f64, _y: &[f64]) -> Crossing {
+        Crossing::Stop("a guard crossed where the model has none".into())
+    }
+}
+
+/// What a model does where one of its guards crosses 0.
+pub(crate) enum Crossing {
+    /// Its equations change there: an event of this kind at this joint.
+    Switch(EventKind, usize),
+    /// The run stops there, for this reason.
+    Stop(String),
 }
 
 /// How to integrate.
@@ -220,6 +245,8 @@ pub(crate) struct Run {
 }
 
 const MAX_STEPS: usize = 2_000_000;
+/// The most changes of a model's equations in a run ([`Model::cross`]).
+const MAX_SWITCHES: usize = 10_000;
 
 /// Integrates the model from y₀ at t = 0 until the end condition; a run
 /// the explicit pair finds stiff is made again with Radau IIA when the
@@ -284,6 +311,7 @@ fn drive<S: Stepper>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<R
     };
     let mut sampler = Sampler::new(s.samples, known, s.kept_bytes);
     let (mut events, mut stopped, mut drift, mut reversal) = (Vec::new(), None, 0.0f64, [f64::INFINITY; 2]);
+    let (mut guards, mut switches, mut spent) = (None, 0, Spent { counts: [0; 3], errors: Vec::new() });
     let t_end = loop {
         if deadline.expired() {
             return Err(over(&ode));
@@ -294,22 +322,52 @@ fn drive<S: Stepper>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<R
         }
         let step = step.map_err(|e| DynamicsError::Integration { t: ode.time(), reason: e.to_string() })?;
         if s.automatic && ode.stiff() {
-            let [accepted, rejected, evaluations] = ode.counts();
+            spent.add(&ode);
+            let [accepted, rejected, evaluations] = spent.counts;
             return Ok(Err(Handover { t: step.t1, attempted: accepted + rejected, evaluations }));
         }
+        let mut step = step;
+        let crossing = events::crossing(model, &mut step, s.end, &mut guards);
         // φ at both ends of the step, evaluated once: for a mechanism each
         // evaluation assembles the constraints.
         let span = (model.angle(&step.y0), model.angle(&step.y1));
-        turns(model, &step, span, &mut events);
+        events::turns(model, &step, span, &mut events);
         if let Some(w) = model.end_speed(&step.y1) {
             let first = |t: f64, reached: bool| if reached { t.min(step.t0) } else { t };
             reversal = [first(reversal[0], w <= 0.0), first(reversal[1], w >= 0.0)];
         }
-        if let Some(t) = finished(model, s.end, &step, span, &mut events, &mut stopped) {
+        if let Some(t) = events::finished(model, s.end, &step, span, &mut events, &mut stopped) {
             sampler.accept(step, true);
             break t;
         }
         let mut y = step.y1.clone();
+        if let Some(k) = crossing {
+            let t = step.t1;
+            let reason = match model.cross(k, t, &y) {
+                Crossing::Switch(..) if switches == MAX_SWITCHES => Some(format!(
+                    "the contacts changed between rolling and slipping {MAX_SWITCHES} times by t = {t} s \
+                     (they chatter): the run stops there"
+                )),
+                Crossing::Switch(kind, joint) => {
+                    events.push(events::at(model, kind, t, &y, Some(joint)));
+                    None
+                }
+                Crossing::Stop(reason) => Some(reason),
+            };
+            if let Some(reason) = reason {
+                events.push(events::at(model, EventKind::End, t, &y, None));
+                stopped = Some(reason);
+                sampler.accept(step, true);
+                break t;
+            }
+            // The equations change here: the stepper starts again from the event.
+            switches += 1;
+            drift = drift.max(model.project(&mut y));
+            spent.add(&ode);
+            ode = S::start(&mut f, t, y, s.rtol, s.atol.clone());
+            sampler.accept(step, false);
+            continue;
+        }
         drift = drift.max(model.project(&mut y));
         if y != step.y1 {
             ode.project(&mut f, y);
@@ -317,62 +375,34 @@ fn drive<S: Stepper>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<R
         sampler.accept(step, false);
     };
     events.retain(|e| e.kind == EventKind::End || e.t <= t_end);
-    let [accepted, rejected, evaluations] = ode.counts();
+    spent.add(&ode);
     Ok(Ok(Run {
         states: sampler.finish(t_end),
         reversal,
         events,
         t_end,
         stopped,
-        attempted: accepted + rejected,
-        evaluations,
+        attempted: spent.counts[0] + spent.counts[1],
+        evaluations: spent.counts[2],
         drift,
-        local_errors: ode.local_errors().to_vec(),
+        local_errors: spent.errors,
         integrator: s.integrator,
         stiff_at: None,
         repeated: false,
     }))
 }
 
-/// Multiples of 2π crossed during the step, in either direction.
-fn turns(model: &impl Model, step: &Step, (a, b): (f64, f64), events: &mut Vec<Event>) {
-    let (ka, kb) = ((a / (2.0 * PI)).floor() as i64, (b / (2.0 * PI)).floor() as i64);
-    let crossed: Vec<i64> = if kb > ka { (ka + 1..=kb).collect() } else { (kb + 1..=ka).rev().collect() };
-    for k in crossed {
-        let target = 2.0 * PI * k as f64;
-        if target == a {
-            continue;
-        }
-        let t = brent(|s| model.angle(&step.at(s)) - target, step.t0, step.t1, 0.0);
-        events.push(Event { kind: EventKind::Turn, angle: target, t, speed: model.speed(&step.at(t)) });
-    }
+/// What the steppers of one run spent, over the restarts at its events.
+struct Spent {
+    counts: [usize; 3],
+    errors: Vec<f64>,
 }
 
-/// The end time if the run ends in this step.
-fn finished(
-    model: &impl Model,
-    end: End,
-    step: &Step,
-    (a0, a1): (f64, f64),
-    events: &mut Vec<Event>,
-    stopped: &mut Option<String>,
-) -> Option<f64> {
-    let close = |t: f64, events: &mut Vec<Event>| {
-        let y = step.at(t);
-        events.push(Event { kind: EventKind::End, angle: model.angle(&y), t, speed: model.speed(&y) });
-        Some(t)
-    };
-    match end {
-        End::Duration(d) if step.t1 >= d => close(d, events),
-        End::UntilAngle { angle, .. } if (a0 - angle) * (a1 - angle) <= 0.0 && a1 != a0 => {
-            let t = brent(|s| model.angle(&step.at(s)) - angle, step.t0, step.t1, 0.0);
-            close(t, events)
-        }
-        End::UntilAngle { angle, max_time } if step.t1 >= max_time => {
-            *stopped = Some(format!("the angle {angle} rad was not reached within {max_time} s"));
-            close(max_time, events)
-        }
-        _ => None,
+impl Spent {
+    fn add(&mut self, ode: &impl Stepper) {
+        self.counts.iter_mut().zip(ode.counts()).for_each(|(a, b)| *a += b);
+        self.errors.resize(ode.local_errors().len(), 0.0);
+        self.errors.iter_mut().zip(ode.local_errors()).for_each(|(a, b)| *a += b);
     }
 }
 

@@ -39,29 +39,59 @@ pub struct ContactState {
     pub off_end: bool,
 }
 
+/// Contact joint k's frame at (q, q̇): where the curves touch, t, n, and
+/// the velocities of both material points there (the first's, the second's).
+pub struct Frame {
+    pub point: [f64; 2],
+    pub t: [f64; 2],
+    pub n: [f64; 2],
+    pub velocities: [[f64; 2]; 2],
+}
+
+impl Frame {
+    pub fn of(m: &Mechanism, k: usize, q: &[f64], qd: &[f64]) -> Option<Self> {
+        let JointKind::Contact(c) = &m.joints[k].kind else { return None };
+        let [i, j] = m.joints[k].bodies;
+        let t = m.contact_tangent(k, q)?;
+        let at = |b: BodyId| m.contact_point(k, b, q);
+        let ((point, v2), (_, v1)) = (point_motion(m, q, qd, (j, at(j)?)), point_motion(m, q, qd, (i, at(i)?)));
+        let n = normal_direction(m, q, (k, [i, j]), t, point, &c.curves);
+        Some(Self { point, t, n, velocities: [v1, v2] })
+    }
+
+    /// (v₂ − v₁)·t.
+    pub fn sliding(&self) -> f64 {
+        let [v1, v2] = self.velocities;
+        dot([v2[0] - v1[0], v2[1] - v1[1]], self.t)
+    }
+
+    /// N and F_t of a force F on the second body.
+    pub fn parts(&self, f: [f64; 2]) -> [f64; 2] {
+        [dot(f, self.n), dot(f, self.t)]
+    }
+}
+
 /// The state of contact joint `r.joint` at (q, q̇) with its reaction `r`.
 pub fn contact_state(m: &Mechanism, q: &[f64], qd: &[f64], r: &Reaction) -> Option<ContactState> {
     let k = r.joint;
     let JointKind::Contact(c) = &m.joints[k].kind else { return None };
-    let [i, j] = m.joints[k].bodies;
-    let t = m.contact_tangent(k, q)?;
-    let at = |b: BodyId| m.contact_point(k, b, q);
-    let ((point, v2), (_, v1)) = (point_motion(m, q, qd, (j, at(j)?)), point_motion(m, q, qd, (i, at(i)?)));
-    let n = normal_direction(m, q, (k, [i, j]), t, point, &c.curves);
-    let f = [r.fx, r.fy];
+    let frame = Frame::of(m, k, q, qd)?;
+    let [normal, tangential] = frame.parts([r.fx, r.fy]);
     let radius = |side: usize| {
         let kappa = c.curves[side].at(m.contact_parameter(k, side, q)?).curvature();
         (kappa != 0.0).then(|| 1.0 / kappa)
     };
     Some(ContactState {
         joint: k,
-        point,
-        normal: dot(f, n),
-        tangential: dot(f, t),
-        sliding_velocity: dot([v2[0] - v1[0], v2[1] - v1[1]], t),
-        velocities: [v1, v2],
+        point: frame.point,
+        normal,
+        tangential,
+        sliding_velocity: frame.sliding(),
+        velocities: frame.velocities,
         curvature_radius: [radius(0), radius(1)],
-        pressure_angle: follower(m, j).then(|| pressure_angle(n, v2)).flatten(),
+        pressure_angle: follower(m, m.joints[k].bodies[1])
+            .then(|| pressure_angle(frame.n, frame.velocities[1]))
+            .flatten(),
         off_end: (0..2).any(|side| match (c.curves[side].domain(), m.contact_parameter(k, side, q)) {
             (Domain::Interval(a, b), Some(u)) => u < a - 1e-9 || u > b + 1e-9,
             _ => false,

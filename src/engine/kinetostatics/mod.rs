@@ -21,7 +21,7 @@ mod loads;
 mod summary;
 
 pub use actions::reactions;
-pub use contacts::{ContactState, contact_state};
+pub use contacts::{ContactState, Frame, contact_state};
 pub use loads::{
     Energy, Load, applied_forces, applied_forces_into, energy, point_acceleration, point_motion, potential,
 };

@@ -31,12 +31,23 @@ pub struct Step {
     /// The continuous extension's coefficients r₁…r_p: y(t0 + θh) =
     /// y0 + θ(r₁ + (1−θ)(r₂ + θ(r₃ + (1−θ)(r₄ + …)))).
     pub(super) rcont: Vec<Vec<f64>>,
+    /// The step's size h as taken (t1 − t0 until [`Step::end_at`] cuts it).
+    pub(super) h: f64,
 }
 
 impl Step {
     /// How many vectors of coefficients its continuous extension has.
     pub fn stages(&self) -> usize {
         self.rcont.len()
+    }
+
+    /// Ends the step at t ∈ [t0, t1] (where the model's equations change:
+    /// an event of [`crate::engine::dynamics`]), its dense output kept: y1
+    /// is the dense output there, f1 unknown (NaN).
+    pub fn end_at(&mut self, t: f64) {
+        self.y1 = self.at(t);
+        self.f1.fill(f64::NAN);
+        self.t1 = t;
     }
 
     /// Dense-output state at t ∈ [t0, t1].
@@ -46,8 +57,7 @@ impl Step {
 
     /// One component of the dense output at t.
     pub fn component(&self, t: f64, i: usize) -> f64 {
-        let h = self.t1 - self.t0;
-        let th = if h == 0.0 { 0.0 } else { (t - self.t0) / h };
+        let th = if self.h == 0.0 { 0.0 } else { (t - self.t0) / self.h };
         let mut v = 0.0;
         for (k, r) in self.rcont.iter().enumerate().rev() {
             v = (v + r[i]) * if k % 2 == 0 { th } else { 1.0 - th };
@@ -313,6 +323,7 @@ impl<P: Pair> Explicit<P> {
             y1: self.ys.clone(),
             f0: self.k[0].clone(),
             f1: self.k[last].clone(),
+            h,
         };
         self.t += h;
         self.y.copy_from_slice(&step.y1);

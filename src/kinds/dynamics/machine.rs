@@ -5,7 +5,7 @@ use super::Initial;
 use crate::engine::dynamics::mechanism::MechanismSolution;
 use crate::engine::kinetostatics::Load;
 use crate::engine::kinetostatics::Motion;
-use crate::engine::model::{Driver, Mechanism};
+use crate::engine::model::{Driver, JointKind, Mechanism};
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
 use crate::kinds::mechanism::track::{PointState, TrackDto, Tracked, resolve, states};
 use crate::kinds::mechanism::{Assembled, MechanismDto, coordinate};
@@ -31,7 +31,8 @@ pub struct DynamicsMachine {
     pub input: Inputs,
     /// Loads as in kinetostatics; their Functions may read `phi` (the first
     /// input's angle reduced to the period), `omega` (its speed) and `t`.
-    /// Joint friction is not supported in dynamics.
+    /// Joint friction is not supported in dynamics, but at a rolling contact
+    /// (it rolls while |tangential| ≤ μ·normal, and slips otherwise).
     #[schema(max_items = 500)]
     pub loads: Option<Vec<LoadDto>>,
     /// Points to follow, as in kinetostatics: each sample then has their
@@ -90,13 +91,13 @@ impl DynamicsMachine {
         let c = dto.convert(e, "/machine/mechanism")?;
         let mut mechanism = c.mechanism;
         for (k, j) in mechanism.joints.iter().enumerate() {
-            let contact = matches!(j.kind, crate::engine::model::JointKind::Contact(_));
-            if j.friction.is_some() {
+            let rolling = matches!(&j.kind, JointKind::Contact(c) if c.rolling);
+            if j.friction.is_some() && !rolling {
                 e.push(
                     &format!("/machine/mechanism/joints/{k}/friction"),
-                    if contact {
-                        "friction at a contact is not modelled in dynamics: leave it out, and a rolling contact \
-                         rolls (each sample's reaction says the mu_required), a sliding one slides freely"
+                    if matches!(j.kind, JointKind::Contact(_)) {
+                        "friction in dynamics is modelled at a rolling contact (\"rolling\": true: it rolls while \
+                         |tangential| ≤ mu·normal and slips otherwise); a sliding contact slides freely: leave it out"
                     } else {
                         "joint friction is not supported in dynamics"
                     },

@@ -257,6 +257,9 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
             let dopri5 = p.integrator.unwrap_or_else(|| Integrator::auto(p.tolerance, false)) == Integrator::Dopri5;
             let s = mechanism::solve(&p).map_err(|e| invalid(e, dopri5))?;
             let mut result = request.in_its_words(DynamicsResult::from(s.solution.clone()));
+            for (dto, event) in result.events.iter_mut().zip(&s.solution.events) {
+                dto.joint = event.joint.map(|k| p.mechanism.joints[k].name.clone());
+            }
             result.accuracy.constraint_drift = Some(s.drift);
             result.accuracy.energy_conserved = Some(s.energy_conserved);
             result.accuracy.energy_held_steps = Some(s.energy_held_steps);

@@ -98,16 +98,20 @@ fn inputs(job: &Job, mut c: Chart, key: &str, symbol: &str) -> Chart {
 /// Fewer samples than this and the plots say the lines between them are straight.
 const FEW_SAMPLES: usize = 50;
 
-/// The events as vertical lines: "turn 1", "turn 2", …, "end".
+/// The events as vertical lines: "turn 1", "turn 2", …, "slip K", "roll K", "end".
 fn events(r: &Value, mut c: Chart) -> Chart {
     let mut turns = 0;
     for e in rows(r, "events") {
         let Some(t) = num(e, "t") else { continue };
-        let label = if e.get("kind").and_then(Value::as_str) == Some("turn") {
-            turns += 1;
-            format!("turn {turns}")
-        } else {
-            "end".to_string()
+        let label = match e.get("kind").and_then(Value::as_str) {
+            Some("turn") => {
+                turns += 1;
+                format!("turn {turns}")
+            }
+            Some(kind @ ("slip" | "roll")) => {
+                format!("{kind} {}", e.get("joint").and_then(Value::as_str).unwrap_or(""))
+            }
+            _ => "end".to_string(),
         };
         c = c.rule(Level::X(t), label, Pen::dashed(7));
     }

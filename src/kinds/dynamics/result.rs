@@ -22,8 +22,13 @@ pub struct SampleDto {
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct EventDto {
-    /// "turn" (a multiple of 2π crossed, either direction) or "end".
+    /// "turn" (a multiple of 2π crossed, either direction), "slip" (a
+    /// rolling contact with friction starts to slip, or its slip turns
+    /// back), "roll" (a slipping contact rolls again) or "end".
     pub kind: String,
+    /// The contact joint of a "slip" or "roll" event.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub joint: Option<String>,
     pub angle: f64,
     pub t: f64,
     pub speed: f64,
@@ -113,7 +118,14 @@ impl From<DynamicsSolution> for DynamicsResult {
             .iter()
             .enumerate()
             .map(|(k, v)| EventDto {
-                kind: if v.kind == EventKind::End { "end" } else { "turn" }.into(),
+                kind: match v.kind {
+                    EventKind::Turn => "turn",
+                    EventKind::Slip => "slip",
+                    EventKind::Roll => "roll",
+                    EventKind::End => "end",
+                }
+                .into(),
+                joint: None,
                 angle: v.angle,
                 t: v.t,
                 speed: v.speed,

@@ -12,10 +12,11 @@
 //!   reactions are indeterminate.
 
 use super::MechanismProblem;
-use crate::engine::constraints::{State, evaluate, evaluate_blocks};
+use super::grip::{Grip, Grips, Mode, friction};
+use crate::engine::constraints::{State, System, evaluate, evaluate_blocks};
 use crate::engine::dynamics::range_space::RangeSpace;
 use crate::engine::dynamics::rows::Rows;
-use crate::engine::kinetostatics::{applied_forces, potential};
+use crate::engine::kinetostatics::{Frame, applied_forces, potential};
 use crate::engine::model::Mechanism;
 use nalgebra::{DMatrix, DVector};
 use std::cell::{Cell, RefCell};
@@ -55,6 +56,12 @@ pub(super) struct Equations<'a> {
     pub energy: Option<f64>,
     /// Steps after which T + V was E (set so, or already within rounding of it).
     pub energy_held: Cell<usize>,
+    /// The rolling contacts with friction, their state now, at the start,
+    /// and after each change (from its time on) for the samples.
+    pub grips: Vec<Grip>,
+    pub held: RefCell<Grips>,
+    pub start: Grips,
+    pub history: RefCell<Vec<(f64, Grips)>>,
 }
 
 impl Equations<'_> {
@@ -110,8 +117,9 @@ impl Equations<'_> {
     fn dense_motion(&self, t: f64, q: &[f64], qd: &[f64], loose: bool) -> Option<Motion> {
         self.dense.set(self.dense.get() + 1);
         let (n, r) = (self.n, self.r);
-        let sys = evaluate(&self.p.mechanism, &State { q, qd: Some(qd), inputs: &self.zeros() });
-        let jac = sys.jacobian.rows(0, r).into_owned();
+        let sys = self.system(q, Some(qd));
+        let active = self.active_rows();
+        let jac = sys.jacobian.rows(0, r).select_rows(&active);
         let rows = Rows::of(&jac, &self.scale);
         if rows.holds() {
             self.held_at.borrow_mut().push(t);
@@ -120,27 +128,82 @@ impl Equations<'_> {
         let k = jac.nrows();
         let speed = |row: usize, v: &DVector<f64>| (sys.jacobian.row(row) * v)[0];
         let qd_v = DVector::from_column_slice(qd);
-        let forces = self.forces(t, q, qd, [sys.phi[r], speed(r, &qd_v)]);
+        let mut forces = self.forces(t, q, qd, [sys.phi[r], speed(r, &qd_v)]);
         let mut a = DMatrix::zeros(n + k, n + k);
         for (i, m) in self.mass.iter().enumerate() {
             a[(i, i)] = *m;
         }
         a.view_mut((0, n), (n, k)).copy_from(&jac.transpose());
         a.view_mut((n, 0), (k, n)).copy_from(&jac);
+        let lu = a.lu();
         let mut b = DVector::zeros(n + k);
         b.rows_mut(0, n).copy_from_slice(&forces);
-        b.rows_mut(n, k).copy_from(&rows.gamma(sys.gamma.rows(0, r).into_owned()));
-        let x = a.lu().solve(&b)?;
+        b.rows_mut(n, k).copy_from(&rows.gamma(sys.gamma.select_rows(&active)));
+        let mut x = lu.solve(&b)?;
+        // λ of every joint row (0 for a slipping grip's rolling row, left out).
+        let lambda = |x: &DVector<f64>| {
+            let mut all = vec![0.0; r];
+            let kept = rows.multipliers(x.rows(n, k).into_owned());
+            active.iter().zip(kept.iter()).for_each(|(row, v)| all[*row] = *v);
+            all
+        };
+        let mut lambda_all = lambda(&x);
+        let slipping = self.slipping(q, qd);
+        if !slipping.is_empty() {
+            let gradients: Vec<DVector<f64>> =
+                slipping.iter().map(|(g, ..)| sys.jacobian.row(g.roll_row).transpose()).collect();
+            let units: Vec<DVector<f64>> = gradients
+                .iter()
+                .map(|g| lu.solve(&DVector::from_fn(n + k, |i, _| if i < n { g[i] } else { 0.0 })))
+                .collect::<Option<_>>()?;
+            let unit_lambda: Vec<Vec<f64>> = units.iter().map(&lambda).collect();
+            let alpha = friction(&slipping, &lambda_all, &unit_lambda)?;
+            for (a, (unit, g)) in alpha.iter().zip(units.iter().zip(&gradients)) {
+                x.axpy(*a, unit, 1.0);
+                forces.iter_mut().zip(g.iter()).for_each(|(f, gi)| *f += a * gi);
+            }
+            lambda_all = lambda(&x);
+            // The rolling row's multiplier in effect: the friction along it.
+            slipping.iter().zip(&alpha).for_each(|((grip, ..), a)| lambda_all[grip.roll_row] = *a);
+        }
         let qdd = x.rows(0, n).into_owned();
         let inputs = (r..sys.phi.len()).map(|row| [sys.phi[row], speed(row, &qd_v), speed(row, &qdd) - sys.gamma[row]]);
         Some(Motion {
             inputs: inputs.collect(),
-            residual: sys.phi.rows(0, r).amax(),
+            residual: sys.phi.select_rows(&active).amax(),
             loose: if loose { (0..r).map(|row| rows.touches_loose(row)).collect() } else { Vec::new() },
-            lambda: rows.multipliers(x.rows(n, k).into_owned()).data.into(),
+            lambda: lambda_all,
             qdd: qdd.data.into(),
             forces,
         })
+    }
+
+    /// Φ, Φ_q (and γ with velocities) at q, each grip's rolling row less
+    /// the arc length it has slipped.
+    pub(super) fn system(&self, q: &[f64], qd: Option<&[f64]>) -> System {
+        let mut sys = evaluate(&self.p.mechanism, &State { q, qd, inputs: &self.zeros() });
+        for (grip, slipped) in self.grips.iter().zip(&self.held.borrow().slipped) {
+            sys.phi[grip.roll_row] -= slipped;
+        }
+        sys
+    }
+
+    /// The joint rows in the equations now: all but slipping grips' rolling rows.
+    fn active_rows(&self) -> Vec<usize> {
+        let held = self.held.borrow();
+        let out = |row: &usize| self.grips.iter().zip(&held.modes).any(|(g, m)| g.roll_row == *row && *m != Mode::Roll);
+        (0..self.r).filter(|row| !out(row)).collect()
+    }
+
+    /// The slipping grips, with σ and their frame at (q, q̇).
+    fn slipping(&self, q: &[f64], qd: &[f64]) -> Vec<(Grip, f64, Frame)> {
+        let held = self.held.borrow();
+        let m = &self.p.mechanism;
+        let slip = |(g, mode): (&Grip, &Mode)| match mode {
+            Mode::Slip(sigma) => Frame::of(m, g.joint, q, qd).map(|f| (*g, *sigma, f)),
+            Mode::Roll => None,
+        };
+        self.grips.iter().zip(&held.modes).filter_map(slip).collect()
     }
 
     /// The minimum-norm x with J x = b, J of full row rank.
@@ -219,8 +282,9 @@ impl Equations<'_> {
         let (n, r) = (self.n, self.r);
         let mut removed = 0.0f64;
         for _ in 0..8 {
-            let sys = evaluate(&self.p.mechanism, &State { q: &y[..n], qd: None, inputs: &self.zeros() });
-            let (jac, phi) = (sys.jacobian.rows(0, r).into_owned(), sys.phi.rows(0, r).into_owned());
+            let sys = self.system(&y[..n], None);
+            let active = self.active_rows();
+            let (jac, phi) = (sys.jacobian.rows(0, r).select_rows(&active), sys.phi.rows(0, r).select_rows(&active));
             removed = removed.max(phi.amax());
             // A held or dropped combination is not corrected in position.
             let rows = Rows::of(&jac, &self.scale);
@@ -237,41 +301,6 @@ impl Equations<'_> {
             y[..n].iter_mut().zip(dq.iter()).for_each(|(a, d)| *a += d);
         }
         removed
-    }
-}
-
-/// The ODE the integrator sees: y = (q, q̇, W).
-impl crate::engine::dynamics::Model for Equations<'_> {
-    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-        let n = self.n;
-        let (q, qd) = (&y[..n], &y[n..2 * n]);
-        match self.motion(t, q, qd, false) {
-            Some(m) => {
-                dy[..n].copy_from_slice(qd);
-                dy[n..2 * n].copy_from_slice(&m.qdd);
-                dy[2 * n] = m.forces.iter().zip(qd).map(|(f, v)| f * v).sum();
-            }
-            // A singular matrix: the stepper rejects the step and retries smaller.
-            None => dy.fill(f64::NAN),
-        }
-    }
-
-    fn angle(&self, y: &[f64]) -> f64 {
-        self.input(&y[..self.n], None).0
-    }
-
-    fn speed(&self, y: &[f64]) -> f64 {
-        self.input(&y[..self.n], Some(&y[self.n..2 * self.n])).1
-    }
-
-    fn project(&self, y: &mut [f64]) -> f64 {
-        Equations::project(self, y)
-    }
-
-    /// The folds held so far: the energy is held until the first (a run made
-    /// again from t = 0 holds it as the first run did).
-    fn restart(&self) {
-        self.held_at.borrow_mut().clear();
     }
 }
 

@@ -265,6 +265,7 @@ impl Radau5 {
             y1,
             f0: std::mem::replace(&mut self.f, f1.clone()),
             f1,
+            h,
         };
         self.t += h;
         self.accepted += 1;

@@ -1,0 +1,85 @@
+//! Events within a step, located on its dense output by Brent's method:
+//! the multiples of 2π the first input crosses, the run's end, and the
+//! crossings of a model's guards (where its equations change: a contact
+//! that starts to slip or to roll, or one that opens).
+
+use super::{End, Event, EventKind, Model};
+use crate::engine::numeric::ode::Step;
+use crate::engine::numeric::roots::brent;
+use std::f64::consts::PI;
+
+/// The event of `kind` at (t, y).
+pub(super) fn at(model: &impl Model, kind: EventKind, t: f64, y: &[f64], joint: Option<usize>) -> Event {
+    Event { kind, angle: model.angle(y), t, speed: model.speed(y), joint }
+}
+
+/// The first guard that crosses 0 within the step (≥ 0 at its start, < 0
+/// at its end) before the run's end, the step ended there; `cache` holds
+/// the guards at the step's start (those at its end, for the next step;
+/// None after a change of equations).
+pub(super) fn crossing(model: &impl Model, step: &mut Step, end: End, cache: &mut Option<Vec<f64>>) -> Option<usize> {
+    let g0 = cache.take().unwrap_or_else(|| model.guards(step.t0, &step.y0));
+    if g0.is_empty() {
+        return None;
+    }
+    let g1 = model.guards(step.t1, &step.y1);
+    let limit = match end {
+        End::Duration(d) => d,
+        End::UntilAngle { max_time, .. } => max_time,
+    };
+    let crossed: Vec<(usize, f64)> = (0..g0.len())
+        .filter(|&k| g0[k] >= 0.0 && g1[k] < 0.0)
+        .map(|k| (k, brent(|t| model.guards(t, &step.at(t))[k], step.t0, step.t1, 0.0)))
+        .filter(|&(_, t)| t < limit)
+        .collect();
+    // The earliest; of guards crossing together (within 1e-9 of the step),
+    // the one listed last (a model lists its most decisive guards last).
+    let earliest = crossed.iter().map(|c| c.1).fold(f64::INFINITY, f64::min);
+    let together = 1e-9 * (step.t1 - step.t0);
+    let first = crossed.into_iter().filter(|c| c.1 <= earliest + together).max_by_key(|c| c.0);
+    *cache = first.is_none().then_some(g1);
+    let (k, t) = first?;
+    step.end_at(t);
+    Some(k)
+}
+
+/// Multiples of 2π crossed during the step, in either direction.
+pub(super) fn turns(model: &impl Model, step: &Step, (a, b): (f64, f64), events: &mut Vec<Event>) {
+    let (ka, kb) = ((a / (2.0 * PI)).floor() as i64, (b / (2.0 * PI)).floor() as i64);
+    let crossed: Vec<i64> = if kb > ka { (ka + 1..=kb).collect() } else { (kb + 1..=ka).rev().collect() };
+    for k in crossed {
+        let target = 2.0 * PI * k as f64;
+        if target == a {
+            continue;
+        }
+        let t = brent(|s| model.angle(&step.at(s)) - target, step.t0, step.t1, 0.0);
+        events.push(at(model, EventKind::Turn, t, &step.at(t), None));
+    }
+}
+
+/// The end time if the run ends in this step.
+pub(super) fn finished(
+    model: &impl Model,
+    end: End,
+    step: &Step,
+    (a0, a1): (f64, f64),
+    events: &mut Vec<Event>,
+    stopped: &mut Option<String>,
+) -> Option<f64> {
+    let close = |t: f64, events: &mut Vec<Event>| {
+        events.push(at(model, EventKind::End, t, &step.at(t), None));
+        Some(t)
+    };
+    match end {
+        End::Duration(d) if step.t1 >= d => close(d, events),
+        End::UntilAngle { angle, .. } if (a0 - angle) * (a1 - angle) <= 0.0 && a1 != a0 => {
+            let t = brent(|s| model.angle(&step.at(s)) - angle, step.t0, step.t1, 0.0);
+            close(t, events)
+        }
+        End::UntilAngle { angle, max_time } if step.t1 >= max_time => {
+            *stopped = Some(format!("the angle {angle} rad was not reached within {max_time} s"));
+            close(max_time, events)
+        }
+        _ => None,
+    }
+}
