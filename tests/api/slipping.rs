@@ -64,6 +64,7 @@ async fn a_disk_slips_down_an_incline_below_the_least_friction_that_rolls_it() {
         let result = dynamics(&app, &body).await;
         assert!(result["energy_residual"].as_f64().unwrap().abs() < 1e-8, "{}", result["energy_residual"]);
         assert_eq!(events(&result).iter().filter(|e| e.0 != "end").count(), 0, "{:?}", events(&result));
+        assert_eq!(result["warnings"], json!([]), "a slip that is modelled is not a warning");
         for sample in result["machine"]["samples"].as_array().unwrap() {
             let t = sample["t"].as_f64().unwrap();
             near(&sample["inputs"][0]["angle"], 0.5 * a * t * t, 1e-8, &format!("μ {mu}: s at {t}"));

@@ -303,7 +303,7 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
             }
             let machine = MachineDynamics::new(&s, &p.mechanism, report);
             let contacts = machine.samples.iter().filter_map(|x| Some((x.t, x.contacts.as_deref()?)));
-            result.warnings.extend(contact_warnings(contacts, &p.mechanism, |t| format!("t = {t:.6} s")));
+            result.warnings.extend(contact_warnings(contacts, &p.mechanism, |t| format!("t = {t:.6} s"), true));
             result.machine = Some(machine);
             Ok(result)
         }

@@ -228,7 +228,7 @@ impl KinetostaticsResult {
             Scalars::Many(v) => v[0],
         };
         let contacts = steps.iter().filter_map(|s| Some((first(s), s.contacts.as_deref()?)));
-        warnings.extend(contact_warnings(contacts, &p.mechanism, |v| p.written.value(v)));
+        warnings.extend(contact_warnings(contacts, &p.mechanism, |v| p.written.value(v), false));
         let sum = &s.summary;
         let driving = |v: &Vec<f64>| p.outputs.driving.then(|| Scalars::of(v));
         let inputs = (p.mechanism.drivers.iter().zip(&p.input_points))

@@ -125,13 +125,15 @@ impl ReactionDto {
 /// consecutive positions where it holds (`at` the position, shown by
 /// `show`): a negative normal force (the bodies would separate there: a
 /// follower jump, a disk leaving its track), and a rolling contact needing
-/// more friction than its `friction` gives (it would slip), a contact run
-/// off the end of an open curve. A particle's
+/// more friction than its `friction` gives (it would slip; `slips`: unless
+/// the slip is modelled, as dynamics does), a contact run off the end of
+/// an open curve. A particle's
 /// contact (a ring threaded on a rim) holds both ways: no warning.
 pub fn contact_warnings<'a>(
     steps: impl Iterator<Item = (f64, &'a [ContactDto])>,
     m: &Mechanism,
     show: impl Fn(f64) -> String,
+    slip_modelled: bool,
 ) -> Vec<String> {
     let joints: Vec<(usize, &str)> = (m.joints.iter().enumerate())
         .filter(|(_, j)| matches!(j.kind, JointKind::Contact(_)))
@@ -145,7 +147,9 @@ pub fn contact_warnings<'a>(
             let c = contacts.iter().find(|c| &*c.joint == name);
             let mu = m.joints[k].friction.map(|f| f.mu);
             let rolling = matches!(&m.joints[k].kind, JointKind::Contact(c) if c.rolling);
-            let slips = |c: &ContactDto| rolling && mu.is_some_and(|mu| c.tangential.abs() > mu * c.normal.max(0.0));
+            let slips = |c: &ContactDto| {
+                !slip_modelled && rolling && mu.is_some_and(|mu| c.tangential.abs() > mu * c.normal.max(0.0))
+            };
             let threaded = matches!(&m.joints[k].kind, JointKind::Contact(c) if c.particle);
             let separates = c.is_some_and(|c| c.normal < 0.0) && !threaded;
             let conditions = [separates, c.is_some_and(slips), c.is_some_and(|c| c.off_end)];
