@@ -33,6 +33,8 @@ impl Dim {
     pub const ANGULAR_ACCELERATION: Dim = Dim([0, 0, -2, 1]);
     /// N/m
     pub const STIFFNESS: Dim = Dim([0, 1, -2, 0]);
+    /// N·m/rad (a torsional spring).
+    pub const TORSIONAL_STIFFNESS: Dim = Dim([2, 1, -2, -1]);
     /// N·s/m
     pub const DAMPING: Dim = Dim([0, 1, -1, 0]);
 

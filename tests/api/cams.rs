@@ -144,8 +144,9 @@ async fn the_smallest_base_meets_its_pressure_angle_and_errors_point_at_fields()
     let mut zero = body.clone();
     zero["program"] = json!([0]);
     assert_eq!(app.pointers("/v1/cams", &zero).await, ["/program/0"]);
+    // An oscillating roller without its radius, pivot and arm; its lift in mm where an angle is due.
     bad["follower"] = json!({"type": "roller", "motion": "oscillating"});
-    assert_eq!(app.pointers("/v1/cams", &bad).await, ["/follower/motion", "/program/3/to"]);
+    assert_eq!(app.pointers("/v1/cams", &bad).await, ["/follower", "/follower", "/follower", "/program/0/lift"]);
 }
 
 /// The Python that has `ezdxf` (a real DXF reader, from PyPI), or None.

@@ -3,6 +3,7 @@
 mod andrews;
 mod browser;
 mod cams;
+mod cams_oscillating;
 mod capacity;
 mod cases;
 mod class;

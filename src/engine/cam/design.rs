@@ -1,27 +1,45 @@
-//! A disk cam designed for a translating follower (flat-faced, roller or
-//! knife-edge, its axis offset from the cam centre): its profile, pitch
-//! curve, pressure angle and radii of curvature at every cam angle, and
-//! with the follower's dynamics the contact force and cam torque.
+//! A disk cam designed for its follower — flat-faced, roller or
+//! knife-edge; translating (its axis offset from the cam centre) or
+//! oscillating about a pivot: its profile, pitch curve, pressure angle and
+//! radii of curvature at every cam angle, and with the follower's dynamics
+//! the contact force and cam torque.
 //!
-//! Frames and symbols (besides those of [`super`]): the ground frame has x
-//! along the follower's motion away from the cam, the axis y = e (e the
-//! offset); the cam turns counter-clockwise by θ (a clockwise cam is the
-//! mirror image). For a roller (radius r_r; r_r = 0 a knife) its centre is
-//! P = (d, e) with d = d₀ + s, d₀ = √(R_p² − e²), R_p = R_b + r_r the
-//! pitch circle. In the cam's frame a ground point P is A(−θ)P, so the
-//! pitch curve's derivatives are A(−θ) applied to t = P′ − J P and
-//! a = P″ − 2J P′ − P (J the quarter turn): the pressure angle φ, between
-//! the normal J⁻¹t and the follower's motion x, has tan φ = (s′ + e)/d,
-//! and the curvature κ = (t × a)/|t|³ (the pitch curve runs clockwise in
-//! the cam: a convex stretch has κ < 0, its radius ρ = −1/κ > 0; the
-//! profile's is ρ − r_r). A flat face x = h, h = R_b + s, touches the
-//! envelope at (h, −s′): the profile there is A(−θ)(h, −s′), its radius of
-//! curvature R_b + s + s″, its pressure angle 0.
-//! Forces (cam at constant ω, the follower of mass m pressed by a spring
-//! F₀ + k s and an external force F(θ) along +x): the follower's axial
-//! force from the cam N_x = m s″ω² + F₀ + k s − F; the contact force N =
-//! N_x / cos φ; the cam torque T = N_x s′ (power), plus μ N h for a
-//! flat face with friction μ (the face slides on the cam).
+//! Frames and symbols (besides those of [`super`]): the ground frame has
+//! its x axis through the follower (along a translating follower's motion
+//! away from the cam; towards an oscillating follower's pivot A = (a, 0),
+//! a the `pivot` distance); the cam turns counter-clockwise by θ (a
+//! clockwise cam is the mirror image: computed with the mirrored follower,
+//! σ = −1, and its y flipped). The follower's lift s moves it: a
+//! translating one along x, an oscillating one turning its arm to
+//! ψ = ψ₀ + s, ψ from the direction A→O, the arm on the side y > 0.
+//! - A roller (radius r_r; 0 a knife): its centre P(s) — translating (d₀ +
+//!   s, e), d₀ = √(R_p² − e²), e the offset; oscillating A + L(−cos ψ,
+//!   σ sin ψ), L the `arm`, cos ψ₀ = (a² + L² − R_p²)/(2aL) — with R_p =
+//!   R_b + r_r the pitch circle. In the cam's frame a ground point P is
+//!   A(−θ)P, so the pitch curve's derivatives are A(−θ) applied to t = P′
+//!   − J P and a = P″ − 2J P′ − P (′ = d/dθ, J the quarter turn): its
+//!   curvature κ = (t × a)/|t|³ (the pitch curve runs clockwise in the
+//!   cam: a convex stretch has κ < 0, ρ = −1/κ > 0; the profile's is ρ −
+//!   r_r); the normal n = perp(t/|t|), out of the cam.
+//! - A flat face: the line x·n̂ = p in the ground, n̂ at angle β —
+//!   translating β = 0, p = R_b + s; oscillating n̂ = (sin ψ, σ cos ψ), p =
+//!   a sin ψ − f, f the `arm` (the pivot's distance from the face's line),
+//!   sin ψ₀ = (R_b + f)/a. In the cam's frame its normal is at α = β − θ,
+//!   and the profile is the envelope of the lines: the contact
+//!   x = p e(α) + p_α e⊥(α), its radius of curvature p + p_αα (p as a
+//!   function of α, the support function).
+//!
+//! The pressure angle φ is the angle between the contact normal and the
+//! velocity of the follower's point of contact (0 for a translating flat
+//! face; tan φ = (s′ + e)/d for a translating roller). Forces (cam at
+//! constant ω): the follower's generalised force from the cam
+//! Q = m s″ω² + F₀ + k s − F (a force along the axis; for an oscillating follower a
+//! moment about the pivot, with m its moment of inertia, k and F₀ its
+//! spring's in N·m/rad and N·m, F the external moment); the contact force
+//! N = Q/λ with λ = ∂x/∂s·n (1 for a translating face, cos φ for a
+//! translating roller: the contact point's motion per unit lift along the
+//! normal); the cam torque T = Q s′ (power), plus μ N v_s for a flat face
+//! with friction μ, v_s the face's sliding speed per unit ω.
 
 use crate::engine::numeric::plane::{cross, perp};
 use std::f64::consts::TAU;
@@ -29,26 +47,36 @@ use std::f64::consts::TAU;
 /// The follower's kind.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Follower {
-    /// A flat face square to the axis.
+    /// A flat face square to the axis (to the arm, oscillating).
     Flat,
     /// A roller of this radius (m; 0 a knife edge).
     Roller(f64),
 }
 
+/// How the follower moves.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Guide {
+    /// Along its axis, offset e (m) from the cam centre.
+    Translating { offset: f64 },
+    /// Turning about a pivot `pivot` (m) from the cam centre; `arm` (m) to
+    /// the roller's centre, or the pivot's distance from the face's line.
+    Oscillating { pivot: f64, arm: f64 },
+}
+
 /// The follower's lift: [s, s′, s″, s‴] at θ (a program's, or a Function's).
 pub type Lift<'a> = &'a dyn Fn(f64) -> [f64; 4];
 
-/// A cam's geometry: follower, offset e, base radius R_b, sense.
+/// A cam's geometry: follower, guide, base radius R_b, sense.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Cam {
     pub follower: Follower,
-    pub offset: f64,
+    pub guide: Guide,
     pub base: f64,
     /// The cam turns clockwise.
     pub clockwise: bool,
 }
 
-/// The follower's dynamics.
+/// The follower's dynamics (oscillating: moment of inertia, N·m/rad, N·m).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Loads {
     pub mass: f64,
@@ -64,9 +92,10 @@ pub struct Sample {
     pub theta: f64,
     /// [s, s′, s″, s‴].
     pub lift: [f64; 4],
-    /// φ (rad), signed as tan φ = (s′ + e)/d (0 for a flat face).
+    /// φ (rad), signed as tan φ = (s′ + e)/d for a translating roller.
     pub pressure_angle: f64,
-    /// The roller's centre (the knife's edge, the face's point on the axis) in the cam's frame.
+    /// The roller's centre (the knife's edge; a face's foot on its axis,
+    /// or from the pivot) in the cam's frame.
     pub pitch_point: [f64; 2],
     /// The contact point in the cam's frame.
     pub profile_point: [f64; 2],
@@ -74,8 +103,12 @@ pub struct Sample {
     pub curvature_radius: f64,
     /// The pitch curve's (a roller's), else the profile's.
     pub pitch_curvature_radius: f64,
-    /// Where the contact lies along a flat face from the axis (m).
+    /// Where the contact lies along a flat face from its foot (m).
     pub face_offset: f64,
+    /// λ = ∂x/∂s·n: N = Q/λ.
+    pub lever: f64,
+    /// A flat face's sliding speed at the contact per unit cam speed (m).
+    pub slip: f64,
 }
 
 /// Why a cam cannot be made.
@@ -85,53 +118,25 @@ pub enum CamError {
         "the offset {offset} m is not inside the pitch circle (radius {pitch} m): the follower's axis misses the cam"
     )]
     Offset { offset: f64, pitch: f64 },
-    #[error("the lift goes below the base circle: s = {lift} m at θ = {theta} rad")]
+    #[error(
+        "an arm of {arm} m pivoted {pivot} m from the cam centre cannot start the follower on the circle of \
+         radius {radius} m (the base circle, plus a roller's radius, or a face's distance from the pivot)"
+    )]
+    Reach { radius: f64, pivot: f64, arm: f64 },
+    #[error("the lift goes below the base circle: s = {lift} at θ = {theta} rad")]
     Negative { lift: f64, theta: f64 },
 }
 
 impl Cam {
     /// The cam at θ for the lift's values there.
     pub fn at(&self, theta: f64, lift: [f64; 4]) -> Result<Sample, CamError> {
-        let [s, s1, s2, _] = lift;
-        let e = if self.clockwise { -self.offset } else { self.offset };
+        let side = if self.clockwise { -1.0 } else { 1.0 };
         let mut out = match self.follower {
-            Follower::Flat => {
-                let h = self.base + s;
-                let rho = h + s2;
-                let point = [h, -s1];
-                Sample {
-                    pitch_point: rotate(-theta, [h, e]),
-                    profile_point: rotate(-theta, point),
-                    curvature_radius: rho,
-                    pitch_curvature_radius: rho,
-                    face_offset: -s1 - e,
-                    ..Sample::default()
-                }
-            }
-            Follower::Roller(r) => {
-                let pitch = self.base + r;
-                if e.abs() >= pitch {
-                    return Err(CamError::Offset { offset: self.offset, pitch });
-                }
-                let d = (pitch * pitch - e * e).sqrt() + s;
-                let p = [d, e];
-                let t = [s1 + e, -d]; // P′ − JP with P′ = (s′, 0)
-                let a = [s2 - d, -2.0 * s1 - e]; // P″ − 2JP′ − P
-                let speed = t[0].hypot(t[1]);
-                let rho = -speed.powi(3) / cross(t, a);
-                let n = perp([t[0] / speed, t[1] / speed]); // outward (the curve runs clockwise)
-                Sample {
-                    pressure_angle: (s1 + e).atan2(d),
-                    pitch_point: rotate(-theta, p),
-                    profile_point: rotate(-theta, [p[0] - r * n[0], p[1] - r * n[1]]),
-                    curvature_radius: rho - r,
-                    pitch_curvature_radius: rho,
-                    ..Sample::default()
-                }
-            }
+            Follower::Flat => self.flat(theta, lift, side)?,
+            Follower::Roller(r) => self.roller(theta, lift, side, r)?,
         };
-        if s < -1e-12 * self.base.max(1e-300) {
-            return Err(CamError::Negative { lift: s, theta });
+        if lift[0] < -1e-12 * self.base.max(1e-300) {
+            return Err(CamError::Negative { lift: lift[0], theta });
         }
         out.theta = theta;
         out.lift = lift;
@@ -144,21 +149,140 @@ impl Cam {
         Ok(out)
     }
 
-    /// The follower's axial force from the cam N_x, the contact force N and
-    /// the cam torque T at a sample, cam speed ω, external force F.
+    /// A roller's (knife's) centre P and its first two derivatives in s.
+    fn pitch(&self, s: f64, side: f64, r: f64) -> Result<[[f64; 2]; 3], CamError> {
+        let radius = self.base + r;
+        match self.guide {
+            Guide::Translating { offset } => {
+                let e = side * offset;
+                if e.abs() >= radius {
+                    return Err(CamError::Offset { offset, pitch: radius });
+                }
+                Ok([[(radius * radius - e * e).sqrt() + s, e], [1.0, 0.0], [0.0, 0.0]])
+            }
+            Guide::Oscillating { pivot: a, arm: l } => {
+                let c0 = (a * a + l * l - radius * radius) / (2.0 * a * l);
+                if c0.is_nan() || c0.abs() >= 1.0 {
+                    return Err(CamError::Reach { radius, pivot: a, arm: l });
+                }
+                let (sn, cs) = (c0.acos() + s).sin_cos();
+                Ok([[a - l * cs, side * l * sn], [l * sn, side * l * cs], [l * cs, -side * l * sn]])
+            }
+        }
+    }
+
+    fn roller(&self, theta: f64, [s, s1, s2, _]: [f64; 4], side: f64, r: f64) -> Result<Sample, CamError> {
+        let [p, ps, pss] = self.pitch(s, side, r)?;
+        let d1 = [ps[0] * s1, ps[1] * s1];
+        let d2 = [pss[0] * s1 * s1 + ps[0] * s2, pss[1] * s1 * s1 + ps[1] * s2];
+        let t = [d1[0] + p[1], d1[1] - p[0]]; // P′ − JP
+        let a = [d2[0] + 2.0 * d1[1] - p[0], d2[1] - 2.0 * d1[0] - p[1]]; // P″ − 2JP′ − P
+        let speed = t[0].hypot(t[1]);
+        let rho = -speed.powi(3) / cross(t, a);
+        let n = perp([t[0] / speed, t[1] / speed]);
+        Ok(Sample {
+            pressure_angle: angle_between(ps, n),
+            pitch_point: rotate(-theta, p),
+            profile_point: rotate(-theta, [p[0] - r * n[0], p[1] - r * n[1]]),
+            curvature_radius: rho - r,
+            pitch_curvature_radius: rho,
+            lever: ps[0] * n[0] + ps[1] * n[1],
+            ..Sample::default()
+        })
+    }
+
+    /// A flat face's line (ground): n̂, β_s, [p, p_s, p_ss], its foot, and
+    /// the motion per unit lift of a face point x.
+    #[allow(clippy::type_complexity)]
+    fn face(
+        &self,
+        s: f64,
+        side: f64,
+    ) -> Result<([f64; 2], f64, [f64; 3], [f64; 2], Box<dyn Fn([f64; 2]) -> [f64; 2]>), CamError> {
+        match self.guide {
+            Guide::Translating { offset } => {
+                let h = self.base + s;
+                Ok(([1.0, 0.0], 0.0, [h, 1.0, 0.0], [h, side * offset], Box::new(|_| [1.0, 0.0])))
+            }
+            Guide::Oscillating { pivot: a, arm: f } => {
+                let s0 = (self.base + f) / a;
+                if !(s0 > 0.0 && s0 < 1.0) {
+                    return Err(CamError::Reach { radius: self.base, pivot: a, arm: f });
+                }
+                let (sn, cs) = (s0.asin() + s).sin_cos();
+                let n = [sn, side * cs];
+                let foot = [a - f * n[0], -f * n[1]];
+                // ∂x/∂ψ = −σ J(x − A).
+                let motion = move |x: [f64; 2]| [side * x[1], -side * (x[0] - a)];
+                Ok((n, -side, [a * sn - f, a * cs, -a * sn], foot, Box::new(motion)))
+            }
+        }
+    }
+
+    fn flat(&self, theta: f64, [s, s1, s2, _]: [f64; 4], side: f64) -> Result<Sample, CamError> {
+        let (n, beta_s, [p, p_s, p_ss], foot, motion) = self.face(s, side)?;
+        let alpha = n[1].atan2(n[0]) - theta;
+        let (alpha_t, alpha_tt) = (beta_s * s1 - 1.0, beta_s * s2);
+        let (p_t, p_tt) = (p_s * s1, p_ss * s1 * s1 + p_s * s2);
+        let p_a = p_t / alpha_t;
+        let p_aa = (p_tt * alpha_t - p_t * alpha_tt) / alpha_t.powi(3);
+        let (sa, ca) = alpha.sin_cos();
+        let x = [p * ca - p_a * sa, p * sa + p_a * ca];
+        let ground = rotate(theta, x);
+        let along = perp(n);
+        let mv = motion(ground);
+        let cam = [-ground[1], ground[0]]; // J x: the cam's point moving at unit ω
+        let slip = (cam[0] - s1 * mv[0]) * along[0] + (cam[1] - s1 * mv[1]) * along[1];
+        Ok(Sample {
+            pressure_angle: angle_between(mv, n),
+            pitch_point: rotate(-theta, foot),
+            profile_point: x,
+            curvature_radius: p + p_aa,
+            pitch_curvature_radius: p + p_aa,
+            face_offset: (ground[0] - foot[0]) * along[0] + (ground[1] - foot[1]) * along[1],
+            lever: mv[0] * n[0] + mv[1] * n[1],
+            slip,
+            ..Sample::default()
+        })
+    }
+
+    /// The follower's generalised force from the cam Q, the contact force N
+    /// and the cam torque T at a sample, cam speed ω, external force F.
     pub fn forces(&self, x: &Sample, loads: &Loads, omega: f64, external: f64) -> [f64; 3] {
         let [s, s1, s2, _] = x.lift;
         let axial = loads.mass * s2 * omega * omega + loads.preload + loads.stiffness * s - external;
-        let contact = axial / x.pressure_angle.cos();
+        let contact = axial / x.lever;
         let friction = match self.follower {
-            Follower::Flat => loads.mu * contact.abs() * (self.base + s) * omega.signum(),
+            Follower::Flat => loads.mu * contact.abs() * x.slip.abs() * omega.signum(),
             Follower::Roller(_) => 0.0,
         };
         [axial, contact, axial * s1 + friction]
     }
+
+    /// The base radii the follower can start from, as (lo, hi): any up to
+    /// 100 times the largest lift `scale` (m) for a translating follower;
+    /// where the arm reaches for an oscillating one.
+    fn base_range(&self, scale: f64) -> (f64, f64) {
+        let r = match self.follower {
+            Follower::Flat => 0.0,
+            Follower::Roller(r) => r,
+        };
+        match (self.guide, self.follower) {
+            (Guide::Translating { offset }, _) => (0.0, 100.0 * scale + offset.abs()),
+            (Guide::Oscillating { pivot, arm }, Follower::Flat) => ((-arm).max(0.0), pivot - arm),
+            (Guide::Oscillating { pivot, arm }, Follower::Roller(_)) => {
+                (((pivot - arm).abs() - r).max(0.0), pivot + arm - r)
+            }
+        }
+    }
 }
 
-/// A ground vector in the cam's frame at angle φ: A(φ)v.
+/// The signed angle from the direction of u to n (rad).
+fn angle_between(u: [f64; 2], n: [f64; 2]) -> f64 {
+    cross(u, n).atan2(u[0] * n[0] + u[1] * n[1])
+}
+
+/// A vector turned by φ: A(φ)v.
 fn rotate(phi: f64, v: [f64; 2]) -> [f64; 2] {
     let (s, c) = phi.sin_cos();
     [c * v[0] - s * v[1], s * v[0] + c * v[1]]
@@ -169,18 +293,20 @@ pub fn turn(cam: &Cam, lift: Lift, n: usize) -> Result<Vec<Sample>, CamError> {
     (0..n).map(|k| TAU * k as f64 / n as f64).map(|t| cam.at(t, lift(t))).collect()
 }
 
-/// The smallest base radius (to 1e-9 of the lift's scale) in (0, 100·scale]
-/// whose turn meets `ok` (a test that holds for every base radius above
-/// the smallest that meets it, such as a largest pressure angle or a
-/// smallest radius of curvature), or None where even 100·scale does not.
+/// The smallest base radius the follower can start from that meets `ok`
+/// (a test that holds for every base radius above the smallest that meets
+/// it, such as a largest pressure angle or a smallest radius of
+/// curvature): the first of 64 radii over the range [`Cam::base_range`]
+/// that meets it, then bisected to 1e-9 of the range; None where none does.
 pub fn smallest_base(cam: Cam, lift: Lift, n: usize, ok: impl Fn(&[Sample]) -> bool) -> Option<f64> {
     let scale = (0..n).map(|k| lift(TAU * k as f64 / n as f64)[0].abs()).fold(1e-6, f64::max);
     let meets = |base: f64| turn(&Cam { base, ..cam }, lift, n).is_ok_and(|s| ok(&s));
-    let (mut lo, mut hi) = (0.0, 100.0 * scale + cam.offset.abs());
-    if !meets(hi) {
-        return None;
-    }
-    while hi - lo > 1e-9 * scale {
+    let (lo, hi) = cam.base_range(scale);
+    let grid = |k: usize| lo + (hi - lo) * k as f64 / 64.0;
+    let first = (1..64).find(|&k| meets(grid(k)))?;
+    let (mut lo, mut hi) = (grid(first - 1), grid(first));
+    let tolerance = 1e-9 * (hi - lo) * 64.0;
+    while hi - lo > tolerance {
         let mid = 0.5 * (lo + hi);
         if meets(mid) { hi = mid } else { lo = mid }
     }
@@ -208,7 +334,7 @@ mod tests {
     /// The profile's point and its radius of curvature against the
     /// profile drawn by differences: the curvature of three neighbouring
     /// profile points (the circle through them) within 1e-5, for every
-    /// follower; the pitch point lies r_r from the profile point.
+    /// follower, translating or oscillating, in either sense; the pitch point lies r_r from the profile point.
     #[test]
     fn the_radius_of_curvature_is_that_of_the_profile_drawn() {
         let p = program(0.02);
@@ -216,10 +342,17 @@ mod tests {
             let s = p.eval(t);
             [s[0], s[1], s[2], s[3]]
         };
-        for (follower, offset, clockwise) in
-            [(Follower::Flat, 0.0, false), (Follower::Roller(0.01), 0.005, false), (Follower::Roller(0.0), -0.01, true)]
-        {
-            let cam = Cam { follower, offset, base: 0.04, clockwise };
+        let translating = |offset| Guide::Translating { offset };
+        let oscillating = |arm| Guide::Oscillating { pivot: 0.12, arm };
+        for (follower, guide, clockwise) in [
+            (Follower::Flat, translating(0.0), false),
+            (Follower::Roller(0.01), translating(0.005), false),
+            (Follower::Roller(0.0), translating(-0.01), true),
+            (Follower::Roller(0.012), oscillating(0.09), false),
+            (Follower::Roller(0.012), oscillating(0.09), true),
+            (Follower::Flat, oscillating(0.01), true),
+        ] {
+            let cam = Cam { follower, guide, base: 0.04, clockwise };
             for theta in [0.3, 0.9, 2.0, 3.5, 4.0] {
                 let h = 1e-4;
                 let [a, b, c] = [theta - h, theta, theta + h].map(|t| cam.at(t, lift(t)).unwrap().profile_point);

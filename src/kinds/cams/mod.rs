@@ -18,7 +18,7 @@ use crate::engine::cam::design::{Cam, CamError, Lift, Sample, smallest_base, tur
 use crate::kind::limits::Limits;
 use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
-use crate::kind::{Kind, Table, cell, validated};
+use crate::kind::{Kind, Table, cell, unit_in, validated};
 use request::Problem;
 use serde_json::Value;
 
@@ -65,6 +65,25 @@ impl Kind for Cams {
     type Result = CamResult;
     const PLOTS: Plots = Plots { list: plots::list, draw: plots::draw };
     const FILES: &'static [(&'static str, &'static str)] = &[("profile.dxf", "application/dxf")];
+
+    /// An oscillating follower's lift is an angle: its lift, velocity,
+    /// acceleration and jerk are in rad, rad/s, rad/s², rad/s³, its preload N·m.
+    fn unit(result: &Value, pointer: &[&str]) -> Option<String> {
+        let unit = unit_in(Self::UNITS, pointer)?;
+        if result["summary"]["lift_unit"] != "rad" {
+            return Some(unit.into());
+        }
+        let field = pointer.last().copied().unwrap_or_default();
+        let angular = ["lift", "velocity", "acceleration", "jerk", "dlift", "d2lift", "d3lift"];
+        let peaks = ["peak_velocity", "peak_acceleration", "peak_jerk"];
+        Some(match field {
+            "min_preload" => "N*m".into(),
+            f if (angular.contains(&f) && pointer[0] == "samples") || peaks.contains(&f) => {
+                unit.replacen('m', "rad", 1)
+            }
+            _ => unit.into(),
+        })
+    }
 
     fn file(result: &Value, name: &str) -> Option<Vec<u8>> {
         (name == "profile.dxf").then(|| dxf::profile(result)).flatten()
@@ -139,6 +158,7 @@ fn sized(p: &Problem, lift: Lift, [angle, rho]: [Option<f64>; 2]) -> Result<f64,
 fn refused(e: &CamError) -> ApiError {
     let at = match e {
         CamError::Offset { .. } => "/follower/offset",
+        CamError::Reach { .. } => "/follower/arm",
         CamError::Negative { .. } => "/program",
     };
     ApiError::Invalid(vec![FieldError::at(at, e.to_string())])

@@ -1,6 +1,6 @@
 //! The cam design request and its conversion, every error at its pointer.
 
-use crate::engine::cam::design::{Cam, Follower, Loads};
+use crate::engine::cam::design::{Cam, Follower, Guide, Loads};
 use crate::engine::cam::{Law, Program, ProgramError, Segment};
 use crate::engine::function::{Function, Side};
 use crate::kind::limits::Limits;
@@ -88,7 +88,9 @@ pub struct CamFollowerDto {
     /// A roller's radius, m.
     #[schema(value_type = Option<Quantity>)]
     pub roller_radius: Option<Quantity>,
-    /// Oscillating: distance from the cam centre to the follower's pivot, m.
+    /// Oscillating: distance from the cam centre to the follower's pivot, m
+    /// (the pivot on the cam frame's x axis, the arm reaching back towards
+    /// the cam on its +y side; the lift turns the arm away from the cam).
     #[schema(value_type = Option<Quantity>)]
     pub pivot: Option<Quantity>,
     /// Oscillating: pivot to the roller's centre or to the face's line, m.
@@ -133,14 +135,14 @@ pub struct CamSegmentDto {
     pub to: Quantity,
     /// dwell, harmonic, cycloidal, polynomial-345, polynomial-4567, modified-sine or modified-trapezoid.
     pub law: String,
-    /// m (a dwell's may be left out: it holds).
+    /// m, or an angle for an oscillating follower (a dwell's may be left out: it holds).
     #[schema(value_type = Option<Quantity>)]
     pub lift: Option<Quantity>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct CamLiftDto {
-    /// s(θ) in m, a Function of `theta`, periodic over a turn, ≥ 0.
+    /// s(θ) in m (rad for an oscillating follower), a Function of `theta`, periodic over a turn, ≥ 0.
     #[schema(value_type = FunctionDto)]
     pub lift: FunctionDto,
 }
@@ -155,10 +157,12 @@ pub struct CamSizeDto {
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct CamDynamicsDto {
+    /// kg; an oscillating follower's moment of inertia about its pivot, kg·m².
     #[schema(value_type = Quantity)]
     pub follower_mass: Quantity,
     pub spring: Option<CamSpringDto>,
-    /// An external force on the follower along its motion away from the cam (N), a Function of `theta`.
+    /// An external force on the follower along its motion away from the cam
+    /// (N; an oscillating follower's moment about its pivot, N·m), a Function of `theta`.
     #[schema(value_type = Option<FunctionDto>)]
     pub force: Option<FunctionDto>,
     /// Friction at a flat face.
@@ -175,10 +179,10 @@ pub struct CamFrictionDto {
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct CamSpringDto {
-    /// N/m.
+    /// N/m (an oscillating follower's: N·m/rad).
     #[schema(value_type = Quantity)]
     pub stiffness: Quantity,
-    /// The spring's force at lift 0, N.
+    /// The spring's force at lift 0, N (its moment, N·m).
     #[schema(value_type = Option<Quantity>)]
     pub preload: Option<Quantity>,
 }
@@ -236,7 +240,7 @@ impl CamRequest {
         };
         let speed = e.quantity(&self.speed, Dim::ANGULAR_SPEED, "/speed");
         let speed = e.require(speed, |w| w > 0.0, "/speed", "must be greater than 0 (the sense is \"direction\")");
-        let loads = self.dynamics.as_ref().map(|d| loads(&mut e, d, cam.map(|c| c.follower)));
+        let loads = self.dynamics.as_ref().map(|d| loads(&mut e, d, cam.map(|c| c.follower), self.oscillating()));
         let samples = self.samples.unwrap_or(360);
         if !(4..=MAX_SAMPLES).contains(&samples) {
             e.push("/samples", format!("must be between 4 and {MAX_SAMPLES}"));
@@ -254,18 +258,7 @@ impl CamRequest {
 
     fn cam(&self, e: &mut Errors) -> Option<Cam> {
         let f = &self.follower;
-        if f.motion == Some(CamFollowerMotion::Oscillating) {
-            return e.fail(
-                "/follower/motion",
-                "oscillating followers are not designed by this service yet: a translating one (with \"offset\") is",
-            );
-        }
-        for (field, given) in [("pivot", f.pivot.is_some()), ("arm", f.arm.is_some())] {
-            if given {
-                e.push(&format!("/follower/{field}"), "applies to an oscillating follower only");
-            }
-        }
-        let offset = f.offset.as_ref().map_or(Some(0.0), |q| e.quantity(q, Dim::LENGTH, "/follower/offset"));
+        let guide = self.guide(e);
         let follower = match (f.kind, &f.roller_radius) {
             (CamFollowerType::Roller, Some(r)) => {
                 e.positive(r, Dim::LENGTH, "/follower/roller_radius").map(Follower::Roller)
@@ -280,13 +273,65 @@ impl CamRequest {
             None => Some(0.0),
         };
         let clockwise = self.direction == Some(CamSense::Cw);
-        Some(Cam { follower: follower?, offset: offset?, base: base?, clockwise })
+        Some(Cam { follower: follower?, guide: guide?, base: base?, clockwise })
+    }
+
+    /// Translating (offset) or oscillating (pivot, arm), each field for its motion only.
+    fn guide(&self, e: &mut Errors) -> Option<Guide> {
+        let f = &self.follower;
+        let oscillating = self.oscillating();
+        let (mine, others) = if oscillating {
+            ([("pivot", &f.pivot), ("arm", &f.arm)].to_vec(), [("offset", &f.offset)].to_vec())
+        } else {
+            ([("offset", &f.offset)].to_vec(), [("pivot", &f.pivot), ("arm", &f.arm)].to_vec())
+        };
+        let motion = if oscillating { "an oscillating" } else { "a translating" };
+        for (field, given) in others {
+            if given.is_some() {
+                e.push(&format!("/follower/{field}"), format!("does not apply to {motion} follower"));
+            }
+        }
+        if !oscillating {
+            let offset = mine[0].1.as_ref().map_or(Some(0.0), |q| e.quantity(q, Dim::LENGTH, "/follower/offset"));
+            return Some(Guide::Translating { offset: offset? });
+        }
+        let [pivot, arm] = [0, 1].map(|k| {
+            let (field, q) = mine[k];
+            let at = format!("/follower/{field}");
+            match q {
+                None => e.fail(
+                    "/follower",
+                    format!(
+                        "an oscillating follower needs its \"{field}\" ({})",
+                        [
+                            "the distance from the cam centre to its pivot",
+                            "from its pivot to the roller's centre, or to the face's line"
+                        ][k]
+                    ),
+                ),
+                Some(q) if k == 1 && f.kind == CamFollowerType::Flat => {
+                    let v = e.quantity(q, Dim::LENGTH, &at);
+                    e.require(v, |v| v >= 0.0, &at, "must not be negative")
+                }
+                Some(q) => e.positive(q, Dim::LENGTH, &at),
+            }
+        });
+        Some(Guide::Oscillating { pivot: pivot?, arm: arm? })
+    }
+
+    fn oscillating(&self) -> bool {
+        self.follower.motion == Some(CamFollowerMotion::Oscillating)
+    }
+
+    /// The lift's dimension: a length, or an angle for an oscillating follower.
+    pub fn lift_dim(&self) -> Dim {
+        if self.oscillating() { Dim::ANGLE } else { Dim::LENGTH }
     }
 
     fn motion(&self, e: &mut Errors) -> Option<Motion> {
         match &self.program {
             CamProgramDto::Lift(l) => {
-                let s = e.function_of(&l.lift, Dim::LENGTH, TAU, "/program/lift", &["theta"])?;
+                let s = e.function_of(&l.lift, self.lift_dim(), TAU, "/program/lift", &["theta"])?;
                 let (a, b) = (s.eval(0.0, Side::Right), s.eval(TAU, Side::Left));
                 if (a - b).abs() > 1e-9 * a.abs().max(b.abs()).max(1e-3) {
                     return e.fail(
@@ -299,13 +344,15 @@ impl CamRequest {
                 let d3 = d2.derivative();
                 Some(Motion::Function(Box::new([s, d1, d2, d3])))
             }
-            CamProgramDto::Segments(list) => program(e, list, "/program").map(|(p, names)| Motion::Program(p, names)),
+            CamProgramDto::Segments(list) => {
+                program(e, list, "/program", self.lift_dim()).map(|(p, names)| Motion::Program(p, names))
+            }
         }
     }
 }
 
 /// A program of segments at pointer `at` (`/program`), with each segment's law's name.
-pub fn program(e: &mut Errors, list: &[CamSegmentDto], at: &str) -> Option<(Program, Vec<&'static str>)> {
+pub fn program(e: &mut Errors, list: &[CamSegmentDto], at: &str, lift: Dim) -> Option<(Program, Vec<&'static str>)> {
     let root = at;
     if list.is_empty() || list.len() > MAX_SEGMENTS {
         return e.fail(root, format!("must hold 1 to {MAX_SEGMENTS} segments"));
@@ -322,7 +369,8 @@ pub fn program(e: &mut Errors, list: &[CamSegmentDto], at: &str) -> Option<(Prog
             ),
         };
         let lift = match (&s.lift, law) {
-            (Some(q), _) => e.quantity(q, Dim::LENGTH, &format!("{at}/lift")),
+            (Some(q), _) if lift == Dim::ANGLE => e.angle(q, &format!("{at}/lift")),
+            (Some(q), _) => e.quantity(q, lift, &format!("{at}/lift")),
             (None, Some((_, Law::Dwell))) => Some(from),
             (None, Some(_)) => e.fail(&at, "a segment that moves needs its \"lift\" at its end"),
             (None, None) => None,
@@ -356,22 +404,33 @@ pub fn program(e: &mut Errors, list: &[CamSegmentDto], at: &str) -> Option<(Prog
     }
 }
 
-/// The follower's dynamics (None inside: in error).
-fn loads(e: &mut Errors, d: &CamDynamicsDto, follower: Option<Follower>) -> Option<(Loads, Option<Function>)> {
-    let mass = e.quantity(&d.follower_mass, Dim::MASS, "/dynamics/follower_mass");
+/// The follower's dynamics (None inside: in error); an oscillating
+/// follower's are about its pivot: moment of inertia, N·m/rad, N·m.
+fn loads(
+    e: &mut Errors,
+    d: &CamDynamicsDto,
+    follower: Option<Follower>,
+    oscillating: bool,
+) -> Option<(Loads, Option<Function>)> {
+    let [inertia, stiffness, force] = if oscillating {
+        [Dim::INERTIA, Dim::TORSIONAL_STIFFNESS, Dim::TORQUE]
+    } else {
+        [Dim::MASS, Dim::STIFFNESS, Dim::FORCE]
+    };
+    let mass = e.quantity(&d.follower_mass, inertia, "/dynamics/follower_mass");
     let mass = e.require(mass, |m| m >= 0.0, "/dynamics/follower_mass", "must not be negative");
     let (stiffness, preload) = match &d.spring {
         None => (Some(0.0), Some(0.0)),
         Some(s) => {
-            let k = e.quantity(&s.stiffness, Dim::STIFFNESS, "/dynamics/spring/stiffness");
+            let k = e.quantity(&s.stiffness, stiffness, "/dynamics/spring/stiffness");
             let k = e.require(k, |k| k >= 0.0, "/dynamics/spring/stiffness", "must not be negative");
-            let f0 = s.preload.as_ref().map_or(Some(0.0), |q| e.quantity(q, Dim::FORCE, "/dynamics/spring/preload"));
+            let f0 = s.preload.as_ref().map_or(Some(0.0), |q| e.quantity(q, force, "/dynamics/spring/preload"));
             (k, f0)
         }
     };
     let force = match &d.force {
         None => Some(None),
-        Some(f) => e.function_of(f, Dim::FORCE, TAU, "/dynamics/force", &["theta"]).map(Some),
+        Some(f) => e.function_of(f, force, TAU, "/dynamics/force", &["theta"]).map(Some),
     };
     let mu = match (&d.friction, follower) {
         (None, _) => Some(0.0),

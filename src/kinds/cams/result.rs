@@ -1,14 +1,15 @@
 //! The `result` of a cam design job and how it is made from the engine's samples.
 
 use super::request::{Motion, Problem};
-use crate::engine::cam::design::{Cam, Follower, Sample};
+use crate::engine::cam::design::{Cam, Follower, Guide, Sample};
 use crate::engine::function::Side;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::TAU;
 use utoipa::ToSchema;
 
-/// Pressure angles beyond which a translating follower is warned of (rad).
-const PRESSURE_LIMIT: f64 = 30.0 * std::f64::consts::PI / 180.0;
+/// Pressure angles beyond which a follower is warned of (translating,
+/// oscillating; deg).
+const PRESSURE_LIMIT: [f64; 2] = [30.0, 35.0];
 /// Samples per segment for its peaks.
 const PEAK_SAMPLES: usize = 2000;
 
@@ -59,6 +60,9 @@ pub struct AtAngle {
 pub struct CamSummary {
     /// m (given, or the smallest meeting `size`).
     pub base_radius: f64,
+    /// The lift's unit: "m" (translating), or "rad" (oscillating: then
+    /// its velocity is rad/s, its acceleration rad/s², the preload N·m).
+    pub lift_unit: String,
     /// The largest |pressure angle|, rad.
     pub max_pressure_angle: AtAngle,
     /// The profile's smallest radius of curvature where it is convex (m).
@@ -223,11 +227,16 @@ fn summary(
             if cam.follower == Follower::Flat { "" } else { " or a smaller roller" }
         ));
     }
-    if cam.follower != Follower::Flat && max_angle.value > PRESSURE_LIMIT {
+    let oscillating = matches!(cam.guide, Guide::Oscillating { .. });
+    let (limit, motion) =
+        if oscillating { (PRESSURE_LIMIT[1], "oscillating") } else { (PRESSURE_LIMIT[0], "translating") };
+    if max_angle.value > limit.to_radians() {
         warnings.push(format!(
-            "the pressure angle reaches {:.2}° at {:.2}° (over 30° for a translating follower): a larger base circle, or an offset",
+            "the pressure angle reaches {:.2}° at {:.2}° (over {limit}° for {} {motion} follower): a larger base circle{}",
             max_angle.value.to_degrees(),
-            max_angle.theta.to_degrees()
+            max_angle.theta.to_degrees(),
+            if oscillating { "an" } else { "a" },
+            if oscillating { ", or another pivot" } else { ", or an offset" }
         ));
     }
     let face = turn.iter().map(|x| x.face_offset);
@@ -244,6 +253,7 @@ fn summary(
     }
     CamSummary {
         base_radius: cam.base,
+        lift_unit: if oscillating { "rad" } else { "m" }.into(),
         max_pressure_angle: max_angle,
         min_curvature_radius: min_rho,
         undercut,

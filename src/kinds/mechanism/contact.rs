@@ -242,7 +242,7 @@ fn cam(e: &mut Errors, c: &CamCurveDto, point: &PointReader, at: &str) -> Option
     }
     let base = e.positive(&c.base_radius, Dim::LENGTH, &format!("{at}/base_radius"));
     let program = match &c.program {
-        CamProgramDto::Segments(list) => program(e, list, &format!("{at}/program")).map(|(p, _)| p),
+        CamProgramDto::Segments(list) => program(e, list, &format!("{at}/program"), Dim::LENGTH).map(|(p, _)| p),
         CamProgramDto::Lift(_) => e.fail(&format!("{at}/program"), "a cam curve takes a program of segments"),
     };
     let (centre, zero, base, program) = (centre?, zero?, base?, program?);
