@@ -15,6 +15,7 @@
 //! service's own tightest run to 2e-14); IFToMM A01 in `pendulum.rs`, the
 //! Exudyn slider-crank in `slider_crank.rs`.
 
+mod contacts;
 mod flywheel;
 mod grading;
 mod http;
@@ -219,10 +220,11 @@ fn plot(points: &[Point], title: &str, path: &str) -> Result<(), Box<dyn std::er
 type Section = fn() -> String;
 
 fn main() {
-    // `cargo bench --bench work_precision -- grading` (or large, flywheel, http, kinetostatics,
+    // `cargo bench --bench work_precision -- grading` (or contacts, large, flywheel, http, kinetostatics,
     // kinematics, stiff, statements): that section alone, printed, docs/ left as they are (the flywheel's plot in the
     // temporary folder).
-    let alone: [(&str, Section); 8] = [
+    let alone: [(&str, Section); 9] = [
+        ("contacts", contacts::section),
         ("kinematics", kinematics::section),
         ("stiff", stiff::section),
         ("grading", grading::section),
@@ -335,7 +337,9 @@ fn write_docs() {
     doc.push_str(&text);
     points.extend(slider_crank);
     let statements = statements::section();
-    for section in [large::section(), stiff::section(), kinetostatics, kinematics, statements, flywheel, http, grading]
+    let contacts = contacts::section();
+    for section in
+        [large::section(), stiff::section(), kinetostatics, kinematics, statements, contacts, flywheel, http, grading]
     {
         doc.push('\n');
         doc.push_str(&section);

@@ -299,8 +299,13 @@ pub fn turn(cam: &Cam, lift: Lift, n: usize) -> Result<Vec<Sample>, CamError> {
 /// curvature): the first of 64 radii over the range [`Cam::base_range`]
 /// that meets it, then bisected to 1e-9 of the range; None where none does.
 pub fn smallest_base(cam: Cam, lift: Lift, n: usize, ok: impl Fn(&[Sample]) -> bool) -> Option<f64> {
-    let scale = (0..n).map(|k| lift(TAU * k as f64 / n as f64)[0].abs()).fold(1e-6, f64::max);
-    let meets = |base: f64| turn(&Cam { base, ..cam }, lift, n).is_ok_and(|s| ok(&s));
+    // The lift does not depend on the base radius: evaluated once.
+    let lifts: Vec<(f64, [f64; 4])> = (0..n).map(|k| TAU * k as f64 / n as f64).map(|t| (t, lift(t))).collect();
+    let scale = lifts.iter().map(|(_, l)| l[0].abs()).fold(1e-6, f64::max);
+    let meets = |base: f64| {
+        let cam = Cam { base, ..cam };
+        lifts.iter().map(|&(t, l)| cam.at(t, l)).collect::<Result<Vec<_>, _>>().is_ok_and(|s| ok(&s))
+    };
     let (lo, hi) = cam.base_range(scale);
     let grid = |k: usize| lo + (hi - lo) * k as f64 / 64.0;
     let first = (1..64).find(|&k| meets(grid(k)))?;

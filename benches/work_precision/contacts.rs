@@ -1,0 +1,143 @@
+//! Higher pairs: kinetostatics of the eccentric cam under a flat follower
+//! with friction against a four-bar (3600 steps each, every output), cam
+//! design over 3600 samples, the smallest base circle against the peer
+//! `mechanism` (PyPI), and a disk rolling in a circular track for 10 s at
+//! a tolerance of 1e-9.
+
+use crate::http::library;
+use crate::{run_peer, timed};
+use mechdyn::kind::{Kind, Limits};
+use mechdyn::kinds::cams::{CamRequest, Cams};
+use mechdyn::kinds::kinetostatics::{Kinetostatics, KinetostaticsRequest};
+use serde_json::{Value, json};
+use std::fmt::Write as _;
+use std::hint::black_box;
+use std::time::Instant;
+
+/// The best of `runs` wall times of `f`, seconds.
+fn best(runs: usize, mut f: impl FnMut()) -> f64 {
+    (0..runs)
+        .map(|_| {
+            let start = Instant::now();
+            f();
+            start.elapsed().as_secs_f64()
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// A library request swept over a turn in `steps` positions, every output.
+fn swept(id: &str, steps: usize) -> KinetostaticsRequest {
+    let mut body = library(id);
+    body["input"]["start"] = json!("0 deg");
+    body["input"]["end"] = json!("360 deg");
+    body["input"]["steps"] = json!(steps);
+    body["outputs"] = json!(["driving", "reactions", "kinematics", "reduced"]);
+    serde_json::from_value(body).expect("request")
+}
+
+fn cam_request(body: Value) -> CamRequest {
+    serde_json::from_value(body).expect("request")
+}
+
+/// The peer's program and roller (bench/peers/cam_mechanism.py), sized for 30°.
+fn sized_roller(samples: usize) -> CamRequest {
+    cam_request(json!({
+        "follower": {"type": "roller", "roller_radius": 0.01},
+        "program": [{"to": "60 deg", "law": "dwell"}, {"to": "150 deg", "law": "cycloidal", "lift": 0.02},
+            {"to": "210 deg", "law": "dwell"}, {"to": "300 deg", "law": "cycloidal", "lift": 0}, {"to": "360 deg", "law": "dwell"}],
+        "size": {"max_pressure_angle": "30 deg"}, "speed": 10, "samples": samples
+    }))
+}
+
+pub fn section() -> String {
+    let mut text = String::from("## Higher pairs: cams and rolling\n\n");
+    let limits = Limits::default();
+    let steps = 3600;
+    let kinetostatics = |r: &KinetostaticsRequest| {
+        black_box(Kinetostatics::compute(r, Vec::new(), &limits).expect("solved"));
+    };
+    let (cam, four_bar) = (swept("cam-flat-follower", steps), swept("four-bar", steps));
+    let t_cam = best(15, || kinetostatics(&cam));
+    let t_bar = best(15, || kinetostatics(&four_bar));
+    let per = |t: f64| t / steps as f64 * 1e6;
+    let _ = writeln!(
+        text,
+        "Kinetostatics through the API's compute, {steps} positions, every output (driving torque, reactions with the contact's normal and tangential parts, every body's motion, I*, M*, the contacts' states): the eccentric cam under a flat-faced follower with friction (`cam-flat-follower`: 2 moving bodies, a contact with its 2 curve parameters) {:.2} µs per position; the library's four-bar (3 moving bodies) {:.2} µs per position; the cam costs {:.2}× the four-bar.",
+        per(t_cam),
+        per(t_bar),
+        t_cam / t_bar
+    );
+    let mut design = library("cam-design");
+    design["samples"] = json!(3600);
+    let design = cam_request(design);
+    let t_design = best(31, || {
+        black_box(Cams::compute(&design, Vec::new(), &limits).expect("designed"));
+    });
+    let mut given = library("cam-design");
+    given["samples"] = json!(3600);
+    given.as_object_mut().expect("object").remove("size");
+    given["base_radius"] = json!("40 mm");
+    let given = cam_request(given);
+    let t_given = best(31, || {
+        black_box(Cams::compute(&given, Vec::new(), &limits).expect("designed"));
+    });
+    let _ = writeln!(
+        text,
+        "\nCam design (`cam-design`: its program, follower and dynamics) over 3600 samples, through the API's compute: with its base radius given (40 mm) {:.3} ms; its smallest base radius for 30° found first (64 radii, then bisection) {:.3} ms.",
+        t_given * 1e3,
+        t_design * 1e3
+    );
+    let ours = sized_roller(1014);
+    let t_sized = best(11, || {
+        black_box(Cams::compute(&ours, Vec::new(), &limits).expect("sized"));
+    });
+    let base = Cams::compute(&ours, Vec::new(), &limits).expect("sized").summary.base_radius;
+    let peer = match run_peer("cam_mechanism.py", &[]) {
+        Ok(out) => match serde_json::from_str::<Value>(out.trim()) {
+            Ok(v) => format!(
+                "the peer `mechanism` (PyPI, `Cam.get_base_circle`, its own grid) {:.3} ms, base radius {:.6} mm; ours is {:.2}× its time",
+                v["seconds"].as_f64().unwrap_or(f64::NAN) * 1e3,
+                v["base_radius"].as_f64().unwrap_or(f64::NAN) * 1e3,
+                t_sized / v["seconds"].as_f64().unwrap_or(f64::NAN)
+            ),
+            Err(e) => format!("the peer's output was not read: {e}"),
+        },
+        Err(why) => format!("the peer was not run: {why}"),
+    };
+    let _ = writeln!(
+        text,
+        "\nThe smallest base circle of a 10 mm roller for a largest pressure angle of 30° (dwell, cycloidal rise of 20 mm over 90°, dwell, fall, dwell; 1014 samples, with the whole result): ours {:.3} ms, base radius {:.6} mm; {peer}.",
+        t_sized * 1e3,
+        base * 1e3
+    );
+    let (t_track, result) = timed(&track(), 3);
+    let _ = writeln!(
+        text,
+        "\nA disk (r = 0.1 m) rolling in a circular track (R = 0.5 m) from 0.01 rad, 10 s at tolerance 1e-9: {:.3} s, {} steps, {} evaluations, energy residual {:.1e}.",
+        t_track, result.accuracy.steps, result.accuracy.function_evaluations, result.energy_residual
+    );
+    text
+}
+
+/// The rolling pendulum of tests/api/contact.rs over 10 s.
+fn track() -> Value {
+    let (big, small, theta) = (0.5, 0.1, 0.01f64);
+    let centre = [(big - small) * theta.sin(), big - (big - small) * theta.cos()];
+    json!({
+        "machine": {
+            "mechanism": {
+                "points": {"O": [0, big], "C": centre},
+                "bodies": [{"name": "disk", "mass": 1, "inertia": 0.5 * small * small, "cg": "C"}],
+                "joints": [{"name": "K", "type": "contact", "bodies": ["ground", "disk"], "rolling": true,
+                    "curves": [{"circle": {"center": "O", "radius": big, "inside": true}},
+                               {"circle": {"center": "C", "radius": small}}]}],
+                "gravity": [0, -9.81]
+            },
+            "input": {"joint": "K"}
+        },
+        "initial": {"angle": 0, "speed": 0},
+        "duration": 10,
+        "tolerance": 1e-9,
+        "samples": 11
+    })
+}
