@@ -9,10 +9,13 @@
 //! signed curvature κ = (r′ × r″)/|r′|³, positive where the curve turns
 //! to the left of its tangent (a circle run counter-clockwise: 1/R).
 
+mod cam;
+
 use super::cam::Program;
 use super::function::{Function, Side};
 use super::numeric::plane::{cross, perp};
 use super::numeric::quadrature::integrate;
+pub use cam::Face;
 use nalgebra::DMatrix;
 use std::f64::consts::TAU;
 
@@ -142,17 +145,14 @@ pub enum Curve {
         radius: Box<[Function; 4]>,
     },
     Spline(Spline),
-    /// A disk cam's profile for a flat-faced translating follower whose axis
-    /// runs through `centre` at angle `zero` (as drawn), its face square to
-    /// it at distance `base` + s: the envelope of the faces. At the cam's
-    /// angle u (from +x, counter-clockwise, in the cam), the follower's axis
-    /// lies at u when the cam has turned by `zero` − u, so the face's
-    /// distance is P(u) = base + s(zero − u) and the profile is
-    /// r = c + P e + P′ e⊥ (e = (cos u, sin u), e⊥ = perp(e)).
+    /// A disk cam's profile from its follower's motion program ([`cam`]):
+    /// the follower's axis runs through `centre` at angle `zero` (as drawn),
+    /// its face square to it at distance `base` + s, or its roller on it.
     Cam {
         centre: [f64; 2],
         zero: f64,
         base: f64,
+        face: Face,
         program: Box<Program>,
     },
 }
@@ -209,22 +209,7 @@ impl Curve {
                 }
             }
             Curve::Spline(s) => s.at(u),
-            Curve::Cam { centre: c, zero, base, program } => {
-                // P^(k)(u) = (−1)^k s^(k)(zero − u); r = P e + P′ e⊥ and, with e⊥′ = −e:
-                // r′ = (P + P″) e⊥, r″ = (P′ + P‴) e⊥ − (P + P″) e, r‴ = (P⁗ − P) e⊥ − 2(P′ + P‴) e.
-                let s = program.eval(zero - u);
-                let p = [base + s[0], -s[1], s[2], -s[3], s[4]];
-                let (sn, co) = u.sin_cos();
-                let (e, f) = ([co, sn], [-sn, co]);
-                let comb = |a: f64, b: f64| [a * e[0] + b * f[0], a * e[1] + b * f[1]];
-                let r = comb(p[0], p[1]);
-                Local {
-                    r: [c[0] + r[0], c[1] + r[1]],
-                    d1: comb(0.0, p[0] + p[2]),
-                    d2: comb(-(p[0] + p[2]), p[1] + p[3]),
-                    d3: comb(-2.0 * (p[1] + p[3]), p[4] - p[0]),
-                }
-            }
+            Curve::Cam { centre, zero, base, face, program } => cam::at(*centre, *zero, *base, *face, program, u),
         }
     }
 
@@ -325,7 +310,33 @@ mod tests {
         use crate::engine::cam::{Law, Program, Segment};
         let seg = |start: f64, from, to| Segment { law: Law::Cycloidal, start, span: std::f64::consts::PI, from, to };
         let program = Program::new(vec![seg(0.0, 0.0, 0.01), seg(std::f64::consts::PI, 0.01, 0.0)]).unwrap();
-        Curve::Cam { centre: [0.0, 0.0], zero: std::f64::consts::FRAC_PI_2, base: 0.04, program: Box::new(program) }
+        cam_for(Face::Flat, program)
+    }
+
+    fn cam_for(face: Face, program: Program) -> Curve {
+        Curve::Cam {
+            centre: [0.0, 0.0],
+            zero: std::f64::consts::FRAC_PI_2,
+            base: 0.04,
+            face,
+            program: Box::new(program),
+        }
+    }
+
+    /// The same cam under a 10 mm roller offset 5 mm, and under a knife edge.
+    fn cams() -> [(&'static str, Curve, f64); 2] {
+        let program = match cam() {
+            Curve::Cam { program, .. } => *program,
+            _ => unreachable!(),
+        };
+        [
+            (
+                "cam for a roller (offset 5 mm)",
+                cam_for(Face::Roller { radius: 0.01, offset: 0.005 }, program.clone()),
+                0.9,
+            ),
+            ("cam for a knife edge", cam_for(Face::Roller { radius: 0.0, offset: 0.0 }, program), 2.4),
+        ]
     }
 
     fn curves() -> Vec<(&'static str, Curve, f64)> {
@@ -345,6 +356,9 @@ mod tests {
             ("open spline", Curve::Spline(Spline::new(wavy, false).unwrap()), 2.6),
             ("cam for a flat follower (a cycloidal rise under u)", cam(), 0.9),
         ]
+        .into_iter()
+        .chain(cams())
+        .collect()
     }
 
     /// Each derivative is the central difference of the one before (h =

@@ -3,7 +3,6 @@
 mod andrews;
 mod browser;
 mod cams;
-mod cams_oscillating;
 mod capacity;
 mod cases;
 mod class;
@@ -17,6 +16,7 @@ mod dynamics;
 mod energy;
 mod errors;
 mod examples;
+mod followers;
 mod four_bars;
 mod full_disk;
 mod fuzz;

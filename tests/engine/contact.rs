@@ -269,7 +269,7 @@ fn a_roller_follower_s_pressure_angle_is_that_of_the_line_of_centres() {
 #[test]
 fn a_cam_made_from_its_program_lifts_its_flat_follower_by_the_program() {
     use mechdyn::engine::cam::{Law, Program, Segment};
-    use mechdyn::engine::curves::Curve;
+    use mechdyn::engine::curves::{Curve, Face};
     use mechdyn::engine::model::{Contact, JointKind};
     use std::f64::consts::FRAC_PI_2 as Q;
     let (base, h) = (0.04, 0.01);
@@ -282,7 +282,7 @@ fn a_cam_made_from_its_program_lifts_its_flat_follower_by_the_program() {
     ])
     .unwrap();
     let mut mechanism = eccentric_cam();
-    let cam = Curve::Cam { centre: [0.0, 0.0], zero: Q, base, program: Box::new(program.clone()) };
+    let cam = Curve::Cam { centre: [0.0, 0.0], zero: Q, base, face: Face::Flat, program: Box::new(program.clone()) };
     let face = Curve::Line { at: [0.0, base], direction: [1.0, 0.0] };
     mechanism.joints[2].kind = JointKind::Contact(Box::new(Contact::new([cam, face], false, [0.0, base])));
     let angles: Vec<f64> = (0..72).map(|k| 0.087 * f64::from(k)).collect();

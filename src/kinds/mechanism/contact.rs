@@ -5,7 +5,7 @@
 
 use super::joints::unit;
 use super::{JointDto, PointRef};
-use crate::engine::curves::{Curve, Spline};
+use crate::engine::curves::{Curve, Face, Spline};
 use crate::engine::function::Side;
 use crate::engine::model::{Contact, Joint, JointKind};
 use crate::engine::touch::{NoTouch, touching};
@@ -42,10 +42,12 @@ pub enum CurveDto {
     Cam(CamCurveDto),
 }
 
-/// A disk cam's profile made for a flat-faced translating follower from
-/// its program (the fields of `POST /v1/cams` that shape it): the envelope
-/// of the follower's face, lift s(θ) at the cam's counter-clockwise turn θ
-/// from the drawing.
+/// A disk cam's profile made for a translating follower from its program
+/// (the fields of `POST /v1/cams` that shape it): the envelope of a flat
+/// face, or the pitch curve of a roller (its `roller_radius`; a knife edge
+/// has none) on an axis `offset` from the centre moved in by the roller's
+/// radius; lift s(θ) at the cam's counter-clockwise turn θ from the drawing.
+/// Draw the follower's face, roller or edge touching it at θ = 0.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct CamCurveDto {
     /// The cam's centre (its pivot).
@@ -220,20 +222,14 @@ fn polar(e: &mut Errors, p: &PolarDto, point: &PointReader, at: &str) -> Option<
     Some(Curve::polar(centre, zero[1].atan2(zero[0]), rho))
 }
 
-/// A cam curve: a flat-faced translating follower's, from a program of segments, counter-clockwise.
+/// A cam curve for a translating follower, from a program of segments, counter-clockwise.
 fn cam(e: &mut Errors, c: &CamCurveDto, point: &PointReader, at: &str) -> Option<Curve> {
     let centre = point(e, &c.center, &format!("{at}/center"));
     let zero = match c.zero.as_deref() {
         None => Some([1.0, 0.0]),
         Some(z) => unit(e, z, &format!("{at}/zero")),
     };
-    let flat = c.follower.kind == CamFollowerType::Flat && c.follower.motion != Some(CamFollowerMotion::Oscillating);
-    if !flat {
-        e.push(
-            &format!("{at}/follower"),
-            "a cam curve is made for a flat-faced translating follower: for a roller, put its circle on the follower and the cam's profile as a polar or spline curve",
-        );
-    }
+    let face = face(e, &c.follower, &format!("{at}/follower"));
     if c.direction == Some(CamSense::Cw) {
         e.push(
             &format!("{at}/direction"),
@@ -245,8 +241,32 @@ fn cam(e: &mut Errors, c: &CamCurveDto, point: &PointReader, at: &str) -> Option
         CamProgramDto::Segments(list) => program(e, list, &format!("{at}/program"), Dim::LENGTH).map(|(p, _)| p),
         CamProgramDto::Lift(_) => e.fail(&format!("{at}/program"), "a cam curve takes a program of segments"),
     };
-    let (centre, zero, base, program) = (centre?, zero?, base?, program?);
-    flat.then(|| Curve::Cam { centre, zero: zero[1].atan2(zero[0]), base, program: Box::new(program) })
+    let (centre, zero, base, program, face) = (centre?, zero?, base?, program?, face?);
+    if let Face::Roller { radius, offset } = face
+        && offset.abs() >= base + radius
+    {
+        return e.fail(&format!("{at}/follower/offset"), "must be less than the pitch circle's radius (base + roller)");
+    }
+    Some(Curve::Cam { centre, zero: zero[1].atan2(zero[0]), base, face, program: Box::new(program) })
+}
+
+/// The translating follower a cam curve is made for: a flat face, a roller
+/// (its radius) or a knife edge, on an axis offset from the centre.
+fn face(e: &mut Errors, f: &CamFollowerDto, at: &str) -> Option<Face> {
+    if f.motion == Some(CamFollowerMotion::Oscillating) {
+        return e.fail(&format!("{at}/motion"), "a cam curve is made for a translating follower");
+    }
+    let offset = f.offset.as_ref().map_or(Some(0.0), |q| e.quantity(q, Dim::LENGTH, &format!("{at}/offset")));
+    let radius = match (f.kind, &f.roller_radius) {
+        (CamFollowerType::Roller, Some(r)) => e.positive(r, Dim::LENGTH, &format!("{at}/roller_radius")),
+        (CamFollowerType::Roller, None) => e.fail(at, "a roller follower needs its \"roller_radius\""),
+        (_, Some(_)) => e.fail(&format!("{at}/roller_radius"), "applies to a roller follower only"),
+        (_, None) => Some(0.0),
+    };
+    match f.kind {
+        CamFollowerType::Flat => offset.map(|_| Face::Flat),
+        _ => Some(Face::Roller { radius: radius?, offset: offset? }),
+    }
 }
 
 /// Marks as particles the bodies that have no inertia and whose only joint
