@@ -56,6 +56,10 @@ pub struct Configuration {
     /// Φ_q is singular here (or Newton could not assemble this one position
     /// while its neighbours assemble): nothing but q (predicted) is valid.
     pub singular: bool,
+    /// The contact parameters' columns that jumped here: Newton settled far
+    /// from the continuation's prediction (another lobe of a cam, another
+    /// stretch of a curve), not where the contact was followed to.
+    pub jumped: Vec<usize>,
 }
 
 /// Solves A x = b: LU when A is square and regular, else least squares (SVD).

@@ -245,6 +245,21 @@ impl Mechanism {
         self.joints.iter().map(|j| parameters_of(&j.kind)).sum()
     }
 
+    /// The period of every curve parameter, in column order (None: a line's
+    /// or an open curve's).
+    pub fn parameter_periods(&self) -> Vec<Option<f64>> {
+        let curves = self.joints.iter().filter_map(|j| match &j.kind {
+            JointKind::Contact(c) => Some(c.curves.iter()),
+            _ => None,
+        });
+        let period = |c: &Curve| match c.domain() {
+            Domain::None => None,
+            Domain::Periodic(p) => Some(Some(p)),
+            _ => Some(None),
+        };
+        curves.flatten().filter_map(period).collect()
+    }
+
     /// Coordinate k's entry of the mass matrix M = diag(m, m, I_G, …, 0 for
     /// the curve parameters, which carry no mass).
     pub fn mass_of(&self, k: usize) -> f64 {

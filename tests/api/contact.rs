@@ -322,3 +322,54 @@ async fn a_spring_loaded_cam_follower_keeps_its_energy_in_dynamics() {
     }
     assert!(result["warnings"].as_array().unwrap().is_empty(), "{}", result["warnings"]);
 }
+
+/// A flat-faced follower on a peanut-shaped cam r(ψ) = 50 + 20 cos 2ψ mm:
+/// its profile turns concave at ψᵢ where r² + 2r′² − r r″ = 0 (72.37°),
+/// so the contact followed from the top of a lobe can go no further once
+/// the cam has turned by the tangent's turn from ψ = 0 to ψᵢ (θ_f =
+/// 106.8°, both found here from the polar curve's formulas): the face must
+/// leave that lobe. The sweep (5° steps) reports the jump at the first
+/// position past θ_f that assembles (within two steps), and again half a
+/// turn later, in the contacts and in a warning, never silently.
+#[tokio::test]
+async fn a_contact_that_jumps_to_another_lobe_is_a_warning() {
+    let app = TestApp::new().await;
+    let (a, b) = (0.05, 0.02);
+    let r = |p: f64| [a + b * (2.0 * p).cos(), -2.0 * b * (2.0 * p).sin(), -4.0 * b * (2.0 * p).cos()];
+    let convex = |p: f64| {
+        let [r0, r1, r2] = r(p);
+        r0 * r0 + 2.0 * r1 * r1 - r0 * r2
+    };
+    let (mut lo, mut hi) = (0.0, std::f64::consts::FRAC_PI_2);
+    for _ in 0..100 {
+        let mid = 0.5 * (lo + hi);
+        if convex(mid) > 0.0 { lo = mid } else { hi = mid }
+    }
+    // The tangent's direction of r e(ψ + 90°): its turn from ψ = 0 to ψᵢ.
+    let tangent = |p: f64| {
+        let ([r0, r1, _], (s, c)) = (r(p), (p + std::f64::consts::FRAC_PI_2).sin_cos());
+        (r1 * s + r0 * c).atan2(r1 * c - r0 * s)
+    };
+    let fold = (tangent(lo) - tangent(0.0)).rem_euclid(std::f64::consts::TAU).to_degrees();
+    assert!((fold - 106.8).abs() < 0.1, "θ_f = {fold}°");
+    let mut body = template_request("cam-flat-follower");
+    let mechanism = &mut body["mechanism"];
+    mechanism["points"]["F"] = json!([0, 0.07]);
+    mechanism["joints"][2]["curves"][0] =
+        json!({"polar": {"center": "O", "zero": [0, 1], "radius": {"expr": "0.05 + 0.02*cos(2*psi)"}}});
+    body["input"]["steps"] = json!(72);
+    let result = kinetostatics(&app, &body).await;
+    let jumped: Vec<f64> = result["steps"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|s| s["contacts"][0]["jumped"] == true)
+        .map(|s| s["input"].as_f64().unwrap().to_degrees())
+        .collect();
+    assert_eq!(jumped.len(), 2, "{jumped:?}");
+    for (at, from) in jumped.iter().zip([fold, fold + 180.0]) {
+        assert!(*at > from && *at <= from + 10.0 + 1e-9, "the jump at {at}° after θ_f = {from}°");
+    }
+    let warnings = result["warnings"].to_string();
+    assert!(warnings.contains("contact K: the contact jumped at"), "{warnings}");
+}

@@ -298,3 +298,51 @@ fn a_cam_made_from_its_program_lifts_its_flat_follower_by_the_program() {
         assert!((rho - (base + s + s2)).abs() < 1e-9 * base, "φ = {phi}: ρ {rho} vs {}", base + s + s2);
     }
 }
+
+/// A roller sitting in the waist of a peanut-shaped cam r(ψ) = 50 + 20
+/// cos 2ψ mm, whose hollow there has a radius of curvature of 18 mm
+/// (ρ = r³/(r² − r r″) with r = 30 mm, r″ = 80 mm: the polar formula): a
+/// roller of 15 mm fits it, one of 25 mm overlaps the cam on both sides of
+/// the contact — it would rest on the two shoulders instead — and the
+/// contact's state says so; a flat face there overlaps too.
+#[test]
+fn a_roller_larger_than_the_hollow_it_sits_in_overlaps_the_cam() {
+    use mechdyn::engine::curves::Curve;
+    use mechdyn::engine::expr::Expr;
+    use mechdyn::engine::function::Function;
+    use mechdyn::engine::kinetostatics::Reaction;
+    use mechdyn::engine::model::{Body, Contact, Joint, JointKind, Mechanism};
+    let (r, r2) = (0.03f64, 0.08);
+    let hollow = r.powi(3) / (r * r - r * r2);
+    assert!((hollow + 0.018).abs() < 1e-15, "ρ = {hollow}");
+    let peanut =
+        || Curve::polar([0.0, 0.0], 0.0, Function::Expr(Expr::compile("0.05 + 0.02*cos(2*psi)", &["psi"]).unwrap()));
+    for (radius, overlaps) in [(Some(0.015), false), (Some(0.025), true), (None, true)] {
+        let follower = match radius {
+            Some(rr) => Curve::Circle { centre: [0.0, r + rr], radius: rr, inside: false },
+            None => Curve::Line { at: [0.0, r], direction: [1.0, 0.0] },
+        };
+        let contact = Contact::new([peanut(), follower], false, [0.0, r]);
+        let joint = Joint {
+            name: "K".into(),
+            kind: JointKind::Contact(Box::new(contact)),
+            bodies: [0, 1],
+            at: [0.0, r],
+            friction: None,
+            length: None,
+        };
+        let body = |name: &str, cg: [f64; 2]| Body { name: name.into(), mass: 1.0, inertia: 1e-3, cg };
+        let m = Mechanism {
+            bodies: vec![body("ground", [0.0, 0.0]), body("follower", [0.0, 0.06])],
+            joints: vec![joint],
+            drivers: Vec::new(),
+            gravity: [0.0, 0.0],
+        };
+        let q = m.reference_q();
+        let qd = vec![0.0; q.len()];
+        let reaction =
+            Reaction { joint: 0, on: 1, by: 0, fx: 0.0, fy: 1.0, moment: 0.0, ends: None, determinate: true };
+        let state = contact_state(&m, &q, &qd, &reaction).unwrap();
+        assert_eq!(state.overlap, overlaps, "{radius:?}: {state:?}");
+    }
+}

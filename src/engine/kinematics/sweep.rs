@@ -61,6 +61,7 @@ pub fn sweep_each(
             }
         };
         predict(&mut c.q);
+        let predicted = (from.is_some() && m.n_parameters() > 0).then(|| c.q.clone());
         // Placed in closed form where the mechanism is a crank and dyads (on
         // the branch of the prediction); else, or where a dyad will not
         // close, Newton starts from the prediction.
@@ -83,6 +84,10 @@ pub fn sweep_each(
             }
         };
         failure = None;
+        c.jumped.clear();
+        if let Some(predicted) = &predicted {
+            c.jumped.extend(jumps(m, &base, predicted, &c.q));
+        }
         // One input: g = dq/dφ and h = d²q/dφ² give q̇ = gω and q̈ = gα + hω²
         // (γ is quadratic in q̇), and they are the next step's predictor.
         let unit = [[inputs[0][0], 1.0, 0.0]];
@@ -123,6 +128,18 @@ pub fn sweep_each(
     }
 }
 
+/// The curve parameters' columns where q settled far from the prediction:
+/// more than ten times the predicted change, and more than 1e-3 of the
+/// curve's period (1e-3 m along a line or an open curve).
+fn jumps<'a>(m: &Mechanism, base: &'a [f64], predicted: &'a [f64], q: &'a [f64]) -> impl Iterator<Item = usize> + 'a {
+    let first = m.n_body_coordinates();
+    let scale: Vec<f64> = m.parameter_periods().iter().map(|p| 1e-3 * p.unwrap_or(1.0)).collect();
+    (first..q.len()).filter(move |&c| {
+        let (step, off) = ((predicted[c] - base[c]).abs(), (q[c] - predicted[c]).abs());
+        off > 10.0 * step && off > scale[c - first]
+    })
+}
+
 impl Configuration {
     /// A singular position at the q it holds: nothing but q is valid.
     fn set_singular(&mut self, condition: f64, iterations: usize, residual: f64) {
@@ -130,6 +147,7 @@ impl Configuration {
         (self.qd, self.qdd, self.g, self.jacobian) = (vec![0.0; n], vec![0.0; n], None, DMatrix::zeros(0, 0));
         self.trig.clear();
         (self.condition, self.iterations, self.residual, self.singular) = (condition, iterations, residual, true);
+        self.jumped.clear();
     }
 }
 

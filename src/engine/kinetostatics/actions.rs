@@ -7,7 +7,7 @@
 
 use super::actuators::Actuated;
 use super::loads::{applied_forces_into, point_motion};
-use super::{Motion, Outputs, Reaction, Step, friction, mass_times};
+use super::{ContactState, Motion, Outputs, Reaction, Step, friction, mass_times};
 use crate::engine::EngineError;
 use crate::engine::kinematics::{Configuration, solve_linear};
 use crate::engine::mobility::Mobility;
@@ -121,7 +121,13 @@ impl Actions<'_> {
             }
             if outputs.reactions {
                 let states = out.reactions.iter().filter(|r| r.determinate);
-                out.contacts.extend(states.filter_map(|r| super::contact_state(m, &c.q, &c.qd, r)));
+                let jumped =
+                    |k: usize| (0..2).any(|side| m.contact_column(k, side).is_some_and(|col| c.jumped.contains(&col)));
+                out.contacts.extend(
+                    states
+                        .filter_map(|r| super::contact_state(m, &c.q, &c.qd, r))
+                        .map(|s| ContactState { jumped: jumped(s.joint), ..s }),
+                );
             }
         } else {
             out.driving.push(out.driving_virtual_power.first().copied().unwrap_or(f64::NAN));

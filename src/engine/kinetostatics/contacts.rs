@@ -37,6 +37,15 @@ pub struct ContactState {
     /// The contact has run off the end of an open curve (a spline's): the
     /// curves no longer touch as the equations say.
     pub off_end: bool,
+    /// The curves overlap on both sides of the contact (their gap ½s²(k₂ −
+    /// k₁)·n is negative, k the curvature vectors): a flat face on a
+    /// concave stretch, a roller larger than the hollow it sits in. The
+    /// bodies would touch elsewhere instead — another lobe — and the
+    /// equations follow a contact that cannot be.
+    pub overlap: bool,
+    /// The contact jumped to this position from far off the point it was
+    /// followed to (a sweep's continuation: [`crate::engine::kinematics::Configuration::jumped`]).
+    pub jumped: bool,
 }
 
 /// Contact joint k's frame at (q, q̇): where the curves touch, t, n, and
@@ -96,7 +105,33 @@ pub fn contact_state(m: &Mechanism, q: &[f64], qd: &[f64], r: &Reaction) -> Opti
             (Domain::Interval(a, b), Some(u)) => u < a - 1e-9 || u > b + 1e-9,
             _ => false,
         }),
+        overlap: overlap(m, k, q, frame.n),
+        jumped: false,
     })
+}
+
+/// Whether contact joint k's curves overlap around the contact: (k₂ −
+/// k₁)·n < 0 beyond rounding, k = κ·perp(t) each curve's curvature vector
+/// in the ground (none for a point, nor for a particle, which is held on
+/// its curve both ways).
+fn overlap(m: &Mechanism, k: usize, q: &[f64], n: [f64; 2]) -> bool {
+    let JointKind::Contact(c) = &m.joints[k].kind else { return false };
+    if c.particle || c.curves.iter().any(|curve| curve.domain() == Domain::None) {
+        return false;
+    }
+    let bend = |side: usize| {
+        let b = m.joints[k].bodies[side];
+        let Some(u) = m.contact_parameter(k, side, q) else { return [0.0, 0.0] };
+        let l = c.curves[side].at(u);
+        let theta = m.column(b).map_or(0.0, |col| q[col + 2]);
+        let speed = l.d1[0].hypot(l.d1[1]);
+        let t = rotate(theta, [l.d1[0] / speed, l.d1[1] / speed]);
+        let (kappa, left) = (l.curvature(), perp(t));
+        [kappa * left[0], kappa * left[1]]
+    };
+    let (k1, k2) = (bend(0), bend(1));
+    let scale = k1[0].hypot(k1[1]).max(k2[0].hypot(k2[1]));
+    dot([k2[0] - k1[0], k2[1] - k1[1]], n) < -1e-9 * scale
 }
 
 /// n from the first body into the second (see the module's symbols).

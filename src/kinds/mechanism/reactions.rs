@@ -72,6 +72,15 @@ pub struct ContactDto {
     /// The contact ran off the end of an open curve here (a warning says where).
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub off_end: bool,
+    /// The curves overlap around the contact here (a flat face on a concave
+    /// stretch, a roller in a tighter hollow): the bodies would touch
+    /// elsewhere, at another lobe (a warning says where).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub overlap: bool,
+    /// The contact jumped here from far off where it was followed to:
+    /// another lobe (a warning says where).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub jumped: bool,
 }
 
 impl ContactDto {
@@ -86,6 +95,8 @@ impl ContactDto {
             curvature_radius: c.curvature_radius,
             pressure_angle: c.pressure_angle,
             off_end: c.off_end,
+            overlap: c.overlap,
+            jumped: c.jumped,
         }
     }
 }
@@ -140,8 +151,8 @@ pub fn contact_warnings<'a>(
         .map(|(k, j)| (k, j.name.as_str()))
         .collect();
     // Per contact joint and condition, the runs [from, to] of positions.
-    let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new(); 3 * joints.len()];
-    let mut open = vec![false; 3 * joints.len()];
+    let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new(); 5 * joints.len()];
+    let mut open = vec![false; 5 * joints.len()];
     for (at, contacts) in steps {
         for (i, &(k, name)) in joints.iter().enumerate() {
             let c = contacts.iter().find(|c| &*c.joint == name);
@@ -152,8 +163,14 @@ pub fn contact_warnings<'a>(
             };
             let threaded = matches!(&m.joints[k].kind, JointKind::Contact(c) if c.particle);
             let separates = c.is_some_and(|c| c.normal < 0.0) && !threaded;
-            let conditions = [separates, c.is_some_and(slips), c.is_some_and(|c| c.off_end)];
-            for (slot, holds) in conditions.into_iter().enumerate().map(|(n, h)| (3 * i + n, h)) {
+            let conditions = [
+                separates,
+                c.is_some_and(slips),
+                c.is_some_and(|c| c.off_end),
+                c.is_some_and(|c| c.overlap),
+                c.is_some_and(|c| c.jumped),
+            ];
+            for (slot, holds) in conditions.into_iter().enumerate().map(|(n, h)| (5 * i + n, h)) {
                 match (holds, open[slot]) {
                     (true, true) => runs[slot].last_mut().expect("an open run").1 = at,
                     (true, false) => runs[slot].push((at, at)),
@@ -171,23 +188,35 @@ pub fn contact_warnings<'a>(
     };
     let mut out = Vec::new();
     for (i, &(k, name)) in joints.iter().enumerate() {
-        if !runs[3 * i + 2].is_empty() {
+        if !runs[5 * i + 2].is_empty() {
             out.push(format!(
                 "contact {name}: the contact runs off the end of an open curve at {}: the results there are not a contact's (extend the curve)",
-                span(&runs[3 * i + 2])
+                span(&runs[5 * i + 2])
             ));
         }
-        if !runs[3 * i].is_empty() {
+        if !runs[5 * i + 4].is_empty() {
+            out.push(format!(
+                "contact {name}: the contact jumped at {} to a point far from where it was followed to (another lobe): the follower leaves the curve it was on and lands elsewhere, a jump the motion there does not show",
+                span(&runs[5 * i + 4])
+            ));
+        }
+        if !runs[5 * i + 3].is_empty() {
+            out.push(format!(
+                "contact {name}: the curves overlap around the contact at {}: the bodies would touch elsewhere there (the follower jumps to another lobe: a flat face on a concave stretch, a roller in a tighter hollow); the results there follow a contact that cannot be",
+                span(&runs[5 * i + 3])
+            ));
+        }
+        if !runs[5 * i].is_empty() {
             out.push(format!(
                 "contact {name}: the normal force is negative at {}: the bodies would separate there (a follower jump, a disk leaving its track) unless something holds them together",
-                span(&runs[3 * i])
+                span(&runs[5 * i])
             ));
         }
-        if let (false, Some(f)) = (runs[3 * i + 1].is_empty(), m.joints[k].friction) {
+        if let (false, Some(f)) = (runs[5 * i + 1].is_empty(), m.joints[k].friction) {
             out.push(format!(
                 "contact {name}: rolling needs more friction than mu = {} gives at {} (see mu_required): it would slip there",
                 f.mu,
-                span(&runs[3 * i + 1])
+                span(&runs[5 * i + 1])
             ));
         }
     }
