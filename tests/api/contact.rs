@@ -373,3 +373,26 @@ async fn a_contact_that_jumps_to_another_lobe_is_a_warning() {
     let warnings = result["warnings"].to_string();
     assert!(warnings.contains("contact K: the contact jumped at"), "{warnings}");
 }
+
+/// The driving actions two independent ways — the multipliers, and virtual
+/// power (Σ Q·q̇ per unit input speed, no multipliers) — agree to 1e-10
+/// with contacts: the eccentric cam with friction at its contact (one
+/// input), and the ring on the rim under gravity with both of its inputs
+/// (the disk's turn and the ring's run along the rim) swept together.
+#[tokio::test]
+async fn virtual_power_agrees_with_the_multipliers_with_contacts() {
+    let app = TestApp::new().await;
+    let cam = kinetostatics(&app, &template_request("cam-flat-follower")).await;
+    let mut ring = template_request("ring-on-rim");
+    ring["mechanism"]["gravity"] = json!([0, -9.81]);
+    ring["input"][0]["end"] = json!("90 deg");
+    ring["input"][1]["end"] = json!("60 mm");
+    for input in ring["input"].as_array_mut().unwrap() {
+        input["steps"] = json!(10);
+    }
+    let ring = kinetostatics(&app, &ring).await;
+    for (what, result) in [("cam", cam), ("ring", ring)] {
+        let residual = result["summary"]["virtual_power_residual"].as_f64();
+        assert!(residual.is_some_and(|r| r <= 1e-10), "{what}: {:?} ({})", residual, result["summary"]);
+    }
+}
