@@ -254,7 +254,10 @@ fn cam(e: &mut Errors, c: &CamCurveDto, point: &PointReader, at: &str) -> Option
 /// (its radius) or a knife edge, on an axis offset from the centre.
 fn face(e: &mut Errors, f: &CamFollowerDto, at: &str) -> Option<Face> {
     if f.motion == Some(CamFollowerMotion::Oscillating) {
-        return e.fail(&format!("{at}/motion"), "a cam curve is made for a translating follower");
+        return e.fail(
+            &format!("{at}/motion"),
+            "a cam curve is made for a translating follower: for an oscillating one, draw the profile its design gives (POST /v1/cams: the samples' profile_point) as a closed spline",
+        );
     }
     let offset = f.offset.as_ref().map_or(Some(0.0), |q| e.quantity(q, Dim::LENGTH, &format!("{at}/offset")));
     let radius = match (f.kind, &f.roller_radius) {
