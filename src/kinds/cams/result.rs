@@ -177,7 +177,8 @@ pub fn result(p: &Problem, cam: &Cam, turn: &[Sample]) -> CamResult {
         segments,
         method: "the laws in closed form and their derivatives to the jerk; the pitch curve and profile from the \
                  follower's position in the cam's frame, their curvature from exact derivatives (a flat face's \
-                 ρ = R_b + s + s″); forces from the follower's equation along its axis"
+                 ρ = R_b + s + s″; an oscillating face's as the envelope of its lines); forces from the \
+                 follower's equation along its axis (about its pivot, oscillating)"
             .into(),
         warnings,
     }

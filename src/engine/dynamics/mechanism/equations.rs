@@ -171,7 +171,12 @@ impl Equations<'_> {
         Some(Motion {
             inputs: inputs.collect(),
             residual: sys.phi.select_rows(&active).amax(),
-            loose: if loose { (0..r).map(|row| rows.touches_loose(row)).collect() } else { Vec::new() },
+            // Indexed by joint row: a slipping grip's rolling row, left out, is not loose.
+            loose: if loose {
+                (0..r).map(|row| active.iter().position(|a| *a == row).is_some_and(|i| rows.touches_loose(i))).collect()
+            } else {
+                Vec::new()
+            },
             lambda: lambda_all,
             qdd: qdd.data.into(),
             forces,
