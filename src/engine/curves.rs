@@ -10,13 +10,14 @@
 //! to the left of its tangent (a circle run counter-clockwise: 1/R).
 
 mod cam;
+mod spline;
 
 use super::cam::Program;
 use super::function::{Function, Side};
 use super::numeric::plane::{cross, perp};
 use super::numeric::quadrature::integrate;
 pub use cam::Face;
-use nalgebra::DMatrix;
+pub use spline::Spline;
 use std::f64::consts::TAU;
 
 /// A curve's point and its derivatives in its parameter.
@@ -54,71 +55,6 @@ pub enum Domain {
     Periodic(f64),
     /// An open curve from one end to the other.
     Interval(f64, f64),
-}
-
-/// A C² cubic spline through points, its parameter the knots' index (u = k
-/// at point k), closed (periodic) or open (natural: r″ = 0 at both ends).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Spline {
-    points: Vec<[f64; 2]>,
-    /// r″ at every knot.
-    second: Vec<[f64; 2]>,
-    closed: bool,
-}
-
-impl Spline {
-    /// The spline through `points` (at least 4, every one finite), or None.
-    pub fn new(points: Vec<[f64; 2]>, closed: bool) -> Option<Self> {
-        let n = points.len();
-        if n < 4 || points.iter().flatten().any(|v| !v.is_finite()) {
-            return None;
-        }
-        // M_{k−1} + 4 M_k + M_{k+1} = 6 (P_{k+1} − 2 P_k + P_{k−1}) at uniform unit spacing;
-        // closed: the indices wrap; open: M = 0 at both ends.
-        let mut a = DMatrix::zeros(n, n);
-        let mut b = DMatrix::zeros(n, 2);
-        for k in 0..n {
-            let end = !closed && (k == 0 || k == n - 1);
-            if end {
-                a[(k, k)] = 1.0;
-                continue;
-            }
-            let (prev, next) = ((k + n - 1) % n, (k + 1) % n);
-            a[(k, k)] = 4.0;
-            a[(k, prev)] += 1.0;
-            a[(k, next)] += 1.0;
-            for d in 0..2 {
-                b[(k, d)] = 6.0 * (points[next][d] - 2.0 * points[k][d] + points[prev][d]);
-            }
-        }
-        let m = a.lu().solve(&b)?;
-        let second = (0..n).map(|k| [m[(k, 0)], m[(k, 1)]]).collect();
-        Some(Self { points, second, closed })
-    }
-
-    fn segments(&self) -> usize {
-        if self.closed { self.points.len() } else { self.points.len() - 1 }
-    }
-
-    fn at(&self, u: f64) -> Local {
-        let n = self.points.len();
-        let segments = self.segments();
-        let u = if self.closed { u.rem_euclid(segments as f64) } else { u.clamp(0.0, segments as f64) };
-        let k = (u.floor() as usize).min(segments - 1);
-        let t = u - k as f64;
-        let (p0, p1, m0, m1) = (self.points[k], self.points[(k + 1) % n], self.second[k], self.second[(k + 1) % n]);
-        let s = 1.0 - t;
-        let each = |d: usize| {
-            [
-                s * p0[d] + t * p1[d] + ((s * s * s - s) * m0[d] + (t * t * t - t) * m1[d]) / 6.0,
-                p1[d] - p0[d] + ((1.0 - 3.0 * s * s) * m0[d] + (3.0 * t * t - 1.0) * m1[d]) / 6.0,
-                s * m0[d] + t * m1[d],
-                m1[d] - m0[d],
-            ]
-        };
-        let (x, y) = (each(0), each(1));
-        Local { r: [x[0], y[0]], d1: [x[1], y[1]], d2: [x[2], y[2]], d3: [x[3], y[3]] }
-    }
 }
 
 /// A curve of a body, in reference coordinates.
