@@ -1,10 +1,11 @@
 //! Events within a step, located on its dense output by Brent's method:
 //! the multiples of 2π the first input crosses, the run's end, and the
 //! crossings of a model's guards (where its equations change: a contact
-//! that starts to slip or to roll, or one that opens).
+//! that starts to slip or to roll, or one that opens), and what the
+//! steppers spent over the restarts there.
 
 use super::{End, Event, EventKind, Model};
-use crate::engine::numeric::ode::Step;
+use crate::engine::numeric::ode::{Step, Stepper};
 use crate::engine::numeric::roots::brent;
 use std::f64::consts::PI;
 
@@ -81,5 +82,19 @@ pub(super) fn finished(
             close(max_time, events)
         }
         _ => None,
+    }
+}
+
+/// What the steppers of one run spent, over the restarts at its events.
+pub(super) struct Spent {
+    pub counts: [usize; 3],
+    pub errors: Vec<f64>,
+}
+
+impl Spent {
+    pub fn add(&mut self, ode: &impl Stepper) {
+        self.counts.iter_mut().zip(ode.counts()).for_each(|(a, b)| *a += b);
+        self.errors.resize(ode.local_errors().len(), 0.0);
+        self.errors.iter_mut().zip(ode.local_errors()).for_each(|(a, b)| *a += b);
     }
 }

@@ -311,7 +311,7 @@ fn drive<S: Stepper>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<R
     };
     let mut sampler = Sampler::new(s.samples, known, s.kept_bytes);
     let (mut events, mut stopped, mut drift, mut reversal) = (Vec::new(), None, 0.0f64, [f64::INFINITY; 2]);
-    let (mut guards, mut switches, mut spent) = (None, 0, Spent { counts: [0; 3], errors: Vec::new() });
+    let (mut guards, mut switches, mut spent) = (None, 0, events::Spent { counts: [0; 3], errors: Vec::new() });
     let t_end = loop {
         if deadline.expired() {
             return Err(over(&ode));
@@ -390,20 +390,6 @@ fn drive<S: Stepper>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<R
         stiff_at: None,
         repeated: false,
     }))
-}
-
-/// What the steppers of one run spent, over the restarts at its events.
-struct Spent {
-    counts: [usize; 3],
-    errors: Vec<f64>,
-}
-
-impl Spent {
-    fn add(&mut self, ode: &impl Stepper) {
-        self.counts.iter_mut().zip(ode.counts()).for_each(|(a, b)| *a += b);
-        self.errors.resize(ode.local_errors().len(), 0.0);
-        self.errors.iter_mut().zip(ode.local_errors()).for_each(|(a, b)| *a += b);
-    }
 }
 
 /// (W − ΔT)/max(|W|, |ΔT|, T₀, T_end, T_peak), T_peak the largest kinetic
