@@ -5,6 +5,7 @@
 //! a tolerance of 1e-9.
 
 use crate::http::library;
+use crate::kinematics::best;
 use crate::{run_peer, timed};
 use mechdyn::kind::{Kind, Limits};
 use mechdyn::kinds::cams::{CamRequest, Cams};
@@ -12,18 +13,6 @@ use mechdyn::kinds::kinetostatics::{Kinetostatics, KinetostaticsRequest};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 use std::hint::black_box;
-use std::time::Instant;
-
-/// The best of `runs` wall times of `f`, seconds.
-fn best(runs: usize, mut f: impl FnMut()) -> f64 {
-    (0..runs)
-        .map(|_| {
-            let start = Instant::now();
-            f();
-            start.elapsed().as_secs_f64()
-        })
-        .fold(f64::INFINITY, f64::min)
-}
 
 /// A library request swept over a turn in `steps` positions, every output.
 fn swept(id: &str, steps: usize) -> KinetostaticsRequest {

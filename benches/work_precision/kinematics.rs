@@ -26,7 +26,7 @@ fn request() -> KinetostaticsRequest {
 }
 
 /// The best of `runs` wall times of `f`, s.
-fn best(runs: usize, mut f: impl FnMut()) -> f64 {
+pub fn best(runs: usize, mut f: impl FnMut()) -> f64 {
     (0..runs)
         .map(|_| {
             let start = Instant::now();

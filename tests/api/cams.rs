@@ -220,53 +220,6 @@ async fn a_cam_s_profile_is_a_dxf_that_cad_reads() {
     near(&read["base"], 35.0, 1e-9, "base circle (mm)");
 }
 
-/// The same program two ways: designed by `POST /v1/cams` (flat face,
-/// base 30 mm, a harmonic rise of 15 mm over 180° and a cycloidal return,
-/// the follower 1 kg under its weight at 10 rad/s) and drawn as a `cam`
-/// curve in a mechanism under a flat-faced follower on a vertical guide,
-/// solved by kinetostatics. The follower rises by s(θ) (1e-9 m), and the
-/// mechanism's driving torque and contact force equal the design's cam
-/// torque and contact force at every 15° (1e-8 of m g R_b; the follower's
-/// axial equation and power against the whole mechanism's multipliers).
-#[tokio::test]
-async fn a_designed_cam_drawn_in_a_mechanism_lifts_and_loads_its_follower_alike() {
-    let app = TestApp::new().await;
-    let program = json!([{"to": "180 deg", "law": "harmonic", "lift": "15 mm"}, {"to": "360 deg", "law": "cycloidal", "lift": 0}]);
-    let design = json!({"follower": {"type": "flat"}, "program": program, "base_radius": "30 mm", "speed": 10,
-        "samples": 24, "dynamics": {"follower_mass": 1, "force": -9.81}});
-    let designed = cam(&app, &design).await;
-    let curve = json!({"cam": {"center": "O", "zero": [0, 1], "follower": {"type": "flat"}, "program": program,
-        "base_radius": "30 mm"}});
-    let machine = json!({
-        "mechanism": {
-            "points": {"O": [0, 0], "F": [0, 0.03], "G": [0, 0.08]},
-            "bodies": [{"name": "cam", "mass": 1, "inertia": 0.001, "cg": "O"},
-                       {"name": "follower", "mass": 1, "inertia": 0.01, "cg": "G"}],
-            "joints": [
-                {"name": "O", "type": "revolute", "bodies": ["ground", "cam"], "at": "O"},
-                {"name": "guide", "type": "prismatic", "bodies": ["ground", "follower"], "at": "G", "axis": [0, 1]},
-                {"name": "K", "type": "contact", "bodies": ["cam", "follower"],
-                 "curves": [curve, {"line": {"through": "F", "direction": [1, 0]}}]}
-            ],
-            "gravity": [0, -9.81]
-        },
-        "input": {"joint": "O", "start": 0, "end": "360 deg", "steps": 24, "speed": 10},
-        "outputs": ["driving", "reactions", "kinematics"]
-    });
-    let r = app.post("/v1/kinetostatics", &machine).await;
-    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
-    let solved = r.json()["result"]["steps"].clone();
-    let scale = 9.81 * 0.03;
-    for (a, b) in designed["samples"].as_array().unwrap().iter().zip(solved.as_array().unwrap()) {
-        let theta = a["theta"].as_f64().unwrap();
-        near(&b["input"], theta, 1e-12, "the same angles");
-        let lift = b["kinematics"][1]["y"].as_f64().unwrap() - 0.08;
-        near(&json!(lift), a["lift"].as_f64().unwrap(), 1e-9, &format!("θ = {theta}: lift"));
-        near(&b["driving"], a["cam_torque"].as_f64().unwrap(), 1e-8 * scale, &format!("θ = {theta}: torque"));
-        near(&b["contacts"][0]["normal"], a["contact_force"].as_f64().unwrap(), 1e-8 * 9.81, "contact force");
-    }
-}
-
 /// The peer: the Python package `mechanism` (PyPI, gabemorris12), whose
 /// `Cam.get_base_circle` sizes a cam for the same dwell–cycloidal rise of
 /// 20 mm over 90°–dwell–cycloidal fall–dwell, on its own grid of 1014

@@ -3,8 +3,9 @@
 //! the drawing it gives (the profile against the envelope drawn from
 //! neighbouring positions of the follower, the pressure angle against the
 //! arm's motion and the pitch curve drawn by differences, the contact
-//! force against the moment about the pivot); and a roller's cam drawn as
-//! a `cam` curve in a mechanism against its design.
+//! force against the moment about the pivot); and a designed cam, for a
+//! flat face or a roller, drawn as a `cam` curve in a mechanism against
+//! its design.
 
 use crate::helpers::TestApp;
 use axum::http::StatusCode;
@@ -192,62 +193,72 @@ async fn an_oscillating_roller_s_smallest_base_circle_meets_its_pressure_angle()
     assert!(f(&r.json()["result"]["summary"]["max_pressure_angle"]["value"]) > limit + 1e-6);
 }
 
-/// A roller's cam two ways, as for a flat face in `cams.rs`: designed by
-/// `POST /v1/cams` (roller 10 mm on an axis offset 5 mm, base 30 mm, a
+/// The same program two ways, for a flat face and for a roller (10 mm on
+/// an axis offset 5 mm): designed by `POST /v1/cams` (base 30 mm, a
 /// harmonic rise of 15 mm over 180° and a cycloidal return, the follower
 /// 1 kg under its weight at 10 rad/s) and drawn as a `cam` curve under the
-/// roller's circle on a vertical guide, solved by kinetostatics. The
-/// follower rises by s(θ) (1e-9 m); the driving torque and the contact's
-/// normal force are the design's cam torque and contact force (1e-8 of
-/// m g R_b and of m g).
+/// follower's face or roller on a vertical guide, solved by kinetostatics.
+/// The follower rises by s(θ) (1e-9 m); the driving torque and the
+/// contact's normal force are the design's cam torque and contact force
+/// (1e-8 of m g R_b and of m g: the follower's axial equation and power
+/// against the whole mechanism's multipliers).
 #[tokio::test]
-async fn a_designed_roller_cam_drawn_in_a_mechanism_lifts_and_loads_its_follower_alike() {
+async fn a_designed_cam_drawn_in_a_mechanism_lifts_and_loads_its_follower_alike() {
     let app = TestApp::new().await;
     let program = json!([{"to": "180 deg", "law": "harmonic", "lift": "15 mm"}, {"to": "360 deg", "law": "cycloidal", "lift": 0}]);
-    let follower = json!({"type": "roller", "roller_radius": "10 mm", "offset": "5 mm"});
-    let design = json!({"follower": follower, "program": program, "base_radius": "30 mm", "speed": 10,
-        "samples": 24, "dynamics": {"follower_mass": 1, "force": -9.81}});
-    let r = app.post("/v1/cams", &design).await;
-    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
-    let designed = r.json()["result"]["samples"].clone();
     let (e, pitch): (f64, f64) = (0.005, 0.04);
     let centre = [-e, (pitch * pitch - e * e).sqrt()];
-    let curve = json!({"cam": {"center": "O", "zero": [0, 1], "follower": follower, "program": program, "base_radius": "30 mm"}});
-    let machine = json!({
-        "mechanism": {
-            "points": {"O": [0, 0], "R": centre},
-            "bodies": [{"name": "cam", "mass": 1, "inertia": 0.001, "cg": "O"},
-                       {"name": "follower", "mass": 1, "inertia": 0.01, "cg": "R"}],
-            "joints": [
-                {"name": "O", "type": "revolute", "bodies": ["ground", "cam"], "at": "O"},
-                {"name": "guide", "type": "prismatic", "bodies": ["ground", "follower"], "at": "R", "axis": [0, 1]},
-                {"name": "K", "type": "contact", "bodies": ["cam", "follower"],
-                 "curves": [curve, {"circle": {"center": "R", "radius": "10 mm"}}]}
-            ],
-            "gravity": [0, -9.81]
-        },
-        "input": {"joint": "O", "start": 0, "end": "360 deg", "steps": 24, "speed": 10},
-        "outputs": ["driving", "reactions", "kinematics"]
-    });
-    let r = app.post("/v1/kinetostatics", &machine).await;
-    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
-    let solved = r.json()["result"]["steps"].clone();
-    let scale = 9.81 * 0.03;
-    for (a, b) in designed.as_array().unwrap().iter().zip(solved.as_array().unwrap()) {
-        let theta = f(&a["theta"]);
-        let lift = f(&b["kinematics"][1]["y"]) - centre[1];
-        assert!((lift - f(&a["lift"])).abs() < 1e-9, "θ = {theta}: lift {lift} vs {}", a["lift"]);
-        let torque = f(&b["driving"]);
-        assert!(
-            (torque - f(&a["cam_torque"])).abs() < 1e-8 * scale,
-            "θ = {theta}: torque {torque} vs {}",
-            a["cam_torque"]
-        );
-        let normal = f(&b["contacts"][0]["normal"]);
-        assert!(
-            (normal - f(&a["contact_force"])).abs() < 1e-8 * 9.81,
-            "θ = {theta}: N {normal} vs {}",
-            a["contact_force"]
-        );
+    let cases = [
+        (
+            json!({"type": "flat"}),
+            json!({"F": [0, 0.03], "G": [0, 0.08]}),
+            0.08,
+            json!({"line": {"through": "F", "direction": [1, 0]}}),
+        ),
+        (
+            json!({"type": "roller", "roller_radius": "10 mm", "offset": "5 mm"}),
+            json!({"G": centre}),
+            centre[1],
+            json!({"circle": {"center": "G", "radius": "10 mm"}}),
+        ),
+    ];
+    for (follower, mut points, rest, face) in cases {
+        let design = json!({"follower": follower, "program": program, "base_radius": "30 mm", "speed": 10,
+            "samples": 24, "dynamics": {"follower_mass": 1, "force": -9.81}});
+        let r = app.post("/v1/cams", &design).await;
+        assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+        let designed = r.json()["result"]["samples"].clone();
+        points["O"] = json!([0, 0]);
+        let curve = json!({"cam": {"center": "O", "zero": [0, 1], "follower": follower, "program": program, "base_radius": "30 mm"}});
+        let machine = json!({
+            "mechanism": {
+                "points": points,
+                "bodies": [{"name": "cam", "mass": 1, "inertia": 0.001, "cg": "O"},
+                           {"name": "follower", "mass": 1, "inertia": 0.01, "cg": "G"}],
+                "joints": [
+                    {"name": "O", "type": "revolute", "bodies": ["ground", "cam"], "at": "O"},
+                    {"name": "guide", "type": "prismatic", "bodies": ["ground", "follower"], "at": "G", "axis": [0, 1]},
+                    {"name": "K", "type": "contact", "bodies": ["cam", "follower"], "curves": [curve, face]}
+                ],
+                "gravity": [0, -9.81]
+            },
+            "input": {"joint": "O", "start": 0, "end": "360 deg", "steps": 24, "speed": 10},
+            "outputs": ["driving", "reactions", "kinematics"]
+        });
+        let r = app.post("/v1/kinetostatics", &machine).await;
+        assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+        let solved = r.json()["result"]["steps"].clone();
+        let scale = 9.81 * 0.03;
+        for (a, b) in designed.as_array().unwrap().iter().zip(solved.as_array().unwrap()) {
+            let (theta, kind) = (f(&a["theta"]), &follower["type"]);
+            assert!((f(&b["input"]) - theta).abs() < 1e-12, "the same angles");
+            let lift = f(&b["kinematics"][1]["y"]) - rest;
+            assert!((lift - f(&a["lift"])).abs() < 1e-9, "{kind} θ = {theta}: lift {lift} vs {}", a["lift"]);
+            let torque = f(&b["driving"]);
+            let want = f(&a["cam_torque"]);
+            assert!((torque - want).abs() < 1e-8 * scale, "{kind} θ = {theta}: torque {torque} vs {want}");
+            let (normal, want) = (f(&b["contacts"][0]["normal"]), f(&a["contact_force"]));
+            assert!((normal - want).abs() < 1e-8 * 9.81, "{kind} θ = {theta}: N {normal} vs {want}");
+        }
     }
 }

@@ -191,18 +191,12 @@ impl Cam {
         })
     }
 
-    /// A flat face's line (ground): n̂, β_s, [p, p_s, p_ss], its foot, and
-    /// the motion per unit lift of a face point x.
-    #[allow(clippy::type_complexity)]
-    fn face(
-        &self,
-        s: f64,
-        side: f64,
-    ) -> Result<([f64; 2], f64, [f64; 3], [f64; 2], Box<dyn Fn([f64; 2]) -> [f64; 2]>), CamError> {
+    /// A flat face's line in the ground at lift s.
+    fn face(&self, s: f64, side: f64) -> Result<FaceLine, CamError> {
         match self.guide {
             Guide::Translating { offset } => {
                 let h = self.base + s;
-                Ok(([1.0, 0.0], 0.0, [h, 1.0, 0.0], [h, side * offset], Box::new(|_| [1.0, 0.0])))
+                Ok(FaceLine { n: [1.0, 0.0], beta_s: 0.0, p: [h, 1.0, 0.0], foot: [h, side * offset], pivot: None })
             }
             Guide::Oscillating { pivot: a, arm: f } => {
                 let s0 = (self.base + f) / a;
@@ -212,15 +206,14 @@ impl Cam {
                 let (sn, cs) = (s0.asin() + s).sin_cos();
                 let n = [sn, side * cs];
                 let foot = [a - f * n[0], -f * n[1]];
-                // ∂x/∂ψ = −σ J(x − A).
-                let motion = move |x: [f64; 2]| [side * x[1], -side * (x[0] - a)];
-                Ok((n, -side, [a * sn - f, a * cs, -a * sn], foot, Box::new(motion)))
+                Ok(FaceLine { n, beta_s: -side, p: [a * sn - f, a * cs, -a * sn], foot, pivot: Some((a, side)) })
             }
         }
     }
 
     fn flat(&self, theta: f64, [s, s1, s2, _]: [f64; 4], side: f64) -> Result<Sample, CamError> {
-        let (n, beta_s, [p, p_s, p_ss], foot, motion) = self.face(s, side)?;
+        let face = self.face(s, side)?;
+        let (n, beta_s, [p, p_s, p_ss], foot) = (face.n, face.beta_s, face.p, face.foot);
         let alpha = n[1].atan2(n[0]) - theta;
         let (alpha_t, alpha_tt) = (beta_s * s1 - 1.0, beta_s * s2);
         let (p_t, p_tt) = (p_s * s1, p_ss * s1 * s1 + p_s * s2);
@@ -230,7 +223,7 @@ impl Cam {
         let x = [p * ca - p_a * sa, p * sa + p_a * ca];
         let ground = rotate(theta, x);
         let along = perp(n);
-        let mv = motion(ground);
+        let mv = face.motion(ground);
         let cam = [-ground[1], ground[0]]; // J x: the cam's point moving at unit ω
         let slip = (cam[0] - s1 * mv[0]) * along[0] + (cam[1] - s1 * mv[1]) * along[1];
         Ok(Sample {
@@ -273,6 +266,28 @@ impl Cam {
             (Guide::Oscillating { pivot, arm }, Follower::Roller(_)) => {
                 (((pivot - arm).abs() - r).max(0.0), pivot + arm - r)
             }
+        }
+    }
+}
+
+/// A flat face's line in the ground: x·n̂ = p, n̂ at angle β; β's and
+/// p's derivatives in the lift; the face's foot (on the axis, or nearest
+/// the pivot); the pivot A = (a, 0) and σ of an oscillating follower.
+struct FaceLine {
+    n: [f64; 2],
+    beta_s: f64,
+    /// [p, p_s, p_ss].
+    p: [f64; 3],
+    foot: [f64; 2],
+    pivot: Option<(f64, f64)>,
+}
+
+impl FaceLine {
+    /// ∂x/∂s of the face's point x: along the axis, or −σ J(x − A) about the pivot.
+    fn motion(&self, x: [f64; 2]) -> [f64; 2] {
+        match self.pivot {
+            None => [1.0, 0.0],
+            Some((a, side)) => [side * x[1], -side * (x[0] - a)],
         }
     }
 }

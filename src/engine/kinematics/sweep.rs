@@ -51,6 +51,8 @@ pub fn sweep_each(
     let mut c = Configuration::default();
     let single = m.drivers.len() == 1;
     let (dyads, mut trig) = (Dyads::new(m), Trig::default());
+    // The least jump of each curve parameter: 1e-3 of its period (of 1 m unbounded).
+    let jump_scale: Vec<f64> = m.parameter_periods().iter().map(|p| 1e-3 * p.unwrap_or(1.0)).collect();
     for (step, inputs) in positions.iter().enumerate() {
         deadline.check(|| format!("the mechanism was assembled at {step} of {} positions", positions.len()))?;
         let predict = |q: &mut Vec<f64>| {
@@ -86,7 +88,7 @@ pub fn sweep_each(
         failure = None;
         c.jumped.clear();
         if let Some(predicted) = &predicted {
-            c.jumped.extend(jumps(m, &base, predicted, &c.q));
+            c.jumped.extend(jumps(m.n_body_coordinates(), &jump_scale, [&base, predicted, &c.q]));
         }
         // One input: g = dq/dφ and h = d²q/dφ² give q̇ = gω and q̈ = gα + hω²
         // (γ is quadratic in q̇), and they are the next step's predictor.
@@ -128,15 +130,14 @@ pub fn sweep_each(
     }
 }
 
-/// The curve parameters' columns where q settled far from the prediction:
-/// more than ten times the predicted change, and more than 1e-3 of the
-/// curve's period (1e-3 m along a line or an open curve).
-fn jumps<'a>(m: &Mechanism, base: &'a [f64], predicted: &'a [f64], q: &'a [f64]) -> impl Iterator<Item = usize> + 'a {
-    let first = m.n_body_coordinates();
-    let scale: Vec<f64> = m.parameter_periods().iter().map(|p| 1e-3 * p.unwrap_or(1.0)).collect();
+/// The curve parameters' columns (from `first`) where q settled far from
+/// the prediction: more than ten times the predicted change from the last
+/// position, and more than `least` (1e-3 of the curve's period; 1e-3 m
+/// along a line or an open curve).
+fn jumps<'a>(first: usize, least: &'a [f64], [base, predicted, q]: [&'a [f64]; 3]) -> impl Iterator<Item = usize> + 'a {
     (first..q.len()).filter(move |&c| {
         let (step, off) = ((predicted[c] - base[c]).abs(), (q[c] - predicted[c]).abs());
-        off > 10.0 * step && off > scale[c - first]
+        off > 10.0 * step && off > least[c - first]
     })
 }
 
