@@ -34,7 +34,7 @@ pub fn solve(
     let part = parts::value_at(Some(k), &tree, pointer, unit)?;
     let pointer = format!("/{}", pointer.trim_start_matches('/'));
     let part = part.ok_or(ApiError::NoPart { id: "(offline)".into(), pointer })?;
-    Ok(parts::text_of(&part, false).1.into_bytes())
+    Ok(parts::text_of(&part, false, Default::default()).1.into_bytes())
 }
 
 /// The service's state, of `kinds`, on a store in memory.

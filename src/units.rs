@@ -11,6 +11,10 @@
 
 use std::f64::consts::PI;
 
+mod written;
+use written::number_length;
+pub use written::{number, suggestion};
+
 /// Exponents of (length, mass, time, angle).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Dim(pub [i8; 4]);
@@ -107,12 +111,17 @@ const UNITS: &[(&str, f64, Dim)] = &[
     ("h", 3600.0, Dim::TIME),
     ("rad", 1.0, Dim::ANGLE),
     ("deg", PI / 180.0, Dim::ANGLE),
+    // The degree sign, and the masculine ordinal a Spanish keyboard puts beside the 1.
+    ("°", PI / 180.0, Dim::ANGLE),
+    ("º", PI / 180.0, Dim::ANGLE),
     ("rev", 2.0 * PI, Dim::ANGLE),
     ("rpm", 2.0 * PI / 60.0, Dim::ANGULAR_SPEED),
     ("N", 1.0, Dim::FORCE),
     ("kN", 1e3, Dim::FORCE),
     ("MN", 1e6, Dim::FORCE),
     ("lbf", LBF, Dim::FORCE),
+    ("Nm", 1.0, Dim::TORQUE),
+    ("kNm", 1e3, Dim::TORQUE),
     ("J", 1.0, Dim::TORQUE),
     ("kJ", 1e3, Dim::TORQUE),
     ("MJ", 1e6, Dim::TORQUE),
@@ -137,10 +146,15 @@ pub struct Quantity {
 pub enum UnitError {
     #[error("'{0}' is not a number followed by a unit, e.g. \"300 rpm\"")]
     Malformed(String),
-    #[error("unknown unit '{0}'; known units: {known}", known = known_units())]
+    #[error("unknown unit '{0}'{hint}; known units: {known}", hint = hint(.0), known = known_units())]
     Unknown(String),
     #[error("a value in {found} where {expected} is expected")]
     WrongDimension { found: String, expected: String },
+}
+
+/// "; did you mean N*m?" where a known unit is close to `name`.
+fn hint(name: &str) -> String {
+    suggestion(name).map(|s| format!("; did you mean {s}?")).unwrap_or_default()
 }
 
 fn known_units() -> String {
@@ -201,51 +215,28 @@ fn table_unit(name: &str) -> Option<&'static (&'static str, f64, Dim)> {
     (same.next().is_none() && !milli_or_mega).then_some(found)
 }
 
-/// Length of the number at the start of `t`: sign, digits, point, exponent.
-fn number_length(t: &str) -> usize {
-    let b = t.as_bytes();
-    let digits = |mut i: usize| {
-        while i < b.len() && b[i].is_ascii_digit() {
-            i += 1;
-        }
-        i
-    };
-    let mut i = if b.first().is_some_and(|c| *c == b'+' || *c == b'-') { 1 } else { 0 };
-    i = digits(i);
-    if b.get(i) == Some(&b'.') {
-        i = digits(i + 1);
-    }
-    // An exponent only when digits follow it (`2e3`, not the `e` of a unit).
-    if b.get(i).is_some_and(|c| *c == b'e' || *c == b'E') {
-        let mut j = i + 1;
-        if b.get(j).is_some_and(|c| *c == b'+' || *c == b'-') {
-            j += 1;
-        }
-        if b.get(j).is_some_and(u8::is_ascii_digit) {
-            i = digits(j);
-        }
-    }
-    i
-}
-
 /// Parses `"VALUE"` (SI) or `"VALUE UNIT"`; the space may be left out
 /// (`"60rpm"`, `"4%"`).
 pub fn parse_quantity(text: &str) -> Result<Quantity, UnitError> {
     let t = text.trim();
     let spaced = t.find(|c: char| c.is_whitespace()).unwrap_or(t.len());
     let split = match number_length(t) {
-        n if n > 0 && n < spaced && t[..spaced].parse::<f64>().is_err() => n,
+        n if n > 0 && n < spaced && number(&t[..spaced]).is_none() => n,
         _ => spaced,
     };
-    let (number, unit) = t.split_at(split);
-    let value: f64 = number.parse().map_err(|_| UnitError::Malformed(text.into()))?;
+    let (written, unit) = t.split_at(split);
+    let value = number(written).ok_or_else(|| UnitError::Malformed(text.into()))?;
     if !value.is_finite() {
         return Err(UnitError::Malformed(text.into()));
     }
     if unit.trim().is_empty() {
         return Ok(Quantity { si: value, dim: Dim::NONE });
     }
-    let (factor, dim) = parse_unit(unit)?;
+    // An operator where a unit's name should start (`20*t`) is no quantity.
+    let (factor, dim) = parse_unit(unit).map_err(|e| match e {
+        UnitError::Unknown(name) if name.is_empty() => UnitError::Malformed(text.into()),
+        e => e,
+    })?;
     Ok(Quantity { si: value * factor, dim })
 }
 
@@ -253,7 +244,7 @@ pub fn parse_quantity(text: &str) -> Result<Quantity, UnitError> {
 /// expected dimension.
 pub fn parse_as(text: &str, expected: Dim) -> Result<f64, UnitError> {
     let q = parse_quantity(text)?;
-    let bare = text.trim().parse::<f64>().is_ok();
+    let bare = number(text).is_some();
     if q.dim == expected || bare {
         Ok(q.si)
     } else {
@@ -302,12 +293,16 @@ mod tests {
             ("h", 3600.0, Dim::TIME),
             ("rad", 1.0, Dim::ANGLE),
             ("deg", PI / 180.0, Dim::ANGLE),
+            ("°", PI / 180.0, Dim::ANGLE),
+            ("º", PI / 180.0, Dim::ANGLE),
             ("rev", 2.0 * PI, Dim::ANGLE),
             ("rpm", PI / 30.0, Dim::ANGULAR_SPEED),
             ("N", 1.0, Dim::FORCE),
             ("kN", 1000.0, Dim::FORCE),
             ("MN", 1e6, Dim::FORCE),
             ("lbf", 4.448_221_615_260_5, Dim::FORCE),
+            ("Nm", 1.0, Dim::TORQUE),
+            ("kNm", 1000.0, Dim::TORQUE),
             ("J", 1.0, Dim::TORQUE),
             ("kJ", 1000.0, Dim::TORQUE),
             ("MJ", 1e6, Dim::TORQUE),
@@ -377,6 +372,15 @@ mod tests {
             ("90DEG", PI / 2.0, Dim::ANGLE),
             ("3 KG", 3.0, Dim::MASS),
             ("2 Mn", 2e6, Dim::FORCE),
+            ("0,02", 0.02, Dim::NONE),
+            ("1,5 m", 1.5, Dim::LENGTH),
+            ("-2,5e-1KW", -250.0, Dim::POWER),
+            ("20°", PI / 9.0, Dim::ANGLE),
+            ("20 °", PI / 9.0, Dim::ANGLE),
+            ("20º", PI / 9.0, Dim::ANGLE),
+            ("90 °/s", PI / 2.0, Dim::ANGULAR_SPEED),
+            ("10 Nm", 10.0, Dim::TORQUE),
+            ("1,2 kNm", 1200.0, Dim::TORQUE),
         ];
         for &(text, si, dim) in cases {
             let q = parse_quantity(text).unwrap_or_else(|e| panic!("{text}: {e}"));

@@ -7,7 +7,7 @@ use super::body::{Chunks, guarded};
 use super::job::{Job, JobList, job_chunks};
 use super::kind;
 use super::read::{self, READ_MEMORY_FACTOR, load};
-use super::tables::{self, AngleUnit, Angles};
+use super::tables::{self, AngleUnit, Angles, Decimal, DecimalMark};
 use crate::kind::problem::{ApiError, FieldError, Problem, ReadErrors};
 use crate::store::{Filter, Page};
 use axum::body::Body;
@@ -35,6 +35,7 @@ fn json_answer(body: Chunks, reserved: OwnedSemaphorePermit) -> Response {
     params(
         ("id" = String, Path, description = "Job id"),
         ("angles" = Option<AngleUnit>, Query, description = "With `Accept: text/csv`: `rad` (default) or `deg`"),
+        ("decimal" = Option<DecimalMark>, Query, description = "With `Accept: text/csv`: `point` (default) or `comma` (then `;` between the columns)"),
     ),
     responses(
         (status = 200, description = "The job (JSON), or its table with `Accept: text/csv`",
@@ -48,10 +49,10 @@ pub async fn get(
     headers: HeaderMap,
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
 ) -> Result<Response, ApiError> {
-    let q = read::query(q, &["angles"])?;
-    Angles::parse(q.get("angles")).map_err(|e| ApiError::BadQuery(vec![e]))?;
+    let q = read::query(q, &["angles", "decimal"])?;
+    let style = (Angles::parse(q.get("angles")).map_err(|e| ApiError::BadQuery(vec![e]))?, Decimal::of(&q)?);
     if read::wants(&headers, None, "text/csv") {
-        return csv_answer(&state, &id, q.get("angles")).await;
+        return csv_answer(&state, &id, style).await;
     }
     let (row, reserved) = load(&state, &id, READ_MEMORY_FACTOR).await?;
     let mut body = Chunks::default();
@@ -199,6 +200,7 @@ fn list_params(
     params(
         ("id" = String, Path, description = "Job id"),
         ("angles" = Option<AngleUnit>, Query, description = "`rad` (default) or `deg`: angle columns in degrees, their header saying so"),
+        ("decimal" = Option<DecimalMark>, Query, description = "`point` (default) or `comma`: numbers with a decimal comma, the columns separated by `;`"),
     ),
     responses(
         (status = 200, description = "CSV table", body = String, content_type = "text/csv"),
@@ -210,16 +212,16 @@ pub async fn csv(
     Path(id): Path<String>,
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
 ) -> Result<Response, ApiError> {
-    let q = read::query(q, &["angles"])?;
-    csv_answer(&state, &id, q.get("angles")).await
+    let q = read::query(q, &["angles", "decimal"])?;
+    let style = (Angles::parse(q.get("angles")).map_err(|e| ApiError::BadQuery(vec![e]))?, Decimal::of(&q)?);
+    csv_answer(&state, &id, style).await
 }
 
 /// The CSV of a stored job ([`tables::result_csv`]), converted off the async workers.
-async fn csv_answer(state: &AppState, id: &str, angles: Option<&String>) -> Result<Response, ApiError> {
-    let angles = Angles::parse(angles).map_err(|e| ApiError::BadQuery(vec![e]))?;
+async fn csv_answer(state: &AppState, id: &str, style: (Angles, Decimal)) -> Result<Response, ApiError> {
     let (row, result, reserved) = read::result_tree(state, id).await?;
     let kind = state.kinds.find(&row.kind);
-    let body = tokio::task::spawn_blocking(move || tables::result_csv(kind, &result, angles))
+    let body = tokio::task::spawn_blocking(move || tables::result_csv(kind, &result, style))
         .await
         .map_err(|e| ApiError::Internal(format!("csv task: {e}")))??;
     let disposition = format!("attachment; filename=\"{}-{id}.csv\"", row.kind);

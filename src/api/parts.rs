@@ -6,7 +6,7 @@ use super::AppState;
 use super::body::guarded;
 use super::kind;
 use super::read::{query, result_tree, wants};
-use super::tables::{self, AngleUnit, Angles, Format, Values};
+use super::tables::{self, AngleUnit, Angles, Decimal, DecimalMark, Format, Values};
 use crate::kind::problem::{ApiError, FieldError, Problem, ReadErrors};
 use crate::store::JobRow;
 use axum::body::Body;
@@ -29,6 +29,7 @@ use std::collections::HashMap;
         ("pointer" = String, Path, description = "JSON pointer into the result without its leading `/`: \
             `inertia_exact`, `flywheel_inertia/exact`, `steps/90/driving` (RFC 6901: `~1` for a `/` in a key, `~0` for `~`)"),
         ("unit" = Option<String>, Query, description = "Convert a number to this unit, e.g. `slug*ft^2`, `rpm`, `deg`, `%`"),
+        ("decimal" = Option<DecimalMark>, Query, description = "`point` (default) or `comma`: `0,628…` for a sheet in a Spanish locale"),
     ),
     responses(
         (status = 200, description = "The value alone (text/plain), or JSON for an object or array or with `Accept: application/json`",
@@ -46,26 +47,29 @@ pub async fn part(
     headers: HeaderMap,
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
 ) -> Result<Response, ApiError> {
-    let q = query(q, &["unit"])?;
+    let q = query(q, &["unit", "decimal"])?;
     let (row, result, _reserved) = result_tree(&state, &id).await?;
-    answer(&state.kinds, &row, &result, &pointer, q.get("unit").filter(|u| !u.trim().is_empty()), &headers)
+    answer(&state.kinds, &row, &result, &pointer, &q, &headers)
 }
 
-/// The part of `result` (of job `row`) at `pointer`, converted to `unit`,
-/// as text or JSON as [`part`] says.
+/// The part of `result` (of job `row`) at `pointer`, converted to the
+/// query's `unit` and written with its `decimal` mark, as text or JSON as
+/// [`part`] says.
 pub fn answer(
     kinds: &kind::Registry,
     row: &JobRow,
     result: &Value,
     pointer: &str,
-    unit: Option<&String>,
+    q: &HashMap<String, String>,
     headers: &HeaderMap,
 ) -> Result<Response, ApiError> {
+    let decimal = Decimal::of(q)?;
+    let unit = q.get("unit").filter(|u| !u.trim().is_empty());
     let Some(value) = value_at(kinds.find(&row.kind), result, pointer, unit)? else {
         let pointer = format!("/{}", pointer.trim_start_matches('/'));
         return Err(ApiError::NoPart { id: row.id.clone(), pointer });
     };
-    let (mime, text) = text_of(&value, wants(headers, None, "application/json"));
+    let (mime, text) = text_of(&value, wants(headers, None, "application/json"), decimal);
     Ok(([(header::CONTENT_TYPE, mime)], text).into_response())
 }
 
@@ -97,7 +101,7 @@ pub fn value_at(
 
 /// A part as its answer's type and text: a scalar alone as text (numbers in
 /// shortest round-trip form), an object or array (or any, when `json`) as JSON.
-pub fn text_of(value: &Value, json: bool) -> (&'static str, String) {
+pub fn text_of(value: &Value, json: bool, decimal: Decimal) -> (&'static str, String) {
     if json || value.is_object() || value.is_array() {
         return ("application/json", value.to_string());
     }
@@ -105,7 +109,7 @@ pub fn text_of(value: &Value, json: bool) -> (&'static str, String) {
         Some(x) if !value.is_i64() && !value.is_u64() => tables::number_text(x),
         _ => crate::kind::cell(value),
     };
-    ("text/plain; charset=utf-8", text)
+    ("text/plain; charset=utf-8", decimal.written(text))
 }
 
 /// Every scalar of a job's result with its unit.
@@ -118,6 +122,7 @@ pub fn text_of(value: &Value, json: bool) -> (&'static str, String) {
         ("id" = String, Path, description = "Job id"),
         ("format" = Option<Format>, Query, description = "`json` (default) or `csv`; the same as `Accept: text/csv`"),
         ("angles" = Option<AngleUnit>, Query, description = "`rad` (default) or `deg`"),
+        ("decimal" = Option<DecimalMark>, Query, description = "`point` (default) or `comma`: the CSV's numbers with a decimal comma, its columns separated by `;`"),
     ),
     responses(
         (status = 200, description = "Every scalar of the result",
@@ -131,8 +136,9 @@ pub async fn values(
     headers: HeaderMap,
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
 ) -> Result<Response, ApiError> {
-    let q = query(q, &["format", "angles"])?;
+    let q = query(q, &["format", "angles", "decimal"])?;
     let angles = Angles::parse(q.get("angles")).map_err(|e| ApiError::BadQuery(vec![e]))?;
+    let decimal = Decimal::of(&q)?;
     super::read::format_checked(&q)?;
     let csv = wants(&headers, q.get("format"), "text/csv");
     let (row, result, reserved) = result_tree(&state, &id).await?;
@@ -140,7 +146,7 @@ pub async fn values(
     let (mime, text) = tokio::task::spawn_blocking(move || {
         let mut values = tables::flatten(kind, &result);
         if csv {
-            return tables::values_csv(values, angles).map(|t| ("text/csv; charset=utf-8", t));
+            return tables::values_csv(values, (angles, decimal)).map(|t| ("text/csv; charset=utf-8", t));
         }
         if angles == Angles::Deg {
             for s in values.iter_mut().filter(|s| s.unit.as_deref() == Some("rad")) {

@@ -47,6 +47,47 @@ pub enum Format {
     Csv,
 }
 
+/// `?decimal=` of a text answer (the OpenAPI document's enum).
+#[derive(ToSchema)]
+#[schema(rename_all = "lowercase")]
+#[allow(dead_code)]
+pub enum DecimalMark {
+    Point,
+    Comma,
+}
+
+/// How a text answer writes its numbers: `?decimal=comma` for a sheet in a
+/// Spanish locale, where `.` separates thousands — `0,628…`, and a CSV's
+/// columns separated by `;`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Decimal {
+    #[default]
+    Point,
+    Comma,
+}
+
+impl Decimal {
+    /// `?decimal=point|comma` of a read's query, 400 otherwise.
+    pub fn of(q: &std::collections::HashMap<String, String>) -> Result<Self, ApiError> {
+        match q.get("decimal").map(|t| t.trim().to_ascii_lowercase()).as_deref() {
+            None | Some("point") => Ok(Self::Point),
+            Some("comma") => Ok(Self::Comma),
+            Some(_) => Err(ApiError::BadQuery(vec![FieldError::parameter("decimal", "must be point or comma")])),
+        }
+    }
+
+    /// A cell or a plain answer as this mark writes it: a number's decimal
+    /// point as a comma; any other text as it is.
+    pub fn written(self, text: String) -> String {
+        let number = self == Self::Comma && text.contains('.') && text.parse::<f64>().is_ok();
+        if number { text.replacen('.', ",", 1) } else { text }
+    }
+
+    fn delimiter(self) -> u8 {
+        if self == Self::Comma { b';' } else { b',' }
+    }
+}
+
 /// How angle columns and values are written.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Angles {
@@ -140,7 +181,7 @@ pub fn number_text(x: f64) -> String {
 }
 
 /// The CSV of a kind's table, angle columns (`…_rad`) in degrees on request.
-pub fn table_csv(table: Table, angles: Angles) -> Result<String, ApiError> {
+pub fn table_csv(table: Table, (angles, decimal): (Angles, Decimal)) -> Result<String, ApiError> {
     let (mut header, mut rows) = table;
     if angles == Angles::Deg {
         let columns: Vec<usize> = (0..header.len()).filter(|&c| header[c].ends_with("_rad")).collect();
@@ -153,11 +194,11 @@ pub fn table_csv(table: Table, angles: Angles) -> Result<String, ApiError> {
             }
         }
     }
-    write_csv(std::iter::once(header).chain(rows))
+    write_csv(std::iter::once(header).chain(rows), decimal)
 }
 
 /// The CSV `pointer,value,unit` of every scalar, angles in degrees on request.
-pub fn values_csv(values: Vec<Scalar>, angles: Angles) -> Result<String, ApiError> {
+pub fn values_csv(values: Vec<Scalar>, (angles, decimal): (Angles, Decimal)) -> Result<String, ApiError> {
     let header = ["pointer", "value", "unit"].map(String::from).to_vec();
     let rows = values.into_iter().map(|s| {
         let (value, unit) = match (s.value.as_f64(), s.unit.as_deref()) {
@@ -166,11 +207,11 @@ pub fn values_csv(values: Vec<Scalar>, angles: Angles) -> Result<String, ApiErro
         };
         vec![s.pointer, value, unit]
     });
-    write_csv(std::iter::once(header).chain(rows))
+    write_csv(std::iter::once(header).chain(rows), decimal)
 }
 
-fn write_csv(records: impl Iterator<Item = Vec<String>>) -> Result<String, ApiError> {
-    let mut out = Csv::default();
+fn write_csv(records: impl Iterator<Item = Vec<String>>, decimal: Decimal) -> Result<String, ApiError> {
+    let mut out = Csv::new(decimal);
     for record in records {
         out.record(record)?;
     }
@@ -181,19 +222,26 @@ fn write_csv(records: impl Iterator<Item = Vec<String>>) -> Result<String, ApiEr
 /// would take for a formula — beginning with `=`, `+`, `-`, `@`, a tab or a
 /// carriage return, such as a student's name `=HYPERLINK(…)` — is written
 /// with a `'` before it, as OWASP recommends against CSV injection; a
-/// number (`-3.5`) is written as it is.
-pub struct Csv(csv::Writer<Vec<u8>>);
+/// number (`-3.5`) is written as it is, with a decimal comma and `;`
+/// between the columns where the client asked for [`Decimal::Comma`].
+pub struct Csv(csv::Writer<Vec<u8>>, Decimal);
 
 impl Default for Csv {
     fn default() -> Self {
-        Self(csv::Writer::from_writer(Vec::new()))
+        Self::new(Decimal::Point)
     }
 }
 
 impl Csv {
+    /// An empty CSV whose numbers are written with `decimal`.
+    pub fn new(decimal: Decimal) -> Self {
+        Self(csv::WriterBuilder::new().delimiter(decimal.delimiter()).from_writer(Vec::new()), decimal)
+    }
+
     /// One row.
     pub fn record<S: AsRef<str>>(&mut self, cells: impl IntoIterator<Item = S>) -> Result<(), ApiError> {
-        let cells = cells.into_iter().map(|c| inert(c.as_ref()));
+        let decimal = self.1;
+        let cells = cells.into_iter().map(|c| decimal.written(inert(c.as_ref())));
         self.0.write_record(cells).map_err(|e| ApiError::Internal(format!("CSV: {e}")))
     }
 
@@ -212,10 +260,10 @@ fn inert(cell: &str) -> String {
 
 /// The CSV of a stored result: its kind's table, or its values when the
 /// kind has none (never an empty body).
-pub fn result_csv(kind: Option<&dyn AnyKind>, result: &Value, angles: Angles) -> Result<String, ApiError> {
+pub fn result_csv(kind: Option<&dyn AnyKind>, result: &Value, style: (Angles, Decimal)) -> Result<String, ApiError> {
     let Some(kind) = kind else { return Err(ApiError::Internal("a stored job of an unknown kind".into())) };
     match kind.table(result) {
-        Some(table) if !table.1.is_empty() => table_csv(table, angles),
-        _ => values_csv(flatten(kind, result), angles),
+        Some(table) if !table.1.is_empty() => table_csv(table, style),
+        _ => values_csv(flatten(kind, result), style),
     }
 }

@@ -1,17 +1,21 @@
 //! A Function's table given as CSV text (`{"csv": "angle,torque\n0,10\n..."}`),
 //! as a lab pastes it from a spreadsheet: two columns, angle and value, an
-//! optional header row; `,` `;` or a tab between the columns, and the
-//! decimal comma of a `;`-separated sheet.
+//! optional header row; `,` `;` or a tab between the columns, a decimal
+//! comma in a `;`- or tab-separated sheet (or a quoted cell of a `,` one).
 
 use super::problem::FieldError;
 use super::quantity::{Quantity, TableDto};
+
+/// What a row with more cells than columns is told: its decimal commas
+/// split it where `,` separates the columns.
+pub const COMMA_HINT: &str =
+    "; a decimal comma in a CSV separated by commas is written in quotes (\"0,02\"), or the columns separated by ;";
 
 /// The table of `text`, or the error of its first bad row at `at` (the
 /// `csv` field's pointer).
 pub fn table(text: &str, at: &str, max_rows: usize) -> Result<TableDto, FieldError> {
     let first = text.lines().find(|l| !l.trim().is_empty()).unwrap_or("");
     let delimiter = [b'\t', b';', b','].into_iter().find(|d| first.as_bytes().contains(d)).unwrap_or(b',');
-    let decimal_comma = delimiter != b',';
     let mut reader = csv::ReaderBuilder::new()
         .has_headers(false)
         .delimiter(delimiter)
@@ -26,12 +30,11 @@ pub fn table(text: &str, at: &str, max_rows: usize) -> Result<TableDto, FieldErr
             continue;
         }
         if record.len() != 2 {
-            return Err(FieldError::at(at, format!("row {row} has {} columns; give two: angle, value", record.len())));
+            let hint = if record.len() > 2 && delimiter == b',' { COMMA_HINT } else { "" };
+            let message = format!("row {row} has {} columns; give two: angle, value{hint}", record.len());
+            return Err(FieldError::at(at, message));
         }
-        let number = |cell: &str| {
-            let cell = if decimal_comma { cell.replace(',', ".") } else { cell.to_string() };
-            cell.parse::<f64>().ok().filter(|v| v.is_finite())
-        };
+        let number = |cell: &str| crate::units::number(cell).filter(|v| v.is_finite());
         match (number(&record[0]), number(&record[1])) {
             (Some(a), Some(v)) => {
                 angle.push(Quantity::Number(a));
@@ -78,6 +81,9 @@ mod tests {
     fn bad_rows_are_named() {
         assert!(table("0,1\n2,x\n", "/csv", 100).unwrap_err().message.starts_with("row 2:"));
         assert!(table("0,1,2\n", "/csv", 100).unwrap_err().message.contains("3 columns"));
+        // An unquoted decimal comma where commas separate the columns: how to write it.
+        assert!(table("0,1,5\n", "/csv", 100).unwrap_err().message.contains("in quotes (\"0,02\")"));
+        assert_eq!(rows("0,\"1,5\"\n90,\"-2,25\"\n"), [(0.0, 1.5), (90.0, -2.25)]);
         assert!(table("a,b\n", "/csv", 100).unwrap_err().message.contains("no rows"));
         assert!(table("0,1\n1,2\n2,3\n", "/csv", 2).unwrap_err().message.contains("more than 2"));
     }

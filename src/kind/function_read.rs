@@ -26,9 +26,19 @@ impl Errors {
         variables: &[&str],
     ) -> Option<Function> {
         match f {
+            FunctionDto::Constant(Quantity::Text(s)) if self.is_expression(s, variables) => {
+                self.fail(at, format!("'{s}' is an expression, not a quantity: write it as {{\"expr\": \"{s}\"}}"))
+            }
             FunctionDto::Constant(q) => self.quantity(q, dim, at).map(Function::Constant),
             FunctionDto::Spec(spec) => self.function_spec(spec, dim, period, at, variables),
         }
+    }
+
+    /// A text that is no quantity but an expression of `variables` (`"20*t"`).
+    fn is_expression(&self, text: &str, variables: &[&str]) -> bool {
+        let (length, depth) = (self.limits.expression_length, self.limits.expression_depth);
+        units::parse_quantity(text).is_err()
+            && Expr::compile_with(text, variables, &self.constants, length, depth).is_ok_and(|e| e.constant().is_none())
     }
 
     fn function_spec(&mut self, s: &FunctionSpec, dim: Dim, period: f64, at: &str, vars: &[&str]) -> Option<Function> {

@@ -10,6 +10,7 @@ mod cli;
 mod constants;
 mod contact;
 mod crash;
+mod decimal;
 mod deferred;
 mod dimensions;
 mod dynamics;

@@ -6,7 +6,7 @@
 //! bad row says why in `error` and the others are graded. Students with the
 //! same parameters share one stored reference job.
 
-use super::{CheckOutput, CheckRequest, ToleranceDto, bare_number, grade_with};
+use super::{CheckOutput, CheckRequest, ToleranceDto, grade_with};
 use crate::api::AppState;
 use crate::api::json::RawBody;
 use crate::api::read;
@@ -25,16 +25,14 @@ use std::collections::{BTreeMap, HashMap, HashSet};
 use std::sync::{Arc, OnceLock};
 
 /// The query names of a grade: the tolerance and `reveal`.
-pub const QUERY: &[&str] = &["relative", "absolute", "sigfigs", "zero_level", "reveal", "label"];
+pub const QUERY: &[&str] = &["relative", "absolute", "sigfigs", "zero_level", "reveal", "label", "decimal"];
 
 /// The tolerance and `reveal` of a grade's query.
 pub fn options(q: &HashMap<String, String>) -> Result<(ToleranceDto, bool), ApiError> {
     let number = |name: &str| -> Result<Option<f64>, ApiError> {
         q.get(name)
             .map(|v| {
-                v.trim()
-                    .parse::<f64>()
-                    .ok()
+                crate::units::number(v)
                     .filter(|x| x.is_finite() && *x >= 0.0)
                     .ok_or_else(|| bad(name, "must be a number ≥ 0"))
             })
@@ -113,7 +111,7 @@ pub async fn class(
         .filter(|(i, _)| *i != l.student && Some(*i) != l.variant && !l.answers.iter().any(|a| a.0 == *i))
         .map(|(_, c)| c.clone())
         .collect();
-    let mut out = Csv::default();
+    let mut out = Csv::new(crate::api::tables::Decimal::of(q)?);
     let mut head = vec!["student".to_string(), "score".to_string()];
     for (_, name, _) in &l.answers {
         head.extend([format!("{name} pass"), format!("{name} relative_error")]);
@@ -236,7 +234,7 @@ async fn graded(
         .iter()
         .map(|(i, name, unit)| {
             let cell = row[*i].trim();
-            let bare = bare_number(cell).is_some();
+            let bare = crate::units::number(cell).is_some();
             let text = match unit {
                 Some(u) if bare => format!("{cell} {u}"),
                 _ => cell.to_string(),
@@ -275,7 +273,8 @@ async fn graded(
         ("absolute" = Option<f64>, Query, description = "Absolute tolerance, SI (default 0)"),
         ("sigfigs" = Option<u32>, Query, description = "Significant figures (PrairieLearn's rule), replacing `relative`"),
         ("zero_level" = Option<f64>, Query, description = "Below it (SI) an expected value is compared absolutely (default 1e-12)"),
-        ("reveal" = Option<bool>, Query, description = "Whether the feedback shows expected values (default true)")),
+        ("reveal" = Option<bool>, Query, description = "Whether the feedback shows expected values (default true)"),
+        ("decimal" = Option<crate::api::tables::DecimalMark>, Query, description = "`point` (default) or `comma`: the CSV's numbers with a decimal comma, its columns separated by `;`")),
     request_body(description = "CSV: `student`, parameter columns or `variant`, answer columns named by pointer",
         content((String = "text/csv", example = "student,variant,inertia_exact [kg*m^2],omega_max\nana,1,459.6,6.4\nben,2,512,6.39\n"))),
     responses(

@@ -105,7 +105,7 @@ fn suffix(unit: &str) -> String {
 fn given_text(answer: &Value, g: f64, unit: &str) -> String {
     let si = format!("{}{}", short(g), suffix(unit));
     match answer.as_str().map(str::trim) {
-        Some(text) if bare_number(text).is_none() && text != si => {
+        Some(text) if crate::units::number(text).is_none() && text != si => {
             format!("{text} = {si}")
         }
         _ => si,
@@ -121,7 +121,7 @@ fn read(answer: &Value, unit: &str) -> Result<f64, String> {
     let text = match answer {
         Value::Number(n) => return n.as_f64().ok_or_else(|| "not a number".to_string()),
         Value::String(s) if s.trim().is_empty() => return Err("no answer".into()),
-        Value::String(s) => decimal_point(s),
+        Value::String(s) => s.clone(),
         Value::Null => return Err("no answer".into()),
         other => return Err(format!("{other} is not a number")),
     };
@@ -130,17 +130,6 @@ fn read(answer: &Value, unit: &str) -> Result<f64, String> {
         UnitError::WrongDimension { found, .. } => format!("'{text}' is in {found}, where the answer is in {unit}"),
         e => format!("'{text}' is not a number or a quantity ({})", e.to_string().trim_end_matches('.')),
     })
-}
-
-/// A bare number as a student writes it (a decimal comma allowed), or None for a quantity.
-pub fn bare_number(text: &str) -> Option<f64> {
-    decimal_point(text).trim().parse().ok()
-}
-
-/// "353,5" as "353.5": a decimal comma (when the number has no point).
-fn decimal_point(s: &str) -> String {
-    let number = s.split_whitespace().next().unwrap_or("");
-    if number.matches(',').count() == 1 && !number.contains('.') { s.replacen(',', ".", 1) } else { s.to_string() }
 }
 
 /// Which slips apply to a unit: degrees where radians, rpm where rad/s.

@@ -11,7 +11,6 @@ mod items;
 mod platforms;
 mod run;
 
-pub use items::bare_number;
 pub use platforms::{Gradescope, PrairieLearn};
 pub use run::{CHECK, CheckKind, check_job, post};
 

@@ -5,7 +5,7 @@
 
 use super::model::{Parameter, Template};
 use crate::kind::problem::{ApiError, FieldError};
-use crate::units::{Dim, parse_quantity, parse_unit};
+use crate::units::{Dim, number, parse_quantity, parse_unit};
 use serde_json::Value;
 use sha2::{Digest, Sha256};
 use std::collections::{BTreeMap, HashMap};
@@ -49,13 +49,13 @@ pub fn value_for(p: &Parameter, text: &str) -> Result<Value, String> {
         Some(u) => parse_unit(u).map_err(|e| format!("the parameter's unit {u}: {e}"))?,
         None => (1.0, Dim::NONE),
     };
-    let si = match text.parse::<f64>() {
-        Ok(x) if x.is_finite() => {
+    let si = match number(text) {
+        Some(x) if x.is_finite() => {
             checked(p, x, text)?;
             x * factor
         }
-        Ok(_) => return Err("must be finite".into()),
-        Err(_) => {
+        Some(_) => return Err("must be finite".into()),
+        None => {
             let q = parse_quantity(text).map_err(|e| format!("'{text}' is neither a number nor a quantity: {e}"))?;
             if p.unit.is_none() {
                 return checked(p, q.si, text).map(|()| Value::String(text.into()));

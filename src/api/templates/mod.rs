@@ -152,6 +152,7 @@ pub async fn job(
     params(("id" = String, Path, description = "Template id"),
         ("pointer" = String, Path, description = "JSON pointer into the result without its leading `/`, e.g. `inertia_exact`"),
         ("unit" = Option<String>, Query, description = "Convert a number to this unit, e.g. `slug*ft^2`"),
+        ("decimal" = Option<super::tables::DecimalMark>, Query, description = "`point` (default) or `comma`: `0,628…` for a sheet in a Spanish locale"),
         ("parameters" = Option<HashMap<String, String>>, Query, style = Form, explode,
             description = "The template's parameters, e.g. `F=1200&eps=0.03`")),
     responses(
@@ -175,7 +176,7 @@ pub async fn result(
     let tree = row.result.len().saturating_mul(read::CSV_MEMORY_FACTOR - read::READ_MEMORY_FACTOR);
     reserved.merge(state.admission.memory(tree).await?);
     let result = serde_json::from_slice(&row.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
-    parts::answer(&state.kinds, &row, &result, &pointer, q.get("unit").filter(|u| !u.trim().is_empty()), &headers)
+    parts::answer(&state.kinds, &row, &result, &pointer, &q, &headers)
 }
 
 fn parameters(q: Result<Query<HashMap<String, String>>, QueryRejection>) -> Result<HashMap<String, String>, ApiError> {
@@ -217,7 +218,8 @@ pub async fn create(State(state): State<AppState>, body: JsonBody<NewTemplate>) 
 /// A parameter study: one variant per row of a CSV (or JSON) table.
 #[utoipa::path(post, path = "/v1/templates/{id}/table", operation_id = "post_template_table", tag = "templates",
     params(("id" = String, Path, description = "Template id"),
-        ("values" = Option<String>, Query, description = "Comma-separated JSON pointers of the values to answer per row, e.g. `inertia_exact,energy_fluctuation`")),
+        ("values" = Option<String>, Query, description = "Comma-separated JSON pointers of the values to answer per row, e.g. `inertia_exact,energy_fluctuation`"),
+        ("decimal" = Option<super::tables::DecimalMark>, Query, description = "`point` (default) or `comma`: the CSV answer's numbers with a decimal comma, its columns separated by `;`")),
     request_body(description = "CSV: a header row of parameter names (optionally `name [unit]`), a row per variant; or JSON",
         content((String = "text/csv", example = "F,eps\n1000,0.03\n1200,0.03\n"), (TableRequest = "application/json"))),
     responses(
@@ -235,9 +237,9 @@ pub async fn table(
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
     RawBody(body): RawBody,
 ) -> Result<Response, ApiError> {
-    let q = read::query(q, &["values", "label"])?;
+    let q = read::query(q, &["values", "label", "decimal"])?;
     let t = find(&state, &id).await?;
-    let (text, csv) = study(&state, &t, &headers, q.get("values"), &body).await?;
+    let (text, csv) = study(&state, &t, &headers, (q.get("values"), super::tables::Decimal::of(&q)?), &body).await?;
     let mime = if csv { "text/csv; charset=utf-8" } else { "application/json" };
     Ok(([(header::CONTENT_TYPE, mime)], text).into_response())
 }
@@ -253,7 +255,8 @@ pub async fn table(
         ("seed" = Option<u64>, Query, description = "The first variant, 0 to 2^63 − 1 (default 1)", maximum = 9223372036854775807_u64),
         ("count" = Option<u64>, Query, description = "How many, 1 to 1000 (default 10)", minimum = 1, maximum = 1000),
         ("values" = Option<String>, Query, description = "Comma-separated pointers of the reference values to answer, e.g. `inertia_exact`"),
-        ("format" = Option<super::tables::Format>, Query, description = "`json` (default) or `csv`; the same as `Accept: text/csv`")),
+        ("format" = Option<super::tables::Format>, Query, description = "`json` (default) or `csv`; the same as `Accept: text/csv`"),
+        ("decimal" = Option<super::tables::DecimalMark>, Query, description = "`point` (default) or `comma`: the CSV's numbers with a decimal comma, its columns separated by `;`")),
     responses(
         (status = 200, description = "The variants",
             content((Variants = "application/json"), (String = "text/csv", example = "variant,F [N*m],inertia_exact\n1,650,459.58\n"))),
@@ -266,7 +269,8 @@ pub async fn variants(
     headers: HeaderMap,
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
 ) -> Result<Response, ApiError> {
-    let q = read::query(q, &["seed", "count", "values", "format"])?;
+    let q = read::query(q, &["seed", "count", "values", "format", "decimal"])?;
+    let decimal = super::tables::Decimal::of(&q)?;
     read::format_checked(&q)?;
     let number = |name: &str, default: u64| {
         q.get(name).map_or(Ok(default), |v| {
@@ -278,9 +282,8 @@ pub async fn variants(
     let t = find(&state, &id).await?;
     let list = variants::list(&state, &t, seed, count, &values).await?;
     if read::wants(&headers, q.get("format"), "text/csv") {
-        return Ok(
-            ([(header::CONTENT_TYPE, "text/csv; charset=utf-8")], variants::csv(&t, &list, &values)?).into_response()
-        );
+        return Ok(([(header::CONTENT_TYPE, "text/csv; charset=utf-8")], variants::csv(&t, &list, &values, decimal)?)
+            .into_response());
     }
     Ok(axum::Json(list).into_response())
 }

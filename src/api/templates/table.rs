@@ -6,7 +6,7 @@
 use super::model::Template;
 use super::{RESERVED, Want, job_for};
 use crate::api::AppState;
-use crate::api::tables::{Csv, at, tokens};
+use crate::api::tables::{Csv, Decimal, at, tokens};
 use crate::kind::cell;
 use crate::kind::problem::{ApiError, FieldError};
 use axum::http::{HeaderMap, header};
@@ -54,7 +54,7 @@ pub async fn study(
     state: &AppState,
     t: &Template,
     headers: &HeaderMap,
-    values: Option<&String>,
+    (values, decimal): (Option<&String>, Decimal),
     body: &[u8],
 ) -> Result<(String, bool), ApiError> {
     let mime = mime(headers);
@@ -88,7 +88,7 @@ pub async fn study(
     }
     let given = rows.iter().map(|r| parameters_of(&header, r)).collect();
     let results = run(state, t, given, (&pointers, Want::Job)).await?;
-    let mut out = Csv::default();
+    let mut out = Csv::new(decimal);
     let names = pointers.iter().map(|p| p.trim_start_matches('/').to_string());
     let head = header.iter().map(|(raw, _, _)| raw.clone()).chain(names).chain(["job".into(), "error".into()]);
     out.record(head)?;
@@ -163,7 +163,9 @@ pub fn read_csv(text: &str) -> Result<(Vec<Column>, Vec<Vec<String>>), ApiError>
 
 /// Why a row has not one cell per column, if it has not (`row` counts the data rows from 1).
 pub fn ragged(header: &[Column], row: &[String], i: usize) -> Option<String> {
-    (row.len() != header.len()).then(|| format!("row {} has {} cells for {} columns", i + 1, row.len(), header.len()))
+    let hint = if row.len() > header.len() { crate::kind::function_csv::COMMA_HINT } else { "" };
+    (row.len() != header.len())
+        .then(|| format!("row {} has {} cells for {} columns{hint}", i + 1, row.len(), header.len()))
 }
 
 /// Every row whole, or a 400 naming the first that is not.

@@ -6,7 +6,7 @@
 use super::model::{Parameter, Template};
 use super::table::{bad, run};
 use crate::api::AppState;
-use crate::api::tables::Csv;
+use crate::api::tables::{Csv, Decimal};
 use crate::engine::variants::{Draw, Range, variant};
 use crate::kind::cell;
 use crate::kind::problem::ApiError;
@@ -118,10 +118,10 @@ pub async fn list(
 }
 
 /// The variants as CSV: `variant`, a column per drawn parameter (`name [unit]`), a column per value.
-pub fn csv(t: &Template, v: &Variants, values: &[String]) -> Result<String, ApiError> {
+pub fn csv(t: &Template, v: &Variants, values: &[String], decimal: Decimal) -> Result<String, ApiError> {
     let names: Vec<&String> = t.parameters.iter().filter(|(_, p)| range(p).is_some()).map(|(n, _)| n).collect();
     let heading = |n: &String| t.parameters[n].unit.as_ref().map_or_else(|| n.clone(), |u| format!("{n} [{u}]"));
-    let mut out = Csv::default();
+    let mut out = Csv::new(decimal);
     let head = ["variant".to_string()].into_iter().chain(names.iter().map(|n| heading(n)));
     out.record(head.chain(values.iter().map(|p| p.trim_start_matches('/').to_string())))?;
     for row in &v.variants {

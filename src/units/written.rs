@@ -1,0 +1,158 @@
+//! Numbers and units as people write them: a decimal comma (`0,02`, the
+//! Spanish lab's way) read wherever a number is text — query parameters,
+//! quantity strings, form fields, CSV cells — and, for a unit that is not
+//! known, the known one it is probably meant to be (`kgm2` → `kg*m^2`).
+//!
+//! One reader for every place: [`number`] here, and
+//! [`super::parse_quantity`] through [`number_length`].
+
+use super::{UNITS, table_unit};
+
+/// A number written with a decimal point or a decimal comma (`0.02`,
+/// `0,02`, `-1,5e3`): one comma and no point is the decimal comma; a
+/// thousands separator is not a decimal (`1.000,5` and `1,000.5` are not
+/// numbers). None for anything else; the value may be infinite (`inf`),
+/// which callers refuse as they see fit.
+pub fn number(text: &str) -> Option<f64> {
+    let t = text.trim();
+    match t.matches(',').count() {
+        0 => t.parse().ok(),
+        1 if !t.contains('.') => t.replacen(',', ".", 1).parse().ok(),
+        _ => None,
+    }
+}
+
+/// Length (bytes) of the number at the start of `t`: sign, digits, a
+/// decimal point or comma followed by digits, exponent.
+pub fn number_length(t: &str) -> usize {
+    let b = t.as_bytes();
+    let digits = |mut i: usize| {
+        while i < b.len() && b[i].is_ascii_digit() {
+            i += 1;
+        }
+        i
+    };
+    let mut i = if b.first().is_some_and(|c| *c == b'+' || *c == b'-') { 1 } else { 0 };
+    i = digits(i);
+    match b.get(i) {
+        Some(b'.') => i = digits(i + 1),
+        // A comma is a decimal one only with a digit after it.
+        Some(b',') if b.get(i + 1).is_some_and(u8::is_ascii_digit) => i = digits(i + 1),
+        _ => {}
+    }
+    // An exponent only when digits follow it (`2e3`, not the `e` of a unit).
+    if b.get(i).is_some_and(|c| *c == b'e' || *c == b'E') {
+        let mut j = i + 1;
+        if b.get(j).is_some_and(|c| *c == b'+' || *c == b'-') {
+            j += 1;
+        }
+        if b.get(j).is_some_and(u8::is_ascii_digit) {
+            i = digits(j);
+        }
+    }
+    i
+}
+
+/// The known unit that an unknown `name` probably means, written as the
+/// service reads it: a power without `^` (`m2` → `m^2`), two units run
+/// together (`kgm` → `kg*m`, `Nmm` → `N*mm`), a plural (`lbs` → `lb`), one
+/// letter off (`rmp` → `rpm`), or a Spanish word (`seg` → `s`, `grados` → `deg`).
+pub fn suggestion(name: &str) -> Option<String> {
+    let name = name.trim();
+    if name.is_empty() {
+        return None;
+    }
+    let words = [("seg", "s"), ("segundo", "s"), ("segundos", "s"), ("grado", "deg"), ("grados", "deg")];
+    if let Some((_, unit)) = words.iter().find(|(w, _)| w.eq_ignore_ascii_case(name)) {
+        return Some((*unit).to_string());
+    }
+    let stem = name.trim_end_matches(|c: char| c.is_ascii_digit());
+    let power = &name[stem.len()..];
+    let powered = |base: String| if power.is_empty() { base } else { format!("{base}^{power}") };
+    if !power.is_empty() && power.len() <= 1 && table_unit(stem).is_some() {
+        return Some(powered(stem.to_string()));
+    }
+    let plural = name.strip_suffix('s').filter(|s| s.len() >= 2 && table_unit(s).is_some());
+    if let Some(one) = plural {
+        return Some(one.to_string());
+    }
+    if let Some(pair) = run_together(stem) {
+        return Some(powered(pair));
+    }
+    (power.is_empty()).then(|| one_letter_off(name)).flatten()
+}
+
+/// `ab` read as two table units `a*b` (the first split that works).
+fn run_together(name: &str) -> Option<String> {
+    (1..name.len()).filter(|&i| name.is_char_boundary(i)).find_map(|i| {
+        let (a, b) = name.split_at(i);
+        (table_unit(a).is_some() && table_unit(b).is_some()).then(|| format!("{a}*{b}"))
+    })
+}
+
+/// The only table unit one edit (a letter changed, added, left out, or two
+/// swapped) from `name`, for names of two letters or more.
+fn one_letter_off(name: &str) -> Option<String> {
+    if name.chars().count() < 2 {
+        return None;
+    }
+    let mut near = UNITS.iter().map(|u| u.0).filter(|u| u.len() >= 2 && edits_le_one(name, u));
+    let found = near.next()?;
+    near.next().is_none().then(|| found.to_string())
+}
+
+/// Whether `a` and `b` are at most one edit apart (Damerau: a swap of two
+/// neighbouring letters is one edit).
+fn edits_le_one(a: &str, b: &str) -> bool {
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
+    let common = a.iter().zip(&b).take_while(|(x, y)| x == y).count();
+    let (ra, rb) = (&a[common..], &b[common..]);
+    match (ra.len(), rb.len()) {
+        (0, 0) => true,
+        (x, y) if x == y => ra[1..] == rb[1..] || (x >= 2 && ra[0] == rb[1] && ra[1] == rb[0] && ra[2..] == rb[2..]),
+        (x, y) if x == y + 1 => ra[1..] == *rb,
+        (x, y) if y == x + 1 => *ra == rb[1..],
+        _ => false,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Decimal points and commas read the same; thousands separators and
+    /// two commas are not numbers.
+    #[test]
+    fn decimal_commas_and_points() {
+        for (text, x) in [("0,02", 0.02), ("0.02", 0.02), ("-1,5e3", -1500.0), (" 353,5 ", 353.5), (",5", 0.5)] {
+            assert_eq!(number(text), Some(x), "{text}");
+        }
+        for text in ["1.000,5", "1,000.5", "1,2,3", "", "abc", "1, 5"] {
+            assert_eq!(number(text), None, "{text}");
+        }
+        assert_eq!(number_length("0,02 m"), 4);
+        assert_eq!(number_length("3,m"), 1);
+        assert_eq!(number_length("1,5e-3kg"), 6);
+    }
+
+    #[test]
+    fn suggestions_for_units_written_otherwise() {
+        for (name, meant) in [
+            ("m2", "m^2"),
+            ("kgm2", "kg*m^2"),
+            ("kgm", "kg*m"),
+            ("Nmm", "N*mm"),
+            ("rmp", "rpm"),
+            ("lbs", "lb"),
+            ("degs", "deg"),
+            ("seg", "s"),
+            ("Grados", "deg"),
+            ("lbfft", "lbf*ft"),
+        ] {
+            assert_eq!(suggestion(name).as_deref(), Some(meant), "{name}");
+        }
+        for name in ["furlong", "", "x", "qq2"] {
+            assert_eq!(suggestion(name), None, "{name}");
+        }
+    }
+}
