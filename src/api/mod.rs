@@ -56,13 +56,16 @@ pub struct AppState {
     pub metrics: metrics::Metrics,
     /// Jobs POSTed with `Prefer: respond-async`, and how they are run.
     pub deferred: deferred::Deferred,
+    /// The answers of template parts asked before, bounded by bytes.
+    pub answers: templates::Answers,
 }
 
 impl AppState {
     /// The state of a service of `kinds` on `store`, with the default limits and capacity.
     pub fn new(store: Store, kinds: kind::Registry) -> Self {
         let (limits, admission) = (Limits::default(), Admission::default());
-        Self { kinds, store, limits, admission, metrics: Default::default(), deferred: Default::default() }
+        let (metrics, deferred, answers) = Default::default();
+        Self { kinds, store, limits, admission, metrics, deferred, answers }
     }
 }
 

@@ -6,7 +6,8 @@ use super::AppState;
 use super::body::guarded;
 use super::kind;
 use super::read::{query, result_tree, wants};
-use super::tables::{self, AngleUnit, Angles, Decimal, DecimalMark, Format, Values};
+pub use super::tables::Decimal;
+use super::tables::{self, AngleUnit, Angles, DecimalMark, Format, Values};
 use crate::kind::problem::{ApiError, FieldError, Problem, ReadErrors};
 use crate::store::JobRow;
 use axum::body::Body;
@@ -63,14 +64,26 @@ pub fn answer(
     q: &HashMap<String, String>,
     headers: &HeaderMap,
 ) -> Result<Response, ApiError> {
+    let (mime, text) = text(kinds, row, result, pointer, q, headers)?;
+    Ok(([(header::CONTENT_TYPE, mime)], text).into_response())
+}
+
+/// The answer of [`answer`] as its content type and text.
+pub fn text(
+    kinds: &kind::Registry,
+    row: &JobRow,
+    result: &Value,
+    pointer: &str,
+    q: &HashMap<String, String>,
+    headers: &HeaderMap,
+) -> Result<(&'static str, String), ApiError> {
     let decimal = Decimal::of(q)?;
     let unit = q.get("unit").filter(|u| !u.trim().is_empty());
     let Some(value) = value_at(kinds.find(&row.kind), result, pointer, unit)? else {
         let pointer = format!("/{}", pointer.trim_start_matches('/'));
         return Err(ApiError::NoPart { id: row.id.clone(), pointer });
     };
-    let (mime, text) = text_of(&value, wants(headers, None, "application/json"), decimal);
-    Ok(([(header::CONTENT_TYPE, mime)], text).into_response())
+    Ok(text_of(&value, wants(headers, None, "application/json"), decimal))
 }
 
 /// The part of `result` (of `kind`) at `pointer` (leading `/` optional),

@@ -90,6 +90,26 @@ async fn one_number_by_url_as_webservice_reads_it() {
     assert!((percent - 0.03).abs() < 1e-6, "{percent}");
 }
 
+/// A part asked before is answered from memory (a sheet's recalculation):
+/// with its job deleted in between, the second GET still answers the same
+/// bytes and computes and stores nothing; another unit, decimal mark or
+/// parameter is its own answer.
+#[tokio::test]
+async fn a_part_asked_again_is_answered_from_memory() {
+    let app = TestApp::new().await;
+    let path = "/v1/templates/p103-slider-flywheel/result/inertia_exact?F=900";
+    let first = app.get(path).await;
+    let id = app.get("/v1/jobs").await.json()["items"][0]["id"].as_str().unwrap().to_string();
+    let deleted =
+        app.send(axum::http::Request::delete(format!("/v1/jobs/{id}")).body(axum::body::Body::empty()).unwrap());
+    assert_eq!(deleted.await.status, StatusCode::NO_CONTENT);
+    let again = app.get(path).await;
+    assert_eq!((again.status, &again.text, &again.content_type), (first.status, &first.text, &first.content_type));
+    assert_eq!(app.get("/v1/jobs").await.json()["items"], json!([]), "nothing computed or stored again");
+    let other = number(&app, &format!("{path}&unit=slug*ft%5E2")).await;
+    assert!((other * 1.355818 / first.text.parse::<f64>().unwrap() - 1.0).abs() < 1e-6, "its own unit");
+}
+
 #[tokio::test]
 async fn the_same_parameters_reuse_the_stored_job() {
     the_same_parameters_reuse_the_stored_job_on(TestApp::new().await).await;

@@ -4,11 +4,13 @@
 //! parameters find the stored job again instead of computing it; a whole
 //! parameter study is one `POST .../table` of CSV ([`table`]).
 
+mod answers;
 mod apply;
 mod model;
 pub mod table;
 pub mod variants;
 
+pub use answers::{Answers, PartKey};
 pub use apply::{request_for, texts};
 pub use model::{LIBRARY_FILES, NewTemplate, Parameter, RESERVED, Template, TemplateList, builtin};
 pub use table::{TableRequest, TableResponse, TableRow, study};
@@ -171,12 +173,28 @@ pub async fn result(
 ) -> Result<Response, ApiError> {
     let q = parameters(q)?;
     let t = find(&state, &id).await?;
-    let (row, mut reserved) = job_for(&state, &t, &q, Want::Values).await?;
+    let request = apply::request_for(&t, &q, RESERVED)?;
+    let kind = state.kinds.find(&t.kind).ok_or_else(|| ApiError::Internal(format!("template kind {}", t.kind)))?;
+    let key = PartKey {
+        request: apply::keyed(kind.name(), &request).1,
+        pointer: pointer.trim_start_matches('/').to_string(),
+        unit: q.get("unit").filter(|u| !u.trim().is_empty()).cloned(),
+        decimal: parts::Decimal::of(&q)? == parts::Decimal::Comma,
+        json: read::wants(&headers, None, "application/json"),
+    };
+    if let Some((mime, body)) = state.answers.get(&key) {
+        return Ok(([(header::CONTENT_TYPE, mime)], body).into_response());
+    }
+    let (row, mut reserved) =
+        stored_job(&state, kind, &request, Want::Values).await.map_err(|e| apply::named(&t, e))?;
     // The row is held (read factor); the parsed tree takes the rest of a part's memory.
     let tree = row.result.len().saturating_mul(read::CSV_MEMORY_FACTOR - read::READ_MEMORY_FACTOR);
     reserved.merge(state.admission.memory(tree).await?);
     let result = serde_json::from_slice(&row.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
-    parts::answer(&state.kinds, &row, &result, &pointer, &q, &headers)
+    let (mime, text) = parts::text(&state.kinds, &row, &result, &pointer, &q, &headers)?;
+    let body = bytes::Bytes::from(text);
+    state.answers.keep(key, (mime, body.clone()));
+    Ok(([(header::CONTENT_TYPE, mime)], body).into_response())
 }
 
 fn parameters(q: Result<Query<HashMap<String, String>>, QueryRejection>) -> Result<HashMap<String, String>, ApiError> {
