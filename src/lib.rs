@@ -9,6 +9,7 @@
 pub mod api;
 pub mod config;
 pub mod engine;
+pub mod i18n;
 pub mod kind;
 pub mod kinds;
 pub mod offline;

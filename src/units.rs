@@ -157,7 +157,8 @@ fn hint(name: &str) -> String {
     suggestion(name).map(|s| format!("; did you mean {s}?")).unwrap_or_default()
 }
 
-fn known_units() -> String {
+/// The table's units, for messages.
+pub fn known_units() -> String {
     UNITS.iter().map(|u| u.0).collect::<Vec<_>>().join(", ")
 }
 

@@ -3,7 +3,8 @@
 //! request's log span carrying it, the request counted and timed by its
 //! route ([`super::metrics`]), CORS for the origins configured, every answer
 //! given before its request's body was read draining that body first
-//! ([`super::body::drain_unread`]), panics caught and answered 500
+//! ([`super::body::drain_unread`]), the answer's language
+//! ([`super::language`]), panics caught and answered 500
 //! problem+json without internals, a query parameter given twice refused,
 //! the optional bearer token every POST and DELETE must carry (and whether
 //! a GET carries it: [`super::create::may_store`]), admission control (a
@@ -17,6 +18,7 @@ use super::body::{drain_unread, guarded};
 use super::idempotency::{InFlight, idempotent};
 use super::json::BodyLimit;
 use super::pace::{Pace, read_body};
+use crate::i18n::Msg;
 use crate::kind::problem::{ApiError, FieldError};
 use axum::Router;
 use axum::extract::{DefaultBodyLimit, Request};
@@ -77,7 +79,8 @@ pub fn layered(routes: Router, s: &Settings, state: AppState) -> Router {
         .layer(from_fn(move |req, next| require_token(token.clone(), req, next)))
         .layer(from_fn(single_parameters))
         .layer(CatchPanicLayer::custom(panic_response))
-        .layer(from_fn(drain_unread));
+        .layer(from_fn(drain_unread))
+        .layer(from_fn(super::language::in_language));
     let routes = match cors(&s.cors_origins) {
         Some(cors) => routes.layer(cors),
         None => routes,
@@ -193,7 +196,7 @@ async fn single_parameters(req: Request, next: Next) -> Response {
     if twice.is_empty() {
         return next.run(req).await;
     }
-    let error = |name: &str| FieldError::parameter(name, "is given more than once: give it once");
+    let error = |name: &str| FieldError::parameter_said(name, Msg::new("query-twice"));
     let refused = ApiError::BadQuery(twice.into_iter().map(error).collect());
     if super::pages::is_page(req.uri().path()) { super::pages::error(refused) } else { refused.into_response() }
 }

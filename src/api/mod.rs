@@ -17,6 +17,7 @@ pub mod jobs;
 pub mod json;
 pub mod kind;
 pub mod label;
+pub mod language;
 pub mod metrics;
 pub mod middleware;
 pub mod pace;

@@ -2,6 +2,7 @@
 //! loaded, and the checks every read's query shares.
 
 use super::AppState;
+use crate::i18n::Msg;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::store::JobRow;
 use axum::extract::Query;
@@ -33,10 +34,11 @@ pub fn query(
     known: &[&str],
 ) -> Result<HashMap<String, String>, ApiError> {
     let Query(q) = query.map_err(|e| ApiError::BadQuery(vec![FieldError::parameter("", e.body_text())]))?;
+    // `lang` is every answer's ([`super::language`]).
     let unknown: Vec<FieldError> = q
         .keys()
-        .filter(|k| !known.contains(&k.as_str()))
-        .map(|k| FieldError::parameter(k, format!("unknown parameter (known: {})", known.join(", "))))
+        .filter(|k| !known.contains(&k.as_str()) && *k != "lang")
+        .map(|k| FieldError::parameter_said(k, Msg::new("query-unknown").arg("known", known.join(", "))))
         .collect();
     if unknown.is_empty() { Ok(q) } else { Err(ApiError::BadQuery(unknown)) }
 }
@@ -44,9 +46,10 @@ pub fn query(
 /// `?format=`, when given, is `csv` or `json` (any case); else a 400.
 pub fn format_checked(q: &HashMap<String, String>) -> Result<(), ApiError> {
     match q.get("format").filter(|f| !["csv", "json"].contains(&f.to_ascii_lowercase().as_str())) {
-        Some(f) => {
-            Err(ApiError::BadQuery(vec![FieldError::parameter("format", format!("'{f}': must be csv or json"))]))
-        }
+        Some(f) => Err(ApiError::BadQuery(vec![FieldError::parameter_said(
+            "format",
+            Msg::new("query-format").arg("value", f),
+        )])),
         None => Ok(()),
     }
 }

@@ -4,6 +4,7 @@
 //! Written once for every kind through the registry ([`AnyKind`]).
 
 use super::kind::AnyKind;
+use crate::i18n::Msg;
 use crate::kind::cell;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::{DIMENSIONLESS, Table};
@@ -72,7 +73,7 @@ impl Decimal {
         match q.get("decimal").map(|t| t.trim().to_ascii_lowercase()).as_deref() {
             None | Some("point") => Ok(Self::Point),
             Some("comma") => Ok(Self::Comma),
-            Some(_) => Err(ApiError::BadQuery(vec![FieldError::parameter("decimal", "must be point or comma")])),
+            Some(_) => Err(ApiError::BadQuery(vec![FieldError::parameter_said("decimal", Msg::new("query-decimal"))])),
         }
     }
 
@@ -101,7 +102,7 @@ impl Angles {
         match text.map(|t| t.trim().to_ascii_lowercase()).as_deref() {
             None | Some("rad") => Ok(Self::Rad),
             Some("deg") => Ok(Self::Deg),
-            Some(_) => Err(FieldError::parameter("angles", "must be rad or deg")),
+            Some(_) => Err(FieldError::parameter_said("angles", Msg::new("query-angles"))),
         }
     }
 }

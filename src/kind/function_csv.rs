@@ -5,11 +5,7 @@
 
 use super::problem::FieldError;
 use super::quantity::{Quantity, TableDto};
-
-/// What a row with more cells than columns is told: its decimal commas
-/// split it where `,` separates the columns.
-pub const COMMA_HINT: &str =
-    "; a decimal comma in a CSV separated by commas is written in quotes (\"0,02\"), or the columns separated by ;";
+use crate::i18n::Msg;
 
 /// The table of `text`, or the error of its first bad row at `at` (the
 /// `csv` field's pointer).
@@ -30,9 +26,8 @@ pub fn table(text: &str, at: &str, max_rows: usize) -> Result<TableDto, FieldErr
             continue;
         }
         if record.len() != 2 {
-            let hint = if record.len() > 2 && delimiter == b',' { COMMA_HINT } else { "" };
-            let message = format!("row {row} has {} columns; give two: angle, value{hint}", record.len());
-            return Err(FieldError::at(at, message));
+            let id = if record.len() > 2 && delimiter == b',' { "csv-columns-comma" } else { "csv-columns" };
+            return Err(FieldError::said(at, Msg::new(id).arg("row", row).arg("cells", record.len())));
         }
         let number = |cell: &str| crate::units::number(cell).filter(|v| v.is_finite());
         match (number(&record[0]), number(&record[1])) {

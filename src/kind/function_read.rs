@@ -3,10 +3,11 @@
 //! [`Function`], every error at its pointer, under the limits in force.
 
 use super::quantity::{
-    Errors, FunctionDto, FunctionSpec, InterpolationDto, Quantity, SegmentDto, TableDto, UNIT_MAX_LENGTH,
+    Errors, FunctionDto, FunctionSpec, InterpolationDto, Quantity, SegmentDto, TableDto, UNIT_MAX_LENGTH, unit_msg,
 };
 use crate::engine::expr::Expr;
 use crate::engine::function::{Function, Interpolation, Segment, Table};
+use crate::i18n::Msg;
 use crate::units::{self, Dim};
 
 impl Errors {
@@ -27,7 +28,7 @@ impl Errors {
     ) -> Option<Function> {
         match f {
             FunctionDto::Constant(Quantity::Text(s)) if self.is_expression(s, variables) => {
-                self.fail(at, format!("'{s}' is an expression, not a quantity: write it as {{\"expr\": \"{s}\"}}"))
+                self.refuse(at, Msg::new("field-expression").arg("text", s))
             }
             FunctionDto::Constant(q) => self.quantity(q, dim, at).map(Function::Constant),
             FunctionDto::Spec(spec) => self.function_spec(spec, dim, period, at, variables),
@@ -48,7 +49,7 @@ impl Errors {
             }
             Some(u) => match units::unit_factor(u, dim) {
                 Ok(k) => k,
-                Err(e) => return self.fail(&format!("{at}/unit"), e.to_string()),
+                Err(e) => return self.refuse(&format!("{at}/unit"), unit_msg(&e)),
             },
             None => 1.0,
         };
@@ -63,7 +64,7 @@ impl Errors {
             }
             Some(u) => match units::unit_factor(u, Dim::ANGLE) {
                 Ok(k) => k,
-                Err(e) => return self.fail(&format!("{at}/angle_unit"), e.to_string()),
+                Err(e) => return self.refuse(&format!("{at}/angle_unit"), unit_msg(&e)),
             },
             None => 1.0,
         };

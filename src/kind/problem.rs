@@ -1,5 +1,10 @@
-//! The one error type of the API, answered as `application/problem+json` (RFC 9457).
+//! The one error type of the API, answered as `application/problem+json`
+//! (RFC 9457), its title, detail and field messages in the asker's language
+//! (`type` and pointers as they are); the details' words are in `said.rs`.
 
+mod said;
+
+use crate::i18n::{self, Lang, Msg};
 use axum::http::{StatusCode, header};
 use axum::response::{IntoResponse, Response};
 use serde::{Deserialize, Serialize};
@@ -15,9 +20,30 @@ pub struct FieldError {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub parameter: Option<String>,
     pub message: String,
+    /// The message as the catalogue has it, rendered in the asker's language.
+    #[serde(skip)]
+    pub text: Option<Msg>,
 }
 
 impl FieldError {
+    /// An error at `pointer` said by the catalogue's `msg`.
+    pub fn said(pointer: impl Into<String>, msg: Msg) -> Self {
+        Self { pointer: Some(pointer.into()), parameter: None, message: msg.render(Lang::En), text: Some(msg) }
+    }
+
+    /// An error of the query parameter `name` said by the catalogue's `msg`.
+    pub fn parameter_said(name: impl Into<String>, msg: Msg) -> Self {
+        Self { pointer: None, parameter: Some(name.into()), message: msg.render(Lang::En), text: Some(msg) }
+    }
+
+    /// This error with its message in `lang` (where the catalogue has it).
+    pub fn in_lang(mut self, lang: Lang) -> Self {
+        if let Some(msg) = &self.text {
+            self.message = msg.render(lang);
+        }
+        self
+    }
+
     /// "where: message" (the query parameter or the pointer), for a person.
     pub fn describe(&self) -> String {
         match (&self.parameter, &self.pointer) {
@@ -27,11 +53,11 @@ impl FieldError {
     }
 
     pub fn at(pointer: impl Into<String>, message: impl Into<String>) -> Self {
-        Self { pointer: Some(pointer.into()), parameter: None, message: message.into() }
+        Self { pointer: Some(pointer.into()), parameter: None, message: message.into(), text: None }
     }
 
     pub fn parameter(name: impl Into<String>, message: impl Into<String>) -> Self {
-        Self { pointer: None, parameter: Some(name.into()), message: message.into() }
+        Self { pointer: None, parameter: Some(name.into()), message: message.into(), text: None }
     }
 }
 
@@ -163,119 +189,109 @@ pub enum ReadErrors {
 }
 
 /// Everything a handler can fail with.
-#[derive(Debug, thiserror::Error)]
+#[derive(Debug)]
 pub enum ApiError {
-    #[error("the body is not valid JSON: {0}")]
     MalformedJson(String),
-    #[error("the content type must be application/json")]
     UnsupportedMediaType,
-    #[error("the content type must be text/csv or application/json")]
     UnsupportedTable,
-    #[error("the body is larger than the limit of {0} bytes")]
     PayloadTooLarge(usize),
-    #[error("{} invalid field{}", .0.len(), if .0.len() == 1 { "" } else { "s" })]
     Invalid(Vec<FieldError>),
-    #[error("invalid query parameters")]
     BadQuery(Vec<FieldError>),
-    #[error("no job with id '{0}'")]
     NotFound(String),
-    #[error("job '{id}' has no part of its result at '{pointer}'")]
-    NoPart { id: String, pointer: String },
-    #[error("job '{id}' has no plot '{name}' ({})", if .known.is_empty() { "it has no plots".to_string() } else { format!("its plots: {}", .known.join(", ")) })]
-    NoPlot { id: String, name: String, known: Vec<String> },
-    #[error("job '{id}' has no file '{name}' ({})", if .known.is_empty() { "it has none".to_string() } else { format!("its files: {}", .known.join(", ")) })]
-    NoFile { id: String, name: String, known: Vec<String> },
-    #[error("no template with id '{0}' (GET /v1/templates lists them)")]
+    NoPart {
+        id: String,
+        pointer: String,
+    },
+    NoPlot {
+        id: String,
+        name: String,
+        known: Vec<String>,
+    },
+    NoFile {
+        id: String,
+        name: String,
+        known: Vec<String>,
+    },
     NoTemplate(String),
-    #[error("{0}")]
     Conflict(String),
     /// The first request of an `Idempotency-Key` is still being answered.
-    #[error("a request with Idempotency-Key '{0}' is still being answered; retry after 1 s")]
     InProgress(String),
     /// A read of a result that a deferred job does not have (yet).
-    #[error("{}", not_done(.id, .status))]
-    NotDone { id: String, status: crate::store::Status },
+    NotDone {
+        id: String,
+        status: crate::store::Status,
+    },
     /// A deferred job whose replica stopped every time it was claimed.
-    #[error("the job was claimed {0} times and each time its replica stopped before it ended; it was not tried again")]
     Interrupted(i64),
-    #[error("no such resource")]
     NoRoute,
-    #[error("method not allowed")]
     MethodNotAllowed,
     /// The job ran out of its compute budget and was stopped.
-    #[error("{0}")]
     OverBudget(String),
     /// The result would exceed the limit on a result; `errors` say what would fit.
-    #[error("the result would be larger than the limit of {limit} bytes on a result")]
-    ResultTooLarge { limit: usize, errors: Vec<FieldError> },
+    ResultTooLarge {
+        limit: usize,
+        errors: Vec<FieldError>,
+    },
     /// Too many jobs computing or waiting, or too many large answers in flight.
-    #[error("the service is saturated ({reason}); retry after {retry_after} s")]
-    Saturated { reason: String, retry_after: u64 },
+    Saturated {
+        reason: String,
+        retry_after: u64,
+    },
     /// The database's storage is full: `.0` says what was not done (nothing was stored).
-    #[error("{0}: the service's storage is full; reads still work, and writes resume once space returns")]
     StorageFull(&'static str),
     /// The database cannot be used at the moment (logged).
-    #[error("the database is unavailable; retry later")]
     Unavailable(String),
-    #[error(
-        "this service stores and deletes jobs only for a request with \"Authorization: Bearer <token>\": \
-             every POST and DELETE, and a GET of a template's job or page that would store a new job"
-    )]
     Unauthorized,
     /// A request's body fell behind the pace a client must keep ([`super::pace`]).
-    #[error("{0}")]
     RequestTimeout(String),
     /// An HTTP/1.0 POST with no `Content-Length`.
-    #[error("an HTTP/1.0 POST needs a Content-Length header: its body's end cannot be told otherwise")]
     LengthRequired,
     /// Logged; the client sees no details.
-    #[error("internal error; the x-request-id header of this answer finds it in the service's log")]
     Internal(String),
 }
 
 impl ApiError {
+    /// The status, the problem type and the id of its title in the catalogue.
     fn parts(&self) -> (StatusCode, &'static str, &'static str) {
         match self {
-            Self::MalformedJson(_) => (StatusCode::BAD_REQUEST, "malformed-json", "The body is not valid JSON"),
+            Self::MalformedJson(_) => (StatusCode::BAD_REQUEST, "malformed-json", "problem-malformed-json"),
             Self::UnsupportedMediaType => {
-                (StatusCode::UNSUPPORTED_MEDIA_TYPE, "unsupported-media-type", "Unsupported content type")
+                (StatusCode::UNSUPPORTED_MEDIA_TYPE, "unsupported-media-type", "problem-unsupported-media-type")
             }
             Self::UnsupportedTable => {
-                (StatusCode::UNSUPPORTED_MEDIA_TYPE, "unsupported-media-type", "Unsupported content type")
+                (StatusCode::UNSUPPORTED_MEDIA_TYPE, "unsupported-media-type", "problem-unsupported-media-type")
             }
-            Self::PayloadTooLarge(_) => (StatusCode::PAYLOAD_TOO_LARGE, "payload-too-large", "Request body too large"),
-            Self::Invalid(_) => {
-                (StatusCode::UNPROCESSABLE_ENTITY, "invalid-request", "The request is not a valid problem")
+            Self::PayloadTooLarge(_) => {
+                (StatusCode::PAYLOAD_TOO_LARGE, "payload-too-large", "problem-payload-too-large")
             }
-            Self::BadQuery(_) => (StatusCode::BAD_REQUEST, "invalid-query", "Invalid query parameters"),
-            Self::NotFound(_) => (StatusCode::NOT_FOUND, "not-found", "Job not found"),
-            Self::NoRoute => (StatusCode::NOT_FOUND, "not-found", "Not found"),
-            Self::NoTemplate(_) => (StatusCode::NOT_FOUND, "not-found", "Template not found"),
-            Self::Conflict(_) => (StatusCode::CONFLICT, "conflict", "The name is taken"),
-            Self::InProgress(_) => (StatusCode::CONFLICT, "in-progress", "The same request is being answered"),
-            Self::Interrupted(_) => (StatusCode::SERVICE_UNAVAILABLE, "interrupted", "The job was interrupted"),
-            Self::NotDone { .. } => (StatusCode::CONFLICT, "job-not-done", "The job has no result"),
-            Self::NoPart { .. } => (StatusCode::NOT_FOUND, "no-such-part", "No such part of the result"),
-            Self::NoPlot { .. } => (StatusCode::NOT_FOUND, "no-such-plot", "No such plot of the job"),
-            Self::NoFile { .. } => (StatusCode::NOT_FOUND, "no-such-file", "No such file of the job"),
-            Self::MethodNotAllowed => (StatusCode::METHOD_NOT_ALLOWED, "method-not-allowed", "Method not allowed"),
-            Self::OverBudget(_) => {
-                (StatusCode::UNPROCESSABLE_ENTITY, "compute-budget", "The job ran out of its compute budget")
+            Self::Invalid(_) => (StatusCode::UNPROCESSABLE_ENTITY, "invalid-request", "problem-invalid-request"),
+            Self::BadQuery(_) => (StatusCode::BAD_REQUEST, "invalid-query", "problem-invalid-query"),
+            Self::NotFound(_) => (StatusCode::NOT_FOUND, "not-found", "problem-job-not-found"),
+            Self::NoRoute => (StatusCode::NOT_FOUND, "not-found", "problem-not-found"),
+            Self::NoTemplate(_) => (StatusCode::NOT_FOUND, "not-found", "problem-template-not-found"),
+            Self::Conflict(_) => (StatusCode::CONFLICT, "conflict", "problem-conflict"),
+            Self::InProgress(_) => (StatusCode::CONFLICT, "in-progress", "problem-in-progress"),
+            Self::Interrupted(_) => (StatusCode::SERVICE_UNAVAILABLE, "interrupted", "problem-interrupted"),
+            Self::NotDone { .. } => (StatusCode::CONFLICT, "job-not-done", "problem-job-not-done"),
+            Self::NoPart { .. } => (StatusCode::NOT_FOUND, "no-such-part", "problem-no-such-part"),
+            Self::NoPlot { .. } => (StatusCode::NOT_FOUND, "no-such-plot", "problem-no-such-plot"),
+            Self::NoFile { .. } => (StatusCode::NOT_FOUND, "no-such-file", "problem-no-such-file"),
+            Self::MethodNotAllowed => {
+                (StatusCode::METHOD_NOT_ALLOWED, "method-not-allowed", "problem-method-not-allowed")
             }
+            Self::OverBudget(_) => (StatusCode::UNPROCESSABLE_ENTITY, "compute-budget", "problem-compute-budget"),
             Self::ResultTooLarge { .. } => {
-                (StatusCode::UNPROCESSABLE_ENTITY, "result-too-large", "The result would be too large")
+                (StatusCode::UNPROCESSABLE_ENTITY, "result-too-large", "problem-result-too-large")
             }
-            Self::Saturated { .. } => (StatusCode::SERVICE_UNAVAILABLE, "saturated", "The service is saturated"),
-            Self::StorageFull(_) => (StatusCode::INSUFFICIENT_STORAGE, "storage-full", "The service's storage is full"),
+            Self::Saturated { .. } => (StatusCode::SERVICE_UNAVAILABLE, "saturated", "problem-saturated"),
+            Self::StorageFull(_) => (StatusCode::INSUFFICIENT_STORAGE, "storage-full", "problem-storage-full"),
             Self::Unavailable(_) => {
-                (StatusCode::SERVICE_UNAVAILABLE, "database-unavailable", "The database is unavailable")
+                (StatusCode::SERVICE_UNAVAILABLE, "database-unavailable", "problem-database-unavailable")
             }
-            Self::Unauthorized => (StatusCode::UNAUTHORIZED, "unauthorized", "Missing or wrong bearer token"),
-            Self::RequestTimeout(_) => {
-                (StatusCode::REQUEST_TIMEOUT, "request-timeout", "The request's body did not arrive in time")
-            }
-            Self::LengthRequired => (StatusCode::LENGTH_REQUIRED, "length-required", "The body's length is required"),
-            Self::Internal(_) => (StatusCode::INTERNAL_SERVER_ERROR, "internal", "Internal server error"),
+            Self::Unauthorized => (StatusCode::UNAUTHORIZED, "unauthorized", "problem-unauthorized"),
+            Self::RequestTimeout(_) => (StatusCode::REQUEST_TIMEOUT, "request-timeout", "problem-request-timeout"),
+            Self::LengthRequired => (StatusCode::LENGTH_REQUIRED, "length-required", "problem-length-required"),
+            Self::Internal(_) => (StatusCode::INTERNAL_SERVER_ERROR, "internal", "problem-internal"),
         }
     }
 
@@ -316,11 +332,13 @@ impl ApiError {
             Self::Invalid(e) | Self::BadQuery(e) | Self::ResultTooLarge { errors: e, .. } => e.clone(),
             _ => Vec::new(),
         };
+        let lang = i18n::current();
+        let errors = errors.into_iter().map(|f| f.in_lang(lang)).collect();
         Problem {
             kind: format!("/problems/{kind}"),
-            title: title.into(),
+            title: i18n::tr(lang, title),
             status: status.as_u16(),
-            detail: self.to_string(),
+            detail: self.msg().render(lang),
             errors,
         }
     }
@@ -379,16 +397,6 @@ impl IntoResponse for ApiError {
             _ => {}
         }
         response
-    }
-}
-
-/// Why job `id` has no result, in its status's words.
-fn not_done(id: &str, status: &crate::store::Status) -> String {
-    match status {
-        crate::store::Status::Failed => {
-            format!("job '{id}' failed and has no result: GET /v1/jobs/{id} says why (its `problem`)")
-        }
-        s => format!("job '{id}' is {}: its result is not there yet; retry after 1 s", s.as_str()),
     }
 }
 

@@ -4,7 +4,8 @@
 use super::limits::Limits;
 use super::problem::FieldError;
 use crate::engine::expr::Expr;
-use crate::units::{self, Dim};
+use crate::i18n::Msg;
+use crate::units::{self, Dim, UnitError};
 use serde::de::{self, Deserializer, MapAccess, Visitor};
 use serde::{Deserialize, Serialize};
 use std::fmt;
@@ -189,6 +190,23 @@ impl ToSchema for FunctionDto {
     }
 }
 
+/// A unit's error as the catalogue says it, with the unit it probably
+/// means when one is close ([`units::suggestion`]).
+pub fn unit_msg(e: &UnitError) -> Msg {
+    match e {
+        UnitError::Malformed(text) => Msg::new("unit-malformed").arg("text", text),
+        UnitError::Unknown(unit) => match units::suggestion(unit) {
+            Some(hint) => Msg::new("unit-unknown-hint").arg("hint", hint),
+            None => Msg::new("unit-unknown"),
+        }
+        .arg("unit", unit)
+        .arg("known", units::known_units()),
+        UnitError::WrongDimension { found, expected } => {
+            Msg::new("unit-wrong-dimension").arg("found", found).arg("expected", expected)
+        }
+    }
+}
+
 /// Collects (pointer, message) errors while converting a request, under
 /// the limits in force.
 #[derive(Default)]
@@ -210,10 +228,21 @@ impl Errors {
         self.list.push(FieldError::at(pointer, message));
     }
 
+    /// An error at `pointer` said by the catalogue.
+    pub fn say(&mut self, pointer: &str, msg: Msg) {
+        self.list.push(FieldError::said(pointer, msg));
+    }
+
+    /// [`Self::say`], and None for the field.
+    pub fn refuse<T>(&mut self, at: &str, msg: Msg) -> Option<T> {
+        self.say(at, msg);
+        None
+    }
+
     /// A string of at most `max` characters (the schema's `maxLength`).
     pub fn short(&mut self, text: &str, max: usize, at: &str) -> Option<()> {
         let n = text.chars().count();
-        if n <= max { Some(()) } else { self.fail(at, format!("must be at most {max} characters (has {n})")) }
+        if n <= max { Some(()) } else { self.refuse(at, Msg::new("field-too-long").arg("max", max).arg("has", n)) }
     }
 
     /// A quantity of the expected dimension, in SI.
@@ -227,8 +256,8 @@ impl Errors {
         };
         match value {
             Ok(v) if v.is_finite() => Some(v),
-            Ok(_) => self.fail(at, "must be finite"),
-            Err(e) => self.fail(at, e.to_string()),
+            Ok(_) => self.refuse(at, Msg::new("field-finite")),
+            Err(e) => self.refuse(at, unit_msg(&e)),
         }
     }
 
@@ -243,10 +272,7 @@ impl Errors {
             let (length, depth) = (self.limits.expression_length, self.limits.expression_depth);
             return match Expr::compile_with(s, &[], &self.constants, length, depth).map(|e| e.constant()) {
                 Ok(Some(v)) if v.is_finite() => Some(v),
-                _ => self.fail(
-                    at,
-                    format!("'{s}' is neither an angle (e.g. \"90 deg\") nor a constant expression (e.g. \"7*pi/4\")"),
-                ),
+                _ => self.refuse(at, Msg::new("field-not-angle").arg("text", s)),
             };
         }
         self.quantity(q, Dim::ANGLE, at)
@@ -255,7 +281,7 @@ impl Errors {
     /// A quantity that must be > 0.
     pub fn positive(&mut self, q: &Quantity, dim: Dim, at: &str) -> Option<f64> {
         let v = self.quantity(q, dim, at)?;
-        if v > 0.0 { Some(v) } else { self.fail(at, "must be greater than 0") }
+        if v > 0.0 { Some(v) } else { self.refuse(at, Msg::new("field-positive")) }
     }
 
     /// A value already read (None: its error is recorded) that must also pass

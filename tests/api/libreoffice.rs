@@ -64,14 +64,86 @@ async fn libreoffice_calc_fetches_answers_with_webservice() {
     assert!(asked, "no job of F = 1200, ε = 0.03 in the service Calc called: {jobs}");
 }
 
-/// The example sheet a lab opens (examples/p103-flywheel.fods, saved by the
-/// script above from a real Calc) calls the service at its default address,
-/// and only templates, results and parameters that exist.
+/// The same in a Spanish Calc (es-ES locale, Spanish interface from
+/// Debian's libreoffice-l10n-es): formulas typed as VALOR(SERVICIOWEB(…))
+/// with TEXTO, the sheet writing F = 1200,5 and ε = 0,03 itself, the
+/// answers asked with `decimal=comma` and read by VALOR equal to the
+/// English run's (the service's own answer for 1200.5 and 0.03) to every
+/// digit; without `decimal=comma`, VALOR cannot read the answer (why the
+/// parameter exists). The closed-form scaling of case F1 checks I_approx.
 #[tokio::test]
-async fn the_example_sheet_calls_what_the_service_has() {
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/examples/p103-flywheel.fods")).unwrap();
-    assert!(text.contains(&format!("http://{}", mechdyn::config::DEFAULT_ADDR)), "the default address in B1");
+async fn a_spanish_calc_reads_decimal_commas() {
+    if !calc_available() {
+        assert!(std::env::var_os("MECHDYN_REQUIRE_LIBREOFFICE").is_none(), "LibreOffice with python3-uno is required");
+        eprintln!("skipped: LibreOffice Calc with python3-uno is not installed");
+        return;
+    }
+    let spanish = std::path::Path::new("/usr/lib/libreoffice/program/resource/es").exists();
+    if !spanish {
+        assert!(std::env::var_os("MECHDYN_REQUIRE_LIBREOFFICE").is_none(), "libreoffice-l10n-es is required");
+        eprintln!("skipped: LibreOffice's Spanish (libreoffice-l10n-es) is not installed");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let port = free_port();
+    let mut service = start(&format!("sqlite://{}/calc.db", dir.path().display()), port);
+    let profile = dir.path().join("profile");
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/clients/calc_webservice.py");
+    let out = Command::new(PYTHON)
+        .args([script, "--es", &format!("http://127.0.0.1:{port}"), profile.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let _ = service.kill();
+    let _ = service.wait();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let cells: Value = serde_json::from_slice(&out.stdout).unwrap();
+    eprintln!("Calc's cells: {cells}");
+    assert_eq!(cells["decimal_separator"], "0,03", "the sheet's locale writes decimal commas");
+    for (name, error) in cells["errors"].as_object().unwrap() {
+        assert_eq!(error, 0, "cell {name} holds an error");
+    }
     let app = TestApp::new().await;
+    let base = "/v1/templates/p103-slider-flywheel/result/inertia_exact";
+    let english = |q: String| {
+        let app = &app;
+        async move { app.get(&format!("{base}?{q}")).await.text.parse::<f64>().unwrap() }
+    };
+    let exact = english("F=1200.5&eps=0.03".into()).await;
+    assert_eq!(cells["B5"].as_f64().unwrap(), exact, "every digit reaches the cell");
+    assert_eq!(cells["B8"].as_str().unwrap(), exact.to_string().replace('.', ","), "the text VALOR read");
+    let approx = case("F1_p103_slider_flywheel")["expected"]["I_approx_kg_m2"].as_f64().unwrap();
+    let approx = approx * (1200.5 / 500.0) * (0.04 / 0.03);
+    assert!((cells["B6"].as_f64().unwrap() / approx - 1.0).abs() < 1e-9, "{cells}");
+    assert!((cells["B7"].as_f64().unwrap() * 1.355818 / exact - 1.0).abs() < 1e-6, "{cells}");
+    for (k, f) in [500, 750, 1000, 1250, 1500].into_iter().enumerate() {
+        assert_eq!(cells["study"][k].as_f64().unwrap(), english(format!("F={f}&eps=0.03")).await, "F = {f}");
+    }
+    assert_ne!(cells["B9_error"], 0, "VALOR of a decimal point in es-ES is an error: {cells}");
+}
+
+/// The example sheets a lab opens (examples/p103-flywheel.fods and its
+/// Spanish copy p103-flywheel-es.fods, saved by the script above from a
+/// real Calc) call the service at its default address, and only templates,
+/// results and parameters that exist; the Spanish one is an es-ES sheet
+/// that asks for decimal commas.
+#[tokio::test]
+async fn the_example_sheets_call_what_the_service_has() {
+    let app = TestApp::new().await;
+    for (file, spanish) in [("p103-flywheel.fods", false), ("p103-flywheel-es.fods", true)] {
+        let text = std::fs::read_to_string(format!("{}/examples/{file}", env!("CARGO_MANIFEST_DIR"))).unwrap();
+        assert!(text.contains(&format!("http://{}", mechdyn::config::DEFAULT_ADDR)), "{file}: the address in B1");
+        if spanish {
+            assert!(text.contains("fo:language=\"es\" fo:country=\"ES\""), "{file}: an es-ES sheet");
+            let formulas: Vec<&str> =
+                text.split("table:formula=\"").skip(1).filter_map(|f| f.split('"').next()).collect();
+            let commas = formulas.iter().filter(|f| f.contains("decimal=comma")).count();
+            assert_eq!(commas, formulas.len() - 1, "{file}: every call asks for decimal commas but B9's");
+        }
+        calls_exist(&app, &text).await;
+    }
+}
+
+async fn calls_exist(app: &TestApp, text: &str) {
     let calls: Vec<&str> = text.split("WEBSERVICE(").skip(1).collect();
     assert!(calls.len() >= 8, "{} calls", calls.len());
     for call in calls {

@@ -50,6 +50,7 @@ mod seed_exams;
 mod slipping;
 mod slow_clients;
 mod small_disk;
+mod spanish;
 mod stiff;
 mod storage;
 mod student;

@@ -38,10 +38,15 @@ async fn a_jobs_page_has_its_values_with_units_accuracy_time_plots_and_links() {
     let r = app.get(&format!("/jobs/{id}")).await;
     assert_eq!(r.status, StatusCode::OK, "{}", r.text);
     let page = html(&r);
-    // The value as the JSON has it (shortest round-trip form), with its unit.
+    // The value to four significant figures as a person reads it, with its
+    // unit, linked to the full value as the JSON has it (shortest round-trip form).
     let exact = job["result"]["inertia_exact"].as_f64().unwrap();
-    let row = format!("inertia_exact</td><td class=\"num\">{exact}</td><td>kg*m^2</td>");
+    let link = format!("/v1/jobs/{id}/result/inertia_exact");
+    let row = format!(
+        "inertia_exact</td><td class=\"num\"><a href=\"{link}\" title=\"the full value\">{exact:.1}</a></td><td>kg*m^2</td>"
+    );
     assert!(page.contains(&row), "{row} in the page");
+    assert_eq!(app.get(&link).await.text, exact.to_string(), "the full value one click away");
     assert!(page.contains("estimated relative error"), "accuracy");
     assert!(page.contains("of engine time"), "timing");
     for plot in ["torque", "work", "speed", "wittenbauer"] {

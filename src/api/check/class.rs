@@ -122,6 +122,7 @@ pub async fn class(
     for (i, row) in rows.iter().enumerate() {
         let student = row.get(l.student).cloned().unwrap_or_default();
         let refused = ragged(&header, row, i)
+            .map(|m| m.text())
             .or_else(|| student.is_empty().then(|| format!("row {} has no student", i + 1)))
             .or_else(|| (!students.insert(student.clone())).then(|| format!("student {student} appears twice")));
         if let Some(why) = refused {

@@ -5,6 +5,7 @@
 mod strict;
 mod words;
 
+use crate::i18n::Msg;
 pub use crate::kind::problem::escape;
 use crate::kind::problem::{ApiError, FieldError};
 use axum::body::Body;
@@ -98,7 +99,8 @@ pub fn parse<T: DeserializeOwned>(raw: impl Into<Bytes>) -> Result<JsonBody<T>, 
     let value: serde_json::Value =
         serde_json::from_slice(&raw).map_err(|e| ApiError::MalformedJson(words::malformed(&e, &raw)))?;
     let mut unknown = Vec::new();
-    let mut record = |path: serde_ignored::Path| unknown.push(FieldError::at(ignored_pointer(&path), "unknown field"));
+    let mut record =
+        |path: serde_ignored::Path| unknown.push(FieldError::said(ignored_pointer(&path), Msg::new("field-unknown")));
     let strict = strict::Strict(&value);
     let result: Result<T, _> = serde_path_to_error::deserialize(serde_ignored::Deserializer::new(strict, &mut record));
     match result {
@@ -146,9 +148,9 @@ fn type_error(e: &serde_path_to_error::Error<serde_json::Error>) -> FieldError {
     let message = message.split(" at line ").next().unwrap_or(&message).to_string();
     if let Some(field) = message.strip_prefix("missing field `").and_then(|m| m.strip_suffix('`')) {
         pointer = format!("{pointer}/{}", escape(field));
-        return FieldError::at(pointer, "required field is missing");
+        return FieldError::said(pointer, Msg::new("field-missing"));
     }
-    FieldError::at(pointer, words::plain(&message))
+    FieldError::said(pointer, words::plain(&message))
 }
 
 #[cfg(test)]

@@ -2,61 +2,70 @@
 //! the text \"abc\"" rather than "invalid type: string \"abc\", expected
 //! f64", and a malformed body pointed at where it goes wrong.
 
-/// A structural error of serde (wrong type, wrong length, unknown name) said plainly.
-pub fn plain(message: &str) -> String {
+use crate::i18n::Msg;
+
+/// A structural error of serde (wrong type, wrong length, unknown name)
+/// said plainly, as the catalogue words it.
+pub fn plain(message: &str) -> Msg {
+    let expected = |got: Msg, e: &str| Msg::new("field-expected").with("expected", expected_words(e)).with("got", got);
     if let Some(rest) = message.strip_prefix("invalid type: ")
-        && let Some((got, expected)) = rest.split_once(", expected ")
+        && let Some((got, e)) = rest.split_once(", expected ")
     {
-        return format!("expected {}, got {}", expected_words(expected), got_words(got));
+        return expected(got_words(got), e);
     }
     if let Some(rest) = message.strip_prefix("invalid length ")
-        && let Some((n, expected)) = rest.split_once(", expected ")
+        && let Some((n, e)) = rest.split_once(", expected ")
     {
-        return format!("expected {}, got {n} item(s)", expected_words(expected));
+        return expected(Msg::new("json-got-items").arg("n", n), e);
     }
     if let Some(rest) = message.strip_prefix("invalid value: ")
-        && let Some((got, expected)) = rest.split_once(", expected ")
+        && let Some((got, e)) = rest.split_once(", expected ")
     {
-        return format!("expected {}, got {}", expected_words(expected), got_words(got));
+        return expected(got_words(got), e);
     }
-    message.replace('`', "\"")
+    if let Some(rest) = message.strip_prefix("unknown variant ")
+        && let Some((got, e)) = rest.split_once(", expected ")
+    {
+        return Msg::new("json-variant").arg("got", got.replace('`', "\"")).arg("expected", e.replace('`', "\""));
+    }
+    Msg::new("detail-as-said").arg("why", message.replace('`', "\""))
 }
 
 /// What serde expected, in words.
-fn expected_words(expected: &str) -> String {
+fn expected_words(expected: &str) -> Msg {
     let e = expected.trim();
-    let words = match e {
-        "f64" | "f32" => "a number",
-        "u8" | "u16" | "u32" | "u64" | "usize" => "a whole number, 0 or more",
-        "i8" | "i16" | "i32" | "i64" | "isize" => "a whole number",
-        "a boolean" | "bool" => "true or false",
-        "a string" | "a borrowed string" => "a text in quotes",
-        "a sequence" => "an array [...]",
-        "a map" => "an object {...}",
-        _ if e.starts_with("struct ") || e.starts_with("an object") => "an object {...} with named fields",
-        _ if e.starts_with("an array of length ") => return format!("an array of {} numbers", &e[19..]),
-        _ if e.starts_with("a tuple of size ") => return format!("an array of {} items", &e[16..]),
-        _ => return e.replace('`', "\""),
+    let id = match e {
+        "f64" | "f32" => "json-number",
+        "u8" | "u16" | "u32" | "u64" | "usize" => "json-whole",
+        "i8" | "i16" | "i32" | "i64" | "isize" => "json-integer",
+        "a boolean" | "bool" => "json-bool",
+        "a string" | "a borrowed string" => "json-text",
+        "a sequence" => "json-array",
+        "a map" => "json-object",
+        _ if e.starts_with("struct ") || e.starts_with("an object") => "json-struct",
+        _ if e.starts_with("an array of length ") => return Msg::new("json-array-of").arg("n", &e[19..]),
+        _ if e.starts_with("a tuple of size ") => return Msg::new("json-tuple").arg("n", &e[16..]),
+        _ => return Msg::new("detail-as-said").arg("why", e.replace('`', "\"")),
     };
-    words.into()
+    Msg::new(id)
 }
 
 /// What the client sent, in words.
-fn got_words(got: &str) -> String {
+fn got_words(got: &str) -> Msg {
     let g = got.trim();
     match g {
-        "sequence" => "an array".into(),
-        "map" => "an object".into(),
-        "unit value" | "null" => "null".into(),
+        "sequence" => Msg::new("json-got-array"),
+        "map" => Msg::new("json-got-object"),
+        "unit value" | "null" => Msg::new("detail-as-said").arg("why", "null"),
         _ => {
             if let Some(s) = g.strip_prefix("string ") {
-                format!("the text {s}")
+                Msg::new("json-got-text").arg("text", s)
             } else if let Some(v) = g.strip_prefix("floating point `").or_else(|| g.strip_prefix("integer `")) {
-                format!("the number {}", v.trim_end_matches('`'))
+                Msg::new("json-got-number").arg("value", v.trim_end_matches('`'))
             } else if let Some(v) = g.strip_prefix("boolean `") {
-                v.trim_end_matches('`').into()
+                Msg::new("detail-as-said").arg("why", v.trim_end_matches('`'))
             } else {
-                g.replace('`', "\"")
+                Msg::new("detail-as-said").arg("why", g.replace('`', "\""))
             }
         }
     }
@@ -91,21 +100,27 @@ pub fn malformed(e: &serde_json::Error, raw: &[u8]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::i18n::Lang;
 
     #[test]
     fn serde_jargon_becomes_plain_words() {
+        let en = |m: &str| plain(m).render(Lang::En);
         assert_eq!(
-            plain("invalid type: sequence, expected struct FlywheelRequest with 13 elements"),
+            en("invalid type: sequence, expected struct FlywheelRequest with 13 elements"),
             "expected an object {...} with named fields, got an array"
         );
-        assert_eq!(plain("invalid type: string \"abc\", expected f64"), "expected a number, got the text \"abc\"");
+        assert_eq!(en("invalid type: string \"abc\", expected f64"), "expected a number, got the text \"abc\"");
         assert_eq!(
-            plain("invalid type: floating point `1.5`, expected usize"),
+            en("invalid type: floating point `1.5`, expected usize"),
             "expected a whole number, 0 or more, got the number 1.5"
         );
         assert_eq!(
-            plain("unknown variant `hinge`, expected one of `revolute`, `prismatic`"),
+            en("unknown variant `hinge`, expected one of `revolute`, `prismatic`"),
             "unknown variant \"hinge\", expected one of \"revolute\", \"prismatic\""
+        );
+        assert_eq!(
+            plain("invalid type: string \"abc\", expected f64").render(Lang::Es),
+            "se esperaba un número y llegó el texto \"abc\""
         );
     }
 

@@ -7,6 +7,7 @@
 use super::{IdPath, layout, query_of};
 use crate::api::AppState;
 use crate::api::templates::{self, Parameter, Template};
+use crate::i18n::{self, Lang, Msg, tr};
 use crate::kind::problem::{ApiError, FieldError};
 use crate::units::parse_unit;
 use axum::extract::rejection::QueryRejection;
@@ -72,15 +73,17 @@ fn form(t: &Template, given: &HashMap<String, String>, error: Option<&ApiError>)
     let others: Vec<&FieldError> =
         fields.iter().filter(|f| f.parameter.as_deref().is_none_or(|p| !t.parameters.contains_key(p))).collect();
     let title = t.title.clone().unwrap_or_else(|| t.id.clone());
+    let lang = i18n::current();
+    let tx = |key| tr(lang, key);
     let body = html! {
         h1 { (title) }
-        p.meta { "template " span.id { (t.id) } " · a " (t.kind) " job"
+        p.meta { (Msg::new("page-template-meta").arg("id", &t.id).arg("kind", &t.kind).render(lang))
             @if let Some(s) = &t.source { " · " (s) } }
         @if let Some(e) = error {
-            p.error { (e.to_string()) }
-            @if !others.is_empty() { ul { @for f in &others { li.error { (f.describe()) } } } }
+            p.error { (e.msg().render(lang)) }
+            @if !others.is_empty() { ul { @for f in &others { li.error { ((*f).clone().in_lang(lang).describe()) } } } }
         }
-        p { "A number is read in the unit beside its name; a quantity with its own unit (\"300 rpm\", \"4 %\") is read in that unit; a field left blank keeps its default." }
+        p { (tx("page-form-help")) }
         form.params method="get" action=(format!("/templates/{}", crate::api::plots::segment(&t.id))) {
             @for (name, p) in &t.parameters {
                 div {
@@ -88,13 +91,13 @@ fn form(t: &Template, given: &HashMap<String, String>, error: Option<&ApiError>)
                     input id=(name) name=(name) type="text" autocomplete="off"
                         value=(given.get(name).cloned().unwrap_or_else(|| default_text(t, p)));
                     p.hint { (hint(p)) }
-                    @for f in at(name) { p.error { (f.message) } }
+                    @for f in at(name) { p.error { ((*f).clone().in_lang(lang).message) } }
                 }
             }
-            div { button type="submit" { "Compute" } }
+            div { button type="submit" { (tx("page-compute")) } }
         }
-        p { "The same job by URL, for a spreadsheet or a script: "
-            code { "/v1/templates/" (t.id) "/job?NAME=VALUE" } " (JSON), or one number: "
+        p { (tx("page-form-url")) " "
+            code { "/v1/templates/" (t.id) "/job?NAME=VALUE" } " " (tx("page-form-url-json")) " "
             code { "/v1/templates/" (t.id) "/result/POINTER?NAME=VALUE" } "." }
     };
     layout::page(&title, body)
@@ -104,12 +107,15 @@ fn form(t: &Template, given: &HashMap<String, String>, error: Option<&ApiError>)
 fn hint(p: &Parameter) -> String {
     let unit = p.unit.as_deref().map_or(String::new(), |u| format!(" {u}"));
     let range = match (p.min, p.max, &p.choices) {
-        (_, _, Some(c)) => format!("one of {}", c.iter().map(crate::kind::cell).collect::<Vec<_>>().join(", ")),
-        (Some(a), Some(b), None) => format!("from {a} to {b}{unit}"),
-        (Some(a), None, None) => format!("at least {a}{unit}"),
-        (None, Some(b), None) => format!("at most {b}{unit}"),
-        _ => String::new(),
+        (_, _, Some(c)) => {
+            Msg::new("page-one-of").arg("choices", c.iter().map(crate::kind::cell).collect::<Vec<_>>().join(", "))
+        }
+        (Some(a), Some(b), None) => Msg::new("page-from-to").num("min", a).num("max", b),
+        (Some(a), None, None) => Msg::new("page-at-least").num("min", a),
+        (None, Some(b), None) => Msg::new("page-at-most").num("max", b),
+        _ => Msg::new("detail-as-said").arg("why", ""),
     };
+    let range = range.arg("unit", unit).text();
     let text = p.description.clone().unwrap_or_default();
     match (text.is_empty(), range.is_empty()) {
         (false, false) => format!("{text}; {range}."),
@@ -125,7 +131,8 @@ fn default_text(t: &Template, p: &Parameter) -> String {
         Some(Value::Number(n)) => {
             let x = n.as_f64().unwrap_or(0.0);
             let factor = p.unit.as_deref().and_then(|u| parse_unit(u).ok()).map_or(1.0, |(f, _)| f);
-            super::job::number(x / factor)
+            let text = super::job::number(x / factor);
+            if i18n::current() == Lang::Es { text.replacen('.', ",", 1) } else { text }
         }
         Some(Value::String(s)) => s.clone(),
         Some(other) => other.to_string(),

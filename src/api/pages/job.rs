@@ -8,6 +8,7 @@ use crate::api::kind::AnyKind;
 use crate::api::plots::{self, Listed};
 use crate::api::read::{self, result_tree};
 use crate::api::tables::{self, Scalar};
+use crate::i18n::{self, Lang, Msg, tr};
 use crate::kind::problem::{ApiError, Problem};
 use crate::store::{JobRow, Status};
 use axum::extract::rejection::QueryRejection;
@@ -83,27 +84,28 @@ async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Resu
     }
     let summary = summary(&row, &result);
     let (values, long) = values(kind, &mut result);
+    let (lang, id) = (i18n::current(), &row.id);
+    let t = |key| tr(lang, key);
     let body = html! {
         h1 { (title(&row)) }
-        p.meta { "job " span.id { (row.id) } " · created " (when(&row.created_at)) " UTC"
-            @if let Some(l) = &row.label { " · label " strong { (plots::svg::clean(l)) } }
-            " · engine " (row.engine_version) }
+        (meta(&row))
         ul.links.noprint {
-            li { a href=(format!("/v1/jobs/{}", row.id)) { "JSON" } }
-            li { a href=(format!("/v1/jobs/{}/result.csv", row.id)) { "CSV table" } }
-            li { a href=(format!("/v1/jobs/{}/values?format=csv", row.id)) { "every value (CSV)" } }
-            li { a href=(format!("/v1/jobs/{}/plots", row.id)) { "plots (JSON)" } }
+            li { a href=(format!("/v1/jobs/{id}")) { "JSON" } }
+            li { a href=(format!("/v1/jobs/{id}/result.csv")) { (t("page-csv-table")) } }
+            li { a href=(format!("/v1/jobs/{id}/values?format=csv")) { (t("page-every-value")) } }
+            li { a href=(format!("/v1/jobs/{id}/plots")) { (t("page-plots-json")) } }
         }
-        h2 { "Values" }
+        h2 { (t("page-values")) }
         @if !long.is_empty() {
-            p { "Tables of the result (their rows are in the CSV): "
-                @for (k, (pointer, n)) in long.iter().enumerate() { @if k > 0 { ", " } code { (pointer) } " (" (n) " rows)" } }
+            p { (t("page-long-tables")) " "
+                @for (k, (pointer, n)) in long.iter().enumerate() {
+                    @if k > 0 { ", " } code { (pointer) } " (" (Msg::new("page-rows").arg("n", n).render(lang)) ")"
+                } }
         }
-        (value_table(&values))
+        (value_table(id, &values))
         (summary)
-        (plot_figures(&row.id, &listed, step))
-        h2 { "Request" }
-        details { summary { "The request as sent" } pre { (String::from_utf8_lossy(&row.request)) } }
+        (plot_figures(id, &listed, step))
+        (request_sent(&row))
     };
     Ok(Rendered::Done(layout::page(&title(&row), body)))
 }
@@ -111,30 +113,49 @@ async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Resu
 /// The page of a deferred job not done: where it is, or why it failed.
 fn not_done(row: &JobRow) -> Markup {
     let problem: Option<Problem> = row.problem.as_deref().and_then(|p| serde_json::from_slice(p).ok());
+    let lang = i18n::current();
     let body = html! {
         h1 { (title(row)) }
-        p.meta { "job " span.id { (row.id) } " · created " (when(&row.created_at)) " UTC"
-            @if let Some(l) = &row.label { " · label " strong { (plots::svg::clean(l)) } } }
+        (meta(row))
         @match &problem {
             Some(p) => {
-                h2 { "Failed: " (p.title) }
+                h2 { (Msg::new("page-failed").arg("title", &p.title).render(lang)) }
                 p.error { (p.detail) }
                 @if !p.errors.is_empty() { ul { @for e in &p.errors { li { (e.describe()) } } } }
             }
-            None => p { "This job is " strong { (row.status.as_str()) } "; this page shows its result once it is done." }
+            None => p { (Msg::new("page-waiting").arg("status", row.status.as_str()).render(lang)) }
         }
         ul.links.noprint { li { a href=(format!("/v1/jobs/{}", row.id)) { "JSON" } } }
-        h2 { "Request" }
-        details { summary { "The request as sent" } pre { (String::from_utf8_lossy(&row.request)) } }
+        (request_sent(row))
     };
     layout::page(&title(row), body)
 }
 
-fn title(row: &JobRow) -> String {
-    match &row.label {
-        Some(l) => format!("{} job: {}", row.kind, plots::svg::clean(l)),
-        None => format!("{} job", row.kind),
+/// What a job is: its id, when, its label, the engine's version.
+fn meta(row: &JobRow) -> Markup {
+    let t = |key| tr(i18n::current(), key);
+    html! {
+        p.meta { (t("page-job")) " " span.id { (row.id) } " · " (t("page-created")) " " (when(&row.created_at)) " UTC"
+            @if let Some(l) = &row.label { " · " (t("page-label")) " " strong { (plots::svg::clean(l)) } }
+            " · " (t("page-engine")) " " (row.engine_version) }
     }
+}
+
+/// The request as it was sent, folded.
+fn request_sent(row: &JobRow) -> Markup {
+    let t = |key| tr(i18n::current(), key);
+    html! {
+        h2 { (t("page-request")) }
+        details { summary { (t("page-request-sent")) } pre { (String::from_utf8_lossy(&row.request)) } }
+    }
+}
+
+fn title(row: &JobRow) -> String {
+    let msg = match &row.label {
+        Some(l) => Msg::new("page-job-title-label").arg("label", plots::svg::clean(l)),
+        None => Msg::new("page-job-title"),
+    };
+    msg.arg("kind", &row.kind).text()
 }
 
 /// The number of steps (kinetostatics) or samples (dynamics) a drawing can show.
@@ -164,20 +185,20 @@ fn summary(row: &JobRow, result: &Value) -> Markup {
     let warnings: Vec<&str> =
         result.get("warnings").and_then(Value::as_array).into_iter().flatten().filter_map(Value::as_str).collect();
     let accuracy = result.get("accuracy").and_then(Value::as_object);
+    let lang = i18n::current();
     html! {
-        h2 { "Accuracy and time" }
-        p { "Computed in " strong { (duration(row.engine_us)) } " of engine time." }
+        h2 { (tr(lang, "page-accuracy")) }
+        p { (Msg::new("page-computed-in").arg("time", duration(row.engine_us)).render(lang)) }
         @if let Some(a) = accuracy {
             div.scroll { table.accuracy { tbody { @for (k, v) in a { tr {
                 th { (k.replace('_', " ")) }
-                @if let Some(x) = v.as_f64().filter(|x| x.fract() != 0.0) { td.num { (crate::kind::plots::sig(x)) } }
-                @else if v.is_number() { td.num { (text(v)) } } @else { td { (text(v)) } }
+                @if v.is_number() { td.num { (text(v)) } } @else { td { (text(v)) } }
             } } } } }
         } @else {
-            p { "This kind reports no accuracy estimate of its own." }
+            p { (tr(lang, "page-no-accuracy")) }
         }
         @if !warnings.is_empty() {
-            h2 { "Warnings" }
+            h2 { (tr(lang, "page-warnings")) }
             ul.warnings { @for w in &warnings { li { (w) } } }
         }
     }
@@ -188,14 +209,15 @@ fn plot_figures(id: &str, listed: &[Listed], step: Option<usize>) -> Markup {
         Some(s) => format!("{}?step={s}", plots::href(id, &p.name)),
         None => plots::href(id, &p.name),
     };
+    let t = |key| tr(i18n::current(), key);
     html! {
         @if !listed.is_empty() {
-            h2 { "Plots" }
+            h2 { (t("page-plots")) }
             @if listed.iter().any(|p| p.name == "mechanism") {
                 form.inline.noprint method="get" action=(format!("/jobs/{id}")) {
-                    label for="step" { "Draw the mechanism at step" }
+                    label for="step" { (t("page-draw-at")) }
                     input #step type="number" name="step" min="0" required value=(step.unwrap_or(0));
-                    button type="submit" { "Draw" }
+                    button type="submit" { (t("page-draw")) }
                 }
             }
             div.plots { @for p in listed.iter().take(SHOWN) { figure {
@@ -203,7 +225,7 @@ fn plot_figures(id: &str, listed: &[Listed], step: Option<usize>) -> Markup {
                 figcaption { (p.title) " · " a href=(src(p)) { "SVG" } }
             } } }
             @if listed.len() > SHOWN {
-                p { "More plots of this job:" }
+                p { (t("page-more-plots")) }
                 ul { @for p in listed.iter().skip(SHOWN) { li { a href=(src(p)) { (p.title) } } } }
             }
         }
@@ -238,22 +260,32 @@ fn prune(v: &mut Value, at: String, long: &mut Vec<(String, usize)>) {
     }
 }
 
-fn value_table(values: &[Scalar]) -> Markup {
+/// The values, each number to four significant figures (in the page's
+/// language) linked to its full value ([`crate::api::parts`]).
+fn value_table(id: &str, values: &[Scalar]) -> Markup {
+    let t = |key| tr(i18n::current(), key);
     html! { div.scroll { table {
-        thead { tr { th { "quantity (JSON pointer)" } th { "value" } th { "unit" } } }
+        thead { tr { th { (t("page-col-quantity")) } th { (t("page-col-value")) } th { (t("page-col-unit")) } } }
         tbody { @for s in values { tr {
             td.ptr { @for (k, part) in s.pointer.trim_start_matches('/').split('/').enumerate() { @if k > 0 { "/" wbr; } (part) } }
-            @if s.value.is_number() { td.num { (text(&s.value)) } } @else { td { (text(&s.value)) } }
+            @if s.value.is_number() {
+                td.num { a href=(format!("/v1/jobs/{id}/result{}", s.pointer)) title=(t("page-full-value")) { (text(&s.value)) } }
+            } @else { td { (text(&s.value)) } }
             td { (s.unit.as_deref().filter(|u| *u != "1").unwrap_or("")) }
         } } }
     } } }
 }
 
-/// A value as a person reads it: a whole number without `.0`, others in
-/// their shortest exact form.
+/// A value as a person reads it: a whole number without `.0`, others to
+/// four significant figures, with a decimal comma on a Spanish page.
 fn text(v: &Value) -> String {
     match v {
-        Value::Number(n) => n.as_f64().map_or_else(|| n.to_string(), number),
+        Value::Number(n) if n.is_f64() => {
+            let x = n.as_f64().unwrap_or(f64::NAN);
+            let shown = if x.fract() == 0.0 { number(x) } else { crate::kind::plots::sig(x) };
+            if i18n::current() == Lang::Es { shown.replacen('.', ",", 1) } else { shown }
+        }
+        Value::Number(n) => n.to_string(),
         Value::String(s) => plots::svg::clean(s),
         Value::Null => "—".into(),
         other => other.to_string(),

@@ -3,6 +3,7 @@
 //! answer's headers (a Content-Security-Policy that allows no script and
 //! nothing from elsewhere). maud escapes every text put in a page.
 
+use crate::i18n::{self, Msg, tr};
 use crate::kind::problem::{ApiError, FieldError};
 use axum::http::{HeaderValue, StatusCode, header};
 use axum::response::{IntoResponse, Response};
@@ -60,11 +61,12 @@ footer { max-width: 70rem; margin: 2rem auto 1rem; padding: 0 1rem; color: var(-
 /// Scripts: none; styles: this page's own; images and forms: this service.
 const POLICY: &str = "default-src 'none'; img-src 'self' data:; style-src 'unsafe-inline'; form-action 'self'; base-uri 'none'; frame-ancestors 'none'";
 
-/// A whole page around `body`.
+/// A whole page around `body`, in the language of the request.
 pub fn page(title: &str, body: Markup) -> Markup {
+    let lang = i18n::current();
     html! {
         (DOCTYPE)
-        html lang="en" {
+        html lang=(lang.tag()) {
             head {
                 meta charset="utf-8";
                 meta name="viewport" content="width=device-width, initial-scale=1";
@@ -76,12 +78,12 @@ pub fn page(title: &str, body: Markup) -> Markup {
             body {
                 header { nav {
                     a.brand href="/" { "mechdyn" }
-                    a href="/" { "Jobs and templates" }
-                    a href="/docs/" { "API documentation" }
-                    a href="/openapi.json" { "OpenAPI document" }
+                    a href="/" { (tr(lang, "page-nav-home")) }
+                    a href="/docs/" { (tr(lang, "page-nav-docs")) }
+                    a href="/openapi.json" { (tr(lang, "page-nav-openapi")) }
                 } }
                 main { (body) }
-                footer { "mechdyn " (env!("CARGO_PKG_VERSION")) ": machine dynamics, every job stored. These pages need no JavaScript." }
+                footer { (Msg::new("page-footer").arg("version", env!("CARGO_PKG_VERSION")).render(lang)) }
             }
         }
     }
@@ -100,17 +102,17 @@ pub fn answer(status: StatusCode, page: Markup) -> Response {
 /// An error as a page: its status, its title and every message.
 pub fn error(e: ApiError) -> Response {
     let status = e.status();
-    let details: Vec<String> = e.fields().iter().map(FieldError::describe).collect();
-    let title = status.canonical_reason().unwrap_or("Error");
+    let problem = e.problem();
+    let details: Vec<String> = problem.errors.iter().map(FieldError::describe).collect();
     let mut response = answer(
         status,
         page(
-            title,
+            &problem.title,
             html! {
-                h1 { (status.as_u16()) " " (title) }
-                p.error { (e.to_string()) }
+                h1 { (status.as_u16()) " " (problem.title) }
+                p.error { (problem.detail) }
                 @if !details.is_empty() { ul { @for d in &details { li { (d) } } } }
-                p { a href="/" { "Back to the jobs and templates" } }
+                p { a href="/" { (tr(i18n::current(), "page-back")) } }
             },
         ),
     );

@@ -10,6 +10,7 @@ mod layout;
 
 use super::AppState;
 use super::templates::builtin;
+use crate::i18n::{self, tr};
 use crate::kind::problem::ApiError;
 use crate::store::Status;
 use axum::extract::rejection::QueryRejection;
@@ -42,25 +43,29 @@ pub async fn home(State(state): State<AppState>) -> Response {
     if let Ok(stored) = state.store.templates().await {
         templates.extend(stored.iter().filter_map(|b| serde_json::from_str(b).ok()));
     }
+    let lang = i18n::current();
+    let t = |id| tr(lang, id);
     let body = html! {
         h1 { "mechdyn" }
-        p.meta { "Machine dynamics: flywheels, kinetostatics, direct dynamics, rotors and gears. Every job is stored; \
-                  open one to see its values, accuracy and plots, or start from a template's form." }
-        h2 { "Templates" }
+        p.meta { (t("page-home-intro")) }
+        h2 { (t("page-templates")) }
         div.scroll { table {
-            thead { tr { th { "template" } th { "kind" } th { "problem" } } }
+            thead { tr { th { (t("page-col-template")) } th { (t("page-col-kind")) } th { (t("page-col-problem")) } } }
             tbody { @for t in &templates { tr {
                 td.id { a href=(format!("/templates/{}", super::plots::segment(&t.id))) { (t.id) } }
                 td { (t.kind) }
                 td { (t.title.as_deref().unwrap_or("")) }
             } } }
         } }
-        h2 { "Recent jobs" }
+        h2 { (t("page-recent")) }
         @if jobs.is_empty() {
-            p { "No job yet: open a template, or POST a request (see the " a href="/docs/" { "API documentation" } ")." }
+            p { (t("page-no-job")) " " a href="/docs/" { (t("page-nav-docs")) } }
         } @else {
             div.scroll { table {
-                thead { tr { th { "job" } th { "kind" } th { "label" } th { "created (UTC)" } th { "engine time, or status" } } }
+                thead { tr {
+                    th { (t("page-col-job")) } th { (t("page-col-kind")) } th { (t("page-col-label")) }
+                    th { (t("page-col-created")) } th { (t("page-col-time")) }
+                } }
                 tbody { @for j in &jobs { tr {
                     td.id { a href=(format!("/jobs/{}", j.id)) { (j.id) } }
                     td { (j.kind) }
@@ -70,15 +75,15 @@ pub async fn home(State(state): State<AppState>) -> Response {
                 } } }
             } }
         }
-        h2 { "For programs" }
+        h2 { (t("page-for-programs")) }
         ul.links {
-            li { a href="/docs/" { "API documentation" } }
-            li { a href="/openapi.json" { "OpenAPI document" } }
-            li { a href="/v1/jobs" { "jobs (JSON)" } }
-            li { a href="/v1/templates" { "templates (JSON)" } }
+            li { a href="/docs/" { (t("page-nav-docs")) } }
+            li { a href="/openapi.json" { (t("page-nav-openapi")) } }
+            li { a href="/v1/jobs" { (t("page-jobs-json")) } }
+            li { a href="/v1/templates" { (t("page-templates-json")) } }
         }
     };
-    layout::answer(StatusCode::OK, layout::page("Jobs and templates", body))
+    layout::answer(StatusCode::OK, layout::page(&t("page-nav-home"), body))
 }
 
 /// No icon: an answer a browser takes without logging a failed request

@@ -4,7 +4,9 @@
 //! key, under which the job it gives is stored and found again.
 
 use super::model::{Parameter, Template};
+use crate::i18n::Msg;
 use crate::kind::problem::{ApiError, FieldError};
+use crate::kind::quantity::unit_msg;
 use crate::units::{Dim, number, parse_quantity, parse_unit};
 use serde_json::Value;
 use sha2::{Digest, Sha256};
@@ -18,8 +20,8 @@ pub fn request_for(t: &Template, given: &HashMap<String, String>, ignore: &[&str
     for (name, text) in given.iter().filter(|(k, _)| !ignore.contains(&k.as_str())) {
         let Some(p) = t.parameters.get(name) else {
             let known: Vec<&str> = t.parameters.keys().map(String::as_str).collect();
-            let message = format!("no parameter {name} in template {} (its parameters: {})", t.id, known.join(", "));
-            errors.push(FieldError::parameter(name, message));
+            let msg = Msg::new("parameter-unknown").arg("name", name).arg("template", &t.id);
+            errors.push(FieldError::parameter_said(name, msg.arg("known", known.join(", "))));
             continue;
         };
         match value_for(p, text) {
@@ -29,7 +31,7 @@ pub fn request_for(t: &Template, given: &HashMap<String, String>, ignore: &[&str
                     errors.push(FieldError::parameter(name, format!("points at {}, not in the request", p.pointer)))
                 }
             },
-            Err(why) => errors.push(FieldError::parameter(name, why)),
+            Err(why) => errors.push(FieldError::parameter_said(name, why)),
         }
     }
     if errors.is_empty() { Ok(request) } else { Err(ApiError::BadQuery(errors)) }
@@ -43,10 +45,12 @@ pub fn texts(parameters: &BTreeMap<String, Value>) -> HashMap<String, String> {
 
 /// The JSON value of a parameter given as `text`: SI when the parameter has
 /// a unit, else the number, or the quantity string for the field to read.
-pub fn value_for(p: &Parameter, text: &str) -> Result<Value, String> {
+pub fn value_for(p: &Parameter, text: &str) -> Result<Value, Msg> {
     let text = text.trim();
     let (factor, dim) = match &p.unit {
-        Some(u) => parse_unit(u).map_err(|e| format!("the parameter's unit {u}: {e}"))?,
+        Some(u) => {
+            parse_unit(u).map_err(|e| Msg::new("parameter-own-unit").arg("unit", u).with("why", unit_msg(&e)))?
+        }
         None => (1.0, Dim::NONE),
     };
     let si = match number(text) {
@@ -54,14 +58,16 @@ pub fn value_for(p: &Parameter, text: &str) -> Result<Value, String> {
             checked(p, x, text)?;
             x * factor
         }
-        Some(_) => return Err("must be finite".into()),
+        Some(_) => return Err(Msg::new("parameter-finite")),
         None => {
-            let q = parse_quantity(text).map_err(|e| format!("'{text}' is neither a number nor a quantity: {e}"))?;
+            let q = parse_quantity(text)
+                .map_err(|e| Msg::new("parameter-not-quantity").arg("text", text).with("why", unit_msg(&e)))?;
             if p.unit.is_none() {
                 return checked(p, q.si, text).map(|()| Value::String(text.into()));
             }
             if q.dim != dim {
-                return Err(format!("'{text}' is in {}, where {} is expected", q.dim.si_name(), dim.si_name()));
+                let msg = Msg::new("parameter-dimension").arg("text", text).arg("found", q.dim.si_name());
+                return Err(msg.arg("expected", dim.si_name()));
             }
             checked(p, q.si / factor, text)?;
             q.si
@@ -79,19 +85,19 @@ fn integral(p: &Parameter, default: &Value, text: &str) -> Option<Value> {
 }
 
 /// `x` (in the parameter's unit) within its range and choices.
-fn checked(p: &Parameter, x: f64, text: &str) -> Result<(), String> {
+fn checked(p: &Parameter, x: f64, text: &str) -> Result<(), Msg> {
     let unit = p.unit.as_deref().map(|u| format!(" {u}")).unwrap_or_default();
     if let Some(min) = p.min.filter(|m| x < *m) {
-        return Err(format!("{text} is below the least value, {min}{unit}"));
+        return Err(Msg::new("parameter-below").arg("text", text).num("min", min).arg("unit", unit));
     }
     if let Some(max) = p.max.filter(|m| x > *m) {
-        return Err(format!("{text} is above the largest value, {max}{unit}"));
+        return Err(Msg::new("parameter-above").arg("text", text).num("max", max).arg("unit", unit));
     }
     if let Some(choices) = &p.choices {
         let listed = choices.iter().any(|c| c.as_f64() == Some(x) || c.as_str() == Some(text));
         if !listed {
             let all: Vec<String> = choices.iter().map(|c| c.to_string()).collect();
-            return Err(format!("{text} is not one of {}", all.join(", ")));
+            return Err(Msg::new("parameter-not-choice").arg("text", text).arg("choices", all.join(", ")));
         }
     }
     Ok(())

@@ -193,14 +193,22 @@ pub async fn result(
     let result = serde_json::from_slice(&row.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
     let (mime, text) = parts::text(&state.kinds, &row, &result, &pointer, &q, &headers)?;
     let body = bytes::Bytes::from(text);
-    state.answers.keep(key, (mime, body.clone()));
+    // Kept only of a stored job (an unstored row has no sequence number):
+    // the next request with the token then finds it stored, as it would
+    // without the answers kept.
+    if row.seq > 0 {
+        state.answers.keep(key, (mime, body.clone()));
+    }
     Ok(([(header::CONTENT_TYPE, mime)], body).into_response())
 }
 
 fn parameters(q: Result<Query<HashMap<String, String>>, QueryRejection>) -> Result<HashMap<String, String>, ApiError> {
     let Query(q) = q.map_err(|e| ApiError::BadQuery(vec![FieldError::parameter("", e.body_text())]))?;
     if q.contains_key("") {
-        return Err(ApiError::BadQuery(vec![FieldError::parameter("", "a parameter without a name (`?=...`)")]));
+        return Err(ApiError::BadQuery(vec![FieldError::parameter_said(
+            "",
+            crate::i18n::Msg::new("parameter-nameless"),
+        )]));
     }
     Ok(q)
 }

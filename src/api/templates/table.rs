@@ -7,6 +7,7 @@ use super::model::Template;
 use super::{RESERVED, Want, job_for};
 use crate::api::AppState;
 use crate::api::tables::{Csv, Decimal, at, tokens};
+use crate::i18n::Msg;
 use crate::kind::cell;
 use crate::kind::problem::{ApiError, FieldError};
 use axum::http::{HeaderMap, header};
@@ -162,16 +163,16 @@ pub fn read_csv(text: &str) -> Result<(Vec<Column>, Vec<Vec<String>>), ApiError>
 }
 
 /// Why a row has not one cell per column, if it has not (`row` counts the data rows from 1).
-pub fn ragged(header: &[Column], row: &[String], i: usize) -> Option<String> {
-    let hint = if row.len() > header.len() { crate::kind::function_csv::COMMA_HINT } else { "" };
-    (row.len() != header.len())
-        .then(|| format!("row {} has {} cells for {} columns{hint}", i + 1, row.len(), header.len()))
+pub fn ragged(header: &[Column], row: &[String], i: usize) -> Option<Msg> {
+    let id = if row.len() > header.len() { "csv-ragged-comma" } else { "csv-ragged" };
+    let msg = Msg::new(id).arg("row", i + 1).arg("cells", row.len()).arg("columns", header.len());
+    (row.len() != header.len()).then_some(msg)
 }
 
 /// Every row whole, or a 400 naming the first that is not.
 fn even(header: &[Column], rows: &[Vec<String>]) -> Result<(), ApiError> {
     match rows.iter().enumerate().find_map(|(i, r)| ragged(header, r, i)) {
-        Some(why) => Err(bad("body", why)),
+        Some(why) => Err(ApiError::BadQuery(vec![FieldError::parameter_said("body", why)])),
         None => Ok(()),
     }
 }

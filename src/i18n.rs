@@ -1,0 +1,182 @@
+//! Every text a person reads, from one message catalogue per language
+//! (Fluent: `i18n/en.ftl`, `i18n/es.ftl`), so that a message written once
+//! has its Spanish beside it and a test fails when it has not.
+//!
+//! A message is named by its id and carries its arguments ([`Msg`]); it is
+//! rendered in a language when it is answered. The language of an answer is
+//! negotiated once per request ([`Lang::negotiate`]: `?lang=`, then
+//! `Accept-Language`; English by default) and held for the request's task
+//! ([`within`], [`current`]), so that an error, a page or a plot rendered
+//! anywhere below a handler speaks the asker's language without every
+//! function being handed it. Outside a request (the command line, the
+//! engine's tests) it is English.
+//!
+//! The course's own words (seed 000): par, reacción, volante, par motor,
+//! grado de irregularidad, energía cinética, leva, seguidor.
+
+use fluent_bundle::concurrent::FluentBundle;
+use fluent_bundle::{FluentArgs, FluentResource};
+use std::sync::LazyLock;
+
+/// A language the service answers in.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Lang {
+    #[default]
+    En,
+    Es,
+}
+
+impl Lang {
+    pub const ALL: [Lang; 2] = [Lang::En, Lang::Es];
+
+    /// The BCP 47 tag (`Content-Language`, `<html lang>`).
+    pub fn tag(self) -> &'static str {
+        match self {
+            Lang::En => "en",
+            Lang::Es => "es",
+        }
+    }
+
+    fn of(tag: &str) -> Option<Lang> {
+        let primary = tag.trim().split(['-', '_']).next().unwrap_or("").to_ascii_lowercase();
+        Lang::ALL.into_iter().find(|l| l.tag() == primary)
+    }
+
+    /// The language of a request: `?lang=` when it names one the service
+    /// has, else the first of `Accept-Language` by its weights that it has,
+    /// else English. A preference the service cannot meet is not an error.
+    pub fn negotiate(query: Option<&str>, accept: Option<&str>) -> Lang {
+        if let Some(lang) = query.and_then(Lang::of) {
+            return lang;
+        }
+        let mut best: Option<(f32, Lang)> = None;
+        for item in accept.unwrap_or("").split(',') {
+            let mut parts = item.split(';');
+            let Some(lang) = parts.next().and_then(Lang::of) else { continue };
+            let q = parts
+                .find_map(|p| p.trim().strip_prefix("q=").and_then(|q| q.trim().parse::<f32>().ok()))
+                .unwrap_or(1.0);
+            if q > 0.0 && best.is_none_or(|(b, _)| q > b) {
+                best = Some((q, lang));
+            }
+        }
+        best.map_or(Lang::En, |(_, l)| l)
+    }
+
+    /// A number as this language writes it in a sentence: shortest
+    /// round-trip digits, with a decimal comma in Spanish.
+    pub fn number(self, x: f64) -> String {
+        let text = format!("{x}");
+        if self == Lang::Es { text.replacen('.', ",", 1) } else { text }
+    }
+}
+
+/// One argument of a message.
+#[derive(Clone, Debug, PartialEq)]
+enum Arg {
+    Text(String),
+    Number(f64),
+    Count(usize),
+    Said(Box<Msg>),
+}
+
+/// A message of the catalogue with its arguments, rendered in a language
+/// when it is answered.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Msg {
+    id: &'static str,
+    args: Vec<(&'static str, Arg)>,
+}
+
+impl Msg {
+    pub fn new(id: &'static str) -> Self {
+        Self { id, args: Vec::new() }
+    }
+
+    /// A text argument (a name, a unit, a value as the client wrote it).
+    pub fn arg(mut self, name: &'static str, value: impl std::fmt::Display) -> Self {
+        self.args.push((name, Arg::Text(value.to_string())));
+        self
+    }
+
+    /// A number argument, written as the language writes numbers.
+    pub fn num(mut self, name: &'static str, value: f64) -> Self {
+        self.args.push((name, Arg::Number(value)));
+        self
+    }
+
+    /// A count, for the catalogue's plural forms (`1 campo`, `2 campos`).
+    pub fn count(mut self, name: &'static str, n: usize) -> Self {
+        self.args.push((name, Arg::Count(n)));
+        self
+    }
+
+    /// A message within this one, rendered in the same language.
+    pub fn with(mut self, name: &'static str, inner: Msg) -> Self {
+        self.args.push((name, Arg::Said(Box::new(inner))));
+        self
+    }
+
+    /// The message in `lang`; a message missing from the catalogue (a test
+    /// forbids it) renders as its id.
+    pub fn render(&self, lang: Lang) -> String {
+        let bundle = &CATALOGUES[lang as usize];
+        let Some(pattern) = bundle.get_message(self.id).and_then(|m| m.value()) else {
+            return self.id.to_string();
+        };
+        let mut args = FluentArgs::new();
+        for (name, value) in &self.args {
+            match value {
+                Arg::Text(t) => args.set(*name, t.as_str()),
+                Arg::Number(x) => args.set(*name, lang.number(*x)),
+                Arg::Count(n) => args.set(*name, *n),
+                Arg::Said(inner) => args.set(*name, inner.render(lang)),
+            }
+        }
+        let mut errors = Vec::new();
+        bundle.format_pattern(pattern, Some(&args), &mut errors).into_owned()
+    }
+
+    /// The message in the language of the request being answered.
+    pub fn text(&self) -> String {
+        self.render(current())
+    }
+}
+
+/// A message without arguments in `lang`.
+pub fn tr(lang: Lang, id: &'static str) -> String {
+    Msg::new(id).render(lang)
+}
+
+const SOURCES: [&str; 2] = [include_str!("i18n/en.ftl"), include_str!("i18n/es.ftl")];
+
+static CATALOGUES: LazyLock<[FluentBundle<FluentResource>; 2]> = LazyLock::new(|| Lang::ALL.map(catalogue));
+
+fn catalogue(lang: Lang) -> FluentBundle<FluentResource> {
+    let source = SOURCES[lang as usize];
+    // A syntax error is caught by the tests; what parsed is used.
+    let resource = FluentResource::try_new(source.to_string()).unwrap_or_else(|(r, _)| r);
+    let id = lang.tag().parse().unwrap_or_default();
+    let mut bundle = FluentBundle::new_concurrent(vec![id]);
+    // Plain text: no Unicode isolation marks around arguments.
+    bundle.set_use_isolating(false);
+    let _ = bundle.add_resource(resource);
+    bundle
+}
+
+tokio::task_local! {
+    static LANG: Lang;
+}
+
+/// The language of the request being answered (English outside one).
+pub fn current() -> Lang {
+    LANG.try_with(|l| *l).unwrap_or_default()
+}
+
+/// Runs `f` answering in `lang`.
+pub async fn within<F: std::future::Future>(lang: Lang, f: F) -> F::Output {
+    LANG.scope(lang, f).await
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,188 @@
+# mechdyn's messages in English: every text a person reads.
+# Each message has its Spanish in es.ftl with the same arguments
+# (src/i18n/tests.rs fails otherwise).
+
+## Problem documents: titles
+
+problem-malformed-json = The body is not valid JSON
+problem-unsupported-media-type = Unsupported content type
+problem-payload-too-large = Request body too large
+problem-invalid-request = The request is not a valid problem
+problem-invalid-query = Invalid query parameters
+problem-job-not-found = Job not found
+problem-not-found = Not found
+problem-template-not-found = Template not found
+problem-conflict = The name is taken
+problem-in-progress = The same request is being answered
+problem-interrupted = The job was interrupted
+problem-job-not-done = The job has no result
+problem-no-such-part = No such part of the result
+problem-no-such-plot = No such plot of the job
+problem-no-such-file = No such file of the job
+problem-method-not-allowed = Method not allowed
+problem-compute-budget = The job ran out of its compute budget
+problem-result-too-large = The result would be too large
+problem-saturated = The service is saturated
+problem-storage-full = The service's storage is full
+problem-database-unavailable = The database is unavailable
+problem-unauthorized = Missing or wrong bearer token
+problem-request-timeout = The request's body did not arrive in time
+problem-length-required = The body's length is required
+problem-internal = Internal server error
+
+## Problem documents: details
+
+detail-malformed-json = the body is not valid JSON: { $why }
+detail-unsupported-media-type = the content type must be application/json
+detail-unsupported-table = the content type must be text/csv or application/json
+detail-payload-too-large = the body is larger than the limit of { $limit } bytes
+detail-invalid =
+    { $count ->
+        [one] 1 invalid field
+       *[other] { $count } invalid fields
+    }
+detail-bad-query = invalid query parameters
+detail-not-found = no job with id '{ $id }'
+detail-no-part = job '{ $id }' has no part of its result at '{ $pointer }'
+detail-no-plot = job '{ $id }' has no plot '{ $name }' (its plots: { $known })
+detail-no-plot-none = job '{ $id }' has no plot '{ $name }' (it has no plots)
+detail-no-file = job '{ $id }' has no file '{ $name }' (its files: { $known })
+detail-no-file-none = job '{ $id }' has no file '{ $name }' (it has none)
+detail-no-template = no template with id '{ $id }' (GET /v1/templates lists them)
+detail-as-said = { $why }
+detail-in-progress = a request with Idempotency-Key '{ $key }' is still being answered; retry after 1 s
+detail-failed = job '{ $id }' failed and has no result: GET /v1/jobs/{ $id } says why (its `problem`)
+detail-not-done = job '{ $id }' is { $status }: its result is not there yet; retry after 1 s
+detail-interrupted = the job was claimed { $times } times and each time its replica stopped before it ended; it was not tried again
+detail-no-route = no such resource
+detail-method-not-allowed = method not allowed
+detail-result-too-large = the result would be larger than the limit of { $limit } bytes on a result
+detail-saturated = the service is saturated ({ $reason }); retry after { $seconds } s
+detail-storage-full = { $what }: the service's storage is full; reads still work, and writes resume once space returns
+detail-unavailable = the database is unavailable; retry later
+detail-unauthorized = this service stores and deletes jobs only for a request with "Authorization: Bearer <token>": every POST and DELETE, and a GET of a template's job or page that would store a new job
+detail-length-required = an HTTP/1.0 POST needs a Content-Length header: its body's end cannot be told otherwise
+detail-internal = internal error; the x-request-id header of this answer finds it in the service's log
+
+## Quantities and units
+
+unit-malformed = '{ $text }' is not a number followed by a unit, e.g. "300 rpm"
+unit-unknown = unknown unit '{ $unit }'; known units: { $known }
+unit-unknown-hint = unknown unit '{ $unit }'; did you mean { $hint }? Known units: { $known }
+unit-wrong-dimension = a value in { $found } where { $expected } is expected
+
+## A field of a request
+
+field-unknown = unknown field
+field-missing = required field is missing
+field-finite = must be finite
+field-positive = must be greater than 0
+field-too-long = must be at most { $max } characters (has { $has })
+field-not-angle = '{ $text }' is neither an angle (e.g. "90 deg") nor a constant expression (e.g. "7*pi/4")
+field-expression = '{ $text }' is an expression, not a quantity: write it as {"{"}"expr": "{ $text }"{"}"}
+field-expected = expected { $expected }, got { $got }
+
+## The query of a URL
+
+query-unknown = unknown parameter (known: { $known })
+query-decimal = must be point or comma
+query-angles = must be rad or deg
+query-twice = is given more than once: give it once
+query-format = '{ $value }': must be csv or json
+
+## A template's parameters
+
+parameter-unknown = no parameter { $name } in template { $template } (its parameters: { $known })
+parameter-not-quantity = '{ $text }' is neither a number nor a quantity: { $why }
+parameter-finite = must be finite
+parameter-below = { $text } is below the least value, { $min }{ $unit }
+parameter-above = { $text } is above the largest value, { $max }{ $unit }
+parameter-not-choice = { $text } is not one of { $choices }
+parameter-dimension = '{ $text }' is in { $found }, where { $expected } is expected
+parameter-own-unit = the parameter's unit { $unit }: { $why }
+parameter-nameless = a parameter without a name (`?=...`)
+
+## CSV tables
+
+csv-ragged = row { $row } has { $cells } cells for { $columns } columns
+csv-ragged-comma = row { $row } has { $cells } cells for { $columns } columns; a decimal comma in a CSV separated by commas is written in quotes ("0,02"), or the columns separated by ;
+csv-columns = row { $row } has { $cells } columns; give two: angle, value
+csv-columns-comma = row { $row } has { $cells } columns; give two: angle, value; a decimal comma in a CSV separated by commas is written in quotes ("0,02"), or the columns separated by ;
+
+## JSON as a person reads it
+
+json-number = a number
+json-whole = a whole number, 0 or more
+json-integer = a whole number
+json-bool = true or false
+json-text = a text in quotes
+json-array = an array [...]
+json-object = an object {"{"}...{"}"}
+json-struct = an object {"{"}...{"}"} with named fields
+json-array-of = an array of { $n } numbers
+json-tuple = an array of { $n } items
+json-got-array = an array
+json-got-object = an object
+json-got-text = the text { $text }
+json-got-number = the number { $value }
+json-got-items = { $n } item(s)
+json-variant = unknown variant { $got }, expected { $expected }
+
+## Pages
+
+page-nav-home = Jobs and templates
+page-nav-docs = API documentation
+page-nav-openapi = OpenAPI document
+page-footer = mechdyn { $version }: machine dynamics, every job stored. These pages need no JavaScript.
+page-back = Back to the jobs and templates
+page-home-intro = Machine dynamics: flywheels, kinetostatics, direct dynamics, rotors, gears and cams. Every job is stored; open one to see its values, accuracy and plots, or start from a template's form.
+page-templates = Templates
+page-col-template = template
+page-col-kind = kind
+page-col-problem = problem
+page-recent = Recent jobs
+page-no-job = No job yet: open a template, or POST a request:
+page-col-job = job
+page-col-label = label
+page-col-created = created (UTC)
+page-col-time = engine time, or status
+page-for-programs = For programs
+page-jobs-json = jobs (JSON)
+page-templates-json = templates (JSON)
+page-job-title = { $kind } job
+page-job-title-label = { $kind } job: { $label }
+page-job = job
+page-created = created
+page-label = label
+page-engine = engine
+page-csv-table = CSV table
+page-every-value = every value (CSV)
+page-plots-json = plots (JSON)
+page-values = Values
+page-long-tables = Tables of the result (their rows are in the CSV):
+page-rows = { $n } rows
+page-request = Request
+page-request-sent = The request as sent
+page-failed = Failed: { $title }
+page-waiting = This job is { $status }; this page shows its result once it is done.
+page-accuracy = Accuracy and time
+page-computed-in = Computed in { $time } of engine time.
+page-no-accuracy = This kind reports no accuracy estimate of its own.
+page-warnings = Warnings
+page-plots = Plots
+page-draw-at = Draw the mechanism at step
+page-draw = Draw
+page-more-plots = More plots of this job:
+page-col-quantity = quantity (JSON pointer)
+page-col-value = value
+page-col-unit = unit
+page-full-value = the full value
+page-template-meta = template { $id } · a { $kind } job
+page-form-help = A number is read in the unit beside its name; a quantity with its own unit ("300 rpm", "4 %", "20°") is read in that unit; a field left blank keeps its default.
+page-compute = Compute
+page-form-url = The same job by URL, for a spreadsheet or a script:
+page-form-url-json = (JSON), or one number:
+page-one-of = one of { $choices }
+page-from-to = from { $min } to { $max }{ $unit }
+page-at-least = at least { $min }{ $unit }
+page-at-most = at most { $max }{ $unit }

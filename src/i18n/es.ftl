@@ -1,0 +1,188 @@
+# Los mensajes de mechdyn en español: cada texto que lee una persona.
+# Cada mensaje tiene su inglés en en.ftl con los mismos argumentos
+# (src/i18n/tests.rs falla si no).
+
+## Documentos de problema: títulos
+
+problem-malformed-json = El cuerpo no es JSON válido
+problem-unsupported-media-type = Tipo de contenido no admitido
+problem-payload-too-large = Cuerpo de la petición demasiado grande
+problem-invalid-request = La petición no es un problema válido
+problem-invalid-query = Parámetros de consulta no válidos
+problem-job-not-found = Trabajo no encontrado
+problem-not-found = No encontrado
+problem-template-not-found = Plantilla no encontrada
+problem-conflict = El nombre ya existe
+problem-in-progress = Se está respondiendo la misma petición
+problem-interrupted = El trabajo se interrumpió
+problem-job-not-done = El trabajo no tiene resultado
+problem-no-such-part = El resultado no tiene esa parte
+problem-no-such-plot = El trabajo no tiene esa gráfica
+problem-no-such-file = El trabajo no tiene ese fichero
+problem-method-not-allowed = Método no permitido
+problem-compute-budget = El trabajo agotó su tiempo de cálculo
+problem-result-too-large = El resultado sería demasiado grande
+problem-saturated = El servicio está saturado
+problem-storage-full = El almacenamiento del servicio está lleno
+problem-database-unavailable = La base de datos no está disponible
+problem-unauthorized = Falta el token de portador o es incorrecto
+problem-request-timeout = El cuerpo de la petición no llegó a tiempo
+problem-length-required = Se necesita la longitud del cuerpo
+problem-internal = Error interno del servidor
+
+## Documentos de problema: detalles
+
+detail-malformed-json = el cuerpo no es JSON válido: { $why }
+detail-unsupported-media-type = el tipo de contenido debe ser application/json
+detail-unsupported-table = el tipo de contenido debe ser text/csv o application/json
+detail-payload-too-large = el cuerpo supera el límite de { $limit } bytes
+detail-invalid =
+    { $count ->
+        [one] 1 campo no válido
+       *[other] { $count } campos no válidos
+    }
+detail-bad-query = parámetros de consulta no válidos
+detail-not-found = no hay ningún trabajo con id '{ $id }'
+detail-no-part = el trabajo '{ $id }' no tiene ninguna parte de su resultado en '{ $pointer }'
+detail-no-plot = el trabajo '{ $id }' no tiene la gráfica '{ $name }' (sus gráficas: { $known })
+detail-no-plot-none = el trabajo '{ $id }' no tiene la gráfica '{ $name }' (no tiene gráficas)
+detail-no-file = el trabajo '{ $id }' no tiene el fichero '{ $name }' (sus ficheros: { $known })
+detail-no-file-none = el trabajo '{ $id }' no tiene el fichero '{ $name }' (no tiene ninguno)
+detail-no-template = no hay ninguna plantilla con id '{ $id }' (GET /v1/templates las lista)
+detail-as-said = { $why }
+detail-in-progress = aún se está respondiendo una petición con Idempotency-Key '{ $key }'; reinténtelo dentro de 1 s
+detail-failed = el trabajo '{ $id }' falló y no tiene resultado: GET /v1/jobs/{ $id } dice por qué (su `problem`)
+detail-not-done = el trabajo '{ $id }' está { $status }: su resultado aún no está; reinténtelo dentro de 1 s
+detail-interrupted = el trabajo se reclamó { $times } veces y cada vez su réplica se detuvo antes de acabar; no se volvió a intentar
+detail-no-route = no existe ese recurso
+detail-method-not-allowed = método no permitido
+detail-result-too-large = el resultado superaría el límite de { $limit } bytes de un resultado
+detail-saturated = el servicio está saturado ({ $reason }); reinténtelo dentro de { $seconds } s
+detail-storage-full = { $what }: el almacenamiento del servicio está lleno; las lecturas siguen funcionando y las escrituras se reanudan cuando vuelve a haber espacio
+detail-unavailable = la base de datos no está disponible; reinténtelo más tarde
+detail-unauthorized = este servicio guarda y borra trabajos solo para una petición con "Authorization: Bearer <token>": cada POST y DELETE, y un GET del trabajo o la página de una plantilla que guardaría un trabajo nuevo
+detail-length-required = un POST de HTTP/1.0 necesita la cabecera Content-Length: de otro modo no se sabe dónde acaba su cuerpo
+detail-internal = error interno; la cabecera x-request-id de esta respuesta lo encuentra en el registro del servicio
+
+## Magnitudes y unidades
+
+unit-malformed = '{ $text }' no es un número seguido de una unidad, p. ej. "300 rpm" o "0,02"
+unit-unknown = unidad desconocida '{ $unit }'; unidades conocidas: { $known }
+unit-unknown-hint = unidad desconocida '{ $unit }'; ¿quería decir { $hint }? Unidades conocidas: { $known }
+unit-wrong-dimension = un valor en { $found } donde se espera { $expected }
+
+## Un campo de la petición
+
+field-unknown = campo desconocido
+field-missing = falta un campo obligatorio
+field-finite = debe ser finito
+field-positive = debe ser mayor que 0
+field-too-long = debe tener como mucho { $max } caracteres (tiene { $has })
+field-not-angle = '{ $text }' no es ni un ángulo (p. ej. "90 deg" o "90°") ni una expresión constante (p. ej. "7*pi/4")
+field-expression = '{ $text }' es una expresión, no una magnitud: escríbala como {"{"}"expr": "{ $text }"{"}"}
+field-expected = se esperaba { $expected } y llegó { $got }
+
+## La consulta de una URL
+
+query-unknown = parámetro desconocido (conocidos: { $known })
+query-decimal = debe ser point o comma
+query-angles = debe ser rad o deg
+query-twice = aparece más de una vez: indíquelo una sola vez
+query-format = '{ $value }': debe ser csv o json
+
+## Los parámetros de una plantilla
+
+parameter-unknown = la plantilla { $template } no tiene el parámetro { $name } (sus parámetros: { $known })
+parameter-not-quantity = '{ $text }' no es ni un número ni una magnitud: { $why }
+parameter-finite = debe ser finito
+parameter-below = { $text } está por debajo del valor mínimo, { $min }{ $unit }
+parameter-above = { $text } está por encima del valor máximo, { $max }{ $unit }
+parameter-not-choice = { $text } no es ninguno de { $choices }
+parameter-dimension = '{ $text }' está en { $found }, donde se espera { $expected }
+parameter-own-unit = la unidad del parámetro { $unit }: { $why }
+parameter-nameless = un parámetro sin nombre (`?=...`)
+
+## Tablas CSV
+
+csv-ragged = la fila { $row } tiene { $cells } celdas para { $columns } columnas
+csv-ragged-comma = la fila { $row } tiene { $cells } celdas para { $columns } columnas; en un CSV separado por comas, un número con coma decimal se escribe entre comillas ("0,02"), o se separan las columnas con ;
+csv-columns = la fila { $row } tiene { $cells } columnas; dé dos: ángulo, valor
+csv-columns-comma = la fila { $row } tiene { $cells } columnas; dé dos: ángulo, valor; en un CSV separado por comas, un número con coma decimal se escribe entre comillas ("0,02"), o se separan las columnas con ;
+
+## JSON tal como lo lee una persona
+
+json-number = un número
+json-whole = un número entero, 0 o mayor
+json-integer = un número entero
+json-bool = true o false
+json-text = un texto entre comillas
+json-array = una lista [...]
+json-object = un objeto {"{"}...{"}"}
+json-struct = un objeto {"{"}...{"}"} con campos con nombre
+json-array-of = una lista de { $n } números
+json-tuple = una lista de { $n } elementos
+json-got-array = una lista
+json-got-object = un objeto
+json-got-text = el texto { $text }
+json-got-number = el número { $value }
+json-got-items = { $n } elemento(s)
+json-variant = variante desconocida { $got }, se esperaba { $expected }
+
+## Páginas
+
+page-nav-home = Trabajos y plantillas
+page-nav-docs = Documentación de la API
+page-nav-openapi = Documento OpenAPI
+page-footer = mechdyn { $version }: dinámica de máquinas, cada trabajo guardado. Estas páginas no necesitan JavaScript.
+page-back = Volver a los trabajos y plantillas
+page-home-intro = Dinámica de máquinas: volantes, cinetostática, dinámica directa, rotores, engranajes y levas. Cada trabajo queda guardado; abra uno para ver sus valores, su precisión y sus gráficas, o empiece por el formulario de una plantilla.
+page-templates = Plantillas
+page-col-template = plantilla
+page-col-kind = tipo
+page-col-problem = problema
+page-recent = Trabajos recientes
+page-no-job = Aún no hay trabajos: abra una plantilla o envíe una petición POST:
+page-col-job = trabajo
+page-col-label = etiqueta
+page-col-created = creado (UTC)
+page-col-time = tiempo de cálculo, o estado
+page-for-programs = Para programas
+page-jobs-json = trabajos (JSON)
+page-templates-json = plantillas (JSON)
+page-job-title = trabajo { $kind }
+page-job-title-label = trabajo { $kind }: { $label }
+page-job = trabajo
+page-created = creado
+page-label = etiqueta
+page-engine = motor de cálculo
+page-csv-table = tabla CSV
+page-every-value = todos los valores (CSV)
+page-plots-json = gráficas (JSON)
+page-values = Valores
+page-long-tables = Tablas del resultado (sus filas están en el CSV):
+page-rows = { $n } filas
+page-request = Petición
+page-request-sent = La petición tal como se envió
+page-failed = Falló: { $title }
+page-waiting = Este trabajo está { $status }; esta página mostrará su resultado cuando termine.
+page-accuracy = Precisión y tiempo
+page-computed-in = Calculado en { $time } de tiempo de cálculo.
+page-no-accuracy = Este tipo de cálculo no da una estimación propia de su precisión.
+page-warnings = Avisos
+page-plots = Gráficas
+page-draw-at = Dibujar el mecanismo en el paso
+page-draw = Dibujar
+page-more-plots = Más gráficas de este trabajo:
+page-col-quantity = magnitud (puntero JSON)
+page-col-value = valor
+page-col-unit = unidad
+page-full-value = el valor completo
+page-template-meta = plantilla { $id } · un trabajo { $kind }
+page-form-help = Un número se lee en la unidad que figura junto a su nombre (con coma decimal si se quiere: 0,03); una magnitud con su propia unidad ("300 rpm", "4 %", "20°") se lee en esa unidad; un campo en blanco conserva su valor por defecto.
+page-compute = Calcular
+page-form-url = El mismo trabajo por URL, para una hoja de cálculo o un programa:
+page-form-url-json = (JSON), o un solo número:
+page-one-of = uno de { $choices }
+page-from-to = de { $min } a { $max }{ $unit }
+page-at-least = al menos { $min }{ $unit }
+page-at-most = como mucho { $max }{ $unit }

@@ -1,0 +1,125 @@
+//! The service in Spanish: `Accept-Language: es` or `?lang=es` gives the
+//! problem documents' title, detail and field messages and the pages in
+//! Spanish (the course's words), with `type`, pointers, field names and
+//! units unchanged; English stays the default. The Spanish texts are the
+//! catalogue's (src/i18n/es.ftl); these tests check that they reach the
+//! asker, where, and that nothing else moved.
+
+use crate::helpers::{Reply, TestApp, request};
+use axum::body::Body;
+use axum::http::{Request, StatusCode};
+use serde_json::{Value, json};
+
+async fn in_spanish(app: &TestApp, method: &str, path: &str, body: Option<&Value>) -> Reply {
+    let req = Request::builder().method(method).uri(path).header("accept-language", "es-ES,es;q=0.9,en;q=0.5");
+    let req = match body {
+        Some(b) => req.header("content-type", "application/json").body(Body::from(b.to_string())),
+        None => req.body(Body::empty()),
+    };
+    app.send(req.unwrap()).await
+}
+
+/// A bad parameter of a template's number: the same 400 in both
+/// languages, its words Spanish with the header or `?lang=es`.
+#[tokio::test]
+async fn a_query_error_in_spanish() {
+    let app = TestApp::new().await;
+    let path = "/v1/templates/p103-slider-flywheel/result/inertia_exact?F=mucho&G=1";
+    let (en, es) = (app.get(path).await, in_spanish(&app, "GET", path, None).await);
+    let by_query = app.get(&format!("{path}&lang=es")).await;
+    assert_eq!(es.status, StatusCode::BAD_REQUEST);
+    assert_eq!(es.headers["content-language"], "es");
+    assert_eq!(en.headers["content-language"], "en");
+    assert_eq!(by_query.json(), es.json(), "?lang=es is the header");
+    let (en, es) = (en.json(), es.json());
+    assert_eq!(en["type"], es["type"], "the type does not change");
+    assert_eq!(en["title"], "Invalid query parameters");
+    assert_eq!(es["title"], "Parámetros de consulta no válidos");
+    assert_eq!(es["detail"], "parámetros de consulta no válidos");
+    let message = |doc: &Value, name: &str| {
+        let errors = doc["errors"].as_array().unwrap();
+        errors.iter().find(|e| e["parameter"] == name).unwrap()["message"].as_str().unwrap().to_string()
+    };
+    assert!(message(&es, "F").starts_with("'mucho' no es ni un número ni una magnitud"), "{es}");
+    assert!(message(&en, "F").starts_with("'mucho' is neither a number nor a quantity"), "{en}");
+    assert!(message(&es, "G").contains("no tiene el parámetro G (sus parámetros: F, I0, eps, speed)"), "{es}");
+}
+
+/// A request that is not a valid problem: the 422's title, its count of
+/// fields and each field's message in Spanish, at the same pointers.
+#[tokio::test]
+async fn a_422_in_spanish_at_the_same_pointers() {
+    let app = TestApp::new().await;
+    let mut body = request("p103_slider");
+    body["mean_speed"] = json!("60 rmp");
+    body["irregularity"] = json!("mucho");
+    body["reduced_inertia"] = json!([1, 2]);
+    body["colour"] = json!("red");
+    let es = in_spanish(&app, "POST", "/v1/flywheel", Some(&body)).await;
+    assert_eq!(es.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", es.text);
+    let en = app.post("/v1/flywheel", &body).await.json();
+    let es = es.json();
+    assert_eq!(es["title"], "La petición no es un problema válido");
+    let pointers = |doc: &Value| -> Vec<String> {
+        doc["errors"].as_array().unwrap().iter().map(|e| e["pointer"].as_str().unwrap().to_string()).collect()
+    };
+    assert_eq!(pointers(&en), pointers(&es));
+    let at = |p: &str| {
+        let errors = es["errors"].as_array().unwrap();
+        errors.iter().find(|e| e["pointer"] == p).map(|e| e["message"].as_str().unwrap().to_string())
+    };
+    match at("/colour") {
+        Some(m) => assert_eq!(m, "campo desconocido"),
+        None => assert!(at("/reduced_inertia").is_some(), "{es}"),
+    }
+    let n = es["errors"].as_array().unwrap().len();
+    assert_eq!(es["detail"], if n == 1 { "1 campo no válido".to_string() } else { format!("{n} campos no válidos") });
+    // The wrong type is found first (serde stops there); then the units, each in Spanish.
+    let mut units = request("p103_slider");
+    units["mean_speed"] = json!("60 rmp");
+    units["irregularity"] = json!("4 kg");
+    let es = in_spanish(&app, "POST", "/v1/flywheel", Some(&units)).await.json();
+    let at = |p: &str| es["errors"].as_array().unwrap().iter().find(|e| e["pointer"] == p).cloned().unwrap();
+    assert!(at("/mean_speed")["message"].as_str().unwrap().starts_with("unidad desconocida 'rmp'; ¿quería decir rpm?"));
+    assert_eq!(at("/irregularity")["message"], "un valor en kg donde se espera 1 (dimensionless)");
+    assert_eq!(es["detail"], "2 campos no válidos");
+}
+
+/// The pages in Spanish: `lang="es"`, the course's words, no English
+/// left of the frame, numbers with a decimal comma; the form read with one.
+#[tokio::test]
+async fn the_pages_in_spanish() {
+    let app = TestApp::new().await;
+    let job = app.post("/v1/flywheel", &request("p103_slider")).await.json();
+    let id = job["id"].as_str().unwrap();
+    let home = in_spanish(&app, "GET", "/", None).await;
+    let page = in_spanish(&app, "GET", &format!("/jobs/{id}"), None).await;
+    let form = in_spanish(&app, "GET", "/templates/p103-slider-flywheel", None).await;
+    for (r, words) in [
+        (&home, &["Trabajos recientes", "Plantillas", "Para programas"][..]),
+        (&page, &["Valores", "Precisión y tiempo", "de tiempo de cálculo", "Gráficas", "Petición"]),
+        (&form, &["Calcular", "coma decimal", "El mismo trabajo por URL"]),
+    ] {
+        assert_eq!(r.status, StatusCode::OK, "{}", r.text);
+        assert!(r.text.contains("<html lang=\"es\">"), "the page says its language");
+        for w in words {
+            assert!(r.text.contains(w), "{w} in {}", r.text);
+        }
+        for english in ["Jobs and templates", "Recent jobs", "Values", "Accuracy and time", "Compute", "engine time"] {
+            assert!(!r.text.contains(english), "'{english}' left in a Spanish page");
+        }
+    }
+    let exact = job["result"]["inertia_exact"].as_f64().unwrap();
+    assert!(page.text.contains(&format!(">{}</a>", format!("{exact:.1}").replace('.', ","))), "353,5 on the page");
+    assert!(form.text.contains("value=\"0,04\""), "the default ε with a decimal comma");
+    // Submitted with decimal commas: the job of ε = 0.03, its page in Spanish.
+    let asked = in_spanish(&app, "GET", "/templates/p103-slider-flywheel?eps=0,03&F=1200,5", None).await;
+    assert_eq!(asked.status, StatusCode::SEE_OTHER, "{}", asked.text);
+    let same = app.get("/v1/templates/p103-slider-flywheel/job?eps=0.03&F=1200.5").await.json();
+    assert_eq!(asked.location.as_deref(), Some(format!("/jobs/{}", same["id"].as_str().unwrap()).as_str()));
+    let refused = in_spanish(&app, "GET", "/templates/p103-slider-flywheel?eps=mucho", None).await;
+    assert_eq!(refused.status, StatusCode::BAD_REQUEST);
+    assert!(refused.text.contains("no es ni un número ni una magnitud"), "{}", refused.text);
+    let missing = in_spanish(&app, "GET", "/jobs/no-such", None).await;
+    assert!(missing.text.contains("Trabajo no encontrado") && missing.text.contains("Volver a los trabajos"));
+}
