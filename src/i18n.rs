@@ -66,7 +66,28 @@ impl Lang {
     /// A number as this language writes it in a sentence: shortest
     /// round-trip digits, with a decimal comma in Spanish.
     pub fn number(self, x: f64) -> String {
-        let text = format!("{x}");
+        self.decimal(format!("{x}"))
+    }
+
+    /// `x` to four significant figures, for a label or a page (powers of
+    /// ten beyond 10⁶ and below 10⁻³), with a decimal comma in Spanish.
+    pub fn figures(self, x: f64) -> String {
+        if x == 0.0 || !x.is_finite() {
+            return format!("{x}");
+        }
+        let magnitude = x.abs().log10().floor();
+        if !(-3.0..6.0).contains(&magnitude) {
+            return self.decimal(format!("{x:.3e}"));
+        }
+        let decimals = (3.0 - magnitude).max(0.0) as usize;
+        let text = format!("{x:.decimals$}");
+        // 0.04, not 0.04000: the zeros a rounding leaves say nothing.
+        let text = if text.contains('.') { text.trim_end_matches('0').trim_end_matches('.').to_string() } else { text };
+        self.decimal(text)
+    }
+
+    /// A number written with a decimal point, as this language writes it.
+    pub fn decimal(self, text: String) -> String {
         if self == Lang::Es { text.replacen('.', ",", 1) } else { text }
     }
 }
@@ -176,6 +197,11 @@ pub fn current() -> Lang {
 /// Runs `f` answering in `lang`.
 pub async fn within<F: std::future::Future>(lang: Lang, f: F) -> F::Output {
     LANG.scope(lang, f).await
+}
+
+/// Runs `f` (on a blocking thread, say) in `lang`.
+pub fn within_sync<R>(lang: Lang, f: impl FnOnce() -> R) -> R {
+    LANG.sync_scope(lang, f)
 }
 
 #[cfg(test)]

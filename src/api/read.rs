@@ -35,8 +35,10 @@ pub fn query(
 ) -> Result<HashMap<String, String>, ApiError> {
     let Query(q) = query.map_err(|e| ApiError::BadQuery(vec![FieldError::parameter("", e.body_text())]))?;
     // `lang` is every answer's ([`super::language`]).
-    let unknown: Vec<FieldError> = q
-        .keys()
+    let mut names: Vec<&String> = q.keys().collect();
+    names.sort();
+    let unknown: Vec<FieldError> = names
+        .into_iter()
         .filter(|k| !known.contains(&k.as_str()) && *k != "lang")
         .map(|k| FieldError::parameter_said(k, Msg::new("query-unknown").arg("known", known.join(", "))))
         .collect();

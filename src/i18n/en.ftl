@@ -186,3 +186,27 @@ page-one-of = one of { $choices }
 page-from-to = from { $min } to { $max }{ $unit }
 page-at-least = at least { $min }{ $unit }
 page-at-most = at most { $max }{ $unit }
+
+## Plots
+
+plot-phi-shaft = angle of the reference shaft φ
+plot-torque-shaft = torque on the reference shaft
+plot-work-since = work since φ = 0, W(φ)
+plot-speed-shaft = speed of the reference shaft ω
+plot-reduced-inertia = reduced inertia I*(φ)
+plot-flywheel-torque = Reduced torque M*(φ) and the lobes of work A_i
+plot-flywheel-work = Work W(φ) over the cycle and the energy fluctuation ΔE
+plot-flywheel-speed = Speed ω(φ) over the cycle with the exact inertia
+plot-flywheel-wittenbauer = Wittenbauer's diagram: W against I*(φ), and the tangents that give the inertia
+plot-flywheel-other-torques = M_b − M*: the other torques, sign changed
+plot-flywheel-balance = balance torque M_b = { $value } N·m
+plot-flywheel-lobes =
+    { $n ->
+        [one] 1 lobe; shaded green where the torques give work (A_i > 0), red where they take it
+       *[other] { $n } lobes; shaded green where the torques give work (A_i > 0), red where they take it
+    }
+plot-flywheel-speed-note = ε = (ω_max − ω_min)/ω_a = { $eps }; I = { $inertia } kg·m² (exact)
+plot-wittenbauer-curve = W against I* over the cycle
+plot-tangent-max = tangent of slope ω_max²/2, ω_max = { $value } rad/s
+plot-tangent-min = tangent of slope ω_min²/2, ω_min = { $value } rad/s
+plot-wittenbauer-note = The tangents meet at (−I, −T₀) = ({ $x } kg·m², { $y } J), off this view: I = { $inertia } kg·m² (exact), T₀ = { $t0 } J

@@ -186,3 +186,27 @@ page-one-of = uno de { $choices }
 page-from-to = de { $min } a { $max }{ $unit }
 page-at-least = al menos { $min }{ $unit }
 page-at-most = como mucho { $max }{ $unit }
+
+## Gráficas
+
+plot-phi-shaft = ángulo del eje de reducción φ
+plot-torque-shaft = par en el eje de reducción
+plot-work-since = trabajo desde φ = 0, W(φ)
+plot-speed-shaft = velocidad del eje de reducción ω
+plot-reduced-inertia = inercia reducida I*(φ)
+plot-flywheel-torque = Par reducido M*(φ) y los lóbulos de trabajo A_i
+plot-flywheel-work = Trabajo W(φ) a lo largo del ciclo y fluctuación de energía ΔE
+plot-flywheel-speed = Velocidad ω(φ) a lo largo del ciclo con la inercia exacta del volante
+plot-flywheel-wittenbauer = Diagrama de Wittenbauer: W frente a I*(φ) y las tangentes que dan la inercia del volante
+plot-flywheel-other-torques = M_b − M*: los demás pares, cambiados de signo
+plot-flywheel-balance = par motor de equilibrio M_b = { $value } N·m
+plot-flywheel-lobes =
+    { $n ->
+        [one] 1 lóbulo; en verde donde los pares aportan trabajo (A_i > 0), en rojo donde lo consumen
+       *[other] { $n } lóbulos; en verde donde los pares aportan trabajo (A_i > 0), en rojo donde lo consumen
+    }
+plot-flywheel-speed-note = grado de irregularidad ε = (ω_max − ω_min)/ω_a = { $eps }; I = { $inertia } kg·m² (exacta)
+plot-wittenbauer-curve = W frente a I* a lo largo del ciclo
+plot-tangent-max = tangente de pendiente ω_max²/2, ω_max = { $value } rad/s
+plot-tangent-min = tangente de pendiente ω_min²/2, ω_min = { $value } rad/s
+plot-wittenbauer-note = Las tangentes se cortan en (−I, −T₀) = ({ $x } kg·m², { $y } J), fuera de esta vista: I = { $inertia } kg·m² (exacta), T₀ = { $t0 } J

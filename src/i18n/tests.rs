@@ -105,4 +105,10 @@ fn messages_render_with_their_arguments_and_numbers() {
         "'20*t' is an expression, not a quantity: write it as {\"expr\": \"20*t\"}"
     );
     assert_eq!(Msg::new("no-such-message").render(Lang::Es), "no-such-message");
+    // Four significant figures, the zeros of the rounding left out.
+    assert_eq!(Lang::En.figures(353.521427), "353.5");
+    assert_eq!(Lang::Es.figures(353.521427), "353,5");
+    assert_eq!(Lang::Es.figures(0.04), "0,04");
+    assert_eq!(Lang::En.figures(1500.0), "1500");
+    assert_eq!(Lang::Es.figures(2.706e-11), "2,706e-11");
 }

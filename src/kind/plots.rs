@@ -113,17 +113,10 @@ pub fn magnitudes(mut c: Chart, mut series: Vec<Series>) -> Chart {
     c
 }
 
-/// `v` with four significant figures, for labels.
+/// `v` with four significant figures, for labels, in the language of the
+/// request (a decimal comma in Spanish).
 pub fn sig(v: f64) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return format!("{v}");
-    }
-    let magnitude = v.abs().log10().floor();
-    if !(-3.0..6.0).contains(&magnitude) {
-        return format!("{v:.3e}");
-    }
-    let decimals = (3.0 - magnitude).max(0.0) as usize;
-    format!("{v:.decimals$}")
+    crate::i18n::current().figures(v)
 }
 
 /// Radians to degrees, for the angle axes.

@@ -123,3 +123,58 @@ async fn the_pages_in_spanish() {
     let missing = in_spanish(&app, "GET", "/jobs/no-such", None).await;
     assert!(missing.text.contains("Trabajo no encontrado") && missing.text.contains("Volver a los trabajos"));
 }
+
+/// A plot in Spanish: its title, axes and notes in the course's words, its
+/// numbers with decimal commas — P.103's balance torque M_b = F/π =
+/// 159,2 N·m (the mean of 500 sin φ over half the cycle) — and the list of
+/// plots titled in Spanish; without the header, English as before.
+#[tokio::test]
+async fn a_plot_in_spanish() {
+    let app = TestApp::new().await;
+    let id = app.post("/v1/flywheel", &request("p103_slider")).await.json()["id"].as_str().unwrap().to_string();
+    let es = in_spanish(&app, "GET", &format!("/v1/jobs/{id}/plots/torque.svg"), None).await;
+    assert_eq!(es.status, StatusCode::OK);
+    for words in
+        ["Par reducido M*(φ) y los lóbulos de trabajo", "eje de reducción", "par motor de equilibrio M_b = 159,2 N·m"]
+    {
+        assert!(es.text.contains(words), "{words} in the Spanish plot");
+    }
+    assert!(!es.text.contains("reference shaft") && !es.text.contains("balance torque"), "no English left");
+    let en = app.get(&format!("/v1/jobs/{id}/plots/torque.svg")).await.text;
+    assert!(en.contains("balance torque M_b = 159.2 N·m") && en.contains("angle of the reference shaft φ"));
+    let list = in_spanish(&app, "GET", &format!("/v1/jobs/{id}/plots"), None).await.json();
+    let titles: Vec<&str> = list["plots"].as_array().unwrap().iter().map(|p| p["title"].as_str().unwrap()).collect();
+    assert!(
+        titles.contains(&"Diagrama de Wittenbauer: W frente a I*(φ) y las tangentes que dan la inercia del volante")
+    );
+}
+
+/// Every built-in template has its title, source and every parameter's
+/// description in Spanish, and the pages use them; a client's template
+/// may bring its own (a description of a parameter it has not is refused).
+#[tokio::test]
+async fn the_templates_in_spanish() {
+    let app = TestApp::new().await;
+    let list = app.get("/v1/templates").await.json();
+    for t in list["items"].as_array().unwrap().iter().filter(|t| t["builtin"] == true) {
+        let es = &t["es"];
+        assert!(es["title"].is_string() && es["source"].is_string(), "{}: its Spanish", t["id"]);
+        for name in t["parameters"].as_object().unwrap().keys() {
+            assert!(es["parameters"][name].is_string(), "{}: {name} in Spanish", t["id"]);
+        }
+    }
+    let home = in_spanish(&app, "GET", "/", None).await.text;
+    assert!(home.contains("P.103: volante de una máquina"), "the Spanish title on the home page");
+    let form = in_spanish(&app, "GET", "/templates/p103-slider-flywheel", None).await.text;
+    assert!(form.contains("Grado de irregularidad ε") && form.contains("Problema P.103 del curso"));
+    let mut t = json!({"kind": "gears", "name": "engranaje", "title": "A spur gear",
+        "request": {"module": "4 mm", "teeth": 30},
+        "parameters": {"z": {"pointer": "/teeth", "description": "Number of teeth", "min": 12}},
+        "es": {"title": "Un engranaje recto", "parameters": {"z": "Número de dientes", "m": "módulo"}}});
+    assert_eq!(app.pointers("/v1/templates", &t).await, ["/es/parameters/m"]);
+    t["es"]["parameters"].as_object_mut().unwrap().remove("m");
+    assert_eq!(app.post("/v1/templates", &t).await.status, StatusCode::CREATED);
+    let form = in_spanish(&app, "GET", "/templates/engranaje", None).await.text;
+    assert!(form.contains("Un engranaje recto") && form.contains("Número de dientes"), "{form}");
+    assert!(app.get("/templates/engranaje").await.text.contains("Number of teeth"), "English by default");
+}

@@ -7,7 +7,7 @@
 use super::{IdPath, layout, query_of};
 use crate::api::AppState;
 use crate::api::templates::{self, Parameter, Template};
-use crate::i18n::{self, Lang, Msg, tr};
+use crate::i18n::{self, Msg, tr};
 use crate::kind::problem::{ApiError, FieldError};
 use crate::units::parse_unit;
 use axum::extract::rejection::QueryRejection;
@@ -72,13 +72,13 @@ fn form(t: &Template, given: &HashMap<String, String>, error: Option<&ApiError>)
     let at = |name: &str| fields.iter().filter(|f| f.parameter.as_deref() == Some(name)).collect::<Vec<&FieldError>>();
     let others: Vec<&FieldError> =
         fields.iter().filter(|f| f.parameter.as_deref().is_none_or(|p| !t.parameters.contains_key(p))).collect();
-    let title = t.title.clone().unwrap_or_else(|| t.id.clone());
     let lang = i18n::current();
+    let title = t.title_in(lang);
     let tx = |key| tr(lang, key);
     let body = html! {
         h1 { (title) }
         p.meta { (Msg::new("page-template-meta").arg("id", &t.id).arg("kind", &t.kind).render(lang))
-            @if let Some(s) = &t.source { " · " (s) } }
+            @if let Some(s) = t.source_in(lang) { " · " (s) } }
         @if let Some(e) = error {
             p.error { (e.msg().render(lang)) }
             @if !others.is_empty() { ul { @for f in &others { li.error { ((*f).clone().in_lang(lang).describe()) } } } }
@@ -90,7 +90,7 @@ fn form(t: &Template, given: &HashMap<String, String>, error: Option<&ApiError>)
                     label for=(name) { (name) @if let Some(u) = &p.unit { " (" (u) ")" } }
                     input id=(name) name=(name) type="text" autocomplete="off"
                         value=(given.get(name).cloned().unwrap_or_else(|| default_text(t, p)));
-                    p.hint { (hint(p)) }
+                    p.hint { (hint(p, t.description_in(name, lang))) }
                     @for f in at(name) { p.error { ((*f).clone().in_lang(lang).message) } }
                 }
             }
@@ -104,7 +104,7 @@ fn form(t: &Template, given: &HashMap<String, String>, error: Option<&ApiError>)
 }
 
 /// A parameter's description and range, in its unit.
-fn hint(p: &Parameter) -> String {
+fn hint(p: &Parameter, description: Option<&str>) -> String {
     let unit = p.unit.as_deref().map_or(String::new(), |u| format!(" {u}"));
     let range = match (p.min, p.max, &p.choices) {
         (_, _, Some(c)) => {
@@ -116,7 +116,7 @@ fn hint(p: &Parameter) -> String {
         _ => Msg::new("detail-as-said").arg("why", ""),
     };
     let range = range.arg("unit", unit).text();
-    let text = p.description.clone().unwrap_or_default();
+    let text = description.unwrap_or_default().to_string();
     match (text.is_empty(), range.is_empty()) {
         (false, false) => format!("{text}; {range}."),
         (true, false) => format!("{range}."),
@@ -131,8 +131,7 @@ fn default_text(t: &Template, p: &Parameter) -> String {
         Some(Value::Number(n)) => {
             let x = n.as_f64().unwrap_or(0.0);
             let factor = p.unit.as_deref().and_then(|u| parse_unit(u).ok()).map_or(1.0, |(f, _)| f);
-            let text = super::job::number(x / factor);
-            if i18n::current() == Lang::Es { text.replacen('.', ",", 1) } else { text }
+            i18n::current().decimal(super::job::number(x / factor))
         }
         Some(Value::String(s)) => s.clone(),
         Some(other) => other.to_string(),

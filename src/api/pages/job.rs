@@ -8,7 +8,7 @@ use crate::api::kind::AnyKind;
 use crate::api::plots::{self, Listed};
 use crate::api::read::{self, result_tree};
 use crate::api::tables::{self, Scalar};
-use crate::i18n::{self, Lang, Msg, tr};
+use crate::i18n::{self, Msg, tr};
 use crate::kind::problem::{ApiError, Problem};
 use crate::store::{JobRow, Status};
 use axum::extract::rejection::QueryRejection;
@@ -174,10 +174,11 @@ pub fn when(created_at: &str) -> String {
     created_at.replace('T', " ").chars().take(19).collect()
 }
 
-/// "0.84 ms", "1.2 s".
+/// "0.84 ms", "1.2 s" ("0,84 ms" on a Spanish page).
 pub fn duration(us: i64) -> String {
     let s = us as f64 / 1e6;
-    if s >= 1.0 { format!("{s:.2} s") } else { format!("{:.2} ms", s * 1e3) }
+    let text = if s >= 1.0 { format!("{s:.2} s") } else { format!("{:.2} ms", s * 1e3) };
+    i18n::current().decimal(text)
 }
 
 /// Timing, accuracy (estimates: four figures) and warnings.
@@ -282,8 +283,7 @@ fn text(v: &Value) -> String {
     match v {
         Value::Number(n) if n.is_f64() => {
             let x = n.as_f64().unwrap_or(f64::NAN);
-            let shown = if x.fract() == 0.0 { number(x) } else { crate::kind::plots::sig(x) };
-            if i18n::current() == Lang::Es { shown.replacen('.', ",", 1) } else { shown }
+            if x.fract() == 0.0 { number(x) } else { i18n::current().figures(x) }
         }
         Value::Number(n) => n.to_string(),
         Value::String(s) => plots::svg::clean(s),

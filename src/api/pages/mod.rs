@@ -54,7 +54,7 @@ pub async fn home(State(state): State<AppState>) -> Response {
             tbody { @for t in &templates { tr {
                 td.id { a href=(format!("/templates/{}", super::plots::segment(&t.id))) { (t.id) } }
                 td { (t.kind) }
-                td { (t.title.as_deref().unwrap_or("")) }
+                td { (t.title_in(lang)) }
             } } }
         } }
         h2 { (t("page-recent")) }

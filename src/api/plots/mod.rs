@@ -127,7 +127,8 @@ pub async fn render(state: &AppState, id: &str, name: &str, options: Options) ->
         let known = kind.map(|k| k.plots(&job)).unwrap_or_default().into_iter().map(|p| p.name).collect();
         return Err(ApiError::NoPlot { id: id.into(), name: name.into(), known });
     };
-    tokio::task::spawn_blocking(move || svg::render(&chart))
+    let lang = crate::i18n::current();
+    tokio::task::spawn_blocking(move || crate::i18n::within_sync(lang, || svg::render(&chart)))
         .await
         .map_err(|e| ApiError::Internal(format!("plot: {e}")))?
         .map_err(ApiError::Internal)

@@ -205,13 +205,14 @@ fn ticks(span: f64) -> impl Fn(f64) -> String {
     let step = span / 10.0;
     let decimals = if step > 0.0 { (-step.log10().floor()).clamp(0.0, 12.0) as usize } else { 2 };
     let scientific = span > 0.0 && !(1e-3..1e6).contains(&span);
+    let lang = crate::i18n::current();
     move |v: f64| {
         if v.abs() < step * 1e-6 {
             "0".into()
         } else if scientific {
-            format!("{v:.2e}")
+            lang.decimal(format!("{v:.2e}"))
         } else {
-            format!("{v:.decimals$}")
+            lang.decimal(format!("{v:.decimals$}"))
         }
     }
 }

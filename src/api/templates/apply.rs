@@ -17,7 +17,9 @@ use std::collections::{BTreeMap, HashMap};
 pub fn request_for(t: &Template, given: &HashMap<String, String>, ignore: &[&str]) -> Result<Value, ApiError> {
     let mut request = t.request.clone();
     let mut errors = Vec::new();
-    for (name, text) in given.iter().filter(|(k, _)| !ignore.contains(&k.as_str())) {
+    // In the names' order: the same query gives its errors in the same order.
+    let ordered: std::collections::BTreeMap<&String, &String> = given.iter().collect();
+    for (name, text) in ordered.into_iter().filter(|(k, _)| !ignore.contains(&k.as_str())) {
         let Some(p) = t.parameters.get(name) else {
             let known: Vec<&str> = t.parameters.keys().map(String::as_str).collect();
             let msg = Msg::new("parameter-unknown").arg("name", name).arg("template", &t.id);

@@ -3,6 +3,7 @@
 //! by name. The built-in ones are the course's problems, kept in the
 //! repository's `library/` folder and compiled into the binary.
 
+use crate::i18n::Lang;
 use crate::kind::problem::{ApiError, FieldError};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -59,6 +60,45 @@ pub struct Template {
     /// Shipped with the service (true) or created by a client.
     #[serde(default)]
     pub builtin: bool,
+    /// The title, source and parameters' descriptions in Spanish, for
+    /// pages asked in Spanish.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub es: Option<InSpanish>,
+}
+
+/// A template's texts in Spanish (each optional: the English stands in).
+#[derive(Clone, Debug, Default, Serialize, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct InSpanish {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schema(max_length = 2000)]
+    pub title: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schema(max_length = 2000)]
+    pub source: Option<String>,
+    /// A description per parameter, by its name.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub parameters: BTreeMap<String, String>,
+}
+
+impl Template {
+    /// Its title in `lang` (Spanish where it has one), else its id.
+    pub fn title_in(&self, lang: Lang) -> String {
+        let es = self.es.as_ref().filter(|_| lang == Lang::Es).and_then(|e| e.title.clone());
+        es.or_else(|| self.title.clone()).unwrap_or_else(|| self.id.clone())
+    }
+
+    /// Where it comes from, in `lang`.
+    pub fn source_in(&self, lang: Lang) -> Option<&str> {
+        let es = self.es.as_ref().filter(|_| lang == Lang::Es).and_then(|e| e.source.as_deref());
+        es.or(self.source.as_deref())
+    }
+
+    /// Parameter `name`'s description in `lang`.
+    pub fn description_in(&self, name: &str, lang: Lang) -> Option<&str> {
+        let es = self.es.as_ref().filter(|_| lang == Lang::Es).and_then(|e| e.parameters.get(name));
+        es.map(String::as_str).or_else(|| self.parameters.get(name)?.description.as_deref())
+    }
 }
 
 /// The body of `POST /v1/templates`.
@@ -79,6 +119,8 @@ pub struct NewTemplate {
     /// A slug (lower-case letters, digits, `-`), unique: the template's id.
     #[schema(max_length = 64, pattern = "^[a-z0-9][a-z0-9-]*$")]
     pub name: Option<String>,
+    /// Its texts in Spanish.
+    pub es: Option<InSpanish>,
 }
 
 /// Every template, the built-in ones first.
@@ -157,6 +199,10 @@ pub fn checked(
         let at = format!("/parameters/{}", name.replace('~', "~0").replace('/', "~1"));
         errors.extend(parameter_errors(name, p, &t.request, &at));
     }
+    for name in t.es.iter().flat_map(|es| es.parameters.keys()).filter(|n| !t.parameters.contains_key(*n)) {
+        let at = format!("/es/parameters/{}", crate::kind::problem::escape(name));
+        errors.push(FieldError::at(at, format!("no parameter {name} in this template")));
+    }
     if !errors.is_empty() {
         return Err(ApiError::Invalid(errors));
     }
@@ -169,6 +215,7 @@ pub fn checked(
         request: t.request,
         parameters: t.parameters,
         builtin: false,
+        es: t.es,
     })
 }
 

@@ -2,15 +2,17 @@
 //! work, W(φ) with ΔE, ω(φ) over the cycle, and Wittenbauer's diagram W
 //! against I* with the two tangents that give the exact inertia.
 
+use crate::i18n::Msg;
 use crate::kind::chart::{Arrow, Axis, Chart, Fill, Level, Listed, Pen};
 use crate::kind::plots::{Drawn, Job, Options, deg, num, rows, sig, xy};
 use serde_json::Value;
 
+/// Each plot's name and its title's message.
 const PLOTS: [(&str, &str); 4] = [
-    ("torque", "Reduced torque M*(φ) and the lobes of work A_i"),
-    ("work", "Work W(φ) over the cycle and the energy fluctuation ΔE"),
-    ("speed", "Speed ω(φ) over the cycle with the exact inertia"),
-    ("wittenbauer", "Wittenbauer's diagram: W against I*(φ), and the tangents that give the inertia"),
+    ("torque", "plot-flywheel-torque"),
+    ("work", "plot-flywheel-work"),
+    ("speed", "plot-flywheel-speed"),
+    ("wittenbauer", "plot-flywheel-wittenbauer"),
 ];
 
 /// The flywheel's plots: all four when the result has its samples (the
@@ -20,7 +22,7 @@ pub fn list(job: &Job) -> Vec<Listed> {
         return Vec::new();
     }
     let varies = varying_inertia(job.result);
-    PLOTS.iter().filter(|(n, _)| varies || *n != "wittenbauer").map(|(n, t)| Listed::new(*n, *t)).collect()
+    PLOTS.iter().filter(|(n, _)| varies || *n != "wittenbauer").map(|(n, t)| Listed::new(*n, say(t))).collect()
 }
 
 /// Whether I*(φ) varies over the cycle: with a constant I* Wittenbauer's
@@ -40,7 +42,7 @@ pub fn draw(job: &Job, name: &str, _: &Options) -> Drawn {
     }
     // Wittenbauer's diagram only when I* varies (as listed); the others always.
     let offered = name != "wittenbauer" || varying_inertia(job.result);
-    let title = PLOTS.iter().find(|p| p.0 == name && offered).map(|p| p.1.to_string());
+    let title = PLOTS.iter().find(|p| p.0 == name && offered).map(|p| say(p.1));
     Ok(title.and_then(|title| match name {
         "torque" => Some(torque(job, title)),
         "work" => Some(work(job.result, title)),
@@ -50,7 +52,12 @@ pub fn draw(job: &Job, name: &str, _: &Options) -> Drawn {
 }
 
 fn phi() -> Axis {
-    Axis::new("angle of the reference shaft φ", "deg")
+    Axis::new(say("plot-phi-shaft"), "deg")
+}
+
+/// A message without arguments in the request's language.
+fn say(id: &'static str) -> String {
+    Msg::new(id).text()
 }
 
 fn samples(r: &Value, key: &str) -> Vec<(f64, f64)> {
@@ -67,11 +74,11 @@ fn torque(job: &Job, title: String) -> Chart {
     let balance = num(r, "balance_torque").map(|b| b * balance_ratio(job.request));
     let level = balance.unwrap_or(0.0);
     let curve: Vec<(f64, f64)> = m.iter().map(|&(x, y)| (x, level - y)).collect();
-    let y = Axis::new("torque on the reference shaft", "N·m");
+    let y = Axis::new(say("plot-torque-shaft"), "N·m");
     let mut c = match balance {
         Some(b) => Chart::new(title, phi(), y)
-            .line("M_b − M*: the other torques, sign changed", curve.clone(), Pen::solid(0))
-            .rule(Level::Y(b), format!("balance torque M_b = {} N·m", sig(b)), Pen::solid(1)),
+            .line(say("plot-flywheel-other-torques"), curve.clone(), Pen::solid(0))
+            .rule(Level::Y(b), Msg::new("plot-flywheel-balance").arg("value", sig(b)).text(), Pen::solid(1)),
         None => {
             Chart::new(title, phi(), y).line("M*(φ)", m.clone(), Pen::solid(0)).rule(Level::Y(0.0), "", Pen::dashed(7))
         }
@@ -96,10 +103,7 @@ fn torque(job: &Job, title: String) -> Chart {
     for x in r.get("crossings").and_then(Value::as_array).into_iter().flatten().filter_map(Value::as_f64) {
         c = c.mark((deg(x), level), "");
     }
-    c.subtitle(format!(
-        "{} lobes; shaded green where the torques give work (A_i > 0), red where they take it",
-        rows(r, "areas").len()
-    ))
+    c.subtitle(Msg::new("plot-flywheel-lobes").count("n", rows(r, "areas").len()).text())
 }
 
 /// The ratio of the balance torque's shaft to the reference shaft (1 unless the request says).
@@ -120,7 +124,7 @@ fn work(r: &Value, title: String) -> Chart {
     let tiny = |s: f64| if s.abs() < 1e-9 * de.abs() { 0.0 } else { s };
     let sums: Vec<f64> = rows(r, "cumulative").iter().filter_map(Value::as_f64).map(tiny).collect();
     let (lo, hi) = sums.iter().fold((0.0_f64, 0.0_f64), |(a, b), &s| (a.min(s), b.max(s)));
-    let mut c = Chart::new(title, phi(), Axis::new("work since φ = 0, W(φ)", "J"))
+    let mut c = Chart::new(title, phi(), Axis::new(say("plot-work-since"), "J"))
         .line("W(φ) = ∫ M* dφ", w.clone(), Pen::solid(0))
         .rule(Level::Y(hi), format!("S_max = {} J", sig(hi)), Pen::dashed(2))
         .rule(Level::Y(lo), format!("S_min = {} J", sig(lo)), Pen::dashed(1));
@@ -136,7 +140,7 @@ fn work(r: &Value, title: String) -> Chart {
 fn speed(r: &Value, title: String) -> Chart {
     let (max, min) = (num(r, "omega_max").unwrap_or(f64::NAN), num(r, "omega_min").unwrap_or(f64::NAN));
     let mean = (max + min) / 2.0;
-    let mut c = Chart::new(title, phi(), Axis::new("speed of the reference shaft ω", "rad/s"))
+    let mut c = Chart::new(title, phi(), Axis::new(say("plot-speed-shaft"), "rad/s"))
         .line("ω(φ)", samples(r, "speed"), Pen::solid(0))
         .rule(Level::Y(max), format!("ω_max = {}", sig(max)), Pen::dashed(2))
         .rule(Level::Y(mean), format!("ω_a = {}", sig(mean)), Pen::dashed(7))
@@ -145,7 +149,8 @@ fn speed(r: &Value, title: String) -> Chart {
         c = c.mark((deg(a), max), "").mark((deg(b), min), "");
     }
     let inertia = num(r, "inertia_exact").unwrap_or(f64::NAN);
-    c.subtitle(format!("ε = (ω_max − ω_min)/ω_a = {}; I = {} kg·m² (exact)", sig((max - min) / mean), sig(inertia)))
+    let note = Msg::new("plot-flywheel-speed-note").arg("eps", sig((max - min) / mean)).arg("inertia", sig(inertia));
+    c.subtitle(note.text())
 }
 
 /// W(φ) against I*(φ) with the two tangents of slope ω²/2, for ω_max and
@@ -169,21 +174,16 @@ fn wittenbauer(r: &Value, title: String) -> Option<Chart> {
         curve.iter().copied().reduce(|a, b| if far(gap(&b), gap(&a)) { b } else { a })
     };
     let mut c =
-        Chart::new(title, Axis::new("reduced inertia I*(φ)", "kg·m²"), Axis::new("work since φ = 0, W(φ)", "J"))
-            .line("W against I* over the cycle", curve.clone(), Pen::solid(0))
-            .line(format!("tangent of slope ω_max²/2, ω_max = {} rad/s", sig(max)), tangent(max), Pen::dashed(2))
-            .line(format!("tangent of slope ω_min²/2, ω_min = {} rad/s", sig(min)), tangent(min), Pen::dashed(1));
+        Chart::new(title, Axis::new(say("plot-reduced-inertia"), "kg·m²"), Axis::new(say("plot-work-since"), "J"))
+            .line(say("plot-wittenbauer-curve"), curve.clone(), Pen::solid(0))
+            .line(Msg::new("plot-tangent-max").arg("value", sig(max)).text(), tangent(max), Pen::dashed(2))
+            .line(Msg::new("plot-tangent-min").arg("value", sig(min)).text(), tangent(min), Pen::dashed(1));
     if let Some(p) = touch(max, |a, b| a > b) {
         c = c.mark(p, "ω_max");
     }
     if let Some(p) = touch(min, |a, b| a < b) {
         c = c.mark(p, "ω_min");
     }
-    Some(c.subtitle(format!(
-        "The tangents meet at (−I, −T₀) = ({} kg·m², {} J), off this view: I = {} kg·m² (exact), T₀ = {} J",
-        sig(-inertia),
-        sig(-t0),
-        sig(inertia),
-        sig(t0)
-    )))
+    let note = Msg::new("plot-wittenbauer-note").arg("x", sig(-inertia)).arg("y", sig(-t0));
+    Some(c.subtitle(note.arg("inertia", sig(inertia)).arg("t0", sig(t0)).text()))
 }
