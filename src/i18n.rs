@@ -164,6 +164,11 @@ impl Msg {
     }
 }
 
+/// A message without arguments in the language of the request being answered.
+pub fn say(id: &'static str) -> String {
+    Msg::new(id).text()
+}
+
 /// A message without arguments in `lang`.
 pub fn tr(lang: Lang, id: &'static str) -> String {
     Msg::new(id).render(lang)

@@ -210,3 +210,92 @@ plot-wittenbauer-curve = W against I* over the cycle
 plot-tangent-max = tangent of slope ω_max²/2, ω_max = { $value } rad/s
 plot-tangent-min = tangent of slope ω_min²/2, ω_min = { $value } rad/s
 plot-wittenbauer-note = The tangents meet at (−I, −T₀) = ({ $x } kg·m², { $y } J), off this view: I = { $inertia } kg·m² (exact), T₀ = { $t0 } J
+plot-joint = joint { $joint }
+plot-most-joints = the { $most } largest of { $total } joints; each joint's own plot shows the rest
+plot-reactions-to-scale = joint reactions to scale: the largest, { $force } N, drawn { $length } m long
+plot-ks-driving = Driving action against the input
+plot-ks-reactions = Joint reactions |R| against the input
+plot-ks-polar = Polar diagram of the reaction at joint { $joint }
+plot-ks-reduced-inertia = Reduced inertia I*(φ)
+plot-ks-reduced-torque = Reduced torque M*(φ) of the loads
+plot-ks-mechanism = The mechanism at a step, with its joint reactions to scale
+plot-ks-reduced-torque-line = M*(φ), the loads reduced to the input
+plot-ks-input-angle = input angle at joint { $joint }
+plot-ks-input = input at joint { $joint }
+plot-ks-driving-force = driving force
+plot-ks-driving-torque = driving torque
+plot-ks-at-joint = at joint { $joint }
+plot-ks-mean = mean { $value }
+plot-ks-reaction-force = reaction force |R|
+plot-ks-force-on-by = force on { $on } by { $by } over the sweep
+plot-ks-origin = origin (0, 0)
+plot-ks-first-step = first step
+plot-ks-first-step-at = first step (input { $value })
+plot-ks-polar-note = the force is the vector from the origin to the curve; largest { $value } N
+plot-ks-step = step { $step } of 0 to { $last }: input { $value }
+plot-time = time t
+plot-angle = angle φ
+plot-speed = speed ω
+plot-dyn-angle = Angle against time, with the events
+plot-dyn-speed = Speed against time, with the events
+plot-dyn-phase = Phase portrait: speed against angle
+plot-dyn-energy = Energy residual against time
+plot-dyn-reactions = Joint reactions |R| against time
+plot-dyn-mechanism = The mechanism at a sample, over the paths of its joints
+plot-dyn-path = Path of joint { $joint }
+plot-dyn-phase-line = ω against φ
+plot-dyn-residual = energy residual (W − ΔT)/max(|W|, |ΔT|, T₀, T, T_peak)
+plot-dyn-residual-line = integrated power W against the kinetic energy T
+plot-dyn-residual-note = at the end { $value }: how far the integration's energy balance drifts
+plot-dyn-input-at = { $symbol }(t) at joint { $joint }
+plot-dyn-turn = turn { $n }
+plot-dyn-slip = slip { $joint }
+plot-dyn-roll = roll { $joint }
+plot-dyn-end = end
+plot-dyn-note =
+    { $turns ->
+        [one] 1 turn
+       *[other] { $turns } turns
+    }; energy residual { $residual }; estimated error of the angle { $error } rad
+plot-dyn-note-few =
+    { $turns ->
+        [one] 1 turn
+       *[other] { $turns } turns
+    }; energy residual { $residual }; estimated error of the angle { $error } rad; only { $samples } samples, joined by straight lines (ask for more: samples)
+plot-dyn-at-start = { $joint } at t = 0
+plot-dyn-at-end = { $joint } at the end
+plot-dyn-path-line = path of joint { $joint }
+plot-dyn-sample = sample { $step } of 0 to { $last }: t = { $t } s; dashed: the joints' paths
+plot-cam-svaj = Lift, velocity, acceleration and jerk against the cam angle (each over its peak)
+plot-cam-profile = The cam's profile, pitch curve and base circle, the follower at the largest pressure angle
+plot-cam-pressure = Pressure angle and radius of curvature against the cam angle
+plot-cam-forces = Contact force and cam torque against the cam angle
+plot-cam-angle = cam angle θ
+plot-cam-pressure-title = Pressure angle and radius of curvature
+plot-cam-pressure-line = pressure angle φ (deg)
+plot-cam-curvature-line = profile's radius of curvature ρ (mm)
+plot-cam-forces-title = Contact force and cam torque
+plot-cam-contact-force = contact force (N)
+plot-cam-torque = cam torque (N·m)
+plot-cam-svaj-title = SVAJ diagram
+plot-cam-over-peak = each over its peak
+plot-cam-law-ends = { $law } ends
+plot-cam-profile-title = Cam profile (cam's frame, x: the follower's direction at θ = 0)
+plot-cam-profile-line = profile
+plot-cam-base = base circle R_b = { $value } mm
+plot-cam-pitch = pitch curve
+plot-cam-follower-worst = follower at the largest pressure angle
+plot-cam-worst-at = φ = { $phi }° at θ = { $theta }°
+plot-rotor-bearings = Bearing reactions over the states, in fixed axes
+plot-rotor-frame-angle = angle of the frame
+plot-rotor-force = force on the body
+plot-rotor-bearing = bearing { $name }
+plot-rotor-note = total (static and dynamic) reaction of each bearing; components that stay zero are left out
+plot-gear-tooth = The involute teeth, from the computed geometry
+plot-gear-profile = tooth profile
+plot-gear-pitch = pitch circle r = { $value } mm
+plot-gear-base = base circle r_b = { $value } mm
+plot-gear-tip = tip r_a = { $tip } mm, root r_f = { $root } mm
+plot-gear-thickness = s = { $value } mm on the pitch circle
+plot-gear-note = z = { $z }, pressure angle { $alpha }° at the pitch circle; below the base circle the flank is drawn radial
+plot-gear-note-pointed = z = { $z }, pressure angle { $alpha }° at the pitch circle; below the base circle the flank is drawn radial; the flanks meet before the tip circle (a pointed tooth)

@@ -210,3 +210,92 @@ plot-wittenbauer-curve = W frente a I* a lo largo del ciclo
 plot-tangent-max = tangente de pendiente ω_max²/2, ω_max = { $value } rad/s
 plot-tangent-min = tangente de pendiente ω_min²/2, ω_min = { $value } rad/s
 plot-wittenbauer-note = Las tangentes se cortan en (−I, −T₀) = ({ $x } kg·m², { $y } J), fuera de esta vista: I = { $inertia } kg·m² (exacta), T₀ = { $t0 } J
+plot-joint = par { $joint }
+plot-most-joints = los { $most } mayores de { $total } pares; la gráfica propia de cada par muestra el resto
+plot-reactions-to-scale = reacciones en los pares a escala: la mayor, { $force } N, dibujada de { $length } m
+plot-ks-driving = Acción motriz frente a la entrada
+plot-ks-reactions = Reacciones en los pares |R| frente a la entrada
+plot-ks-polar = Diagrama polar de la reacción en el par { $joint }
+plot-ks-reduced-inertia = Inercia reducida I*(φ)
+plot-ks-reduced-torque = Par reducido M*(φ) de las cargas
+plot-ks-mechanism = El mecanismo en un paso, con las reacciones en sus pares a escala
+plot-ks-reduced-torque-line = M*(φ), las cargas reducidas a la entrada
+plot-ks-input-angle = ángulo de entrada en el par { $joint }
+plot-ks-input = entrada en el par { $joint }
+plot-ks-driving-force = fuerza motriz
+plot-ks-driving-torque = par motor
+plot-ks-at-joint = en el par { $joint }
+plot-ks-mean = media { $value }
+plot-ks-reaction-force = fuerza de reacción |R|
+plot-ks-force-on-by = fuerza sobre { $on } ejercida por { $by } a lo largo del barrido
+plot-ks-origin = origen (0, 0)
+plot-ks-first-step = primer paso
+plot-ks-first-step-at = primer paso (entrada { $value })
+plot-ks-polar-note = la fuerza es el vector del origen a la curva; la mayor { $value } N
+plot-ks-step = paso { $step } de 0 a { $last }: entrada { $value }
+plot-time = tiempo t
+plot-angle = ángulo φ
+plot-speed = velocidad ω
+plot-dyn-angle = Ángulo frente al tiempo, con los sucesos
+plot-dyn-speed = Velocidad frente al tiempo, con los sucesos
+plot-dyn-phase = Retrato de fase: velocidad frente a ángulo
+plot-dyn-energy = Residuo de energía frente al tiempo
+plot-dyn-reactions = Reacciones en los pares |R| frente al tiempo
+plot-dyn-mechanism = El mecanismo en una muestra, sobre las trayectorias de sus pares
+plot-dyn-path = Trayectoria del par { $joint }
+plot-dyn-phase-line = ω frente a φ
+plot-dyn-residual = residuo de energía (W − ΔT)/max(|W|, |ΔT|, T₀, T, T_pico)
+plot-dyn-residual-line = potencia integrada W frente a la energía cinética T
+plot-dyn-residual-note = al final { $value }: cuánto deriva el balance de energía de la integración
+plot-dyn-input-at = { $symbol }(t) en el par { $joint }
+plot-dyn-turn = vuelta { $n }
+plot-dyn-slip = desliza { $joint }
+plot-dyn-roll = rueda { $joint }
+plot-dyn-end = fin
+plot-dyn-note =
+    { $turns ->
+        [one] 1 vuelta
+       *[other] { $turns } vueltas
+    }; residuo de energía { $residual }; error estimado del ángulo { $error } rad
+plot-dyn-note-few =
+    { $turns ->
+        [one] 1 vuelta
+       *[other] { $turns } vueltas
+    }; residuo de energía { $residual }; error estimado del ángulo { $error } rad; solo { $samples } muestras, unidas por rectas (pida más: samples)
+plot-dyn-at-start = { $joint } en t = 0
+plot-dyn-at-end = { $joint } al final
+plot-dyn-path-line = trayectoria del par { $joint }
+plot-dyn-sample = muestra { $step } de 0 a { $last }: t = { $t } s; a trazos: las trayectorias de los pares
+plot-cam-svaj = Elevación, velocidad, aceleración y sobreaceleración frente al ángulo de leva (cada una sobre su máximo)
+plot-cam-profile = El perfil de la leva, la curva primitiva y la circunferencia base, el seguidor en el mayor ángulo de presión
+plot-cam-pressure = Ángulo de presión y radio de curvatura frente al ángulo de leva
+plot-cam-forces = Fuerza de contacto y par en la leva frente al ángulo de leva
+plot-cam-angle = ángulo de leva θ
+plot-cam-pressure-title = Ángulo de presión y radio de curvatura
+plot-cam-pressure-line = ángulo de presión φ (deg)
+plot-cam-curvature-line = radio de curvatura del perfil ρ (mm)
+plot-cam-forces-title = Fuerza de contacto y par en la leva
+plot-cam-contact-force = fuerza de contacto (N)
+plot-cam-torque = par en la leva (N·m)
+plot-cam-svaj-title = Diagrama SVAJ
+plot-cam-over-peak = cada una sobre su máximo
+plot-cam-law-ends = fin de { $law }
+plot-cam-profile-title = Perfil de la leva (ejes de la leva, x: la dirección del seguidor en θ = 0)
+plot-cam-profile-line = perfil
+plot-cam-base = circunferencia base R_b = { $value } mm
+plot-cam-pitch = curva primitiva
+plot-cam-follower-worst = seguidor en el mayor ángulo de presión
+plot-cam-worst-at = φ = { $phi }° en θ = { $theta }°
+plot-rotor-bearings = Reacciones en los cojinetes a lo largo de los estados, en ejes fijos
+plot-rotor-frame-angle = ángulo del bastidor
+plot-rotor-force = fuerza sobre el sólido
+plot-rotor-bearing = cojinete { $name }
+plot-rotor-note = reacción total (estática y dinámica) de cada cojinete; se omiten las componentes que siguen siendo cero
+plot-gear-tooth = Los dientes de evolvente, a partir de la geometría calculada
+plot-gear-profile = perfil del diente
+plot-gear-pitch = circunferencia primitiva r = { $value } mm
+plot-gear-base = circunferencia base r_b = { $value } mm
+plot-gear-tip = cabeza r_a = { $tip } mm, pie r_f = { $root } mm
+plot-gear-thickness = s = { $value } mm en la circunferencia primitiva
+plot-gear-note = z = { $z }, ángulo de presión { $alpha }° en la circunferencia primitiva; bajo la circunferencia base el flanco se dibuja radial
+plot-gear-note-pointed = z = { $z }, ángulo de presión { $alpha }° en la circunferencia primitiva; bajo la circunferencia base el flanco se dibuja radial; los flancos se cortan antes de la circunferencia de cabeza (diente en punta)

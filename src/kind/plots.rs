@@ -6,6 +6,7 @@
 
 use super::chart::{self, Chart, Listed};
 use super::problem::{ApiError, FieldError};
+use crate::i18n::Msg;
 use serde_json::Value;
 use std::collections::HashMap;
 
@@ -105,10 +106,10 @@ pub fn magnitudes(mut c: Chart, mut series: Vec<Series>) -> Chart {
         // Beyond the palette's eight colours, the same colours dashed.
         let pen =
             if k < 8 { chart::Pen::solid(k) } else { chart::Pen { dashed: true, width: 2, ..chart::Pen::solid(k) } };
-        c = c.line(format!("joint {}", s.joint), points, pen);
+        c = c.line(Msg::new("plot-joint").arg("joint", &s.joint).text(), points, pen);
     }
     if total > MOST_JOINTS {
-        c = c.subtitle(format!("the {MOST_JOINTS} largest of {total} joints; each joint's own plot shows the rest"));
+        c = c.subtitle(Msg::new("plot-most-joints").arg("most", MOST_JOINTS).arg("total", total).text());
     }
     c
 }

@@ -142,6 +142,17 @@ async fn a_plot_in_spanish() {
     assert!(!es.text.contains("reference shaft") && !es.text.contains("balance torque"), "no English left");
     let en = app.get(&format!("/v1/jobs/{id}/plots/torque.svg")).await.text;
     assert!(en.contains("balance torque M_b = 159.2 N·m") && en.contains("angle of the reference shaft φ"));
+    // Every plot of a kinetostatics job: a Spanish title, no English axis or note left.
+    let k1 = app.post("/v1/kinetostatics", &request("k1_offset_slider_crank")).await.json();
+    let k1 = k1["id"].as_str().unwrap();
+    let listed = in_spanish(&app, "GET", &format!("/v1/jobs/{k1}/plots"), None).await.json();
+    for p in listed["plots"].as_array().unwrap() {
+        let svg = in_spanish(&app, "GET", p["href"].as_str().unwrap(), None).await.text;
+        assert!(svg.contains(p["title"].as_str().unwrap()) || p["name"] == "mechanism", "{}", p["name"]);
+        for english in ["against the input", "joint ", "reaction force", "input angle", "step "] {
+            assert!(!svg.contains(english), "'{english}' in the Spanish plot {}", p["name"]);
+        }
+    }
     let list = in_spanish(&app, "GET", &format!("/v1/jobs/{id}/plots"), None).await.json();
     let titles: Vec<&str> = list["plots"].as_array().unwrap().iter().map(|p| p["title"].as_str().unwrap()).collect();
     assert!(

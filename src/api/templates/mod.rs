@@ -24,6 +24,7 @@ use super::json::{JsonBody, RawBody};
 use super::kind::AnyKind;
 use super::parts;
 use super::read;
+use super::tables::Decimal;
 use crate::kind::problem::{ApiError, FieldError, Problem, ReadErrors};
 use crate::store::JobRow;
 use axum::body::Body;
@@ -179,7 +180,7 @@ pub async fn result(
         request: apply::keyed(kind.name(), &request).1,
         pointer: pointer.trim_start_matches('/').to_string(),
         unit: q.get("unit").filter(|u| !u.trim().is_empty()).cloned(),
-        decimal: parts::Decimal::of(&q)? == parts::Decimal::Comma,
+        decimal: Decimal::of(&q)? == Decimal::Comma,
         json: read::wants(&headers, None, "application/json"),
     };
     if let Some((mime, body)) = state.answers.get(&key) {
@@ -265,7 +266,7 @@ pub async fn table(
 ) -> Result<Response, ApiError> {
     let q = read::query(q, &["values", "label", "decimal"])?;
     let t = find(&state, &id).await?;
-    let (text, csv) = study(&state, &t, &headers, (q.get("values"), super::tables::Decimal::of(&q)?), &body).await?;
+    let (text, csv) = study(&state, &t, &headers, (q.get("values"), Decimal::of(&q)?), &body).await?;
     let mime = if csv { "text/csv; charset=utf-8" } else { "application/json" };
     Ok(([(header::CONTENT_TYPE, mime)], text).into_response())
 }
@@ -296,7 +297,7 @@ pub async fn variants(
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
 ) -> Result<Response, ApiError> {
     let q = read::query(q, &["seed", "count", "values", "format", "decimal"])?;
-    let decimal = super::tables::Decimal::of(&q)?;
+    let decimal = Decimal::of(&q)?;
     read::format_checked(&q)?;
     let number = |name: &str, default: u64| {
         q.get(name).map_or(Ok(default), |v| {

@@ -4,21 +4,19 @@
 //! angle), the pressure angle and radius of curvature against the cam
 //! angle, and with dynamics the contact force and cam torque.
 
+use crate::i18n::{Msg, say};
 use crate::kind::chart::{Axis, Chart, Level, Listed, Pen, Rule};
 use crate::kind::plots::{Drawn, Job, Options, num, sig};
 use serde_json::Value;
 
 pub fn list(job: &Job) -> Vec<Listed> {
     let mut out = vec![
-        Listed::new("svaj", "Lift, velocity, acceleration and jerk against the cam angle (each over its peak)"),
-        Listed::new(
-            "profile",
-            "The cam's profile, pitch curve and base circle, the follower at the largest pressure angle",
-        ),
-        Listed::new("pressure", "Pressure angle and radius of curvature against the cam angle"),
+        Listed::new("svaj", say("plot-cam-svaj")),
+        Listed::new("profile", say("plot-cam-profile")),
+        Listed::new("pressure", say("plot-cam-pressure")),
     ];
     if samples(job).first().is_some_and(|s| s.get("contact_force").is_some()) {
-        out.push(Listed::new("forces", "Contact force and cam torque against the cam angle"));
+        out.push(Listed::new("forces", say("plot-cam-forces")));
     }
     out
 }
@@ -33,7 +31,7 @@ fn curve(rows: &[Value], field: &str, scale: f64) -> Vec<(f64, f64)> {
 }
 
 fn angle_axis() -> Axis {
-    Axis::new("cam angle θ", "deg")
+    Axis::new(say("plot-cam-angle"), "deg")
 }
 
 pub fn draw(job: &Job, name: &str, _: &Options) -> Drawn {
@@ -45,25 +43,25 @@ pub fn draw(job: &Job, name: &str, _: &Options) -> Drawn {
         "svaj" => Some(svaj(job, rows)),
         "profile" => Some(profile(job, rows)),
         "pressure" => Some(
-            Chart::new("Pressure angle and radius of curvature", angle_axis(), Axis::new("φ (deg), ρ (mm)", ""))
+            Chart::new(say("plot-cam-pressure-title"), angle_axis(), Axis::new("φ (deg), ρ (mm)", ""))
                 .line(
-                    "pressure angle φ (deg)",
+                    say("plot-cam-pressure-line"),
                     curve(rows, "pressure_angle", 180.0 / std::f64::consts::PI),
                     Pen::solid(0),
                 )
-                .line("profile's radius of curvature ρ (mm)", curve(rows, "curvature_radius", 1e3), Pen::solid(1)),
+                .line(say("plot-cam-curvature-line"), curve(rows, "curvature_radius", 1e3), Pen::solid(1)),
         ),
         "forces" if rows[0].get("contact_force").is_some() => Some(
-            Chart::new("Contact force and cam torque", angle_axis(), Axis::new("N, N·m", ""))
-                .line("contact force (N)", curve(rows, "contact_force", 1.0), Pen::solid(0))
-                .line("cam torque (N·m)", curve(rows, "cam_torque", 1.0), Pen::solid(1)),
+            Chart::new(say("plot-cam-forces-title"), angle_axis(), Axis::new("N, N·m", ""))
+                .line(say("plot-cam-contact-force"), curve(rows, "contact_force", 1.0), Pen::solid(0))
+                .line(say("plot-cam-torque"), curve(rows, "cam_torque", 1.0), Pen::solid(1)),
         ),
         _ => None,
     })
 }
 
 fn svaj(job: &Job, rows: &[Value]) -> Chart {
-    let mut c = Chart::new("SVAJ diagram", angle_axis(), Axis::new("each over its peak", "1"));
+    let mut c = Chart::new(say("plot-cam-svaj-title"), angle_axis(), Axis::new(say("plot-cam-over-peak"), "1"));
     for (k, (field, name, unit)) in
         [("lift", "s", "m"), ("velocity", "v", "m/s"), ("acceleration", "a", "m/s²"), ("jerk", "j", "m/s³")]
             .into_iter()
@@ -75,7 +73,11 @@ fn svaj(job: &Job, rows: &[Value]) -> Chart {
     }
     for s in job.result["segments"].as_array().into_iter().flatten() {
         if let (Some(to), Some(law)) = (num(s, "to"), s["law"].as_str()) {
-            c.rules.push(Rule { at: Level::X(to.to_degrees()), label: format!("{law} ends"), pen: Pen::dashed(7) });
+            c.rules.push(Rule {
+                at: Level::X(to.to_degrees()),
+                label: Msg::new("plot-cam-law-ends").arg("law", law).text(),
+                pen: Pen::dashed(7),
+            });
         }
     }
     c
@@ -92,15 +94,11 @@ fn profile(job: &Job, rows: &[Value]) -> Chart {
     let circle = (0..=180)
         .map(|k| (std::f64::consts::TAU * f64::from(k) / 180.0).sin_cos())
         .map(|(s, c)| (1e3 * base * c, 1e3 * base * s));
-    let mut c = Chart::new(
-        "Cam profile (cam's frame, x: the follower's direction at θ = 0)",
-        Axis::new("x", "mm"),
-        Axis::new("y", "mm"),
-    )
-    .line("profile", closed("profile_point"), Pen::solid(0))
-    .line(format!("base circle R_b = {} mm", sig(1e3 * base)), circle.collect(), Pen::dashed(2));
+    let mut c = Chart::new(say("plot-cam-profile-title"), Axis::new("x", "mm"), Axis::new("y", "mm"))
+        .line(say("plot-cam-profile-line"), closed("profile_point"), Pen::solid(0))
+        .line(Msg::new("plot-cam-base").arg("value", sig(1e3 * base)).text(), circle.collect(), Pen::dashed(2));
     if rows[0].get("pitch_curvature_radius").is_some() {
-        c = c.line("pitch curve", closed("pitch_point"), Pen::dashed(1));
+        c = c.line(say("plot-cam-pitch"), closed("pitch_point"), Pen::dashed(1));
     }
     c.equal = true;
     let worst = &job.result["summary"]["max_pressure_angle"];
@@ -111,13 +109,12 @@ fn profile(job: &Job, rows: &[Value]) -> Chart {
         })
     }) && let (Some(p), Some(q)) = (mm(row, "profile_point"), mm(row, "pitch_point"))
     {
-        c = c.line("follower at the largest pressure angle", vec![(0.0, 0.0), q, p], Pen::solid(3)).mark(
+        c = c.line(say("plot-cam-follower-worst"), vec![(0.0, 0.0), q, p], Pen::solid(3)).mark(
             p,
-            format!(
-                "φ = {}° at θ = {}°",
-                sig(num(worst, "value").unwrap_or(0.0).to_degrees()),
-                sig(num(row, "theta").unwrap_or(0.0).to_degrees())
-            ),
+            Msg::new("plot-cam-worst-at")
+                .arg("phi", sig(num(worst, "value").unwrap_or(0.0).to_degrees()))
+                .arg("theta", sig(num(row, "theta").unwrap_or(0.0).to_degrees()))
+                .text(),
         );
     }
     c

@@ -4,6 +4,7 @@
 //! mechanism drawn at a sample over those paths.
 
 use crate::engine::model::Mechanism;
+use crate::i18n::{Msg, say};
 use crate::kind::chart::{Axis, Chart, Level, Listed, Pen};
 use crate::kind::plots::{Drawn, Job, Options, deg, magnitudes, no_step, num, reaction_series, rows, sig, xy};
 use crate::kinds::mechanism::drawing;
@@ -16,21 +17,23 @@ pub fn list(job: &Job) -> Vec<Listed> {
         return Vec::new();
     }
     let mut out = vec![
-        Listed::new("angle", "Angle against time, with the events"),
-        Listed::new("speed", "Speed against time, with the events"),
-        Listed::new("phase", "Phase portrait: speed against angle"),
-        Listed::new("energy", "Energy residual against time"),
+        Listed::new("angle", say("plot-dyn-angle")),
+        Listed::new("speed", say("plot-dyn-speed")),
+        Listed::new("phase", say("plot-dyn-phase")),
+        Listed::new("energy", say("plot-dyn-energy")),
     ];
     let machine = job.result.get("machine").unwrap_or(&Value::Null);
     let first = rows(machine, "samples").first();
     if first.is_some_and(|s| !rows(s, "reactions").is_empty()) {
-        out.push(Listed::new("reactions", "Joint reactions |R| against time"));
+        out.push(Listed::new("reactions", say("plot-dyn-reactions")));
     }
     if first.is_some_and(|s| !rows(s, "bodies").is_empty())
         && let Some(m) = drawing::model(job.request, MECHANISM)
     {
-        out.push(Listed::new("mechanism", "The mechanism at a sample, over the paths of its joints"));
-        out.extend(moving(&m).map(|j| Listed::new(format!("path-{j}"), format!("Path of joint {j}"))));
+        out.push(Listed::new("mechanism", say("plot-dyn-mechanism")));
+        out.extend(
+            moving(&m).map(|j| Listed::new(format!("path-{j}"), Msg::new("plot-dyn-path").arg("joint", j).text())),
+        );
     }
     out
 }
@@ -47,26 +50,28 @@ pub fn draw(job: &Job, name: &str, options: &Options) -> Drawn {
     let Some(title) = list(job).into_iter().find(|p| p.name == name).map(|p| p.title) else { return Ok(None) };
     let r = job.result;
     let samples = rows(r, "samples");
-    let time = || Axis::new("time t", "s");
+    let time = || Axis::new(say("plot-time"), "s");
+    let (angle, speed) = (|| Axis::new(say("plot-angle"), "deg"), || Axis::new(say("plot-speed"), "rad/s"));
     Ok(Some(match name {
-        "angle" => events(r, inputs(job, Chart::new(title, time(), Axis::new("angle φ", "deg")), "angle", "φ")),
-        "speed" => events(r, inputs(job, Chart::new(title, time(), Axis::new("speed ω", "rad/s")), "speed", "ω")),
-        "phase" => Chart::new(title, Axis::new("angle φ", "deg"), Axis::new("speed ω", "rad/s")).line(
-            "ω against φ",
+        "angle" => events(r, inputs(job, Chart::new(title, time(), angle()), "angle", "φ")),
+        "speed" => events(r, inputs(job, Chart::new(title, time(), speed()), "speed", "ω")),
+        "phase" => Chart::new(title, angle(), speed()).line(
+            say("plot-dyn-phase-line"),
             xy(samples, |s| num(s, "angle").map(deg), |s| num(s, "speed")),
             Pen::solid(0),
         ),
-        "energy" => Chart::new(title, time(), Axis::new("energy residual (W − ΔT)/max(|W|, |ΔT|, T₀, T, T_peak)", "1"))
+        "energy" => Chart::new(title, time(), Axis::new(say("plot-dyn-residual"), "1"))
             .line(
-                "integrated power W against the kinetic energy T",
+                say("plot-dyn-residual-line"),
                 xy(samples, |s| num(s, "t"), |s| num(s, "energy_residual")),
                 Pen::solid(0),
             )
             .rule(Level::Y(0.0), "", Pen::dashed(7))
-            .subtitle(format!(
-                "at the end {}: how far the integration's energy balance drifts",
-                num(r, "energy_residual").map_or("-".into(), sig)
-            )),
+            .subtitle(
+                Msg::new("plot-dyn-residual-note")
+                    .arg("value", num(r, "energy_residual").map_or("-".into(), sig))
+                    .text(),
+            ),
         "reactions" => reactions(r, title),
         "mechanism" => return mechanism(job, title, options.step.unwrap_or(0)),
         path => return Ok(paths(job, title, Some(path.trim_start_matches("path-")))),
@@ -86,7 +91,10 @@ fn inputs(job: &Job, mut c: Chart, key: &str, symbol: &str) -> Chart {
         Some(one) => vec![one.get("joint").and_then(Value::as_str).unwrap_or("").into()],
         None => Vec::new(),
     };
-    let name = |k: usize| joints.get(k).map_or(format!("{symbol}(t)"), |j| format!("{symbol}(t) at joint {j}"));
+    let name = |k: usize| match joints.get(k) {
+        Some(j) => Msg::new("plot-dyn-input-at").arg("symbol", symbol).arg("joint", j).text(),
+        None => format!("{symbol}(t)"),
+    };
     c = c.line(name(0), xy(rows(job.result, "samples"), |s| num(s, "t"), value), Pen::solid(0));
     for k in 1..many {
         let points = xy(machine, |s| num(s, "t"), |s| rows(s, "inputs").get(k).and_then(value));
@@ -106,28 +114,21 @@ fn events(r: &Value, mut c: Chart) -> Chart {
         let label = match e.get("kind").and_then(Value::as_str) {
             Some("turn") => {
                 turns += 1;
-                format!("turn {turns}")
+                Msg::new("plot-dyn-turn").arg("n", turns).text()
             }
             Some(kind @ ("slip" | "roll")) => {
-                format!("{kind} {}", e.get("joint").and_then(Value::as_str).unwrap_or(""))
+                let joint = e.get("joint").and_then(Value::as_str).unwrap_or("");
+                Msg::new(if kind == "slip" { "plot-dyn-slip" } else { "plot-dyn-roll" }).arg("joint", joint).text()
             }
-            _ => "end".to_string(),
+            _ => say("plot-dyn-end"),
         };
         c = c.rule(Level::X(t), label, Pen::dashed(7));
     }
     let estimated = r.get("accuracy").and_then(|a| num(a, "estimated_error"));
     let n = rows(r, "samples").len();
-    let few = if n < FEW_SAMPLES {
-        format!("; only {n} samples, joined by straight lines (ask for more: samples)")
-    } else {
-        String::new()
-    };
-    c.subtitle(format!(
-        "{turns} turn{}; energy residual {}; estimated error of the angle {} rad{few}",
-        if turns == 1 { "" } else { "s" },
-        num(r, "energy_residual").map_or("-".into(), sig),
-        estimated.map_or("-".into(), sig),
-    ))
+    let note = Msg::new(if n < FEW_SAMPLES { "plot-dyn-note-few" } else { "plot-dyn-note" }).count("turns", turns);
+    let note = note.arg("residual", num(r, "energy_residual").map_or("-".into(), sig)).count("samples", n);
+    c.subtitle(note.arg("error", estimated.map_or("-".into(), sig)).text())
 }
 
 fn machine_samples(r: &Value) -> &[Value] {
@@ -135,7 +136,7 @@ fn machine_samples(r: &Value) -> &[Value] {
 }
 
 fn reactions(r: &Value, title: String) -> Chart {
-    let c = Chart::new(title, Axis::new("time t", "s"), Axis::new("reaction force |R|", "N"));
+    let c = Chart::new(title, Axis::new(say("plot-time"), "s"), Axis::new(say("plot-ks-reaction-force"), "N"));
     magnitudes(c, reaction_series(machine_samples(r), |s| num(s, "t")))
 }
 
@@ -150,10 +151,11 @@ fn paths(job: &Job, title: String, only: Option<&str>) -> Option<Chart> {
         let j = m.joints.iter().find(|j| j.name == name)?;
         let points: Vec<(f64, f64)> = poses.iter().filter_map(|p| drawing::point_of(&m, p, j)).collect();
         if let (Some(&a), Some(&b)) = (points.first(), points.last()) {
-            c = c.mark(a, format!("{name} at t = 0")).mark(b, format!("{name} at the end"));
+            let mark = |id| Msg::new(id).arg("joint", name).text();
+            c = c.mark(a, mark("plot-dyn-at-start")).mark(b, mark("plot-dyn-at-end"));
         }
         c = c.line(
-            format!("path of joint {name}"),
+            Msg::new("plot-dyn-path-line").arg("joint", name).text(),
             points,
             if only.is_some() { Pen::solid(0) } else { Pen::dashed(k) },
         );
@@ -175,6 +177,7 @@ fn mechanism(job: &Job, title: String, step: usize) -> Drawn {
         }));
     }
     let t = num(s, "t").map_or(String::new(), sig);
-    c.subtitle = Some(format!("sample {step} of 0 to {}: t = {t} s; dashed: the joints' paths", samples.len() - 1));
+    let note = Msg::new("plot-dyn-sample").arg("step", step).arg("last", samples.len() - 1).arg("t", t);
+    c.subtitle = Some(note.text());
     Ok(Some(c))
 }

@@ -2,7 +2,7 @@
 //! work, W(φ) with ΔE, ω(φ) over the cycle, and Wittenbauer's diagram W
 //! against I* with the two tangents that give the exact inertia.
 
-use crate::i18n::Msg;
+use crate::i18n::{Msg, say};
 use crate::kind::chart::{Arrow, Axis, Chart, Fill, Level, Listed, Pen};
 use crate::kind::plots::{Drawn, Job, Options, deg, num, rows, sig, xy};
 use serde_json::Value;
@@ -53,11 +53,6 @@ pub fn draw(job: &Job, name: &str, _: &Options) -> Drawn {
 
 fn phi() -> Axis {
     Axis::new(say("plot-phi-shaft"), "deg")
-}
-
-/// A message without arguments in the request's language.
-fn say(id: &'static str) -> String {
-    Msg::new(id).text()
 }
 
 fn samples(r: &Value, key: &str) -> Vec<(f64, f64)> {

@@ -7,13 +7,14 @@
 //! the half angle ψ(ρ) = s/(2r) + inv α − inv α_ρ from the tooth's axis,
 //! cos α_ρ = r_b/ρ.
 
+use crate::i18n::{Msg, say};
 use crate::kind::chart::{Axis, Chart, Listed, Pen};
 use crate::kind::plots::{Drawn, Job, Options, num, sig};
 use std::f64::consts::FRAC_PI_2;
 
 pub fn list(job: &Job) -> Vec<Listed> {
     match tooth_geometry(job) {
-        Some(_) => vec![Listed::new("tooth", "The involute teeth, from the computed geometry")],
+        Some(_) => vec![Listed::new("tooth", say("plot-gear-tooth"))],
         None => Vec::new(),
     }
 }
@@ -71,19 +72,18 @@ pub fn draw(job: &Job, name: &str, _: &Options) -> Drawn {
     }
     let span = (teeth.len() as f64 / 2.0 + 0.2) * pitch;
     let circle = |rho: f64| arc(rho, FRAC_PI_2 - span, FRAC_PI_2 + span, &mm);
-    let c = Chart::new("The involute teeth, from the computed geometry", Axis::new("x", "mm"), Axis::new("y", "mm"))
-        .line("tooth profile", outline, Pen::solid(0))
-        .line(format!("pitch circle r = {} mm", sig(1e3 * r)), circle(r), Pen::dashed(1))
-        .line(format!("base circle r_b = {} mm", sig(1e3 * rb)), circle(rb), Pen::dashed(2))
-        .line(format!("tip r_a = {} mm, root r_f = {} mm", sig(1e3 * ra), sig(1e3 * rf)), circle(ra), Pen::dashed(7))
+    let tip = Msg::new("plot-gear-tip").arg("tip", sig(1e3 * ra)).arg("root", sig(1e3 * rf)).text();
+    let c = Chart::new(say("plot-gear-tooth"), Axis::new("x", "mm"), Axis::new("y", "mm"))
+        .line(say("plot-gear-profile"), outline, Pen::solid(0))
+        .line(Msg::new("plot-gear-pitch").arg("value", sig(1e3 * r)).text(), circle(r), Pen::dashed(1))
+        .line(Msg::new("plot-gear-base").arg("value", sig(1e3 * rb)).text(), circle(rb), Pen::dashed(2))
+        .line(tip, circle(ra), Pen::dashed(7))
         .line("", circle(rf), Pen::dashed(7));
-    let mut c = c.mark(mm(r, FRAC_PI_2 + s / (2.0 * r)), format!("s = {} mm on the pitch circle", sig(1e3 * s)));
+    let thickness = Msg::new("plot-gear-thickness").arg("value", sig(1e3 * s)).text();
+    let mut c = c.mark(mm(r, FRAC_PI_2 + s / (2.0 * r)), thickness);
     c.equal = true;
-    let pointed = if top < ra { "; the flanks meet before the tip circle (a pointed tooth)" } else { "" };
-    Ok(Some(c.subtitle(format!(
-        "z = {z}, pressure angle {}° at the pitch circle; below the base circle the flank is drawn radial{pointed}",
-        sig(alpha.to_degrees())
-    ))))
+    let note = Msg::new(if top < ra { "plot-gear-note-pointed" } else { "plot-gear-note" });
+    Ok(Some(c.subtitle(note.arg("z", z).arg("alpha", sig(alpha.to_degrees())).text())))
 }
 
 fn arc(rho: f64, from: f64, to: f64, mm: &impl Fn(f64, f64) -> (f64, f64)) -> Vec<(f64, f64)> {

@@ -3,6 +3,7 @@
 //! diagram (f_x against f_y over the sweep), I*(φ) and M*(φ), and the
 //! mechanism drawn at a step with its reactions to scale.
 
+use crate::i18n::{Msg, say};
 use crate::kind::chart::{Axis, Chart, Level, Listed, Mark, Pen};
 use crate::kind::plots::{Drawn, Job, Options, deg, magnitudes, no_step, num, reaction_series, rows, sig, xy};
 use crate::kinds::mechanism::drawing;
@@ -13,22 +14,22 @@ pub fn list(job: &Job) -> Vec<Listed> {
     let has = |key: &str| steps.iter().any(|s| s.get(key).is_some_and(|v| !v.is_null()));
     let mut out = Vec::new();
     if has("driving") {
-        out.push(Listed::new("driving", "Driving action against the input"));
+        out.push(Listed::new("driving", say("plot-ks-driving")));
     }
     if has("reactions") {
-        out.push(Listed::new("reactions", "Joint reactions |R| against the input"));
+        out.push(Listed::new("reactions", say("plot-ks-reactions")));
         out.extend(
             joints(job.result)
                 .into_iter()
-                .map(|j| Listed::new(format!("reaction-{j}"), format!("Polar diagram of the reaction at joint {j}"))),
+                .map(|j| Listed::new(format!("reaction-{j}"), Msg::new("plot-ks-polar").arg("joint", j).text())),
         );
     }
     if has("reduced_inertia") {
-        out.push(Listed::new("reduced-inertia", "Reduced inertia I*(φ)"));
-        out.push(Listed::new("reduced-torque", "Reduced torque M*(φ) of the loads"));
+        out.push(Listed::new("reduced-inertia", say("plot-ks-reduced-inertia")));
+        out.push(Listed::new("reduced-torque", say("plot-ks-reduced-torque")));
     }
     if has("kinematics") && drawing::model(job.request, "/mechanism").is_some() {
-        out.push(Listed::new("mechanism", "The mechanism at a step, with its joint reactions to scale"));
+        out.push(Listed::new("mechanism", say("plot-ks-mechanism")));
     }
     out
 }
@@ -45,7 +46,7 @@ pub fn draw(job: &Job, name: &str, options: &Options) -> Drawn {
             Pen::solid(0),
         ),
         "reduced-torque" => Chart::new(title, input_axis(r), Axis::new("M*", "N·m"))
-            .line("M*(φ), the loads reduced to the input", along(r, "reduced_torque"), Pen::solid(0))
+            .line(say("plot-ks-reduced-torque-line"), along(r, "reduced_torque"), Pen::solid(0))
             .rule(Level::Y(0.0), "", Pen::dashed(7)),
         "mechanism" => return mechanism(job, title, options.step.unwrap_or(0)),
         polar => self::polar(r, polar.trim_start_matches("reaction-"), title),
@@ -75,9 +76,9 @@ fn input(r: &Value) -> impl Fn(&Value) -> Option<f64> {
 fn input_axis(r: &Value) -> Axis {
     let joint = rows(r, "inputs").first().and_then(|i| i.get("joint")).and_then(Value::as_str).unwrap_or("");
     if angular(r) {
-        Axis::new(format!("input angle at joint {joint}"), "deg")
+        Axis::new(Msg::new("plot-ks-input-angle").arg("joint", joint).text(), "deg")
     } else {
-        Axis::new(format!("input at joint {joint}"), "m")
+        Axis::new(Msg::new("plot-ks-input").arg("joint", joint).text(), "m")
     }
 }
 
@@ -88,24 +89,28 @@ fn along(r: &Value, key: &str) -> Vec<(f64, f64)> {
 fn driving(r: &Value, title: String) -> Chart {
     let inputs = rows(r, "inputs");
     let unit = inputs.first().and_then(|i| i.get("driving_unit")).and_then(Value::as_str).unwrap_or("N*m");
-    let what = if unit == "N" { "driving force" } else { "driving torque" };
-    let mut c = Chart::new(title, input_axis(r), Axis::new(what, unit.replace('*', "·")));
+    let what = if unit == "N" { "plot-ks-driving-force" } else { "plot-ks-driving-torque" };
+    let mut c = Chart::new(title, input_axis(r), Axis::new(say(what), unit.replace('*', "·")));
     for (k, i) in inputs.iter().enumerate().filter(|(_, i)| i.get("driving_unit").and_then(Value::as_str) == Some(unit))
     {
         let at = |s: &Value| s.get("driving").and_then(|d| d.as_f64().or_else(|| d.get(k)?.as_f64()));
         let joint = i.get("joint").and_then(Value::as_str).unwrap_or("");
-        c = c.line(format!("at joint {joint}"), xy(rows(r, "steps"), input(r), at), Pen::solid(k));
+        c = c.line(
+            Msg::new("plot-ks-at-joint").arg("joint", joint).text(),
+            xy(rows(r, "steps"), input(r), at),
+            Pen::solid(k),
+        );
     }
     let summary = r.get("summary");
     let mean = summary.and_then(|s| s.get("mean_driving")).and_then(|m| m.as_f64().or_else(|| m.get(0)?.as_f64()));
     match mean {
-        Some(m) => c.rule(Level::Y(m), format!("mean {}", sig(m)), Pen::dashed(7)),
+        Some(m) => c.rule(Level::Y(m), Msg::new("plot-ks-mean").arg("value", sig(m)).text(), Pen::dashed(7)),
         None => c,
     }
 }
 
 fn reactions(r: &Value, title: String) -> Chart {
-    let c = Chart::new(title, input_axis(r), Axis::new("reaction force |R|", "N"));
+    let c = Chart::new(title, input_axis(r), Axis::new(say("plot-ks-reaction-force"), "N"));
     magnitudes(c, reaction_series(rows(r, "steps"), input(r)))
 }
 
@@ -116,18 +121,21 @@ fn polar(r: &Value, joint: &str, title: String) -> Chart {
     let (on, by, points) = series.map(|s| (s.on, s.by, s.points)).unwrap_or_default();
     let points: Vec<(f64, f64)> = points.iter().map(|p| (p.1, p.2)).collect();
     let mut c = Chart::new(title, Axis::new("f_x", "N"), Axis::new("f_y", "N")).line(
-        format!("force on {on} by {by} over the sweep"),
+        Msg::new("plot-ks-force-on-by").arg("on", on).arg("by", by).text(),
         points.clone(),
         Pen::solid(0),
     );
     c.equal = true;
-    c.marks.push(Mark { at: (0.0, 0.0), text: "origin (0, 0)".into(), dot: true });
+    c.marks.push(Mark { at: (0.0, 0.0), text: say("plot-ks-origin"), dot: true });
     if let Some(&first) = points.first() {
-        let x0 = input(r)(&steps[0]).map_or(String::new(), |x| format!(" (input {})", sig(x)));
-        c = c.mark(first, format!("first step{x0}"));
+        let first_step = match input(r)(&steps[0]) {
+            Some(x) => Msg::new("plot-ks-first-step-at").arg("value", sig(x)),
+            None => Msg::new("plot-ks-first-step"),
+        };
+        c = c.mark(first, first_step.text());
     }
     let largest = points.iter().map(|p| p.0.hypot(p.1)).fold(0.0, f64::max);
-    c.subtitle(format!("the force is the vector from the origin to the curve; largest {} N", sig(largest)))
+    c.subtitle(Msg::new("plot-ks-polar-note").arg("value", sig(largest)).text())
 }
 
 fn mechanism(job: &Job, title: String, step: usize) -> Drawn {
@@ -139,6 +147,7 @@ fn mechanism(job: &Job, title: String, step: usize) -> Drawn {
     let x = input(job.result)(s).map_or(String::new(), sig);
     let unit = if angular(job.result) { "°" } else { " m" };
     let mut c = drawing::draw(&m, &poses, reactions, rows(s, "contacts"), title);
-    c.subtitle = Some(format!("step {step} of 0 to {}: input {x}{unit}", steps.len() - 1));
+    let note = Msg::new("plot-ks-step").arg("step", step).arg("last", steps.len() - 1);
+    c.subtitle = Some(note.arg("value", format!("{x}{unit}")).text());
     Ok(Some(c))
 }

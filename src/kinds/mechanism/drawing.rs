@@ -10,6 +10,7 @@
 use super::MechanismDto;
 use crate::engine::curves::{Curve, Domain};
 use crate::engine::model::{JointKind, Mechanism};
+use crate::i18n::Msg;
 use crate::kind::chart::{Arrow, Axis, Chart, Fill, Line, Pen};
 use crate::kind::limits::Limits;
 use crate::kind::plots::{num, sig};
@@ -194,6 +195,6 @@ fn arrows(c: &mut Chart, m: &Mechanism, joints: &[Option<(f64, f64)>], reactions
             label: String::new(),
         });
     }
-    let note = format!("joint reactions to scale: the largest, {} N, drawn {} m long", sig(largest), sig(0.25 * span));
+    let note = Msg::new("plot-reactions-to-scale").arg("force", sig(largest)).arg("length", sig(0.25 * span)).text();
     c.lines.push(Line { label: Some(note), points: Vec::new(), pen: Pen::solid(6) });
 }

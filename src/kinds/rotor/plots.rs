@@ -1,5 +1,6 @@
 //! The rotor's plot: its bearing reactions over its states in fixed axes.
 
+use crate::i18n::{Msg, say};
 use crate::kind::chart::{Axis, Chart, Level, Listed, Pen};
 use crate::kind::plots::{Drawn, Job, Options, deg, num, rows};
 use serde_json::Value;
@@ -8,7 +9,7 @@ pub fn list(job: &Job) -> Vec<Listed> {
     if rows(job.result, "states").len() < 2 {
         return Vec::new();
     }
-    vec![Listed::new("bearings", "Bearing reactions over the states, in fixed axes")]
+    vec![Listed::new("bearings", say("plot-rotor-bearings"))]
 }
 
 pub fn draw(job: &Job, name: &str, _: &Options) -> Drawn {
@@ -32,19 +33,16 @@ pub fn draw(job: &Job, name: &str, _: &Options) -> Drawn {
         .collect();
     let largest = lines.iter().flat_map(|l| &l.1).map(|p| p.1.abs()).fold(0.0, f64::max);
     let mut c = Chart::new(
-        "Bearing reactions over the states, in fixed axes",
-        Axis::new("angle of the frame", "deg"),
-        Axis::new("force on the body", "N"),
+        say("plot-rotor-bearings"),
+        Axis::new(say("plot-rotor-frame-angle"), "deg"),
+        Axis::new(say("plot-rotor-force"), "N"),
     );
     let mut shown = 0;
     for (name, points) in lines {
         if points.iter().any(|p| p.1.abs() > 1e-9 * largest) {
-            c = c.line(format!("bearing {name}"), points, Pen::solid(shown));
+            c = c.line(Msg::new("plot-rotor-bearing").arg("name", name).text(), points, Pen::solid(shown));
             shown += 1;
         }
     }
-    Ok(Some(
-        c.rule(Level::Y(0.0), "", Pen::dashed(7))
-            .subtitle("total (static and dynamic) reaction of each bearing; components that stay zero are left out"),
-    ))
+    Ok(Some(c.rule(Level::Y(0.0), "", Pen::dashed(7)).subtitle(say("plot-rotor-note"))))
 }
