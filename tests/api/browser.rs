@@ -112,3 +112,114 @@ fn chromium_loads_every_page_submits_the_form_and_opens_every_plot() {
     }
     eprintln!("Chromium {}: screenshots in {out}", report["chromium"]);
 }
+
+/// English words of the pages' frame and plots that a Spanish page must not
+/// show (the catalogue's English for them: src/i18n/en.ftl).
+const ENGLISH: [&str; 16] = [
+    "Jobs and templates",
+    "Recent jobs",
+    "For programs",
+    "Values",
+    "Accuracy and time",
+    "of engine time",
+    "Plots",
+    "The request as sent",
+    "Compute",
+    "The same job by URL",
+    "reference shaft",
+    "balance torque",
+    "lobes",
+    "Wittenbauer's diagram",
+    "tangent of slope",
+    "quantity (JSON pointer)",
+];
+
+/// The same browser set to Spanish (`Accept-Language: es` on every
+/// request): the pages and the plots they show in Spanish (`lang="es"`, the
+/// course's words, none of the frame's English), P.103's form filled in
+/// with a decimal comma ("0,03") and the punch press's with a degree sign
+/// ("20°"), each submitted and answered by the job of those values (the one
+/// the JSON route gives for 0.03 and 20 deg), its page in Spanish.
+#[test]
+fn chromium_in_spanish_reads_and_fills_the_pages_with_decimal_commas() {
+    if !std::path::Path::new(CHROMIUM).exists() {
+        assert!(std::env::var_os("MECHDYN_REQUIRE_CHROMIUM").is_none(), "Chromium is required");
+        eprintln!("skipped: Debian's chromium is not installed");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let port = free_port();
+    let mut service = start(&format!("sqlite://{}/pages.db", dir.path().display()), port);
+    let flywheel = posted(port, "/v1/flywheel", &request("p103_slider"));
+    let svgs = plots(port, &flywheel);
+    let out = concat!(env!("CARGO_MANIFEST_DIR"), "/target/screenshots/es");
+    let selectors = ["h1", "figure img", "form input"];
+    let plan = json!({
+        "base": format!("http://127.0.0.1:{port}"), "out": out, "language": "es-ES,es;q=0.9",
+        "pages": [
+            {"name": "home", "path": "/", "selectors": selectors},
+            {"name": "job-flywheel", "path": format!("/jobs/{flywheel}"), "selectors": selectors},
+            {"name": "template-form", "path": "/templates/p103-slider-flywheel", "selectors": selectors},
+        ],
+        "forms": [
+            {"name": "p103-submitted", "path": "/templates/p103-slider-flywheel", "fill": {"eps": "0,03"},
+                "submit": "button[type=submit]", "selectors": ["figure img"]},
+            {"name": "punch-submitted", "path": "/templates/punch-press-us", "fill": {"theta": "20°"},
+                "submit": "button[type=submit]", "selectors": ["figure img"]},
+        ],
+        "svgs": svgs,
+    });
+    let plan_file = dir.path().join("plan.json");
+    std::fs::write(&plan_file, plan.to_string()).unwrap();
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/clients/browser.py");
+    let run = Command::new("python3").arg(script).arg(&plan_file).output().unwrap();
+    let job_of = |path: &str| {
+        let (_, text) = http(port, "GET", path, "").unwrap();
+        serde_json::from_str::<Value>(&text).unwrap()["id"].as_str().unwrap().to_string()
+    };
+    let p103 = job_of("/v1/templates/p103-slider-flywheel/job?eps=0.03");
+    let punch = job_of("/v1/templates/punch-press-us/job?theta=20%20deg");
+    let _ = service.kill();
+    let _ = service.wait();
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    let report: Value = serde_json::from_slice(&run.stdout).unwrap();
+    let spanish = |what: &str, r: &Value| {
+        assert!(r.get("error").is_none(), "{what}: {}", r["error"]);
+        assert_eq!(r["status"], 200, "{what}: {r}");
+        assert_eq!(r["console"], json!([]), "{what}: no console message");
+        let text = r["text"].as_str().unwrap();
+        for english in ENGLISH {
+            assert!(!text.contains(english), "{what}: '{english}' left in the Spanish page");
+        }
+        text.to_string()
+    };
+    for (name, words) in [
+        ("home", &["Trabajos recientes", "Plantillas", "P.103: volante"][..]),
+        ("job-flywheel", &["Valores", "Precisión y tiempo", "Gráficas", "353,5"]),
+        ("template-form", &["Calcular", "Grado de irregularidad", "0,04"]),
+    ] {
+        let r = &report["pages"][name];
+        assert_eq!(r["lang"], "es", "{name}");
+        let text = spanish(name, r);
+        for w in words {
+            assert!(text.contains(w), "{name}: '{w}' in {text}");
+        }
+    }
+    assert_eq!(report["pages"]["job-flywheel"]["counts"]["figure img"], 4, "its plots shown");
+    let base = format!("http://127.0.0.1:{port}/");
+    // P.103's I* varies (Wittenbauer's diagram too); the punch press's is constant (three plots).
+    for (form, filled, job, figures) in
+        [("p103-submitted", ("eps", "0,03"), &p103, 4), ("punch-submitted", ("theta", "20°"), &punch, 3)]
+    {
+        let r = &report["forms"][form];
+        spanish(form, r);
+        assert_eq!(r["filled"][filled.0], filled.1, "{form}: typed as a Spanish lab types it");
+        assert_eq!(r["url"], format!("{base}jobs/{job}"), "{form}: the job of those values");
+        assert_eq!(r["lang"], "es");
+        assert_eq!(r["counts"]["figure img"], figures, "{form}: the job's page with its plots");
+    }
+    for (path, r) in report["svgs"].as_object().unwrap() {
+        let text = spanish(path, r);
+        assert!(text.contains("eje de reducción") || text.contains("inercia reducida"), "{path}: {text}");
+    }
+}

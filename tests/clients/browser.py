@@ -9,7 +9,8 @@ standard library only.  The script judges nothing: it prints facts as one JSON o
 on a phone) and saves screenshots and PDFs; the assertions live in the Rust test.
 
 Usage: python3 browser.py PLAN.json   PLAN: {"base", "out", "pages": [{"path", "name",
-"selectors"}], "forms": [{"path", "name", "fill", "submit", "selectors"?}], "svgs": [PATH]}
+"selectors"}], "forms": [{"path", "name", "fill", "submit", "selectors"?}], "svgs": [PATH],
+"language"?: an Accept-Language every request of the run sends}
 Exit 0 when the browser ran (a page's own trouble is reported in its "error"), else 1.
 """
 import base64
@@ -243,6 +244,8 @@ def arg_text(arg):
 
 def common(b, selectors):
     return {"url": b.evaluate("location.href"), "title": b.evaluate("document.title"),
+            "lang": b.evaluate("document.documentElement.lang"),
+            "text": b.evaluate("document.body ? document.body.innerText : ''"),
             "counts": {s: b.evaluate(f"document.querySelectorAll({json.dumps(s)}).length") for s in selectors}}
 
 
@@ -297,6 +300,7 @@ def form_report(b, base, out, form):
 def svg_report(b, base, out, path):
     b.goto(base + path)
     return {**b.facts(), "content_type": b.document.get("mimeType"),
+            "text": b.evaluate("document.documentElement ? document.documentElement.textContent : ''"),
             "root": b.evaluate("document.documentElement ? document.documentElement.localName : null"),
             "parsererror": b.evaluate("document.getElementsByTagNameNS('*', 'parsererror').length > 0")}
 
@@ -317,6 +321,8 @@ def main():
         sys.exit(f"browser.py: {e}")
     try:
         report = {"pages": {}, "forms": {}, "svgs": {}, "chromium": b.start()}
+        if plan.get("language"):  # every request of the run asks for this language, as a browser set to it does
+            b.call("Network.setExtraHTTPHeaders", headers={"Accept-Language": plan["language"]})
         for section, name, run, item in jobs:
             try:
                 report[section][name] = run(b, base, out, item)
