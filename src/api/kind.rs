@@ -50,6 +50,8 @@ pub type StoredJob<'a> =
 /// A kind seen without its types: what the registry holds.
 pub trait AnyKind: Send + Sync {
     fn name(&self) -> &'static str;
+    /// The kind named for people, in the request's language ("volante").
+    fn title(&self) -> String;
     fn path(&self) -> &'static str;
     /// The POST's route with its OpenAPI operation and schemas.
     fn route(&self) -> UtoipaMethodRouter<AppState>;
@@ -82,6 +84,9 @@ pub struct Registered<K>(PhantomData<fn() -> K>);
 impl<K: Kind> AnyKind for Registered<K> {
     fn name(&self) -> &'static str {
         K::NAME
+    }
+    fn title(&self) -> String {
+        crate::i18n::say(K::TITLE)
     }
     fn path(&self) -> &'static str {
         K::PATH

@@ -299,3 +299,16 @@ plot-gear-tip = tip r_a = { $tip } mm, root r_f = { $root } mm
 plot-gear-thickness = s = { $value } mm on the pitch circle
 plot-gear-note = z = { $z }, pressure angle { $alpha }° at the pitch circle; below the base circle the flank is drawn radial
 plot-gear-note-pointed = z = { $z }, pressure angle { $alpha }° at the pitch circle; below the base circle the flank is drawn radial; the flanks meet before the tip circle (a pointed tooth)
+
+## The kinds of job, named for people
+
+kind-flywheel = flywheel
+kind-kinetostatics = kinetostatics
+kind-dynamics = direct dynamics
+kind-cams = cam design
+kind-rotor = rotor
+kind-gears = gears
+kind-gear-train = gear train
+kind-equivalent = equivalent masses
+kind-mobility = mobility
+kind-check = check

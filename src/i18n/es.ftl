@@ -299,3 +299,16 @@ plot-gear-tip = cabeza r_a = { $tip } mm, pie r_f = { $root } mm
 plot-gear-thickness = s = { $value } mm en la circunferencia primitiva
 plot-gear-note = z = { $z }, ángulo de presión { $alpha }° en la circunferencia primitiva; bajo la circunferencia base el flanco se dibuja radial
 plot-gear-note-pointed = z = { $z }, ángulo de presión { $alpha }° en la circunferencia primitiva; bajo la circunferencia base el flanco se dibuja radial; los flancos se cortan antes de la circunferencia de cabeza (diente en punta)
+
+## Los tipos de trabajo, nombrados para las personas
+
+kind-flywheel = volante
+kind-kinetostatics = cinetostática
+kind-dynamics = dinámica directa
+kind-cams = diseño de levas
+kind-rotor = rotor
+kind-gears = engranajes
+kind-gear-train = tren de engranajes
+kind-equivalent = masas equivalentes
+kind-mobility = movilidad
+kind-check = comprobación

@@ -35,6 +35,9 @@ pub const DIMENSIONLESS: &str = "1";
 pub trait Kind: Send + Sync + 'static {
     /// The jobs' `kind`, e.g. `flywheel`.
     const NAME: &'static str;
+    /// The catalogue's message naming the kind for people (`kind-flywheel`:
+    /// "flywheel", "volante").
+    const TITLE: &'static str;
     /// Path of the POST that creates its jobs.
     const PATH: &'static str;
     /// `operationId` of that POST.

@@ -97,7 +97,7 @@ async fn the_pages_in_spanish() {
     let form = in_spanish(&app, "GET", "/templates/p103-slider-flywheel", None).await;
     for (r, words) in [
         (&home, &["Trabajos recientes", "Plantillas", "Para programas"][..]),
-        (&page, &["Valores", "Precisión y tiempo", "de tiempo de cálculo", "Gráficas", "Petición"]),
+        (&page, &["<h1>trabajo volante</h1>", "Valores", "Precisión y tiempo", "de tiempo de cálculo", "Gráficas"]),
         (&form, &["Calcular", "coma decimal", "El mismo trabajo por URL"]),
     ] {
         assert_eq!(r.status, StatusCode::OK, "{}", r.text);

@@ -186,6 +186,9 @@ impl AnyKind for CheckKind {
     fn name(&self) -> &'static str {
         "check"
     }
+    fn title(&self) -> String {
+        crate::i18n::say("kind-check")
+    }
     fn path(&self) -> &'static str {
         "/v1/check"
     }

@@ -44,7 +44,7 @@ pub async fn template(
         Err(e) => return layout::error(e),
     };
     if given.is_empty() {
-        return layout::answer(StatusCode::OK, form(&t, &given, None));
+        return layout::answer(StatusCode::OK, form(&t, &given, None, &super::job::kind_title(&state, &t.kind)));
     }
     // A field left blank or at its default is not asked: an unchanged form is
     // the template's own job, the one `/v1/templates/{id}/job` gives. A name
@@ -61,13 +61,13 @@ pub async fn template(
             | ApiError::Invalid(_)
             | ApiError::OverBudget(_)
             | ApiError::ResultTooLarge { .. }),
-        ) => layout::answer(e.status(), form(&t, &given, Some(&e))),
+        ) => layout::answer(e.status(), form(&t, &given, Some(&e), &super::job::kind_title(&state, &t.kind))),
         Err(e) => layout::error(e),
     }
 }
 
 /// The form, with the values given and the errors of a refused submission.
-fn form(t: &Template, given: &HashMap<String, String>, error: Option<&ApiError>) -> Markup {
+fn form(t: &Template, given: &HashMap<String, String>, error: Option<&ApiError>, kind: &str) -> Markup {
     let fields = error.map_or(&[][..], ApiError::fields);
     let at = |name: &str| fields.iter().filter(|f| f.parameter.as_deref() == Some(name)).collect::<Vec<&FieldError>>();
     let others: Vec<&FieldError> =
@@ -77,7 +77,7 @@ fn form(t: &Template, given: &HashMap<String, String>, error: Option<&ApiError>)
     let tx = |key| tr(lang, key);
     let body = html! {
         h1 { (title) }
-        p.meta { (Msg::new("page-template-meta").arg("id", &t.id).arg("kind", &t.kind).render(lang))
+        p.meta { (Msg::new("page-template-meta").arg("id", &t.id).arg("kind", kind).render(lang))
             @if let Some(s) = t.source_in(lang) { " · " (s) } }
         @if let Some(e) = error {
             p.error { (e.msg().render(lang)) }

@@ -68,7 +68,7 @@ async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Resu
     let (row, mut result, _reserved) = match result_tree(state, id).await {
         Err(ApiError::NotDone { status, .. }) => {
             let (row, _reserved) = read::load(state, id, read::READ_MEMORY_FACTOR).await?;
-            let page = not_done(&row);
+            let page = not_done(&row, &kind_title(state, &row.kind));
             return Ok(if status == Status::Failed { Rendered::Done(page) } else { Rendered::Waiting(page) });
         }
         read => read?,
@@ -82,12 +82,13 @@ async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Resu
             return Err(crate::kind::plots::no_step(s, count));
         }
     }
+    let named = kind.title();
     let summary = summary(&row, &result);
     let (values, long) = values(kind, &mut result);
     let (lang, id) = (i18n::current(), &row.id);
     let t = |key| tr(lang, key);
     let body = html! {
-        h1 { (title(&row)) }
+        h1 { (title(&row, &named)) }
         (meta(&row))
         ul.links.noprint {
             li { a href=(format!("/v1/jobs/{id}")) { "JSON" } }
@@ -107,15 +108,15 @@ async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Resu
         (plot_figures(id, &listed, step))
         (request_sent(&row))
     };
-    Ok(Rendered::Done(layout::page(&title(&row), body)))
+    Ok(Rendered::Done(layout::page(&title(&row, &named), body)))
 }
 
 /// The page of a deferred job not done: where it is, or why it failed.
-fn not_done(row: &JobRow) -> Markup {
+fn not_done(row: &JobRow, named: &str) -> Markup {
     let problem: Option<Problem> = row.problem.as_deref().and_then(|p| serde_json::from_slice(p).ok());
     let lang = i18n::current();
     let body = html! {
-        h1 { (title(row)) }
+        h1 { (title(row, named)) }
         (meta(row))
         @match &problem {
             Some(p) => {
@@ -128,7 +129,7 @@ fn not_done(row: &JobRow) -> Markup {
         ul.links.noprint { li { a href=(format!("/v1/jobs/{}", row.id)) { "JSON" } } }
         (request_sent(row))
     };
-    layout::page(&title(row), body)
+    layout::page(&title(row, named), body)
 }
 
 /// What a job is: its id, when, its label, the engine's version.
@@ -150,12 +151,18 @@ fn request_sent(row: &JobRow) -> Markup {
     }
 }
 
-fn title(row: &JobRow) -> String {
+/// "flywheel job: LABEL", "trabajo volante: LABEL" (`named`: the kind for people).
+fn title(row: &JobRow, named: &str) -> String {
     let msg = match &row.label {
         Some(l) => Msg::new("page-job-title-label").arg("label", plots::svg::clean(l)),
         None => Msg::new("page-job-title"),
     };
-    msg.arg("kind", &row.kind).text()
+    msg.arg("kind", named).text()
+}
+
+/// The kind `name` for people (its name when the registry has it not).
+pub fn kind_title(state: &AppState, name: &str) -> String {
+    state.kinds.find(name).map_or_else(|| name.to_string(), |k| k.title())
 }
 
 /// The number of steps (kinetostatics) or samples (dynamics) a drawing can show.

@@ -53,7 +53,7 @@ pub async fn home(State(state): State<AppState>) -> Response {
             thead { tr { th { (t("page-col-template")) } th { (t("page-col-kind")) } th { (t("page-col-problem")) } } }
             tbody { @for t in &templates { tr {
                 td.id { a href=(format!("/templates/{}", super::plots::segment(&t.id))) { (t.id) } }
-                td { (t.kind) }
+                td { (job::kind_title(&state, &t.kind)) }
                 td { (t.title_in(lang)) }
             } } }
         } }
@@ -68,7 +68,7 @@ pub async fn home(State(state): State<AppState>) -> Response {
                 } }
                 tbody { @for j in &jobs { tr {
                     td.id { a href=(format!("/jobs/{}", j.id)) { (j.id) } }
-                    td { (j.kind) }
+                    td { (job::kind_title(&state, &j.kind)) }
                     td { (j.label.as_deref().map(super::plots::svg::clean).unwrap_or_default()) }
                     td.num { (job::when(&j.created_at)) }
                     @if j.status == Status::Done { td.num { (job::duration(j.engine_us)) } } @else { td { (j.status.as_str()) } }

@@ -27,6 +27,7 @@ pub struct Cams;
 
 impl Kind for Cams {
     const NAME: &'static str = "cams";
+    const TITLE: &'static str = "kind-cams";
     const PATH: &'static str = "/v1/cams";
     const OPERATION_ID: &'static str = "create_cam_job";
     const TAG: &'static str = "calculators";

@@ -148,6 +148,7 @@ pub struct Dynamics;
 
 impl Kind for Dynamics {
     const NAME: &'static str = "dynamics";
+    const TITLE: &'static str = "kind-dynamics";
     const PATH: &'static str = "/v1/dynamics";
     const OPERATION_ID: &'static str = "create_dynamics_job";
     const TAG: &'static str = "dynamics";

@@ -48,6 +48,7 @@ pub struct EquivalentMasses;
 
 impl Kind for EquivalentMasses {
     const NAME: &'static str = "equivalent_masses";
+    const TITLE: &'static str = "kind-equivalent";
     const PATH: &'static str = "/v1/equivalent-masses";
     const OPERATION_ID: &'static str = "create_equivalent_masses_job";
     const TAG: &'static str = "calculators";

@@ -25,6 +25,7 @@ pub struct Flywheel;
 
 impl Kind for Flywheel {
     const NAME: &'static str = "flywheel";
+    const TITLE: &'static str = "kind-flywheel";
     const PATH: &'static str = "/v1/flywheel";
     const OPERATION_ID: &'static str = "create_flywheel_job";
     const TAG: &'static str = "flywheel";

@@ -98,6 +98,7 @@ pub struct GearTrain;
 
 impl Kind for GearTrain {
     const NAME: &'static str = "gear_train";
+    const TITLE: &'static str = "kind-gear-train";
     const PATH: &'static str = "/v1/gears/train";
     const OPERATION_ID: &'static str = "create_gear_train_job";
     const TAG: &'static str = "gears";

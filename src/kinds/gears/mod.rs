@@ -66,6 +66,7 @@ pub struct Gears;
 
 impl Kind for Gears {
     const NAME: &'static str = "gears";
+    const TITLE: &'static str = "kind-gears";
     const PATH: &'static str = "/v1/gears/geometry";
     const OPERATION_ID: &'static str = "create_gear_geometry_job";
     const TAG: &'static str = "gears";

@@ -24,6 +24,7 @@ pub struct Kinetostatics;
 
 impl Kind for Kinetostatics {
     const NAME: &'static str = "kinetostatics";
+    const TITLE: &'static str = "kind-kinetostatics";
     const PATH: &'static str = "/v1/kinetostatics";
     const OPERATION_ID: &'static str = "create_kinetostatics_job";
     const TAG: &'static str = "kinetostatics";

@@ -94,6 +94,7 @@ pub struct Mobility;
 
 impl Kind for Mobility {
     const NAME: &'static str = "mobility";
+    const TITLE: &'static str = "kind-mobility";
     const PATH: &'static str = "/v1/mobility";
     const OPERATION_ID: &'static str = "create_mobility_job";
     const TAG: &'static str = "calculators";

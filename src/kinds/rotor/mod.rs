@@ -130,6 +130,7 @@ pub struct RigidRotor;
 
 impl Kind for RigidRotor {
     const NAME: &'static str = "rotor";
+    const TITLE: &'static str = "kind-rotor";
     const PATH: &'static str = "/v1/rotor";
     const OPERATION_ID: &'static str = "create_rotor_job";
     const TAG: &'static str = "calculators";
