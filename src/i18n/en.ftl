@@ -81,6 +81,13 @@ field-too-long = must be at most { $max } characters (has { $has })
 field-not-angle = '{ $text }' is neither an angle (e.g. "90 deg") nor a constant expression (e.g. "7*pi/4")
 field-expression = '{ $text }' is an expression, not a quantity: write it as {"{"}"expr": "{ $text }"{"}"}
 field-expected = expected { $expected }, got { $got }
+field-between = must be between { $min } and { $max }
+field-between-open = must be greater than { $min } and less than { $max }
+field-at-most = must be at most { $max }
+field-at-most-characters = must be at most { $max } characters
+field-samples = must be 0 (no table) or at least 2
+field-less-than = must be less than { $other }
+field-finite-nonzero = must be a finite, non-zero number
 
 ## The query of a URL
 
@@ -312,3 +319,11 @@ kind-gear-train = gear train
 kind-equivalent = equivalent masses
 kind-mobility = mobility
 kind-check = check
+
+## The flywheel's request
+
+flywheel-speeds = give exactly one of: mean_speed + irregularity, mean_speed + min_speed, min_speed + max_speed
+flywheel-torques-count = must hold 1 to { $max } items (or give a machine)
+flywheel-one-balance = at most one item may have "balance": true
+flywheel-value-or-balance = give either "value" or "balance": true
+flywheel-disk = give exactly one of rim_speed, radius or thickness

@@ -81,6 +81,13 @@ field-too-long = debe tener como mucho { $max } caracteres (tiene { $has })
 field-not-angle = '{ $text }' no es ni un ángulo (p. ej. "90 deg" o "90°") ni una expresión constante (p. ej. "7*pi/4")
 field-expression = '{ $text }' es una expresión, no una magnitud: escríbala como {"{"}"expr": "{ $text }"{"}"}
 field-expected = se esperaba { $expected } y llegó { $got }
+field-between = debe estar entre { $min } y { $max }
+field-between-open = debe ser mayor que { $min } y menor que { $max }
+field-at-most = debe ser como mucho { $max }
+field-at-most-characters = debe tener como mucho { $max } caracteres
+field-samples = debe ser 0 (sin tabla) o al menos 2
+field-less-than = debe ser menor que { $other }
+field-finite-nonzero = debe ser un número finito distinto de cero
 
 ## La consulta de una URL
 
@@ -312,3 +319,11 @@ kind-gear-train = tren de engranajes
 kind-equivalent = masas equivalentes
 kind-mobility = movilidad
 kind-check = comprobación
+
+## La petición de un volante
+
+flywheel-speeds = dé exactamente una de estas parejas: mean_speed + irregularity, mean_speed + min_speed, min_speed + max_speed
+flywheel-torques-count = debe tener de 1 a { $max } elementos (o dé una máquina)
+flywheel-one-balance = como mucho un elemento puede tener "balance": true
+flywheel-value-or-balance = dé "value" o bien "balance": true
+flywheel-disk = dé exactamente uno de rim_speed, radius o thickness

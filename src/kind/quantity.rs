@@ -293,6 +293,14 @@ impl Errors {
         }
     }
 
+    /// [`Self::require`] with the catalogue's message.
+    pub fn require_said(&mut self, v: Option<f64>, ok: impl Fn(f64) -> bool, at: &str, msg: Msg) -> Option<f64> {
+        match v? {
+            v if ok(v) => Some(v),
+            _ => self.refuse(at, msg),
+        }
+    }
+
     pub fn fail<T>(&mut self, at: &str, message: impl Into<String>) -> Option<T> {
         self.push(at, message);
         None

@@ -4,6 +4,7 @@ use crate::engine::Deadline;
 use crate::engine::flywheel::{DiskSize, DiskSpec, FlywheelProblem, Load, TorqueItem};
 use crate::engine::function::Function;
 use crate::engine::machine::{Machine, Reduced, ReducedCurve};
+use crate::i18n::Msg;
 use crate::kind::constants::{self, Constants};
 use crate::kind::limits::Limits;
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
@@ -134,17 +135,19 @@ impl FlywheelRequest {
         let period = match &self.period {
             Some(q) => e
                 .angle(q, "/period")
-                .and_then(|p| if p > 0.0 { Some(p) } else { e.fail("/period", "must be greater than 0") }),
+                .and_then(|p| if p > 0.0 { Some(p) } else { e.refuse("/period", Msg::new("field-positive")) }),
             None => Some(2.0 * PI),
         };
         let speeds = self.speeds(&mut e);
         let tolerance = match self.tolerance {
-            Some(t) if !(1e-14..=1e-2).contains(&t) => e.fail("/tolerance", "must be between 1e-14 and 1e-2"),
+            Some(t) if !(1e-14..=1e-2).contains(&t) => {
+                e.refuse("/tolerance", Msg::new("field-between").arg("min", "1e-14").arg("max", "1e-2"))
+            }
             t => Some(t.unwrap_or(1e-9)),
         };
         let samples = match self.samples {
-            Some(n) if n > limits.samples => e.fail("/samples", format!("must be at most {}", limits.samples)),
-            Some(1) => e.fail("/samples", "must be 0 (no table) or at least 2"),
+            Some(n) if n > limits.samples => e.refuse("/samples", Msg::new("field-at-most").arg("max", limits.samples)),
+            Some(1) => e.refuse("/samples", Msg::new("field-samples")),
             n => Some(n.unwrap_or(DEFAULT_SAMPLES)),
         };
         let p = period.unwrap_or(2.0 * PI);
@@ -209,30 +212,28 @@ impl FlywheelRequest {
         // Read (and checked) before the others can end the reading early.
         let irregularity = self.irregularity.as_ref().map(|q| {
             let eps = e.quantity(q, Dim::NONE, "/irregularity");
-            e.require(eps, |v| v > 0.0 && v < 2.0, "/irregularity", "must be greater than 0 and less than 2")
+            let between = Msg::new("field-between-open").num("min", 0.0).num("max", 2.0);
+            e.require_said(eps, |v| v > 0.0 && v < 2.0, "/irregularity", between)
         });
         let (mean, eps) = match (mean, irregularity, min, max) {
             (Some(m), Some(eps), None, None) => (m?, eps?),
             (Some(m), None, Some(lo), None) => {
                 let (m, lo) = (m?, lo?);
                 if lo >= m {
-                    return e.fail("/min_speed", "must be less than mean_speed");
+                    return e.refuse("/min_speed", Msg::new("field-less-than").arg("other", "mean_speed"));
                 }
                 (m, 2.0 * (m - lo) / m)
             }
             (None, None, Some(lo), Some(hi)) => {
                 let (lo, hi) = (lo?, hi?);
                 if lo >= hi {
-                    return e.fail("/min_speed", "must be less than max_speed");
+                    return e.refuse("/min_speed", Msg::new("field-less-than").arg("other", "max_speed"));
                 }
                 let m = 0.5 * (lo + hi);
                 (m, (hi - lo) / m)
             }
             _ => {
-                return e.fail(
-                    "",
-                    "give exactly one of: mean_speed + irregularity, mean_speed + min_speed, min_speed + max_speed",
-                );
+                return e.refuse("", Msg::new("flywheel-speeds"));
             }
         };
         Some((mean, eps))
@@ -241,10 +242,10 @@ impl FlywheelRequest {
     fn torques(&self, e: &mut Errors, period: f64, machine: bool) -> Option<Vec<TorqueItem>> {
         let list = self.torques.as_deref().unwrap_or_default();
         if (list.is_empty() && !machine) || list.len() > MAX_TORQUES {
-            return e.fail("/torques", format!("must hold 1 to {MAX_TORQUES} items (or give a machine)"));
+            return e.refuse("/torques", Msg::new("flywheel-torques-count").arg("max", MAX_TORQUES));
         }
         if list.iter().filter(|t| t.balance == Some(true)).count() > 1 {
-            e.push("/torques", "at most one item may have \"balance\": true");
+            e.say("/torques", Msg::new("flywheel-one-balance"));
         }
         let items: Vec<Option<TorqueItem>> = list.iter().enumerate().map(|(i, t)| torque(e, t, i, period)).collect();
         items.into_iter().collect()
@@ -274,7 +275,7 @@ impl FlywheelRequest {
 
 fn ratio(e: &mut Errors, r: Option<f64>, at: &str) -> Option<f64> {
     match r {
-        Some(k) if k == 0.0 || !k.is_finite() => e.fail(at, "must be a finite, non-zero number"),
+        Some(k) if k == 0.0 || !k.is_finite() => e.refuse(at, Msg::new("field-finite-nonzero")),
         k => Some(k.unwrap_or(1.0)),
     }
 }
@@ -282,13 +283,13 @@ fn ratio(e: &mut Errors, r: Option<f64>, at: &str) -> Option<f64> {
 fn torque(e: &mut Errors, t: &TorqueDto, i: usize, period: f64) -> Option<TorqueItem> {
     let at = format!("/torques/{i}");
     if t.name.chars().count() > MAX_NAME {
-        e.push(&format!("{at}/name"), format!("must be at most {MAX_NAME} characters"));
+        e.say(&format!("{at}/name"), Msg::new("field-at-most-characters").arg("max", MAX_NAME));
     }
     let ratio = ratio(e, t.ratio, &format!("{at}/ratio"));
     let load = match (&t.value, t.balance.unwrap_or(false)) {
         (Some(v), false) => e.function(v, Dim::TORQUE, period, &format!("{at}/value")).map(Load::Given),
         (None, true) => Some(Load::Balance),
-        _ => e.fail(&at, "give either \"value\" or \"balance\": true"),
+        _ => e.refuse(&at, Msg::new("flywheel-value-or-balance")),
     };
     Some(TorqueItem { name: t.name.clone(), load: load?, ratio: ratio?, label: format!("{at}/value") })
 }
@@ -299,7 +300,7 @@ fn disk(e: &mut Errors, d: &DiskDto) -> Option<DiskSpec> {
         (Some(v), None, None) => e.positive(v, Dim::SPEED, "/flywheel/disk/rim_speed").map(DiskSize::RimSpeed),
         (None, Some(r), None) => e.positive(r, Dim::LENGTH, "/flywheel/disk/radius").map(DiskSize::Radius),
         (None, None, Some(t)) => e.positive(t, Dim::LENGTH, "/flywheel/disk/thickness").map(DiskSize::Thickness),
-        _ => e.fail("/flywheel/disk", "give exactly one of rim_speed, radius or thickness"),
+        _ => e.refuse("/flywheel/disk", Msg::new("flywheel-disk")),
     };
     Some(DiskSpec { density: density?, size: size? })
 }
