@@ -49,7 +49,7 @@ detail-no-plot-none = job '{ $id }' has no plot '{ $name }' (it has no plots)
 detail-no-file = job '{ $id }' has no file '{ $name }' (its files: { $known })
 detail-no-file-none = job '{ $id }' has no file '{ $name }' (it has none)
 detail-no-template = no template with id '{ $id }' (GET /v1/templates lists them)
-detail-as-said = { $why }
+text-as-is = { $why }
 detail-in-progress = a request with Idempotency-Key '{ $key }' is still being answered; retry after 1 s
 detail-failed = job '{ $id }' failed and has no result: GET /v1/jobs/{ $id } says why (its `problem`)
 detail-not-done = job '{ $id }' is { $status }: its result is not there yet; retry after 1 s
@@ -70,6 +70,7 @@ unit-malformed = '{ $text }' is not a number followed by a unit, e.g. "300 rpm"
 unit-unknown = unknown unit '{ $unit }'; known units: { $known }
 unit-unknown-hint = unknown unit '{ $unit }'; did you mean { $hint }? Known units: { $known }
 unit-wrong-dimension = a value in { $found } where { $expected } is expected
+unit-none = 1 (dimensionless)
 
 ## A field of a request
 
@@ -134,6 +135,7 @@ json-got-text = the text { $text }
 json-got-number = the number { $value }
 json-got-items = { $n } item(s)
 json-variant = unknown variant { $got }, expected { $expected }
+json-variant-one-of = unknown variant { $got }, expected one of { $expected }
 
 ## Pages
 
@@ -189,6 +191,8 @@ page-form-help = A number is read in the unit beside its name; a quantity with i
 page-compute = Compute
 page-form-url = The same job by URL, for a spreadsheet or a script:
 page-form-url-json = (JSON), or one number:
+page-name-value = NAME=VALUE
+page-pointer = POINTER
 page-one-of = one of { $choices }
 page-from-to = from { $min } to { $max }{ $unit }
 page-at-least = at least { $min }{ $unit }

@@ -49,7 +49,7 @@ detail-no-plot-none = el trabajo '{ $id }' no tiene la gráfica '{ $name }' (no 
 detail-no-file = el trabajo '{ $id }' no tiene el fichero '{ $name }' (sus ficheros: { $known })
 detail-no-file-none = el trabajo '{ $id }' no tiene el fichero '{ $name }' (no tiene ninguno)
 detail-no-template = no hay ninguna plantilla con id '{ $id }' (GET /v1/templates las lista)
-detail-as-said = { $why }
+text-as-is = { $why }
 detail-in-progress = aún se está respondiendo una petición con Idempotency-Key '{ $key }'; reinténtelo dentro de 1 s
 detail-failed = el trabajo '{ $id }' falló y no tiene resultado: GET /v1/jobs/{ $id } dice por qué (su `problem`)
 detail-not-done = el trabajo '{ $id }' está { $status }: su resultado aún no está; reinténtelo dentro de 1 s
@@ -70,6 +70,7 @@ unit-malformed = '{ $text }' no es un número seguido de una unidad, p. ej. "300
 unit-unknown = unidad desconocida '{ $unit }'; unidades conocidas: { $known }
 unit-unknown-hint = unidad desconocida '{ $unit }'; ¿quería decir { $hint }? Unidades conocidas: { $known }
 unit-wrong-dimension = un valor en { $found } donde se espera { $expected }
+unit-none = 1 (adimensional)
 
 ## Un campo de la petición
 
@@ -134,6 +135,7 @@ json-got-text = el texto { $text }
 json-got-number = el número { $value }
 json-got-items = { $n } elemento(s)
 json-variant = variante desconocida { $got }, se esperaba { $expected }
+json-variant-one-of = variante desconocida { $got }, se esperaba una de { $expected }
 
 ## Páginas
 
@@ -189,6 +191,8 @@ page-form-help = Un número se lee en la unidad que figura junto a su nombre (co
 page-compute = Calcular
 page-form-url = El mismo trabajo por URL, para una hoja de cálculo o un programa:
 page-form-url-json = (JSON), o un solo número:
+page-name-value = NOMBRE=VALOR
+page-pointer = PUNTERO
 page-one-of = uno de { $choices }
 page-from-to = de { $min } a { $max }{ $unit }
 page-at-least = al menos { $min }{ $unit }

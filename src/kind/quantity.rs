@@ -202,7 +202,12 @@ pub fn unit_msg(e: &UnitError) -> Msg {
         .arg("unit", unit)
         .arg("known", units::known_units()),
         UnitError::WrongDimension { found, expected } => {
-            Msg::new("unit-wrong-dimension").arg("found", found).arg("expected", expected)
+            // A pure number's name is words ("1 (dimensionless)"); the others are units.
+            let name = |s: &String| match *s == Dim::NONE.si_name() {
+                true => Msg::new("unit-none"),
+                false => Msg::new("text-as-is").arg("why", s),
+            };
+            Msg::new("unit-wrong-dimension").with("found", name(found)).with("expected", name(expected))
         }
     }
 }

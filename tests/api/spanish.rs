@@ -81,7 +81,7 @@ async fn a_422_in_spanish_at_the_same_pointers() {
     let es = in_spanish(&app, "POST", "/v1/flywheel", Some(&units)).await.json();
     let at = |p: &str| es["errors"].as_array().unwrap().iter().find(|e| e["pointer"] == p).cloned().unwrap();
     assert!(at("/mean_speed")["message"].as_str().unwrap().starts_with("unidad desconocida 'rmp'; ¿quería decir rpm?"));
-    assert_eq!(at("/irregularity")["message"], "un valor en kg donde se espera 1 (dimensionless)");
+    assert_eq!(at("/irregularity")["message"], "un valor en kg donde se espera 1 (adimensional)");
     assert_eq!(es["detail"], "2 campos no válidos");
 }
 

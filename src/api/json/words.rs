@@ -26,9 +26,13 @@ pub fn plain(message: &str) -> Msg {
     if let Some(rest) = message.strip_prefix("unknown variant ")
         && let Some((got, e)) = rest.split_once(", expected ")
     {
-        return Msg::new("json-variant").arg("got", got.replace('`', "\"")).arg("expected", e.replace('`', "\""));
+        let (id, e) = match e.strip_prefix("one of ") {
+            Some(list) => ("json-variant-one-of", list),
+            None => ("json-variant", e),
+        };
+        return Msg::new(id).arg("got", got.replace('`', "\"")).arg("expected", e.replace('`', "\""));
     }
-    Msg::new("detail-as-said").arg("why", message.replace('`', "\""))
+    Msg::new("text-as-is").arg("why", message.replace('`', "\""))
 }
 
 /// What serde expected, in words.
@@ -45,7 +49,7 @@ fn expected_words(expected: &str) -> Msg {
         _ if e.starts_with("struct ") || e.starts_with("an object") => "json-struct",
         _ if e.starts_with("an array of length ") => return Msg::new("json-array-of").arg("n", &e[19..]),
         _ if e.starts_with("a tuple of size ") => return Msg::new("json-tuple").arg("n", &e[16..]),
-        _ => return Msg::new("detail-as-said").arg("why", e.replace('`', "\"")),
+        _ => return Msg::new("text-as-is").arg("why", e.replace('`', "\"")),
     };
     Msg::new(id)
 }
@@ -56,16 +60,16 @@ fn got_words(got: &str) -> Msg {
     match g {
         "sequence" => Msg::new("json-got-array"),
         "map" => Msg::new("json-got-object"),
-        "unit value" | "null" => Msg::new("detail-as-said").arg("why", "null"),
+        "unit value" | "null" => Msg::new("text-as-is").arg("why", "null"),
         _ => {
             if let Some(s) = g.strip_prefix("string ") {
                 Msg::new("json-got-text").arg("text", s)
             } else if let Some(v) = g.strip_prefix("floating point `").or_else(|| g.strip_prefix("integer `")) {
                 Msg::new("json-got-number").arg("value", v.trim_end_matches('`'))
             } else if let Some(v) = g.strip_prefix("boolean `") {
-                Msg::new("detail-as-said").arg("why", v.trim_end_matches('`'))
+                Msg::new("text-as-is").arg("why", v.trim_end_matches('`'))
             } else {
-                Msg::new("detail-as-said").arg("why", g.replace('`', "\""))
+                Msg::new("text-as-is").arg("why", g.replace('`', "\""))
             }
         }
     }
@@ -121,6 +125,10 @@ mod tests {
         assert_eq!(
             plain("invalid type: string \"abc\", expected f64").render(Lang::Es),
             "se esperaba un número y llegó el texto \"abc\""
+        );
+        assert_eq!(
+            plain("unknown variant `hinge`, expected one of `revolute`, `prismatic`").render(Lang::Es),
+            "variante desconocida \"hinge\", se esperaba una de \"revolute\", \"prismatic\""
         );
     }
 

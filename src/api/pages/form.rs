@@ -97,8 +97,8 @@ fn form(t: &Template, given: &HashMap<String, String>, error: Option<&ApiError>,
             div { button type="submit" { (tx("page-compute")) } }
         }
         p { (tx("page-form-url")) " "
-            code { "/v1/templates/" (t.id) "/job?NAME=VALUE" } " " (tx("page-form-url-json")) " "
-            code { "/v1/templates/" (t.id) "/result/POINTER?NAME=VALUE" } "." }
+            code { "/v1/templates/" (t.id) "/job?" (tx("page-name-value")) } " " (tx("page-form-url-json")) " "
+            code { "/v1/templates/" (t.id) "/result/" (tx("page-pointer")) "?" (tx("page-name-value")) } "." }
     };
     layout::page(&title, body)
 }
@@ -113,7 +113,7 @@ fn hint(p: &Parameter, description: Option<&str>) -> String {
         (Some(a), Some(b), None) => Msg::new("page-from-to").num("min", a).num("max", b),
         (Some(a), None, None) => Msg::new("page-at-least").num("min", a),
         (None, Some(b), None) => Msg::new("page-at-most").num("max", b),
-        _ => Msg::new("detail-as-said").arg("why", ""),
+        _ => Msg::new("text-as-is").arg("why", ""),
     };
     let range = range.arg("unit", unit).text();
     let text = description.unwrap_or_default().to_string();

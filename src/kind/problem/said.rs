@@ -21,7 +21,7 @@ impl ApiError {
             Self::NoFile { id, name, known } => listed("detail-no-file", "detail-no-file-none", id, name, known),
             Self::NoTemplate(id) => Msg::new("detail-no-template").arg("id", id),
             Self::Conflict(why) | Self::OverBudget(why) | Self::RequestTimeout(why) => {
-                Msg::new("detail-as-said").arg("why", why)
+                Msg::new("text-as-is").arg("why", why)
             }
             Self::InProgress(key) => Msg::new("detail-in-progress").arg("key", key),
             Self::NotDone { id, status: Status::Failed } => Msg::new("detail-failed").arg("id", id),
