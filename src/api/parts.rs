@@ -49,25 +49,13 @@ pub async fn part(
 ) -> Result<Response, ApiError> {
     let q = query(q, &["unit", "decimal"])?;
     let (row, result, _reserved) = result_tree(&state, &id).await?;
-    answer(&state.kinds, &row, &result, &pointer, &q, &headers)
-}
-
-/// The part of `result` (of job `row`) at `pointer`, converted to the
-/// query's `unit` and written with its `decimal` mark, as text or JSON as
-/// [`part`] says.
-pub fn answer(
-    kinds: &kind::Registry,
-    row: &JobRow,
-    result: &Value,
-    pointer: &str,
-    q: &HashMap<String, String>,
-    headers: &HeaderMap,
-) -> Result<Response, ApiError> {
-    let (mime, text) = text(kinds, row, result, pointer, q, headers)?;
+    let (mime, text) = text(&state.kinds, &row, &result, &pointer, &q, &headers)?;
     Ok(([(header::CONTENT_TYPE, mime)], text).into_response())
 }
 
-/// The answer of [`answer`] as its content type and text.
+/// The part of `result` (of job `row`) at `pointer`, converted to the
+/// query's `unit` and written with its `decimal` mark, as [`part`] answers
+/// it: its content type and text.
 pub fn text(
     kinds: &kind::Registry,
     row: &JobRow,

@@ -28,16 +28,24 @@ fn plots(port: u16, id: &str) -> Vec<String> {
     list["plots"].as_array().unwrap().iter().map(|p| p["href"].as_str().unwrap().to_string()).collect()
 }
 
-#[test]
-fn chromium_loads_every_page_submits_the_form_and_opens_every_plot() {
+/// The real binary on a fresh database, for Chromium; None (the test
+/// skipped, saying so) without Chromium, unless CI requires it
+/// (MECHDYN_REQUIRE_CHROMIUM), where it fails.
+fn served() -> Option<(tempfile::TempDir, u16, std::process::Child)> {
     if !std::path::Path::new(CHROMIUM).exists() {
         assert!(std::env::var_os("MECHDYN_REQUIRE_CHROMIUM").is_none(), "Chromium is required");
         eprintln!("skipped: Debian's chromium is not installed");
-        return;
+        return None;
     }
     let dir = tempfile::tempdir().unwrap();
     let port = free_port();
-    let mut service = start(&format!("sqlite://{}/pages.db", dir.path().display()), port);
+    let service = start(&format!("sqlite://{}/pages.db", dir.path().display()), port);
+    Some((dir, port, service))
+}
+
+#[test]
+fn chromium_loads_every_page_submits_the_form_and_opens_every_plot() {
+    let Some((dir, port, mut service)) = served() else { return };
     let flywheel = posted(port, "/v1/flywheel?label=%3Cscript%3Ealert(1)%3C%2Fscript%3E", &request("p103_slider"));
     let kinetostatics = posted(port, "/v1/kinetostatics", &request("k1_offset_slider_crank"));
     let dynamics = posted(port, "/v1/dynamics", &request("p68_two_link_arm"));
@@ -142,14 +150,7 @@ const ENGLISH: [&str; 16] = [
 /// the JSON route gives for 0.03 and 20 deg), its page in Spanish.
 #[test]
 fn chromium_in_spanish_reads_and_fills_the_pages_with_decimal_commas() {
-    if !std::path::Path::new(CHROMIUM).exists() {
-        assert!(std::env::var_os("MECHDYN_REQUIRE_CHROMIUM").is_none(), "Chromium is required");
-        eprintln!("skipped: Debian's chromium is not installed");
-        return;
-    }
-    let dir = tempfile::tempdir().unwrap();
-    let port = free_port();
-    let mut service = start(&format!("sqlite://{}/pages.db", dir.path().display()), port);
+    let Some((dir, port, mut service)) = served() else { return };
     let flywheel = posted(port, "/v1/flywheel", &request("p103_slider"));
     let svgs = plots(port, &flywheel);
     let out = concat!(env!("CARGO_MANIFEST_DIR"), "/target/screenshots/es");

@@ -20,23 +20,29 @@ fn calc_available() -> bool {
     uno && soffice
 }
 
-/// P.103 at F = 1200 N·m, ε = 0.03: I_approx = 348.989…·(1200/500)·(0.04/0.03)
-/// (case F1; ΔE scales with F), I_exact as the engine computes it in-process,
-/// and 1 slug·ft² = 1.355818 kg·m² (NIST SP 811, B.9).
-#[tokio::test]
-async fn libreoffice_calc_fetches_answers_with_webservice() {
-    if !calc_available() {
-        assert!(std::env::var_os("MECHDYN_REQUIRE_LIBREOFFICE").is_none(), "LibreOffice with python3-uno is required");
-        eprintln!("skipped: LibreOffice Calc with python3-uno is not installed");
-        return;
+/// Whether a test is skipped because `what` is not installed: it says so,
+/// unless CI requires LibreOffice (MECHDYN_REQUIRE_LIBREOFFICE), where it fails.
+fn skipped(present: bool, what: &str) -> bool {
+    if !present {
+        assert!(std::env::var_os("MECHDYN_REQUIRE_LIBREOFFICE").is_none(), "{what} is required");
+        eprintln!("skipped: {what} is not installed");
     }
+    !present
+}
+
+/// tests/clients/calc_webservice.py (with `flags`) run against the real
+/// binary on a fresh database: the cells Calc computed (none holding an
+/// error) and the flywheel jobs the service stored meanwhile.
+fn calc_cells(flags: &[&str]) -> (Value, Value) {
     let dir = tempfile::tempdir().unwrap();
     let port = free_port();
     let mut service = start(&format!("sqlite://{}/calc.db", dir.path().display()), port);
     let profile = dir.path().join("profile");
     let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/clients/calc_webservice.py");
     let out = Command::new(PYTHON)
-        .args([script, &format!("http://127.0.0.1:{port}"), profile.to_str().unwrap()])
+        .arg(script)
+        .args(flags)
+        .args([&format!("http://127.0.0.1:{port}"), profile.to_str().unwrap()])
         .output()
         .unwrap();
     let (_, jobs) = http(port, "GET", "/v1/jobs?kind=flywheel", "").unwrap();
@@ -48,6 +54,18 @@ async fn libreoffice_calc_fetches_answers_with_webservice() {
     for (name, error) in cells["errors"].as_object().unwrap() {
         assert_eq!(error, 0, "cell {name} holds an error");
     }
+    (cells, serde_json::from_str(&jobs).unwrap())
+}
+
+/// P.103 at F = 1200 N·m, ε = 0.03: I_approx = 348.989…·(1200/500)·(0.04/0.03)
+/// (case F1; ΔE scales with F), I_exact as the engine computes it in-process,
+/// and 1 slug·ft² = 1.355818 kg·m² (NIST SP 811, B.9).
+#[tokio::test]
+async fn libreoffice_calc_fetches_answers_with_webservice() {
+    if skipped(calc_available(), "LibreOffice Calc with python3-uno") {
+        return;
+    }
+    let (cells, jobs) = calc_cells(&[]);
     let app = TestApp::new().await;
     let exact: f64 =
         app.get("/v1/templates/p103-slider-flywheel/result/inertia_exact?F=1200&eps=0.03").await.text.parse().unwrap();
@@ -57,7 +75,6 @@ async fn libreoffice_calc_fetches_answers_with_webservice() {
     assert!((cells["B6"].as_f64().unwrap() / approx - 1.0).abs() < 1e-9, "{cells}");
     assert!((cells["B7"].as_f64().unwrap() * 1.355818 / exact - 1.0).abs() < 1e-6, "{cells}");
     // Calc itself called the service: the job of its parameters is stored there.
-    let jobs: Value = serde_json::from_str(&jobs).unwrap();
     let asked = jobs["items"].as_array().unwrap().iter().any(|j| {
         j["request"]["constants"]["F"].as_f64() == Some(1200.0) && j["request"]["irregularity"].as_f64() == Some(0.03)
     });
@@ -73,35 +90,12 @@ async fn libreoffice_calc_fetches_answers_with_webservice() {
 /// parameter exists). The closed-form scaling of case F1 checks I_approx.
 #[tokio::test]
 async fn a_spanish_calc_reads_decimal_commas() {
-    if !calc_available() {
-        assert!(std::env::var_os("MECHDYN_REQUIRE_LIBREOFFICE").is_none(), "LibreOffice with python3-uno is required");
-        eprintln!("skipped: LibreOffice Calc with python3-uno is not installed");
-        return;
-    }
     let spanish = std::path::Path::new("/usr/lib/libreoffice/program/resource/es").exists();
-    if !spanish {
-        assert!(std::env::var_os("MECHDYN_REQUIRE_LIBREOFFICE").is_none(), "libreoffice-l10n-es is required");
-        eprintln!("skipped: LibreOffice's Spanish (libreoffice-l10n-es) is not installed");
+    if skipped(calc_available() && spanish, "LibreOffice Calc with python3-uno and libreoffice-l10n-es") {
         return;
     }
-    let dir = tempfile::tempdir().unwrap();
-    let port = free_port();
-    let mut service = start(&format!("sqlite://{}/calc.db", dir.path().display()), port);
-    let profile = dir.path().join("profile");
-    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/clients/calc_webservice.py");
-    let out = Command::new(PYTHON)
-        .args([script, "--es", &format!("http://127.0.0.1:{port}"), profile.to_str().unwrap()])
-        .output()
-        .unwrap();
-    let _ = service.kill();
-    let _ = service.wait();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let cells: Value = serde_json::from_slice(&out.stdout).unwrap();
-    eprintln!("Calc's cells: {cells}");
+    let (cells, _) = calc_cells(&["--es"]);
     assert_eq!(cells["decimal_separator"], "0,03", "the sheet's locale writes decimal commas");
-    for (name, error) in cells["errors"].as_object().unwrap() {
-        assert_eq!(error, 0, "cell {name} holds an error");
-    }
     let app = TestApp::new().await;
     let base = "/v1/templates/p103-slider-flywheel/result/inertia_exact";
     let english = |q: String| {

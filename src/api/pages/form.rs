@@ -108,14 +108,14 @@ fn hint(p: &Parameter, description: Option<&str>) -> String {
     let unit = p.unit.as_deref().map_or(String::new(), |u| format!(" {u}"));
     let range = match (p.min, p.max, &p.choices) {
         (_, _, Some(c)) => {
-            Msg::new("page-one-of").arg("choices", c.iter().map(crate::kind::cell).collect::<Vec<_>>().join(", "))
+            Some(Msg::new("page-one-of").arg("choices", c.iter().map(crate::kind::cell).collect::<Vec<_>>().join(", ")))
         }
-        (Some(a), Some(b), None) => Msg::new("page-from-to").num("min", a).num("max", b),
-        (Some(a), None, None) => Msg::new("page-at-least").num("min", a),
-        (None, Some(b), None) => Msg::new("page-at-most").num("max", b),
-        _ => Msg::new("text-as-is").arg("why", ""),
+        (Some(a), Some(b), None) => Some(Msg::new("page-from-to").num("min", a).num("max", b)),
+        (Some(a), None, None) => Some(Msg::new("page-at-least").num("min", a)),
+        (None, Some(b), None) => Some(Msg::new("page-at-most").num("max", b)),
+        _ => None,
     };
-    let range = range.arg("unit", unit).text();
+    let range = range.map_or_else(String::new, |r| r.arg("unit", unit).text());
     let text = description.unwrap_or_default().to_string();
     match (text.is_empty(), range.is_empty()) {
         (false, false) => format!("{text}; {range}."),
