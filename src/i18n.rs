@@ -1,6 +1,8 @@
 //! Every text a person reads, from one message catalogue per language
-//! (Fluent: `i18n/en.ftl`, `i18n/es.ftl`), so that a message written once
-//! has its Spanish beside it and a test fails when it has not.
+//! (Fluent: `i18n/en/*.ftl`, `i18n/es/*.ftl` — the service's own words,
+//! the kinds' requests, the results' warnings and methods), so that a
+//! message written once has its Spanish beside it and a test fails when it
+//! has not.
 //!
 //! A message is named by its id and carries its arguments ([`Msg`]); it is
 //! rendered in a language when it is answered. The language of an answer is
@@ -174,19 +176,24 @@ pub fn tr(lang: Lang, id: &'static str) -> String {
     Msg::new(id).render(lang)
 }
 
-const SOURCES: [&str; 2] = [include_str!("i18n/en.ftl"), include_str!("i18n/es.ftl")];
+/// Each language's catalogue, in files by what they speak of.
+const SOURCES: [[&str; 3]; 2] = [
+    [include_str!("i18n/en/service.ftl"), include_str!("i18n/en/requests.ftl"), include_str!("i18n/en/results.ftl")],
+    [include_str!("i18n/es/service.ftl"), include_str!("i18n/es/requests.ftl"), include_str!("i18n/es/results.ftl")],
+];
 
 static CATALOGUES: LazyLock<[FluentBundle<FluentResource>; 2]> = LazyLock::new(|| Lang::ALL.map(catalogue));
 
 fn catalogue(lang: Lang) -> FluentBundle<FluentResource> {
-    let source = SOURCES[lang as usize];
-    // A syntax error is caught by the tests; what parsed is used.
-    let resource = FluentResource::try_new(source.to_string()).unwrap_or_else(|(r, _)| r);
     let id = lang.tag().parse().unwrap_or_default();
     let mut bundle = FluentBundle::new_concurrent(vec![id]);
     // Plain text: no Unicode isolation marks around arguments.
     bundle.set_use_isolating(false);
-    let _ = bundle.add_resource(resource);
+    for source in SOURCES[lang as usize] {
+        // A syntax error or an id twice is caught by the tests; what parsed is used.
+        let resource = FluentResource::try_new(source.to_string()).unwrap_or_else(|(r, _)| r);
+        let _ = bundle.add_resource(resource);
+    }
     bundle
 }
 

@@ -24,11 +24,21 @@ fn messages(source: &str) -> BTreeMap<String, BTreeSet<String>> {
     out
 }
 
+/// A language's catalogue: its files one after the other.
+fn catalogue_text(lang: Lang) -> String {
+    SOURCES[lang as usize].join("\n")
+}
+
 #[test]
-fn both_catalogues_parse() {
-    for (lang, source) in Lang::ALL.iter().zip(SOURCES) {
-        if let Err((_, errors)) = FluentResource::try_new(source.to_string()) {
-            panic!("{}.ftl: {errors:?}", lang.tag());
+fn both_catalogues_parse_and_name_each_message_once() {
+    for lang in Lang::ALL {
+        let mut seen = BTreeSet::new();
+        for source in SOURCES[lang as usize] {
+            if let Err((_, errors)) = FluentResource::try_new(source.to_string()) {
+                panic!("{}: {errors:?}", lang.tag());
+            }
+            let twice: Vec<String> = messages(source).into_keys().filter(|id| !seen.insert(id.clone())).collect();
+            assert!(twice.is_empty(), "{}: named twice: {twice:?}", lang.tag());
         }
     }
 }
@@ -37,13 +47,13 @@ fn both_catalogues_parse() {
 /// between the two, fails here.
 #[test]
 fn every_message_has_both_languages_with_the_same_arguments() {
-    let (en, es) = (messages(SOURCES[0]), messages(SOURCES[1]));
+    let (en, es) = (messages(&catalogue_text(Lang::En)), messages(&catalogue_text(Lang::Es)));
     let missing: Vec<&String> = en.keys().filter(|k| !es.contains_key(*k)).collect();
     assert!(missing.is_empty(), "without Spanish: {missing:?}");
     let missing: Vec<&String> = es.keys().filter(|k| !en.contains_key(*k)).collect();
     assert!(missing.is_empty(), "without English: {missing:?}");
     for (id, args) in &en {
-        assert_eq!(args, &es[id], "{id}: its arguments in en.ftl and es.ftl");
+        assert_eq!(args, &es[id], "{id}: its arguments in English and Spanish");
     }
     assert!(en.len() > 50, "the catalogue is read: {} messages", en.len());
 }
@@ -53,7 +63,7 @@ fn every_message_has_both_languages_with_the_same_arguments() {
 /// catalogue.
 #[test]
 fn every_message_the_code_names_is_in_the_catalogue() {
-    let en = messages(SOURCES[0]);
+    let en = messages(&catalogue_text(Lang::En));
     let groups: BTreeSet<&str> = en.keys().filter_map(|id| id.split('-').next()).collect();
     let mut named = BTreeSet::new();
     let mut dirs = vec![std::path::PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/src"))];

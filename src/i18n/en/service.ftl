@@ -1,5 +1,5 @@
 # mechdyn's messages in English: every text a person reads.
-# Each message has its Spanish in es.ftl with the same arguments
+# Each message has its Spanish in ../es/service.ftl with the same arguments
 # (src/i18n/tests.rs fails otherwise).
 
 ## Problem documents: titles

@@ -1,5 +1,5 @@
 # Los mensajes de mechdyn en español: cada texto que lee una persona.
-# Cada mensaje tiene su inglés en en.ftl con los mismos argumentos
+# Cada mensaje tiene su inglés en ../en/service.ftl con los mismos argumentos
 # (src/i18n/tests.rs falla si no).
 
 ## Documentos de problema: títulos
