@@ -16,9 +16,14 @@
 //! The course's own words (seed 000): par, reacción, volante, par motor,
 //! grado de irregularidad, energía cinética, leva, seguidor.
 
+mod stored;
+
 use fluent_bundle::concurrent::FluentBundle;
 use fluent_bundle::{FluentArgs, FluentResource};
+use std::borrow::Cow;
 use std::sync::LazyLock;
+
+pub use stored::MessageDoc;
 
 /// A language the service answers in.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -99,44 +104,66 @@ impl Lang {
 enum Arg {
     Text(String),
     Number(f64),
+    Figures(f64),
     Count(usize),
     Said(Box<Msg>),
+    List(Vec<Msg>),
 }
 
 /// A message of the catalogue with its arguments, rendered in a language
-/// when it is answered.
+/// when it is answered. A result stores the messages its texts were written
+/// from (`stored.rs`), so its id and argument names may be owned.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Msg {
-    id: &'static str,
-    args: Vec<(&'static str, Arg)>,
+    id: Cow<'static, str>,
+    args: Vec<(Cow<'static, str>, Arg)>,
 }
 
 impl Msg {
     pub fn new(id: &'static str) -> Self {
-        Self { id, args: Vec::new() }
+        Self { id: Cow::Borrowed(id), args: Vec::new() }
+    }
+
+    /// The message's id in the catalogue.
+    pub fn id(&self) -> &str {
+        &self.id
     }
 
     /// A text argument (a name, a unit, a value as the client wrote it).
     pub fn arg(mut self, name: &'static str, value: impl std::fmt::Display) -> Self {
-        self.args.push((name, Arg::Text(value.to_string())));
+        self.args.push((Cow::Borrowed(name), Arg::Text(value.to_string())));
         self
     }
 
     /// A number argument, written as the language writes numbers.
     pub fn num(mut self, name: &'static str, value: f64) -> Self {
-        self.args.push((name, Arg::Number(value)));
+        self.args.push((Cow::Borrowed(name), Arg::Number(value)));
+        self
+    }
+
+    /// A measured value to four significant figures (a warning's angle, a
+    /// residual), as the language writes numbers.
+    pub fn fig(mut self, name: &'static str, value: f64) -> Self {
+        self.args.push((Cow::Borrowed(name), Arg::Figures(value)));
         self
     }
 
     /// A count, for the catalogue's plural forms (`1 campo`, `2 campos`).
     pub fn count(mut self, name: &'static str, n: usize) -> Self {
-        self.args.push((name, Arg::Count(n)));
+        self.args.push((Cow::Borrowed(name), Arg::Count(n)));
         self
     }
 
     /// A message within this one, rendered in the same language.
     pub fn with(mut self, name: &'static str, inner: Msg) -> Self {
-        self.args.push((name, Arg::Said(Box::new(inner))));
+        self.args.push((Cow::Borrowed(name), Arg::Said(Box::new(inner))));
+        self
+    }
+
+    /// Messages within this one, rendered in the same language one after
+    /// the other, separated by commas (`0,1 rad, 0,5 rad a 0,7 rad`).
+    pub fn list(mut self, name: &'static str, items: Vec<Msg>) -> Self {
+        self.args.push((Cow::Borrowed(name), Arg::List(items)));
         self
     }
 
@@ -144,16 +171,20 @@ impl Msg {
     /// forbids it) renders as its id.
     pub fn render(&self, lang: Lang) -> String {
         let bundle = &CATALOGUES[lang as usize];
-        let Some(pattern) = bundle.get_message(self.id).and_then(|m| m.value()) else {
+        let Some(pattern) = bundle.get_message(&self.id).and_then(|m| m.value()) else {
             return self.id.to_string();
         };
         let mut args = FluentArgs::new();
         for (name, value) in &self.args {
             match value {
-                Arg::Text(t) => args.set(*name, t.as_str()),
-                Arg::Number(x) => args.set(*name, lang.number(*x)),
-                Arg::Count(n) => args.set(*name, *n),
-                Arg::Said(inner) => args.set(*name, inner.render(lang)),
+                Arg::Text(t) => args.set(name.clone(), t.as_str()),
+                Arg::Number(x) => args.set(name.clone(), lang.number(*x)),
+                Arg::Figures(x) => args.set(name.clone(), lang.figures(*x)),
+                Arg::Count(n) => args.set(name.clone(), *n),
+                Arg::Said(inner) => args.set(name.clone(), inner.render(lang)),
+                Arg::List(items) => {
+                    args.set(name.clone(), items.iter().map(|m| m.render(lang)).collect::<Vec<_>>().join(", "))
+                }
             }
         }
         let mut errors = Vec::new();

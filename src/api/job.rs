@@ -89,7 +89,8 @@ pub struct JobList {
 }
 
 /// Appends the job as JSON, in the order of [`Job`]'s fields: its request,
-/// result and problem are the stored bytes themselves.
+/// result and problem are the stored bytes themselves (a result's texts
+/// written again in the asker's language: [`crate::kind::notes`]).
 pub fn job_chunks(r: &JobRow, out: &mut Chunks) {
     let text = |s: &str| serde_json::to_string(s).unwrap_or_default();
     out.push(format!(
@@ -102,7 +103,10 @@ pub fn job_chunks(r: &JobRow, out: &mut Chunks) {
     out.push(r.request.clone());
     if r.status == Status::Done {
         out.push(&b",\"result\":"[..]);
-        out.push(r.result.clone());
+        match crate::kind::notes::localise_bytes(&r.result) {
+            Some(said) => out.push(said),
+            None => out.push(r.result.clone()),
+        }
     }
     if let Some(problem) = &r.problem {
         out.push(&b",\"problem\":"[..]);

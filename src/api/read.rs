@@ -15,6 +15,9 @@ use tokio::sync::OwnedSemaphorePermit;
 /// The memory of a stored job's answer reserved, then the job loaded.
 pub async fn load(state: &AppState, id: &str, factor: usize) -> Result<(JobRow, OwnedSemaphorePermit), ApiError> {
     let size = state.store.size(id).await?.ok_or_else(|| ApiError::NotFound(id.into()))?;
+    // In another language than the stored English a result's texts are
+    // written again (kind::notes): one more copy.
+    let factor = factor + usize::from(crate::i18n::current() != crate::i18n::Lang::En);
     let reserved = state.admission.memory(size.saturating_mul(factor) + 256).await?;
     let row = state.store.get(id).await?.ok_or_else(|| ApiError::NotFound(id.into()))?;
     Ok((row, reserved))
@@ -72,7 +75,9 @@ pub async fn result_tree(
 ) -> Result<(JobRow, Value, tokio::sync::OwnedSemaphorePermit), ApiError> {
     let (row, reserved) = load(state, id, CSV_MEMORY_FACTOR).await?;
     done(&row)?;
-    let result = serde_json::from_slice(&row.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
+    let mut result =
+        serde_json::from_slice(&row.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
+    crate::kind::notes::localise(&mut result);
     Ok((row, result, reserved))
 }
 

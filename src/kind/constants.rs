@@ -67,7 +67,7 @@ fn valid_name(name: &str) -> Result<(), String> {
 
 /// Warnings for the constants that no text of the request names (a
 /// constant given and never read is most often a typo in a formula).
-pub fn unused(request: &Value) -> Vec<String> {
+pub fn unused(request: &Value) -> Vec<crate::i18n::Msg> {
     let Some(constants) = request.get("constants").and_then(Value::as_object) else { return Vec::new() };
     let mut names = BTreeSet::new();
     let mut texts = Vec::new();
@@ -85,6 +85,6 @@ pub fn unused(request: &Value) -> Vec<String> {
     constants
         .keys()
         .filter(|k| !names.contains(k.as_str()))
-        .map(|k| format!("the constant {k} is not used by any expression of the request"))
+        .map(|k| crate::i18n::Msg::new("warning-constant-unused").arg("name", k))
         .collect()
 }

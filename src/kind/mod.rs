@@ -12,6 +12,7 @@ pub mod constants;
 pub mod function_csv;
 pub mod function_read;
 pub mod limits;
+pub mod notes;
 pub mod plots;
 pub mod problem;
 pub mod quantity;
@@ -97,9 +98,9 @@ pub fn compute<K: Kind>(
     limits: &Limits,
 ) -> Result<K::Result, ApiError> {
     let mut result = K::compute(request, unknown, limits)?;
-    if let Some(warnings) = result.warnings() {
+    if let Some(notes) = result.notes() {
         let sent = serde_json::from_slice::<Value>(raw).unwrap_or_default();
-        warnings.extend(crate::kind::constants::unused(&sent));
+        notes.extend(crate::kind::constants::unused(&sent));
     }
     Ok(result)
 }
@@ -130,8 +131,8 @@ pub trait JobResult: Serialize {
     fn rows(&self) -> Option<Rows> {
         None
     }
-    /// The result's `warnings`, for the kinds that have them.
-    fn warnings(&mut self) -> Option<&mut Vec<String>> {
+    /// The result's `warnings` and `messages`, for the kinds that have them.
+    fn notes(&mut self) -> Option<&mut notes::Notes> {
         None
     }
 }

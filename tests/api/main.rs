@@ -51,6 +51,7 @@ mod slipping;
 mod slow_clients;
 mod small_disk;
 mod spanish;
+mod spanish_results;
 mod stiff;
 mod storage;
 mod student;

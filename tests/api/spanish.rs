@@ -2,7 +2,7 @@
 //! problem documents' title, detail and field messages and the pages in
 //! Spanish (the course's words), with `type`, pointers, field names and
 //! units unchanged; English stays the default. The Spanish texts are the
-//! catalogue's (src/i18n/es.ftl); these tests check that they reach the
+//! catalogue's (src/i18n/es/*.ftl); these tests check that they reach the
 //! asker, where, and that nothing else moved.
 
 use crate::helpers::{Reply, TestApp, request};

@@ -25,6 +25,8 @@ pub struct PartKey {
     pub unit: Option<String>,
     pub decimal: bool,
     pub json: bool,
+    /// A text part (a warning) is said in the asker's language.
+    pub lang: crate::i18n::Lang,
 }
 
 /// A part's answer: its content type and body.
@@ -89,6 +91,7 @@ mod tests {
                 unit: None,
                 decimal: false,
                 json: false,
+                lang: crate::i18n::Lang::En,
             };
             answers.keep(key, ("text/plain; charset=utf-8", Bytes::from(format!("{}", i as f64 * 0.1))));
         }

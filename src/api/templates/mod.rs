@@ -182,6 +182,7 @@ pub async fn result(
         unit: q.get("unit").filter(|u| !u.trim().is_empty()).cloned(),
         decimal: Decimal::of(&q)? == Decimal::Comma,
         json: read::wants(&headers, None, "application/json"),
+        lang: crate::i18n::current(),
     };
     if let Some((mime, body)) = state.answers.get(&key) {
         return Ok(([(header::CONTENT_TYPE, mime)], body).into_response());
@@ -191,7 +192,9 @@ pub async fn result(
     // The row is held (read factor); the parsed tree takes the rest of a part's memory.
     let tree = row.result.len().saturating_mul(read::CSV_MEMORY_FACTOR - read::READ_MEMORY_FACTOR);
     reserved.merge(state.admission.memory(tree).await?);
-    let result = serde_json::from_slice(&row.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
+    let mut result =
+        serde_json::from_slice(&row.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
+    crate::kind::notes::localise(&mut result);
     let (mime, text) = parts::text(&state.kinds, &row, &result, &pointer, &q, &headers)?;
     let body = bytes::Bytes::from(text);
     // Kept only of a stored job (an unstored row has no sequence number):

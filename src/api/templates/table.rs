@@ -215,7 +215,8 @@ pub async fn run(
     for given in rows {
         out.push(match job_for(state, t, &given, want).await {
             Ok((row, _reserved)) => {
-                let result: Value = serde_json::from_slice(&row.result).unwrap_or_default();
+                let mut result: Value = serde_json::from_slice(&row.result).unwrap_or_default();
+                crate::kind::notes::localise(&mut result);
                 let found: Vec<Option<&Value>> = pointers.iter().map(|p| at(&result, &tokens(p))).collect();
                 let error = absent(&result, pointers, &found);
                 // A job answered unstored (seq 0: `NewJob::unstored`) has no id to name.

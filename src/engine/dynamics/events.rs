@@ -65,7 +65,7 @@ pub(super) fn finished(
     step: &Step,
     (a0, a1): (f64, f64),
     events: &mut Vec<Event>,
-    stopped: &mut Option<String>,
+    stopped: &mut Option<super::Stopped>,
 ) -> Option<f64> {
     let close = |t: f64, events: &mut Vec<Event>| {
         events.push(at(model, EventKind::End, t, &step.at(t), None));
@@ -78,7 +78,7 @@ pub(super) fn finished(
             close(t, events)
         }
         End::UntilAngle { angle, max_time } if step.t1 >= max_time => {
-            *stopped = Some(format!("the angle {angle} rad was not reached within {max_time} s"));
+            *stopped = Some(super::Stopped::NotReached { angle, max_time });
             close(max_time, events)
         }
         _ => None,

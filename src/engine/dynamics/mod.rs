@@ -138,7 +138,22 @@ pub struct DynamicsSolution {
     /// estimate of the global error that ignores its growth or decay.
     pub estimated_error: f64,
     /// Why the run stopped early (e.g. the end angle was not reached in time).
-    pub stopped: Option<String>,
+    pub stopped: Option<Stopped>,
+}
+
+/// Why a run stopped before its end.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Stopped {
+    /// The end angle (rad) was not reached within `max_time` (s).
+    NotReached { angle: f64, max_time: f64 },
+    /// The normal force of contact `joint` fell to 0 at `t` (s): the bodies
+    /// would separate, and what follows is not these joints' motion.
+    ContactOpens { joint: String, t: f64 },
+    /// The contacts changed between rolling and slipping `switches` times
+    /// by `t` (s): they chatter.
+    Chatter { switches: usize, t: f64 },
+    /// A guard crossed where the model has none.
+    Unexpected,
 }
 
 /// Why the motion cannot be computed.
@@ -189,7 +204,7 @@ pub(crate) trait Model {
     /// Guard k crossed 0 at (t, y): the model changes its equations there,
     /// or the run stops.
     fn cross(&self, _k: usize, _t: f64, _y: &[f64]) -> Crossing {
-        Crossing::Stop("a guard crossed where the model has none".into())
+        Crossing::Stop(Stopped::Unexpected)
     }
 }
 
@@ -198,7 +213,7 @@ pub(crate) enum Crossing {
     /// Its equations change there: an event of this kind at this joint.
     Switch(EventKind, usize),
     /// The run stops there, for this reason.
-    Stop(String),
+    Stop(Stopped),
 }
 
 /// How to integrate.
@@ -231,7 +246,7 @@ pub(crate) struct Run {
     pub reversal: [f64; 2],
     pub events: Vec<Event>,
     pub t_end: f64,
-    pub stopped: Option<String>,
+    pub stopped: Option<Stopped>,
     pub attempted: usize,
     pub evaluations: usize,
     /// Largest constraint violation removed by a projection.
@@ -344,10 +359,7 @@ fn drive<S: Stepper>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<R
         if let Some(k) = crossing {
             let t = step.t1;
             let reason = match model.cross(k, t, &y) {
-                Crossing::Switch(..) if switches == MAX_SWITCHES => Some(format!(
-                    "the contacts changed between rolling and slipping {MAX_SWITCHES} times by t = {t} s \
-                     (they chatter): the run stops there"
-                )),
+                Crossing::Switch(..) if switches == MAX_SWITCHES => Some(Stopped::Chatter { switches, t }),
                 Crossing::Switch(kind, joint) => {
                     events.push(events::at(model, kind, t, &y, Some(joint)));
                     None

@@ -120,7 +120,6 @@ pub struct Accuracy {
     pub function_evaluations: usize,
     /// Largest relative difference between the check and the request (ε, ω_a).
     pub check_relative_difference: Option<f64>,
-    pub method: String,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -146,7 +145,22 @@ pub struct FlywheelSolution {
     pub disk: Option<Disk>,
     pub samples: Vec<SamplePoint>,
     pub accuracy: Accuracy,
-    pub warnings: Vec<String>,
+    pub warnings: Vec<Condition>,
+}
+
+/// A condition met on the way that the result reports (the kind says it in
+/// words).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Condition {
+    /// The works of a cycle add up to `net` J (≠ 0, within the tolerance):
+    /// the loads are used as given.
+    NetWork { net: f64 },
+    /// The time-integration check failed; the solution stands without it.
+    CheckIncomplete(crate::engine::numeric::ode::OdeError),
+    /// M* ≡ 0 and I* constant: the speed is constant for any inertia.
+    Degenerate,
+    /// The flywheel inertia needed, `inertia` kg·m², is not positive: no disk.
+    NoDisk { inertia: f64 },
 }
 
 #[cfg(test)]

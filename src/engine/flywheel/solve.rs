@@ -4,19 +4,15 @@ use super::check::{Check, simulate};
 use super::cycle::{Cycle, Samples, Term};
 use super::lobes::{Lobes, crossings, lobes};
 use super::wittenbauer::{Exact, exact};
-use super::{Accuracy, Disk, DiskSize, DiskSpec, FlywheelProblem, FlywheelSolution, Load, Pair, SamplePoint};
+use super::{
+    Accuracy, Condition, Disk, DiskSize, DiskSpec, FlywheelProblem, FlywheelSolution, Load, Pair, SamplePoint,
+};
 use crate::engine::EngineError;
 use crate::engine::function::Side;
 use std::f64::consts::PI;
 
 /// Net cycle work tolerated without a balance torque, relative to the largest area.
 pub const NET_WORK_TOLERANCE: f64 = 1e-6;
-
-const METHOD: &str = "M* integrated piecewise between its breakpoints: adaptive Gauss-Kronrod 7/15 for \
-expressions, exact (Simpson on each polynomial piece) for tables; sign changes bracketed on 1024 \
-samples per cycle and located by Brent's method; exact inertia from the extrema of \
-(1±eps/2)^2 I*(phi) - F(phi) at piece ends and stationary points (closed form when I* is constant); \
-check by Dormand-Prince 5(4) time integration of the equation of motion";
 
 /// Solves a flywheel problem; see the module docs of [`super`] for the symbols.
 /// A solution finished past the deadline is not returned: machine functions
@@ -75,10 +71,7 @@ fn phases(
     next("checking by time integration")?;
     let check = run_check(p, &cycle, &ex, omega_at_start, &mut warnings);
     if ex.degenerate {
-        warnings.push(
-            "M* is identically zero and I* constant: the speed is constant for any inertia, so no flywheel is needed"
-                .into(),
-        );
+        warnings.push(Condition::Degenerate);
     }
     let shaft_speed = p.flywheel_ratio.abs() * omega_a;
     let disk = p.disk.and_then(|d| size_disk(d, flywheel_inertia.exact, shaft_speed, &mut warnings));
@@ -111,7 +104,6 @@ fn phases(
             function_evaluations: evaluations + check.map_or(0, |c| c.evaluations),
             check_relative_difference: check
                 .map(|c| ((c.irregularity - eps).abs() / eps).max((c.mean_speed - omega_a).abs() / omega_a)),
-            method: METHOD.into(),
         },
         check,
         disk,
@@ -158,7 +150,7 @@ fn check_steady_state(
     p: &FlywheelProblem,
     item_work: &[f64],
     lobes: &Lobes,
-    warnings: &mut Vec<String>,
+    warnings: &mut Vec<Condition>,
 ) -> Result<(), EngineError> {
     if p.torques.iter().any(|t| matches!(t.load, Load::Balance)) {
         return Ok(());
@@ -169,9 +161,7 @@ fn check_steady_state(
         return Err(EngineError::NotSteady { net_work: net, largest_area: largest });
     }
     if net != 0.0 {
-        warnings.push(format!(
-            "the net work over a cycle is {net:.3e} J, within the tolerance; the loads are used as given"
-        ));
+        warnings.push(Condition::NetWork { net });
     }
     Ok(())
 }
@@ -194,7 +184,13 @@ impl SpeedLaw<'_> {
     }
 }
 
-fn run_check(p: &FlywheelProblem, cycle: &Cycle, ex: &Exact, omega0: f64, warnings: &mut Vec<String>) -> Option<Check> {
+fn run_check(
+    p: &FlywheelProblem,
+    cycle: &Cycle,
+    ex: &Exact,
+    omega0: f64,
+    warnings: &mut Vec<Condition>,
+) -> Option<Check> {
     if !p.check || ex.degenerate {
         return None;
     }
@@ -202,18 +198,16 @@ fn run_check(p: &FlywheelProblem, cycle: &Cycle, ex: &Exact, omega0: f64, warnin
     match simulate(cycle, ex.inertia, omega0, p.mean_speed, rtol) {
         Ok(c) => Some(c),
         Err(e) => {
-            warnings.push(format!("the time-simulation check did not complete: {e}"));
+            warnings.push(Condition::CheckIncomplete(e));
             None
         }
     }
 }
 
 /// Sizes a solid disk holding `inertia` on a shaft turning at `omega` (mean).
-fn size_disk(spec: DiskSpec, inertia: f64, omega: f64, warnings: &mut Vec<String>) -> Option<Disk> {
+fn size_disk(spec: DiskSpec, inertia: f64, omega: f64, warnings: &mut Vec<Condition>) -> Option<Disk> {
     if inertia <= 0.0 {
-        warnings.push(format!(
-            "no disk: the flywheel inertia needed is {inertia:.6e} kg*m^2 (the machine's own inertia already keeps the irregularity within the request)"
-        ));
+        warnings.push(Condition::NoDisk { inertia });
         return None;
     }
     let rho = spec.density;

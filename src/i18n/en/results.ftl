@@ -1,3 +1,76 @@
 # What a result says about itself: its warnings and how its accuracy was
 # estimated, in English (Spanish in ../es/results.ftl, same ids and
 # arguments).
+
+## Any kind
+
+warning-constant-unused = the constant { $name } is not used by any expression of the request
+
+## A time integration that stopped
+
+warning-ode-step-too-small = the step size fell below round-off at t = { $t }
+warning-ode-too-many-steps = more than { $steps } steps
+warning-ode-not-finite = the derivative is not finite at t = { $t }
+
+## Flywheel
+
+accuracy-flywheel = M* integrated piecewise between its breakpoints: adaptive Gauss-Kronrod 7/15 for expressions, exact (Simpson on each polynomial piece) for tables; sign changes bracketed on 1024 samples per cycle and located by Brent's method; exact inertia from the extrema of (1±eps/2)^2 I*(phi) - F(phi) at piece ends and stationary points (closed form when I* is constant); check by Dormand-Prince 5(4) time integration of the equation of motion
+warning-flywheel-net-work = the net work over a cycle is { $net } J, within the tolerance; the loads are used as given
+warning-flywheel-check = the time-simulation check did not complete: { $why }
+warning-flywheel-degenerate = M* is identically zero and I* constant: the speed is constant for any inertia, so no flywheel is needed
+warning-flywheel-no-disk = no disk: the flywheel inertia needed is { $inertia } kg*m^2 (the machine's own inertia already keeps the irregularity within the request)
+
+## A mechanism
+
+warning-dimensions-free = the dimensions leave some points free to move: they stay as near the sketch as the others allow
+warning-span = { $from } to { $to }
+warning-at-time = t = { $t } s
+warning-at-value = { $value } { $unit }
+warning-at-angle = { $value } rad = { $degrees } deg
+warning-contact-off-end = contact { $name }: the contact runs off the end of an open curve at { $at }: the results there are not a contact's (extend the curve)
+warning-contact-jumped = contact { $name }: the contact jumped at { $at } to a point far from where it was followed to (another lobe): the follower leaves the curve it was on and lands elsewhere, a jump the motion there does not show
+warning-contact-overlap = contact { $name }: the curves overlap around the contact at { $at }: the bodies would touch elsewhere there (the follower jumps to another lobe: a flat face on a concave stretch, a roller in a tighter hollow); the results there follow a contact that cannot be
+warning-contact-separates = contact { $name }: the normal force is negative at { $at }: the bodies would separate there (a follower jump, a disk leaving its track) unless something holds them together
+warning-contact-slips = contact { $name }: rolling needs more friction than mu = { $mu } gives at { $at } (see mu_required): it would slip there
+
+## Direct dynamics
+
+accuracy-nothing = { "" }
+accuracy-dynamics = { $integrator } with dense output, events located by Brent's method on it; work { $work }{ $repeated }
+accuracy-work-quadrature = by adaptive quadrature over the angle
+accuracy-work-power = as the integrated power
+accuracy-integrator-stiff = { $name } (the explicit pair chosen first found the model stiff at t = { $t } s: its steps were held by stability, not accuracy; the run was made again from the start)
+accuracy-repeated = ; the run ended at its angle after more steps than a job keeps ({ $mib } MiB of them) and was made again to the end time it found, for the samples (the steps and evaluations count both runs)
+accuracy-dynamics-mechanism = { $integrator } on the index-1 equations of motion [M Φ_qᵀ; Φ_q 0], { $form }; the state projected onto Φ = 0 and Φ_q·q̇ = 0{ $energy } after every step; in LU, rows of Φ_q within 1e-5 of dependence held at singular positions, dependent ones dropped; events by Brent's method on the dense output; work as the integrated power{ $repeated }
+accuracy-form-sparse-held = solved by the range-space method (sparse LDLᵀ of Φ_q M⁻¹ Φ_qᵀ; at singular positions the combinations left by rows whose pivot sines fall from 1e-3 to 3e-4 held, by LU within ~1e-8 of dependence)
+accuracy-form-sparse = solved by the range-space method (sparse LDLᵀ of Φ_q M⁻¹ Φ_qᵀ) away from singular positions and by LU near them (the steps failed where the sparse form held the folds)
+accuracy-form-lu = solved by LU
+accuracy-energy-held = { " " }and, the loads having a potential, onto T + V = E₀ ({ $held } of { $steps } steps)
+warning-dynamics-not-reached = the angle { $angle } was not reached within { $time }
+warning-dynamics-contact-opens = the contact '{ $name }' opens at { $t }: its normal force falls to 0 and the bodies would separate (what follows is not the motion of these joints): the run stops there
+warning-dynamics-unexpected-guard = the run stopped where the model changes nothing (a guard crossed where the model has none)
+warning-dynamics-near-singular = the motion passed close to singular positions (the joint Jacobian nearly lost rank) { $count } time(s), the first at { $first }: the mechanism was kept on its branch; see machine.near_singular
+
+## Kinetostatics
+
+accuracy-kinetostatics = body coordinates; { $assembly }; velocities and accelerations from the constraint Jacobian; multipliers of Phi_q^T lambda = Q - M q'' for reactions and driving actions, checked against virtual power
+accuracy-assembly-closed-form = positions in closed form (a crank and dyads: circle-circle and circle-line intersections, on the branch drawn), confirmed by Newton-Raphson
+accuracy-assembly-newton = Newton-Raphson assembly with second-order continuation
+warning-redundant-constraints = { $count } redundant constraint(s): the reactions of joints { $joints } are not determined by equilibrium and are reported as null
+
+## Cams
+
+accuracy-cam = the laws in closed form and their derivatives to the jerk; the pitch curve and profile from the follower's position in the cam's frame, their curvature from exact derivatives (a flat face's ρ = R_b + s + s″; an oscillating face's as the envelope of its lines); forces from the follower's equation along its axis (about its pivot, oscillating)
+warning-cam-velocity = velocity
+warning-cam-acceleration = acceleration
+warning-cam-fundamental-law = the fundamental law of cam design is broken at { $at }°: the { $what } jumps by { $jump } (per rad^{ $order })
+warning-cam-undercut = undercut: the profile folds on itself near { $at }° (radius of curvature { $rho } m): a larger base circle or a smaller roller
+warning-cam-undercut-flat = undercut: the profile folds on itself near { $at }° (radius of curvature { $rho } m): a larger base circle
+warning-cam-pressure-translating = the pressure angle reaches { $max }° at { $at }° (over { $limit }° for a translating follower): a larger base circle, or an offset
+warning-cam-pressure-oscillating = the pressure angle reaches { $max }° at { $at }° (over { $limit }° for an oscillating follower): a larger base circle, or another pivot
+warning-cam-separation = the follower would leave the cam at { $at } (negative contact force)
+warning-dynamics-chatter = the contacts changed between rolling and slipping { $count } times by { $t } (they chatter): the run stops there
+
+## Mobility
+
+warning-mobility-grubler = Grübler's count gives { $grubler } but the drawing moves with { $dof }: { $count } constraint(s) repeat what the others impose (a special geometry, such as parallel links), so the count does not see them

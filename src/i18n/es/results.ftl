@@ -1,3 +1,85 @@
 # Lo que un resultado dice de sí mismo: sus avisos y cómo se estimó su
 # precisión, en español (inglés en ../en/results.ftl, con los mismos
 # identificadores y argumentos).
+
+## Cualquier tipo
+
+warning-constant-unused = la constante { $name } no la usa ninguna expresión de la petición
+
+## Una integración en el tiempo que se detuvo
+
+warning-ode-step-too-small = el paso de integración bajó del error de redondeo en t = { $t }
+warning-ode-too-many-steps = más de { $steps } pasos
+warning-ode-not-finite = la derivada no es finita en t = { $t }
+
+## Volante
+
+accuracy-flywheel = M* integrado a trozos entre sus puntos de ruptura: Gauss-Kronrod 7/15 adaptativo para las expresiones, exacto (Simpson en cada trozo polinómico) para las tablas; cambios de signo acotados con 1024 muestras por ciclo y localizados por el método de Brent; inercia exacta a partir de los extremos de (1±eps/2)^2 I*(phi) - F(phi) en los extremos de los trozos y en los puntos estacionarios (forma cerrada cuando I* es constante); comprobación por integración en el tiempo (Dormand-Prince 5(4)) de la ecuación del movimiento
+warning-flywheel-net-work = el trabajo neto en un ciclo es { $net } J, dentro de la tolerancia; las cargas se usan tal como se dan
+warning-flywheel-check = la comprobación por simulación en el tiempo no terminó: { $why }
+warning-flywheel-degenerate = M* es idénticamente nulo e I* constante: la velocidad es constante con cualquier inercia, así que no hace falta volante
+warning-flywheel-no-disk = sin disco: la inercia de volante necesaria es { $inertia } kg*m^2 (la inercia propia de la máquina ya mantiene el grado de irregularidad dentro de lo pedido)
+
+## Un mecanismo
+
+warning-dimensions-free = las dimensiones dejan libres algunos puntos: quedan tan cerca del croquis como permiten los demás
+warning-span = { $from } a { $to }
+warning-at-time = t = { $t } s
+warning-at-value = { $value } { $unit }
+warning-at-angle = { $value } rad = { $degrees } grados
+warning-contact-off-end = contacto { $name }: el contacto sale por el extremo de una curva abierta en { $at }: ahí los resultados no son los de un contacto (prolongue la curva)
+warning-contact-jumped = contacto { $name }: el contacto saltó en { $at } a un punto lejos de donde se seguía (otro lóbulo): el seguidor deja la curva en la que estaba y cae en otro sitio, un salto que el movimiento ahí no muestra
+warning-contact-overlap = contacto { $name }: las curvas se solapan alrededor del contacto en { $at }: ahí los sólidos se tocarían en otro punto (el seguidor salta a otro lóbulo: una cara plana en un tramo cóncavo, un rodillo en un hueco más cerrado); los resultados ahí siguen un contacto imposible
+warning-contact-separates = contacto { $name }: la fuerza normal es negativa en { $at }: ahí los sólidos se separarían (un salto del seguidor, un disco que deja su pista) salvo que algo los mantenga juntos
+warning-contact-slips = contacto { $name }: la rodadura necesita más rozamiento del que da mu = { $mu } en { $at } (vea mu_required): ahí deslizaría
+
+## Dinámica directa
+
+accuracy-nothing = { "" }
+accuracy-dynamics = { $integrator } con salida densa, eventos localizados sobre ella por el método de Brent; trabajo { $work }{ $repeated }
+accuracy-work-quadrature = por cuadratura adaptativa en el ángulo
+accuracy-work-power = como integral de la potencia
+accuracy-integrator-stiff = { $name } (el par explícito elegido primero encontró el modelo rígido (stiff) en t = { $t } s: sus pasos los limitaba la estabilidad, no la precisión; se repitió la integración desde el principio)
+accuracy-repeated = ; la integración llegó a su ángulo tras más pasos de los que guarda un trabajo ({ $mib } MiB de ellos) y se repitió hasta el tiempo final hallado, para las muestras (los pasos y evaluaciones cuentan ambas)
+accuracy-dynamics-mechanism = { $integrator } sobre las ecuaciones del movimiento de índice 1 [M Φ_qᵀ; Φ_q 0], { $form }; el estado proyectado sobre Φ = 0 y Φ_q·q̇ = 0{ $energy } tras cada paso; en LU, las filas de Φ_q a menos de 1e-5 de la dependencia se mantienen en las posiciones singulares y las dependientes se descartan; eventos por el método de Brent sobre la salida densa; trabajo como integral de la potencia{ $repeated }
+accuracy-form-sparse-held = resueltas por el método del espacio imagen (LDLᵀ dispersa de Φ_q M⁻¹ Φ_qᵀ; en las posiciones singulares se mantienen las combinaciones que dejan las filas cuyos senos de pivote caen de 1e-3 a 3e-4, por LU a ~1e-8 de la dependencia)
+accuracy-form-sparse = resueltas por el método del espacio imagen (LDLᵀ dispersa de Φ_q M⁻¹ Φ_qᵀ) lejos de las posiciones singulares y por LU cerca de ellas (los pasos fallaron donde la forma dispersa mantenía los pliegues)
+accuracy-form-lu = resueltas por LU
+accuracy-energy-held = { " " }y, al tener potencial las cargas, sobre T + V = E₀ ({ $held } de { $steps } pasos)
+warning-dynamics-not-reached = no se alcanzó el ángulo { $angle } en { $time }
+warning-dynamics-contact-opens = el contacto '{ $name }' se abre en { $t }: su fuerza normal cae a 0 y los sólidos se separarían (lo que sigue no es el movimiento de estos pares): la integración se detiene ahí
+warning-dynamics-unexpected-guard = la integración se detuvo donde el modelo no cambia nada (una condición cruzó donde el modelo no tiene ninguna)
+warning-dynamics-near-singular = el movimiento pasó cerca de posiciones singulares (el jacobiano de los pares casi perdió rango) { $count ->
+        [one] una vez
+       *[other] { $count } veces
+    }, la primera en { $first }: el mecanismo se mantuvo en su rama; vea machine.near_singular
+
+## Cinetostática
+
+accuracy-kinetostatics = coordenadas de los sólidos; { $assembly }; velocidades y aceleraciones a partir del jacobiano de las restricciones; multiplicadores de Phi_q^T lambda = Q - M q'' para las reacciones y las acciones motoras, comprobados con la potencia virtual
+accuracy-assembly-closed-form = posiciones en forma cerrada (una manivela y díadas: intersecciones circunferencia-circunferencia y circunferencia-recta, en la rama dibujada), confirmadas por Newton-Raphson
+accuracy-assembly-newton = montaje por Newton-Raphson con continuación de segundo orden
+warning-redundant-constraints = { $count ->
+        [one] una restricción redundante
+       *[other] { $count } restricciones redundantes
+    }: las reacciones de los pares { $joints } no las determina el equilibrio y se dan como nulas
+
+## Levas
+
+accuracy-cam = las leyes en forma cerrada y sus derivadas hasta el tirón; la curva primitiva y el perfil a partir de la posición del seguidor en la referencia de la leva, su curvatura con derivadas exactas (la de una cara plana ρ = R_b + s + s″; la de una cara oscilante como envolvente de sus rectas); fuerzas de la ecuación del seguidor según su eje (respecto a su pivote, si oscila)
+warning-cam-velocity = velocidad
+warning-cam-acceleration = aceleración
+warning-cam-fundamental-law = la ley fundamental del diseño de levas no se cumple en { $at }°: la { $what } salta { $jump } (por rad^{ $order })
+warning-cam-undercut = socavado: el perfil se pliega sobre sí mismo cerca de { $at }° (radio de curvatura { $rho } m): un círculo base mayor o un rodillo menor
+warning-cam-undercut-flat = socavado: el perfil se pliega sobre sí mismo cerca de { $at }° (radio de curvatura { $rho } m): un círculo base mayor
+warning-cam-pressure-translating = el ángulo de presión llega a { $max }° en { $at }° (más de { $limit }° para un seguidor de traslación): un círculo base mayor, o una excentricidad
+warning-cam-pressure-oscillating = el ángulo de presión llega a { $max }° en { $at }° (más de { $limit }° para un seguidor oscilante): un círculo base mayor, u otro pivote
+warning-cam-separation = el seguidor se separaría de la leva en { $at } (fuerza de contacto negativa)
+warning-dynamics-chatter = los contactos pasaron de rodar a deslizar y al revés { $count } veces hasta { $t } (vibran): la integración se detiene ahí
+
+## Movilidad
+
+warning-mobility-grubler = el criterio de Grübler da { $grubler } pero el dibujo se mueve con { $dof }: { $count ->
+        [one] una restricción repite
+       *[other] { $count } restricciones repiten
+    } lo que imponen las demás (una geometría especial, como barras paralelas), y el recuento no las ve

@@ -3,6 +3,8 @@
 use super::request::{Motion, Problem};
 use crate::engine::cam::design::{Cam, Follower, Guide, Sample};
 use crate::engine::function::Side;
+use crate::i18n::Msg;
+use crate::kind::notes::Notes;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::TAU;
 use utoipa::ToSchema;
@@ -100,12 +102,13 @@ pub struct CamResult {
     pub segments: Vec<SegmentPeaks>,
     /// How the numbers were made.
     pub method: String,
-    pub warnings: Vec<String>,
+    #[serde(flatten)]
+    pub notes: Notes,
 }
 
 impl crate::kind::JobResult for CamResult {
-    fn warnings(&mut self) -> Option<&mut Vec<String>> {
-        Some(&mut self.warnings)
+    fn notes(&mut self) -> Option<&mut Notes> {
+        Some(&mut self.notes)
     }
 }
 
@@ -152,36 +155,27 @@ pub fn result(p: &Problem, cam: &Cam, turn: &[Sample]) -> CamResult {
             }
         })
         .collect();
-    let mut warnings = Vec::new();
-    let summary = summary(p, cam, turn, &forces, &mut warnings);
+    let mut notes = Notes::default();
+    let summary = summary(p, cam, turn, &forces, &mut notes);
     let segments = match &p.motion {
         Motion::Program(program, names) => {
             // A jump of the jerk keeps the acceleration continuous: only
             // velocity and acceleration jumps break the fundamental law.
             for b in program.breaks().into_iter().filter(|b| b.derivative <= 2) {
-                let what = ["", "velocity", "acceleration"][b.derivative];
-                warnings.push(format!(
-                    "the fundamental law of cam design is broken at {:.4}°: the {what} jumps by {:.6e} (per rad^{})",
-                    b.theta.to_degrees(),
-                    b.jump,
-                    b.derivative
-                ));
+                let what = ["", "warning-cam-velocity", "warning-cam-acceleration"][b.derivative];
+                notes.warn(
+                    Msg::new("warning-cam-fundamental-law")
+                        .fig("at", b.theta.to_degrees())
+                        .with("what", Msg::new(what))
+                        .fig("jump", b.jump)
+                        .count("order", b.derivative),
+                );
             }
             program.segments().iter().zip(names).map(|(s, name)| peaks(s, name, w)).collect()
         }
         Motion::Function(_) => Vec::new(),
     };
-    CamResult {
-        samples,
-        summary,
-        segments,
-        method: "the laws in closed form and their derivatives to the jerk; the pitch curve and profile from the \
-                 follower's position in the cam's frame, their curvature from exact derivatives (a flat face's \
-                 ρ = R_b + s + s″; an oscillating face's as the envelope of its lines); forces from the \
-                 follower's equation along its axis (about its pivot, oscillating)"
-            .into(),
-        warnings,
-    }
+    CamResult { samples, summary, segments, method: notes.say("/method", Msg::new("accuracy-cam")), notes }
 }
 
 fn peaks(s: &crate::engine::cam::Segment, name: &str, w: f64) -> SegmentPeaks {
@@ -203,13 +197,7 @@ fn peaks(s: &crate::engine::cam::Segment, name: &str, w: f64) -> SegmentPeaks {
     }
 }
 
-fn summary(
-    p: &Problem,
-    cam: &Cam,
-    turn: &[Sample],
-    forces: &[Option<[f64; 3]>],
-    warnings: &mut Vec<String>,
-) -> CamSummary {
+fn summary(p: &Problem, cam: &Cam, turn: &[Sample], forces: &[Option<[f64; 3]>], notes: &mut Notes) -> CamSummary {
     let at = |x: &Sample, v: f64| AtAngle { value: v, theta: x.theta };
     let max_angle = turn
         .iter()
@@ -221,24 +209,17 @@ fn summary(
         .fold(AtAngle { value: f64::INFINITY, theta: 0.0 }, |a, b| if b.value < a.value { b } else { a });
     let undercut = undercut(cam.follower, turn);
     if undercut {
-        warnings.push(format!(
-            "undercut: the profile folds on itself near {:.2}° (radius of curvature {:.6e} m): a larger base circle{}",
-            min_rho.theta.to_degrees(),
-            min_rho.value,
-            if cam.follower == Follower::Flat { "" } else { " or a smaller roller" }
-        ));
+        let id = if cam.follower == Follower::Flat { "warning-cam-undercut-flat" } else { "warning-cam-undercut" };
+        notes.warn(Msg::new(id).fig("at", min_rho.theta.to_degrees()).fig("rho", min_rho.value));
     }
     let oscillating = matches!(cam.guide, Guide::Oscillating { .. });
-    let (limit, motion) =
-        if oscillating { (PRESSURE_LIMIT[1], "oscillating") } else { (PRESSURE_LIMIT[0], "translating") };
+    let (limit, id) = match oscillating {
+        true => (PRESSURE_LIMIT[1], "warning-cam-pressure-oscillating"),
+        false => (PRESSURE_LIMIT[0], "warning-cam-pressure-translating"),
+    };
     if max_angle.value > limit.to_radians() {
-        warnings.push(format!(
-            "the pressure angle reaches {:.2}° at {:.2}° (over {limit}° for {} {motion} follower): a larger base circle{}",
-            max_angle.value.to_degrees(),
-            max_angle.theta.to_degrees(),
-            if oscillating { "an" } else { "a" },
-            if oscillating { ", or another pivot" } else { ", or an offset" }
-        ));
+        let at = |x: f64| (x.to_degrees() * 100.0).round() / 100.0;
+        notes.warn(Msg::new(id).num("max", at(max_angle.value)).num("at", at(max_angle.theta)).num("limit", limit));
     }
     let face = turn.iter().map(|x| x.face_offset);
     let face_width = (cam.follower == Follower::Flat)
@@ -248,9 +229,10 @@ fn summary(
         None => (None, None, None),
     };
     if let Some(ranges) = separation.as_ref().filter(|r| !r.is_empty()) {
-        let list: Vec<String> =
-            ranges.iter().map(|[a, b]| format!("{:.1}° to {:.1}°", a.to_degrees(), b.to_degrees())).collect();
-        warnings.push(format!("the follower would leave the cam at {} (negative contact force)", list.join(", ")));
+        let deg =
+            |x: f64| Msg::new("warning-at-value").num("value", (x.to_degrees() * 10.0).round() / 10.0).arg("unit", "°");
+        let span = |[a, b]: &[f64; 2]| Msg::new("warning-span").with("from", deg(*a)).with("to", deg(*b));
+        notes.warn(Msg::new("warning-cam-separation").list("at", ranges.iter().map(span).collect()));
     }
     CamSummary {
         base_radius: cam.base,

@@ -9,6 +9,7 @@ use crate::engine::Deadline;
 use crate::engine::dynamics::mechanism::{self, MechanismProblem};
 use crate::engine::dynamics::{DynamicsError, End, Integrator, KEPT_BYTES, ReducedProblem, solve};
 use crate::engine::function::Function;
+use crate::i18n::Msg;
 use crate::kind::constants::{self, Constants};
 use crate::kind::limits::Limits;
 use crate::kind::plots::Plots;
@@ -264,47 +265,17 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
             result.accuracy.constraint_drift = Some(s.drift);
             result.accuracy.energy_conserved = Some(s.energy_conserved);
             result.accuracy.energy_held_steps = Some(s.energy_held_steps);
-            let form = match (s.sparse, s.sparse_hold) {
-                (true, true) => {
-                    "solved by the range-space method (sparse LDLᵀ of Φ_q M⁻¹ Φ_qᵀ; at singular positions the \
-                     combinations left by rows whose pivot sines fall from 1e-3 to 3e-4 held, by LU within ~1e-8 \
-                     of dependence)"
-                }
-                (true, false) => {
-                    "solved by the range-space method (sparse LDLᵀ of Φ_q M⁻¹ Φ_qᵀ) away from singular positions \
-                     and by LU near them (the steps failed where the sparse form held the folds)"
-                }
-                _ => "solved by LU",
-            };
-            let energy = match s.energy_held_steps {
-                0 => String::new(),
-                held => format!(
-                    " and, the loads having a potential, onto T + V = E₀ ({held} of {} steps)",
-                    s.solution.steps
-                ),
-            };
-            result.accuracy.method = format!(
-                "{} on the index-1 equations of motion [M Φ_qᵀ; Φ_q 0], {form}; \
-                 the state projected onto Φ = 0 and Φ_q·q̇ = 0{energy} after every step; \
-                 in LU, rows of Φ_q within 1e-5 of dependence held at singular positions, \
-                 dependent ones dropped; events by Brent's method on the dense output; \
-                 work as the integrated power{}",
-                result::integrator_text(&s.solution),
-                result::repeated_text(&s.solution)
-            );
+            result.accuracy.method = result.notes.say("/accuracy/method", result::machine_method(&s));
             if let Some(t) = s.near_singular.first() {
-                result.warnings.push(format!(
-                    "the motion passed close to singular positions (the joint Jacobian nearly lost rank) {} time(s), \
-                     the first at t ≈ {t:.6} s: the mechanism was kept on its branch; see machine.near_singular",
-                    s.near_singular.len()
-                ));
+                let near = Msg::new("warning-dynamics-near-singular").count("count", s.near_singular.len());
+                result.notes.warn(near.with("first", result::at_time(*t)));
             }
             if let Some(a) = &report.assembled {
-                result.warnings.extend(a.warnings.iter().cloned());
+                result.notes.extend(a.warnings.iter().cloned());
             }
             let machine = MachineDynamics::new(&s, &p.mechanism, report);
             let contacts = machine.samples.iter().filter_map(|x| Some((x.t, x.contacts.as_deref()?)));
-            result.warnings.extend(contact_warnings(contacts, &p.mechanism, |t| format!("t = {t:.6} s"), true));
+            result.notes.extend(contact_warnings(contacts, &p.mechanism, result::at_time, true));
             result.machine = Some(machine);
             Ok(result)
         }
@@ -346,14 +317,16 @@ struct Common {
 }
 
 impl DynamicsRequest {
-    /// The result with its "not reached" warning (the only one a solution
+    /// The result with its "not reached" warning (the first a solution
     /// carries) in the request's words: `until_angle` and `max_duration` as
     /// given ("720 deg", not 12.566370614359172 rad).
     fn in_its_words(&self, mut result: DynamicsResult) -> DynamicsResult {
-        if let (Some(warning), Some(angle)) = (result.warnings.first_mut(), &self.until_angle) {
+        let not_reached = result.notes.messages.get("/warnings/0").is_some_and(|m| m.id() == result::NOT_REACHED);
+        if let (true, Some(angle)) = (not_reached, &self.until_angle) {
             let time =
                 self.max_duration.as_ref().map_or_else(|| format!("{DEFAULT_MAX_DURATION} s"), |q| q.as_given("s"));
-            *warning = format!("the angle {} was not reached within {time}", angle.as_given("rad"));
+            let said = Msg::new(result::NOT_REACHED).arg("angle", angle.as_given("rad")).arg("time", time);
+            result.notes.reword(0, said);
         }
         result
     }

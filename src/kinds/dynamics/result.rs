@@ -1,7 +1,10 @@
 //! The `result` of a dynamics job, as stored and served, and its CSV table.
 
 use super::{IntegratorChoice, MachineDynamics};
-use crate::engine::dynamics::{DynamicsSolution, EventKind, KEPT_BYTES};
+use crate::engine::dynamics::mechanism::MechanismSolution;
+use crate::engine::dynamics::{DynamicsSolution, EventKind, KEPT_BYTES, Stopped};
+use crate::i18n::Msg;
+use crate::kind::notes::Notes;
 use crate::kind::{list, names};
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
@@ -98,12 +101,13 @@ pub struct DynamicsResult {
     /// Mechanism form: every input, the reactions and the constraint residual at the samples.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub machine: Option<MachineDynamics>,
-    pub warnings: Vec<String>,
+    #[serde(flatten)]
+    pub notes: Notes,
 }
 
 impl crate::kind::JobResult for DynamicsResult {
-    fn warnings(&mut self) -> Option<&mut Vec<String>> {
-        Some(&mut self.warnings)
+    fn notes(&mut self) -> Option<&mut Notes> {
+        Some(&mut self.notes)
     }
     fn rows(&self) -> Option<crate::kind::Rows> {
         let (field, count) = ("/samples".into(), self.samples.len());
@@ -132,6 +136,8 @@ impl From<DynamicsSolution> for DynamicsResult {
                 t_energy_form: s.energy_times.get(k).copied().flatten(),
             })
             .collect();
+        let mut notes = Notes::default();
+        notes.extend(s.stopped.as_ref().map(stopped));
         Self {
             samples: s
                 .samples
@@ -163,45 +169,79 @@ impl From<DynamicsSolution> for DynamicsResult {
                 stiff_at: s.stiff_at,
                 energy_conserved: None,
                 energy_held_steps: None,
-                method: format!(
-                    "{} with dense output, events located by Brent's method on it; work {}{}",
-                    integrator_text(&s),
-                    if s.work_by_quadrature {
-                        "by adaptive quadrature over the angle"
-                    } else {
-                        "as the integrated power"
-                    },
-                    repeated_text(&s)
-                ),
+                method: notes.say("/accuracy/method", method(&s)),
             },
             machine: None,
-            warnings: s.stopped.into_iter().collect(),
+            notes,
         }
     }
 }
 
+/// The id of the warning that the end angle was not reached.
+pub(super) const NOT_REACHED: &str = "warning-dynamics-not-reached";
+
+/// Why the run stopped before its end, in words.
+fn stopped(s: &Stopped) -> Msg {
+    match s {
+        Stopped::NotReached { angle, max_time } => Msg::new(NOT_REACHED)
+            .with("angle", Msg::new("warning-at-value").num("value", *angle).arg("unit", "rad"))
+            .with("time", Msg::new("warning-at-value").num("value", *max_time).arg("unit", "s")),
+        Stopped::ContactOpens { joint, t } => {
+            Msg::new("warning-dynamics-contact-opens").arg("name", joint).with("t", at_time(*t))
+        }
+        Stopped::Chatter { switches, t } => {
+            Msg::new("warning-dynamics-chatter").count("count", *switches).with("t", at_time(*t))
+        }
+        Stopped::Unexpected => Msg::new("warning-dynamics-unexpected-guard"),
+    }
+}
+
+/// An instant of the motion, to the microsecond.
+pub(super) fn at_time(t: f64) -> Msg {
+    Msg::new("warning-at-time").num("t", (t * 1e6).round() / 1e6)
+}
+
+/// How a reduced machine's motion was integrated.
+fn method(s: &DynamicsSolution) -> Msg {
+    let work = if s.work_by_quadrature { "accuracy-work-quadrature" } else { "accuracy-work-power" };
+    Msg::new("accuracy-dynamics")
+        .with("integrator", integrator(s))
+        .with("work", Msg::new(work))
+        .with("repeated", repeated(s))
+}
+
+/// How a mechanism's motion was integrated.
+pub(super) fn machine_method(s: &MechanismSolution) -> Msg {
+    let form = match (s.sparse, s.sparse_hold) {
+        (true, true) => "accuracy-form-sparse-held",
+        (true, false) => "accuracy-form-sparse",
+        _ => "accuracy-form-lu",
+    };
+    let energy = match s.energy_held_steps {
+        0 => Msg::new("accuracy-nothing"),
+        held => Msg::new("accuracy-energy-held").count("held", held).count("steps", s.solution.steps),
+    };
+    Msg::new("accuracy-dynamics-mechanism")
+        .with("integrator", integrator(&s.solution))
+        .with("form", Msg::new(form))
+        .with("energy", energy)
+        .with("repeated", repeated(&s.solution))
+}
+
 /// The integrator's name, and why it was chosen when an explicit pair handed over.
-pub(super) fn integrator_text(s: &DynamicsSolution) -> String {
+fn integrator(s: &DynamicsSolution) -> Msg {
     match s.stiff_at {
-        Some(t) => format!(
-            "{} (the explicit pair chosen first found the model stiff at t = {t:.3e} s: its steps were held \
-             by stability, not accuracy; the run was made again from the start)",
-            s.integrator.name()
-        ),
-        None => s.integrator.name().to_string(),
+        Some(t) => Msg::new("accuracy-integrator-stiff").arg("name", s.integrator.name()).fig("t", t),
+        None => Msg::new("text-as-is").arg("why", s.integrator.name()),
     }
 }
 
 /// The end of the method's text where the run was made twice for its samples.
-pub(super) fn repeated_text(s: &DynamicsSolution) -> String {
-    if !s.repeated {
-        return String::new();
+fn repeated(s: &DynamicsSolution) -> Msg {
+    match s.repeated {
+        true => Msg::new("accuracy-repeated").count("mib", KEPT_BYTES >> 20),
+        false => Msg::new("accuracy-nothing"),
     }
-    format!(
-        "; the run ended at its angle after more steps than a job keeps ({} MiB of them) and was made again \
-         to the end time it found, for the samples (the steps and evaluations count both runs)",
-        KEPT_BYTES >> 20
-    )
 }
 
 /// CSV of a stored dynamics result: one row per sample; for a mechanism

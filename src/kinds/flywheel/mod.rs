@@ -103,7 +103,7 @@ fn compute(request: &FlywheelRequest, unknown: Vec<FieldError>, limits: &Limits)
         && let Some((dto, warnings)) = m.mechanism.assembled(&mut Errors::new(limits), "/machine/mechanism")
         && let Some(a) = Assembled::of(&m.mechanism, &dto, warnings)
     {
-        result.warnings.extend(a.warnings);
+        result.notes.extend(a.warnings);
         result.assembled_points = Some(a.points);
     }
     Ok(result)

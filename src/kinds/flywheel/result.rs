@@ -1,6 +1,8 @@
 //! The `result` of a flywheel job, as stored and served.
 
 use crate::engine::flywheel as fw;
+use crate::i18n::Msg;
+use crate::kind::notes::Notes;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use utoipa::ToSchema;
@@ -115,7 +117,8 @@ pub struct FlywheelResult {
     pub check: Option<CheckDto>,
     pub disk: Option<DiskOut>,
     pub accuracy: AccuracyDto,
-    pub warnings: Vec<String>,
+    #[serde(flatten)]
+    pub notes: Notes,
     pub samples: Vec<SampleDto>,
     /// Where a machine's points went, for a mechanism given by its `dimensions` (m).
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -124,8 +127,8 @@ pub struct FlywheelResult {
 }
 
 impl crate::kind::JobResult for FlywheelResult {
-    fn warnings(&mut self) -> Option<&mut Vec<String>> {
-        Some(&mut self.warnings)
+    fn notes(&mut self) -> Option<&mut Notes> {
+        Some(&mut self.notes)
     }
     fn rows(&self) -> Option<crate::kind::Rows> {
         let (field, count) = ("/samples".into(), self.samples.len());
@@ -135,6 +138,8 @@ impl crate::kind::JobResult for FlywheelResult {
 
 impl FlywheelResult {
     pub fn new(s: fw::FlywheelSolution, names: impl Iterator<Item = String>) -> Self {
+        let mut notes = Notes::default();
+        notes.extend(s.warnings.iter().map(condition));
         Self {
             balance_torque: s.balance_torque,
             mean_power: s.mean_power,
@@ -175,9 +180,9 @@ impl FlywheelResult {
                 quadrature_error: s.accuracy.quadrature_error,
                 function_evaluations: s.accuracy.function_evaluations,
                 check_relative_difference: s.accuracy.check_relative_difference,
-                method: s.accuracy.method,
+                method: notes.say("/accuracy/method", Msg::new("accuracy-flywheel")),
             },
-            warnings: s.warnings,
+            notes,
             assembled_points: None,
             samples: s
                 .samples
@@ -191,6 +196,26 @@ impl FlywheelResult {
                 })
                 .collect(),
         }
+    }
+}
+
+/// A condition of the solution in words.
+fn condition(c: &fw::Condition) -> Msg {
+    match c {
+        fw::Condition::NetWork { net } => Msg::new("warning-flywheel-net-work").fig("net", *net),
+        fw::Condition::CheckIncomplete(e) => Msg::new("warning-flywheel-check").with("why", ode_msg(e)),
+        fw::Condition::Degenerate => Msg::new("warning-flywheel-degenerate"),
+        fw::Condition::NoDisk { inertia } => Msg::new("warning-flywheel-no-disk").fig("inertia", *inertia),
+    }
+}
+
+/// Why a time integration stopped, in words.
+pub fn ode_msg(e: &crate::engine::numeric::ode::OdeError) -> Msg {
+    use crate::engine::numeric::ode::OdeError;
+    match *e {
+        OdeError::StepTooSmall { t } => Msg::new("warning-ode-step-too-small").num("t", t),
+        OdeError::TooManySteps { steps } => Msg::new("warning-ode-too-many-steps").count("steps", steps),
+        OdeError::NotFinite { t } => Msg::new("warning-ode-not-finite").num("t", t),
     }
 }
 

@@ -43,6 +43,16 @@ impl Written {
         if self.unit.0 == "rad" { format!("{shown} = {} deg", six_digits(si.to_degrees())) } else { shown }
     }
 
+    /// [`Self::value`] as a message, for a warning in the asker's language.
+    pub fn said(&self, si: f64) -> crate::i18n::Msg {
+        let six = |v: f64| six_digits(v).parse().unwrap_or(v);
+        let value = six(si / self.unit.1);
+        match self.unit.0 == "rad" {
+            true => crate::i18n::Msg::new("warning-at-angle").num("value", value).num("degrees", six(si.to_degrees())),
+            false => crate::i18n::Msg::new("warning-at-value").num("value", value).arg("unit", &self.unit.0),
+        }
+    }
+
     /// An engine error as the answer, positions quoted as written.
     pub fn explain(&self, e: EngineError) -> ApiError {
         let (step, input, head, tail) = match &e {

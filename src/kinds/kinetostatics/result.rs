@@ -3,6 +3,8 @@
 use super::request::Problem;
 use crate::engine::kinetostatics::{Motion, Reaction, Step, Totals, energy};
 use crate::engine::model::{Coordinate, Driver};
+use crate::i18n::Msg;
+use crate::kind::notes::Notes;
 use crate::kind::{cell, list, names};
 use crate::kinds::mechanism::track::{PointState, states};
 use crate::kinds::mechanism::{ContactDto, EnergyDto, Name, ReactionDto, annotate, contact_warnings};
@@ -179,7 +181,8 @@ pub struct KinetostaticsResult {
     pub steps: Vec<StepDto>,
     pub summary: SummaryDto,
     pub accuracy: KinetostaticsAccuracy,
-    pub warnings: Vec<String>,
+    #[serde(flatten)]
+    pub notes: Notes,
     /// Where the points went, for a mechanism given by its `dimensions` (m).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schema(value_type = Option<BTreeMap<String, Vec<f64>>>)]
@@ -187,8 +190,8 @@ pub struct KinetostaticsResult {
 }
 
 impl crate::kind::JobResult for KinetostaticsResult {
-    fn warnings(&mut self) -> Option<&mut Vec<String>> {
-        Some(&mut self.warnings)
+    fn notes(&mut self) -> Option<&mut Notes> {
+        Some(&mut self.notes)
     }
     fn rows(&self) -> Option<crate::kind::Rows> {
         let field = if self.inputs.len() > 1 { "/input/0/steps" } else { "/input/steps" };
@@ -198,37 +201,31 @@ impl crate::kind::JobResult for KinetostaticsResult {
 }
 
 /// How the positions were found, then the rest.
-fn method(closed_form: bool) -> String {
-    let assembly = if closed_form {
-        "positions in closed form (a crank and dyads: circle-circle and circle-line intersections, on the branch \
-         drawn), confirmed by Newton-Raphson"
-    } else {
-        "Newton-Raphson assembly with second-order continuation"
-    };
-    format!(
-        "body coordinates; {assembly}; velocities and accelerations from the constraint Jacobian; multipliers of \
-         Phi_q^T lambda = Q - M q'' for reactions and driving actions, checked against virtual power"
-    )
+fn method(closed_form: bool) -> Msg {
+    let assembly = if closed_form { "accuracy-assembly-closed-form" } else { "accuracy-assembly-newton" };
+    Msg::new("accuracy-kinetostatics").with("assembly", Msg::new(assembly))
 }
 
 impl KinetostaticsResult {
     /// The result of a sweep's `steps` (each from [`StepDto::new`]) and its totals.
     pub fn new(s: Totals, steps: Vec<StepDto>, p: &Problem, joint_names: &[String]) -> Self {
         let mob = &s.mobility;
-        let mut warnings: Vec<String> = p.assembled.iter().flat_map(|a| a.warnings.iter().cloned()).collect();
+        let mut notes = Notes::default();
+        notes.extend(p.assembled.iter().flat_map(|a| a.warnings.iter().cloned()));
         if mob.redundant_constraints > 0 {
-            warnings.push(format!(
-                "{} redundant constraint(s): the reactions of joints {:?} are not determined by equilibrium and are reported as null",
-                mob.redundant_constraints,
-                mob.indeterminate_joints.iter().map(|&j| &joint_names[j]).collect::<Vec<_>>()
-            ));
+            let joints: Vec<&str> = mob.indeterminate_joints.iter().map(|&j| joint_names[j].as_str()).collect();
+            notes.warn(
+                Msg::new("warning-redundant-constraints")
+                    .count("count", mob.redundant_constraints)
+                    .arg("joints", joints.join(", ")),
+            );
         }
         let first = |s: &StepDto| match &s.input {
             Scalars::One(v) => *v,
             Scalars::Many(v) => v[0],
         };
         let contacts = steps.iter().filter_map(|s| Some((first(s), s.contacts.as_deref()?)));
-        warnings.extend(contact_warnings(contacts, &p.mechanism, |v| p.written.value(v), false));
+        notes.extend(contact_warnings(contacts, &p.mechanism, |v| p.written.said(v), false));
         let sum = &s.summary;
         let driving = |v: &Vec<f64>| p.outputs.driving.then(|| Scalars::of(v));
         let inputs = (p.mechanism.drivers.iter().zip(&p.input_points))
@@ -265,9 +262,9 @@ impl KinetostaticsResult {
                 max_constraint_residual: s.max_constraint_residual,
                 max_newton_iterations: s.max_iterations,
                 max_friction_iterations: s.max_friction_iterations,
-                method: method(s.closed_form),
+                method: notes.say("/accuracy/method", method(s.closed_form)),
             },
-            warnings,
+            notes,
             assembled_points: p.assembled.as_ref().map(|a| a.points.clone()),
         }
     }

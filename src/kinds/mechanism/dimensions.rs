@@ -36,13 +36,13 @@ pub struct DimensionDto {
 #[derive(Clone, Debug)]
 pub struct Assembled {
     pub points: BTreeMap<String, [f64; 2]>,
-    pub warnings: Vec<String>,
+    pub warnings: Vec<crate::i18n::Msg>,
 }
 
 impl Assembled {
     /// For a result: what [`MechanismDto::assembled`] made of `given`
     /// (`dto`, its `warnings`); None for a mechanism without dimensions.
-    pub fn of(given: &MechanismDto, dto: &MechanismDto, warnings: Vec<String>) -> Option<Self> {
+    pub fn of(given: &MechanismDto, dto: &MechanismDto, warnings: Vec<crate::i18n::Msg>) -> Option<Self> {
         given.dimensions.is_some().then(|| Self { points: dto.points.clone().unwrap_or_default(), warnings })
     }
 }
@@ -52,7 +52,7 @@ impl MechanismDto {
     /// with its points assembled from them and the warnings that says
     /// (a point left free to move); None when the dimensions are in error
     /// (the errors are in `e`).
-    pub fn assembled(&self, e: &mut Errors, at: &str) -> Option<(Cow<'_, MechanismDto>, Vec<String>)> {
+    pub fn assembled(&self, e: &mut Errors, at: &str) -> Option<(Cow<'_, MechanismDto>, Vec<crate::i18n::Msg>)> {
         let Some(dimensions) = self.dimensions.as_ref() else { return Some((Cow::Borrowed(self), Vec::new())) };
         let sketch = self.points.clone().unwrap_or_default();
         let names: Vec<&String> = sketch.keys().collect();
@@ -90,10 +90,7 @@ impl MechanismDto {
         }
         let mut warnings = Vec::new();
         if solved.underdetermined {
-            warnings.push(
-                "the dimensions leave some points free to move: they stay as near the sketch as the others allow"
-                    .into(),
-            );
+            warnings.push(crate::i18n::Msg::new("warning-dimensions-free"));
         }
         let assembled: BTreeMap<String, [f64; 2]> = names.into_iter().cloned().zip(solved.points).collect();
         let dto = MechanismDto { points: Some(assembled), dimensions: None, ..self.clone() };

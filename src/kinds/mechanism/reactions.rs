@@ -3,6 +3,7 @@
 
 use crate::engine::kinetostatics::{ContactState, Reaction};
 use crate::engine::model::{JointKind, Mechanism};
+use crate::i18n::Msg;
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
 use utoipa::ToSchema;
@@ -143,9 +144,9 @@ impl ReactionDto {
 pub fn contact_warnings<'a>(
     steps: impl Iterator<Item = (f64, &'a [ContactDto])>,
     m: &Mechanism,
-    show: impl Fn(f64) -> String,
+    show: impl Fn(f64) -> Msg,
     slip_modelled: bool,
-) -> Vec<String> {
+) -> Vec<Msg> {
     let joints: Vec<(usize, &str)> = (m.joints.iter().enumerate())
         .filter(|(_, j)| matches!(j.kind, JointKind::Contact(_)))
         .map(|(k, j)| (k, j.name.as_str()))
@@ -181,43 +182,29 @@ pub fn contact_warnings<'a>(
         }
     }
     let span = |r: &[(f64, f64)]| {
-        r.iter()
-            .map(|&(a, b)| if a == b { show(a) } else { format!("{} to {}", show(a), show(b)) })
-            .collect::<Vec<_>>()
-            .join(", ")
+        let run = |&(a, b): &(f64, f64)| match a == b {
+            true => show(a),
+            false => Msg::new("warning-span").with("from", show(a)).with("to", show(b)),
+        };
+        r.iter().map(run).collect::<Vec<_>>()
     };
     let mut out = Vec::new();
     for (i, &(k, name)) in joints.iter().enumerate() {
-        if !runs[5 * i + 2].is_empty() {
-            out.push(format!(
-                "contact {name}: the contact runs off the end of an open curve at {}: the results there are not a contact's (extend the curve)",
-                span(&runs[5 * i + 2])
-            ));
-        }
-        if !runs[5 * i + 4].is_empty() {
-            out.push(format!(
-                "contact {name}: the contact jumped at {} to a point far from where it was followed to (another lobe): the follower leaves the curve it was on and lands elsewhere, a jump the motion there does not show",
-                span(&runs[5 * i + 4])
-            ));
-        }
-        if !runs[5 * i + 3].is_empty() {
-            out.push(format!(
-                "contact {name}: the curves overlap around the contact at {}: the bodies would touch elsewhere there (the follower jumps to another lobe: a flat face on a concave stretch, a roller in a tighter hollow); the results there follow a contact that cannot be",
-                span(&runs[5 * i + 3])
-            ));
-        }
-        if !runs[5 * i].is_empty() {
-            out.push(format!(
-                "contact {name}: the normal force is negative at {}: the bodies would separate there (a follower jump, a disk leaving its track) unless something holds them together",
-                span(&runs[5 * i])
-            ));
+        let said = |id, slot: usize| Msg::new(id).arg("name", name).list("at", span(&runs[5 * i + slot]));
+        // In the order a reader needs them: where the results are not a contact's first.
+        let conditions = [
+            (2, "warning-contact-off-end"),
+            (4, "warning-contact-jumped"),
+            (3, "warning-contact-overlap"),
+            (0, "warning-contact-separates"),
+        ];
+        for (slot, id) in conditions {
+            if !runs[5 * i + slot].is_empty() {
+                out.push(said(id, slot));
+            }
         }
         if let (false, Some(f)) = (runs[5 * i + 1].is_empty(), m.joints[k].friction) {
-            out.push(format!(
-                "contact {name}: rolling needs more friction than mu = {} gives at {} (see mu_required): it would slip there",
-                f.mu,
-                span(&runs[5 * i + 1])
-            ));
+            out.push(said("warning-contact-slips", 1).num("mu", f.mu));
         }
     }
     out

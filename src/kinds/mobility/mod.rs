@@ -8,6 +8,7 @@
 
 use crate::engine::mobility::{Space, candidate_inputs, kutzbach, mobility};
 use crate::kind::limits::Limits;
+use crate::kind::notes::Notes;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::quantity::Errors;
 use crate::kind::{JobResult, Kind, validated};
@@ -80,12 +81,13 @@ pub struct MobilityResult {
     pub candidate_inputs: Vec<String>,
     /// Joints whose reactions equilibrium cannot determine (redundant constraints).
     pub indeterminate_joints: Vec<String>,
-    pub warnings: Vec<String>,
+    #[serde(flatten)]
+    pub notes: Notes,
 }
 
 impl JobResult for MobilityResult {
-    fn warnings(&mut self) -> Option<&mut Vec<String>> {
-        Some(&mut self.warnings)
+    fn notes(&mut self) -> Option<&mut Notes> {
+        Some(&mut self.notes)
     }
 }
 
@@ -138,13 +140,10 @@ fn drawn(dto: &MechanismDto, unknown: Vec<FieldError>, limits: &Limits) -> Resul
     let name = |k: &usize| m.joints[*k].name.clone();
     let dof = found.dof as i64;
     let g = found.grubler;
-    let mut warnings = Vec::new();
+    let mut notes = Notes::default();
     if g.mobility != dof {
-        warnings.push(format!(
-            "Grübler's count gives {} but the drawing moves with {dof}: {} constraint(s) repeat what the others impose \
-             (a special geometry, such as parallel links), so the count does not see them",
-            g.mobility, found.redundant_constraints
-        ));
+        let said = crate::i18n::Msg::new("warning-mobility-grubler").arg("grubler", g.mobility).arg("dof", dof);
+        notes.warn(said.count("count", found.redundant_constraints));
     }
     Ok(MobilityResult {
         dof: Some(dof),
@@ -158,7 +157,7 @@ fn drawn(dto: &MechanismDto, unknown: Vec<FieldError>, limits: &Limits) -> Resul
         locked: dof == 0,
         candidate_inputs: candidate_inputs(m, &q, found.dof).iter().map(name).collect(),
         indeterminate_joints: found.indeterminate_joints.iter().map(name).collect(),
-        warnings,
+        notes,
     })
 }
 
@@ -206,7 +205,7 @@ fn counted(c: &PairCounts, unknown: Vec<FieldError>) -> Result<MobilityResult, A
         locked: g.mobility <= 0,
         candidate_inputs: Vec::new(),
         indeterminate_joints: Vec::new(),
-        warnings: Vec::new(),
+        notes: Notes::default(),
     })
 }
 

@@ -4,7 +4,7 @@
 
 use super::equations::Equations;
 use super::grip::{Grip, Grips, Mode};
-use crate::engine::dynamics::{Crossing, EventKind, Model};
+use crate::engine::dynamics::{Crossing, EventKind, Model, Stopped};
 use crate::engine::kinetostatics::Frame;
 
 /// The ODE the integrator sees: y = (q, q̇, W).
@@ -64,11 +64,8 @@ impl Model for Equations<'_> {
     fn cross(&self, k: usize, t: f64, y: &[f64]) -> Crossing {
         let (i, grip) = (k / 2, self.grips[k / 2]);
         if k % 2 == 1 {
-            let name = &self.p.mechanism.joints[grip.joint].name;
-            return Crossing::Stop(format!(
-                "the contact '{name}' opens at t = {t:.6} s: its normal force falls to 0 and the bodies would \
-                 separate (what follows is not the motion of these joints): the run stops there"
-            ));
+            let joint = self.p.mechanism.joints[grip.joint].name.clone();
+            return Crossing::Stop(Stopped::ContactOpens { joint, t });
         }
         let (q, qd) = (&y[..self.n], &y[self.n..2 * self.n]);
         let rolled = self.held.borrow().modes[i] == Mode::Roll;

@@ -1,0 +1,113 @@
+//! A result's texts in the asker's language: its warnings and how its
+//! accuracy was estimated are stored once, in English with the catalogue's
+//! message beside each (`messages`), and read in Spanish wherever a result
+//! is read (the POST's answer, the job, a part of it, its page), every
+//! number and every other byte as they were. The Spanish expected here is
+//! the catalogue's text (src/i18n/es/results.ftl) written out by hand.
+
+use crate::helpers::{Reply, TestApp, request, template_request};
+use axum::body::Body;
+use axum::http::{Request, StatusCode};
+use serde_json::{Value, json};
+
+async fn in_spanish(app: &TestApp, method: &str, path: &str, body: Option<&Value>) -> Reply {
+    let req = Request::builder().method(method).uri(path).header("accept-language", "es");
+    let req = match body {
+        Some(b) => req.header("content-type", "application/json").body(Body::from(b.to_string())),
+        None => req.body(Body::empty()),
+    };
+    app.send(req.unwrap()).await
+}
+
+/// P.113's pulley with more inertia than it needs (no disk: a warning
+/// naming the negative inertia) and a constant nothing reads (a warning).
+fn warned() -> Value {
+    let mut body = request("p113_pulley");
+    body["existing_inertia"] = json!("100 kg*m^2");
+    body["flywheel"] = json!({"disk": {"density": "7850 kg/m^3", "radius": "0.3 m"}});
+    body["constants"] = json!({"k": 2});
+    body
+}
+
+#[tokio::test]
+async fn a_results_warnings_and_method_in_spanish() {
+    let app = TestApp::new().await;
+    let posted = in_spanish(&app, "POST", "/v1/flywheel", Some(&warned())).await;
+    assert_eq!(posted.status, StatusCode::CREATED, "{}", posted.text);
+    let job = posted.json();
+    let id = job["id"].as_str().unwrap();
+    let es = &job["result"];
+    let en = app.get(&format!("/v1/jobs/{id}")).await.json()["result"].clone();
+
+    // The warnings: the same conditions, said in each language.
+    assert_eq!(en["warnings"].as_array().unwrap().len(), 2, "{}", en["warnings"]);
+    let (disk_en, disk_es) = (en["warnings"][0].as_str().unwrap(), es["warnings"][0].as_str().unwrap());
+    assert!(disk_en.starts_with("no disk: the flywheel inertia needed is -"), "{disk_en}");
+    let number = disk_es
+        .strip_prefix("sin disco: la inercia de volante necesaria es ")
+        .and_then(|s| {
+            s.strip_suffix(
+                " kg*m^2 (la inercia propia de la máquina ya mantiene el grado de irregularidad dentro de lo pedido)",
+            )
+        })
+        .unwrap_or_else(|| panic!("{disk_es}"));
+    // Four figures with a decimal comma: the result's own number (its `flywheel_inertia.exact`).
+    assert!(number.contains(',') && !number.contains('.'), "{number}");
+    let said: f64 = number.replace(',', ".").parse().unwrap();
+    let exact = en["flywheel_inertia"]["exact"].as_f64().unwrap();
+    assert!((said - exact).abs() <= 5e-4 * exact.abs(), "{said} for {exact}");
+    assert_eq!(en["warnings"][1], "the constant k is not used by any expression of the request");
+    assert_eq!(es["warnings"][1], "la constante k no la usa ninguna expresión de la petición");
+
+    // How the accuracy was estimated.
+    let method = es["accuracy"]["method"].as_str().unwrap();
+    assert!(method.starts_with("M* integrado a trozos entre sus puntos de ruptura"), "{method}");
+    assert!(en["accuracy"]["method"].as_str().unwrap().starts_with("M* integrated piecewise"));
+
+    // The messages a client may match by id, the same in both.
+    assert_eq!(es["messages"], en["messages"]);
+    assert_eq!(en["messages"]["/warnings/0"]["id"], "warning-flywheel-no-disk");
+    assert_eq!(en["messages"]["/warnings/1"]["args"], json!({"name": "k"}));
+    assert_eq!(en["messages"]["/accuracy/method"]["id"], "accuracy-flywheel");
+
+    // Nothing else moved.
+    let without_texts = |r: &Value| {
+        let mut r = r.clone();
+        r["warnings"] = Value::Null;
+        r["accuracy"]["method"] = Value::Null;
+        r
+    };
+    assert_eq!(without_texts(es), without_texts(&en));
+
+    // Every read of the job says it in the language asked for.
+    let read = in_spanish(&app, "GET", &format!("/v1/jobs/{id}"), None).await.json();
+    assert_eq!(&read["result"], es, "the job read in Spanish is the POST's Spanish answer");
+    assert_eq!(app.get(&format!("/v1/jobs/{id}?lang=es")).await.json()["result"], *es, "?lang=es is the header");
+    let part = app.get(&format!("/v1/jobs/{id}/result/warnings/1?lang=es")).await;
+    assert_eq!(part.text, es["warnings"][1].as_str().unwrap(), "a part");
+    let page = in_spanish(&app, "GET", &format!("/jobs/{id}"), None).await;
+    assert!(page.text.contains("la constante k no la usa ninguna expresión de la petición"), "the page");
+    assert!(!page.text.contains("is not used by any expression"), "no English warning on the page");
+}
+
+/// A contact's warnings name where they hold in the request's own unit,
+/// the runs of positions as the language writes them: the flat follower
+/// on an eccentric turned fast enough to leave it (tests/api/contact.rs).
+#[tokio::test]
+async fn a_contacts_warning_in_spanish() {
+    let app = TestApp::new().await;
+    let mut body = template_request("cam-flat-follower");
+    body["input"]["speed"] = json!(30);
+    let en = app.post("/v1/kinetostatics", &body).await.json()["result"].clone();
+    let es = in_spanish(&app, "POST", "/v1/kinetostatics", Some(&body)).await.json()["result"].clone();
+    let warning = |r: &Value, start: &str| {
+        let all = r["warnings"].as_array().unwrap().iter().filter_map(Value::as_str);
+        all.into_iter().find(|w| w.starts_with(start)).map(String::from)
+    };
+    let english = warning(&en, "contact K: the normal force is negative at 130 deg to 230 deg").unwrap();
+    let spanish = warning(&es, "contacto K: la fuerza normal es negativa en 130 deg a 230 deg").unwrap();
+    assert!(english.ends_with("unless something holds them together"), "{english}");
+    assert!(spanish.ends_with("salvo que algo los mantenga juntos"), "{spanish}");
+    let kinetostatics = es["accuracy"]["method"].as_str().unwrap();
+    assert!(kinetostatics.starts_with("coordenadas de los sólidos; "), "{kinetostatics}");
+}
