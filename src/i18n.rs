@@ -71,9 +71,11 @@ impl Lang {
     }
 
     /// A number as this language writes it in a sentence: shortest
-    /// round-trip digits, with a decimal comma in Spanish.
+    /// round-trip digits (powers of ten from 10⁹ and below 10⁻⁴), with a
+    /// decimal comma in Spanish.
     pub fn number(self, x: f64) -> String {
-        self.decimal(format!("{x}"))
+        let plain = x == 0.0 || !x.is_finite() || (1e-4..1e9).contains(&x.abs());
+        self.decimal(if plain { format!("{x}") } else { format!("{x:e}") })
     }
 
     /// `x` to four significant figures, for a label or a page (powers of

@@ -142,6 +142,10 @@ fn walk(kind: &dyn AnyKind, root: &Value, v: &Value, path: &mut Vec<String>, out
         path.pop();
     };
     match v {
+        // A result's `messages` say how its texts were written: no values of it.
+        Value::Object(map) if path.is_empty() => {
+            map.iter().filter(|(k, _)| *k != "messages").for_each(|(k, item)| child(k.clone(), item, path))
+        }
         Value::Object(map) => map.iter().for_each(|(k, item)| child(k.clone(), item, path)),
         Value::Array(items) => items.iter().enumerate().for_each(|(i, item)| child(i.to_string(), item, path)),
         scalar => {

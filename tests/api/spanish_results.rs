@@ -111,3 +111,73 @@ async fn a_contacts_warning_in_spanish() {
     let kinetostatics = es["accuracy"]["method"].as_str().unwrap();
     assert!(kinetostatics.starts_with("coordenadas de los sólidos; "), "{kinetostatics}");
 }
+
+/// A check's feedback in Spanish (the course's students read it): the same
+/// verdicts and numbers, each answer's words Spanish with decimal commas,
+/// the slip named in Spanish; the stored check read in English says it in
+/// English; a platform's document (Gradescope's) too, and a class's CSV.
+#[tokio::test]
+async fn a_checks_feedback_in_spanish() {
+    let app = TestApp::new().await;
+    let answers =
+        json!({"inertia_exact": "260 slug*ft^2", "inertia_approximate": "lots", "/flywheel_inertia/exact": 348.99});
+    let body = json!({"template": "p103-slider-flywheel", "answers": answers});
+    let posted = in_spanish(&app, "POST", "/v1/check", Some(&body)).await;
+    assert_eq!(posted.status, StatusCode::CREATED, "{}", posted.text);
+    let job = posted.json();
+    let es = &job["result"];
+    let en = app.get(&format!("/v1/jobs/{}", job["id"].as_str().unwrap())).await.json()["result"].clone();
+    let feedback = |r: &Value, i: usize| r["items"][i]["feedback"].as_str().unwrap().to_string();
+    // BTreeMap order of the answers: /flywheel_inertia/exact, inertia_approximate, inertia_exact.
+    let (given, expected) = (es["items"][2]["given"].as_f64().unwrap(), es["items"][2]["expected"].as_f64().unwrap());
+    let comma = |x: f64| format!("{x:.2}").replace('.', ",");
+    assert_eq!(
+        feedback(es, 2),
+        format!(
+            "inertia_exact: correcto (260 slug*ft^2 = {} kg*m^2, dentro de 1 % de {} kg*m^2).",
+            comma(given),
+            comma(expected)
+        )
+    );
+    assert_eq!(
+        feedback(&en, 2),
+        format!("inertia_exact: correct (260 slug*ft^2 = {given:.2} kg*m^2, within 1 % of {expected:.2} kg*m^2).")
+    );
+    let unread = feedback(es, 1);
+    assert!(unread.starts_with("inertia_approximate: 'lots' no es un número ni una magnitud ("), "{unread}");
+    let slip = feedback(es, 0);
+    assert!(
+        slip.starts_with("flywheel_inertia/exact: 348,99 kg*m^2 no está dentro de 1 % del valor esperado, "),
+        "{slip}"
+    );
+    assert!(
+        slip.ends_with(
+            " Coincide con flywheel_inertia/approximate del resultado: ¿se dio ese valor como flywheel_inertia/exact?"
+        ),
+        "{slip}"
+    );
+    assert!(feedback(&en, 0).ends_with(
+        "It matches flywheel_inertia/approximate of the result: that value was given for flywheel_inertia/exact?"
+    ));
+    let verdicts = |r: &Value| r["items"].as_array().unwrap().iter().map(|i| i["pass"].clone()).collect::<Vec<_>>();
+    assert_eq!(verdicts(es), verdicts(&en));
+    assert_eq!(es["messages"]["/items/2/feedback"]["id"], "check-correct-revealed");
+
+    let mut platform = body.clone();
+    platform["format"] = json!("gradescope");
+    let gs = in_spanish(&app, "POST", "/v1/check", Some(&platform)).await.json()["result"].clone();
+    let output = gs["output"].as_str().unwrap();
+    assert!(output.starts_with("1 de 3 respuestas dentro de la tolerancia (corregido por mechdyn "), "{output}");
+    assert_eq!(gs["tests"][2]["output"].as_str().unwrap(), feedback(es, 2));
+
+    let class = "student,variant,inertia_exact\nana,1,5 m\n";
+    let req = Request::builder()
+        .method("POST")
+        .uri("/v1/templates/p103-class/grade?lang=es")
+        .header("content-type", "text/csv")
+        .body(Body::from(class))
+        .unwrap();
+    let graded = app.send(req).await;
+    assert_eq!(graded.status, StatusCode::OK, "{}", graded.text);
+    assert!(graded.text.contains("inertia_exact: '5 m' está en m, y la respuesta va en kg*m^2."), "{}", graded.text);
+}

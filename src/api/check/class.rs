@@ -258,7 +258,7 @@ async fn graded(
         cells.push(item.map(|i| i.pass.to_string()).unwrap_or_default());
         cells.push(item.and_then(|i| i.relative_error).map(tables::number_text).unwrap_or_default());
     }
-    cells.push(c.items.iter().map(|i| i.feedback.as_str()).collect::<Vec<_>>().join(" "));
+    cells.push(c.items.iter().map(|i| i.said.text()).collect::<Vec<_>>().join(" "));
     cells.push(String::new());
     Ok(cells)
 }

@@ -8,8 +8,10 @@ use crate::api::kind::AnyKind;
 use crate::api::tables::{self, Scalar};
 use crate::engine::grading::{self, Measure, Rule, Slip, Tolerance, Verdict};
 use crate::engine::variants::round_sig;
+use crate::i18n::{Lang, Msg};
 use crate::kind::DIMENSIONLESS;
 use crate::kind::problem::FieldError;
+use crate::kind::quantity::unit_msg;
 use crate::units::{Dim, UnitError, parse_as, parse_unit};
 use serde_json::Value;
 
@@ -75,11 +77,12 @@ pub fn judge(
         pass: false,
         slip: None,
         feedback: String::new(),
+        said: Msg::new("check-no-answer"),
     };
     let g = match read(asked.answer, unit) {
         Ok(g) => g,
         Err(why) => {
-            item.feedback = format!("{name}: {why}.");
+            item.said(Msg::new("check-unread").arg("name", name).with("why", why));
             return item;
         }
     };
@@ -91,8 +94,20 @@ pub fn judge(
     let slip = (!verdict.pass).then(|| grading::slip(g, e, t, measure(unit), &values(&others))).flatten();
     item.slip = slip.map(|s| slip_name(s, &others));
     let given = given_text(asked.answer, g, unit);
-    item.feedback = feedback(name, &given, e, unit, &verdict, t, slip.map(|s| slip_text(s, name, &others)), reveal);
+    let said = feedback(name, given, e, unit, &verdict, t, reveal);
+    item.said(match slip {
+        Some(s) => Msg::new("check-with-slip").with("feedback", said).with("slip", slip_text(s, name, &others)),
+        None => said,
+    });
     item
+}
+
+impl CheckItem {
+    /// The item's feedback said by `msg` (stored in English, read in the asker's language).
+    fn said(&mut self, msg: Msg) {
+        self.feedback = msg.render(Lang::En);
+        self.said = msg;
+    }
 }
 
 /// ` kg*m^2` after a number; nothing for a pure number.
@@ -100,15 +115,20 @@ fn suffix(unit: &str) -> String {
     if unit == DIMENSIONLESS { String::new() } else { format!(" {unit}") }
 }
 
+/// A value in SI to five figures, with its unit: `353.52 kg*m^2`.
+fn value(x: f64, unit: &str) -> Msg {
+    Msg::new("check-value").num("value", round_sig(x, 5)).arg("unit", suffix(unit))
+}
+
 /// The answer as the student wrote it, with its SI value when it had a unit:
 /// `260 slug*ft^2 = 352.51 kg*m^2`, `353.5 kg*m^2`.
-fn given_text(answer: &Value, g: f64, unit: &str) -> String {
-    let si = format!("{}{}", short(g), suffix(unit));
-    match answer.as_str().map(str::trim) {
-        Some(text) if crate::units::number(text).is_none() && text != si => {
-            format!("{text} = {si}")
+fn given_text(answer: &Value, g: f64, unit: &str) -> Msg {
+    let written = answer.as_str().map(str::trim).filter(|t| crate::units::number(t).is_none());
+    match written {
+        Some(text) if text != value(g, unit).render(Lang::En) => {
+            Msg::new("check-given").arg("text", text).with("si", value(g, unit))
         }
-        _ => si,
+        _ => value(g, unit),
     }
 }
 
@@ -117,18 +137,20 @@ fn values(others: &[(String, f64)]) -> Vec<f64> {
 }
 
 /// An answer in SI: a number, or a quantity string of the expected unit's dimension.
-fn read(answer: &Value, unit: &str) -> Result<f64, String> {
+fn read(answer: &Value, unit: &str) -> Result<f64, Msg> {
     let text = match answer {
-        Value::Number(n) => return n.as_f64().ok_or_else(|| "not a number".to_string()),
-        Value::String(s) if s.trim().is_empty() => return Err("no answer".into()),
+        Value::Number(n) => return n.as_f64().ok_or_else(|| Msg::new("check-not-a-number").arg("value", n)),
+        Value::String(s) if s.trim().is_empty() => return Err(Msg::new("check-no-answer")),
         Value::String(s) => s.clone(),
-        Value::Null => return Err("no answer".into()),
-        other => return Err(format!("{other} is not a number")),
+        Value::Null => return Err(Msg::new("check-no-answer")),
+        other => return Err(Msg::new("check-not-a-number").arg("value", other)),
     };
     let dim = if unit == DIMENSIONLESS { Dim::NONE } else { parse_unit(unit).map_or(Dim::NONE, |(_, d)| d) };
     parse_as(&text, dim).map_err(|e| match e {
-        UnitError::WrongDimension { found, .. } => format!("'{text}' is in {found}, where the answer is in {unit}"),
-        e => format!("'{text}' is not a number or a quantity ({})", e.to_string().trim_end_matches('.')),
+        UnitError::WrongDimension { found, .. } => {
+            Msg::new("check-wrong-dimension").arg("text", &text).arg("found", found).arg("unit", unit)
+        }
+        e => Msg::new("check-unreadable").arg("text", &text).with("why", unit_msg(&e)),
     })
 }
 
@@ -138,49 +160,30 @@ fn measure(unit: &str) -> Measure {
     Measure { angular: dim.0[3] == 1, angular_speed: dim == Dim::ANGULAR_SPEED }
 }
 
-/// Five significant digits, for people: `353.52`, `-1000`, `1.5e-7`.
-fn short(x: f64) -> String {
-    let x = round_sig(x, 5);
-    if x == 0.0 || (1e-4..1e9).contains(&x.abs()) { format!("{x}") } else { format!("{x:e}") }
-}
-
-fn rule_text(v: &Verdict, t: &Tolerance, unit: &str) -> String {
-    let unit = suffix(unit);
+fn rule_text(v: &Verdict, t: &Tolerance, unit: &str) -> Msg {
     match v.rule {
-        Rule::ZeroLevel => format!("±{}{unit} (the zero level)", short(t.zero_level)),
-        Rule::Absolute => format!("±{}{unit}", short(t.absolute)),
-        Rule::Relative => format!("{} %", short(t.relative * 100.0)),
-        Rule::SigFigs => format!("{} significant figures", t.sigfigs.unwrap_or_default()),
+        Rule::ZeroLevel => Msg::new("check-rule-zero-level").with("value", value(t.zero_level, unit)),
+        Rule::Absolute => Msg::new("check-rule-absolute").with("value", value(t.absolute, unit)),
+        Rule::Relative => Msg::new("check-rule-relative").num("percent", round_sig(t.relative * 100.0, 5)),
+        Rule::SigFigs => Msg::new("check-rule-sigfigs").count("count", t.sigfigs.unwrap_or_default() as usize),
     }
 }
 
-#[allow(clippy::too_many_arguments)]
-fn feedback(
-    name: &str,
-    given: &str,
-    e: f64,
-    unit: &str,
-    v: &Verdict,
-    t: &Tolerance,
-    slip: Option<String>,
-    reveal: bool,
-) -> String {
-    let within = rule_text(v, t, unit);
-    let expected = format!("{}{}", short(e), suffix(unit));
-    let mut text = match (v.pass, reveal) {
-        (true, true) => format!("{name}: correct ({given}, within {within} of {expected})."),
-        (true, false) => format!("{name}: correct (within {within})."),
+fn feedback(name: &str, given: Msg, e: f64, unit: &str, v: &Verdict, t: &Tolerance, reveal: bool) -> Msg {
+    let (within, expected) = (rule_text(v, t, unit), value(e, unit));
+    let said = |id| Msg::new(id).arg("name", name).with("within", within);
+    match (v.pass, reveal) {
+        (true, true) => said("check-correct-revealed").with("given", given).with("expected", expected),
+        (true, false) => said("check-correct"),
         (false, true) => {
-            let off = v.relative_error.map(|r| format!(", {} % off", short(r * 100.0))).unwrap_or_default();
-            format!("{name}: {given} is not within {within} of the expected {expected}{off}.")
+            let off = match v.relative_error {
+                Some(r) => Msg::new("check-off").num("percent", round_sig(r * 100.0, 5)),
+                None => Msg::new("check-nothing"),
+            };
+            said("check-wrong-revealed").with("given", given).with("expected", expected).with("off", off)
         }
-        (false, false) => format!("{name}: {given} is not within {within} of the expected value."),
-    };
-    if let Some(s) = slip {
-        text.push(' ');
-        text.push_str(&s);
+        (false, false) => said("check-wrong").with("given", given),
     }
-    text
 }
 
 /// The slip's name in the item (`other_value:/inertia_approximate`, `opposite_sign`, ...).
@@ -197,23 +200,19 @@ fn slip_name(s: Slip, others: &[(String, f64)]) -> String {
 }
 
 /// What a student reads of a slip.
-fn slip_text(s: Slip, name: &str, others: &[(String, f64)]) -> String {
+fn slip_text(s: Slip, name: &str, others: &[(String, f64)]) -> Msg {
     match s {
         Slip::OtherValue(i) => {
             let other = others[i].0.trim_start_matches('/');
-            format!("It matches {other} of the result: that value was given for {name}?")
+            Msg::new("check-slip-other-value").arg("other", other).arg("name", name)
         }
-        Slip::OppositeSign if name.contains("reactions/") => {
-            "It has the opposite sign: the reaction on the other body of the joint? (The result gives the force on \
-             the joint's second body.)"
-                .into()
-        }
-        Slip::OppositeSign => "It has the opposite sign.".into(),
-        Slip::Degrees => "It matches the value in degrees: radians are expected.".into(),
-        Slip::Rpm => "It matches the value in rpm: rad/s are expected (1 rpm = 2π/60 rad/s).".into(),
-        Slip::TwoPi { times: true } => "It is 2π times the expected value.".into(),
-        Slip::TwoPi { times: false } => "It is the expected value divided by 2π.".into(),
-        Slip::PowerOfTen(k) => format!("It is 10^{k} times the expected value: a unit prefix (mm for m, kN for N)?"),
+        Slip::OppositeSign if name.contains("reactions/") => Msg::new("check-slip-reaction-sign"),
+        Slip::OppositeSign => Msg::new("check-slip-sign"),
+        Slip::Degrees => Msg::new("check-slip-degrees"),
+        Slip::Rpm => Msg::new("check-slip-rpm"),
+        Slip::TwoPi { times: true } => Msg::new("check-slip-times-2pi"),
+        Slip::TwoPi { times: false } => Msg::new("check-slip-over-2pi"),
+        Slip::PowerOfTen(k) => Msg::new("check-slip-power-of-ten").arg("k", k),
     }
 }
 

@@ -134,8 +134,11 @@ pub struct CheckItem {
     /// The slip a wrong answer matches: `other_value:/POINTER`, `opposite_sign`,
     /// `degrees`, `rpm`, `times_2pi`, `over_2pi`, `power_of_ten:K`.
     pub slip: Option<String>,
-    /// For the student: which quantity, how far off, the slip.
+    /// For the student: which quantity, how far off, the slip (in the
+    /// asker's language; its message in the result's `messages`).
     pub feedback: String,
+    #[serde(skip)]
+    pub said: crate::i18n::Msg,
 }
 
 /// The result of a check (format `mechdyn`).
@@ -150,6 +153,11 @@ pub struct CheckResult {
     /// who can reach the API (`reveal` shapes the feedback only); offline,
     /// in that run's store in memory.
     pub job: Option<String>,
+    /// The catalogue's message each feedback was written from, by JSON
+    /// pointer (`/items/0/feedback`), as a kind's result has them.
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    #[schema(value_type = BTreeMap<String, crate::i18n::MessageDoc>)]
+    pub messages: BTreeMap<String, crate::i18n::Msg>,
 }
 
 /// A check's result in the format asked for.
@@ -298,7 +306,9 @@ pub fn grade_with(
     }
     let passed = judged.iter().filter(|i| i.pass).count();
     let total = judged.len();
-    let c = CheckResult { score: passed as f64 / total.max(1) as f64, passed, total, items: judged, job };
+    let messages = judged.iter().enumerate().map(|(i, item)| (format!("/items/{i}/feedback"), item.said.clone()));
+    let messages = messages.collect();
+    let c = CheckResult { score: passed as f64 / total.max(1) as f64, passed, total, items: judged, job, messages };
     Ok(CheckOutput::of(c, r.format.unwrap_or_default()))
 }
 

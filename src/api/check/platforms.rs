@@ -7,10 +7,14 @@
 //!   `output`, `visibility`, `stdout_visibility`, `tests` (`name`, `number`,
 //!   `score`, `max_score`, `status` passed|failed, `output`, `visibility`).
 //!
-//! Each answer is one test worth one point.
+//! Each answer is one test worth one point. The texts are in the asker's
+//! language; `messages` (mechdyn's, which the platforms ignore) names the
+//! catalogue's message of each.
 
 use super::CheckResult;
+use crate::i18n::{Lang, Msg};
 use serde::Serialize;
+use std::collections::BTreeMap;
 use utoipa::ToSchema;
 
 /// PrairieLearn's external-grader results document.
@@ -24,6 +28,11 @@ pub struct PrairieLearn {
     pub message: String,
     pub output: String,
     pub tests: Vec<PrairieLearnTest>,
+    /// mechdyn's: the message each text was written from, by JSON pointer
+    /// (a platform ignores it; the texts are in the asker's language).
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    #[schema(value_type = BTreeMap<String, crate::i18n::MessageDoc>)]
+    pub messages: BTreeMap<String, Msg>,
 }
 
 #[derive(Serialize, ToSchema)]
@@ -49,6 +58,10 @@ pub struct Gradescope {
     pub visibility: &'static str,
     pub stdout_visibility: &'static str,
     pub tests: Vec<GradescopeTest>,
+    /// As [`PrairieLearn::messages`].
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    #[schema(value_type = BTreeMap<String, crate::i18n::MessageDoc>)]
+    pub messages: BTreeMap<String, Msg>,
 }
 
 #[derive(Serialize, ToSchema)]
@@ -66,8 +79,18 @@ pub struct GradescopeTest {
 }
 
 /// The summary line of a check.
-fn summary(c: &CheckResult) -> String {
-    format!("{} of {} answers within tolerance (checked by mechdyn {}).", c.passed, c.total, env!("CARGO_PKG_VERSION"))
+fn summary(c: &CheckResult) -> Msg {
+    Msg::new("check-summary")
+        .count("passed", c.passed)
+        .count("total", c.total)
+        .arg("version", env!("CARGO_PKG_VERSION"))
+}
+
+/// The messages of a platform's document: the summary at `summary`, each
+/// answer's feedback at `/tests/N/{feedback}`.
+fn messages(c: &CheckResult, summary_at: &str, feedback: &str) -> BTreeMap<String, Msg> {
+    let each = c.items.iter().enumerate().map(|(n, i)| (format!("/tests/{n}/{feedback}"), i.said.clone()));
+    each.chain([(summary_at.to_string(), summary(c))]).collect()
 }
 
 pub fn prairielearn(c: &CheckResult) -> PrairieLearn {
@@ -83,7 +106,14 @@ pub fn prairielearn(c: &CheckResult) -> PrairieLearn {
             output: String::new(),
         })
         .collect();
-    PrairieLearn { gradable: true, score: c.score, message: summary(c), output: String::new(), tests }
+    PrairieLearn {
+        gradable: true,
+        score: c.score,
+        message: summary(c).render(Lang::En),
+        output: String::new(),
+        tests,
+        messages: messages(c, "/message", "message"),
+    }
 }
 
 pub fn gradescope(c: &CheckResult) -> Gradescope {
@@ -104,9 +134,10 @@ pub fn gradescope(c: &CheckResult) -> Gradescope {
     Gradescope {
         score: c.passed as f64,
         max_score: c.total as f64,
-        output: summary(c),
+        output: summary(c).render(Lang::En),
         visibility: "visible",
         stdout_visibility: "hidden",
         tests,
+        messages: messages(c, "/output", "output"),
     }
 }

@@ -74,3 +74,33 @@ warning-dynamics-chatter = the contacts changed between rolling and slipping { $
 ## Mobility
 
 warning-mobility-grubler = Grübler's count gives { $grubler } but the drawing moves with { $dof }: { $count } constraint(s) repeat what the others impose (a special geometry, such as parallel links), so the count does not see them
+
+## A check of students' answers
+
+check-nothing = { "" }
+check-no-answer = no answer
+check-not-a-number = { $value } is not a number
+check-wrong-dimension = '{ $text }' is in { $found }, where the answer is in { $unit }
+check-unreadable = '{ $text }' is not a number or a quantity ({ $why })
+check-unread = { $name }: { $why }.
+check-value = { $value }{ $unit }
+check-given = { $text } = { $si }
+check-rule-zero-level = ±{ $value } (the zero level)
+check-rule-absolute = ±{ $value }
+check-rule-relative = { $percent } %
+check-rule-sigfigs = { $count } significant figures
+check-correct-revealed = { $name }: correct ({ $given }, within { $within } of { $expected }).
+check-correct = { $name }: correct (within { $within }).
+check-off = , { $percent } % off
+check-wrong-revealed = { $name }: { $given } is not within { $within } of the expected { $expected }{ $off }.
+check-wrong = { $name }: { $given } is not within { $within } of the expected value.
+check-with-slip = { $feedback } { $slip }
+check-slip-other-value = It matches { $other } of the result: that value was given for { $name }?
+check-slip-reaction-sign = It has the opposite sign: the reaction on the other body of the joint? (The result gives the force on the joint's second body.)
+check-slip-sign = It has the opposite sign.
+check-slip-degrees = It matches the value in degrees: radians are expected.
+check-slip-rpm = It matches the value in rpm: rad/s are expected (1 rpm = 2π/60 rad/s).
+check-slip-times-2pi = It is 2π times the expected value.
+check-slip-over-2pi = It is the expected value divided by 2π.
+check-slip-power-of-ten = It is 10^{ $k } times the expected value: a unit prefix (mm for m, kN for N)?
+check-summary = { $passed } of { $total } answers within tolerance (checked by mechdyn { $version }).

@@ -83,3 +83,36 @@ warning-mobility-grubler = el criterio de Grübler da { $grubler } pero el dibuj
         [one] una restricción repite
        *[other] { $count } restricciones repiten
     } lo que imponen las demás (una geometría especial, como barras paralelas), y el recuento no las ve
+
+## La corrección de las respuestas de los alumnos
+
+check-nothing = { "" }
+check-no-answer = sin respuesta
+check-not-a-number = { $value } no es un número
+check-wrong-dimension = '{ $text }' está en { $found }, y la respuesta va en { $unit }
+check-unreadable = '{ $text }' no es un número ni una magnitud ({ $why })
+check-unread = { $name }: { $why }.
+check-value = { $value }{ $unit }
+check-given = { $text } = { $si }
+check-rule-zero-level = ±{ $value } (el nivel de cero)
+check-rule-absolute = ±{ $value }
+check-rule-relative = { $percent } %
+check-rule-sigfigs = { $count ->
+        [one] una cifra significativa
+       *[other] { $count } cifras significativas
+    }
+check-correct-revealed = { $name }: correcto ({ $given }, dentro de { $within } de { $expected }).
+check-correct = { $name }: correcto (dentro de { $within }).
+check-off = , desviado un { $percent } %
+check-wrong-revealed = { $name }: { $given } no está dentro de { $within } del valor esperado, { $expected }{ $off }.
+check-wrong = { $name }: { $given } no está dentro de { $within } del valor esperado.
+check-with-slip = { $feedback } { $slip }
+check-slip-other-value = Coincide con { $other } del resultado: ¿se dio ese valor como { $name }?
+check-slip-reaction-sign = Tiene el signo contrario: ¿la reacción sobre el otro sólido del par? (El resultado da la fuerza sobre el segundo sólido del par.)
+check-slip-sign = Tiene el signo contrario.
+check-slip-degrees = Coincide con el valor en grados: se espera en radianes.
+check-slip-rpm = Coincide con el valor en rpm: se espera en rad/s (1 rpm = 2π/60 rad/s).
+check-slip-times-2pi = Es 2π veces el valor esperado.
+check-slip-over-2pi = Es el valor esperado dividido entre 2π.
+check-slip-power-of-ten = Es 10^{ $k } veces el valor esperado: ¿un prefijo de unidad (mm por m, kN por N)?
+check-summary = { $passed } de { $total } respuestas dentro de la tolerancia (corregido por mechdyn { $version }).
