@@ -25,8 +25,9 @@ pub fn solve(
     unit: Option<&String>,
 ) -> Result<Vec<u8>, ApiError> {
     let Some(k) = kinds.find(kind) else {
-        let message = format!("unknown kind '{kind}' (known: {})", kinds.names().join(", "));
-        return Err(ApiError::Invalid(vec![crate::kind::problem::FieldError::at("", message)]));
+        let why =
+            crate::i18n::Msg::new("template-kind-unknown").arg("kind", kind).arg("known", kinds.names().join(", "));
+        return Err(ApiError::Invalid(vec![crate::kind::problem::FieldError::said("", why)]));
     };
     let result = k.solve(raw, &Limits::default(), kinds)?;
     let Some(pointer) = value else { return Ok(result) };

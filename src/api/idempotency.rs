@@ -16,6 +16,7 @@ use super::AppState;
 use super::body::Chunks;
 use super::job::job_chunks;
 use super::read::{self, READ_MEMORY_FACTOR};
+use crate::i18n::Msg;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::store::Answer;
 use axum::body::Body;
@@ -92,10 +93,10 @@ async fn answer_once(
 
 /// A key: 1 to [`MAX_KEY`] visible ASCII characters.
 fn checked(key: &HeaderValue) -> Result<String, ApiError> {
-    let bad = |why: &str| ApiError::BadQuery(vec![FieldError::parameter("Idempotency-Key", why)]);
-    let key = key.to_str().map_err(|_| bad("must be visible ASCII"))?.trim();
+    let bad = |why: Msg| ApiError::BadQuery(vec![FieldError::parameter_said("Idempotency-Key", why)]);
+    let key = key.to_str().map_err(|_| bad(Msg::new("header-ascii")))?.trim();
     if key.is_empty() || key.len() > MAX_KEY {
-        return Err(bad(&format!("must be 1 to {MAX_KEY} characters")));
+        return Err(bad(Msg::new("header-characters").count("max", MAX_KEY)));
     }
     Ok(key.to_string())
 }
@@ -138,9 +139,8 @@ async fn keep(state: &AppState, key: &str, fingerprint: String, answer: Response
 /// The kept answer again, or a 422 when the key came with another request.
 async fn replay(state: &AppState, kept: Answer, fingerprint: &str) -> Result<Response, ApiError> {
     if kept.fingerprint != fingerprint {
-        let why = "this key was sent before with another request (method, path, query or body); \
-                   use a new key for a new request";
-        return Err(ApiError::Invalid(vec![FieldError::parameter("Idempotency-Key", why)]));
+        let why = Msg::new("header-key-reused");
+        return Err(ApiError::Invalid(vec![FieldError::parameter_said("Idempotency-Key", why)]));
     }
     let status = StatusCode::from_u16(u16::try_from(kept.status).unwrap_or(200)).unwrap_or(StatusCode::OK);
     let content_type = kept.content_type.unwrap_or_else(|| "application/octet-stream".into());

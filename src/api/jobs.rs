@@ -8,6 +8,7 @@ use super::job::{Job, JobList, job_chunks};
 use super::kind;
 use super::read::{self, READ_MEMORY_FACTOR, load};
 use super::tables::{self, AngleUnit, Angles, Decimal, DecimalMark};
+use crate::i18n::Msg;
 use crate::kind::problem::{ApiError, FieldError, Problem, ReadErrors};
 use crate::store::{Filter, Page};
 use axum::body::Body;
@@ -171,19 +172,24 @@ fn list_params(
 ) -> Result<(Option<String>, i64, Option<i64>), ApiError> {
     let mut errors = Vec::new();
     for key in q.keys().filter(|k| !["kind", "label", "limit", "before"].contains(&k.as_str())) {
-        errors.push(FieldError::parameter(key, "unknown parameter (known: kind, label, limit, before)"));
+        errors.push(FieldError::parameter_said(
+            key,
+            Msg::new("query-unknown").arg("known", "kind, label, limit, before"),
+        ));
     }
     let kind = q.get("kind").cloned();
     if let Some(k) = &kind
         && kinds.find(k).is_none()
     {
-        errors.push(FieldError::parameter("kind", format!("must be one of {}", kinds.names().join(", "))));
+        errors
+            .push(FieldError::parameter_said("kind", Msg::new("field-one-of").arg("known", kinds.names().join(", "))));
     }
     let int = |name: &str, lo: i64, hi: i64, errors: &mut Vec<FieldError>| match q.get(name).map(|v| v.parse::<i64>()) {
         None => None,
         Some(Ok(v)) if (lo..=hi).contains(&v) => Some(v),
         Some(_) => {
-            errors.push(FieldError::parameter(name, format!("must be an integer from {lo} to {hi}")));
+            let range = Msg::new("field-integer-between").arg("min", lo).arg("max", hi);
+            errors.push(FieldError::parameter_said(name, range));
             None
         }
     };

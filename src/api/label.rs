@@ -7,6 +7,7 @@
 //! key (a template's parameters, a check's reference) are shared between
 //! requests and carry no label.
 
+use crate::i18n::Msg;
 use crate::kind::problem::{ApiError, FieldError};
 use axum::extract::{Query, Request};
 use axum::http::Method;
@@ -43,14 +44,13 @@ pub async fn labelled(req: Request, next: Next) -> Response {
 /// character or a bidirectional override (which would show another text
 /// than the one stored: `U+202E` turns `exe.txt` round).
 pub fn checked(label: String) -> Result<String, ApiError> {
-    let bad = |why: &str| ApiError::BadQuery(vec![FieldError::parameter("label", why)]);
+    let bad = |why: Msg| ApiError::BadQuery(vec![FieldError::parameter_said("label", why)]);
     if let Some(c) = label.chars().find(|c| c.is_control() || is_bidi_control(*c)) {
-        let why = format!("must not hold control characters or bidirectional overrides (it holds U+{:04X})", c as u32);
-        return Err(bad(&why));
+        return Err(bad(Msg::new("label-control").arg("code", format!("U+{:04X}", c as u32))));
     }
     match label.chars().count() {
-        0 => Err(bad("must not be empty")),
-        n if n > MAX_LABEL => Err(bad(&format!("must be at most {MAX_LABEL} characters"))),
+        0 => Err(bad(Msg::new("label-empty"))),
+        n if n > MAX_LABEL => Err(bad(Msg::new("field-at-most-characters").arg("max", MAX_LABEL))),
         _ => Ok(label),
     }
 }

@@ -91,8 +91,8 @@ pub fn value_at(
             Value::from(tables::convert(x, unit.as_deref(), target, &pointer)?)
         }
         (Some(_), None) => {
-            let message = format!("the part at {pointer} is not a number: it has no unit to convert");
-            return Err(ApiError::BadQuery(vec![FieldError::parameter("unit", message)]));
+            let message = crate::i18n::Msg::new("unit-part-not-number").arg("pointer", &pointer);
+            return Err(ApiError::BadQuery(vec![FieldError::parameter_said("unit", message)]));
         }
         (None, _) => value.clone(),
     };

@@ -7,6 +7,7 @@ use super::kind::AnyKind;
 use crate::i18n::Msg;
 use crate::kind::cell;
 use crate::kind::problem::{ApiError, FieldError};
+use crate::kind::quantity::unit_msg;
 use crate::kind::{DIMENSIONLESS, Table};
 use crate::units::{Dim, parse_unit};
 use serde::Serialize;
@@ -160,22 +161,25 @@ fn walk(kind: &dyn AnyKind, root: &Value, v: &Value, path: &mut Vec<String>, out
 /// `value` (in `unit`, the field's own) converted to `target`; the errors
 /// name the query parameter `unit`.
 pub fn convert(value: f64, unit: Option<&str>, target: &str, pointer: &str) -> Result<f64, ApiError> {
-    let bad = |message: String| ApiError::BadQuery(vec![FieldError::parameter("unit", message)]);
+    let bad = |why: Msg| ApiError::BadQuery(vec![FieldError::parameter_said("unit", why)]);
     let Some(unit) = unit else {
-        return Err(bad(format!("the part at {pointer} has no unit to convert")));
+        return Err(bad(Msg::new("unit-part-no-unit").arg("pointer", pointer)));
     };
     let own = if unit == DIMENSIONLESS { Ok((1.0, Dim::NONE)) } else { parse_unit(unit) };
     let Ok((own_factor, own_dim)) = own else {
-        return Err(bad(format!("the part at {pointer} is in {unit}, which has no single unit to convert from")));
+        return Err(bad(Msg::new("unit-part-no-single-unit").arg("pointer", pointer).arg("unit", unit)));
     };
     let (factor, dim) = match target.trim() {
         "1" => (1.0, Dim::NONE),
-        t => parse_unit(t).map_err(|e| bad(format!("'{target}': {e}")))?,
+        t => parse_unit(t).map_err(|e| bad(Msg::new("unit-target").arg("target", target).with("why", unit_msg(&e))))?,
     };
     if dim != own_dim {
         let (found, expected) = (dim.si_name(), own_dim.si_name());
-        let own = if expected == unit { unit.to_string() } else { format!("{unit}, a unit of {expected}") };
-        return Err(bad(format!("'{target}' is a unit of {found}; the part at {pointer} is in {own}")));
+        let said = match expected == unit {
+            true => Msg::new("unit-part-in").arg("target", target).arg("found", found).arg("pointer", pointer),
+            false => Msg::new("unit-part-in-of").arg("target", target).arg("found", found).arg("pointer", pointer),
+        };
+        return Err(bad(said.arg("unit", unit).arg("expected", expected)));
     }
     Ok(value * own_factor / factor)
 }

@@ -181,3 +181,35 @@ async fn a_checks_feedback_in_spanish() {
     assert_eq!(graded.status, StatusCode::OK, "{}", graded.text);
     assert!(graded.text.contains("inertia_exact: '5 m' está en m, y la respuesta va en kg*m^2."), "{}", graded.text);
 }
+
+/// The grading and template requests' own errors in Spanish at the same
+/// pointers as in English: a check naming no reference and no answer, a
+/// part asked in a unit of another dimension.
+#[tokio::test]
+async fn a_checks_and_a_parts_errors_in_spanish() {
+    let app = TestApp::new().await;
+    let body = json!({"answers": {}});
+    let (en, es) = (app.post("/v1/check", &body).await, in_spanish(&app, "POST", "/v1/check", Some(&body)).await);
+    assert_eq!((en.status, es.status), (StatusCode::UNPROCESSABLE_ENTITY, StatusCode::UNPROCESSABLE_ENTITY));
+    let said = |r: &Reply| {
+        let errors = r.json()["errors"].as_array().unwrap().clone();
+        errors.iter().map(|e| (e["pointer"].as_str().unwrap().to_string(), e["message"].clone())).collect::<Vec<_>>()
+    };
+    let (en, es) = (said(&en), said(&es));
+    assert_eq!(en.iter().map(|e| &e.0).collect::<Vec<_>>(), es.iter().map(|e| &e.0).collect::<Vec<_>>());
+    assert!(
+        es.contains(&(
+            "".into(),
+            json!("indique la referencia: template (con parameters o variant), kind con request, o job")
+        )),
+        "{es:?}"
+    );
+    assert!(es.contains(&("/answers".into(), json!("al menos una respuesta: {\"PUNTERO\": valor}"))), "{es:?}");
+    assert!(en.contains(&("/answers".into(), json!("at least one answer: {\"POINTER\": value}"))), "{en:?}");
+
+    let part = "/v1/templates/p103-slider-flywheel/result/inertia_exact?unit=rpm&lang=es";
+    let r = app.get(part).await;
+    assert_eq!(r.status, StatusCode::BAD_REQUEST, "{}", r.text);
+    let message = r.json()["errors"][0]["message"].as_str().unwrap().to_string();
+    assert_eq!(message, "'rpm' es una unidad de rad/s; la parte en /inertia_exact está en kg*m^2");
+}

@@ -14,6 +14,7 @@ use crate::api::tables;
 use crate::api::tables::{Csv, Scalar};
 use crate::api::templates::table::{self, Column, bad, parameters_of, ragged, read_csv, said};
 use crate::api::templates::{RESERVED, Template, Want, find, job_for, texts, variants};
+use crate::i18n::Msg;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::problem::{Problem, ReadErrors};
 use axum::extract::rejection::QueryRejection;
@@ -34,7 +35,7 @@ pub fn options(q: &HashMap<String, String>) -> Result<(ToleranceDto, bool), ApiE
             .map(|v| {
                 crate::units::number(v)
                     .filter(|x| x.is_finite() && *x >= 0.0)
-                    .ok_or_else(|| bad(name, "must be a number ≥ 0"))
+                    .ok_or_else(|| bad(name, Msg::new("field-finite-not-negative")))
             })
             .transpose()
     };
@@ -45,13 +46,13 @@ pub fn options(q: &HashMap<String, String>) -> Result<(ToleranceDto, bool), ApiE
                 .parse::<u32>()
                 .ok()
                 .filter(|n| (1..=15).contains(n))
-                .ok_or_else(|| bad("sigfigs", "must be 1 to 15"))
+                .ok_or_else(|| bad("sigfigs", Msg::new("check-sigfigs")))
         })
         .transpose()?;
     let reveal = match q.get("reveal").map(|v| v.trim().to_ascii_lowercase()).as_deref() {
         None | Some("true") | Some("1") => true,
         Some("false") | Some("0") => false,
-        Some(_) => return Err(bad("reveal", "must be true or false")),
+        Some(_) => return Err(bad("reveal", Msg::new("query-true-false"))),
     };
     let t = ToleranceDto {
         relative: number("relative")?,
@@ -72,7 +73,7 @@ struct Layout {
 
 fn layout(t: &Template, header: &[Column]) -> Result<Layout, ApiError> {
     let find = |name: &str| header.iter().position(|(_, n, _)| n == name);
-    let student = find("student").ok_or_else(|| bad("body", "the CSV needs a `student` column"))?;
+    let student = find("student").ok_or_else(|| bad("body", Msg::new("class-student-column")))?;
     let variant = find("variant");
     let answers: Vec<(usize, String, Option<String>)> = header
         .iter()
@@ -83,10 +84,10 @@ fn layout(t: &Template, header: &[Column]) -> Result<Layout, ApiError> {
         .map(|(i, (_, n, u))| (i, n.trim_start_matches('/').to_string(), u.clone()))
         .collect();
     if answers.is_empty() {
-        return Err(bad("body", "no answer columns: name each by its pointer into the result, e.g. inertia_exact"));
+        return Err(bad("body", Msg::new("class-answers-none")));
     }
     if let Some((_, n, _)) = answers.iter().find(|(_, n, _)| RESERVED.contains(&n.as_str())) {
-        return Err(bad(n, "a reserved name, not a pointer into the result"));
+        return Err(bad(n, Msg::new("class-reserved")));
     }
     Ok(Layout { student, variant, answers })
 }
@@ -99,7 +100,7 @@ pub async fn class(
     body: &[u8],
 ) -> Result<String, ApiError> {
     let (tolerance, reveal) = options(q)?;
-    let text = std::str::from_utf8(body).map_err(|_| bad("body", "the CSV is not UTF-8 text"))?;
+    let text = std::str::from_utf8(body).map_err(|_| bad("body", Msg::new("csv-not-utf8")))?;
     let (header, rows) = read_csv(text)?;
     let l = layout(t, &header)?;
     if l.variant.is_some() {
@@ -123,8 +124,11 @@ pub async fn class(
         let student = row.get(l.student).cloned().unwrap_or_default();
         let refused = ragged(&header, row, i)
             .map(|m| m.text())
-            .or_else(|| student.is_empty().then(|| format!("row {} has no student", i + 1)))
-            .or_else(|| (!students.insert(student.clone())).then(|| format!("student {student} appears twice")));
+            .or_else(|| student.is_empty().then(|| Msg::new("class-row-no-student").count("row", i + 1).text()))
+            .or_else(|| {
+                let twice = !students.insert(student.clone());
+                twice.then(|| Msg::new("class-student-twice").arg("student", &student).text())
+            });
         if let Some(why) = refused {
             out.record(failed(&l, &student, &why))?;
             continue;
@@ -157,7 +161,7 @@ fn column_errors(errors: Vec<FieldError>) -> ApiError {
             .trim_start_matches("/answers/")
             .replace("~1", "/")
             .replace("~0", "~");
-        FieldError::parameter(column, f.message)
+        FieldError { pointer: None, parameter: Some(column), ..f }
     });
     ApiError::BadQuery(named.collect())
 }
@@ -200,8 +204,8 @@ async fn graded(
     let variant = l.variant.map(|i| row[i].trim()).filter(|v| !v.is_empty());
     let own_parameters = header.iter().zip(row).any(|(c, cell)| params.contains(c) && !cell.is_empty());
     match (l.variant, variant, own_parameters) {
-        (_, Some(_), true) => return Err(bad("variant", "give a variant or the student's parameters, not both")),
-        (Some(_), None, false) => return Err(bad("variant", "no variant (and no parameters) for this student")),
+        (_, Some(_), true) => return Err(bad("variant", Msg::new("class-variant-and-parameters"))),
+        (Some(_), None, false) => return Err(bad("variant", Msg::new("class-variant-none"))),
         _ => {}
     }
     if let Some(v) = variant {
@@ -209,7 +213,7 @@ async fn graded(
             .parse::<u64>()
             .ok()
             .filter(|v| *v <= variants::MAX_SEED)
-            .ok_or_else(|| bad("variant", format!("'{v}' is not a variant number (0 to 2^63 − 1)")))?;
+            .ok_or_else(|| bad("variant", Msg::new("class-variant-number").arg("text", v)))?;
         given.extend(texts(&variants::draw(t, seed)));
     }
     let own: Vec<String> =

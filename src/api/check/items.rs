@@ -39,18 +39,12 @@ pub fn tolerance(general: Option<&ToleranceDto>, own: Option<&ToleranceDto>) -> 
 /// instructor's pointer names none (an error at `at`).
 pub fn expected(kind: &dyn AnyKind, result: &Value, pointer: &str, at: &str) -> Result<(f64, String), FieldError> {
     let tokens = tables::tokens(pointer);
+    let at_pointer = format!("/{}", pointer.trim_start_matches('/'));
     let value = tables::at(result, &tokens).ok_or_else(|| {
-        FieldError::at(at, format!("the {} result has no value at /{}", kind.name(), pointer.trim_start_matches('/')))
+        FieldError::said(at, Msg::new("check-no-value").arg("kind", kind.name()).arg("pointer", &at_pointer))
     })?;
     let x = value.as_f64().ok_or_else(|| {
-        FieldError::at(
-            at,
-            format!(
-                "/{} is not a number ({}): only numbers are graded",
-                pointer.trim_start_matches('/'),
-                clipped(value)
-            ),
-        )
+        FieldError::said(at, Msg::new("check-not-graded").arg("pointer", &at_pointer).arg("value", clipped(value)))
     })?;
     let refs: Vec<&str> = tokens.iter().map(String::as_str).collect();
     Ok((x, kind.unit(result, &refs).unwrap_or_else(|| DIMENSIONLESS.into())))

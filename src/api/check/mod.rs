@@ -15,6 +15,7 @@ pub use platforms::{Gradescope, PrairieLearn};
 pub use run::{CHECK, CheckKind, check_job, post};
 
 use super::tables;
+use crate::i18n::Msg;
 use crate::kind::JobResult;
 use crate::kind::Table;
 use crate::kind::problem::escape;
@@ -197,51 +198,49 @@ fn validate(r: &CheckRequest) -> Vec<FieldError> {
     let sources = [("/template", r.template.is_some()), ("/kind", r.kind.is_some()), ("/job", r.job.is_some())];
     let given: Vec<&str> = sources.iter().filter(|(_, g)| *g).map(|(f, _)| *f).collect();
     match given.as_slice() {
-        [] => errors.push(FieldError::at(
-            "",
-            "name the reference: template (with parameters or variant), kind with request, or job",
-        )),
+        [] => errors.push(FieldError::said("", Msg::new("check-reference-none"))),
         [_] => {}
-        [_, more @ ..] => errors.extend(
-            more.iter().map(|f| FieldError::at(*f, "give one reference only: template, kind with request, or job")),
-        ),
+        [_, more @ ..] => errors.extend(more.iter().map(|f| FieldError::said(*f, Msg::new("check-reference-more")))),
     }
     if r.kind.is_some() != r.request.is_some() {
         let (f, why) =
-            if r.kind.is_some() { ("/request", "kind needs the request") } else { ("/kind", "request needs its kind") };
-        errors.push(FieldError::at(f, why));
+            if r.kind.is_some() { ("/request", "check-kind-alone") } else { ("/kind", "check-request-alone") };
+        errors.push(FieldError::said(f, Msg::new(why)));
     }
     if r.template.is_none() {
-        errors.extend(r.parameters.as_ref().map(|_| FieldError::at("/parameters", "parameters belong to a template")));
-        errors.extend(r.variant.map(|_| FieldError::at("/variant", "a variant belongs to a template")));
+        errors
+            .extend(r.parameters.as_ref().map(|_| FieldError::said("/parameters", Msg::new("check-parameters-alone"))));
+        errors.extend(r.variant.map(|_| FieldError::said("/variant", Msg::new("check-variant-alone"))));
     }
     if r.variant.is_some_and(|v| v > super::templates::MAX_SEED) {
-        errors.push(FieldError::at("/variant", "variants are numbered 0 to 2^63 − 1"));
+        errors.push(FieldError::said("/variant", Msg::new("check-variant-range")));
     }
     if r.parameters.is_some() && r.variant.is_some() {
-        errors.push(FieldError::at("/variant", "give parameters or a variant, not both"));
+        errors.push(FieldError::said("/variant", Msg::new("check-parameters-and-variant")));
     }
     match r.answers.len() {
-        0 => errors.push(FieldError::at("/answers", "at least one answer: {\"POINTER\": value}")),
-        n if n > MAX_ANSWERS => {
-            errors.push(FieldError::at("/answers", format!("at most {MAX_ANSWERS} answers (has {n})")))
-        }
+        0 => errors.push(FieldError::said("/answers", Msg::new("check-answers-none"))),
+        n if n > MAX_ANSWERS => errors.push(FieldError::said(
+            "/answers",
+            Msg::new("check-answers-too-many").count("max", MAX_ANSWERS).count("count", n),
+        )),
         _ => {}
     }
     errors.extend(tolerance_errors(r.tolerance.as_ref(), "/tolerance"));
     let mut answered = std::collections::BTreeSet::new();
     for key in r.answers.keys() {
         if !answered.insert(pointer(key)) {
-            errors.push(FieldError::at(at("answers", key), format!("{} is answered twice", pointer(key))));
+            let twice = Msg::new("check-answered-twice").arg("pointer", pointer(key));
+            errors.push(FieldError::said(at("answers", key), twice));
         }
     }
     if r.required.as_ref().is_some_and(|q| q.len() > MAX_ANSWERS) {
-        errors.push(FieldError::at("/required", format!("at most {MAX_ANSWERS} pointers")));
+        errors.push(FieldError::said("/required", Msg::new("check-required-too-many").count("max", MAX_ANSWERS)));
     }
     for (key, t) in r.tolerances.iter().flatten() {
         let here = at("tolerances", key);
         if !answered.contains(&pointer(key)) {
-            errors.push(FieldError::at(&here, "no answer has this pointer"));
+            errors.push(FieldError::said(&here, Msg::new("check-tolerance-unanswered")));
         }
         errors.extend(tolerance_errors(Some(t), &here));
     }
@@ -253,11 +252,11 @@ fn tolerance_errors(t: Option<&ToleranceDto>, here: &str) -> Vec<FieldError> {
     let mut errors = Vec::new();
     for (name, v) in [("relative", t.relative), ("absolute", t.absolute), ("zero_level", t.zero_level)] {
         if v.is_some_and(|v| !(v.is_finite() && v >= 0.0)) {
-            errors.push(FieldError::at(format!("{here}/{name}"), "must be a finite number ≥ 0"));
+            errors.push(FieldError::said(format!("{here}/{name}"), Msg::new("field-finite-not-negative")));
         }
     }
     if t.sigfigs.is_some_and(|n| !(1..=15).contains(&n)) {
-        errors.push(FieldError::at(format!("{here}/sigfigs"), "must be 1 to 15"));
+        errors.push(FieldError::said(format!("{here}/sigfigs"), Msg::new("check-sigfigs")));
     }
     errors
 }

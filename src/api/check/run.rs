@@ -10,6 +10,7 @@ use crate::api::json::{JsonBody, parse};
 use crate::api::kind::{self, AnyKind, StoredJob};
 use crate::api::templates::{self, Held, RESERVED, Template};
 use crate::api::{AppState, create, job, read};
+use crate::i18n::Msg;
 use crate::kind::limits::Limits;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::{Table, unit_in};
@@ -80,17 +81,19 @@ pub async fn check_job(
 async fn reference(state: &AppState, r: &CheckRequest) -> Result<(&'static dyn AnyKind, Held), ApiError> {
     if let Some(id) = &r.job {
         let (row, reserved) = read::load(state, id, read::READ_MEMORY_FACTOR).await.map_err(|e| match e {
-            ApiError::NotFound(_) => ApiError::Invalid(vec![FieldError::at("/job", format!("no job with id '{id}'"))]),
+            ApiError::NotFound(_) => {
+                ApiError::Invalid(vec![FieldError::said("/job", Msg::new("detail-not-found").arg("id", id))])
+            }
             e => e,
         })?;
-        read::done(&row).map_err(|e| ApiError::Invalid(vec![FieldError::at("/job", e.to_string())]))?;
+        read::done(&row).map_err(|e| ApiError::Invalid(vec![FieldError::said("/job", e.msg())]))?;
         return Ok((gradable(&state.kinds, &row.kind, "/job")?, (row, reserved)));
     }
     if let Some(id) = &r.template {
         let t = templates::find(state, id).await.map_err(|e| no_template(e, id))?;
         let kind = gradable(&state.kinds, &t.kind, "/template")?;
         if r.variant.is_some() {
-            templates::drawable(&t).map_err(|why| ApiError::Invalid(vec![FieldError::at("/variant", why)]))?;
+            templates::drawable(&t).map_err(|why| ApiError::Invalid(vec![FieldError::said("/variant", why)]))?;
         }
         let row = templates::job_for(state, &t, &given(&t, r), templates::Want::Job).await.map_err(under_parameters)?;
         return Ok((kind, row));
@@ -107,10 +110,8 @@ fn gradable(kinds: &kind::Registry, name: &str, field: &str) -> Result<&'static 
         Some(k) => Ok(k),
         None => {
             let known: Vec<&str> = kinds.names().into_iter().filter(|n| *n != CHECK.name()).collect();
-            Err(ApiError::Invalid(vec![FieldError::at(
-                field,
-                format!("'{name}' is not a kind of job to check against (one of {})", known.join(", ")),
-            )]))
+            let why = Msg::new("check-kind-unknown").arg("name", name).arg("known", known.join(", "));
+            Err(ApiError::Invalid(vec![FieldError::said(field, why)]))
         }
     }
 }
@@ -134,10 +135,9 @@ fn given(t: &Template, r: &CheckRequest) -> HashMap<String, String> {
 
 fn no_template(e: ApiError, id: &str) -> ApiError {
     match e {
-        ApiError::NoTemplate(_) => ApiError::Invalid(vec![FieldError::at(
-            "/template",
-            format!("no template '{id}' (GET /v1/templates lists them)"),
-        )]),
+        ApiError::NoTemplate(_) => {
+            ApiError::Invalid(vec![FieldError::said("/template", Msg::new("check-template-unknown").arg("id", id))])
+        }
         e => e,
     }
 }
@@ -148,7 +148,10 @@ fn under_parameters(e: ApiError) -> ApiError {
         ApiError::BadQuery(errors) => ApiError::Invalid(
             errors
                 .into_iter()
-                .map(|f| FieldError::at(at("parameters", f.parameter.as_deref().unwrap_or_default()), f.message))
+                .map(|f| {
+                    let here = at("parameters", f.parameter.as_deref().unwrap_or_default());
+                    FieldError { pointer: Some(here), parameter: None, ..f }
+                })
                 .collect(),
         ),
         e => e,
@@ -165,7 +168,7 @@ fn solve_offline(raw: String, limits: &Limits, kinds: &kind::Registry) -> Result
     }
     let (kind, request) = match (&r.template, &r.job) {
         (_, Some(_)) => {
-            return Err(ApiError::Invalid(vec![FieldError::at("/job", "a stored job needs the service's store")]));
+            return Err(ApiError::Invalid(vec![FieldError::said("/job", Msg::new("check-job-offline"))]));
         }
         (Some(id), _) => {
             let t = templates::builtin()

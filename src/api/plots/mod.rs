@@ -148,7 +148,8 @@ pub fn step(q: &HashMap<String, String>) -> Result<Option<usize>, ApiError> {
     q.get("step")
         .map(|s| {
             s.trim().parse::<usize>().map_err(|_| {
-                ApiError::BadQuery(vec![FieldError::parameter("step", format!("'{s}': must be a whole number from 0"))])
+                let why = crate::i18n::Msg::new("query-whole-number").arg("text", s);
+                ApiError::BadQuery(vec![FieldError::parameter_said("step", why)])
             })
         })
         .transpose()

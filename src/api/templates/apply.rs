@@ -30,7 +30,8 @@ pub fn request_for(t: &Template, given: &HashMap<String, String>, ignore: &[&str
             Ok(v) => match request.pointer_mut(&p.pointer) {
                 Some(slot) => *slot = integral(p, slot, text).unwrap_or(v),
                 None => {
-                    errors.push(FieldError::parameter(name, format!("points at {}, not in the request", p.pointer)))
+                    let why = Msg::new("parameter-pointer-missing").arg("pointer", &p.pointer);
+                    errors.push(FieldError::parameter_said(name, why))
                 }
             },
             Err(why) => errors.push(FieldError::parameter_said(name, why)),

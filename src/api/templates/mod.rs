@@ -304,7 +304,7 @@ pub async fn variants(
     read::format_checked(&q)?;
     let number = |name: &str, default: u64| {
         q.get(name).map_or(Ok(default), |v| {
-            v.trim().parse::<u64>().map_err(|_| table::bad(name, "must be a whole number ≥ 0"))
+            v.trim().parse::<u64>().map_err(|_| table::bad(name, crate::i18n::Msg::new("field-whole-not-negative")))
         })
     };
     let (seed, count) = (number("seed", 1)?, number("count", 10)?);

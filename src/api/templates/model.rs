@@ -3,7 +3,7 @@
 //! by name. The built-in ones are the course's problems, kept in the
 //! repository's `library/` folder and compiled into the binary.
 
-use crate::i18n::Lang;
+use crate::i18n::{Lang, Msg};
 use crate::kind::problem::{ApiError, FieldError};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -173,10 +173,13 @@ pub fn checked(
 ) -> Result<Template, ApiError> {
     if kinds.find(&t.kind).is_none() {
         let names = kinds.names().join(", ");
-        errors.push(FieldError::at("/kind", format!("unknown kind '{}' (known: {names})", t.kind)));
+        errors.push(FieldError::said(
+            "/kind",
+            Msg::new("template-kind-unknown").arg("kind", &t.kind).arg("known", names),
+        ));
     }
     if !t.request.is_object() {
-        errors.push(FieldError::at("/request", "must be a request object of that kind"));
+        errors.push(FieldError::said("/request", Msg::new("template-request-object")));
     }
     let slug = |n: &str| {
         n.len() <= 64
@@ -184,16 +187,13 @@ pub fn checked(
             && n.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-')
     };
     if let Some(n) = t.name.as_deref().filter(|n| !slug(n)) {
-        errors.push(FieldError::at(
-            "/name",
-            format!("'{n}' is not a slug: lower-case letters, digits and -, at most 64"),
-        ));
+        errors.push(FieldError::said("/name", Msg::new("template-name-slug").arg("name", n)));
     }
     if t.title.as_ref().is_some_and(|s| s.chars().count() > 200) {
-        errors.push(FieldError::at("/title", "must be at most 200 characters"));
+        errors.push(FieldError::said("/title", Msg::new("field-at-most-characters").arg("max", 200)));
     }
     if t.parameters.len() > 100 {
-        errors.push(FieldError::at("/parameters", "at most 100 parameters"));
+        errors.push(FieldError::said("/parameters", Msg::new("template-parameters-too-many").count("max", 100)));
     }
     for (name, p) in &t.parameters {
         let at = format!("/parameters/{}", name.replace('~', "~0").replace('/', "~1"));
@@ -201,7 +201,7 @@ pub fn checked(
     }
     for name in t.es.iter().flat_map(|es| es.parameters.keys()).filter(|n| !t.parameters.contains_key(*n)) {
         let at = format!("/es/parameters/{}", crate::kind::problem::escape(name));
-        errors.push(FieldError::at(at, format!("no parameter {name} in this template")));
+        errors.push(FieldError::said(at, Msg::new("template-no-parameter").arg("name", name)));
     }
     if !errors.is_empty() {
         return Err(ApiError::Invalid(errors));
@@ -226,32 +226,31 @@ fn parameter_errors(name: &str, p: &Parameter, request: &Value, at: &str) -> Vec
         && name.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
         && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
     if !word {
-        errors.push(FieldError::at(
-            at,
-            format!("'{name}' is not a name: letters, digits and _, not starting with a digit"),
-        ));
+        errors.push(FieldError::said(at, Msg::new("template-parameter-name").arg("name", name)));
     } else if RESERVED.contains(&name) {
-        errors.push(FieldError::at(at, format!("'{name}' is reserved in a template's URL ({})", RESERVED.join(", "))));
+        let reserved = Msg::new("template-parameter-reserved").arg("name", name).arg("reserved", RESERVED.join(", "));
+        errors.push(FieldError::said(at, reserved));
     }
     match request.pointer(&p.pointer) {
         Some(v) if v.is_number() || v.is_string() => {}
-        Some(_) => {
-            errors.push(FieldError::at(format!("{at}/pointer"), "must point at a number or a text of the request"))
-        }
-        None => errors.push(FieldError::at(format!("{at}/pointer"), format!("{} is not in the request", p.pointer))),
+        Some(_) => errors.push(FieldError::said(format!("{at}/pointer"), Msg::new("template-pointer-scalar"))),
+        None => errors.push(FieldError::said(
+            format!("{at}/pointer"),
+            Msg::new("template-pointer-missing").arg("pointer", &p.pointer),
+        )),
     }
     if let Some(u) = &p.unit
         && let Err(e) = crate::units::parse_unit(u)
     {
-        errors.push(FieldError::at(format!("{at}/unit"), e.to_string()));
+        errors.push(FieldError::said(format!("{at}/unit"), crate::kind::quantity::unit_msg(&e)));
     }
     if let (Some(lo), Some(hi)) = (p.min, p.max)
         && lo > hi
     {
-        errors.push(FieldError::at(at, format!("min {lo} is above max {hi}")));
+        errors.push(FieldError::said(at, Msg::new("template-min-above-max").num("min", lo).num("max", hi)));
     }
     if p.step.is_some_and(|s| !(s > 0.0 && s.is_finite())) {
-        errors.push(FieldError::at(format!("{at}/step"), "must be greater than 0"));
+        errors.push(FieldError::said(format!("{at}/step"), Msg::new("field-positive")));
     }
     errors
 }

@@ -76,7 +76,7 @@ pub async fn study(
         return Err(ApiError::UnsupportedTable);
     }
     let pointers: Vec<String> = values.map_or_else(Vec::new, |v| pointer_list(v));
-    let text = std::str::from_utf8(body).map_err(|_| bad("body", "the CSV is not UTF-8 text"))?;
+    let text = std::str::from_utf8(body).map_err(|_| bad("body", Msg::new("csv-not-utf8")))?;
     let (header, rows) = read_csv(text)?;
     even(&header, &rows)?;
     let unknown: Vec<FieldError> = header
@@ -114,8 +114,8 @@ pub fn mime(headers: &HeaderMap) -> String {
     headers.get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok()).unwrap_or("").to_ascii_lowercase()
 }
 
-pub fn bad(parameter: &str, message: impl Into<String>) -> ApiError {
-    ApiError::BadQuery(vec![FieldError::parameter(parameter, message)])
+pub fn bad(parameter: &str, msg: Msg) -> ApiError {
+    ApiError::BadQuery(vec![FieldError::parameter_said(parameter, msg)])
 }
 
 /// A header cell `name [unit]`: (as written, name, unit).
@@ -139,7 +139,7 @@ pub fn read_csv(text: &str) -> Result<(Vec<Column>, Vec<Vec<String>>), ApiError>
         csv::ReaderBuilder::new().delimiter(delimiter).trim(csv::Trim::All).flexible(true).from_reader(text.as_bytes());
     let header: Vec<Column> = reader
         .headers()
-        .map_err(|e| bad("body", format!("the CSV's header: {e}")))?
+        .map_err(|e| bad("body", Msg::new("csv-header").arg("why", e)))?
         .iter()
         .map(|h| match h.split_once('[') {
             Some((name, unit)) => {
@@ -150,13 +150,13 @@ pub fn read_csv(text: &str) -> Result<(Vec<Column>, Vec<Vec<String>>), ApiError>
         .collect();
     let mut rows = Vec::new();
     for record in reader.records() {
-        let record = record.map_err(|e| bad("body", format!("the CSV: {e}")))?;
+        let record = record.map_err(|e| bad("body", Msg::new("csv-unreadable").arg("why", e)))?;
         if record.iter().all(str::is_empty) {
             continue;
         }
         rows.push(record.iter().map(String::from).collect());
         if rows.len() > MAX_ROWS {
-            return Err(bad("body", format!("more than {MAX_ROWS} rows in one request")));
+            return Err(bad("body", Msg::new("csv-too-many-rows").count("max", MAX_ROWS)));
         }
     }
     Ok((header, rows))
@@ -195,10 +195,10 @@ pub async fn run(
     (pointers, want): (&[String], Want),
 ) -> Result<Vec<(Vec<Value>, Option<String>, Option<String>)>, ApiError> {
     if pointers.is_empty() {
-        return Err(bad("values", "give the values to answer, e.g. ?values=inertia_exact,energy_fluctuation"));
+        return Err(bad("values", Msg::new("query-values-none")));
     }
     if rows.len() > MAX_ROWS {
-        return Err(bad("body", format!("more than {MAX_ROWS} rows in one study")));
+        return Err(bad("body", Msg::new("csv-too-many-rows").count("max", MAX_ROWS)));
     }
     let unknown: Vec<FieldError> = rows
         .iter()
@@ -234,7 +234,8 @@ pub async fn run(
 
 pub fn unknown_parameter(t: &Template, name: &str) -> FieldError {
     let known = t.parameters.keys().map(String::as_str).collect::<Vec<_>>().join(", ");
-    FieldError::parameter(name, format!("no parameter {name} in template {} (its parameters: {known})", t.id))
+    let msg = Msg::new("parameter-unknown").arg("name", name).arg("template", &t.id);
+    FieldError::parameter_said(name, msg.arg("known", known))
 }
 
 /// What a row's `error` says where its job's result has no value at some

@@ -8,6 +8,7 @@ use super::table::{bad, run};
 use crate::api::AppState;
 use crate::api::tables::{Csv, Decimal};
 use crate::engine::variants::{Draw, Range, variant};
+use crate::i18n::Msg;
 use crate::kind::cell;
 use crate::kind::problem::ApiError;
 use serde::Serialize;
@@ -54,14 +55,11 @@ fn range(p: &Parameter) -> Option<Range> {
 
 /// Whether `t` has a parameter to draw (choices, or min, max and step);
 /// why not, when it has none.
-pub fn drawable(t: &Template) -> Result<(), String> {
+pub fn drawable(t: &Template) -> Result<(), Msg> {
     if t.parameters.values().any(|p| range(p).is_some()) {
         return Ok(());
     }
-    Err(format!(
-        "template {} has no parameter with choices or with min, max and step: every variant would be its defaults",
-        t.id
-    ))
+    Err(Msg::new("template-not-drawable").arg("id", &t.id))
 }
 
 /// The parameters of variant `seed` of `t`: one draw per parameter in name
@@ -93,11 +91,11 @@ pub async fn list(
     values: &[String],
 ) -> Result<Variants, ApiError> {
     if count == 0 || count > MAX_COUNT {
-        return Err(bad("count", format!("must be 1 to {MAX_COUNT}")));
+        return Err(bad("count", Msg::new("field-between").num("min", 1.0).num("max", MAX_COUNT as f64)));
     }
     drawable(t).map_err(|why| bad("seed", why))?;
     if seed.checked_add(count - 1).is_none_or(|last| last > MAX_SEED) {
-        return Err(bad("seed", "variants are numbered 0 to 2^63 − 1: seed + count − 1 must not exceed it"));
+        return Err(bad("seed", Msg::new("template-seed-range")));
     }
     let drawn: Vec<(u64, BTreeMap<String, Value>)> = (seed..seed + count).map(|v| (v, draw(t, v))).collect();
     let given: Vec<HashMap<String, String>> = drawn.iter().map(|(_, p)| super::texts(p)).collect();

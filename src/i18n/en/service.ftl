@@ -331,3 +331,77 @@ flywheel-torques-count = must hold 1 to { $max } items (or give a machine)
 flywheel-one-balance = at most one item may have "balance": true
 flywheel-value-or-balance = give either "value" or "balance": true
 flywheel-disk = give exactly one of rim_speed, radius or thickness
+
+## A check's request, a class's CSV, a study
+
+field-finite-not-negative = must be a finite number ≥ 0
+field-whole-not-negative = must be a whole number ≥ 0
+query-true-false = must be true or false
+query-values-none = give the values to answer, e.g. ?values=inertia_exact,energy_fluctuation
+csv-not-utf8 = the CSV is not UTF-8 text
+csv-header = the CSV's header: { $why }
+csv-unreadable = the CSV: { $why }
+csv-too-many-rows = more than { $max } rows in one request
+template-not-drawable = template { $id } has no parameter with choices or with min, max and step: every variant would be its defaults
+template-seed-range = variants are numbered 0 to 2^63 − 1: seed + count − 1 must not exceed it
+check-reference-none = name the reference: template (with parameters or variant), kind with request, or job
+check-reference-more = give one reference only: template, kind with request, or job
+check-kind-alone = kind needs the request
+check-request-alone = request needs its kind
+check-parameters-alone = parameters belong to a template
+check-variant-alone = a variant belongs to a template
+check-variant-range = variants are numbered 0 to 2^63 − 1
+check-parameters-and-variant = give parameters or a variant, not both
+check-answers-none = at least one answer: {"{"}"POINTER": value{"}"}
+check-answers-too-many = at most { $max } answers (has { $count })
+check-answered-twice = { $pointer } is answered twice
+check-required-too-many = at most { $max } pointers
+check-tolerance-unanswered = no answer has this pointer
+check-sigfigs = must be 1 to 15
+check-kind-unknown = '{ $name }' is not a kind of job to check against (one of { $known })
+check-template-unknown = no template '{ $id }' (GET /v1/templates lists them)
+check-job-offline = a stored job needs the service's store
+class-student-column = the CSV needs a `student` column
+class-answers-none = no answer columns: name each by its pointer into the result, e.g. inertia_exact
+class-reserved = a reserved name, not a pointer into the result
+class-variant-and-parameters = give a variant or the student's parameters, not both
+class-variant-none = no variant (and no parameters) for this student
+class-variant-number = '{ $text }' is not a variant number (0 to 2^63 − 1)
+class-row-no-student = row { $row } has no student
+class-student-twice = student { $student } appears twice
+check-no-value = the { $kind } result has no value at { $pointer }
+check-not-graded = { $pointer } is not a number ({ $value }): only numbers are graded
+
+## A template as a client writes it
+
+template-kind-unknown = unknown kind '{ $kind }' (known: { $known })
+template-request-object = must be a request object of that kind
+template-name-slug = '{ $name }' is not a slug: lower-case letters, digits and -, at most 64
+template-parameters-too-many = at most { $max } parameters
+template-no-parameter = no parameter { $name } in this template
+template-parameter-name = '{ $name }' is not a name: letters, digits and _, not starting with a digit
+template-parameter-reserved = '{ $name }' is reserved in a template's URL ({ $reserved })
+template-pointer-scalar = must point at a number or a text of the request
+template-pointer-missing = { $pointer } is not in the request
+template-min-above-max = min { $min } is above max { $max }
+
+## Headers, labels, lists
+
+field-one-of = must be one of { $known }
+field-integer-between = must be an integer from { $min } to { $max }
+header-ascii = must be visible ASCII
+header-characters = must be 1 to { $max } characters
+header-key-reused = this key was sent before with another request (method, path, query or body); use a new key for a new request
+label-control = must not hold control characters or bidirectional overrides (it holds { $code })
+label-empty = must not be empty
+
+## A part of a result in another unit
+
+unit-part-not-number = the part at { $pointer } is not a number: it has no unit to convert
+unit-part-no-unit = the part at { $pointer } has no unit to convert
+unit-part-no-single-unit = the part at { $pointer } is in { $unit }, which has no single unit to convert from
+unit-target = '{ $target }': { $why }
+unit-part-in = '{ $target }' is a unit of { $found }; the part at { $pointer } is in { $unit }
+unit-part-in-of = '{ $target }' is a unit of { $found }; the part at { $pointer } is in { $unit }, a unit of { $expected }
+query-whole-number = '{ $text }': must be a whole number from 0
+parameter-pointer-missing = points at { $pointer }, not in the request

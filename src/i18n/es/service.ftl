@@ -331,3 +331,77 @@ flywheel-torques-count = debe tener de 1 a { $max } elementos (o dé una máquin
 flywheel-one-balance = como mucho un elemento puede tener "balance": true
 flywheel-value-or-balance = dé "value" o bien "balance": true
 flywheel-disk = dé exactamente uno de rim_speed, radius o thickness
+
+## La petición de una corrección, el CSV de una clase, un estudio
+
+field-finite-not-negative = debe ser un número finito ≥ 0
+field-whole-not-negative = debe ser un número entero ≥ 0
+query-true-false = debe ser true o false
+query-values-none = indique los valores que responder, p. ej. ?values=inertia_exact,energy_fluctuation
+csv-not-utf8 = el CSV no es texto UTF-8
+csv-header = la cabecera del CSV: { $why }
+csv-unreadable = el CSV: { $why }
+csv-too-many-rows = más de { $max } filas en una petición
+template-not-drawable = la plantilla { $id } no tiene ningún parámetro con opciones ni con min, max y step: todas las variantes serían sus valores por defecto
+template-seed-range = las variantes se numeran de 0 a 2^63 − 1: seed + count − 1 no debe pasar de ahí
+check-reference-none = indique la referencia: template (con parameters o variant), kind con request, o job
+check-reference-more = indique una sola referencia: template, kind con request, o job
+check-kind-alone = kind necesita la petición (request)
+check-request-alone = request necesita su tipo (kind)
+check-parameters-alone = parameters es de una plantilla (template)
+check-variant-alone = una variante es de una plantilla (template)
+check-variant-range = las variantes se numeran de 0 a 2^63 − 1
+check-parameters-and-variant = dé parameters o una variante, no ambos
+check-answers-none = al menos una respuesta: {"{"}"PUNTERO": valor{"}"}
+check-answers-too-many = como mucho { $max } respuestas (tiene { $count })
+check-answered-twice = { $pointer } se responde dos veces
+check-required-too-many = como mucho { $max } punteros
+check-tolerance-unanswered = ninguna respuesta tiene este puntero
+check-sigfigs = debe ser de 1 a 15
+check-kind-unknown = '{ $name }' no es un tipo de trabajo con el que corregir (uno de { $known })
+check-template-unknown = no hay ninguna plantilla '{ $id }' (GET /v1/templates las lista)
+check-job-offline = un trabajo guardado necesita el almacén del servicio
+class-student-column = el CSV necesita una columna `student`
+class-answers-none = no hay columnas de respuestas: nombre cada una por su puntero en el resultado, p. ej. inertia_exact
+class-reserved = un nombre reservado, no un puntero en el resultado
+class-variant-and-parameters = dé una variante o los parámetros del alumno, no ambos
+class-variant-none = ni variante (ni parámetros) para este alumno
+class-variant-number = '{ $text }' no es un número de variante (de 0 a 2^63 − 1)
+class-row-no-student = la fila { $row } no tiene alumno
+class-student-twice = el alumno { $student } aparece dos veces
+check-no-value = el resultado de { $kind } no tiene ningún valor en { $pointer }
+check-not-graded = { $pointer } no es un número ({ $value }): solo se corrigen números
+
+## Una plantilla tal como la escribe un cliente
+
+template-kind-unknown = tipo desconocido '{ $kind }' (conocidos: { $known })
+template-request-object = debe ser un objeto de petición de ese tipo
+template-name-slug = '{ $name }' no es un identificador: letras minúsculas, dígitos y -, como mucho 64
+template-parameters-too-many = como mucho { $max } parámetros
+template-no-parameter = no hay ningún parámetro { $name } en esta plantilla
+template-parameter-name = '{ $name }' no es un nombre: letras, dígitos y _, sin empezar por un dígito
+template-parameter-reserved = '{ $name }' está reservado en la URL de una plantilla ({ $reserved })
+template-pointer-scalar = debe apuntar a un número o a un texto de la petición
+template-pointer-missing = { $pointer } no está en la petición
+template-min-above-max = min { $min } está por encima de max { $max }
+
+## Cabeceras, etiquetas, listas
+
+field-one-of = debe ser uno de { $known }
+field-integer-between = debe ser un entero de { $min } a { $max }
+header-ascii = debe ser ASCII visible
+header-characters = debe tener de 1 a { $max } caracteres
+header-key-reused = esta clave se envió antes con otra petición (método, ruta, consulta o cuerpo); use una clave nueva para una petición nueva
+label-control = no debe contener caracteres de control ni de cambio de dirección (contiene { $code })
+label-empty = no debe estar vacía
+
+## Una parte de un resultado en otra unidad
+
+unit-part-not-number = la parte en { $pointer } no es un número: no tiene unidad que convertir
+unit-part-no-unit = la parte en { $pointer } no tiene unidad que convertir
+unit-part-no-single-unit = la parte en { $pointer } está en { $unit }, que no es una sola unidad desde la que convertir
+unit-target = '{ $target }': { $why }
+unit-part-in = '{ $target }' es una unidad de { $found }; la parte en { $pointer } está en { $unit }
+unit-part-in-of = '{ $target }' es una unidad de { $found }; la parte en { $pointer } está en { $unit }, una unidad de { $expected }
+query-whole-number = '{ $text }': debe ser un número entero desde 0
+parameter-pointer-missing = apunta a { $pointer }, que no está en la petición
