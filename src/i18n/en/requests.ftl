@@ -1,3 +1,127 @@
 # The kinds' requests: what a field of a mechanism, a cam, a rotor, a gear
 # train… must be, in English (Spanish in ../es/requests.ftl, same ids and
 # arguments).
+
+## A mechanism: its points, bodies, gravity and the errors of its assembly
+
+mechanism-too-many = at most { $max } bodies and { $max } joints
+mechanism-coordinates = coordinates must be finite
+mechanism-unknown-point = unknown point '{ $name }'
+mechanism-unknown-body = unknown body '{ $name }'
+mechanism-unknown-joint = unknown joint '{ $name }'
+mechanism-duplicate-body = duplicate body name '{ $name }' (ground is implicit)
+mechanism-duplicate-joint = duplicate joint name '{ $name }'
+mechanism-cg = a body with mass needs "cg"
+mechanism-not-negative = must not be negative
+mechanism-gravity = must be [gx, gy], finite
+mechanism-vector = must be a finite, non-zero vector [x, y]
+mechanism-not-finite = { $function } is not finite at phi = { $phi } rad
+mechanism-negative-inertia = { $function } is negative ({ $value } kg*m^2) at phi = { $phi } rad
+mechanism-not-steady = the cycle is not in steady state: the net work of the torques over a cycle is { $net_work } J (largest lobe { $largest_area } J); add a torque with "balance": true or correct the loads
+mechanism-newton = the mechanism cannot be assembled at input { $input } (step { $step }): the loop through { $joint } does not close (Newton-Raphson stopped { $residual } short; e.g. a non-Grashof crank asked for a full turn)
+mechanism-locked = the mechanism is locked: its joints leave it no degree of freedom (0 by the rank of the joint Jacobian; Grübler's count 3(N - 1) - 2 P_I - P_II = { $grubler }), so no input can move it; remove a joint or make one a slider
+mechanism-singular = the mechanism is at a singular position at step { $step } (input { $input }): the constraint Jacobian loses rank
+mechanism-dof = the mechanism has { $dof } degree(s) of freedom but { $inputs } input(s): give one input per degree of freedom (a body with too few joints moves freely; too many inputs conflict)
+mechanism-friction = joint friction does not settle at input { $input } (step { $step }): the friction coefficients are too large for the mechanism to be driven there (self-locking)
+mechanism-unactuated = the actuator(s) { $actuators } cannot drive the inputs at input { $input } (step { $step }): moving the inputs does not move them (their effort would be carried by the joints); choose an actuator the input's motion moves
+mechanism-not-finite-result = the computation produced a non-finite number; the input is numerically degenerate
+
+## A mechanism's joints
+
+joint-two-bodies = must name exactly two bodies
+joint-same-body = a joint cannot tie a body to itself
+joint-at = "at" is required
+joint-axis = "axis" is required for this joint type
+joint-gear-ratio = a gear needs a finite non-zero "ratio" or "teeth": [z1, z2] (positive)
+joint-gear-teeth = a gear with a module needs "teeth": [z1, z2]
+joint-gear-bearings = a gear with a module needs a revolute joint (its bearing) on each gear, to find its centre
+joint-gear-friction = friction is not modelled for gears
+joint-length-prismatic = applies to prismatic joints only (a guide's length)
+joint-mu = must be a finite number ≥ 0
+joint-friction-radius = a revolute joint's friction needs the pin "radius"
+joint-radius-revolute = applies to revolute joints only
+joint-contact-only = applies to contact joints only
+
+## A contact joint: its curves, and where they touch
+
+contact-needs-curves = a contact joint needs "curves": one per body
+contact-two-curves = must hold exactly two curves, the first body's and the second's
+contact-point-rolling = a point cannot roll: rolling needs two curves
+contact-gap = the curves do not touch as drawn: { $gap } m apart near ({ $x }, { $y }) (they must meet within { $tolerance } m, 1e-6 of the mechanism's size)
+contact-cross = the curves cross at ({ $x }, { $y }) at { $angle }° instead of touching (a common tangent): draw them touching
+contact-decimal = { $units }.{ $digits }
+contact-lines = two lines do not make a contact (they touch along their length or cross): use a prismatic joint
+contact-spline-points = must hold 4 to { $max } points
+contact-no-spline = no spline passes through these points
+contact-polar-positive = must be positive over the whole turn: r({ $angle }°) = { $value }
+contact-cam-ccw = a cam curve's program runs counter-clockwise: write it in the cam's ccw angle
+contact-cam-segments = a cam curve takes a program of segments
+contact-cam-offset = must be less than the pitch circle's radius (base + roller)
+contact-cam-oscillating = a cam curve is made for a translating follower: for an oscillating one, draw the profile its design gives (POST /v1/cams: the samples' profile_point) as a closed spline
+
+## A mechanism's dimensions
+
+dimensions-too-many = at most { $max } dimensions
+dimensions-one-of = give exactly one of "distance", "angle", "x" and "y"
+dimensions-two-points = must name two points
+dimensions-unknown-point = unknown point '{ $name }' (dimensions join named points)
+dimensions-positive = must be positive
+dimensions-conflict = the dimensions cannot all hold: this one and those named with it (off by { $residual } at the least change)
+dimensions-reversed = the sketch draws this line the other way round: swap its points, or the angle by 180°
+
+## A mechanism's loads
+
+load-too-many = at most { $max } loads
+load-needs = a { $type } load needs "{ $field }"
+load-not-this-type = does not apply to this load type
+load-ground = a load on the ground does nothing; name a moving body
+
+## The points a request follows
+
+track-too-many = at most { $max } points
+track-pin = '{ $point }' is the pin of the slot '{ $slot }': its two bodies move differently there; give {"{"}"name": "{ $point }", "body": ...{"}"}
+track-no-body = '{ $point }' is on no body (no joint or centre of mass is there); give {"{"}"name": "{ $point }", "body": ...{"}"}
+
+## A mechanism's inputs
+
+input-ground = the ground does not move: name a moving body
+input-joint-kind = an input must be a revolute, prismatic or contact joint (the arc length along its curve)
+input-on-ground = '{ $point }' is on the ground: it does not move
+input-direction-of-point = belongs to a "point" input
+input-none = name the input's "joint", or a "point" and its "direction", or a "body"
+input-one-of = name one of "joint", "point" (with "direction") or "body"
+input-needs-direction = a "point" input needs its "direction" [x, y]
+input-direction = must be a finite, non-zero [x, y]
+input-flywheel-shaft = a flywheel's input is its shaft: a revolute "joint"
+input-shaft-revolute = the flywheel's shaft must be a revolute joint
+input-name-shaft = name the shaft, a revolute joint
+input-count = give 1 to 10 inputs
+input-steps = must be 1 to { $max }
+input-same-steps = all inputs share the steps of the first
+input-actuators = give one actuator per input: { $inputs } input(s), { $actuators } actuator(s)
+input-own-actuator = each input needs its own actuator: '{ $name }' drives another
+input-actuator-kind = an actuator must be a revolute joint (a torque) or a prismatic one (a force)
+input-needs-end = an input in metres (a prismatic joint, a point) needs "end"
+input-speed = "speed" is required
+
+## Kinetostatics: what it asks of its outputs, and the positions a mechanism cannot reach
+
+kinetostatics-points-track = "points" follows the points of "track": give them
+kinetostatics-at = { $what } at input { $value } (step { $step } of { $steps }): { $why }
+kinetostatics-at-start = { $what } at input { $value } (step { $step } of { $steps }, the start): { $why }
+kinetostatics-on-the-way = { $said }; on the way there from the drawn configuration (input "reference") it stops closing at { $value }
+kinetostatics-value = { $value } { $unit }
+kinetostatics-value-rad = { $value } rad = { $degrees } deg
+kinetostatics-not-assembled = the mechanism cannot be assembled
+kinetostatics-loop = the loop through { $joint } does not close (Newton-Raphson ends { $residual } short); check start, end and the lengths (a non-Grashof crank, say, cannot make a full turn)
+kinetostatics-singular = the mechanism is at a singular position
+kinetostatics-dead-centre = a dead centre or toggle the input cannot pass (the constraint Jacobian loses rank)
+kinetostatics-friction = joint friction does not settle
+kinetostatics-self-locking = the friction coefficients are too large for the mechanism to be driven there (self-locking)
+kinetostatics-unactuated = the actuators cannot drive the inputs
+kinetostatics-unactuated-why = moving the inputs does not move { $actuators } there, so its effort would be carried by the joints; name in "actuators" a joint the input's motion moves
+
+## A cam: its follower, program, size, speed and dynamics
+
+cam-roller-radius = a roller follower needs its "roller_radius"
+cam-roller-only = applies to a roller follower only

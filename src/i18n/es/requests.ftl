@@ -1,3 +1,141 @@
 # Las peticiones de cada tipo: lo que debe ser un campo de un mecanismo,
 # una leva, un rotor, un tren de engranajes…, en español (inglés en
 # ../en/requests.ftl, con los mismos identificadores y argumentos).
+
+## Un mecanismo: sus puntos, cuerpos, la gravedad y los errores de su montaje
+
+mechanism-too-many = como mucho { $max } cuerpos y { $max } pares cinemáticos
+mechanism-coordinates = las coordenadas deben ser finitas
+mechanism-unknown-point = punto desconocido '{ $name }'
+mechanism-unknown-body = cuerpo desconocido '{ $name }'
+mechanism-unknown-joint = par cinemático desconocido '{ $name }'
+mechanism-duplicate-body = nombre de cuerpo repetido '{ $name }' (ground, el bastidor, ya existe sin declararlo)
+mechanism-duplicate-joint = nombre de par cinemático repetido '{ $name }'
+mechanism-cg = un cuerpo con masa necesita "cg", su centro de masas
+mechanism-not-negative = no debe ser negativo
+mechanism-gravity = debe ser [gx, gy], con valores finitos
+mechanism-vector = debe ser un vector [x, y] finito y no nulo
+mechanism-not-finite = { $function } no es finita en phi = { $phi } rad
+mechanism-negative-inertia = { $function } es negativo ({ $value } kg*m^2) en phi = { $phi } rad
+mechanism-not-steady = el ciclo no es estacionario: el trabajo neto de los pares en un ciclo es { $net_work } J (lóbulo mayor { $largest_area } J); añada un par con "balance": true o corrija las cargas
+mechanism-newton = el mecanismo no se puede montar en la entrada { $input } (paso { $step }): el lazo que pasa por { $joint } no cierra (Newton-Raphson se detuvo a { $residual } de cerrarlo; p. ej. una manivela que no cumple Grashof a la que se pide una vuelta completa)
+mechanism-locked = el mecanismo está bloqueado: sus pares cinemáticos no le dejan ningún grado de libertad (0 por el rango del jacobiano de los pares; el recuento de Grübler 3(N - 1) - 2 P_I - P_II = { $grubler }), así que ninguna entrada puede moverlo; quite un par cinemático o convierta uno en deslizadera
+mechanism-singular = el mecanismo está en una posición singular en el paso { $step } (entrada { $input }): el jacobiano de las restricciones pierde rango
+mechanism-dof =
+    el mecanismo tiene { $dof ->
+        [one] 1 grado de libertad
+       *[other] { $dof } grados de libertad
+    } pero { $inputs ->
+        [one] 1 entrada
+       *[other] { $inputs } entradas
+    }: dé una entrada por grado de libertad (un cuerpo con pocos pares cinemáticos se mueve libremente; demasiadas entradas entran en conflicto)
+mechanism-friction = el rozamiento en los pares cinemáticos no converge en la entrada { $input } (paso { $step }): los coeficientes de rozamiento son demasiado grandes para poder accionar el mecanismo ahí (autobloqueo)
+mechanism-unactuated = los actuadores { $actuators } no pueden accionar las entradas en la entrada { $input } (paso { $step }): mover las entradas no los mueve (su esfuerzo lo soportarían los pares cinemáticos); elija un actuador que el movimiento de la entrada mueva
+mechanism-not-finite-result = el cálculo produjo un número no finito; los datos son numéricamente degenerados
+
+## Los pares cinemáticos de un mecanismo
+
+joint-two-bodies = debe nombrar exactamente dos cuerpos
+joint-same-body = un par cinemático no puede unir un cuerpo consigo mismo
+joint-at = "at" es obligatorio
+joint-axis = "axis" es obligatorio para este tipo de par cinemático
+joint-gear-ratio = un engranaje necesita una relación de transmisión "ratio" finita y no nula, o "teeth": [z1, z2] (números de dientes positivos)
+joint-gear-teeth = un engranaje con módulo necesita "teeth": [z1, z2], sus números de dientes
+joint-gear-bearings = un engranaje con módulo necesita un par de rotación (su cojinete) en cada rueda, para hallar su centro
+joint-gear-friction = el rozamiento no se modela en los engranajes
+joint-length-prismatic = solo se aplica a los pares prismáticos (la longitud de una guía)
+joint-mu = debe ser un número finito ≥ 0
+joint-friction-radius = el rozamiento de un par de rotación necesita el radio "radius" del pasador
+joint-radius-revolute = solo se aplica a los pares de rotación
+joint-contact-only = solo se aplica a los pares de contacto
+
+## Un par de contacto: sus curvas y dónde se tocan
+
+contact-needs-curves = un par de contacto necesita "curves": una curva por cuerpo
+contact-two-curves = debe tener exactamente dos curvas, la del primer cuerpo y la del segundo
+contact-point-rolling = un punto no puede rodar: la rodadura necesita dos curvas
+contact-gap = las curvas no se tocan tal como están dibujadas: están a { $gap } m cerca de ({ $x }; { $y }) (deben encontrarse a menos de { $tolerance } m, 1e-6 del tamaño del mecanismo)
+contact-cross = las curvas se cortan en ({ $x }; { $y }) con un ángulo de { $angle }° en lugar de tocarse (con una tangente común): dibújelas en contacto
+contact-decimal = { $units },{ $digits }
+contact-lines = dos rectas no forman un contacto (se tocan a lo largo de toda su longitud o se cortan): use un par prismático
+contact-spline-points = debe tener de 4 a { $max } puntos
+contact-no-spline = ningún spline pasa por estos puntos
+contact-polar-positive = debe ser positivo en toda la vuelta: r({ $angle }°) = { $value }
+contact-cam-ccw = el programa de una curva de leva va en sentido antihorario: escríbalo en el ángulo antihorario (ccw) de la leva
+contact-cam-segments = una curva de leva toma un programa de tramos
+contact-cam-offset = debe ser menor que el radio de la circunferencia primitiva (círculo base + rodillo)
+contact-cam-oscillating = una curva de leva se construye para un seguidor de traslación: para uno oscilante, dibuje el perfil que da su diseño (POST /v1/cams: el profile_point de las muestras) como un spline cerrado
+
+## Las cotas de un mecanismo
+
+dimensions-too-many = como mucho { $max } cotas
+dimensions-one-of = dé exactamente una de "distance", "angle", "x" e "y"
+dimensions-two-points = debe nombrar dos puntos
+dimensions-unknown-point = punto desconocido '{ $name }' (las cotas unen puntos con nombre)
+dimensions-positive = debe ser positiva
+dimensions-conflict = no se pueden cumplir todas las cotas: esta y las que se nombran con ella (difieren en { $residual } con el menor cambio)
+dimensions-reversed = el croquis dibuja esta recta en sentido contrario: intercambie sus puntos, o sume 180° al ángulo
+
+## Las cargas de un mecanismo
+
+load-too-many = como mucho { $max } cargas
+load-needs = una carga de tipo { $type } necesita "{ $field }"
+load-not-this-type = no se aplica a este tipo de carga
+load-ground = una carga sobre el bastidor no hace nada; nombre un cuerpo móvil
+
+## Los puntos que sigue una petición
+
+track-too-many = como mucho { $max } puntos
+track-pin = '{ $point }' es el pasador de la ranura '{ $slot }': sus dos cuerpos se mueven de forma distinta allí; dé {"{"}"name": "{ $point }", "body": ...{"}"}
+track-no-body = '{ $point }' no está en ningún cuerpo (allí no hay ningún par cinemático ni centro de masas); dé {"{"}"name": "{ $point }", "body": ...{"}"}
+
+## Las entradas de un mecanismo
+
+input-ground = el bastidor (ground) no se mueve: nombre un cuerpo móvil
+input-joint-kind = una entrada debe ser un par de rotación, prismático o de contacto (la longitud de arco a lo largo de su curva)
+input-on-ground = '{ $point }' está en el bastidor: no se mueve
+input-direction-of-point = pertenece a una entrada "point"
+input-none = nombre el par cinemático "joint" de la entrada, o un punto "point" y su dirección "direction", o un cuerpo "body"
+input-one-of = nombre solo uno de "joint", "point" (con "direction") o "body"
+input-needs-direction = una entrada "point" necesita su dirección "direction" [x, y]
+input-direction = debe ser un [x, y] finito y no nulo
+input-flywheel-shaft = la entrada de un volante es su eje: un par de rotación "joint"
+input-shaft-revolute = el eje del volante debe ser un par de rotación
+input-name-shaft = nombre el eje, un par de rotación
+input-count = dé de 1 a 10 entradas
+input-steps = debe ser de 1 a { $max }
+input-same-steps = todas las entradas comparten los pasos "steps" de la primera
+input-actuators =
+    dé un actuador por entrada: { $inputs ->
+        [one] 1 entrada
+       *[other] { $inputs } entradas
+    }, { $actuators ->
+        [one] 1 actuador
+       *[other] { $actuators } actuadores
+    }
+input-own-actuator = cada entrada necesita su propio actuador: '{ $name }' ya acciona otra
+input-actuator-kind = un actuador debe ser un par de rotación (da un par) o uno prismático (da una fuerza)
+input-needs-end = una entrada en metros (un par prismático, un punto) necesita "end"
+input-speed = "speed" es obligatorio
+
+## Cinetostática: lo que pide de sus resultados, y las posiciones que un mecanismo no alcanza
+
+kinetostatics-points-track = "points" sigue los puntos de "track": indíquelos
+kinetostatics-at = { $what } en la entrada { $value } (paso { $step } de { $steps }): { $why }
+kinetostatics-at-start = { $what } en la entrada { $value } (paso { $step } de { $steps }, el inicio): { $why }
+kinetostatics-on-the-way = { $said }; en el camino hasta allí desde la configuración dibujada (la "reference" de la entrada) deja de cerrar en { $value }
+kinetostatics-value = { $value } { $unit }
+kinetostatics-value-rad = { $value } rad = { $degrees } deg
+kinetostatics-not-assembled = el mecanismo no se puede montar
+kinetostatics-loop = el lazo que pasa por { $joint } no cierra (Newton-Raphson se queda a { $residual } de cerrarlo); revise start, end y las longitudes (una manivela que no cumple Grashof, por ejemplo, no puede dar una vuelta completa)
+kinetostatics-singular = el mecanismo está en una posición singular
+kinetostatics-dead-centre = un punto muerto que la entrada no puede pasar (el jacobiano de las restricciones pierde rango)
+kinetostatics-friction = el rozamiento en los pares cinemáticos no converge
+kinetostatics-self-locking = los coeficientes de rozamiento son demasiado grandes para poder accionar el mecanismo ahí (autobloqueo)
+kinetostatics-unactuated = los actuadores no pueden accionar las entradas
+kinetostatics-unactuated-why = mover las entradas no mueve { $actuators } ahí, así que su esfuerzo lo soportarían los pares cinemáticos; nombre en "actuators" un par cinemático que el movimiento de la entrada mueva
+
+## Una leva: su seguidor, su programa, su tamaño, su velocidad y su dinámica
+
+cam-roller-radius = un seguidor de rodillo necesita su radio "roller_radius"
+cam-roller-only = solo se aplica a un seguidor de rodillo
