@@ -121,6 +121,33 @@ kinetostatics-self-locking = the friction coefficients are too large for the mec
 kinetostatics-unactuated = the actuators cannot drive the inputs
 kinetostatics-unactuated-why = moving the inputs does not move { $actuators } there, so its effort would be carried by the joints; name in "actuators" a joint the input's motion moves
 
+## Direct dynamics: its two forms, how a run ends, and a run that cannot be made
+
+dynamics-machine-or-reduced = give either "machine" or the reduced form, not both
+dynamics-reduced-or-machine = give either the reduced form ("torques" with "reduced_inertia") or "machine", not both
+dynamics-machine-required = required: give "machine" (a mechanism and its loads) or the reduced form "torques" with "reduced_inertia"
+dynamics-samples = must be 2 to { $max }
+dynamics-torques-count = must hold 1 to { $max } items
+dynamics-inertia-required = required with "torques": the reduced inertia I*(φ), kg·m²
+dynamics-at-most-seconds = must be at most { $max } s
+dynamics-max-duration = applies only with "until_angle" (the longest a run to an angle may take): a run of a "duration" ends at it
+dynamics-until-initial = must differ from the initial angle
+dynamics-duration-or-angle = give either "duration" or "until_angle", not both
+dynamics-angle-or-duration = give either "until_angle" or "duration", not both
+dynamics-duration-required = required: give "duration" (how long to run) or "until_angle" (the input angle at which to stop)
+dynamics-conserve-energy = needs every load to have a potential (springs, constant forces and torques): /machine/loads/{ $load } is { $what }
+dynamics-varying-force = a force whose magnitude varies
+dynamics-varying-torque = a torque whose value varies
+dynamics-damper = a damper
+dynamics-sliding-friction = friction in dynamics is modelled at a rolling contact ("rolling": true: it rolls while |tangential| ≤ mu·normal and slips otherwise); a sliding contact slides freely: leave it out
+dynamics-joint-friction = joint friction is not supported in dynamics
+dynamics-not-applicable = does not apply to dynamics (the motion is the result)
+dynamics-initial-once = give the first input's state once: in "initial" or in its "start"/"speed"
+dynamics-speed-constant = must be a constant: the input's speed at t = 0
+dynamics-inertia-not-positive = the reduced inertia is not positive at phi = { $phi } rad
+dynamics-integration = the integration failed at t = { $t } s: { $reason }
+dynamics-initial = the initial state cannot be assembled: { $reason }
+
 ## A cam: its follower, program, size, speed and dynamics
 
 cam-roller-radius = a roller follower needs its "roller_radius"

@@ -135,6 +135,33 @@ kinetostatics-self-locking = los coeficientes de rozamiento son demasiado grande
 kinetostatics-unactuated = los actuadores no pueden accionar las entradas
 kinetostatics-unactuated-why = mover las entradas no mueve { $actuators } ahí, así que su esfuerzo lo soportarían los pares cinemáticos; nombre en "actuators" un par cinemático que el movimiento de la entrada mueva
 
+## Dinámica directa: sus dos formas, cómo acaba una simulación, y una simulación que no se puede hacer
+
+dynamics-machine-or-reduced = dé "machine" o bien la forma reducida, no ambas
+dynamics-reduced-or-machine = dé la forma reducida ("torques" con "reduced_inertia") o bien "machine", no ambas
+dynamics-machine-required = obligatorio: dé "machine" (un mecanismo y sus cargas) o la forma reducida "torques" con "reduced_inertia"
+dynamics-samples = debe ser de 2 a { $max }
+dynamics-torques-count = debe tener de 1 a { $max } elementos
+dynamics-inertia-required = obligatorio con "torques": el momento de inercia reducido I*(φ), kg·m²
+dynamics-at-most-seconds = debe ser como mucho { $max } s
+dynamics-max-duration = solo se aplica con "until_angle" (lo más que puede durar una simulación hasta un ángulo): una simulación de duración "duration" termina al cumplirla
+dynamics-until-initial = debe ser distinto del ángulo inicial
+dynamics-duration-or-angle = dé "duration" o bien "until_angle", no ambos
+dynamics-angle-or-duration = dé "until_angle" o bien "duration", no ambos
+dynamics-duration-required = obligatorio: dé "duration" (cuánto tiempo simular) o "until_angle" (el ángulo de la entrada en el que parar)
+dynamics-conserve-energy = necesita que todas las cargas deriven de un potencial (resortes, fuerzas y pares constantes): /machine/loads/{ $load } es { $what }
+dynamics-varying-force = una fuerza de módulo variable
+dynamics-varying-torque = un par de valor variable
+dynamics-damper = un amortiguador
+dynamics-sliding-friction = en dinámica el rozamiento se modela en un contacto con rodadura ("rolling": true: rueda mientras |tangencial| ≤ mu·normal y desliza si no); un contacto deslizante desliza sin rozamiento: quítelo
+dynamics-joint-friction = el rozamiento en los pares cinemáticos no está disponible en dinámica
+dynamics-not-applicable = no se aplica a la dinámica (el movimiento es el resultado)
+dynamics-initial-once = dé el estado de la primera entrada una sola vez: en "initial" o en sus "start"/"speed"
+dynamics-speed-constant = debe ser una constante: la velocidad de la entrada en t = 0
+dynamics-inertia-not-positive = el momento de inercia reducido no es positivo en phi = { $phi } rad
+dynamics-integration = la integración falló en t = { $t } s: { $reason }
+dynamics-initial = el estado inicial no se puede montar: { $reason }
+
 ## Una leva: su seguidor, su programa, su tamaño, su velocidad y su dinámica
 
 cam-roller-radius = un seguidor de rodillo necesita su radio "roller_radius"
