@@ -150,5 +150,30 @@ dynamics-initial = the initial state cannot be assembled: { $reason }
 
 ## A cam: its follower, program, size, speed and dynamics
 
+cam-base-or-size = give "base_radius" or "size", not both
+cam-base-required = give the cam's "base_radius", or "size" to find the smallest
+cam-size = give "max_pressure_angle" and/or "min_curvature_radius"
+cam-no-base = no base radius up to 100 times the lift meets it: ask for a larger pressure angle or a smaller radius of curvature
+cam-speed = must be greater than 0 (the sense is "direction")
 cam-roller-radius = a roller follower needs its "roller_radius"
 cam-roller-only = applies to a roller follower only
+cam-not-oscillating = does not apply to an oscillating follower
+cam-not-translating = does not apply to a translating follower
+cam-needs-pivot = an oscillating follower needs its "pivot" (the distance from the cam centre to its pivot)
+cam-needs-arm = an oscillating follower needs its "arm" (from its pivot to the roller's centre, or to the face's line)
+cam-not-negative = must not be negative
+cam-mu = must be a finite number ≥ 0
+cam-friction-flat = applies to a flat face (a roller rolls; a knife's friction is not modelled)
+cam-lift-closed = must return to its start over a turn: s(0) = { $start }, s(360°) = { $end }
+cam-segments-count = must hold 1 to { $max } segments
+cam-unknown-law = unknown law '{ $law }': one of { $laws }
+cam-needs-lift = a segment that moves needs its "lift" at its end
+cam-after-previous = must be after the end of the segment before
+cam-dwell = a dwell holds the lift of the segment before
+cam-full-turn = the last segment must end at 360°
+cam-closed = the last segment must end at lift 0
+cam-gap = segment { $segment } starts at { $start } rad where the one before ends at { $expected } rad
+cam-jump = segment { $segment } starts at lift { $from } where the one before ends at { $expected }
+cam-offset = the offset { $offset } m is not inside the pitch circle (radius { $pitch } m): the follower's axis misses the cam
+cam-reach = an arm of { $arm } m pivoted { $pivot } m from the cam centre cannot start the follower on the circle of radius { $radius } m (the base circle, plus a roller's radius, or a face's distance from the pivot)
+cam-below-base = the lift goes below the base circle: s = { $lift } at θ = { $theta } rad

@@ -164,5 +164,30 @@ dynamics-initial = el estado inicial no se puede montar: { $reason }
 
 ## Una leva: su seguidor, su programa, su tamaño, su velocidad y su dinámica
 
+cam-base-or-size = dé "base_radius" o "size", no ambos
+cam-base-required = dé el radio del círculo base "base_radius" de la leva, o "size" para hallar el menor
+cam-size = dé "max_pressure_angle" y/o "min_curvature_radius"
+cam-no-base = ningún radio del círculo base de hasta 100 veces la elevación lo cumple: pida un ángulo de presión mayor o un radio de curvatura menor
+cam-speed = debe ser mayor que 0 (el sentido lo da "direction")
 cam-roller-radius = un seguidor de rodillo necesita su radio "roller_radius"
 cam-roller-only = solo se aplica a un seguidor de rodillo
+cam-not-oscillating = no se aplica a un seguidor oscilante
+cam-not-translating = no se aplica a un seguidor de traslación
+cam-needs-pivot = un seguidor oscilante necesita su "pivot" (la distancia del centro de la leva a su pivote)
+cam-needs-arm = un seguidor oscilante necesita su brazo "arm" (de su pivote al centro del rodillo, o a la recta de su cara)
+cam-not-negative = no debe ser negativo
+cam-mu = debe ser un número finito ≥ 0
+cam-friction-flat = solo se aplica a un seguidor plano (un rodillo rueda; el rozamiento de un seguidor de punta no se modela)
+cam-lift-closed = debe volver a su valor inicial en una vuelta: s(0) = { $start }; s(360°) = { $end }
+cam-segments-count = debe tener de 1 a { $max } tramos
+cam-unknown-law = ley desconocida '{ $law }': una de { $laws }
+cam-needs-lift = un tramo que se mueve necesita su elevación "lift" al final
+cam-after-previous = debe estar después del final del tramo anterior
+cam-dwell = un reposo mantiene la elevación del tramo anterior
+cam-full-turn = el último tramo debe terminar en 360°
+cam-closed = el último tramo debe terminar con elevación 0
+cam-gap = el tramo { $segment } empieza en { $start } rad donde el anterior termina en { $expected } rad
+cam-jump = el tramo { $segment } empieza con elevación { $from } donde el anterior termina con { $expected }
+cam-offset = la excentricidad { $offset } m no está dentro de la circunferencia primitiva (radio { $pitch } m): el eje del seguidor no corta la leva
+cam-reach = un brazo de { $arm } m con el pivote a { $pivot } m del centro de la leva no puede empezar con el seguidor sobre la circunferencia de radio { $radius } m (el círculo base, más el radio del rodillo, o la distancia de la cara al pivote)
+cam-below-base = la elevación baja del círculo base: s = { $lift } en θ = { $theta } rad
