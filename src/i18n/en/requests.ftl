@@ -177,3 +177,55 @@ cam-jump = segment { $segment } starts at lift { $from } where the one before en
 cam-offset = the offset { $offset } m is not inside the pitch circle (radius { $pitch } m): the follower's axis misses the cam
 cam-reach = an arm of { $arm } m pivoted { $pivot } m from the cam centre cannot start the follower on the circle of radius { $radius } m (the base circle, plus a roller's radius, or a face's distance from the pivot)
 cam-below-base = the lift goes below the base circle: s = { $lift } at θ = { $theta } rad
+
+## A rotor: its body, bearings, spin and the instants asked
+
+rotor-components = components must be finite numbers
+rotor-bearings = two different, finite positions along the axis
+rotor-symmetric = the body must be symmetric about its spin axis (its inertia would change in the frame)
+rotor-inertia-finite = must be finite numbers
+rotor-principal = principal moments [{ $first }, { $second }, { $third }] are not those of a body
+rotor-angles-or-times = give at most one of "angles" and "times"
+rotor-instants = give 1 to { $max } values
+rotor-never = the frame never reaches this angle
+
+## A gear: its module, teeth, pressure angle and proportions
+
+gear-teeth = must be a number from 1 to 10000
+gear-pressure-angle = must be between 0 and 1.5 rad
+gear-share = must be between 0 and 5 modules
+gear-overflow = a module of { $module } m overflows the gear's radii (beyond double precision)
+gear-inside-base = { $radius } m is inside the base circle ({ $base } m): there is no involute there
+gear-thickness = the thickness at { $radius } m cannot be computed in double precision
+
+## A gear train: its members, meshes, speeds and torques
+
+train-members-count = give 1 to { $max } members
+train-frame-or-repeat = '{ $name }' is the frame or repeats a member
+train-unknown-member = unknown member '{ $name }' (or 'ground')
+train-meshes-count = give 1 to { $max } meshes
+train-teeth = must be a number of teeth from 1 to 100000
+train-mesh-wheels = a mesh needs two different wheels on members other than its carrier
+train-frame-torque = the frame's torque is not an unknown of the train
+train-speeds = the train has { $dof } degree(s) of freedom: give exactly { $dof } speed(s) that fix it (given { $given })
+train-inconsistent = the given speeds cannot all hold: the meshes contradict them (residual { $residual } rad/s)
+train-torques = the train has { $dof } degree(s) of freedom: ask for exactly { $dof } unknown torque(s) (asked { $asked })
+train-torques-singular = the unknown torques cannot be found: those members do not take independent power
+train-degenerate = the train's numbers overflow (teeth, ratios or speeds too large to compute with)
+
+## Equivalent masses of a link
+
+equivalent-not-negative = must not be negative
+equivalent-cg = must be [x, y], finite
+equivalent-points = give 1 to { $max } points
+equivalent-coordinates = coordinates must be finite
+equivalent-too-far = the points are too far from G to compute with (their squared distances overflow double precision)
+
+## Mobility: a drawn mechanism or counted pairs
+
+mobility-one-of = give either "mechanism" (without inputs) or "counts"
+mobility-bodies = must be 1 to { $max } (the ground counted)
+mobility-pairs = must be 0 to { $max }
+mobility-unknown-class = unknown class '{ $class }' for a { $space } count (one of { $known })
+mobility-planar = planar
+mobility-spatial = spatial

@@ -191,3 +191,63 @@ cam-jump = el tramo { $segment } empieza con elevación { $from } donde el anter
 cam-offset = la excentricidad { $offset } m no está dentro de la circunferencia primitiva (radio { $pitch } m): el eje del seguidor no corta la leva
 cam-reach = un brazo de { $arm } m con el pivote a { $pivot } m del centro de la leva no puede empezar con el seguidor sobre la circunferencia de radio { $radius } m (el círculo base, más el radio del rodillo, o la distancia de la cara al pivote)
 cam-below-base = la elevación baja del círculo base: s = { $lift } en θ = { $theta } rad
+
+## Un rotor: su sólido, sus cojinetes, su giro y los instantes pedidos
+
+rotor-components = las componentes deben ser números finitos
+rotor-bearings = dos posiciones distintas y finitas a lo largo del eje
+rotor-symmetric = el sólido debe ser simétrico respecto a su eje de giro (si no, su momento de inercia cambiaría en los ejes del bastidor)
+rotor-inertia-finite = deben ser números finitos
+rotor-principal = los momentos principales de inercia [{ $first }; { $second }; { $third }] no son los de un sólido
+rotor-angles-or-times = dé como mucho uno de "angles" y "times"
+rotor-instants = dé de 1 a { $max } valores
+rotor-never = el bastidor nunca alcanza este ángulo
+
+## Un engranaje: su módulo, su número de dientes, su ángulo de presión y sus proporciones
+
+gear-teeth = debe ser un número de 1 a 10000
+gear-pressure-angle = debe estar entre 0 y 1,5 rad
+gear-share = debe estar entre 0 y 5 módulos
+gear-overflow = un módulo de { $module } m desborda los radios de la rueda (más allá de la doble precisión)
+gear-inside-base = { $radius } m está dentro del círculo base ({ $base } m): allí no hay evolvente
+gear-thickness = el espesor en { $radius } m no se puede calcular en doble precisión
+
+## Un tren de engranajes: sus elementos, sus engranes, sus velocidades y sus pares
+
+train-members-count = dé de 1 a { $max } elementos
+train-frame-or-repeat = '{ $name }' es el bastidor o repite un elemento
+train-unknown-member = elemento desconocido '{ $name }' (o 'ground')
+train-meshes-count = dé de 1 a { $max } engranes
+train-teeth = debe ser un número de dientes de 1 a 100000
+train-mesh-wheels = un engrane necesita dos ruedas distintas en elementos que no sean su portasatélites
+train-frame-torque = el par sobre el bastidor no es una incógnita del tren
+train-speeds =
+    el tren tiene { $dof ->
+        [one] 1 grado de libertad: dé exactamente 1 velocidad que lo fije
+       *[other] { $dof } grados de libertad: dé exactamente { $dof } velocidades que lo fijen
+    } (dadas: { $given })
+train-inconsistent = las velocidades dadas no pueden cumplirse todas: los engranes las contradicen (residuo { $residual } rad/s)
+train-torques =
+    el tren tiene { $dof ->
+        [one] 1 grado de libertad: pida exactamente 1 par desconocido
+       *[other] { $dof } grados de libertad: pida exactamente { $dof } pares desconocidos
+    } (pedidos: { $asked })
+train-torques-singular = no se pueden hallar los pares desconocidos: esos elementos no reciben potencias independientes
+train-degenerate = los números del tren desbordan (números de dientes, relaciones o velocidades demasiado grandes para calcular con ellos)
+
+## Masas equivalentes de una barra
+
+equivalent-not-negative = no debe ser negativo
+equivalent-cg = debe ser [x, y], con valores finitos
+equivalent-points = dé de 1 a { $max } puntos
+equivalent-coordinates = las coordenadas deben ser finitas
+equivalent-too-far = los puntos están demasiado lejos de G para calcular con ellos (sus distancias al cuadrado desbordan la doble precisión)
+
+## Movilidad: un mecanismo dibujado o sus pares contados
+
+mobility-one-of = dé "mechanism" (sin entradas) o bien "counts"
+mobility-bodies = debe ser de 1 a { $max } (contando el bastidor)
+mobility-pairs = debe ser de 0 a { $max }
+mobility-unknown-class = clase de par desconocida '{ $class }' para un recuento { $space } (una de { $known })
+mobility-planar = plano
+mobility-spatial = espacial
