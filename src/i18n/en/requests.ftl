@@ -229,3 +229,30 @@ mobility-pairs = must be 0 to { $max }
 mobility-unknown-class = unknown class '{ $class }' for a { $space } count (one of { $known })
 mobility-planar = planar
 mobility-spatial = spatial
+
+## A Function of the cycle angle: its form, segments, table and CSV
+
+function-one-of = give exactly one of "expr", "segments", "table" or "csv"
+function-table-only = applies to a table only
+function-parse = expression does not parse: { $why } (at character { $position })
+function-segments-count = must hold 1 to { $max } segments
+function-segment-inside = segment [{ $from }, { $to }] must lie inside [0, period = { $period }]
+function-to-after-from = "to" must be greater than "from"
+function-overlaps = overlaps segment { $other }
+function-angles-count = must hold 1 to { $max } angles
+function-rows = "angle" has { $angles } rows but "value" has { $values }
+function-repeat-first = the row at the first angle + period must repeat the first value
+function-increasing = angles must be strictly increasing
+function-angles-period = angles must lie in [0, period = { $period })
+function-spline-rows = a spline needs at least 3 rows
+function-csv-row = row { $row }: { $why }
+function-csv-numbers = row { $row }: '{ $angle }', '{ $value }' are not two finite numbers
+function-csv-rows = more than { $max } rows (the limit on a table)
+function-csv-empty = no rows of numbers: give two columns, angle and value
+
+## A request's constants
+
+constants-too-many = at most { $max } constants (has { $has })
+constants-not-name = '{ $name }' is not a name: letters, digits and _, not starting with a digit (e.g. F, r_crank)
+constants-name-length = a name has at most { $max } characters
+constants-reserved = '{ $name }' is taken by the expressions (phi, t, omega, pi, e and the functions)

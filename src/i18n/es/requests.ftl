@@ -251,3 +251,34 @@ mobility-pairs = debe ser de 0 a { $max }
 mobility-unknown-class = clase de par desconocida '{ $class }' para un recuento { $space } (una de { $known })
 mobility-planar = plano
 mobility-spatial = espacial
+
+## Una función del ángulo del ciclo: su forma, sus tramos, su tabla y su CSV
+
+function-one-of = dé exactamente uno de "expr", "segments", "table" o "csv"
+function-table-only = solo se aplica a una tabla
+function-parse = la expresión no se puede leer: { $why } (en el carácter { $position })
+function-segments-count = debe tener de 1 a { $max } tramos
+function-segment-inside = el tramo [{ $from }; { $to }] debe estar dentro de [0; period = { $period }]
+function-to-after-from = "to" debe ser mayor que "from"
+function-overlaps = se solapa con el tramo { $other }
+function-angles-count = debe tener de 1 a { $max } ángulos
+function-rows =
+    "angle" tiene { $angles ->
+        [one] 1 fila
+       *[other] { $angles } filas
+    } pero "value" tiene { $values }
+function-repeat-first = la fila del primer ángulo + el periodo debe repetir el primer valor
+function-increasing = los ángulos deben ser estrictamente crecientes
+function-angles-period = los ángulos deben estar en [0; period = { $period })
+function-spline-rows = un spline necesita al menos 3 filas
+function-csv-row = fila { $row }: { $why }
+function-csv-numbers = fila { $row }: '{ $angle }', '{ $value }' no son dos números finitos
+function-csv-rows = más de { $max } filas (el límite de una tabla)
+function-csv-empty = no hay filas de números: dé dos columnas, ángulo y valor
+
+## Las constantes de una petición
+
+constants-too-many = como mucho { $max } constantes (hay { $has })
+constants-not-name = '{ $name }' no es un nombre: letras, dígitos y _, sin empezar por un dígito (p. ej. F, r_crank)
+constants-name-length = un nombre tiene como mucho { $max } caracteres
+constants-reserved = '{ $name }' ya lo usan las expresiones (phi, t, omega, pi, e y las funciones)
