@@ -3,8 +3,9 @@
 //! number instead of rewriting formulas. Each is a number (SI) or a
 //! `"VALUE UNIT"` quantity, read in SI.
 
-use super::quantity::{Errors, QUANTITY_MAX_LENGTH, Quantity};
+use super::quantity::{Errors, QUANTITY_MAX_LENGTH, Quantity, unit_msg};
 use crate::engine::expr::is_reserved;
+use crate::i18n::Msg;
 use crate::units;
 use serde_json::Value;
 use std::collections::{BTreeMap, BTreeSet};
@@ -22,45 +23,43 @@ const MAX_NAME: usize = 64;
 pub fn read(constants: Option<&Constants>, e: &mut Errors) {
     let Some(constants) = constants else { return };
     if constants.len() > MAX_CONSTANTS {
-        e.push("/constants", format!("at most {MAX_CONSTANTS} constants (has {})", constants.len()));
+        e.say("/constants", Msg::new("constants-too-many").arg("max", MAX_CONSTANTS).arg("has", constants.len()));
         return;
     }
     let mut values = Vec::new();
     for (name, q) in constants {
         let at = format!("/constants/{}", name.replace('~', "~0").replace('/', "~1"));
         if let Err(why) = valid_name(name) {
-            e.push(&at, why);
+            e.say(&at, why);
             continue;
         }
         let value = match q {
             Quantity::Number(v) => Ok(*v),
             Quantity::Text(s) if s.chars().count() > QUANTITY_MAX_LENGTH => {
-                Err(format!("must be at most {QUANTITY_MAX_LENGTH} characters"))
+                Err(Msg::new("field-at-most-characters").arg("max", QUANTITY_MAX_LENGTH))
             }
-            Quantity::Text(s) => units::parse_quantity(s).map(|q| q.si).map_err(|err| err.to_string()),
+            Quantity::Text(s) => units::parse_quantity(s).map(|q| q.si).map_err(|err| unit_msg(&err)),
         };
         match value {
             Ok(v) if v.is_finite() => values.push((name.clone(), v)),
-            Ok(_) => e.push(&at, "must be finite"),
-            Err(why) => e.push(&at, why),
+            Ok(_) => e.say(&at, Msg::new("field-finite")),
+            Err(why) => e.say(&at, why),
         }
     }
     e.constants = values;
 }
 
-fn valid_name(name: &str) -> Result<(), String> {
+fn valid_name(name: &str) -> Result<(), Msg> {
     let mut chars = name.chars();
     let first_ok = chars.next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_');
     if !first_ok || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
-        return Err(format!(
-            "'{name}' is not a name: letters, digits and _, not starting with a digit (e.g. F, r_crank)"
-        ));
+        return Err(Msg::new("constants-not-name").arg("name", name));
     }
     if name.len() > MAX_NAME {
-        return Err(format!("a name has at most {MAX_NAME} characters"));
+        return Err(Msg::new("constants-name-length").arg("max", MAX_NAME));
     }
     if is_reserved(name) {
-        return Err(format!("'{name}' is taken by the expressions (phi, t, omega, pi, e and the functions)"));
+        return Err(Msg::new("constants-reserved").arg("name", name));
     }
     Ok(())
 }

@@ -21,7 +21,8 @@ pub fn table(text: &str, at: &str, max_rows: usize) -> Result<TableDto, FieldErr
     let (mut angle, mut value) = (Vec::new(), Vec::new());
     for (i, record) in reader.records().enumerate() {
         let row = i + 1;
-        let record = record.map_err(|e| FieldError::at(at, format!("row {row}: {e}")))?;
+        let record =
+            record.map_err(|e| FieldError::said(at, Msg::new("function-csv-row").arg("row", row).arg("why", e)))?;
         if record.iter().all(str::is_empty) {
             continue;
         }
@@ -38,16 +39,17 @@ pub fn table(text: &str, at: &str, max_rows: usize) -> Result<TableDto, FieldErr
             // A header row: the first row, not numbers.
             _ if angle.is_empty() && row == 1 => continue,
             _ => {
-                let message = format!("row {row}: '{}', '{}' are not two finite numbers", &record[0], &record[1]);
-                return Err(FieldError::at(at, message));
+                let msg =
+                    Msg::new("function-csv-numbers").arg("row", row).arg("angle", &record[0]).arg("value", &record[1]);
+                return Err(FieldError::said(at, msg));
             }
         }
         if angle.len() > max_rows {
-            return Err(FieldError::at(at, format!("more than {max_rows} rows (the limit on a table)")));
+            return Err(FieldError::said(at, Msg::new("function-csv-rows").arg("max", max_rows)));
         }
     }
     if angle.is_empty() {
-        return Err(FieldError::at(at, "no rows of numbers: give two columns, angle and value"));
+        return Err(FieldError::said(at, Msg::new("function-csv-empty")));
     }
     Ok(TableDto { angle, value })
 }

@@ -45,7 +45,8 @@ impl Errors {
     fn function_spec(&mut self, s: &FunctionSpec, dim: Dim, period: f64, at: &str, vars: &[&str]) -> Option<Function> {
         let scale = match &s.unit {
             Some(u) if u.chars().count() > UNIT_MAX_LENGTH => {
-                return self.fail(&format!("{at}/unit"), format!("must be at most {UNIT_MAX_LENGTH} characters"));
+                let msg = Msg::new("field-at-most-characters").arg("max", UNIT_MAX_LENGTH);
+                return self.refuse(&format!("{at}/unit"), msg);
             }
             Some(u) => match units::unit_factor(u, dim) {
                 Ok(k) => k,
@@ -55,12 +56,13 @@ impl Errors {
         };
         let tabular = s.table.is_some() || s.csv.is_some();
         if s.interpolation.is_some() && !tabular {
-            self.push(&format!("{at}/interpolation"), "applies to a table only");
+            self.say(&format!("{at}/interpolation"), Msg::new("function-table-only"));
         }
         let angle_scale = match &s.angle_unit {
-            Some(_) if !tabular => return self.fail(&format!("{at}/angle_unit"), "applies to a table only"),
+            Some(_) if !tabular => return self.refuse(&format!("{at}/angle_unit"), Msg::new("function-table-only")),
             Some(u) if u.chars().count() > UNIT_MAX_LENGTH => {
-                return self.fail(&format!("{at}/angle_unit"), format!("must be at most {UNIT_MAX_LENGTH} characters"));
+                let msg = Msg::new("field-at-most-characters").arg("max", UNIT_MAX_LENGTH);
+                return self.refuse(&format!("{at}/angle_unit"), msg);
             }
             Some(u) => match units::unit_factor(u, Dim::ANGLE) {
                 Ok(k) => k,
@@ -71,7 +73,10 @@ impl Errors {
         let csv = match &s.csv {
             Some(text) => match super::function_csv::table(text, &format!("{at}/csv"), self.limits.table_rows) {
                 Ok(t) => Some(t),
-                Err(e) => return self.fail(e.pointer.as_deref().unwrap_or(at), e.message),
+                Err(e) => {
+                    self.list.push(e);
+                    return None;
+                }
             },
             None => None,
         };
@@ -79,9 +84,7 @@ impl Errors {
             (Some(t), None) => (Some(t), format!("{at}/table")),
             (None, Some(t)) => (Some(t), format!("{at}/csv")),
             (None, None) => (None, String::new()),
-            (Some(_), Some(_)) => {
-                return self.fail(at, "give exactly one of \"expr\", \"segments\", \"table\" or \"csv\"");
-            }
+            (Some(_), Some(_)) => return self.refuse(at, Msg::new("function-one-of")),
         };
         match (&s.expr, &s.segments, table) {
             (Some(e), None, None) => {
@@ -93,7 +96,7 @@ impl Errors {
                 let t = scaled_angles(t, angle_scale);
                 self.table(&t, interp, scale, period, &table_at)
             }
-            _ => self.fail(at, "give exactly one of \"expr\", \"segments\", \"table\" or \"csv\""),
+            _ => self.refuse(at, Msg::new("function-one-of")),
         }
     }
 
@@ -101,14 +104,17 @@ impl Errors {
         let (length, depth) = (self.limits.expression_length, self.limits.expression_depth);
         match Expr::compile_with(src, variables, &self.constants, length, depth) {
             Ok(e) => Some(e),
-            Err(e) => self.fail(at, format!("expression does not parse: {e}")),
+            Err(e) => {
+                let msg = Msg::new("function-parse").arg("why", &e.message).arg("position", e.position);
+                self.refuse(at, msg)
+            }
         }
     }
 
     fn segments(&mut self, segs: &[SegmentDto], scale: f64, period: f64, at: &str, vars: &[&str]) -> Option<Function> {
         let max = self.limits.segments;
         if segs.is_empty() || segs.len() > max {
-            return self.fail(at, format!("must hold 1 to {max} segments"));
+            return self.refuse(at, Msg::new("function-segments-count").arg("max", max));
         }
         let slack = 1e-12 * period;
         let mut out = Vec::with_capacity(segs.len());
@@ -119,9 +125,10 @@ impl Errors {
             let expr = self.expr_of(&s.expr, &format!("{p}/expr"), vars);
             let (Some(from), Some(to), Some(expr)) = (from, to, expr) else { continue };
             if from < -slack || to > period + slack {
-                self.push(&p, format!("segment [{from}, {to}] must lie inside [0, period = {period}]"));
+                let msg = Msg::new("function-segment-inside").num("from", from).num("to", to).num("period", period);
+                self.say(&p, msg);
             } else if to <= from {
-                self.push(&p, "\"to\" must be greater than \"from\"");
+                self.say(&p, Msg::new("function-to-after-from"));
             } else {
                 out.push((i, Segment { from: from.max(0.0), to: to.min(period), expr: expr.scaled(scale) }));
             }
@@ -129,7 +136,7 @@ impl Errors {
         out.sort_by(|a, b| a.1.from.total_cmp(&b.1.from));
         for w in out.windows(2) {
             if w[1].1.from < w[0].1.to - slack {
-                self.push(&format!("{at}/{}", w[1].0), format!("overlaps segment {}", w[0].0));
+                self.say(&format!("{at}/{}", w[1].0), Msg::new("function-overlaps").arg("other", w[0].0));
             }
         }
         (out.len() == segs.len()).then(|| Function::Segments(out.into_iter().map(|s| s.1).collect()))
@@ -139,38 +146,35 @@ impl Errors {
         let n = t.angle.len();
         let max = self.limits.table_rows;
         if n == 0 || n > max {
-            return self.fail(&format!("{at}/angle"), format!("must hold 1 to {max} angles"));
+            return self.refuse(&format!("{at}/angle"), Msg::new("function-angles-count").arg("max", max));
         }
         if t.value.len() != n {
-            return self.fail(at, format!("\"angle\" has {n} rows but \"value\" has {}", t.value.len()));
+            return self.refuse(at, Msg::new("function-rows").count("angles", n).count("values", t.value.len()));
         }
         let angles: Vec<Option<f64>> =
             t.angle.iter().enumerate().map(|(i, a)| self.angle(a, &format!("{at}/angle/{i}"))).collect();
         let mut angle: Vec<f64> = angles.into_iter().collect::<Option<_>>()?;
         let mut value: Vec<f64> = t.value.iter().map(|v| v * scale).collect();
         if let Some(i) = value.iter().position(|v| !v.is_finite()) {
-            return self.fail(&format!("{at}/value/{i}"), "must be finite");
+            return self.refuse(&format!("{at}/value/{i}"), Msg::new("field-finite"));
         }
         if n > 1 && (angle[n - 1] - (angle[0] + period)).abs() <= 1e-12 * period {
             if (value[n - 1] - value[0]).abs() > 1e-12 * value[0].abs().max(1e-300) {
-                return self.fail(
-                    &format!("{at}/value/{}", n - 1),
-                    "the row at the first angle + period must repeat the first value",
-                );
+                return self.refuse(&format!("{at}/value/{}", n - 1), Msg::new("function-repeat-first"));
             }
             angle.pop();
             value.pop();
         }
         if let Some(i) = (1..angle.len()).find(|&i| angle[i] <= angle[i - 1]) {
-            return self.fail(&format!("{at}/angle/{i}"), "angles must be strictly increasing");
+            return self.refuse(&format!("{at}/angle/{i}"), Msg::new("function-increasing"));
         }
         if angle[0] < 0.0 || *angle.last().unwrap_or(&0.0) >= period {
-            return self.fail(&format!("{at}/angle"), format!("angles must lie in [0, period = {period})"));
+            return self.refuse(&format!("{at}/angle"), Msg::new("function-angles-period").num("period", period));
         }
         let interpolation = match interp {
             InterpolationDto::Linear => Interpolation::Linear,
             InterpolationDto::Step => Interpolation::Step,
-            InterpolationDto::Spline if angle.len() < 3 => return self.fail(at, "a spline needs at least 3 rows"),
+            InterpolationDto::Spline if angle.len() < 3 => return self.refuse(at, Msg::new("function-spline-rows")),
             InterpolationDto::Spline => Interpolation::Spline,
         };
         Some(Function::Table(Table::new(angle, value, interpolation, period)))

@@ -189,3 +189,84 @@ async fn the_templates_in_spanish() {
     assert!(form.contains("Un engranaje recto") && form.contains("Número de dientes"), "{form}");
     assert!(app.get("/templates/engranaje").await.text.contains("Number of teeth"), "English by default");
 }
+
+/// The messages of each field of a bad request, by pointer, in the
+/// language asked (`es`: the header) or in English.
+async fn field_messages(app: &TestApp, path: &str, body: &Value, es: bool) -> Vec<(String, String)> {
+    let r = if es { in_spanish(app, "POST", path, Some(body)).await } else { app.post(path, body).await };
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let errors = r.json()["errors"].as_array().unwrap().clone();
+    let text = |e: &Value, k: &str| e[k].as_str().unwrap().to_string();
+    errors.iter().map(|e| (text(e, "pointer"), text(e, "message"))).collect()
+}
+
+/// A bad mechanism and a bad cam asked in Spanish: every field's message
+/// is the Spanish catalogue's (src/i18n/es/requests.ftl), at the pointer
+/// of its English one and never equal to it; JSON fields, pointers and
+/// enumerated values stay as they are, numbers take a decimal comma.
+#[tokio::test]
+async fn a_bad_mechanism_and_a_bad_cam_in_spanish() {
+    let app = TestApp::new().await;
+    let mut mechanism = request("k1_offset_slider_crank");
+    mechanism["mechanism"]["bodies"][0]["mass"] = json!("-2 kg");
+    mechanism["mechanism"]["joints"][2]["bodies"] = json!(["rod", "pistón"]);
+    mechanism["mechanism"]["joints"][3].as_object_mut().unwrap().remove("axis");
+    let cam = json!({
+        "follower": {"type": "roller"},
+        "program": [{"to": "90 deg", "law": "cicloidal", "lift": "20 mm"}, {"to": "360 deg", "law": "dwell"}],
+        "size": {"max_pressure_angle": "90 deg"},
+        "speed": "-300 rpm", "samples": 2
+    });
+    let mut open = cam.clone();
+    open["follower"] = json!({"type": "flat"});
+    open["program"] = json!({"lift": {"expr": "0.01*theta"}});
+    open["base_radius"] = json!("40 mm");
+    open.as_object_mut().unwrap().remove("size");
+    for (path, body, expected) in [
+        (
+            "/v1/kinetostatics",
+            &mechanism,
+            &[
+                ("/mechanism/bodies/0/mass", "no debe ser negativo"),
+                ("/mechanism/joints/2/bodies/1", "cuerpo desconocido 'pistón'"),
+                ("/mechanism/joints/3", "\"axis\" es obligatorio para este tipo de par cinemático"),
+            ][..],
+        ),
+        (
+            "/v1/cams",
+            &cam,
+            &[
+                ("/follower", "un seguidor de rodillo necesita su radio \"roller_radius\""),
+                (
+                    "/program/0/law",
+                    "ley desconocida 'cicloidal': una de dwell, harmonic, cycloidal, polynomial-345, polynomial-4567, modified-sine, modified-trapezoid",
+                ),
+                ("/size/max_pressure_angle", "debe estar entre 0 y 85°"),
+                ("/speed", "debe ser mayor que 0 (el sentido lo da \"direction\")"),
+                ("/samples", "debe estar entre 4 y 36000"),
+            ],
+        ),
+        (
+            "/v1/cams",
+            &open,
+            &[
+                ("/program/lift", "debe volver a su valor inicial en una vuelta: s(0) = 0; s(360°) = 0,0628"),
+                ("/speed", "debe ser mayor que 0 (el sentido lo da \"direction\")"),
+                ("/samples", "debe estar entre 4 y 36000"),
+            ],
+        ),
+    ] {
+        let es = field_messages(&app, path, body, true).await;
+        let en = field_messages(&app, path, body, false).await;
+        let pointers = |list: &[(String, String)]| list.iter().map(|(p, _)| p.clone()).collect::<Vec<_>>();
+        assert_eq!(pointers(&es), pointers(&en), "the same fields in both languages");
+        assert_eq!(es.len(), expected.len(), "{es:?}");
+        for (pointer, text) in expected {
+            let (_, message) = es.iter().find(|(p, _)| p == pointer).unwrap_or_else(|| panic!("{pointer}: {es:?}"));
+            assert!(message.starts_with(text), "{pointer}: '{message}' is not the catalogue's '{text}'");
+        }
+        for ((pointer, spanish), (_, english)) in es.iter().zip(&en) {
+            assert_ne!(spanish, english, "{pointer}: the English message left in Spanish");
+        }
+    }
+}

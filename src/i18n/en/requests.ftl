@@ -1,3 +1,258 @@
 # The kinds' requests: what a field of a mechanism, a cam, a rotor, a gear
 # train… must be, in English (Spanish in ../es/requests.ftl, same ids and
 # arguments).
+
+## A mechanism: its points, bodies, gravity and the errors of its assembly
+
+mechanism-too-many = at most { $max } bodies and { $max } joints
+mechanism-coordinates = coordinates must be finite
+mechanism-unknown-point = unknown point '{ $name }'
+mechanism-unknown-body = unknown body '{ $name }'
+mechanism-unknown-joint = unknown joint '{ $name }'
+mechanism-duplicate-body = duplicate body name '{ $name }' (ground is implicit)
+mechanism-duplicate-joint = duplicate joint name '{ $name }'
+mechanism-cg = a body with mass needs "cg"
+mechanism-not-negative = must not be negative
+mechanism-gravity = must be [gx, gy], finite
+mechanism-vector = must be a finite, non-zero vector [x, y]
+mechanism-not-finite = { $function } is not finite at phi = { $phi } rad
+mechanism-negative-inertia = { $function } is negative ({ $value } kg*m^2) at phi = { $phi } rad
+mechanism-not-steady = the cycle is not in steady state: the net work of the torques over a cycle is { $net_work } J (largest lobe { $largest_area } J); add a torque with "balance": true or correct the loads
+mechanism-newton = the mechanism cannot be assembled at input { $input } (step { $step }): the loop through { $joint } does not close (Newton-Raphson stopped { $residual } short; e.g. a non-Grashof crank asked for a full turn)
+mechanism-locked = the mechanism is locked: its joints leave it no degree of freedom (0 by the rank of the joint Jacobian; Grübler's count 3(N - 1) - 2 P_I - P_II = { $grubler }), so no input can move it; remove a joint or make one a slider
+mechanism-singular = the mechanism is at a singular position at step { $step } (input { $input }): the constraint Jacobian loses rank
+mechanism-dof = the mechanism has { $dof } degree(s) of freedom but { $inputs } input(s): give one input per degree of freedom (a body with too few joints moves freely; too many inputs conflict)
+mechanism-friction = joint friction does not settle at input { $input } (step { $step }): the friction coefficients are too large for the mechanism to be driven there (self-locking)
+mechanism-unactuated = the actuator(s) { $actuators } cannot drive the inputs at input { $input } (step { $step }): moving the inputs does not move them (their effort would be carried by the joints); choose an actuator the input's motion moves
+mechanism-not-finite-result = the computation produced a non-finite number; the input is numerically degenerate
+
+## A mechanism's joints
+
+joint-two-bodies = must name exactly two bodies
+joint-same-body = a joint cannot tie a body to itself
+joint-at = "at" is required
+joint-axis = "axis" is required for this joint type
+joint-gear-ratio = a gear needs a finite non-zero "ratio" or "teeth": [z1, z2] (positive)
+joint-gear-teeth = a gear with a module needs "teeth": [z1, z2]
+joint-gear-bearings = a gear with a module needs a revolute joint (its bearing) on each gear, to find its centre
+joint-gear-friction = friction is not modelled for gears
+joint-length-prismatic = applies to prismatic joints only (a guide's length)
+joint-mu = must be a finite number ≥ 0
+joint-friction-radius = a revolute joint's friction needs the pin "radius"
+joint-radius-revolute = applies to revolute joints only
+joint-contact-only = applies to contact joints only
+
+## A contact joint: its curves, and where they touch
+
+contact-needs-curves = a contact joint needs "curves": one per body
+contact-two-curves = must hold exactly two curves, the first body's and the second's
+contact-point-rolling = a point cannot roll: rolling needs two curves
+contact-gap = the curves do not touch as drawn: { $gap } m apart near ({ $x }, { $y }) (they must meet within { $tolerance } m, 1e-6 of the mechanism's size)
+contact-cross = the curves cross at ({ $x }, { $y }) at { $angle }° instead of touching (a common tangent): draw them touching
+contact-decimal = { $units }.{ $digits }
+contact-lines = two lines do not make a contact (they touch along their length or cross): use a prismatic joint
+contact-spline-points = must hold 4 to { $max } points
+contact-no-spline = no spline passes through these points
+contact-polar-positive = must be positive over the whole turn: r({ $angle }°) = { $value }
+contact-cam-ccw = a cam curve's program runs counter-clockwise: write it in the cam's ccw angle
+contact-cam-segments = a cam curve takes a program of segments
+contact-cam-offset = must be less than the pitch circle's radius (base + roller)
+contact-cam-oscillating = a cam curve is made for a translating follower: for an oscillating one, draw the profile its design gives (POST /v1/cams: the samples' profile_point) as a closed spline
+
+## A mechanism's dimensions
+
+dimensions-too-many = at most { $max } dimensions
+dimensions-one-of = give exactly one of "distance", "angle", "x" and "y"
+dimensions-two-points = must name two points
+dimensions-unknown-point = unknown point '{ $name }' (dimensions join named points)
+dimensions-positive = must be positive
+dimensions-conflict = the dimensions cannot all hold: this one and those named with it (off by { $residual } at the least change)
+dimensions-reversed = the sketch draws this line the other way round: swap its points, or the angle by 180°
+
+## A mechanism's loads
+
+load-too-many = at most { $max } loads
+load-needs = a { $type } load needs "{ $field }"
+load-not-this-type = does not apply to this load type
+load-ground = a load on the ground does nothing; name a moving body
+
+## The points a request follows
+
+track-too-many = at most { $max } points
+track-pin = '{ $point }' is the pin of the slot '{ $slot }': its two bodies move differently there; give {"{"}"name": "{ $point }", "body": ...{"}"}
+track-no-body = '{ $point }' is on no body (no joint or centre of mass is there); give {"{"}"name": "{ $point }", "body": ...{"}"}
+
+## A mechanism's inputs
+
+input-ground = the ground does not move: name a moving body
+input-joint-kind = an input must be a revolute, prismatic or contact joint (the arc length along its curve)
+input-on-ground = '{ $point }' is on the ground: it does not move
+input-direction-of-point = belongs to a "point" input
+input-none = name the input's "joint", or a "point" and its "direction", or a "body"
+input-one-of = name one of "joint", "point" (with "direction") or "body"
+input-needs-direction = a "point" input needs its "direction" [x, y]
+input-direction = must be a finite, non-zero [x, y]
+input-flywheel-shaft = a flywheel's input is its shaft: a revolute "joint"
+input-shaft-revolute = the flywheel's shaft must be a revolute joint
+input-name-shaft = name the shaft, a revolute joint
+input-count = give 1 to 10 inputs
+input-steps = must be 1 to { $max }
+input-same-steps = all inputs share the steps of the first
+input-actuators = give one actuator per input: { $inputs } input(s), { $actuators } actuator(s)
+input-own-actuator = each input needs its own actuator: '{ $name }' drives another
+input-actuator-kind = an actuator must be a revolute joint (a torque) or a prismatic one (a force)
+input-needs-end = an input in metres (a prismatic joint, a point) needs "end"
+input-speed = "speed" is required
+
+## Kinetostatics: what it asks of its outputs, and the positions a mechanism cannot reach
+
+kinetostatics-points-track = "points" follows the points of "track": give them
+kinetostatics-at = { $what } at input { $value } (step { $step } of { $steps }): { $why }
+kinetostatics-at-start = { $what } at input { $value } (step { $step } of { $steps }, the start): { $why }
+kinetostatics-on-the-way = { $said }; on the way there from the drawn configuration (input "reference") it stops closing at { $value }
+kinetostatics-value = { $value } { $unit }
+kinetostatics-value-rad = { $value } rad = { $degrees } deg
+kinetostatics-not-assembled = the mechanism cannot be assembled
+kinetostatics-loop = the loop through { $joint } does not close (Newton-Raphson ends { $residual } short); check start, end and the lengths (a non-Grashof crank, say, cannot make a full turn)
+kinetostatics-singular = the mechanism is at a singular position
+kinetostatics-dead-centre = a dead centre or toggle the input cannot pass (the constraint Jacobian loses rank)
+kinetostatics-friction = joint friction does not settle
+kinetostatics-self-locking = the friction coefficients are too large for the mechanism to be driven there (self-locking)
+kinetostatics-unactuated = the actuators cannot drive the inputs
+kinetostatics-unactuated-why = moving the inputs does not move { $actuators } there, so its effort would be carried by the joints; name in "actuators" a joint the input's motion moves
+
+## Direct dynamics: its two forms, how a run ends, and a run that cannot be made
+
+dynamics-machine-or-reduced = give either "machine" or the reduced form, not both
+dynamics-reduced-or-machine = give either the reduced form ("torques" with "reduced_inertia") or "machine", not both
+dynamics-machine-required = required: give "machine" (a mechanism and its loads) or the reduced form "torques" with "reduced_inertia"
+dynamics-samples = must be 2 to { $max }
+dynamics-torques-count = must hold 1 to { $max } items
+dynamics-inertia-required = required with "torques": the reduced inertia I*(φ), kg·m²
+dynamics-at-most-seconds = must be at most { $max } s
+dynamics-max-duration = applies only with "until_angle" (the longest a run to an angle may take): a run of a "duration" ends at it
+dynamics-until-initial = must differ from the initial angle
+dynamics-duration-or-angle = give either "duration" or "until_angle", not both
+dynamics-angle-or-duration = give either "until_angle" or "duration", not both
+dynamics-duration-required = required: give "duration" (how long to run) or "until_angle" (the input angle at which to stop)
+dynamics-conserve-energy = needs every load to have a potential (springs, constant forces and torques): /machine/loads/{ $load } is { $what }
+dynamics-varying-force = a force whose magnitude varies
+dynamics-varying-torque = a torque whose value varies
+dynamics-damper = a damper
+dynamics-sliding-friction = friction in dynamics is modelled at a rolling contact ("rolling": true: it rolls while |tangential| ≤ mu·normal and slips otherwise); a sliding contact slides freely: leave it out
+dynamics-joint-friction = joint friction is not supported in dynamics
+dynamics-not-applicable = does not apply to dynamics (the motion is the result)
+dynamics-initial-once = give the first input's state once: in "initial" or in its "start"/"speed"
+dynamics-speed-constant = must be a constant: the input's speed at t = 0
+dynamics-inertia-not-positive = the reduced inertia is not positive at phi = { $phi } rad
+dynamics-integration = the integration failed at t = { $t } s: { $reason }
+dynamics-initial = the initial state cannot be assembled: { $reason }
+
+## A cam: its follower, program, size, speed and dynamics
+
+cam-base-or-size = give "base_radius" or "size", not both
+cam-base-required = give the cam's "base_radius", or "size" to find the smallest
+cam-size = give "max_pressure_angle" and/or "min_curvature_radius"
+cam-no-base = no base radius up to 100 times the lift meets it: ask for a larger pressure angle or a smaller radius of curvature
+cam-speed = must be greater than 0 (the sense is "direction")
+cam-roller-radius = a roller follower needs its "roller_radius"
+cam-roller-only = applies to a roller follower only
+cam-not-oscillating = does not apply to an oscillating follower
+cam-not-translating = does not apply to a translating follower
+cam-needs-pivot = an oscillating follower needs its "pivot" (the distance from the cam centre to its pivot)
+cam-needs-arm = an oscillating follower needs its "arm" (from its pivot to the roller's centre, or to the face's line)
+cam-not-negative = must not be negative
+cam-mu = must be a finite number ≥ 0
+cam-friction-flat = applies to a flat face (a roller rolls; a knife's friction is not modelled)
+cam-lift-closed = must return to its start over a turn: s(0) = { $start }, s(360°) = { $end }
+cam-segments-count = must hold 1 to { $max } segments
+cam-unknown-law = unknown law '{ $law }': one of { $laws }
+cam-needs-lift = a segment that moves needs its "lift" at its end
+cam-after-previous = must be after the end of the segment before
+cam-dwell = a dwell holds the lift of the segment before
+cam-full-turn = the last segment must end at 360°
+cam-closed = the last segment must end at lift 0
+cam-gap = segment { $segment } starts at { $start } rad where the one before ends at { $expected } rad
+cam-jump = segment { $segment } starts at lift { $from } where the one before ends at { $expected }
+cam-offset = the offset { $offset } m is not inside the pitch circle (radius { $pitch } m): the follower's axis misses the cam
+cam-reach = an arm of { $arm } m pivoted { $pivot } m from the cam centre cannot start the follower on the circle of radius { $radius } m (the base circle, plus a roller's radius, or a face's distance from the pivot)
+cam-below-base = the lift goes below the base circle: s = { $lift } at θ = { $theta } rad
+
+## A rotor: its body, bearings, spin and the instants asked
+
+rotor-components = components must be finite numbers
+rotor-bearings = two different, finite positions along the axis
+rotor-symmetric = the body must be symmetric about its spin axis (its inertia would change in the frame)
+rotor-inertia-finite = must be finite numbers
+rotor-principal = principal moments [{ $first }, { $second }, { $third }] are not those of a body
+rotor-angles-or-times = give at most one of "angles" and "times"
+rotor-instants = give 1 to { $max } values
+rotor-never = the frame never reaches this angle
+
+## A gear: its module, teeth, pressure angle and proportions
+
+gear-teeth = must be a number from 1 to 10000
+gear-pressure-angle = must be between 0 and 1.5 rad
+gear-share = must be between 0 and 5 modules
+gear-overflow = a module of { $module } m overflows the gear's radii (beyond double precision)
+gear-inside-base = { $radius } m is inside the base circle ({ $base } m): there is no involute there
+gear-thickness = the thickness at { $radius } m cannot be computed in double precision
+
+## A gear train: its members, meshes, speeds and torques
+
+train-members-count = give 1 to { $max } members
+train-frame-or-repeat = '{ $name }' is the frame or repeats a member
+train-unknown-member = unknown member '{ $name }' (or 'ground')
+train-meshes-count = give 1 to { $max } meshes
+train-teeth = must be a number of teeth from 1 to 100000
+train-mesh-wheels = a mesh needs two different wheels on members other than its carrier
+train-frame-torque = the frame's torque is not an unknown of the train
+train-speeds = the train has { $dof } degree(s) of freedom: give exactly { $dof } speed(s) that fix it (given { $given })
+train-inconsistent = the given speeds cannot all hold: the meshes contradict them (residual { $residual } rad/s)
+train-torques = the train has { $dof } degree(s) of freedom: ask for exactly { $dof } unknown torque(s) (asked { $asked })
+train-torques-singular = the unknown torques cannot be found: those members do not take independent power
+train-degenerate = the train's numbers overflow (teeth, ratios or speeds too large to compute with)
+
+## Equivalent masses of a link
+
+equivalent-not-negative = must not be negative
+equivalent-cg = must be [x, y], finite
+equivalent-points = give 1 to { $max } points
+equivalent-coordinates = coordinates must be finite
+equivalent-too-far = the points are too far from G to compute with (their squared distances overflow double precision)
+
+## Mobility: a drawn mechanism or counted pairs
+
+mobility-one-of = give either "mechanism" (without inputs) or "counts"
+mobility-bodies = must be 1 to { $max } (the ground counted)
+mobility-pairs = must be 0 to { $max }
+mobility-unknown-class = unknown class '{ $class }' for a { $space } count (one of { $known })
+mobility-planar = planar
+mobility-spatial = spatial
+
+## A Function of the cycle angle: its form, segments, table and CSV
+
+function-one-of = give exactly one of "expr", "segments", "table" or "csv"
+function-table-only = applies to a table only
+function-parse = expression does not parse: { $why } (at character { $position })
+function-segments-count = must hold 1 to { $max } segments
+function-segment-inside = segment [{ $from }, { $to }] must lie inside [0, period = { $period }]
+function-to-after-from = "to" must be greater than "from"
+function-overlaps = overlaps segment { $other }
+function-angles-count = must hold 1 to { $max } angles
+function-rows = "angle" has { $angles } rows but "value" has { $values }
+function-repeat-first = the row at the first angle + period must repeat the first value
+function-increasing = angles must be strictly increasing
+function-angles-period = angles must lie in [0, period = { $period })
+function-spline-rows = a spline needs at least 3 rows
+function-csv-row = row { $row }: { $why }
+function-csv-numbers = row { $row }: '{ $angle }', '{ $value }' are not two finite numbers
+function-csv-rows = more than { $max } rows (the limit on a table)
+function-csv-empty = no rows of numbers: give two columns, angle and value
+
+## A request's constants
+
+constants-too-many = at most { $max } constants (has { $has })
+constants-not-name = '{ $name }' is not a name: letters, digits and _, not starting with a digit (e.g. F, r_crank)
+constants-name-length = a name has at most { $max } characters
+constants-reserved = '{ $name }' is taken by the expressions (phi, t, omega, pi, e and the functions)

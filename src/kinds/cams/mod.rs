@@ -8,13 +8,16 @@
 
 mod dxf;
 mod plots;
+mod program;
 mod request;
 mod result;
 
-pub use request::{CamFollowerDto, CamFollowerMotion, CamFollowerType, CamProgramDto, CamRequest, CamSense, program};
+pub use program::program;
+pub use request::{CamFollowerDto, CamFollowerMotion, CamFollowerType, CamProgramDto, CamRequest, CamSense};
 pub use result::CamResult;
 
 use crate::engine::cam::design::{Cam, CamError, Lift, Sample, smallest_base, turn};
+use crate::i18n::Msg;
 use crate::kind::limits::Limits;
 use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
@@ -147,12 +150,8 @@ fn sized(p: &Problem, lift: Lift, [angle, rho]: [Option<f64>; 2]) -> Result<f64,
         let rho_ok = rho.is_none_or(|r| turn.iter().filter(convex).all(|x| x.curvature_radius >= r));
         angle_ok && rho_ok && !result::undercut(follower, turn)
     };
-    smallest_base(p.cam, lift, p.samples, ok).ok_or_else(|| {
-        ApiError::Invalid(vec![FieldError::at(
-            "/size",
-            "no base radius up to 100 times the lift meets it: ask for a larger pressure angle or a smaller radius of curvature",
-        )])
-    })
+    smallest_base(p.cam, lift, p.samples, ok)
+        .ok_or_else(|| ApiError::Invalid(vec![FieldError::said("/size", Msg::new("cam-no-base"))]))
 }
 
 /// A cam that cannot be made, at its field.
@@ -162,5 +161,16 @@ fn refused(e: &CamError) -> ApiError {
         CamError::Reach { .. } => "/follower/arm",
         CamError::Negative { .. } => "/program",
     };
-    ApiError::Invalid(vec![FieldError::at(at, e.to_string())])
+    ApiError::Invalid(vec![FieldError::said(at, msg(e))])
+}
+
+/// Why a cam cannot be made, as the catalogue says it.
+fn msg(e: &CamError) -> Msg {
+    match *e {
+        CamError::Offset { offset, pitch } => Msg::new("cam-offset").num("offset", offset).num("pitch", pitch),
+        CamError::Reach { radius, pivot, arm } => {
+            Msg::new("cam-reach").num("arm", arm).num("pivot", pivot).num("radius", radius)
+        }
+        CamError::Negative { lift, theta } => Msg::new("cam-below-base").num("lift", lift).num("theta", theta),
+    }
 }

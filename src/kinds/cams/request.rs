@@ -1,8 +1,10 @@
 //! The cam design request and its conversion, every error at its pointer.
 
+use super::program::{CamSegmentDto, program};
+use crate::engine::cam::Program;
 use crate::engine::cam::design::{Cam, Follower, Guide, Loads};
-use crate::engine::cam::{Law, Program, ProgramError, Segment};
 use crate::engine::function::{Function, Side};
+use crate::i18n::Msg;
 use crate::kind::limits::Limits;
 use crate::kind::problem::FieldError;
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
@@ -13,8 +15,6 @@ use utoipa::ToSchema;
 
 /// Most samples over a turn.
 pub const MAX_SAMPLES: usize = 36_000;
-/// Most segments of a program.
-pub const MAX_SEGMENTS: usize = 100;
 
 /// A disk cam to design (see the example).
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
@@ -128,18 +128,6 @@ impl<'de> Deserialize<'de> for CamProgramDto {
     }
 }
 
-/// A segment ending at `to` with the follower at `lift` by `law`.
-#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
-pub struct CamSegmentDto {
-    #[schema(value_type = Quantity)]
-    pub to: Quantity,
-    /// dwell, harmonic, cycloidal, polynomial-345, polynomial-4567, modified-sine or modified-trapezoid.
-    pub law: String,
-    /// m, or an angle for an oscillating follower (a dwell's may be left out: it holds).
-    #[schema(value_type = Option<Quantity>)]
-    pub lift: Option<Quantity>,
-}
-
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct CamLiftDto {
     /// s(θ) in m (rad for an oscillating follower), a Function of `theta`, periodic over a turn, ≥ 0.
@@ -203,47 +191,37 @@ pub struct Problem {
     pub samples: usize,
 }
 
-/// The wire name of each law.
-pub const LAWS: [(&str, Law); 7] = [
-    ("dwell", Law::Dwell),
-    ("harmonic", Law::Harmonic),
-    ("cycloidal", Law::Cycloidal),
-    ("polynomial-345", Law::Poly345),
-    ("polynomial-4567", Law::Poly4567),
-    ("modified-sine", Law::ModifiedSine),
-    ("modified-trapezoid", Law::ModifiedTrapezoid),
-];
-
 impl CamRequest {
     pub fn to_problem(&self, limits: &Limits) -> Result<Problem, Vec<FieldError>> {
         let mut e = Errors::new(limits);
         let cam = self.cam(&mut e);
         let motion = self.motion(&mut e);
         let size = match (&self.base_radius, &self.size) {
-            (Some(_), Some(_)) => e.fail("/size", "give \"base_radius\" or \"size\", not both"),
-            (None, None) => e.fail("", "give the cam's \"base_radius\", or \"size\" to find the smallest"),
+            (Some(_), Some(_)) => e.refuse("/size", Msg::new("cam-base-or-size")),
+            (None, None) => e.refuse("", Msg::new("cam-base-required")),
             (Some(_), None) => Some(None),
             (None, Some(s)) => {
                 let angle = s.max_pressure_angle.as_ref().and_then(|q| {
                     let v = e.angle(q, "/size/max_pressure_angle")?;
-                    e.require(Some(v), |v| v > 0.0 && v < 1.5, "/size/max_pressure_angle", "must be between 0 and 85°")
+                    let between = Msg::new("field-between").num("min", 0.0).arg("max", "85°");
+                    e.require_said(Some(v), |v| v > 0.0 && v < 1.5, "/size/max_pressure_angle", between)
                 });
                 let rho = s
                     .min_curvature_radius
                     .as_ref()
                     .and_then(|q| e.positive(q, Dim::LENGTH, "/size/min_curvature_radius"));
                 if s.max_pressure_angle.is_none() && s.min_curvature_radius.is_none() {
-                    e.push("/size", "give \"max_pressure_angle\" and/or \"min_curvature_radius\"");
+                    e.say("/size", Msg::new("cam-size"));
                 }
                 Some(Some([angle, rho]))
             }
         };
         let speed = e.quantity(&self.speed, Dim::ANGULAR_SPEED, "/speed");
-        let speed = e.require(speed, |w| w > 0.0, "/speed", "must be greater than 0 (the sense is \"direction\")");
+        let speed = e.require_said(speed, |w| w > 0.0, "/speed", Msg::new("cam-speed"));
         let loads = self.dynamics.as_ref().map(|d| loads(&mut e, d, cam.map(|c| c.follower), self.oscillating()));
         let samples = self.samples.unwrap_or(360);
         if !(4..=MAX_SAMPLES).contains(&samples) {
-            e.push("/samples", format!("must be between 4 and {MAX_SAMPLES}"));
+            e.say("/samples", Msg::new("field-between").arg("min", 4).arg("max", MAX_SAMPLES));
         }
         if !e.list.is_empty() {
             return Err(e.list);
@@ -263,8 +241,8 @@ impl CamRequest {
             (CamFollowerType::Roller, Some(r)) => {
                 e.positive(r, Dim::LENGTH, "/follower/roller_radius").map(Follower::Roller)
             }
-            (CamFollowerType::Roller, None) => e.fail("/follower", "a roller follower needs its \"roller_radius\""),
-            (_, Some(_)) => e.fail("/follower/roller_radius", "applies to a roller follower only"),
+            (CamFollowerType::Roller, None) => e.refuse("/follower", Msg::new("cam-roller-radius")),
+            (_, Some(_)) => e.refuse("/follower/roller_radius", Msg::new("cam-roller-only")),
             (CamFollowerType::Flat, None) => Some(Follower::Flat),
             (CamFollowerType::Knife, None) => Some(Follower::Roller(0.0)),
         };
@@ -285,10 +263,10 @@ impl CamRequest {
         } else {
             ([("offset", &f.offset)].to_vec(), [("pivot", &f.pivot), ("arm", &f.arm)].to_vec())
         };
-        let motion = if oscillating { "an oscillating" } else { "a translating" };
+        let id = if oscillating { "cam-not-oscillating" } else { "cam-not-translating" };
         for (field, given) in others {
             if given.is_some() {
-                e.push(&format!("/follower/{field}"), format!("does not apply to {motion} follower"));
+                e.say(&format!("/follower/{field}"), Msg::new(id));
             }
         }
         if !oscillating {
@@ -299,19 +277,10 @@ impl CamRequest {
             let (field, q) = mine[k];
             let at = format!("/follower/{field}");
             match q {
-                None => e.fail(
-                    "/follower",
-                    format!(
-                        "an oscillating follower needs its \"{field}\" ({})",
-                        [
-                            "the distance from the cam centre to its pivot",
-                            "from its pivot to the roller's centre, or to the face's line"
-                        ][k]
-                    ),
-                ),
+                None => e.refuse("/follower", Msg::new(["cam-needs-pivot", "cam-needs-arm"][k])),
                 Some(q) if k == 1 && f.kind == CamFollowerType::Flat => {
                     let v = e.quantity(q, Dim::LENGTH, &at);
-                    e.require(v, |v| v >= 0.0, &at, "must not be negative")
+                    e.require_said(v, |v| v >= 0.0, &at, Msg::new("cam-not-negative"))
                 }
                 Some(q) => e.positive(q, Dim::LENGTH, &at),
             }
@@ -334,10 +303,7 @@ impl CamRequest {
                 let s = e.function_of(&l.lift, self.lift_dim(), TAU, "/program/lift", &["theta"])?;
                 let (a, b) = (s.eval(0.0, Side::Right), s.eval(TAU, Side::Left));
                 if (a - b).abs() > 1e-9 * a.abs().max(b.abs()).max(1e-3) {
-                    return e.fail(
-                        "/program/lift",
-                        format!("must return to its start over a turn: s(0) = {a}, s(360°) = {b}"),
-                    );
+                    return e.refuse("/program/lift", Msg::new("cam-lift-closed").num("start", a).num("end", b));
                 }
                 let d1 = s.derivative();
                 let d2 = d1.derivative();
@@ -347,59 +313,6 @@ impl CamRequest {
             CamProgramDto::Segments(list) => {
                 program(e, list, "/program", self.lift_dim()).map(|(p, names)| Motion::Program(p, names))
             }
-        }
-    }
-}
-
-/// A program of segments at pointer `at` (`/program`), with each segment's law's name.
-pub fn program(e: &mut Errors, list: &[CamSegmentDto], at: &str, lift: Dim) -> Option<(Program, Vec<&'static str>)> {
-    let root = at;
-    if list.is_empty() || list.len() > MAX_SEGMENTS {
-        return e.fail(root, format!("must hold 1 to {MAX_SEGMENTS} segments"));
-    }
-    let (mut start, mut from, mut segments, mut names) = (0.0, 0.0, Vec::new(), Vec::new());
-    for (k, s) in list.iter().enumerate() {
-        let at = format!("{root}/{k}");
-        let to = e.angle(&s.to, &format!("{at}/to"));
-        let law = match LAWS.iter().find(|(name, _)| *name == s.law) {
-            Some(&(name, law)) => Some((name, law)),
-            None => e.fail(
-                &format!("{at}/law"),
-                format!("unknown law '{}': one of {}", s.law, LAWS.map(|(n, _)| n).join(", ")),
-            ),
-        };
-        let lift = match (&s.lift, law) {
-            (Some(q), _) if lift == Dim::ANGLE => e.angle(q, &format!("{at}/lift")),
-            (Some(q), _) => e.quantity(q, lift, &format!("{at}/lift")),
-            (None, Some((_, Law::Dwell))) => Some(from),
-            (None, Some(_)) => e.fail(&at, "a segment that moves needs its \"lift\" at its end"),
-            (None, None) => None,
-        };
-        let (Some(to), Some((name, law)), Some(lift)) = (to, law, lift) else { return None };
-        segments.push(Segment { law, start, span: to - start, from, to: lift });
-        names.push(name);
-        (start, from) = (to, lift);
-    }
-    match Program::new(segments) {
-        Ok(p) => Some((p, names)),
-        Err(err) => {
-            let last = list.len() - 1;
-            let (at, message) = match err {
-                ProgramError::Empty { segment, .. } => {
-                    (format!("{root}/{segment}/to"), "must be after the end of the segment before".to_string())
-                }
-                ProgramError::MovingDwell { segment, .. } => {
-                    (format!("{root}/{segment}/lift"), "a dwell holds the lift of the segment before".into())
-                }
-                ProgramError::NotATurn { .. } => {
-                    (format!("/program/{last}/to"), "the last segment must end at 360°".into())
-                }
-                ProgramError::NotClosed { .. } => {
-                    (format!("/program/{last}/lift"), "the last segment must end at lift 0".into())
-                }
-                other => ("/program".to_string(), other.to_string()),
-            };
-            e.fail(&at, message)
         }
     }
 }
@@ -418,12 +331,12 @@ fn loads(
         [Dim::MASS, Dim::STIFFNESS, Dim::FORCE]
     };
     let mass = e.quantity(&d.follower_mass, inertia, "/dynamics/follower_mass");
-    let mass = e.require(mass, |m| m >= 0.0, "/dynamics/follower_mass", "must not be negative");
+    let mass = e.require_said(mass, |m| m >= 0.0, "/dynamics/follower_mass", Msg::new("cam-not-negative"));
     let (stiffness, preload) = match &d.spring {
         None => (Some(0.0), Some(0.0)),
         Some(s) => {
             let k = e.quantity(&s.stiffness, stiffness, "/dynamics/spring/stiffness");
-            let k = e.require(k, |k| k >= 0.0, "/dynamics/spring/stiffness", "must not be negative");
+            let k = e.require_said(k, |k| k >= 0.0, "/dynamics/spring/stiffness", Msg::new("cam-not-negative"));
             let f0 = s.preload.as_ref().map_or(Some(0.0), |q| e.quantity(q, force, "/dynamics/spring/preload"));
             (k, f0)
         }
@@ -435,10 +348,8 @@ fn loads(
     let mu = match (&d.friction, follower) {
         (None, _) => Some(0.0),
         (Some(f), Some(Follower::Flat)) if f.mu.is_finite() && f.mu >= 0.0 => Some(f.mu),
-        (Some(_), Some(Follower::Flat)) => e.fail("/dynamics/friction/mu", "must be a finite number ≥ 0"),
-        (Some(_), _) => {
-            e.fail("/dynamics/friction", "applies to a flat face (a roller rolls; a knife's friction is not modelled)")
-        }
+        (Some(_), Some(Follower::Flat)) => e.refuse("/dynamics/friction/mu", Msg::new("cam-mu")),
+        (Some(_), _) => e.refuse("/dynamics/friction", Msg::new("cam-friction-flat")),
     };
     Some((Loads { mass: mass?, stiffness: stiffness?, preload: preload?, mu: mu? }, force?))
 }

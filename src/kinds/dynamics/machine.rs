@@ -6,6 +6,7 @@ use crate::engine::dynamics::mechanism::MechanismSolution;
 use crate::engine::kinetostatics::Load;
 use crate::engine::kinetostatics::Motion;
 use crate::engine::model::{Driver, JointKind, Mechanism};
+use crate::i18n::Msg;
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
 use crate::kinds::mechanism::track::{PointState, TrackDto, Tracked, resolve, states};
 use crate::kinds::mechanism::{Assembled, MechanismDto, coordinate};
@@ -72,14 +73,12 @@ fn check_energy(e: &mut Errors, asked: Option<bool>, loads: &[Load]) {
     let Some(k) = loads.iter().position(|l| !l.has_potential()) else { return };
     if asked == Some(true) {
         let what = match loads[k] {
-            Load::Force { .. } => "a force whose magnitude varies",
-            Load::Torque { .. } => "a torque whose value varies",
-            _ => "a damper",
+            Load::Force { .. } => "dynamics-varying-force",
+            Load::Torque { .. } => "dynamics-varying-torque",
+            _ => "dynamics-damper",
         };
-        e.push(
-            "/machine/conserve_energy",
-            format!("needs every load to have a potential (springs, constant forces and torques): /machine/loads/{k} is {what}"),
-        );
+        let msg = Msg::new("dynamics-conserve-energy").arg("load", k).with("what", Msg::new(what));
+        e.say("/machine/conserve_energy", msg);
     }
 }
 
@@ -93,15 +92,11 @@ impl DynamicsMachine {
         for (k, j) in mechanism.joints.iter().enumerate() {
             let rolling = matches!(&j.kind, JointKind::Contact(c) if c.rolling);
             if j.friction.is_some() && !rolling {
-                e.push(
-                    &format!("/machine/mechanism/joints/{k}/friction"),
-                    if matches!(j.kind, JointKind::Contact(_)) {
-                        "friction in dynamics is modelled at a rolling contact (\"rolling\": true: it rolls while \
-                         |tangential| ≤ mu·normal and slips otherwise); a sliding contact slides freely: leave it out"
-                    } else {
-                        "joint friction is not supported in dynamics"
-                    },
-                );
+                let id = match j.kind {
+                    JointKind::Contact(_) => "dynamics-sliding-friction",
+                    _ => "dynamics-joint-friction",
+                };
+                e.say(&format!("/machine/mechanism/joints/{k}/friction"), Msg::new(id));
             }
         }
         let (inputs, many) = match &self.input {
@@ -109,7 +104,7 @@ impl DynamicsMachine {
             Inputs::Many(v) => (v.clone(), true),
         };
         if inputs.is_empty() || inputs.len() > 10 {
-            e.push("/machine/input", "give 1 to 10 inputs");
+            e.say("/machine/input", Msg::new("input-count"));
         }
         let mut drivers = Vec::new();
         let mut states = Vec::new();
@@ -149,7 +144,7 @@ fn free_input(
         ("steps", input.steps.is_some()),
     ];
     for (name, _) in unused.iter().filter(|u| u.1) {
-        e.push(&format!("{at}/{name}"), "does not apply to dynamics (the motion is the result)");
+        e.say(&format!("{at}/{name}"), Msg::new("dynamics-not-applicable"));
     }
     let coordinate = coordinate(e, parts, input, at);
     let length = coordinate.is_some_and(|c| c.1);
@@ -158,7 +153,7 @@ fn free_input(
     let reference = input.reference.as_ref().map_or(Some(0.0), |q| value(e, q, &format!("{at}/reference")));
     let from_initial = initial.is_some_and(|i| i.angle.is_some() || i.speed.is_some());
     if from_initial && (input.start.is_some() || input.speed.is_some()) {
-        e.push("/initial", "give the first input's state once: in \"initial\" or in its \"start\"/\"speed\"");
+        e.say("/initial", Msg::new("dynamics-initial-once"));
     }
     let start = match (initial.and_then(|i| i.angle.as_ref()), &input.start) {
         (Some(q), _) => value(e, q, "/initial/angle"),
@@ -168,9 +163,7 @@ fn free_input(
     let speed = match (initial.and_then(|i| i.speed.as_ref()), &input.speed) {
         (Some(q), _) => e.quantity(q, rate, "/initial/speed"),
         (None, Some(FunctionDto::Constant(q))) => e.quantity(q, rate, &format!("{at}/speed")),
-        (None, Some(FunctionDto::Spec(_))) => {
-            e.fail(&format!("{at}/speed"), "must be a constant: the input's speed at t = 0")
-        }
+        (None, Some(FunctionDto::Spec(_))) => e.refuse(&format!("{at}/speed"), Msg::new("dynamics-speed-constant")),
         (None, None) => Some(0.0),
     };
     let driver = Driver { coordinate: coordinate?.0, reference: reference?, actuator: None };

@@ -3,26 +3,25 @@
 
 mod machine;
 mod plots;
+mod refused;
+mod request;
 mod result;
 
-use crate::engine::Deadline;
-use crate::engine::dynamics::mechanism::{self, MechanismProblem};
-use crate::engine::dynamics::{DynamicsError, End, Integrator, KEPT_BYTES, ReducedProblem, solve};
-use crate::engine::function::Function;
+use crate::engine::dynamics::mechanism;
+use crate::engine::dynamics::{Integrator, solve};
 use crate::i18n::Msg;
-use crate::kind::constants::{self, Constants};
+use crate::kind::constants::Constants;
 use crate::kind::limits::Limits;
 use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
-use crate::kind::quantity::{Errors, FunctionDto, Quantity};
+use crate::kind::quantity::{FunctionDto, Quantity};
 use crate::kind::validated;
 use crate::kind::{Kind, Table, unit_in};
 use crate::kinds::mechanism::contact_warnings;
-use crate::units::Dim;
-use machine::Report;
+use refused::invalid;
+use request::Problem;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
-use std::f64::consts::PI;
 use utoipa::ToSchema;
 
 pub use machine::{DynamicsMachine, InputState, MachineDynamics, MachineSample};
@@ -282,40 +281,6 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
     }
 }
 
-/// A failed integration as a 422 at the field it comes from; a spent budget
-/// as such, naming the 8th-order method where the 5th-order one ran.
-fn invalid(e: DynamicsError, dopri5: bool) -> ApiError {
-    let pointer = match e {
-        DynamicsError::NonPositiveInertia { .. } => "/reduced_inertia",
-        DynamicsError::Initial { .. } => "/machine/input",
-        DynamicsError::Budget { .. } if dopri5 => {
-            let hint = "; for a long smooth run at a tight tolerance, \"integrator\": \"dop853\" takes far fewer steps";
-            return ApiError::OverBudget(format!("{e}{hint}"));
-        }
-        DynamicsError::Budget { .. } => return ApiError::OverBudget(e.to_string()),
-        DynamicsError::Integration { .. } => "",
-    };
-    ApiError::Invalid(vec![FieldError::at(pointer, e.to_string())])
-}
-
-/// A validated request.
-enum Problem {
-    Reduced(ReducedProblem),
-    /// With the joint and body names.
-    /// The mechanism problem, and what its result reports beside the solution.
-    Machine(MechanismProblem, Report),
-}
-
-/// The settings both forms share, validated (defaults stand in for invalid
-/// values: the errors then discard the problem).
-struct Common {
-    period: f64,
-    tolerance: f64,
-    samples: usize,
-    /// The job's compute budget, counted from the start of the conversion.
-    deadline: Deadline,
-}
-
 impl DynamicsRequest {
     /// The result with its "not reached" warning (the first a solution
     /// carries) in the request's words: `until_angle` and `max_duration` as
@@ -329,164 +294,5 @@ impl DynamicsRequest {
             result.notes.reword(0, said);
         }
         result
-    }
-
-    fn to_problem(&self, limits: &Limits) -> Result<Problem, Vec<FieldError>> {
-        let mut e = Errors::new(limits);
-        constants::read(self.constants.as_ref(), &mut e);
-        let c = self.common(&mut e);
-        let reduced = !self.torques.is_empty() || self.reduced_inertia.is_some();
-        let problem = match (&self.machine, reduced) {
-            (Some(m), false) => self.machine_problem(&mut e, m, &c),
-            (None, true) => self.reduced_problem(&mut e, &c),
-            (Some(_), true) => {
-                let form = if self.torques.is_empty() { "/reduced_inertia" } else { "/torques" };
-                e.push("/machine", "give either \"machine\" or the reduced form, not both");
-                e.fail(form, "give either the reduced form (\"torques\" with \"reduced_inertia\") or \"machine\", not both")
-            }
-            (None, false) => e.fail(
-                "/machine",
-                "required: give \"machine\" (a mechanism and its loads) or the reduced form \"torques\" with \"reduced_inertia\"",
-            ),
-        };
-        match problem {
-            Some(problem) if e.list.is_empty() => Ok(problem),
-            _ => Err(e.list),
-        }
-    }
-
-    fn common(&self, e: &mut Errors) -> Common {
-        let period = match &self.period {
-            Some(q) => {
-                let p = e.angle(q, "/period");
-                e.require(p, |p| p > 0.0, "/period", "must be greater than 0")
-            }
-            None => None,
-        };
-        let tolerance = match self.tolerance {
-            Some(t) if !(1e-14..=1e-2).contains(&t) => e.fail("/tolerance", "must be between 1e-14 and 1e-2"),
-            t => t,
-        };
-        let max = e.limits.samples;
-        let samples = match self.samples {
-            Some(n) if !(2..=max).contains(&n) => e.fail("/samples", format!("must be 2 to {max}")),
-            n => n,
-        };
-        Common {
-            period: period.unwrap_or(2.0 * PI),
-            tolerance: tolerance.unwrap_or(1e-9),
-            samples: samples.unwrap_or(DEFAULT_SAMPLES),
-            deadline: Deadline::after(e.limits.budget),
-        }
-    }
-
-    fn reduced_problem(&self, e: &mut Errors, c: &Common) -> Option<Problem> {
-        let period = c.period;
-        if self.torques.is_empty() || self.torques.len() > 100 {
-            e.push("/torques", "must hold 1 to 100 items");
-        }
-        let torques: Vec<Option<(Function, f64)>> = self
-            .torques
-            .iter()
-            .enumerate()
-            .map(|(i, t)| {
-                e.short(&t.name, 200, &format!("/torques/{i}/name"));
-                let ratio = match t.ratio {
-                    Some(k) if !(k.is_finite() && k != 0.0) => {
-                        e.fail(&format!("/torques/{i}/ratio"), "must be a finite, non-zero number")
-                    }
-                    k => Some(k.unwrap_or(1.0)),
-                };
-                let f = e.function_of(
-                    &t.value,
-                    Dim::TORQUE,
-                    period,
-                    &format!("/torques/{i}/value"),
-                    &["phi", "omega", "t"],
-                );
-                Some((f?, ratio?))
-            })
-            .collect();
-        let inertia = match &self.reduced_inertia {
-            Some(f) => e.function(f, Dim::INERTIA, period, "/reduced_inertia"),
-            None => e.fail("/reduced_inertia", "required with \"torques\": the reduced inertia I*(φ), kg·m²"),
-        };
-        let initial = self.initial.as_ref();
-        let angle0 = initial.and_then(|i| i.angle.as_ref()).map_or(Some(0.0), |q| e.angle(q, "/initial/angle"));
-        let speed0 = initial
-            .and_then(|i| i.speed.as_ref())
-            .map_or(Some(0.0), |q| e.quantity(q, Dim::ANGULAR_SPEED, "/initial/speed"));
-        let end = self.end(e, angle0.unwrap_or(0.0));
-        let torques: Option<Vec<_>> = torques.into_iter().collect();
-        Some(Problem::Reduced(ReducedProblem {
-            torques: torques?,
-            inertia: inertia?,
-            period,
-            angle0: angle0?,
-            speed0: speed0?,
-            end: end?,
-            tolerance: c.tolerance,
-            integrator: IntegratorChoice::engine(self.integrator),
-            samples: c.samples,
-            kept_bytes: KEPT_BYTES,
-            deadline: c.deadline,
-        }))
-    }
-
-    fn machine_problem(&self, e: &mut Errors, m: &DynamicsMachine, c: &Common) -> Option<Problem> {
-        let parts = m.convert(e, self.initial.as_ref(), c.period);
-        let angle0 = parts.as_ref().and_then(|p| p.initial.first()).map_or(0.0, |s| s[0]);
-        let end = self.end(e, angle0)?;
-        let parts = parts?;
-        let problem = MechanismProblem {
-            mechanism: parts.mechanism,
-            loads: parts.loads,
-            period: c.period,
-            initial: parts.initial,
-            end,
-            tolerance: c.tolerance,
-            integrator: IntegratorChoice::engine(self.integrator),
-            conserve_energy: m.conserve_energy,
-            samples: c.samples,
-            kept_bytes: KEPT_BYTES,
-            deadline: c.deadline,
-            reactions: m.reactions.unwrap_or(true),
-            motion: !parts.report.tracked.is_empty(),
-        };
-        Some(Problem::Machine(problem, parts.report))
-    }
-
-    fn end(&self, e: &mut Errors, angle0: f64) -> Option<End> {
-        let time = |e: &mut Errors, q: &Quantity, at: &str| {
-            let t = e.positive(q, Dim::TIME, at);
-            e.require(t, |t| t <= MAX_DURATION, at, &format!("must be at most {MAX_DURATION} s"))
-        };
-        match (&self.duration, &self.until_angle) {
-            (Some(_), None) if self.max_duration.is_some() => e.fail(
-                "/max_duration",
-                "applies only with \"until_angle\" (the longest a run to an angle may take): a run of a \"duration\" \
-                 ends at it",
-            ),
-            (Some(d), None) => time(e, d, "/duration").map(End::Duration),
-            (None, Some(a)) => {
-                let angle = e.angle(a, "/until_angle")?;
-                if angle == angle0 {
-                    return e.fail("/until_angle", "must differ from the initial angle");
-                }
-                let max_time = match &self.max_duration {
-                    Some(q) => time(e, q, "/max_duration")?,
-                    None => DEFAULT_MAX_DURATION,
-                };
-                Some(End::UntilAngle { angle, max_time })
-            }
-            (Some(_), Some(_)) => {
-                e.push("/duration", "give either \"duration\" or \"until_angle\", not both");
-                e.fail("/until_angle", "give either \"until_angle\" or \"duration\", not both")
-            }
-            (None, None) => e.fail(
-                "/duration",
-                "required: give \"duration\" (how long to run) or \"until_angle\" (the input angle at which to stop)",
-            ),
-        }
     }
 }

@@ -1,6 +1,7 @@
 //! `POST /v1/equivalent-masses`: point masses equivalent to a rigid link.
 
 use crate::engine::equivalent::equivalent_masses;
+use crate::i18n::Msg;
 use crate::kind::Kind;
 use crate::kind::limits::Limits;
 use crate::kind::problem::{ApiError, FieldError};
@@ -71,9 +72,7 @@ fn compute(request: &EquivalentRequest, unknown: Vec<FieldError>) -> Result<Equi
     let (mass, inertia, points) = validated(unknown, request.validate())?;
     let e = equivalent_masses(mass, inertia, &points);
     if !(e.residual.is_finite() && e.masses.iter().all(|m| m.is_finite())) {
-        let message =
-            "the points are too far from G to compute with (their squared distances overflow double precision)";
-        return Err(ApiError::Invalid(vec![FieldError::at("/points", message)]));
+        return Err(ApiError::Invalid(vec![FieldError::said("/points", Msg::new("equivalent-too-far"))]));
     }
     let complete = e.residual <= 1e-9;
     let mut warnings = Vec::new();
@@ -100,16 +99,16 @@ impl EquivalentRequest {
         let mut e = Errors::default();
         let mass = e.positive(&self.mass, Dim::MASS, "/mass");
         let inertia = e.quantity(&self.inertia, Dim::INERTIA, "/inertia");
-        let inertia = e.require(inertia, |i| i >= 0.0, "/inertia", "must not be negative");
+        let inertia = e.require_said(inertia, |i| i >= 0.0, "/inertia", Msg::new("equivalent-not-negative"));
         let cg = match self.cg.as_slice() {
             [x, y] if x.is_finite() && y.is_finite() => Some([*x, *y]),
-            _ => e.fail("/cg", "must be [x, y], finite"),
+            _ => e.refuse("/cg", Msg::new("equivalent-cg")),
         };
         if self.points.is_empty() || self.points.len() > 20 {
-            e.push("/points", "give 1 to 20 points");
+            e.say("/points", Msg::new("equivalent-points").arg("max", 20));
         }
         if let Some(name) = self.points.iter().find(|(_, p)| !p.iter().all(|v| v.is_finite())).map(|(n, _)| n) {
-            e.push(&format!("/points/{}", crate::kind::problem::escape(name)), "coordinates must be finite");
+            e.say(&format!("/points/{}", crate::kind::problem::escape(name)), Msg::new("equivalent-coordinates"));
         }
         match (mass, inertia, cg) {
             (Some(m), Some(i), Some(g)) if e.list.is_empty() => {

@@ -2,10 +2,11 @@
 //! ordinary or epicyclic gear train.
 
 use crate::engine::gear_train::{Mesh, Train, TrainError};
+use crate::i18n::Msg;
 use crate::kind::Kind;
 use crate::kind::limits::Limits;
 use crate::kind::problem::{ApiError, FieldError};
-use crate::kind::quantity::{Errors, Quantity};
+use crate::kind::quantity::{Errors, Quantity, figures};
 use crate::kind::validated;
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
@@ -131,7 +132,7 @@ fn compute(request: &TrainRequest, unknown: Vec<FieldError>) -> Result<TrainResu
             TrainError::Torques { .. } | TrainError::TorquesSingular => "/unknown_torques",
             TrainError::Degenerate => "/meshes",
         };
-        ApiError::Invalid(vec![FieldError::at(at, e.to_string())])
+        ApiError::Invalid(vec![FieldError::said(at, msg(&e))])
     })?;
     let members = request
         .members
@@ -152,15 +153,26 @@ fn compute(request: &TrainRequest, unknown: Vec<FieldError>) -> Result<TrainResu
     })
 }
 
+/// Why a train cannot be solved, as the catalogue says it.
+fn msg(e: &TrainError) -> Msg {
+    match *e {
+        TrainError::Speeds { dof, given } => Msg::new("train-speeds").count("dof", dof).count("given", given),
+        TrainError::Inconsistent { residual } => Msg::new("train-inconsistent").num("residual", figures(residual, 4)),
+        TrainError::Torques { dof, asked } => Msg::new("train-torques").count("dof", dof).count("asked", asked),
+        TrainError::TorquesSingular => Msg::new("train-torques-singular"),
+        TrainError::Degenerate => Msg::new("train-degenerate"),
+    }
+}
+
 impl TrainRequest {
     fn to_train(&self) -> Result<Parts, Vec<FieldError>> {
         let mut e = Errors::default();
         if self.members.is_empty() || self.members.len() > MAX_MEMBERS {
-            e.push("/members", format!("give 1 to {MAX_MEMBERS} members"));
+            e.say("/members", Msg::new("train-members-count").arg("max", MAX_MEMBERS));
         }
         for (k, name) in self.members.iter().enumerate() {
             if name == "ground" || self.members[..k].contains(name) {
-                e.push(&format!("/members/{k}"), format!("'{name}' is the frame or repeats a member"));
+                e.say(&format!("/members/{k}"), Msg::new("train-frame-or-repeat").arg("name", name));
             }
         }
         let member = |e: &mut Errors, name: &str, at: &str| -> Option<usize> {
@@ -169,11 +181,11 @@ impl TrainRequest {
             }
             match self.members.iter().position(|m| m == name) {
                 Some(k) => Some(k + 1),
-                None => e.fail(at, format!("unknown member '{name}' (or 'ground')")),
+                None => e.refuse(at, Msg::new("train-unknown-member").arg("name", name)),
             }
         };
         if self.meshes.is_empty() || self.meshes.len() > MAX_MEMBERS {
-            e.push("/meshes", format!("give 1 to {MAX_MEMBERS} meshes"));
+            e.say("/meshes", Msg::new("train-meshes-count").arg("max", MAX_MEMBERS));
         }
         let mut meshes = Vec::new();
         for (k, m) in self.meshes.iter().enumerate() {
@@ -181,14 +193,14 @@ impl TrainRequest {
             let teeth = |e: &mut Errors, z: f64, field: &str| {
                 (z.is_finite() && (1.0..=100_000.0).contains(&z))
                     .then_some(z)
-                    .or_else(|| e.fail(&format!("{at}/{field}"), "must be a number of teeth from 1 to 100000"))
+                    .or_else(|| e.refuse(&format!("{at}/{field}"), Msg::new("train-teeth")))
             };
             let (a, za) = (member(&mut e, &m.a, &format!("{at}/a")), teeth(&mut e, m.teeth_a, "teeth_a"));
             let (b, zb) = (member(&mut e, &m.b, &format!("{at}/b")), teeth(&mut e, m.teeth_b, "teeth_b"));
             let carrier = member(&mut e, m.carrier.as_deref().unwrap_or("ground"), &format!("{at}/carrier"));
             if let (Some(a), Some(teeth_a), Some(b), Some(teeth_b), Some(carrier)) = (a, za, b, zb, carrier) {
                 if a == b || a == carrier || b == carrier {
-                    e.push(&at, "a mesh needs two different wheels on members other than its carrier");
+                    e.say(&at, Msg::new("train-mesh-wheels"));
                 }
                 meshes.push(Mesh { a, teeth_a, b, teeth_b, carrier, internal: m.internal.unwrap_or(false) });
             }
@@ -201,7 +213,7 @@ impl TrainRequest {
             .filter_map(|(k, name)| member(&mut e, name, &format!("/unknown_torques/{k}")))
             .collect();
         if asked.contains(&0) {
-            e.push("/unknown_torques", "the frame's torque is not an unknown of the train");
+            e.say("/unknown_torques", Msg::new("train-frame-torque"));
         }
         if !e.list.is_empty() {
             return Err(e.list);

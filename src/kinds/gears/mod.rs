@@ -3,6 +3,7 @@
 use crate::engine::gears::Gear;
 mod plots;
 
+use crate::i18n::Msg;
 use crate::kind::Kind;
 use crate::kind::limits::Limits;
 use crate::kind::plots::Plots;
@@ -88,19 +89,19 @@ fn compute(request: &GearRequest, unknown: Vec<FieldError>) -> Result<GearResult
     // A module near the largest double (1e308) overflows the radii: refused, not answered as nulls.
     let overflow = |v: f64| !(v.is_finite() && (v * 4.0).is_finite());
     if [radii.pitch, radii.base, radii.tip, radii.root].into_iter().any(overflow) {
-        let message = format!("a module of {} m overflows the gear's radii (beyond double precision)", gear.module);
-        return Err(ApiError::Invalid(vec![FieldError::at("/module", message)]));
+        let msg = Msg::new("gear-overflow").num("module", gear.module);
+        return Err(ApiError::Invalid(vec![FieldError::said("/module", msg)]));
     }
     let at = radius.unwrap_or(radii.tip);
     let Some(t) = gear.thickness_at(at) else {
-        let message = format!("{at} m is inside the base circle ({} m): there is no involute there", radii.base);
-        return Err(ApiError::Invalid(vec![FieldError::at(if radius.is_some() { "/radius" } else { "" }, message)]));
+        let msg = Msg::new("gear-inside-base").num("radius", at).num("base", radii.base);
+        return Err(ApiError::Invalid(vec![FieldError::said(if radius.is_some() { "/radius" } else { "" }, msg)]));
     };
     if ![t.radius, t.thickness, t.pressure_angle].into_iter().all(f64::is_finite) {
-        let message = format!("the thickness at {at} m cannot be computed in double precision");
-        return Err(ApiError::Invalid(vec![FieldError::at(
+        let msg = Msg::new("gear-thickness").num("radius", at);
+        return Err(ApiError::Invalid(vec![FieldError::said(
             if radius.is_some() { "/radius" } else { "/module" },
-            message,
+            msg,
         )]));
     }
     let mut warnings = if t.thickness <= 0.0 {
@@ -134,17 +135,17 @@ impl GearRequest {
         let mut e = Errors::default();
         let module = e.positive(&self.module, Dim::LENGTH, "/module");
         if !(self.teeth.is_finite() && self.teeth >= 1.0 && self.teeth <= 10_000.0) {
-            e.push("/teeth", "must be a number from 1 to 10000");
+            e.say("/teeth", Msg::new("gear-teeth"));
         }
         let pressure_angle = match &self.pressure_angle {
             Some(q) => {
                 let a = e.angle(q, "/pressure_angle");
-                e.require(a, |a| a > 0.0 && a < 1.5, "/pressure_angle", "must be between 0 and 1.5 rad")
+                e.require_said(a, |a| a > 0.0 && a < 1.5, "/pressure_angle", Msg::new("gear-pressure-angle"))
             }
             None => Some(20f64.to_radians()),
         };
         let share = |e: &mut Errors, v: Option<f64>, default: f64, at: &str| match v {
-            Some(x) if !(x.is_finite() && (0.0..=5.0).contains(&x)) => e.fail(at, "must be between 0 and 5 modules"),
+            Some(x) if !(x.is_finite() && (0.0..=5.0).contains(&x)) => e.refuse(at, Msg::new("gear-share")),
             x => Some(x.unwrap_or(default)),
         };
         let addendum = share(&mut e, self.addendum, 1.0, "/addendum");

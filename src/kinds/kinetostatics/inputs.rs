@@ -4,6 +4,7 @@
 
 use crate::engine::function::{Function, Side};
 use crate::engine::model::{Driver, JointKind, Mechanism};
+use crate::i18n::Msg;
 use crate::kind::quantity::{Errors, Quantity};
 use crate::kinds::mechanism::{InputDto, MechanismDto, coordinate};
 use crate::units::Dim;
@@ -25,29 +26,26 @@ pub fn positions(
     let mut linear = Vec::new();
     let steps = inputs.first().and_then(|i| i.steps).unwrap_or(DEFAULT_STEPS);
     if inputs.is_empty() || inputs.len() > 10 {
-        e.push("/input", "give 1 to 10 inputs");
+        e.say("/input", Msg::new("input-count"));
     }
     let max = e.limits.steps;
     if steps == 0 || steps > max {
-        e.push(if many { "/input/0/steps" } else { "/input/steps" }, format!("must be 1 to {max}"));
+        e.say(if many { "/input/0/steps" } else { "/input/steps" }, Msg::new("input-steps").arg("max", max));
     }
     if let Some(a) = actuators.filter(|a| a.len() != inputs.len()) {
-        e.push(
-            "/actuators",
-            format!("give one actuator per input: {} input(s), {} actuator(s)", inputs.len(), a.len()),
-        );
+        e.say("/actuators", Msg::new("input-actuators").count("inputs", inputs.len()).count("actuators", a.len()));
     }
     for (k, input) in inputs.iter().enumerate() {
         let at = if many { format!("/input/{k}") } else { "/input".to_string() };
         if k > 0 && input.steps.is_some_and(|s| s != steps) {
-            e.push(&format!("{at}/steps"), "all inputs share the steps of the first");
+            e.say(&format!("{at}/steps"), Msg::new("input-same-steps"));
         }
         let Some((coordinate, length)) = coordinate(e, parts, input, &at) else { continue };
         let named = actuators.filter(|a| a.len() == inputs.len()).map(|a| (a[k].as_str(), format!("/actuators/{k}")));
         let actuator = named.and_then(|named| actuator(e, m, named));
         if let Some(a) = actuator.filter(|a| drivers.iter().any(|d: &Driver| d.actuator == Some(*a))) {
             let name = &m.joints[a].name;
-            e.push(&format!("/actuators/{k}"), format!("each input needs its own actuator: '{name}' drives another"));
+            e.say(&format!("/actuators/{k}"), Msg::new("input-own-actuator").arg("name", name));
         }
         if let Some((reference, range)) = input_range(e, input, length, &at) {
             drivers.push(Driver { coordinate, reference, actuator });
@@ -68,8 +66,8 @@ pub fn positions(
 fn actuator(e: &mut Errors, m: &Mechanism, (name, at): (&str, String)) -> Option<usize> {
     match m.joints.iter().position(|j| j.name == name) {
         Some(k) if matches!(m.joints[k].kind, JointKind::Revolute | JointKind::Prismatic { .. }) => Some(k),
-        Some(_) => e.fail(&at, "an actuator must be a revolute joint (a torque) or a prismatic one (a force)"),
-        None => e.fail(&at, format!("unknown joint '{name}'")),
+        Some(_) => e.refuse(&at, Msg::new("input-actuator-kind")),
+        None => e.refuse(&at, Msg::new("mechanism-unknown-joint").arg("name", name)),
     }
 }
 
@@ -106,11 +104,11 @@ fn input_range(e: &mut Errors, input: &InputDto, prismatic: bool, at: &str) -> O
     let end = match value(e, &input.end, "end")? {
         Some(v) => v,
         None if !prismatic => start + 2.0 * PI,
-        None => return e.fail(at, "an input in metres (a prismatic joint, a point) needs \"end\""),
+        None => return e.refuse(at, Msg::new("input-needs-end")),
     };
     let reference = value(e, &input.reference, "reference")?.unwrap_or(0.0);
     let period = if prismatic { (end - start).abs().max(f64::MIN_POSITIVE) } else { 2.0 * PI };
-    let Some(speed) = &input.speed else { return e.fail(at, "\"speed\" is required") };
+    let Some(speed) = &input.speed else { return e.refuse(at, Msg::new("input-speed")) };
     let speed = e.function(speed, speed_dim, period, &format!("{at}/speed"))?;
     let acceleration = match &input.acceleration {
         Some(q) => Some(e.quantity(q, accel_dim, &format!("{at}/acceleration"))?),

@@ -4,10 +4,10 @@
 //! `/input/end` for one further along the range).
 
 use crate::engine::EngineError;
+use crate::i18n::Msg;
 use crate::kind::problem::{ApiError, FieldError};
-use crate::kind::quantity::Quantity;
-use crate::kind::{engine_error, engine_failure};
-use crate::kinds::mechanism::InputDto;
+use crate::kind::quantity::{Quantity, figures};
+use crate::kinds::mechanism::{InputDto, engine_msg};
 use crate::units::{self, Dim};
 
 /// How the first input was written: where it is and in which unit.
@@ -36,75 +36,69 @@ impl Written {
         Self { at, unit, steps: positions.len(), start }
     }
 
-    /// `value` (SI) in the written unit, to 6 significant digits; radians
-    /// also in degrees.
-    pub fn value(&self, si: f64) -> String {
-        let shown = format!("{} {}", six_digits(si / self.unit.1), self.unit.0);
-        if self.unit.0 == "rad" { format!("{shown} = {} deg", six_digits(si.to_degrees())) } else { shown }
-    }
-
-    /// [`Self::value`] as a message, for a warning in the asker's language.
-    pub fn said(&self, si: f64) -> crate::i18n::Msg {
-        let six = |v: f64| six_digits(v).parse().unwrap_or(v);
-        let value = six(si / self.unit.1);
-        match self.unit.0 == "rad" {
-            true => crate::i18n::Msg::new("warning-at-angle").num("value", value).num("degrees", six(si.to_degrees())),
-            false => crate::i18n::Msg::new("warning-at-value").num("value", value).arg("unit", &self.unit.0),
+    /// `si` in the written unit, to 6 significant digits (radians also in
+    /// degrees), as the catalogue says it, its numbers in the asker's language.
+    pub fn said(&self, si: f64) -> Msg {
+        let shown = |v: f64| six_digits(v).parse().unwrap_or(v);
+        match self.unit.0.as_str() {
+            "rad" => Msg::new("kinetostatics-value-rad").num("value", shown(si)).num("degrees", shown(si.to_degrees())),
+            unit => Msg::new("kinetostatics-value").num("value", shown(si / self.unit.1)).arg("unit", unit),
         }
     }
 
     /// An engine error as the answer, positions quoted as written.
     pub fn explain(&self, e: EngineError) -> ApiError {
-        let (step, input, head, tail) = match &e {
+        let (step, input, what, why) = match &e {
             EngineError::NewtonDiverged { step, input, residual, joint } => (
                 *step,
                 *input,
-                "the mechanism cannot be assembled",
-                format!(
-                    "the loop through {joint} does not close (Newton-Raphson ends {residual:.1e} short); check \
-                     start, end and the lengths (a non-Grashof crank, say, cannot make a full turn)"
-                ),
+                "kinetostatics-not-assembled",
+                Msg::new("kinetostatics-loop").arg("joint", joint).num("residual", figures(*residual, 2)),
             ),
-            EngineError::Singular { step, input } => (
-                *step,
-                *input,
-                "the mechanism is at a singular position",
-                "a dead centre or toggle the input cannot pass (the constraint Jacobian loses rank)".into(),
-            ),
-            EngineError::FrictionDiverged { step, input } => (
-                *step,
-                *input,
-                "joint friction does not settle",
-                "the friction coefficients are too large for the mechanism to be driven there (self-locking)".into(),
-            ),
+            EngineError::Singular { step, input } => {
+                (*step, *input, "kinetostatics-singular", Msg::new("kinetostatics-dead-centre"))
+            }
+            EngineError::FrictionDiverged { step, input } => {
+                (*step, *input, "kinetostatics-friction", Msg::new("kinetostatics-self-locking"))
+            }
             EngineError::Unactuated { step, input, actuators } => (
                 *step,
                 *input,
-                "the actuators cannot drive the inputs",
-                format!(
-                    "moving the inputs does not move {actuators} there, so its effort would be carried by the \
-                     joints; name in \"actuators\" a joint the input's motion moves"
-                ),
+                "kinetostatics-unactuated",
+                Msg::new("kinetostatics-unactuated-why").arg("actuators", actuators),
             ),
-            EngineError::Locked { .. } => return ApiError::Invalid(vec![engine_error(e, "/mechanism")]),
-            _ => return engine_failure(e, &self.at),
+            EngineError::BudgetExceeded { .. } => return ApiError::OverBudget(e.to_string()),
+            EngineError::Locked { .. } => return ApiError::Invalid(vec![refused(&e, "/mechanism")]),
+            _ => return ApiError::Invalid(vec![refused(&e, &self.at)]),
         };
-        let (field, which) = if step == 0 { ("start", ", the start") } else { ("end", "") };
+        let (field, id) = if step == 0 { ("start", "kinetostatics-at-start") } else { ("end", "kinetostatics-at") };
         let pointer = match e {
             EngineError::Unactuated { .. } => "/actuators".to_string(),
             _ => format!("{}/{field}", self.at),
         };
         let at = if step == 0 { self.start } else { input };
-        let mut message =
-            format!("{head} at input {} (step {} of {}{which}): {tail}", self.value(at), step + 1, self.steps);
+        let mut msg = Msg::new(id)
+            .with("what", Msg::new(what))
+            .with("value", self.said(at))
+            .arg("step", step + 1)
+            .arg("steps", self.steps)
+            .with("why", why);
         if step == 0 && input != self.start {
-            message += &format!(
-                "; on the way there from the drawn configuration (input \"reference\") it stops closing at {}",
-                self.value(input)
-            );
+            msg = Msg::new("kinetostatics-on-the-way").with("said", msg).with("value", self.said(input));
         }
-        ApiError::Invalid(vec![FieldError::at(pointer, message)])
+        ApiError::Invalid(vec![FieldError::said(pointer, msg)])
     }
+}
+
+/// An engine error without a position of its own as a field error: at the
+/// function it names, else at `fallback`.
+fn refused(e: &EngineError, fallback: &str) -> FieldError {
+    let pointer = match e {
+        EngineError::NotFinite { function, .. } | EngineError::NegativeInertia { function, .. } => function.clone(),
+        EngineError::NotFiniteResult => String::new(),
+        _ => fallback.to_string(),
+    };
+    FieldError::said(pointer, engine_msg(e))
 }
 
 /// A number to 6 significant digits, without trailing zeros.

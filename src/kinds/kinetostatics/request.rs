@@ -4,6 +4,7 @@ use super::inputs::positions;
 use super::located::Written;
 use crate::engine::kinetostatics::{Load, Outputs};
 use crate::engine::model::Mechanism;
+use crate::i18n::Msg;
 use crate::kind::constants::{self, Constants};
 use crate::kind::limits::Limits;
 use crate::kind::problem::FieldError;
@@ -124,7 +125,7 @@ impl KinetostaticsRequest {
         let track = self.track.as_deref().unwrap_or_default();
         let tracked = resolve(dto, track, &c.body_names, &mut e, "/track");
         if outputs.contains(&OutputKind::Points) && track.is_empty() {
-            e.push("/outputs", "\"points\" follows the points of \"track\": give them");
+            e.say("/outputs", Msg::new("kinetostatics-points-track"));
         }
         let mut mechanism = c.mechanism;
         let inputs = match &self.input {

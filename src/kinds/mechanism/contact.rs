@@ -9,6 +9,7 @@ use crate::engine::curves::{Curve, Face, Spline};
 use crate::engine::function::Side;
 use crate::engine::model::{Contact, Joint, JointKind};
 use crate::engine::touch::{NoTouch, touching};
+use crate::i18n::Msg;
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
 use crate::kinds::cams::{CamFollowerDto, CamFollowerMotion, CamFollowerType, CamProgramDto, CamSense, program};
 use crate::units::Dim;
@@ -122,9 +123,9 @@ pub fn contact(
     size: f64,
     at: &str,
 ) -> Option<(JointKind, [f64; 2])> {
-    let Some(list) = j.curves.as_deref() else { return e.fail(at, "a contact joint needs \"curves\": one per body") };
+    let Some(list) = j.curves.as_deref() else { return e.refuse(at, Msg::new("contact-needs-curves")) };
     if list.len() != 2 {
-        return e.fail(&format!("{at}/curves"), "must hold exactly two curves, the first body's and the second's");
+        return e.refuse(&format!("{at}/curves"), Msg::new("contact-two-curves"));
     }
     let read: Vec<Option<Curve>> =
         list.iter().enumerate().map(|(k, c)| curve(e, c, point, &format!("{at}/curves/{k}"))).collect();
@@ -135,30 +136,35 @@ pub fn contact(
         Ok(p) => {
             let rolling = j.rolling.unwrap_or(false);
             if rolling && list.iter().any(|c| matches!(c, CurveDto::Point(_))) {
-                return e.fail(&format!("{at}/rolling"), "a point cannot roll: rolling needs two curves");
+                return e.refuse(&format!("{at}/rolling"), Msg::new("contact-point-rolling"));
             }
             Some((JointKind::Contact(Box::new(Contact::new(curves, rolling, p))), p))
         }
-        Err(NoTouch::Gap { gap, point }) => e.fail(
-            &format!("{at}/curves"),
-            format!(
-                "the curves do not touch as drawn: {gap:.6e} m apart near ({:.6}, {:.6}) (they must meet within {tolerance:.1e} m, 1e-6 of the mechanism's size)",
-                point[0], point[1]
-            ),
-        ),
-        Err(NoTouch::Cross { point, angle }) => e.fail(
-            &format!("{at}/curves"),
-            format!(
-                "the curves cross at ({:.6}, {:.6}) at {:.3}° instead of touching (a common tangent): draw them touching",
-                point[0],
-                point[1],
-                angle.to_degrees()
-            ),
-        ),
-        Err(NoTouch::Lines) => e.fail(
-            &format!("{at}/curves"),
-            "two lines do not make a contact (they touch along their length or cross): use a prismatic joint",
-        ),
+        Err(NoTouch::Gap { gap, point }) => {
+            let msg = Msg::new("contact-gap")
+                .with("gap", written(format!("{gap:.6e}")))
+                .with("x", written(format!("{:.6}", point[0])))
+                .with("y", written(format!("{:.6}", point[1])))
+                .with("tolerance", written(format!("{tolerance:.1e}")));
+            e.refuse(&format!("{at}/curves"), msg)
+        }
+        Err(NoTouch::Cross { point, angle }) => {
+            let msg = Msg::new("contact-cross")
+                .with("x", written(format!("{:.6}", point[0])))
+                .with("y", written(format!("{:.6}", point[1])))
+                .with("angle", written(format!("{:.3}", angle.to_degrees())));
+            e.refuse(&format!("{at}/curves"), msg)
+        }
+        Err(NoTouch::Lines) => e.refuse(&format!("{at}/curves"), Msg::new("contact-lines")),
+    }
+}
+
+/// A number as `format!` wrote it (`1.000000e-3`, `0.250000`), its decimal
+/// mark the language's.
+fn written(text: String) -> Msg {
+    match text.split_once('.') {
+        Some((units, digits)) => Msg::new("contact-decimal").arg("units", units).arg("digits", digits),
+        None => Msg::new("text-as-is").arg("why", text),
     }
 }
 
@@ -183,14 +189,15 @@ fn curve(e: &mut Errors, c: &CurveDto, point: &PointReader, at: &str) -> Option<
         CurveDto::Spline(s) => {
             let at = format!("{at}/spline");
             if !(4..=MAX_SPLINE_POINTS).contains(&s.points.len()) {
-                return e.fail(&format!("{at}/points"), format!("must hold 4 to {MAX_SPLINE_POINTS} points"));
+                let msg = Msg::new("contact-spline-points").arg("max", MAX_SPLINE_POINTS);
+                return e.refuse(&format!("{at}/points"), msg);
             }
             if let Some(k) = s.points.iter().position(|p| !p.iter().all(|v| v.is_finite())) {
-                return e.fail(&format!("{at}/points/{k}"), "coordinates must be finite");
+                return e.refuse(&format!("{at}/points/{k}"), Msg::new("mechanism-coordinates"));
             }
             match Spline::new(s.points.clone(), s.closed.unwrap_or(false)) {
                 Some(spline) => Some(Curve::Spline(spline)),
-                None => e.fail(&format!("{at}/points"), "no spline passes through these points"),
+                None => e.refuse(&format!("{at}/points"), Msg::new("contact-no-spline")),
             }
         }
     }
@@ -210,14 +217,10 @@ fn polar(e: &mut Errors, p: &PolarDto, point: &PointReader, at: &str) -> Option<
         .map(|k| f64::from(k).to_radians())
         .find(|&psi| !matches!(rho.eval(psi, Side::Right).partial_cmp(&0.0), Some(std::cmp::Ordering::Greater)))
     {
-        return e.fail(
-            &format!("{at}/radius"),
-            format!(
-                "must be positive over the whole turn: r({:.0}°) = {}",
-                bad.to_degrees(),
-                rho.eval(bad, Side::Right)
-            ),
-        );
+        let msg = Msg::new("contact-polar-positive")
+            .num("angle", bad.to_degrees().round())
+            .num("value", rho.eval(bad, Side::Right));
+        return e.refuse(&format!("{at}/radius"), msg);
     }
     Some(Curve::polar(centre, zero[1].atan2(zero[0]), rho))
 }
@@ -231,21 +234,18 @@ fn cam(e: &mut Errors, c: &CamCurveDto, point: &PointReader, at: &str) -> Option
     };
     let face = face(e, &c.follower, &format!("{at}/follower"));
     if c.direction == Some(CamSense::Cw) {
-        e.push(
-            &format!("{at}/direction"),
-            "a cam curve's program runs counter-clockwise: write it in the cam's ccw angle",
-        );
+        e.say(&format!("{at}/direction"), Msg::new("contact-cam-ccw"));
     }
     let base = e.positive(&c.base_radius, Dim::LENGTH, &format!("{at}/base_radius"));
     let program = match &c.program {
         CamProgramDto::Segments(list) => program(e, list, &format!("{at}/program"), Dim::LENGTH).map(|(p, _)| p),
-        CamProgramDto::Lift(_) => e.fail(&format!("{at}/program"), "a cam curve takes a program of segments"),
+        CamProgramDto::Lift(_) => e.refuse(&format!("{at}/program"), Msg::new("contact-cam-segments")),
     };
     let (centre, zero, base, program, face) = (centre?, zero?, base?, program?, face?);
     if let Face::Roller { radius, offset } = face
         && offset.abs() >= base + radius
     {
-        return e.fail(&format!("{at}/follower/offset"), "must be less than the pitch circle's radius (base + roller)");
+        return e.refuse(&format!("{at}/follower/offset"), Msg::new("contact-cam-offset"));
     }
     Some(Curve::Cam { centre, zero: zero[1].atan2(zero[0]), base, face, program: Box::new(program) })
 }
@@ -254,16 +254,13 @@ fn cam(e: &mut Errors, c: &CamCurveDto, point: &PointReader, at: &str) -> Option
 /// (its radius) or a knife edge, on an axis offset from the centre.
 fn face(e: &mut Errors, f: &CamFollowerDto, at: &str) -> Option<Face> {
     if f.motion == Some(CamFollowerMotion::Oscillating) {
-        return e.fail(
-            &format!("{at}/motion"),
-            "a cam curve is made for a translating follower: for an oscillating one, draw the profile its design gives (POST /v1/cams: the samples' profile_point) as a closed spline",
-        );
+        return e.refuse(&format!("{at}/motion"), Msg::new("contact-cam-oscillating"));
     }
     let offset = f.offset.as_ref().map_or(Some(0.0), |q| e.quantity(q, Dim::LENGTH, &format!("{at}/offset")));
     let radius = match (f.kind, &f.roller_radius) {
         (CamFollowerType::Roller, Some(r)) => e.positive(r, Dim::LENGTH, &format!("{at}/roller_radius")),
-        (CamFollowerType::Roller, None) => e.fail(at, "a roller follower needs its \"roller_radius\""),
-        (_, Some(_)) => e.fail(&format!("{at}/roller_radius"), "applies to a roller follower only"),
+        (CamFollowerType::Roller, None) => e.refuse(at, Msg::new("cam-roller-radius")),
+        (_, Some(_)) => e.refuse(&format!("{at}/roller_radius"), Msg::new("cam-roller-only")),
         (_, None) => Some(0.0),
     };
     match f.kind {

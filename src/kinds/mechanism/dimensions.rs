@@ -4,7 +4,8 @@
 
 use super::MechanismDto;
 use crate::engine::sketch::{Dimension, solve};
-use crate::kind::quantity::{Errors, Quantity};
+use crate::i18n::Msg;
+use crate::kind::quantity::{Errors, Quantity, figures};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
@@ -57,7 +58,7 @@ impl MechanismDto {
         let sketch = self.points.clone().unwrap_or_default();
         let names: Vec<&String> = sketch.keys().collect();
         if dimensions.len() > MAX_DIMENSIONS {
-            return e.fail(&format!("{at}/dimensions"), format!("at most {MAX_DIMENSIONS} dimensions"));
+            return e.refuse(&format!("{at}/dimensions"), Msg::new("dimensions-too-many").arg("max", MAX_DIMENSIONS));
         }
         let read: Vec<Option<Dimension>> =
             dimensions.iter().enumerate().map(|(k, d)| read(e, d, &names, &format!("{at}/dimensions/{k}"))).collect();
@@ -73,20 +74,14 @@ impl MechanismDto {
             Ok(s) => s,
             Err(c) => {
                 for k in c.dimensions {
-                    let message = format!(
-                        "the dimensions cannot all hold: this one and those named with it (off by {:.3e} at the least change)",
-                        c.residual
-                    );
-                    e.push(&format!("{at}/dimensions/{k}"), message);
+                    let msg = Msg::new("dimensions-conflict").num("residual", figures(c.residual, 4));
+                    e.say(&format!("{at}/dimensions/{k}"), msg);
                 }
                 return None;
             }
         };
         for k in crate::engine::sketch::reversed(&solved.points, &read) {
-            e.push(
-                &format!("{at}/dimensions/{k}/angle"),
-                "the sketch draws this line the other way round: swap its points, or the angle by 180°",
-            );
+            e.say(&format!("{at}/dimensions/{k}/angle"), Msg::new("dimensions-reversed"));
         }
         let mut warnings = Vec::new();
         if solved.underdetermined {
@@ -104,20 +99,20 @@ fn read(e: &mut Errors, d: &DimensionDto, names: &[&String], at: &str) -> Option
         names
             .iter()
             .position(|n| *n == name)
-            .or_else(|| e.fail(ptr, format!("unknown point '{name}' (dimensions join named points)")))
+            .or_else(|| e.refuse(ptr, Msg::new("dimensions-unknown-point").arg("name", name)))
     };
     let pair = |e: &mut Errors, list: &Vec<String>, ptr: &str| match list.as_slice() {
         [p, q] => Some([index(e, p, &format!("{ptr}/0"))?, index(e, q, &format!("{ptr}/1"))?]),
-        _ => e.fail(ptr, "must name two points"),
+        _ => e.refuse(ptr, Msg::new("dimensions-two-points")),
     };
     let given = [d.distance.is_some(), d.angle.is_some(), d.x.is_some(), d.y.is_some()].iter().filter(|g| **g).count();
     if given != 1 {
-        return e.fail(at, "give exactly one of \"distance\", \"angle\", \"x\" and \"y\"");
+        return e.refuse(at, Msg::new("dimensions-one-of"));
     }
     let value = format!("{at}/value");
     if let Some(list) = &d.distance {
         let v = e.quantity(&d.value, Dim::LENGTH, &value);
-        let v = e.require(v, |v| v > 0.0, &value, "must be positive");
+        let v = e.require_said(v, |v| v > 0.0, &value, Msg::new("dimensions-positive"));
         return Some(Dimension::Distance(pair(e, list, &format!("{at}/distance"))?, v?));
     }
     if let Some(list) = &d.angle {

@@ -6,6 +6,7 @@ use super::track::body_of;
 use super::{Coords, JointType, MechanismDto, PointRef, body_id};
 use crate::engine::kinetostatics::Load;
 use crate::engine::model::{Coordinate, Driver, JointKind, Mechanism};
+use crate::i18n::Msg;
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
 use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
@@ -111,50 +112,45 @@ pub fn coordinate(
     at: &str,
 ) -> Option<(Coordinate, bool)> {
     let moving = |e: &mut Errors, name: &str, ptr: &str| match body_id(names, name) {
-        Some(0) => e.fail(ptr, "the ground does not move: name a moving body"),
+        Some(0) => e.refuse(ptr, Msg::new("input-ground")),
         Some(b) => Some(b),
-        None => e.fail(ptr, format!("unknown body '{name}'")),
+        None => e.refuse(ptr, Msg::new("mechanism-unknown-body").arg("name", name)),
     };
     match (&input.joint, &input.point, &input.body) {
         (Some(joint), None, None) => {
             let Some(k) = m.joints.iter().position(|j| &j.name == joint) else {
-                return e.fail(&format!("{at}/joint"), format!("unknown joint '{joint}'"));
+                return e.refuse(&format!("{at}/joint"), Msg::new("mechanism-unknown-joint").arg("name", joint));
             };
             match m.joints[k].kind {
                 JointKind::Revolute => Some((Coordinate::Joint(k), false)),
                 JointKind::Prismatic { .. } => Some((Coordinate::Joint(k), true)),
                 // The arc length run along its first curve (a ring driven along a rim).
                 JointKind::Contact(ref c) if c.measured_side().is_some() => Some((Coordinate::Joint(k), true)),
-                _ => e.fail(
-                    &format!("{at}/joint"),
-                    "an input must be a revolute, prismatic or contact joint (the arc length along its curve)",
-                ),
+                _ => e.refuse(&format!("{at}/joint"), Msg::new("input-joint-kind")),
             }
         }
         (None, Some(point), body) => {
             let direction = unit_direction(e, input.direction, &format!("{at}/direction"));
             let Some(drawn) = dto.points.as_ref().and_then(|p| p.get(point).copied()) else {
-                return e.fail(&format!("{at}/point"), format!("unknown point '{point}'"));
+                return e.refuse(&format!("{at}/point"), Msg::new("mechanism-unknown-point").arg("name", point));
             };
             let body = match body {
                 Some(b) => moving(e, b, &format!("{at}/body")),
                 None => body_of(dto, point, names, e, &format!("{at}/point")),
             };
             if body.is_some_and(|b| b == 0 || pinned_to_ground(dto, point, &names[b])) {
-                return e.fail(&format!("{at}/point"), format!("'{point}' is on the ground: it does not move"));
+                return e.refuse(&format!("{at}/point"), Msg::new("input-on-ground").arg("point", point));
             }
             Some((Coordinate::Point { body: body?, at: drawn, direction: direction? }, true))
         }
         (None, None, Some(body)) => {
             if input.direction.is_some() {
-                e.push(&format!("{at}/direction"), "belongs to a \"point\" input");
+                e.say(&format!("{at}/direction"), Msg::new("input-direction-of-point"));
             }
             Some((Coordinate::Body(moving(e, body, &format!("{at}/body"))?), false))
         }
-        (None, None, None) => {
-            e.fail(at, "name the input's \"joint\", or a \"point\" and its \"direction\", or a \"body\"")
-        }
-        _ => e.fail(at, "name one of \"joint\", \"point\" (with \"direction\") or \"body\""),
+        (None, None, None) => e.refuse(at, Msg::new("input-none")),
+        _ => e.refuse(at, Msg::new("input-one-of")),
     }
 }
 
@@ -170,11 +166,11 @@ fn pinned_to_ground(dto: &MechanismDto, point: &str, body: &str) -> bool {
 
 /// A direction's unit vector (pointer `at`).
 fn unit_direction(e: &mut Errors, direction: Option<[f64; 2]>, at: &str) -> Option<[f64; 2]> {
-    let Some([x, y]) = direction else { return e.fail(at, "a \"point\" input needs its \"direction\" [x, y]") };
+    let Some([x, y]) = direction else { return e.refuse(at, Msg::new("input-needs-direction")) };
     let length = x.hypot(y);
     match length.is_finite() && length > 0.0 {
         true => Some([x / length, y / length]),
-        false => e.fail(at, "must be a finite, non-zero [x, y]"),
+        false => e.refuse(at, Msg::new("input-direction")),
     }
 }
 
@@ -193,14 +189,14 @@ pub fn machine_parts(
     let c = mech.convert(e, &format!("{at}/mechanism"))?;
     let mut mechanism = c.mechanism;
     if input.point.is_some() || input.body.is_some() {
-        e.push(&format!("{at}/input"), "a flywheel's input is its shaft: a revolute \"joint\"");
+        e.say(&format!("{at}/input"), Msg::new("input-flywheel-shaft"));
     }
     let shaft = input.joint.as_deref().unwrap_or_default();
     let joint = match mechanism.joints.iter().position(|j| j.name == shaft) {
         Some(j) if mechanism.joints[j].kind == JointKind::Revolute => Some(j),
-        Some(_) => e.fail(&format!("{at}/input/joint"), "the flywheel's shaft must be a revolute joint"),
-        None if input.joint.is_none() => e.fail(&format!("{at}/input/joint"), "name the shaft, a revolute joint"),
-        None => e.fail(&format!("{at}/input/joint"), format!("unknown joint '{shaft}'")),
+        Some(_) => e.refuse(&format!("{at}/input/joint"), Msg::new("input-shaft-revolute")),
+        None if input.joint.is_none() => e.refuse(&format!("{at}/input/joint"), Msg::new("input-name-shaft")),
+        None => e.refuse(&format!("{at}/input/joint"), Msg::new("mechanism-unknown-joint").arg("name", shaft)),
     };
     let reference = match &input.reference {
         Some(q) => e.angle(q, &format!("{at}/input/reference")),

@@ -4,6 +4,7 @@
 
 use super::{JointDto, JointType};
 use crate::engine::model::{Friction, JointKind};
+use crate::i18n::Msg;
 use crate::kind::quantity::Errors;
 use crate::units::Dim;
 
@@ -12,7 +13,7 @@ pub fn guide_length(e: &mut Errors, j: &JointDto, at: &str) -> Option<f64> {
     let length = j.length.as_ref()?;
     match j.kind {
         JointType::Prismatic => e.positive(length, Dim::LENGTH, &format!("{at}/length")),
-        _ => e.fail(&format!("{at}/length"), "applies to prismatic joints only (a guide's length)"),
+        _ => e.refuse(&format!("{at}/length"), Msg::new("joint-length-prismatic")),
     }
 }
 
@@ -21,27 +22,27 @@ pub fn friction(e: &mut Errors, j: &JointDto, at: &str) -> Option<Friction> {
     let f = j.friction.as_ref()?;
     let at = format!("{at}/friction");
     if !(f.mu.is_finite() && f.mu >= 0.0) {
-        return e.fail(&format!("{at}/mu"), "must be a finite number ≥ 0");
+        return e.refuse(&format!("{at}/mu"), Msg::new("joint-mu"));
     }
     match (j.kind, &f.radius) {
         (JointType::Revolute, Some(r)) => {
             e.positive(r, Dim::LENGTH, &format!("{at}/radius")).map(|radius| Friction { mu: f.mu, radius })
         }
-        (JointType::Revolute, None) => e.fail(&at, "a revolute joint's friction needs the pin \"radius\""),
+        (JointType::Revolute, None) => e.refuse(&at, Msg::new("joint-friction-radius")),
         (JointType::Prismatic | JointType::PinSlot | JointType::Contact, None) => {
             Some(Friction { mu: f.mu, radius: 0.0 })
         }
         (JointType::Prismatic | JointType::PinSlot | JointType::Contact, Some(_)) => {
-            e.fail(&format!("{at}/radius"), "applies to revolute joints only")
+            e.refuse(&format!("{at}/radius"), Msg::new("joint-radius-revolute"))
         }
-        (JointType::Gear, _) => e.fail(&at, "friction is not modelled for gears"),
+        (JointType::Gear, _) => e.refuse(&at, Msg::new("joint-gear-friction")),
     }
 }
 
 fn unit_axis(e: &mut Errors, axis: Option<&[f64]>, at: &str) -> Option<[f64; 2]> {
     match axis {
         Some(v) => unit(e, v, &format!("{at}/axis")),
-        None => e.fail(at, "\"axis\" is required for this joint type"),
+        None => e.refuse(at, Msg::new("joint-axis")),
     }
 }
 
@@ -52,7 +53,7 @@ pub fn unit(e: &mut Errors, v: &[f64], at: &str) -> Option<[f64; 2]> {
             let n = x.hypot(*y);
             Some([x / n, y / n])
         }
-        _ => e.fail(at, "must be a finite, non-zero vector [x, y]"),
+        _ => e.refuse(at, Msg::new("mechanism-vector")),
     }
 }
 
@@ -61,7 +62,7 @@ pub fn not_for_others(e: &mut Errors, j: &JointDto, at: &str) {
     if j.kind != JointType::Contact {
         for (field, given) in [("curves", j.curves.is_some()), ("rolling", j.rolling.is_some())] {
             if given {
-                e.push(&format!("{at}/{field}"), "applies to contact joints only");
+                e.say(&format!("{at}/{field}"), Msg::new("joint-contact-only"));
             }
         }
     }
@@ -78,7 +79,7 @@ pub fn joint_kind(e: &mut Errors, j: &JointDto, names: &[String], at: &str) -> O
                 None => Some(0),
                 Some(c) => match names.iter().position(|n| n == c) {
                     Some(i) => Some(i),
-                    None => e.fail(&format!("{at}/carrier"), format!("unknown body '{c}'")),
+                    None => e.refuse(&format!("{at}/carrier"), Msg::new("mechanism-unknown-body").arg("name", c)),
                 },
             };
             let ratio = match (j.ratio, j.teeth.as_deref()) {
@@ -86,7 +87,7 @@ pub fn joint_kind(e: &mut Errors, j: &JointDto, names: &[String], at: &str) -> O
                 (None, Some([z1, z2])) if *z1 > 0.0 && *z2 > 0.0 => {
                     Some(if j.internal.unwrap_or(false) { z1 / z2 } else { -z1 / z2 })
                 }
-                _ => e.fail(at, "a gear needs a finite non-zero \"ratio\" or \"teeth\": [z1, z2] (positive)"),
+                _ => e.refuse(at, Msg::new("joint-gear-ratio")),
             };
             Some(JointKind::Gear { ratio: ratio?, carrier: carrier?, pitch: None })
         }

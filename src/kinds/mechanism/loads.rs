@@ -2,6 +2,7 @@
 
 use super::{MechanismDto, PointRef, body_id};
 use crate::engine::kinetostatics::Load;
+use crate::i18n::Msg;
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
@@ -61,7 +62,7 @@ pub fn convert_loads(
     variables: &[&str],
 ) -> Vec<Load> {
     if list.len() > MAX_LOADS {
-        e.push(at, format!("at most {MAX_LOADS} loads"));
+        e.say(at, Msg::new("load-too-many").arg("max", MAX_LOADS));
         return Vec::new();
     }
     list.iter()
@@ -73,19 +74,19 @@ pub fn convert_loads(
 fn point_of(e: &mut Errors, p: &PointRef, dto: &MechanismDto, at: &str) -> Option<[f64; 2]> {
     match p {
         PointRef::Coords(c) if c.iter().all(|v| v.is_finite()) => Some(*c),
-        PointRef::Coords(_) => e.fail(at, "coordinates must be finite"),
+        PointRef::Coords(_) => e.refuse(at, Msg::new("mechanism-coordinates")),
         PointRef::Name(n) => match dto.points.as_ref().and_then(|ps| ps.get(n)) {
             Some(c) => Some(*c),
-            None => e.fail(at, format!("unknown point '{n}'")),
+            None => e.refuse(at, Msg::new("mechanism-unknown-point").arg("name", n)),
         },
     }
 }
 
 fn moving_body(e: &mut Errors, names: &[String], name: &str, at: &str) -> Option<usize> {
     match body_id(names, name) {
-        Some(0) => e.fail(at, "a load on the ground does nothing; name a moving body"),
+        Some(0) => e.refuse(at, Msg::new("load-ground")),
         Some(b) => Some(b),
-        None => e.fail(at, format!("unknown body '{name}'")),
+        None => e.refuse(at, Msg::new("mechanism-unknown-body").arg("name", name)),
     }
 }
 
@@ -121,8 +122,11 @@ fn load(
     let before = e.list.len();
     for (name, given) in present {
         match (fields.contains(&name), given) {
-            (true, false) => e.push(at, format!("a {:?} load needs \"{name}\"", l.kind).to_lowercase()),
-            (false, true) => e.push(&format!("{at}/{name}"), "does not apply to this load type"),
+            (true, false) => {
+                let kind = format!("{:?}", l.kind).to_lowercase();
+                e.say(at, Msg::new("load-needs").arg("type", kind).arg("field", name))
+            }
+            (false, true) => e.say(&format!("{at}/{name}"), Msg::new("load-not-this-type")),
             _ => {}
         }
     }
@@ -130,7 +134,8 @@ fn load(
         return None;
     }
     let ends = |e: &mut Errors, side: &str, v: &(String, PointRef)| {
-        let b = body_id(names, &v.0).or_else(|| e.fail(&format!("{at}/{side}/0"), format!("unknown body '{}'", v.0)));
+        let unknown = Msg::new("mechanism-unknown-body").arg("name", &v.0);
+        let b = body_id(names, &v.0).or_else(|| e.refuse(&format!("{at}/{side}/0"), unknown));
         let p = point_of(e, &v.1, mech, &format!("{at}/{side}/1"));
         Some((b?, p?))
     };
@@ -142,7 +147,7 @@ fn load(
                 Some([x, y]) if x.is_finite() && y.is_finite() && x.hypot(*y) > 0.0 => {
                     Some([x / x.hypot(*y), y / x.hypot(*y)])
                 }
-                _ => e.fail(&format!("{at}/direction"), "must be a finite, non-zero vector [x, y]"),
+                _ => e.refuse(&format!("{at}/direction"), Msg::new("mechanism-vector")),
             };
             let magnitude =
                 e.function_of(l.magnitude.as_ref()?, Dim::FORCE, period, &format!("{at}/magnitude"), variables);

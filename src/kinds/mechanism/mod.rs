@@ -8,7 +8,9 @@ mod energy;
 mod inputs;
 mod joints;
 mod loads;
+mod points;
 mod reactions;
+mod refused;
 pub mod track;
 
 pub use contact::{CircleDto, CurveDto, LineDto, PolarDto, SplineDto};
@@ -16,107 +18,22 @@ pub use dimensions::{Assembled, DimensionDto};
 pub use energy::EnergyDto;
 pub use inputs::{InputDto, Inputs, coordinate, machine_parts};
 pub use loads::{LoadDto, LoadType, MAX_LOADS, convert_loads};
+pub use points::{BodyPoint, Coords, PointRef};
 pub use reactions::{ContactDto, Name, ReactionDto, annotate, contact_warnings, names};
+pub use refused::engine_msg;
 
 use crate::engine::model::{Body, BodyId, Joint, JointKind, Mechanism, Pitch};
+use crate::i18n::Msg;
 use crate::kind::quantity::{Errors, Quantity};
 use crate::units::Dim;
-use serde::de::{self, Deserializer, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
-use std::fmt;
-use utoipa::openapi::RefOr;
-use utoipa::openapi::schema::{ArrayBuilder, ArrayItems, ObjectBuilder, OneOfBuilder, Schema, Type};
-use utoipa::{PartialSchema, ToSchema};
+use utoipa::ToSchema;
 
 /// Most bodies, joints or points in one mechanism.
 pub const MAX_ITEMS: usize = 200;
 /// Longest name of a point, body or joint, in characters.
 pub const NAME_MAX_LENGTH: usize = 100;
-
-/// A point: the name of a point of `points`, or coordinates [x, y] in m.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-#[serde(untagged)]
-pub enum PointRef {
-    Name(String),
-    Coords([f64; 2]),
-}
-
-struct PointVisitor;
-
-impl<'de> Visitor<'de> for PointVisitor {
-    type Value = PointRef;
-
-    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-        f.write_str("a point name or coordinates [x, y]")
-    }
-    fn visit_str<E: de::Error>(self, v: &str) -> Result<PointRef, E> {
-        Ok(PointRef::Name(v.to_string()))
-    }
-    fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<PointRef, A::Error> {
-        <[f64; 2]>::deserialize(de::value::SeqAccessDeserializer::new(seq)).map(PointRef::Coords)
-    }
-}
-
-impl<'de> Deserialize<'de> for PointRef {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        d.deserialize_any(PointVisitor)
-    }
-}
-
-impl PartialSchema for PointRef {
-    fn schema() -> RefOr<Schema> {
-        OneOfBuilder::new()
-            .item(
-                ObjectBuilder::new()
-                    .schema_type(Type::String)
-                    .max_length(Some(NAME_MAX_LENGTH))
-                    .description(Some("name of a point")),
-            )
-            .item(coords_schema())
-            .into()
-    }
-}
-impl ToSchema for PointRef {}
-
-/// `[body, point]`, a body's name and one of its points (a spring's or a
-/// damper's end), as the document states it; read as `(String, PointRef)`.
-pub struct BodyPoint;
-
-impl PartialSchema for BodyPoint {
-    fn schema() -> RefOr<Schema> {
-        let body = ObjectBuilder::new().schema_type(Type::String).max_length(Some(NAME_MAX_LENGTH));
-        let point = OneOfBuilder::new()
-            .item(ObjectBuilder::new().schema_type(Type::String).max_length(Some(NAME_MAX_LENGTH)))
-            .item(coords_schema());
-        ArrayBuilder::new()
-            .prefix_items([Schema::from(body.description(Some("a body's name"))), point.into()])
-            .items(ArrayItems::False)
-            .min_items(Some(2))
-            .max_items(Some(2))
-            .description(Some("[body, point]: a body's name, and one of its points (a name, or [x, y] in m)"))
-            .into()
-    }
-}
-impl ToSchema for BodyPoint {}
-
-/// Coordinates `[x, y]` in m, as the document states them.
-pub struct Coords;
-
-impl PartialSchema for Coords {
-    fn schema() -> RefOr<Schema> {
-        coords_schema().into()
-    }
-}
-impl ToSchema for Coords {}
-
-fn coords_schema() -> ArrayBuilder {
-    ArrayBuilder::new()
-        .items(ObjectBuilder::new().schema_type(Type::Number))
-        .min_items(Some(2))
-        .max_items(Some(2))
-        .description(Some("[x, y] in m"))
-}
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct BodyDto {
@@ -237,21 +154,21 @@ impl MechanismDto {
     pub fn convert(&self, e: &mut Errors, at: &str) -> Option<Converted> {
         let before = e.list.len();
         if self.bodies.len() > MAX_ITEMS || self.joints.len() > MAX_ITEMS {
-            e.push(at, format!("at most {MAX_ITEMS} bodies and {MAX_ITEMS} joints"));
+            e.say(at, Msg::new("mechanism-too-many").arg("max", MAX_ITEMS));
         }
         let points = self.points.clone().unwrap_or_default();
         if let Some((name, _)) = points.iter().find(|(_, p)| !p.iter().all(|v| v.is_finite())) {
-            e.push(&format!("{at}/points/{}", crate::kind::problem::escape(name)), "coordinates must be finite");
+            e.say(&format!("{at}/points/{}", crate::kind::problem::escape(name)), Msg::new("mechanism-coordinates"));
         }
         let point = |e: &mut Errors, p: &PointRef, ptr: &str| match p {
             PointRef::Coords(c) if c.iter().all(|v| v.is_finite()) => Some(*c),
-            PointRef::Coords(_) => e.fail(ptr, "coordinates must be finite"),
+            PointRef::Coords(_) => e.refuse(ptr, Msg::new("mechanism-coordinates")),
             PointRef::Name(n) if n.chars().count() > NAME_MAX_LENGTH => {
-                e.fail(ptr, format!("must be at most {NAME_MAX_LENGTH} characters"))
+                e.refuse(ptr, Msg::new("field-at-most-characters").arg("max", NAME_MAX_LENGTH))
             }
             PointRef::Name(n) => match points.get(n) {
                 Some(c) => Some(*c),
-                None => e.fail(ptr, format!("unknown point '{n}'")),
+                None => e.refuse(ptr, Msg::new("mechanism-unknown-point").arg("name", n)),
             },
         };
         let mut names = vec!["ground".to_string()];
@@ -260,14 +177,14 @@ impl MechanismDto {
             let ptr = format!("{at}/bodies/{k}");
             e.short(&b.name, NAME_MAX_LENGTH, &format!("{ptr}/name"));
             if names.contains(&b.name) {
-                e.push(&format!("{ptr}/name"), format!("duplicate body name '{}' (ground is implicit)", b.name));
+                e.say(&format!("{ptr}/name"), Msg::new("mechanism-duplicate-body").arg("name", &b.name));
             }
             names.push(b.name.clone());
             let mass = non_negative(e, b.mass.as_ref(), Dim::MASS, &format!("{ptr}/mass"));
             let inertia = non_negative(e, b.inertia.as_ref(), Dim::INERTIA, &format!("{ptr}/inertia"));
             let cg = match &b.cg {
                 Some(p) => point(e, p, &format!("{ptr}/cg")),
-                None if mass.unwrap_or(0.0) > 0.0 => e.fail(&ptr, "a body with mass needs \"cg\""),
+                None if mass.unwrap_or(0.0) > 0.0 => e.refuse(&ptr, Msg::new("mechanism-cg")),
                 None => Some(self.first_joint_point(&b.name, &points).unwrap_or([0.0, 0.0])),
             };
             bodies.push(Body {
@@ -279,7 +196,7 @@ impl MechanismDto {
         }
         let body = |e: &mut Errors, n: &str, ptr: &str| match names.iter().position(|x| x == n) {
             Some(i) => Some(i),
-            None => e.fail(ptr, format!("unknown body '{n}'")),
+            None => e.refuse(ptr, Msg::new("mechanism-unknown-body").arg("name", n)),
         };
         let size = self.size(&points);
         let mut joints = Vec::with_capacity(self.joints.len());
@@ -287,21 +204,21 @@ impl MechanismDto {
             let ptr = format!("{at}/joints/{k}");
             e.short(&j.name, NAME_MAX_LENGTH, &format!("{ptr}/name"));
             if self.joints[..k].iter().any(|o| o.name == j.name) {
-                e.push(&format!("{ptr}/name"), format!("duplicate joint name '{}'", j.name));
+                e.say(&format!("{ptr}/name"), Msg::new("mechanism-duplicate-joint").arg("name", &j.name));
             }
             if j.bodies.len() != 2 {
-                e.push(&format!("{ptr}/bodies"), "must name exactly two bodies");
+                e.say(&format!("{ptr}/bodies"), Msg::new("joint-two-bodies"));
                 continue;
             }
             let b0 = body(e, &j.bodies[0], &format!("{ptr}/bodies/0"));
             let b1 = body(e, &j.bodies[1], &format!("{ptr}/bodies/1"));
             if j.bodies[0] == j.bodies[1] {
-                e.push(&format!("{ptr}/bodies"), "a joint cannot tie a body to itself");
+                e.say(&format!("{ptr}/bodies"), Msg::new("joint-same-body"));
             }
             let at_point = match &j.at {
                 Some(p) => point(e, p, &format!("{ptr}/at")),
                 None if matches!(j.kind, JointType::Gear | JointType::Contact) => Some([0.0, 0.0]),
-                None => e.fail(&ptr, "\"at\" is required"),
+                None => e.refuse(&ptr, Msg::new("joint-at")),
             };
             let hint = j.at.as_ref().and(at_point);
             let (kind, at_point) = match j.kind {
@@ -327,7 +244,7 @@ impl MechanismDto {
         let gravity = match self.gravity.as_deref() {
             None => [0.0, 0.0],
             Some([gx, gy]) if gx.is_finite() && gy.is_finite() => [*gx, *gy],
-            Some(_) => e.fail(&format!("{at}/gravity"), "must be [gx, gy], finite").unwrap_or([0.0; 2]),
+            Some(_) => e.refuse(&format!("{at}/gravity"), Msg::new("mechanism-gravity")).unwrap_or([0.0; 2]),
         };
         (e.list.len() == before).then(|| Converted {
             mechanism: Mechanism { bodies, joints, drivers: Vec::new(), gravity },
@@ -343,7 +260,7 @@ impl MechanismDto {
         let JointKind::Gear { carrier, .. } = joints[index].kind else { return };
         let module = dto.module.as_ref().and_then(|q| e.positive(q, Dim::LENGTH, &format!("{at}/module")));
         let Some(&[z1, z2]) = dto.teeth.as_deref() else {
-            e.push(at, "a gear with a module needs \"teeth\": [z1, z2]");
+            e.say(at, Msg::new("joint-gear-teeth"));
             return;
         };
         let alpha = match &dto.pressure_angle {
@@ -362,7 +279,7 @@ impl MechanismDto {
         };
         let bodies = joints[index].bodies;
         let (Some(c1), Some(c2)) = (centre(bodies[0]), centre(bodies[1])) else {
-            e.push(at, "a gear with a module needs a revolute joint (its bearing) on each gear, to find its centre");
+            e.say(at, Msg::new("joint-gear-bearings"));
             return;
         };
         let (Some(module), Some(alpha)) = (module, alpha) else { return };
@@ -404,7 +321,7 @@ impl MechanismDto {
 
 fn non_negative(e: &mut Errors, q: Option<&Quantity>, dim: Dim, at: &str) -> Option<f64> {
     let v = q.map_or(Some(0.0), |q| e.quantity(q, dim, at))?;
-    if v >= 0.0 { Some(v) } else { e.fail(at, "must not be negative") }
+    if v >= 0.0 { Some(v) } else { e.refuse(at, Msg::new("mechanism-not-negative")) }
 }
 
 /// The id of a named body.

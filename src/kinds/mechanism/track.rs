@@ -5,6 +5,7 @@
 use super::{JointType, MechanismDto, PointRef, body_id};
 use crate::engine::kinetostatics::{point_acceleration, point_motion};
 use crate::engine::model::{BodyId, Mechanism};
+use crate::i18n::Msg;
 use crate::kind::quantity::Errors;
 use serde::de::{self, Deserializer, MapAccess, Visitor};
 use serde::{Deserialize, Serialize};
@@ -80,14 +81,16 @@ pub struct Tracked {
 /// The tracked points of `dto`, each error at `at/K`.
 pub fn resolve(dto: &MechanismDto, track: &[TrackDto], names: &[String], e: &mut Errors, at: &str) -> Vec<Tracked> {
     if track.len() > MAX_TRACKED {
-        e.push(at, format!("at most {MAX_TRACKED} points"));
+        e.say(at, Msg::new("track-too-many").arg("max", MAX_TRACKED));
         return Vec::new();
     }
     let points = dto.points.clone().unwrap_or_default();
     let drawn = |e: &mut Errors, p: &PointRef, ptr: &str| match p {
         PointRef::Coords(c) if c.iter().all(|v| v.is_finite()) => Some(*c),
-        PointRef::Coords(_) => e.fail(ptr, "coordinates must be finite"),
-        PointRef::Name(n) => points.get(n).copied().or_else(|| e.fail(ptr, format!("unknown point '{n}'"))),
+        PointRef::Coords(_) => e.refuse(ptr, Msg::new("mechanism-coordinates")),
+        PointRef::Name(n) => {
+            points.get(n).copied().or_else(|| e.refuse(ptr, Msg::new("mechanism-unknown-point").arg("name", n)))
+        }
     };
     let mut out = Vec::with_capacity(track.len());
     for (k, t) in track.iter().enumerate() {
@@ -96,8 +99,8 @@ pub fn resolve(dto: &MechanismDto, track: &[TrackDto], names: &[String], e: &mut
             TrackDto::Name(n) => drawn(e, &PointRef::Name(n.clone()), &ptr)
                 .and_then(|p| body_of(dto, n, names, e, &ptr).map(|b| Tracked { name: n.clone(), body: b, at: p })),
             TrackDto::Point(p) => {
-                let body = body_id(names, &p.body)
-                    .or_else(|| e.fail(&format!("{ptr}/body"), format!("unknown body '{}'", p.body)));
+                let unknown = Msg::new("mechanism-unknown-body").arg("name", &p.body);
+                let body = body_id(names, &p.body).or_else(|| e.refuse(&format!("{ptr}/body"), unknown));
                 let place = p.at.clone().unwrap_or_else(|| PointRef::Name(p.name.clone()));
                 let pointer = if p.at.is_some() { format!("{ptr}/at") } else { format!("{ptr}/name") };
                 let place = drawn(e, &place, &pointer);
@@ -115,11 +118,7 @@ pub(super) fn body_of(dto: &MechanismDto, point: &str, names: &[String], e: &mut
     let named = |p: &Option<PointRef>| matches!(p, Some(PointRef::Name(n)) if n == point);
     let joints: Vec<_> = dto.joints.iter().filter(|j| named(&j.at)).collect();
     if let Some(slot) = joints.iter().find(|j| matches!(j.kind, JointType::PinSlot)) {
-        let message = format!(
-            "'{point}' is the pin of the slot '{}': its two bodies move differently there; give {{\"name\": \"{point}\", \"body\": ...}}",
-            slot.name
-        );
-        return e.fail(ptr, message);
+        return e.refuse(ptr, Msg::new("track-pin").arg("point", point).arg("slot", &slot.name));
     }
     let on_joints = joints.iter().flat_map(|j| j.bodies.iter());
     let at_cg = dto.bodies.iter().filter(|b| named(&b.cg)).map(|b| &b.name);
@@ -128,7 +127,7 @@ pub(super) fn body_of(dto: &MechanismDto, point: &str, names: &[String], e: &mut
     match moving {
         Some(b) => Some(b),
         None if on_ground => Some(0),
-        None => e.fail(ptr, format!("'{point}' is on no body (no joint or centre of mass is there); give {{\"name\": \"{point}\", \"body\": ...}}")),
+        None => e.refuse(ptr, Msg::new("track-no-body").arg("point", point)),
     }
 }
 

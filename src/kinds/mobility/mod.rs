@@ -7,6 +7,7 @@
 //! pair of class k leaves k relative freedoms), M the mobility.
 
 use crate::engine::mobility::{Space, candidate_inputs, kutzbach, mobility};
+use crate::i18n::Msg;
 use crate::kind::limits::Limits;
 use crate::kind::notes::Notes;
 use crate::kind::problem::{ApiError, FieldError};
@@ -122,7 +123,7 @@ impl Kind for Mobility {
             (None, Some(counts)) => counted(counts, unknown),
             _ => {
                 let mut errors = unknown;
-                errors.push(FieldError::at("", "give either \"mechanism\" (without inputs) or \"counts\""));
+                errors.push(FieldError::said("", Msg::new("mobility-one-of")));
                 Err(ApiError::Invalid(errors))
             }
         }
@@ -170,22 +171,20 @@ fn counted(c: &PairCounts, unknown: Vec<FieldError>) -> Result<MobilityResult, A
     let classes = (space.freedoms() - 1) as usize;
     let mut errors = unknown;
     if !(1..=MAX_COUNT).contains(&c.bodies) {
-        errors.push(FieldError::at("/counts/bodies", format!("must be 1 to {MAX_COUNT} (the ground counted)")));
+        errors.push(FieldError::said("/counts/bodies", Msg::new("mobility-bodies").arg("max", MAX_COUNT)));
     }
     let mut pairs = vec![0; classes];
     for (class, count) in &c.pairs {
         let at = format!("/counts/pairs/{}", crate::kind::problem::escape(class));
         match CLASSES[..classes].iter().position(|k| k == class) {
             Some(_) if !(0..=MAX_COUNT).contains(count) => {
-                errors.push(FieldError::at(at, format!("must be 0 to {MAX_COUNT}")))
+                errors.push(FieldError::said(at, Msg::new("mobility-pairs").arg("max", MAX_COUNT)))
             }
             Some(k) => pairs[k] = *count,
             None => {
                 let known = CLASSES[..classes].join(", ");
-                errors.push(FieldError::at(
-                    at,
-                    format!("unknown class '{class}' for a {} count (one of {known})", space_name(space)),
-                ));
+                let msg = Msg::new("mobility-unknown-class").arg("class", class).with("space", space_name(space));
+                errors.push(FieldError::said(at, msg.arg("known", known)));
             }
         }
     }
@@ -209,10 +208,10 @@ fn counted(c: &PairCounts, unknown: Vec<FieldError>) -> Result<MobilityResult, A
     })
 }
 
-fn space_name(space: Space) -> &'static str {
+fn space_name(space: Space) -> Msg {
     match space {
-        Space::Planar => "planar",
-        Space::Spatial => "spatial",
+        Space::Planar => Msg::new("mobility-planar"),
+        Space::Spatial => Msg::new("mobility-spatial"),
     }
 }
 

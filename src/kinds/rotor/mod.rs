@@ -5,6 +5,7 @@
 use crate::engine::rotor::{Rotor, RotorState, Support};
 mod plots;
 
+use crate::i18n::Msg;
 use crate::kind::Kind;
 use crate::kind::limits::Limits;
 use crate::kind::plots::Plots;
@@ -208,17 +209,17 @@ impl RotorRequest {
             [("/cg", finite(&self.cg)), ("/spin", finite(spin.as_slice())), ("/gravity", finite(gravity.as_slice()))]
         {
             if !ok {
-                e.push(at, "components must be finite numbers");
+                e.say(at, Msg::new("rotor-components"));
             }
         }
         let [xd, xe] = self.bearings;
         if !(xd.is_finite() && xe.is_finite() && xd != xe) {
-            e.push("/bearings", "two different, finite positions along the axis");
+            e.say("/bearings", Msg::new("rotor-bearings"));
         }
         if let Some(i) = inertia
             && !symmetric_about(&i, &spin)
         {
-            e.push("/spin", "the body must be symmetric about its spin axis (its inertia would change in the frame)");
+            e.say("/spin", Msg::new("rotor-symmetric"));
         }
         let f = &self.frame;
         let speed = e.quantity(&f.speed, Dim::ANGULAR_SPEED, "/frame/speed");
@@ -255,7 +256,7 @@ impl RotorRequest {
         let (xy, xz, yz) = (d.xy.unwrap_or(0.0), d.xz.unwrap_or(0.0), d.yz.unwrap_or(0.0));
         let i = Matrix3::new(d.xx, -xy, -xz, -xy, d.yy, -yz, -xz, -yz, d.zz);
         if !i.iter().all(|v| v.is_finite()) {
-            return e.fail("/inertia", "must be finite numbers");
+            return e.refuse("/inertia", Msg::new("rotor-inertia-finite"));
         }
         let eig = i.symmetric_eigenvalues();
         let scale = i.trace().abs().max(f64::MIN_POSITIVE);
@@ -263,7 +264,8 @@ impl RotorRequest {
         let physical = eig.iter().all(|l| *l >= -1e-12 * scale)
             && (0..3).all(|k| eig[k] <= eig[(k + 1) % 3] + eig[(k + 2) % 3] + 1e-12 * scale);
         if !physical {
-            return e.fail("/inertia", format!("principal moments {eig:?} are not those of a body"));
+            let msg = Msg::new("rotor-principal").num("first", eig[0]).num("second", eig[1]).num("third", eig[2]);
+            return e.refuse("/inertia", msg);
         }
         Some(i)
     }
@@ -275,10 +277,10 @@ impl RotorRequest {
             (Some(a), None) => (a, "angles"),
             (None, Some(t)) => (t, "times"),
             (None, None) => (&default, "angles"),
-            _ => return e.fail("", "give at most one of \"angles\" and \"times\"").unwrap_or_default(),
+            _ => return e.refuse("", Msg::new("rotor-angles-or-times")).unwrap_or_default(),
         };
         if list.is_empty() || list.len() > MAX_INSTANTS {
-            e.push(&format!("/{field}"), format!("give 1 to {MAX_INSTANTS} values"));
+            e.say(&format!("/{field}"), Msg::new("rotor-instants").arg("max", MAX_INSTANTS));
         }
         let mut out = Vec::new();
         for (k, q) in list.iter().enumerate() {
@@ -286,8 +288,7 @@ impl RotorRequest {
             let t = if field == "times" {
                 e.quantity(q, Dim::TIME, &at)
             } else {
-                e.angle(q, &at)
-                    .and_then(|phi| time_at(r, phi).or_else(|| e.fail(&at, "the frame never reaches this angle")))
+                e.angle(q, &at).and_then(|phi| time_at(r, phi).or_else(|| e.refuse(&at, Msg::new("rotor-never"))))
             };
             out.extend(t);
         }

@@ -1,0 +1,87 @@
+//! A cam's program of segments, each a law to its angle and lift, read
+//! into the engine's [`Program`], every error at its pointer.
+
+use crate::engine::cam::{Law, Program, ProgramError, Segment};
+use crate::i18n::Msg;
+use crate::kind::quantity::{Errors, Quantity};
+use crate::units::Dim;
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+/// Most segments of a program.
+pub const MAX_SEGMENTS: usize = 100;
+
+/// A segment ending at `to` with the follower at `lift` by `law`.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct CamSegmentDto {
+    #[schema(value_type = Quantity)]
+    pub to: Quantity,
+    /// dwell, harmonic, cycloidal, polynomial-345, polynomial-4567, modified-sine or modified-trapezoid.
+    pub law: String,
+    /// m, or an angle for an oscillating follower (a dwell's may be left out: it holds).
+    #[schema(value_type = Option<Quantity>)]
+    pub lift: Option<Quantity>,
+}
+
+/// The wire name of each law.
+pub const LAWS: [(&str, Law); 7] = [
+    ("dwell", Law::Dwell),
+    ("harmonic", Law::Harmonic),
+    ("cycloidal", Law::Cycloidal),
+    ("polynomial-345", Law::Poly345),
+    ("polynomial-4567", Law::Poly4567),
+    ("modified-sine", Law::ModifiedSine),
+    ("modified-trapezoid", Law::ModifiedTrapezoid),
+];
+
+/// A program of segments at pointer `at` (`/program`), with each segment's law's name.
+pub fn program(e: &mut Errors, list: &[CamSegmentDto], at: &str, lift: Dim) -> Option<(Program, Vec<&'static str>)> {
+    let root = at;
+    if list.is_empty() || list.len() > MAX_SEGMENTS {
+        return e.refuse(root, Msg::new("cam-segments-count").arg("max", MAX_SEGMENTS));
+    }
+    let (mut start, mut from, mut segments, mut names) = (0.0, 0.0, Vec::new(), Vec::new());
+    for (k, s) in list.iter().enumerate() {
+        let at = format!("{root}/{k}");
+        let to = e.angle(&s.to, &format!("{at}/to"));
+        let law = match LAWS.iter().find(|(name, _)| *name == s.law) {
+            Some(&(name, law)) => Some((name, law)),
+            None => {
+                let msg = Msg::new("cam-unknown-law").arg("law", &s.law).arg("laws", LAWS.map(|(n, _)| n).join(", "));
+                e.refuse(&format!("{at}/law"), msg)
+            }
+        };
+        let lift = match (&s.lift, law) {
+            (Some(q), _) if lift == Dim::ANGLE => e.angle(q, &format!("{at}/lift")),
+            (Some(q), _) => e.quantity(q, lift, &format!("{at}/lift")),
+            (None, Some((_, Law::Dwell))) => Some(from),
+            (None, Some(_)) => e.refuse(&at, Msg::new("cam-needs-lift")),
+            (None, None) => None,
+        };
+        let (Some(to), Some((name, law)), Some(lift)) = (to, law, lift) else { return None };
+        segments.push(Segment { law, start, span: to - start, from, to: lift });
+        names.push(name);
+        (start, from) = (to, lift);
+    }
+    match Program::new(segments) {
+        Ok(p) => Some((p, names)),
+        Err(err) => {
+            let last = list.len() - 1;
+            let (at, id) = match err {
+                ProgramError::Empty { segment, .. } => (format!("{root}/{segment}/to"), "cam-after-previous"),
+                ProgramError::MovingDwell { segment, .. } => (format!("{root}/{segment}/lift"), "cam-dwell"),
+                ProgramError::NotATurn { .. } => (format!("/program/{last}/to"), "cam-full-turn"),
+                ProgramError::NotClosed { .. } => (format!("/program/{last}/lift"), "cam-closed"),
+                ProgramError::Gap { segment, start, expected } => {
+                    let msg = Msg::new("cam-gap").arg("segment", segment).num("start", start).num("expected", expected);
+                    return e.refuse("/program", msg);
+                }
+                ProgramError::Jump { segment, from, expected } => {
+                    let msg = Msg::new("cam-jump").arg("segment", segment).num("from", from).num("expected", expected);
+                    return e.refuse("/program", msg);
+                }
+            };
+            e.refuse(&at, Msg::new(id))
+        }
+    }
+}

@@ -1,0 +1,34 @@
+//! A run the engine cannot make, as the answer: a 422 at the field it
+//! comes from in the catalogue's words, or a spent budget.
+
+use crate::engine::dynamics::DynamicsError;
+use crate::i18n::Msg;
+use crate::kind::problem::{ApiError, FieldError};
+
+/// A failed integration as a 422 at the field it comes from; a spent budget
+/// as such, naming the 8th-order method where the 5th-order one ran.
+pub(super) fn invalid(e: DynamicsError, dopri5: bool) -> ApiError {
+    let pointer = match e {
+        DynamicsError::NonPositiveInertia { .. } => "/reduced_inertia",
+        DynamicsError::Initial { .. } => "/machine/input",
+        DynamicsError::Budget { .. } if dopri5 => {
+            let hint = "; for a long smooth run at a tight tolerance, \"integrator\": \"dop853\" takes far fewer steps";
+            return ApiError::OverBudget(format!("{e}{hint}"));
+        }
+        DynamicsError::Budget { .. } => return ApiError::OverBudget(e.to_string()),
+        DynamicsError::Integration { .. } => "",
+    };
+    ApiError::Invalid(vec![FieldError::said(pointer, msg(&e))])
+}
+
+/// A dynamics error as the catalogue says it; the engine's reason for a
+/// failed step or start is its own text.
+fn msg(e: &DynamicsError) -> Msg {
+    match e {
+        DynamicsError::NonPositiveInertia { phi } => Msg::new("dynamics-inertia-not-positive").num("phi", *phi),
+        DynamicsError::Integration { t, reason } => Msg::new("dynamics-integration").num("t", *t).arg("reason", reason),
+        // Answered as a spent budget, never as a field's error.
+        DynamicsError::Budget { .. } => Msg::new("text-as-is").arg("why", e),
+        DynamicsError::Initial { reason } => Msg::new("dynamics-initial").arg("reason", reason),
+    }
+}

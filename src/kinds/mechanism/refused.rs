@@ -1,0 +1,41 @@
+//! Why the engine cannot answer a mechanism's problem, as the catalogue
+//! says it: its errors' variants, each a message with its numbers.
+
+use crate::engine::EngineError;
+use crate::i18n::Msg;
+use crate::kind::quantity::figures;
+
+/// An error of the engine (a mechanism that cannot be moved, a function
+/// out of range) as the catalogue says it.
+pub fn engine_msg(e: &EngineError) -> Msg {
+    match e {
+        EngineError::NotFinite { function, phi } => {
+            Msg::new("mechanism-not-finite").arg("function", function).num("phi", *phi)
+        }
+        EngineError::NegativeInertia { function, phi, value } => {
+            Msg::new("mechanism-negative-inertia").arg("function", function).num("value", *value).num("phi", *phi)
+        }
+        EngineError::NotSteady { net_work, largest_area } => {
+            Msg::new("mechanism-not-steady").num("net_work", *net_work).num("largest_area", *largest_area)
+        }
+        EngineError::NewtonDiverged { step, input, residual, joint } => Msg::new("mechanism-newton")
+            .num("input", *input)
+            .arg("step", step)
+            .arg("joint", joint)
+            .num("residual", figures(*residual, 2)),
+        EngineError::Locked { grubler } => Msg::new("mechanism-locked").arg("grubler", grubler),
+        EngineError::Singular { step, input } => Msg::new("mechanism-singular").arg("step", step).num("input", *input),
+        EngineError::DofMismatch { dof, inputs } => {
+            Msg::new("mechanism-dof").count("dof", *dof).count("inputs", *inputs)
+        }
+        EngineError::FrictionDiverged { step, input } => {
+            Msg::new("mechanism-friction").num("input", *input).arg("step", step)
+        }
+        EngineError::Unactuated { step, input, actuators } => {
+            Msg::new("mechanism-unactuated").arg("actuators", actuators).num("input", *input).arg("step", step)
+        }
+        EngineError::NotFiniteResult => Msg::new("mechanism-not-finite-result"),
+        // Answered as a spent budget, never as a field's error.
+        EngineError::BudgetExceeded { .. } => Msg::new("text-as-is").arg("why", e),
+    }
+}
