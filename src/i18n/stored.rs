@@ -15,7 +15,7 @@ use utoipa::ToSchema;
 /// A message of the catalogue as a result stores it (for the OpenAPI
 /// document; [`Msg`] is what the code holds).
 #[derive(ToSchema)]
-#[schema(example = json!({"id": "cam-pressure-angle", "args": {"max": 34.2, "at": 118.5, "limit": 30}}))]
+#[schema(example = json!({"id": "warning-cam-pressure-translating", "args": {"max": 34.2, "at": 118.5, "limit": 30.0}}))]
 #[allow(dead_code)]
 pub struct MessageDoc {
     /// The message's id in the catalogue.
