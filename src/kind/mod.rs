@@ -16,7 +16,9 @@ pub mod notes;
 pub mod plots;
 pub mod problem;
 pub mod quantity;
+pub mod refused;
 
+use crate::i18n::Msg;
 pub use limits::Limits;
 use problem::{ApiError, FieldError};
 use serde::Serialize;
@@ -122,7 +124,8 @@ pub struct Rows {
     pub field: String,
     /// Rows the result has (or would have).
     pub count: usize,
-    /// Another way to shrink it, e.g. "or fewer outputs"; may be empty.
+    /// The catalogue's id of what else shrinks it (`size-also-outputs`:
+    /// fewer outputs).
     pub also: &'static str,
 }
 
@@ -140,33 +143,34 @@ pub trait JobResult: Serialize {
 /// The 422 of a result of `bytes` (estimated before computing, or measured)
 /// over `limit`, saying how many rows would fit.
 pub fn too_large(bytes: usize, limit: usize, rows: Option<Rows>, estimated: bool) -> ApiError {
-    let would = if estimated { "would be about" } else { "would be" };
-    let size = format!(
-        "the result {would} {} ({bytes} bytes), over the limit of {} on a result (MECHDYN_MAX_RESULT_BYTES)",
-        human(bytes),
-        human(limit)
-    );
+    let id = if estimated { "size-would-be-about" } else { "size-would-be" };
+    let size = Msg::new(id).with("size", human(bytes)).count("bytes", bytes).with("limit", human(limit));
     let error = match rows {
         Some(Rows { field, count, also }) if count > 0 => {
             let per_row = bytes as f64 / count as f64;
             let fit = ((limit as f64 * 0.95) / per_row).floor() as usize;
             let name = field.rsplit('/').next().unwrap_or("rows").to_string();
-            let advice = format!("at {} each, {name} ≤ {fit} would fit{}", human(per_row as usize), also);
-            FieldError::at(field, format!("{size}; {advice}"))
+            let advice =
+                Msg::new("size-advice").with("each", human(per_row as usize)).arg("name", name).count("fit", fit);
+            let said =
+                Msg::new("size-too-large").with("size", size).with("advice", advice.with("also", Msg::new(also)));
+            FieldError::said(field, said)
         }
-        _ => FieldError::at("", size),
+        _ => FieldError::said("", size),
     };
     ApiError::ResultTooLarge { limit, errors: vec![error] }
 }
 
-/// Bytes for people: 16 MiB, 140.2 MB.
-fn human(bytes: usize) -> String {
-    match bytes {
-        b if b >= 1 << 20 && b % (1 << 20) == 0 => format!("{} MiB", b >> 20),
-        b if b >= 1_000_000 => format!("{:.1} MB", b as f64 / 1e6),
-        b if b >= 1_000 => format!("{:.1} kB", b as f64 / 1e3),
-        b => format!("{b} B"),
-    }
+/// Bytes for people: 16 MiB, 140.2 MB (140,2 MB in Spanish).
+fn human(bytes: usize) -> Msg {
+    let tenths = |x: f64| (x * 10.0).round() / 10.0;
+    let (n, unit) = match bytes {
+        b if b >= 1 << 20 && b % (1 << 20) == 0 => ((b >> 20) as f64, "MiB"),
+        b if b >= 1_000_000 => (tenths(b as f64 / 1e6), "MB"),
+        b if b >= 1_000 => (tenths(b as f64 / 1e3), "kB"),
+        b => (b as f64, "B"),
+    };
+    Msg::new("warning-at-value").num("value", n).arg("unit", unit)
 }
 
 /// Bytes of `value` as JSON, counted without keeping them.
@@ -228,7 +232,7 @@ pub fn engine_error(e: crate::engine::EngineError, fallback: &str) -> FieldError
         | E::BudgetExceeded { .. } => fallback.into(),
         E::NotFiniteResult => String::new(),
     };
-    FieldError::at(pointer, e.to_string())
+    FieldError::said(pointer, refused::engine_msg(&e))
 }
 
 /// An engine error as the API's answer: over budget, or a 422 at its field.

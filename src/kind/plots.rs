@@ -39,11 +39,10 @@ pub type Drawn = Result<Option<Chart>, ApiError>;
 /// A step beyond the result's `count` steps, as a 400 at `?step=`.
 pub fn no_step(step: usize, count: usize) -> ApiError {
     let message = match count {
-        0 => format!("{step}: this job draws no mechanism, so it has no steps to choose"),
-        1 => format!("{step}: the job has 1 step (0)"),
-        n => format!("{step}: the job has {n} steps (0 to {})", n - 1),
+        0 => crate::i18n::Msg::new("plot-no-steps").count("step", step),
+        n => crate::i18n::Msg::new("plot-steps").count("step", step).count("count", n).count("last", n - 1),
     };
-    ApiError::BadQuery(vec![FieldError::parameter("step", message)])
+    ApiError::BadQuery(vec![FieldError::parameter_said("step", message)])
 }
 
 /// The number at `key` of `row`.

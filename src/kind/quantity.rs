@@ -236,10 +236,6 @@ impl Errors {
         Self { list: Vec::new(), limits: limits.clone(), constants: Vec::new() }
     }
 
-    pub fn push(&mut self, pointer: &str, message: impl Into<String>) {
-        self.list.push(FieldError::at(pointer, message));
-    }
-
     /// An error at `pointer` said by the catalogue.
     pub fn say(&mut self, pointer: &str, msg: Msg) {
         self.list.push(FieldError::said(pointer, msg));
@@ -296,25 +292,12 @@ impl Errors {
         if v > 0.0 { Some(v) } else { self.refuse(at, Msg::new("field-positive")) }
     }
 
-    /// A value already read (None: its error is recorded) that must also pass
-    /// `ok`; one message per field.
-    pub fn require(&mut self, v: Option<f64>, ok: impl Fn(f64) -> bool, at: &str, message: &str) -> Option<f64> {
-        match v? {
-            v if ok(v) => Some(v),
-            _ => self.fail(at, message),
-        }
-    }
-
-    /// [`Self::require`] with the catalogue's message.
+    /// A value already read (None: its error is recorded) that must also
+    /// pass `ok`, else `msg`; one message per field.
     pub fn require_said(&mut self, v: Option<f64>, ok: impl Fn(f64) -> bool, at: &str, msg: Msg) -> Option<f64> {
         match v? {
             v if ok(v) => Some(v),
             _ => self.refuse(at, msg),
         }
-    }
-
-    pub fn fail<T>(&mut self, at: &str, message: impl Into<String>) -> Option<T> {
-        self.push(at, message);
-        None
     }
 }

@@ -103,3 +103,12 @@ check-slip-times-2pi = It is 2π times the expected value.
 check-slip-over-2pi = It is the expected value divided by 2π.
 check-slip-power-of-ten = It is 10^{ $k } times the expected value: a unit prefix (mm for m, kN for N)?
 check-summary = { $passed } of { $total } answers within tolerance (checked by mechdyn { $version }).
+
+## Rotors, gears, gear trains, equivalent masses
+
+accuracy-rotor = Newton F = [dQ/dt]_rel + Ω×Q and Euler M_G = [dK_G/dt]_rel + Ω×K_G in the frame's axes; bearing forces and driving moment from the six equilibrium equations, closed form
+accuracy-gear-train = Willis' formula per mesh relative to its carrier; torques from virtual power over a basis of the train's virtual motions (SVD null space)
+warning-gear-pointed = the tooth is pointed before { $radius } m: its thickness there would be { $thickness } m
+warning-gear-module-metres = a module of { $module } m: a bare number is SI (metres); for { $module } mm write "{ $module } mm" (modules over { $plausible } m are rare)
+warning-equivalent-incomplete = no masses at these points match mass, centre of mass and inertia together; the least-squares fit leaves a relative residual of { $residual }
+warning-equivalent-not-unique = the points do not determine the masses; the smallest set (minimum norm) is given

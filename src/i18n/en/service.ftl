@@ -405,3 +405,21 @@ unit-part-in = '{ $target }' is a unit of { $found }; the part at { $pointer } i
 unit-part-in-of = '{ $target }' is a unit of { $found }; the part at { $pointer } is in { $unit }, a unit of { $expected }
 query-whole-number = '{ $text }': must be a whole number from 0
 parameter-pointer-missing = points at { $pointer }, not in the request
+
+## A result too large
+
+size-would-be = the result would be { $size } ({ $bytes } bytes), over the limit of { $limit } on a result (MECHDYN_MAX_RESULT_BYTES)
+size-would-be-about = the result would be about { $size } ({ $bytes } bytes), over the limit of { $limit } on a result (MECHDYN_MAX_RESULT_BYTES)
+size-too-large = { $size }; { $advice }
+size-advice = at { $each } each, { $name } ≤ { $fit } would fit{ $also }
+size-also-events = { " " }(events: one per turn, fewer with a shorter run)
+size-also-table = { " " }(0 for no table)
+size-also-outputs = ; or ask for fewer "outputs" (every body's kinematics is the largest)
+
+## A plot's step
+
+plot-no-steps = { $step }: this job draws no mechanism, so it has no steps to choose
+plot-steps = { $step }: the job has { $count ->
+        [one] 1 step (0)
+       *[other] { $count } steps (0 to { $last })
+    }

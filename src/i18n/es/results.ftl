@@ -115,3 +115,12 @@ check-slip-times-2pi = Es 2π veces el valor esperado.
 check-slip-over-2pi = Es el valor esperado dividido entre 2π.
 check-slip-power-of-ten = Es 10^{ $k } veces el valor esperado: ¿un prefijo de unidad (mm por m, kN por N)?
 check-summary = { $passed } de { $total } respuestas dentro de la tolerancia (corregido por mechdyn { $version }).
+
+## Rotores, engranajes, trenes de engranajes, masas equivalentes
+
+accuracy-rotor = Newton F = [dQ/dt]_rel + Ω×Q y Euler M_G = [dK_G/dt]_rel + Ω×K_G en los ejes de la referencia; fuerzas en los cojinetes y momento motor de las seis ecuaciones de equilibrio, en forma cerrada
+accuracy-gear-train = fórmula de Willis en cada engrane respecto a su portasatélites; pares por potencia virtual sobre una base de los movimientos virtuales del tren (espacio nulo por SVD)
+warning-gear-pointed = el diente acaba en punta antes de { $radius } m: su espesor ahí sería { $thickness } m
+warning-gear-module-metres = un módulo de { $module } m: un número sin unidad está en el SI (metros); para { $module } mm escriba "{ $module } mm" (los módulos de más de { $plausible } m son raros)
+warning-equivalent-incomplete = ningún conjunto de masas en estos puntos reproduce a la vez la masa, el centro de masas y la inercia; el ajuste por mínimos cuadrados deja un residuo relativo de { $residual }
+warning-equivalent-not-unique = los puntos no determinan las masas; se da el conjunto más pequeño (de norma mínima)

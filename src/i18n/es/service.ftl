@@ -405,3 +405,21 @@ unit-part-in = '{ $target }' es una unidad de { $found }; la parte en { $pointer
 unit-part-in-of = '{ $target }' es una unidad de { $found }; la parte en { $pointer } está en { $unit }, una unidad de { $expected }
 query-whole-number = '{ $text }': debe ser un número entero desde 0
 parameter-pointer-missing = apunta a { $pointer }, que no está en la petición
+
+## Un resultado demasiado grande
+
+size-would-be = el resultado ocuparía { $size } ({ $bytes } bytes), más del límite de { $limit } de un resultado (MECHDYN_MAX_RESULT_BYTES)
+size-would-be-about = el resultado ocuparía unos { $size } ({ $bytes } bytes), más del límite de { $limit } de un resultado (MECHDYN_MAX_RESULT_BYTES)
+size-too-large = { $size }; { $advice }
+size-advice = a { $each } cada una, con { $name } ≤ { $fit } cabría{ $also }
+size-also-events = { " " }(eventos: uno por vuelta, menos con una integración más corta)
+size-also-table = { " " }(0 para no dar tabla)
+size-also-outputs = ; o pida menos "outputs" (la cinemática de cada sólido es la mayor)
+
+## El paso de un dibujo
+
+plot-no-steps = { $step }: este trabajo no dibuja ningún mecanismo, así que no tiene pasos que elegir
+plot-steps = { $step }: el trabajo tiene { $count ->
+        [one] 1 paso (0)
+       *[other] { $count } pasos (de 0 a { $last })
+    }

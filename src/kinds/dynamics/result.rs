@@ -111,7 +111,7 @@ impl crate::kind::JobResult for DynamicsResult {
     }
     fn rows(&self) -> Option<crate::kind::Rows> {
         let (field, count) = ("/samples".into(), self.samples.len());
-        Some(crate::kind::Rows { field, count, also: " (events: one per turn, fewer with a shorter run)" })
+        Some(crate::kind::Rows { field, count, also: "size-also-events" })
     }
 }
 

@@ -4,6 +4,7 @@ use crate::engine::equivalent::equivalent_masses;
 use crate::i18n::Msg;
 use crate::kind::Kind;
 use crate::kind::limits::Limits;
+use crate::kind::notes::Notes;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::quantity::{Errors, Quantity};
 use crate::kind::validated;
@@ -39,10 +40,15 @@ pub struct EquivalentResult {
     pub unique: bool,
     /// Largest relative residual of the four conditions.
     pub residual: f64,
-    pub warnings: Vec<String>,
+    #[serde(flatten)]
+    pub notes: Notes,
 }
 
-impl crate::kind::JobResult for EquivalentResult {}
+impl crate::kind::JobResult for EquivalentResult {
+    fn notes(&mut self) -> Option<&mut Notes> {
+        Some(&mut self.notes)
+    }
+}
 
 /// EquivalentMasses: `POST /v1/equivalent-masses`.
 pub struct EquivalentMasses;
@@ -75,19 +81,19 @@ fn compute(request: &EquivalentRequest, unknown: Vec<FieldError>) -> Result<Equi
         return Err(ApiError::Invalid(vec![FieldError::said("/points", Msg::new("equivalent-too-far"))]));
     }
     let complete = e.residual <= 1e-9;
-    let mut warnings = Vec::new();
+    let mut notes = Notes::default();
     if !complete {
-        warnings.push(format!("no masses at these points match mass, centre of mass and inertia together; the least-squares fit leaves a relative residual of {:.3e}", e.residual));
+        notes.warn(Msg::new("warning-equivalent-incomplete").fig("residual", e.residual));
     }
     if !e.unique {
-        warnings.push("the points do not determine the masses; the smallest set (minimum norm) is given".into());
+        notes.warn(Msg::new("warning-equivalent-not-unique"));
     }
     Ok(EquivalentResult {
         masses: request.points.keys().cloned().zip(e.masses).collect(),
         complete,
         unique: e.unique,
         residual: e.residual,
-        warnings,
+        notes,
     })
 }
 

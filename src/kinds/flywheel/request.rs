@@ -258,7 +258,7 @@ impl FlywheelRequest {
         let (mechanism, loads) = machine_parts(e, &m.mechanism, &m.input, loads, period, "/machine")?;
         match Machine::new(mechanism, loads, mean_speed, period, deadline) {
             Ok(m) => Some(Arc::new(m)),
-            Err(err) => e.fail("/machine", err.to_string()),
+            Err(err) => e.refuse("/machine", crate::kind::refused::engine_msg(&err)),
         }
     }
 

@@ -132,7 +132,7 @@ impl crate::kind::JobResult for FlywheelResult {
     }
     fn rows(&self) -> Option<crate::kind::Rows> {
         let (field, count) = ("/samples".into(), self.samples.len());
-        Some(crate::kind::Rows { field, count, also: " (0 for no table)" })
+        Some(crate::kind::Rows { field, count, also: "size-also-table" })
     }
 }
 

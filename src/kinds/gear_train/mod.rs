@@ -5,6 +5,7 @@ use crate::engine::gear_train::{Mesh, Train, TrainError};
 use crate::i18n::Msg;
 use crate::kind::Kind;
 use crate::kind::limits::Limits;
+use crate::kind::notes::Notes;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::quantity::{Errors, Quantity, figures};
 use crate::kind::validated;
@@ -90,9 +91,15 @@ pub struct TrainResult {
     /// Σ T·ω / max |T·ω| over the members (0 in exact arithmetic).
     pub power_residual: f64,
     pub method: String,
+    #[serde(flatten)]
+    pub notes: Notes,
 }
 
-impl crate::kind::JobResult for TrainResult {}
+impl crate::kind::JobResult for TrainResult {
+    fn notes(&mut self) -> Option<&mut Notes> {
+        Some(&mut self.notes)
+    }
+}
 
 /// GearTrain: `POST /v1/gears/train`.
 pub struct GearTrain;
@@ -143,14 +150,9 @@ fn compute(request: &TrainRequest, unknown: Vec<FieldError>) -> Result<TrainResu
             MemberResult { member: name.clone(), speed: w, torque: t, power: t * w }
         })
         .collect();
-    Ok(TrainResult {
-        dof: s.dof,
-        members,
-        power_residual: s.power_residual,
-        method: "Willis' formula per mesh relative to its carrier; torques from virtual power over a basis \
-                 of the train's virtual motions (SVD null space)"
-            .into(),
-    })
+    let mut notes = Notes::default();
+    let method = notes.say("/method", Msg::new("accuracy-gear-train"));
+    Ok(TrainResult { dof: s.dof, members, power_residual: s.power_residual, method, notes })
 }
 
 /// Why a train cannot be solved, as the catalogue says it.

@@ -6,6 +6,7 @@ mod plots;
 use crate::i18n::Msg;
 use crate::kind::Kind;
 use crate::kind::limits::Limits;
+use crate::kind::notes::Notes;
 use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::quantity::{Errors, Quantity};
@@ -53,10 +54,15 @@ pub struct GearResult {
     pub thickness_pressure_angle: f64,
     /// e_T = R_T[e_A/R_A + 2(inv φ_A − inv φ_T)].
     pub thickness: f64,
-    pub warnings: Vec<String>,
+    #[serde(flatten)]
+    pub notes: Notes,
 }
 
-impl crate::kind::JobResult for GearResult {}
+impl crate::kind::JobResult for GearResult {
+    fn notes(&mut self) -> Option<&mut Notes> {
+        Some(&mut self.notes)
+    }
+}
 
 /// The largest module (m) a gear usually has: a bare number above it was
 /// most likely meant in millimetres, and is warned of.
@@ -104,18 +110,14 @@ fn compute(request: &GearRequest, unknown: Vec<FieldError>) -> Result<GearResult
             msg,
         )]));
     }
-    let mut warnings = if t.thickness <= 0.0 {
-        vec![format!("the tooth is pointed before {at} m: its thickness there would be {:.6e} m", t.thickness)]
-    } else {
-        Vec::new()
-    };
+    let mut notes = Notes::default();
+    if t.thickness <= 0.0 {
+        notes.warn(Msg::new("warning-gear-pointed").num("radius", at).fig("thickness", t.thickness));
+    }
     if let Quantity::Number(m) = request.module
         && m > PLAUSIBLE_MODULE
     {
-        warnings.push(format!(
-            "a module of {m} m: a bare number is SI (metres); for {m} mm write \"{m} mm\" (modules over {} m are rare)",
-            PLAUSIBLE_MODULE
-        ));
+        notes.warn(Msg::new("warning-gear-module-metres").num("module", m).num("plausible", PLAUSIBLE_MODULE));
     }
     Ok(GearResult {
         pitch_radius: radii.pitch,
@@ -126,7 +128,7 @@ fn compute(request: &GearRequest, unknown: Vec<FieldError>) -> Result<GearResult
         thickness_radius: t.radius,
         thickness_pressure_angle: t.pressure_angle,
         thickness: t.thickness,
-        warnings,
+        notes,
     })
 }
 

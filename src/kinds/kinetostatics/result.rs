@@ -195,7 +195,7 @@ impl crate::kind::JobResult for KinetostaticsResult {
     }
     fn rows(&self) -> Option<crate::kind::Rows> {
         let field = if self.inputs.len() > 1 { "/input/0/steps" } else { "/input/steps" };
-        let also = "; or ask for fewer \"outputs\" (every body's kinematics is the largest)";
+        let also = "size-also-outputs";
         Some(crate::kind::Rows { field: field.into(), count: self.steps.len(), also })
     }
 }

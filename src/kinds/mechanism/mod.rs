@@ -10,9 +10,9 @@ mod joints;
 mod loads;
 mod points;
 mod reactions;
-mod refused;
 pub mod track;
 
+pub use crate::kind::refused::engine_msg;
 pub use contact::{CircleDto, CurveDto, LineDto, PolarDto, SplineDto};
 pub use dimensions::{Assembled, DimensionDto};
 pub use energy::EnergyDto;
@@ -20,7 +20,6 @@ pub use inputs::{InputDto, Inputs, coordinate, machine_parts};
 pub use loads::{LoadDto, LoadType, MAX_LOADS, convert_loads};
 pub use points::{BodyPoint, Coords, PointRef};
 pub use reactions::{ContactDto, Name, ReactionDto, annotate, contact_warnings, names};
-pub use refused::engine_msg;
 
 use crate::engine::model::{Body, BodyId, Joint, JointKind, Mechanism, Pitch};
 use crate::i18n::Msg;

@@ -8,6 +8,7 @@ mod plots;
 use crate::i18n::Msg;
 use crate::kind::Kind;
 use crate::kind::limits::Limits;
+use crate::kind::notes::Notes;
 use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::quantity::{Errors, Quantity};
@@ -122,9 +123,15 @@ pub struct RotorStateDto {
 pub struct RotorResult {
     pub states: Vec<RotorStateDto>,
     pub method: String,
+    #[serde(flatten)]
+    pub notes: Notes,
 }
 
-impl crate::kind::JobResult for RotorResult {}
+impl crate::kind::JobResult for RotorResult {
+    fn notes(&mut self) -> Option<&mut Notes> {
+        Some(&mut self.notes)
+    }
+}
 
 /// RigidRotor: `POST /v1/rotor`.
 pub struct RigidRotor;
@@ -162,12 +169,9 @@ impl Kind for RigidRotor {
 fn compute(request: &RotorRequest, unknown: Vec<FieldError>) -> Result<RotorResult, ApiError> {
     let (rotor, times) = validated(unknown, request.to_rotor())?;
     let states = times.iter().map(|t| state_dto(&rotor.at(*t))).collect();
-    Ok(RotorResult {
-        states,
-        method: "Newton F = [dQ/dt]_rel + Ω×Q and Euler M_G = [dK_G/dt]_rel + Ω×K_G in the frame's axes; \
-                 bearing forces and driving moment from the six equilibrium equations, closed form"
-            .into(),
-    })
+    let mut notes = Notes::default();
+    let method = notes.say("/method", Msg::new("accuracy-rotor"));
+    Ok(RotorResult { states, method, notes })
 }
 
 fn state_dto(s: &RotorState) -> RotorStateDto {

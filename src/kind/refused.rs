@@ -1,4 +1,4 @@
-//! Why the engine cannot answer a mechanism's problem, as the catalogue
+//! Why the engine cannot answer a problem (a mechanism, a cycle), as the catalogue
 //! says it: its errors' variants, each a message with its numbers.
 
 use crate::engine::EngineError;
