@@ -105,7 +105,8 @@ impl Errors {
         match Expr::compile_with(src, variables, &self.constants, length, depth) {
             Ok(e) => Some(e),
             Err(e) => {
-                let msg = Msg::new("function-parse").arg("why", &e.message).arg("position", e.position);
+                let why = super::expression::fault_msg(&e.fault);
+                let msg = Msg::new("function-parse").with("why", why).arg("position", e.position);
                 self.refuse(at, msg)
             }
         }

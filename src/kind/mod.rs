@@ -9,6 +9,7 @@
 
 pub mod chart;
 pub mod constants;
+pub mod expression;
 pub mod function_csv;
 pub mod function_read;
 pub mod limits;

@@ -213,3 +213,26 @@ async fn a_checks_and_a_parts_errors_in_spanish() {
     let message = r.json()["errors"][0]["message"].as_str().unwrap().to_string();
     assert_eq!(message, "'rpm' es una unidad de rad/s; la parte en /inertia_exact está en kg*m^2");
 }
+
+/// A student's expression in Spanish notation (`sen` for sin) is refused
+/// at its field, the language's functions named, in Spanish too.
+#[tokio::test]
+async fn an_expression_refused_in_spanish() {
+    let app = TestApp::new().await;
+    let mut body = request("p113_pulley");
+    body["torques"][0]["value"]["segments"][0]["expr"] = json!("-5000*0.2*sen(phi)");
+    let es = in_spanish(&app, "POST", "/v1/flywheel", Some(&body)).await;
+    let en = app.post("/v1/flywheel", &body).await;
+    assert_eq!((en.status, es.status), (StatusCode::UNPROCESSABLE_ENTITY, StatusCode::UNPROCESSABLE_ENTITY));
+    let (en, es) = (en.json()["errors"][0].clone(), es.json()["errors"][0].clone());
+    assert_eq!(en["pointer"], es["pointer"]);
+    assert_eq!(es["pointer"], "/torques/0/value/segments/0/expr");
+    let functions = "sin cos tan asin acos atan atan2 sqrt exp ln log10 abs min max sign floor";
+    assert_eq!(
+        es["message"],
+        format!(
+            "la expresión no se puede leer: función desconocida 'sen' (las conocidas: {functions}) (en el carácter 10)"
+        )
+    );
+    assert!(en["message"].as_str().unwrap().contains("unknown function 'sen' (known: sin cos"), "{en}");
+}

@@ -9,11 +9,14 @@
 //! Limits keep hostile input cheap: at most [`MAX_LENGTH`] characters and
 //! [`MAX_DEPTH`] levels of nesting.
 
+mod fault;
 mod node;
 mod parse;
 mod program;
 
+pub use fault::{Arity, FUNCTIONS, Fault};
 use node::Node;
+pub use parse::Tok;
 use program::Program;
 
 /// Longest accepted expression, in characters.
@@ -23,10 +26,10 @@ pub const MAX_DEPTH: usize = 64;
 
 /// Why an expression was rejected; `position` is a character index into the source.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("{message} (at character {position})")]
+#[error("{fault} (at character {position})")]
 pub struct ExprError {
     pub position: usize,
-    pub message: String,
+    pub fault: Fault,
 }
 
 /// Whether `name` is taken by the expression language itself: a variable
@@ -75,10 +78,7 @@ impl Expr {
     ) -> Result<Self, ExprError> {
         let length = source.chars().count();
         if length > max_length {
-            return Err(ExprError {
-                position: max_length,
-                message: format!("expression has {length} characters; the maximum is {max_length}"),
-            });
+            return Err(ExprError { position: max_length, fault: Fault::TooLong { length, max: max_length } });
         }
         Ok(Self::from_root(parse::Parser::parse(source, variables, constants, max_depth)?.fold()))
     }
@@ -144,7 +144,7 @@ mod tests {
         assert!((e.eval(&[std::f64::consts::PI / 6.0]) - 600.0).abs() < 1e-12);
         assert_eq!(Expr::compile_with("F/2", &[], &constants, 100, 10).unwrap().constant(), Some(600.0));
         let unknown = Expr::compile_with("G", &["phi"], &constants, 100, 10).unwrap_err();
-        assert!(unknown.message.contains("constants: F, phi0, pi, e"), "{}", unknown.message);
+        assert!(unknown.fault.to_string().contains("constants: F, phi0, pi, e"), "{}", unknown.fault);
         assert!(is_reserved("sin") && is_reserved("omega") && !is_reserved("F"));
     }
 
@@ -206,23 +206,23 @@ mod tests {
     #[test]
     fn errors_say_where_and_what() {
         let err = |s: &str| Expr::compile(s, &["phi"]).unwrap_err();
-        assert!(err("2*").message.contains("ends where a value"));
-        assert!(err("sin phi").message.contains("needs parentheses"));
-        assert!(err("foo(1)").message.contains("unknown function"));
-        assert!(err("theta").message.contains("unknown name 'theta'"));
+        assert!(err("2*").fault.to_string().contains("ends where a value"));
+        assert!(err("sin phi").fault.to_string().contains("needs parentheses"));
+        assert!(err("foo(1)").fault.to_string().contains("unknown function"));
+        assert!(err("theta").fault.to_string().contains("unknown name 'theta'"));
         assert_eq!(err("1 + $").position, 4);
-        assert!(err("(1").message.contains("expected ')'"));
-        assert!(err("atan2(1)").message.contains("2 arguments"));
-        assert!(err("").message.contains("empty"));
-        assert!(err("1 2").message.contains("after the end"));
+        assert!(err("(1").fault.to_string().contains("expected ')'"));
+        assert!(err("atan2(1)").fault.to_string().contains("2 arguments"));
+        assert!(err("").fault.to_string().contains("empty"));
+        assert!(err("1 2").fault.to_string().contains("after the end"));
     }
 
     #[test]
     fn hostile_inputs_are_rejected_cheaply() {
         let deep = format!("{}1{}", "(".repeat(20_000), ")".repeat(20_000));
-        assert!(Expr::compile(&deep, &[]).unwrap_err().message.contains("characters"));
+        assert!(Expr::compile(&deep, &[]).unwrap_err().fault.to_string().contains("characters"));
         let nested = format!("{}1{}", "(".repeat(100), ")".repeat(100));
-        assert!(Expr::compile(&nested, &[]).unwrap_err().message.contains("nested deeper"));
+        assert!(Expr::compile(&nested, &[]).unwrap_err().fault.to_string().contains("nested deeper"));
         let minus = format!("{}1", "-".repeat(500));
         assert!(Expr::compile(&minus, &[]).is_err());
     }

@@ -9,10 +9,12 @@
 //! ```
 
 use super::ExprError;
+use super::fault::{Arity, Fault};
 use super::node::{Fn1, Fn2, Node};
 
+/// A token of an expression: a number, a name, an operator or parenthesis.
 #[derive(Clone, Debug, PartialEq)]
-enum Tok {
+pub enum Tok {
     Num(f64),
     Name(String),
     Op(char),
@@ -39,7 +41,7 @@ fn tokenize(src: &str) -> Result<Vec<Token>, ExprError> {
             let text: String = chars[start..i].iter().collect();
             let value = text
                 .parse::<f64>()
-                .map_err(|_| ExprError { position: start, message: format!("malformed number '{text}'") })?;
+                .map_err(|_| ExprError { position: start, fault: Fault::MalformedNumber(text.clone()) })?;
             out.push(Token { tok: Tok::Num(value), pos: start });
         } else if c.is_ascii_alphabetic() || c == '_' {
             while i < chars.len() && (chars[i].is_ascii_alphanumeric() || chars[i] == '_') {
@@ -51,7 +53,7 @@ fn tokenize(src: &str) -> Result<Vec<Token>, ExprError> {
             out.push(Token { tok: Tok::Op(c), pos: start });
             i += 1;
         } else {
-            return Err(ExprError { position: start, message: format!("unexpected character '{c}'") });
+            return Err(ExprError { position: start, fault: Fault::UnexpectedCharacter(c) });
         }
     }
     Ok(out)
@@ -103,14 +105,11 @@ impl<'a> Parser<'a> {
         let tokens = tokenize(src)?;
         let mut p = Parser { tokens, next: 0, depth: 0, max_depth, variables, constants, end: src.chars().count() };
         if p.tokens.is_empty() {
-            return Err(ExprError { position: 0, message: "empty expression".into() });
+            return Err(ExprError { position: 0, fault: Fault::Empty });
         }
         let node = p.sum()?;
         if let Some(t) = p.tokens.get(p.next) {
-            return Err(ExprError {
-                position: t.pos,
-                message: format!("unexpected {} after the end of the expression", describe(&t.tok)),
-            });
+            return Err(ExprError { position: t.pos, fault: Fault::AfterEnd(t.tok.clone()) });
         }
         Ok(node)
     }
@@ -126,14 +125,14 @@ impl<'a> Parser<'a> {
         self.tokens.get(self.next).map_or(self.end, |t| t.pos)
     }
 
-    fn err<T>(&self, message: impl Into<String>) -> Result<T, ExprError> {
-        Err(ExprError { position: self.pos(), message: message.into() })
+    fn err<T>(&self, fault: Fault) -> Result<T, ExprError> {
+        Err(ExprError { position: self.pos(), fault })
     }
 
     fn enter(&mut self) -> Result<(), ExprError> {
         self.depth += 1;
         if self.depth > self.max_depth {
-            return self.err(format!("expression nested deeper than {} levels", self.max_depth));
+            return self.err(Fault::TooDeep(self.max_depth));
         }
         Ok(())
     }
@@ -189,7 +188,7 @@ impl<'a> Parser<'a> {
 
     fn primary(&mut self) -> Result<Node, ExprError> {
         let Some(token) = self.tokens.get(self.next) else {
-            return self.err("expression ends where a value was expected");
+            return self.err(Fault::EndsEarly);
         };
         let pos = token.pos;
         match token.tok.clone() {
@@ -207,7 +206,7 @@ impl<'a> Parser<'a> {
                 self.next += 1;
                 if self.peek_op() == Some('(') { self.call(&name, pos) } else { self.name(&name, pos) }
             }
-            other => self.err(format!("unexpected {} where a value was expected", describe(&other))),
+            other => self.err(Fault::Unexpected(other)),
         }
     }
 
@@ -222,15 +221,21 @@ impl<'a> Parser<'a> {
             "pi" => Ok(Node::Const(std::f64::consts::PI)),
             "e" => Ok(Node::Const(std::f64::consts::E)),
             _ if Fn1::from_name(name).is_some() || Fn2::from_name(name).is_some() => {
-                Err(ExprError { position: pos, message: format!("function '{name}' needs parentheses") })
+                Err(ExprError { position: pos, fault: Fault::NeedsParentheses(name.to_string()) })
             }
             _ => Err(ExprError {
                 position: pos,
-                message: format!(
-                    "unknown name '{name}' (variables here: {}; constants: {})",
-                    if self.variables.is_empty() { "none".to_string() } else { self.variables.join(", ") },
-                    self.constants.iter().map(|(n, _)| n.as_str()).chain(["pi", "e"]).collect::<Vec<_>>().join(", ")
-                ),
+                fault: Fault::UnknownName {
+                    name: name.to_string(),
+                    variables: self.variables.iter().map(|v| v.to_string()).collect(),
+                    constants: self
+                        .constants
+                        .iter()
+                        .map(|(n, _)| n.as_str())
+                        .chain(["pi", "e"])
+                        .map(String::from)
+                        .collect(),
+                },
             }),
         }
     }
@@ -243,29 +248,25 @@ impl<'a> Parser<'a> {
             args.push(self.nested(Self::sum)?);
         }
         self.expect(')')?;
+        let got = args.len();
         let arity_error =
-            |n: &str| ExprError { position: pos, message: format!("function '{name}' takes {n}, got {}", args.len()) };
+            |takes| ExprError { position: pos, fault: Fault::Arity { name: name.to_string(), takes, got } };
         if let Some(f) = Fn1::from_name(name) {
-            let [a] = <[Node; 1]>::try_from(args.clone()).map_err(|_| arity_error("1 argument"))?;
+            let [a] = <[Node; 1]>::try_from(args.clone()).map_err(|_| arity_error(Arity::One))?;
             return Ok(Node::Call1(f, Box::new(a)));
         }
         if let Some(f) = Fn2::from_name(name) {
             if f == Fn2::Atan2 && args.len() != 2 {
-                return Err(arity_error("2 arguments"));
+                return Err(arity_error(Arity::Two));
             }
             if args.len() < 2 {
-                return Err(arity_error("at least 2 arguments"));
+                return Err(arity_error(Arity::AtLeastTwo));
             }
             let mut it = args.into_iter();
             let first = it.next().unwrap_or(Node::Const(0.0));
             return Ok(it.fold(first, |acc, x| Node::Call2(f, Box::new(acc), Box::new(x))));
         }
-        Err(ExprError {
-            position: pos,
-            message: format!(
-                "unknown function '{name}' (known: sin cos tan asin acos atan atan2 sqrt exp ln log10 abs min max sign floor)"
-            ),
-        })
+        Err(ExprError { position: pos, fault: Fault::UnknownFunction(name.to_string()) })
     }
 
     fn expect(&mut self, op: char) -> Result<(), ExprError> {
@@ -273,15 +274,7 @@ impl<'a> Parser<'a> {
             self.next += 1;
             Ok(())
         } else {
-            self.err(format!("expected '{op}'"))
+            self.err(Fault::Expected(op))
         }
-    }
-}
-
-fn describe(t: &Tok) -> String {
-    match t {
-        Tok::Num(v) => format!("number {v}"),
-        Tok::Name(n) => format!("name '{n}'"),
-        Tok::Op(c) => format!("'{c}'"),
     }
 }

@@ -256,3 +256,26 @@ constants-too-many = at most { $max } constants (has { $has })
 constants-not-name = '{ $name }' is not a name: letters, digits and _, not starting with a digit (e.g. F, r_crank)
 constants-name-length = a name has at most { $max } characters
 constants-reserved = '{ $name }' is taken by the expressions (phi, t, omega, pi, e and the functions)
+
+## An expression
+
+expr-too-long = expression has { $length } characters; the maximum is { $max }
+expr-malformed-number = malformed number '{ $text }'
+expr-unexpected-character = unexpected character '{ $char }'
+expr-empty = empty expression
+expr-after-end = unexpected { $token } after the end of the expression
+expr-too-deep = expression nested deeper than { $max } levels
+expr-ends-early = expression ends where a value was expected
+expr-unexpected = unexpected { $token } where a value was expected
+expr-needs-parentheses = function '{ $name }' needs parentheses
+expr-none = none
+expr-unknown-name = unknown name '{ $name }' (variables here: { $variables }; constants: { $constants })
+expr-takes-one = 1 argument
+expr-takes-two = 2 arguments
+expr-takes-at-least-two = at least 2 arguments
+expr-arity = function '{ $name }' takes { $takes }, got { $got }
+expr-unknown-function = unknown function '{ $name }' (known: { $known })
+expr-expected = expected '{ $op }'
+expr-token-number = number { $value }
+expr-token-name = name '{ $name }'
+expr-token-operator = '{ $op }'

@@ -282,3 +282,26 @@ constants-too-many = como mucho { $max } constantes (hay { $has })
 constants-not-name = '{ $name }' no es un nombre: letras, dígitos y _, sin empezar por un dígito (p. ej. F, r_crank)
 constants-name-length = un nombre tiene como mucho { $max } caracteres
 constants-reserved = '{ $name }' ya lo usan las expresiones (phi, t, omega, pi, e y las funciones)
+
+## Una expresión
+
+expr-too-long = la expresión tiene { $length } caracteres; el máximo es { $max }
+expr-malformed-number = número mal escrito '{ $text }'
+expr-unexpected-character = carácter inesperado '{ $char }'
+expr-empty = expresión vacía
+expr-after-end = { $token } inesperado tras el final de la expresión
+expr-too-deep = expresión anidada a más de { $max } niveles
+expr-ends-early = la expresión termina donde se esperaba un valor
+expr-unexpected = { $token } inesperado donde se esperaba un valor
+expr-needs-parentheses = la función '{ $name }' necesita paréntesis
+expr-none = ninguna
+expr-unknown-name = nombre desconocido '{ $name }' (variables aquí: { $variables }; constantes: { $constants })
+expr-takes-one = 1 argumento
+expr-takes-two = 2 argumentos
+expr-takes-at-least-two = al menos 2 argumentos
+expr-arity = la función '{ $name }' lleva { $takes }, y tiene { $got }
+expr-unknown-function = función desconocida '{ $name }' (las conocidas: { $known })
+expr-expected = se esperaba '{ $op }'
+expr-token-number = número { $value }
+expr-token-name = nombre '{ $name }'
+expr-token-operator = '{ $op }'

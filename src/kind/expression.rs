@@ -1,0 +1,49 @@
+//! Why an expression was refused ([`Fault`]), as the catalogue says it: a
+//! student's `sen(phi)` is answered in Spanish too, naming the functions
+//! the language has.
+
+use crate::engine::expr::{Arity, FUNCTIONS, Fault, Tok};
+use crate::i18n::Msg;
+
+/// A fault of an expression in words.
+pub fn fault_msg(f: &Fault) -> Msg {
+    match f {
+        Fault::TooLong { length, max } => Msg::new("expr-too-long").count("length", *length).count("max", *max),
+        Fault::MalformedNumber(text) => Msg::new("expr-malformed-number").arg("text", text),
+        Fault::UnexpectedCharacter(c) => Msg::new("expr-unexpected-character").arg("char", c),
+        Fault::Empty => Msg::new("expr-empty"),
+        Fault::AfterEnd(t) => Msg::new("expr-after-end").with("token", token(t)),
+        Fault::TooDeep(max) => Msg::new("expr-too-deep").count("max", *max),
+        Fault::EndsEarly => Msg::new("expr-ends-early"),
+        Fault::Unexpected(t) => Msg::new("expr-unexpected").with("token", token(t)),
+        Fault::NeedsParentheses(name) => Msg::new("expr-needs-parentheses").arg("name", name),
+        Fault::UnknownName { name, variables, constants } => {
+            let variables = match variables.is_empty() {
+                true => Msg::new("expr-none"),
+                false => Msg::new("text-as-is").arg("why", variables.join(", ")),
+            };
+            Msg::new("expr-unknown-name")
+                .arg("name", name)
+                .with("variables", variables)
+                .arg("constants", constants.join(", "))
+        }
+        Fault::Arity { name, takes, got } => {
+            let takes = match takes {
+                Arity::One => Msg::new("expr-takes-one"),
+                Arity::Two => Msg::new("expr-takes-two"),
+                Arity::AtLeastTwo => Msg::new("expr-takes-at-least-two"),
+            };
+            Msg::new("expr-arity").arg("name", name).with("takes", takes).count("got", *got)
+        }
+        Fault::UnknownFunction(name) => Msg::new("expr-unknown-function").arg("name", name).arg("known", FUNCTIONS),
+        Fault::Expected(op) => Msg::new("expr-expected").arg("op", op),
+    }
+}
+
+fn token(t: &Tok) -> Msg {
+    match t {
+        Tok::Num(v) => Msg::new("expr-token-number").num("value", *v),
+        Tok::Name(n) => Msg::new("expr-token-name").arg("name", n),
+        Tok::Op(c) => Msg::new("expr-token-operator").arg("op", c),
+    }
+}
