@@ -22,6 +22,7 @@
 //! service, slowed nothing).
 
 use super::admission::Admission;
+use crate::i18n::Msg;
 use crate::kind::problem::ApiError;
 use axum::body::Body;
 use bytes::{Bytes, BytesMut};
@@ -96,13 +97,10 @@ pub async fn read_body(body: Body, limit: usize, pace: Pace, admission: &Admissi
 
 /// The 408 of a body that fell behind the pace.
 fn behind(read: usize, after: Duration, pace: Pace) -> ApiError {
-    ApiError::RequestTimeout(format!(
-        "the request's body did not arrive in time: {read} bytes in {:.1} s; this service needs a body to keep \
-         arriving at {} bytes/s once {} s have passed",
-        after.as_secs_f64(),
-        pace.rate,
-        pace.grace.as_secs_f64()
-    ))
+    let said = Msg::new("detail-request-timeout")
+        .count("read", read)
+        .num("seconds", (after.as_secs_f64() * 10.0).round() / 10.0);
+    ApiError::RequestTimeout(said.arg("rate", pace.rate).num("grace", pace.grace.as_secs_f64()))
 }
 
 /// A connection whose writing side is held to a [`Pace`].

@@ -239,7 +239,7 @@ pub fn engine_error(e: crate::engine::EngineError, fallback: &str) -> FieldError
 /// An engine error as the API's answer: over budget, or a 422 at its field.
 pub fn engine_failure(e: crate::engine::EngineError, fallback: &str) -> ApiError {
     match e {
-        crate::engine::EngineError::BudgetExceeded { .. } => ApiError::OverBudget(e.to_string()),
+        crate::engine::EngineError::BudgetExceeded { .. } => ApiError::OverBudget(refused::engine_msg(&e)),
         e => ApiError::Invalid(vec![engine_error(e, fallback)]),
     }
 }

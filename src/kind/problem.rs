@@ -213,7 +213,7 @@ pub enum ApiError {
         known: Vec<String>,
     },
     NoTemplate(String),
-    Conflict(String),
+    Conflict(Msg),
     /// The first request of an `Idempotency-Key` is still being answered.
     InProgress(String),
     /// A read of a result that a deferred job does not have (yet).
@@ -226,7 +226,7 @@ pub enum ApiError {
     NoRoute,
     MethodNotAllowed,
     /// The job ran out of its compute budget and was stopped.
-    OverBudget(String),
+    OverBudget(Msg),
     /// The result would exceed the limit on a result; `errors` say what would fit.
     ResultTooLarge {
         limit: usize,
@@ -243,7 +243,7 @@ pub enum ApiError {
     Unavailable(String),
     Unauthorized,
     /// A request's body fell behind the pace a client must keep ([`super::pace`]).
-    RequestTimeout(String),
+    RequestTimeout(Msg),
     /// An HTTP/1.0 POST with no `Content-Length`.
     LengthRequired,
     /// Logged; the client sees no details.

@@ -36,6 +36,12 @@ pub fn engine_msg(e: &EngineError) -> Msg {
         }
         EngineError::NotFiniteResult => Msg::new("mechanism-not-finite-result"),
         // Answered as a spent budget, never as a field's error.
-        EngineError::BudgetExceeded { .. } => Msg::new("text-as-is").arg("why", e),
+        EngineError::BudgetExceeded { seconds, progress } => budget_msg(*seconds, progress),
     }
+}
+
+/// A spent compute budget: its seconds, and where the engine was (its own
+/// words: the phase it had reached).
+pub fn budget_msg(seconds: f64, progress: &str) -> Msg {
+    Msg::new("detail-over-budget").num("seconds", seconds).arg("progress", progress)
 }

@@ -172,7 +172,7 @@ fn feedback(name: &str, given: Msg, e: f64, unit: &str, v: &Verdict, t: &Toleran
         (false, true) => {
             let off = match v.relative_error {
                 Some(r) => Msg::new("check-off").num("percent", round_sig(r * 100.0, 5)),
-                None => Msg::new("check-nothing"),
+                None => Msg::new("text-nothing"),
             };
             said("check-wrong-revealed").with("given", given).with("expected", expected).with("off", off)
         }

@@ -230,7 +230,7 @@ pub async fn create(State(state): State<AppState>, body: JsonBody<NewTemplate>) 
     let JsonBody { value, unknown, .. } = body;
     let t = model::checked(&state.kinds, value, unknown)?;
     if builtin().iter().any(|b| b.id == t.id) {
-        return Err(ApiError::Conflict(format!("'{}' is a built-in template", t.id)));
+        return Err(ApiError::Conflict(crate::i18n::Msg::new("template-builtin").arg("id", &t.id)));
     }
     let (bytes, key) = apply::keyed(&t.kind, &t.request);
     let kind = state.kinds.find(&t.kind).ok_or_else(|| ApiError::Internal(format!("kind {}", t.kind)))?;
@@ -238,7 +238,7 @@ pub async fn create(State(state): State<AppState>, body: JsonBody<NewTemplate>) 
         kind.job(&state, bytes.into(), Destination::New { key: Some(key) }).await.map_err(model::under_request)?;
     let text = serde_json::to_string(&t).map_err(|e| ApiError::Internal(e.to_string()))?;
     if !state.store.insert_template(&t.id, &super::create::now_rfc3339(), &text).await? {
-        return Err(ApiError::Conflict(format!("a template named '{}' exists", t.id)));
+        return Err(ApiError::Conflict(crate::i18n::Msg::new("template-exists").arg("id", &t.id)));
     }
     let location = format!("/v1/templates/{}", t.id);
     let headers = [(header::CONTENT_TYPE, "application/json".to_string()), (header::LOCATION, location)];

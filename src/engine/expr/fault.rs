@@ -2,7 +2,13 @@
 //! the asker's words; [`std::fmt::Display`] says it in English (the
 //! engine's tests, logs).
 
-use super::parse::Tok;
+/// A token of an expression: a number, a name, an operator or parenthesis.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Tok {
+    Num(f64),
+    Name(String),
+    Op(char),
+}
 
 /// The functions of the language, for a message naming an unknown one.
 pub const FUNCTIONS: &str = "sin cos tan asin acos atan atan2 sqrt exp ln log10 abs min max sign floor";

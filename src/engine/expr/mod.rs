@@ -14,9 +14,8 @@ mod node;
 mod parse;
 mod program;
 
-pub use fault::{Arity, FUNCTIONS, Fault};
+pub use fault::{Arity, FUNCTIONS, Fault, Tok};
 use node::Node;
-pub use parse::Tok;
 use program::Program;
 
 /// Longest accepted expression, in characters.

@@ -9,16 +9,8 @@
 //! ```
 
 use super::ExprError;
-use super::fault::{Arity, Fault};
+use super::fault::{Arity, Fault, Tok};
 use super::node::{Fn1, Fn2, Node};
-
-/// A token of an expression: a number, a name, an operator or parenthesis.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Tok {
-    Num(f64),
-    Name(String),
-    Op(char),
-}
 
 struct Token {
     tok: Tok,

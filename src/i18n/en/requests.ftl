@@ -279,3 +279,5 @@ expr-expected = expected '{ $op }'
 expr-token-number = number { $value }
 expr-token-name = name '{ $name }'
 expr-token-operator = '{ $op }'
+dynamics-budget = the compute budget of { $seconds } s ran out at t = { $t } s of simulated time after { $steps } steps; the motion is too fast for the tolerance (a stiff spring?) or the run too long: ask for a shorter run or a looser tolerance{ $hint }
+dynamics-budget-dop853 = ; for a long smooth run at a tight tolerance, "integrator": "dop853" takes far fewer steps

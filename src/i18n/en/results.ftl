@@ -34,7 +34,6 @@ warning-contact-slips = contact { $name }: rolling needs more friction than mu =
 
 ## Direct dynamics
 
-accuracy-nothing = { "" }
 accuracy-dynamics = { $integrator } with dense output, events located by Brent's method on it; work { $work }{ $repeated }
 accuracy-work-quadrature = by adaptive quadrature over the angle
 accuracy-work-power = as the integrated power
@@ -76,7 +75,6 @@ warning-mobility-grubler = Grübler's count gives { $grubler } but the drawing m
 
 ## A check of students' answers
 
-check-nothing = { "" }
 check-no-answer = no answer
 check-not-a-number = { $value } is not a number
 check-wrong-dimension = '{ $text }' is in { $found }, where the answer is in { $unit }

@@ -50,6 +50,7 @@ detail-no-file = job '{ $id }' has no file '{ $name }' (its files: { $known })
 detail-no-file-none = job '{ $id }' has no file '{ $name }' (it has none)
 detail-no-template = no template with id '{ $id }' (GET /v1/templates lists them)
 text-as-is = { $why }
+text-nothing = { "" }
 detail-in-progress = a request with Idempotency-Key '{ $key }' is still being answered; retry after 1 s
 detail-failed = job '{ $id }' failed and has no result: GET /v1/jobs/{ $id } says why (its `problem`)
 detail-not-done = job '{ $id }' is { $status }: its result is not there yet; retry after 1 s
@@ -423,3 +424,10 @@ plot-steps = { $step }: the job has { $count ->
         [one] 1 step (0)
        *[other] { $count } steps (0 to { $last })
     }
+
+## Conflicts, budgets, slow bodies
+
+template-builtin = '{ $id }' is a built-in template
+template-exists = a template named '{ $id }' exists
+detail-over-budget = the compute budget of { $seconds } s ran out ({ $progress }); ask for fewer steps, samples or bodies, or a looser tolerance
+detail-request-timeout = the request's body did not arrive in time: { $read } bytes in { $seconds } s; this service needs a body to keep arriving at { $rate } bytes/s once { $grace } s have passed

@@ -305,3 +305,5 @@ expr-expected = se esperaba '{ $op }'
 expr-token-number = número { $value }
 expr-token-name = nombre '{ $name }'
 expr-token-operator = '{ $op }'
+dynamics-budget = se agotó el presupuesto de cálculo de { $seconds } s en t = { $t } s de tiempo simulado tras { $steps } pasos; el movimiento es demasiado rápido para la tolerancia (¿un muelle rígido?) o la integración demasiado larga: pida una integración más corta o una tolerancia más holgada{ $hint }
+dynamics-budget-dop853 = ; para una integración larga y suave con una tolerancia estricta, "integrator": "dop853" da muchos menos pasos

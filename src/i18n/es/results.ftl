@@ -34,7 +34,6 @@ warning-contact-slips = contacto { $name }: la rodadura necesita más rozamiento
 
 ## Dinámica directa
 
-accuracy-nothing = { "" }
 accuracy-dynamics = { $integrator } con salida densa, eventos localizados sobre ella por el método de Brent; trabajo { $work }{ $repeated }
 accuracy-work-quadrature = por cuadratura adaptativa en el ángulo
 accuracy-work-power = como integral de la potencia
@@ -85,7 +84,6 @@ warning-mobility-grubler = el criterio de Grübler da { $grubler } pero el dibuj
 
 ## La corrección de las respuestas de los alumnos
 
-check-nothing = { "" }
 check-no-answer = sin respuesta
 check-not-a-number = { $value } no es un número
 check-wrong-dimension = '{ $text }' está en { $found }, y la respuesta va en { $unit }

@@ -50,6 +50,7 @@ detail-no-file = el trabajo '{ $id }' no tiene el fichero '{ $name }' (sus fiche
 detail-no-file-none = el trabajo '{ $id }' no tiene el fichero '{ $name }' (no tiene ninguno)
 detail-no-template = no hay ninguna plantilla con id '{ $id }' (GET /v1/templates las lista)
 text-as-is = { $why }
+text-nothing = { "" }
 detail-in-progress = aún se está respondiendo una petición con Idempotency-Key '{ $key }'; reinténtelo dentro de 1 s
 detail-failed = el trabajo '{ $id }' falló y no tiene resultado: GET /v1/jobs/{ $id } dice por qué (su `problem`)
 detail-not-done = el trabajo '{ $id }' está { $status }: su resultado aún no está; reinténtelo dentro de 1 s
@@ -423,3 +424,10 @@ plot-steps = { $step }: el trabajo tiene { $count ->
         [one] 1 paso (0)
        *[other] { $count } pasos (de 0 a { $last })
     }
+
+## Conflictos, presupuestos, cuerpos lentos
+
+template-builtin = '{ $id }' es una plantilla incorporada
+template-exists = ya existe una plantilla llamada '{ $id }'
+detail-over-budget = se agotó el presupuesto de cálculo de { $seconds } s ({ $progress }); pida menos pasos, muestras o sólidos, o una tolerancia más holgada
+detail-request-timeout = el cuerpo de la petición no llegó a tiempo: { $read } bytes en { $seconds } s; este servicio necesita que el cuerpo siga llegando a { $rate } bytes/s pasados { $grace } s

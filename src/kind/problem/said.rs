@@ -20,9 +20,7 @@ impl ApiError {
             Self::NoPlot { id, name, known } => listed("detail-no-plot", "detail-no-plot-none", id, name, known),
             Self::NoFile { id, name, known } => listed("detail-no-file", "detail-no-file-none", id, name, known),
             Self::NoTemplate(id) => Msg::new("detail-no-template").arg("id", id),
-            Self::Conflict(why) | Self::OverBudget(why) | Self::RequestTimeout(why) => {
-                Msg::new("text-as-is").arg("why", why)
-            }
+            Self::Conflict(why) | Self::OverBudget(why) | Self::RequestTimeout(why) => why.clone(),
             Self::InProgress(key) => Msg::new("detail-in-progress").arg("key", key),
             Self::NotDone { id, status: Status::Failed } => Msg::new("detail-failed").arg("id", id),
             Self::NotDone { id, status } => Msg::new("detail-not-done").arg("id", id).arg("status", status.as_str()),

@@ -11,11 +11,11 @@ pub(super) fn invalid(e: DynamicsError, dopri5: bool) -> ApiError {
     let pointer = match e {
         DynamicsError::NonPositiveInertia { .. } => "/reduced_inertia",
         DynamicsError::Initial { .. } => "/machine/input",
-        DynamicsError::Budget { .. } if dopri5 => {
-            let hint = "; for a long smooth run at a tight tolerance, \"integrator\": \"dop853\" takes far fewer steps";
-            return ApiError::OverBudget(format!("{e}{hint}"));
+        DynamicsError::Budget { seconds, t, steps } => {
+            let hint = if dopri5 { "dynamics-budget-dop853" } else { "text-nothing" };
+            let said = Msg::new("dynamics-budget").num("seconds", seconds).num("t", t).count("steps", steps);
+            return ApiError::OverBudget(said.with("hint", Msg::new(hint)));
         }
-        DynamicsError::Budget { .. } => return ApiError::OverBudget(e.to_string()),
         DynamicsError::Integration { .. } => "",
     };
     ApiError::Invalid(vec![FieldError::said(pointer, msg(&e))])

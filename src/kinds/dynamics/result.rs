@@ -218,7 +218,7 @@ pub(super) fn machine_method(s: &MechanismSolution) -> Msg {
         _ => "accuracy-form-lu",
     };
     let energy = match s.energy_held_steps {
-        0 => Msg::new("accuracy-nothing"),
+        0 => Msg::new("text-nothing"),
         held => Msg::new("accuracy-energy-held").count("held", held).count("steps", s.solution.steps),
     };
     Msg::new("accuracy-dynamics-mechanism")
@@ -240,7 +240,7 @@ fn integrator(s: &DynamicsSolution) -> Msg {
 fn repeated(s: &DynamicsSolution) -> Msg {
     match s.repeated {
         true => Msg::new("accuracy-repeated").count("mib", KEPT_BYTES >> 20),
-        false => Msg::new("accuracy-nothing"),
+        false => Msg::new("text-nothing"),
     }
 }
 

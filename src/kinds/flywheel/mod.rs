@@ -92,7 +92,9 @@ impl Kind for Flywheel {
 fn compute(request: &FlywheelRequest, unknown: Vec<FieldError>, limits: &Limits) -> Result<FlywheelResult, ApiError> {
     let deadline = Deadline::after(limits.budget);
     let p = validated(unknown, request.to_problem(limits, deadline)).map_err(|e| match deadline.expired() {
-        true => ApiError::OverBudget(deadline.exceeded("while assembling the machine".into()).to_string()),
+        true => ApiError::OverBudget(crate::kind::refused::engine_msg(
+            &deadline.exceeded("while assembling the machine".into()),
+        )),
         false => e,
     })?;
     let solution = solve(&p).map_err(|e| engine_failure(e, "/torques"))?;

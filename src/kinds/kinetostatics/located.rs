@@ -67,7 +67,7 @@ impl Written {
                 "kinetostatics-unactuated",
                 Msg::new("kinetostatics-unactuated-why").arg("actuators", actuators),
             ),
-            EngineError::BudgetExceeded { .. } => return ApiError::OverBudget(e.to_string()),
+            EngineError::BudgetExceeded { .. } => return ApiError::OverBudget(crate::kind::refused::engine_msg(&e)),
             EngineError::Locked { .. } => return ApiError::Invalid(vec![refused(&e, "/mechanism")]),
             _ => return ApiError::Invalid(vec![refused(&e, &self.at)]),
         };
