@@ -204,6 +204,12 @@ pub enum Command {
     Healthcheck,
     /// Print the OpenAPI document.
     Openapi,
+    /// Write a consistent copy of the SQLite database (--database) to FILE
+    /// while the service runs (SQLite's VACUUM INTO), and check it.
+    Backup {
+        /// The copy: a new file (an existing one is never overwritten).
+        file: PathBuf,
+    },
     /// Solve a request file without a server and print the result (same validation as the API).
     Solve {
         /// Job kind: flywheel, kinetostatics, dynamics, gears, gear_train, equivalent_masses, rotor or check.

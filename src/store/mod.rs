@@ -24,6 +24,7 @@
 //!   goes back to the pool only once its `COMMIT` has succeeded.
 
 pub(crate) mod backend;
+pub mod backup;
 mod health;
 mod held;
 mod idempotency;

@@ -1,6 +1,7 @@
 //! Integration tests through the real router and a real SQLite file.
 
 mod andrews;
+mod backup;
 mod browser;
 mod cams;
 mod capacity;

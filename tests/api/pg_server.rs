@@ -71,6 +71,12 @@ impl PgServer {
         self.run("pg_ctl", &["-D", &self.data.display().to_string(), "-l", &log, "-o", &options, "-w", "start"]);
     }
 
+    /// A client program of the same version (`pg_dump`, `pg_restore`), run
+    /// as the test's user: it connects by TCP like any client.
+    pub fn client(&self, program: &str) -> Command {
+        Command::new(self.bin.join(program))
+    }
+
     /// One of the server's programs, to run as `postgres` where needed.
     fn command(&self, program: &str) -> Command {
         let path = self.bin.join(program);

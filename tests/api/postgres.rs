@@ -217,3 +217,44 @@ fn any_replica_runs_a_queued_job_and_only_one_does() {
     assert_eq!(front.metric(done), 0.0, "the front replica computes none");
     assert_eq!(workers.iter().map(|w| w.metric(done)).sum::<f64>(), 12.0, "each job computed once");
 }
+
+/// The README's PostgreSQL backup, with Debian's client: `pg_dump
+/// --format=custom` of the database while a replica serves it, restored by
+/// `pg_restore` into a new database; a replica on the restored database
+/// answers every job as the first does, byte for byte.
+#[test]
+fn a_pg_dump_restores_every_job() {
+    let Some(server) = PgServer::start("a_pg_dump_restores_every_job") else { return };
+    let runtime = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap();
+    let (db, restored_db) = (runtime.block_on(server.database()), runtime.block_on(server.database()));
+    let live = Replica::start(&db);
+    let ids: Vec<String> = (0..20)
+        .map(|k| {
+            let mut body = request("p103_slider");
+            body["irregularity"] = (0.02 + 0.001 * f64::from(k)).into();
+            let (status, job) = http(live.port, "POST", "/v1/flywheel", &body.to_string()).unwrap();
+            assert_eq!(status, 201, "{job}");
+            json(&job)["id"].as_str().unwrap().to_string()
+        })
+        .collect();
+    let dump = tempfile::NamedTempFile::new().unwrap();
+    let file = dump.path().to_str().unwrap();
+    let run = |mut c: std::process::Command| {
+        let out = c.output().unwrap();
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    };
+    let mut pg_dump = server.client("pg_dump");
+    pg_dump.args(["--format=custom", "--file", file, "--dbname", &db]);
+    run(pg_dump);
+    let mut pg_restore = server.client("pg_restore");
+    pg_restore.args(["--no-owner", "--dbname", &restored_db, file]);
+    run(pg_restore);
+    let restored = Replica::start(&restored_db);
+    for id in &ids {
+        let path = format!("/v1/jobs/{id}");
+        let (live_status, live_body) = http(live.port, "GET", &path, "").unwrap();
+        let (status, body) = http(restored.port, "GET", &path, "").unwrap();
+        assert_eq!((live_status, status), (200, 200), "{id}: {body}");
+        assert_eq!(body, live_body, "{id}: the same bytes from the restored database");
+    }
+}
