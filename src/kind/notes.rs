@@ -83,27 +83,23 @@ pub fn localise(result: &mut Value) {
 /// the members its messages point into are read and written again (a large
 /// result's samples are copied as they are). None: the bytes stand as they are.
 pub fn localise_bytes(result: &[u8]) -> Option<Vec<u8>> {
-    if i18n::current() == Lang::En || !result.windows(11).any(|w| w == b"\"messages\":") {
+    if i18n::current() == Lang::En {
         return None;
     }
-    let Members(mut members) = serde_json::from_slice(result).ok()?;
-    let messages = members.iter().find(|(k, _)| k == "messages")?.1.get();
+    // Borrowed from the stored bytes: the one copy made is the answer.
+    let Members(members) = serde_json::from_slice(result).ok()?;
+    let messages = members.iter().find(|(k, _)| *k == "messages")?.1.get();
     let messages: BTreeMap<String, Msg> = serde_json::from_str(messages).ok()?;
-    let mut touched: BTreeMap<&str, Value> = BTreeMap::new();
+    let mut touched = serde_json::Map::new();
     for pointer in messages.keys() {
         let first = pointer.trim_start_matches('/').split('/').next().unwrap_or("");
-        if let Some((name, raw)) = members.iter().find(|(k, _)| k == first) {
-            touched.entry(name).or_insert(serde_json::from_str(raw.get()).ok()?);
+        if let Some((name, raw)) = members.iter().find(|(k, _)| *k == first) {
+            touched.insert(name.to_string(), serde_json::from_str(raw.get()).ok()?);
         }
     }
-    let mut tree = Value::Object(touched.into_iter().map(|(k, v)| (k.to_string(), v)).collect());
+    let mut tree = Value::Object(touched);
     tree["messages"] = serde_json::to_value(&messages).ok()?;
     localise(&mut tree);
-    for (name, raw) in &mut members {
-        if let Some(v) = tree.get(name.as_str()).filter(|_| name != "messages") {
-            *raw = RawValue::from_string(v.to_string()).ok()?;
-        }
-    }
     let mut out = Vec::with_capacity(result.len() + result.len() / 8);
     out.push(b'{');
     for (i, (name, raw)) in members.iter().enumerate() {
@@ -112,26 +108,30 @@ pub fn localise_bytes(result: &[u8]) -> Option<Vec<u8>> {
         }
         out.extend(serde_json::to_vec(name).ok()?);
         out.push(b':');
-        out.extend(raw.get().as_bytes());
+        match tree.get(*name).filter(|_| *name != "messages") {
+            Some(said) => out.extend(said.to_string().as_bytes()),
+            None => out.extend(raw.get().as_bytes()),
+        }
     }
     out.push(b'}');
     Some(out)
 }
 
-/// A JSON object's members in their order, each value as its text.
-struct Members(Vec<(String, Box<RawValue>)>);
+/// A JSON object's members in their order, each value as its text, borrowed
+/// (a result's member names are plain words: no escapes to undo).
+struct Members<'a>(Vec<(&'a str, &'a RawValue)>);
 
-impl<'de> Deserialize<'de> for Members {
+impl<'de> Deserialize<'de> for Members<'de> {
     fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
         struct Each;
         impl<'de> Visitor<'de> for Each {
-            type Value = Members;
+            type Value = Members<'de>;
             fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
                 f.write_str("a JSON object")
             }
-            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Members, A::Error> {
+            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Members<'de>, A::Error> {
                 let mut members = Vec::new();
-                while let Some(member) = map.next_entry::<String, Box<RawValue>>()? {
+                while let Some(member) = map.next_entry::<&'de str, &'de RawValue>()? {
                     members.push(member);
                 }
                 Ok(Members(members))
