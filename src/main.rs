@@ -22,10 +22,11 @@ fn main() -> ExitCode {
     match &cli.command {
         None | Some(Command::Serve) => serve(&cli, kinds),
         Some(Command::Healthcheck) => healthcheck(&cli.addr),
-        Some(Command::Openapi) => {
-            println!("{}", kinds.openapi_json());
-            ExitCode::SUCCESS
-        }
+        Some(Command::Openapi) => match writeln!(std::io::stdout().lock(), "{}", kinds.openapi_json()) {
+            // `mechdyn openapi | head` closes the pipe early: not a failure.
+            Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => fail(&format!("cannot write: {e}")),
+            _ => ExitCode::SUCCESS,
+        },
         Some(Command::Backup { file }) => backup(&cli.database, file),
         Some(Command::Solve { kind, file, value, unit }) => {
             offline(file, |raw| mechdyn::offline::solve(&kinds, kind, raw, value.as_deref(), unit.as_ref()))

@@ -63,3 +63,23 @@ fn solve_knows_every_job_kind() {
     let out = mechdyn(&["solve", "rotr", "library/requests/p103_slider.json"]);
     assert!(String::from_utf8_lossy(&out.stderr).contains("gear_train, equivalent_masses, rotor"));
 }
+
+/// `mechdyn openapi | head` closes the pipe after a few bytes: the binary
+/// stops quietly (it panicked with a backtrace on the broken pipe).
+#[test]
+fn openapi_into_a_closed_pipe_is_no_failure() {
+    use std::io::Read;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_mechdyn"))
+        .arg("openapi")
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut head = [0u8; 10];
+    child.stdout.take().unwrap().read_exact(&mut head).unwrap();
+    // The read end dropped: the rest of the document (over 64 KiB) meets a closed pipe.
+    let out = child.wait_with_output().unwrap();
+    assert!(out.status.success(), "{:?}: {}", out.status, String::from_utf8_lossy(&out.stderr));
+    assert!(out.stderr.is_empty(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(&head[..1], b"{");
+}
