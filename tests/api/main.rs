@@ -2,6 +2,7 @@
 
 mod andrews;
 mod backup;
+mod balancer;
 mod browser;
 mod cams;
 mod capacity;

@@ -1,0 +1,195 @@
+//! The deployment example run with real processes: Debian's `haproxy` with
+//! `deploy/haproxy.cfg` (the servers' addresses and the error file's path
+//! made this test's) in front of three replicas of the binary on one
+//! PostgreSQL server ([`PgServer`]). Clients POST through the balancer the
+//! whole time; one replica is killed with SIGKILL and started again, then
+//! the database is stopped for 10 s and started again. Every job
+//! acknowledged (201) is read back through the balancer byte for byte; a
+//! request is answered, never left hanging past the client's timeout;
+//! during the outage it is a 503 problem document with its reason; the
+//! balancer takes a replica out while its /readyz fails and back when it
+//! is ready.
+//!
+//! Without haproxy the test says it is skipped, unless MECHDYN_REQUIRE_HAPROXY
+//! is set (CI sets it).
+
+use crate::crash::{free_port, http, start_logged};
+use crate::helpers::request;
+use crate::pg_server::PgServer;
+use std::collections::BTreeMap;
+use std::process::{Child, Command, Stdio};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+const CLIENTS: usize = 3;
+
+/// What the clients got: every answer's status, and the acknowledged jobs' bodies.
+#[derive(Default)]
+struct Seen {
+    statuses: BTreeMap<u16, usize>,
+    /// Answers that never came (the client's 10 s timeout, a reset).
+    lost: Vec<String>,
+    /// 503s without a problem document saying why.
+    bare_503: Vec<String>,
+    jobs: Vec<(String, String)>,
+}
+
+struct Balancer {
+    child: Child,
+    port: u16,
+    stats: u16,
+    _dir: tempfile::TempDir,
+}
+
+impl Balancer {
+    /// HAProxy with the deployment's configuration in front of `replicas`.
+    fn start(replicas: &[u16]) -> Self {
+        let root = env!("CARGO_MANIFEST_DIR");
+        let cfg = std::fs::read_to_string(format!("{root}/deploy/haproxy.cfg")).unwrap();
+        let (port, stats, dir) = (free_port(), free_port(), tempfile::tempdir().unwrap());
+        let mut text = cfg
+            .replace("bind :8080", &format!("bind 127.0.0.1:{port}"))
+            .replace("/usr/local/etc/haproxy/errors", &format!("{root}/deploy/errors"))
+            .replace("log stdout format raw local0 info", "");
+        for (k, p) in replicas.iter().enumerate() {
+            text = text.replace(&format!("mechdyn-{}:8080", k + 1), &format!("127.0.0.1:{p}"));
+        }
+        text.push_str(&format!(
+            "\nfrontend stats\n    bind 127.0.0.1:{stats}\n    stats enable\n    stats uri /stats\n"
+        ));
+        let file = dir.path().join("haproxy.cfg");
+        std::fs::write(&file, text).unwrap();
+        let check = Command::new("haproxy").arg("-c").arg("-f").arg(&file).output().unwrap();
+        assert!(check.status.success(), "{}", String::from_utf8_lossy(&check.stderr));
+        let child =
+            Command::new("haproxy").arg("-db").arg("-f").arg(&file).stdout(Stdio::null()).stderr(Stdio::null()).spawn();
+        let b = Self { child: child.unwrap(), port, stats, _dir: dir };
+        b.wait_until(|up| up == 3, "all three replicas up");
+        b
+    }
+
+    /// How many of the replicas HAProxy has up.
+    fn up(&self) -> usize {
+        let Ok((200, csv)) = http(self.stats, "GET", "/stats;csv", "") else { return 0 };
+        csv.lines().filter(|l| l.starts_with("replicas,mechdyn-") && l.split(',').nth(17) == Some("UP")).count()
+    }
+
+    /// Waits (30 s at most) until `ok(up)`; the time it took.
+    fn wait_until(&self, ok: impl Fn(usize) -> bool, what: &str) -> Duration {
+        let started = Instant::now();
+        while !ok(self.up()) {
+            assert!(started.elapsed() < Duration::from_secs(30), "{what}: not in 30 s ({} up)", self.up());
+            std::thread::sleep(Duration::from_millis(50));
+        }
+        started.elapsed()
+    }
+}
+
+impl Drop for Balancer {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+fn body(k: usize) -> String {
+    let mut b = request("p103_slider");
+    b["irregularity"] = (0.02 + 0.0001 * (k % 1000) as f64).into();
+    b["check"] = false.into();
+    b.to_string()
+}
+
+/// Clients POSTing through the balancer until `stop`.
+fn clients(port: u16, stop: &Arc<AtomicBool>, seen: &Arc<Mutex<Seen>>) -> Vec<std::thread::JoinHandle<()>> {
+    (0..CLIENTS)
+        .map(|c| {
+            let (stop, seen) = (stop.clone(), seen.clone());
+            std::thread::spawn(move || {
+                for k in (c..).step_by(CLIENTS) {
+                    if stop.load(Ordering::SeqCst) {
+                        return;
+                    }
+                    let answer = http(port, "POST", "/v1/flywheel", &body(k));
+                    let mut seen = seen.lock().unwrap();
+                    match answer {
+                        Ok((201, text)) => {
+                            let job: serde_json::Value = serde_json::from_str(&text).unwrap();
+                            seen.jobs.push((job["id"].as_str().unwrap().to_string(), text));
+                            *seen.statuses.entry(201).or_default() += 1;
+                        }
+                        Ok((status, text)) => {
+                            let said = serde_json::from_str::<serde_json::Value>(&text).ok();
+                            if status == 503 && !said.is_some_and(|p| p["detail"].is_string()) {
+                                seen.bare_503.push(text);
+                            }
+                            *seen.statuses.entry(status).or_default() += 1;
+                            drop(seen);
+                            std::thread::sleep(Duration::from_millis(50));
+                        }
+                        Err(e) => seen.lost.push(e.to_string()),
+                    }
+                }
+            })
+        })
+        .collect()
+}
+
+#[test]
+fn three_replicas_behind_haproxy_ride_out_a_kill_and_a_database_outage() {
+    let test = "three_replicas_behind_haproxy_ride_out_a_kill_and_a_database_outage";
+    if Command::new("haproxy").arg("-v").output().is_err() {
+        assert!(std::env::var_os("MECHDYN_REQUIRE_HAPROXY").is_none(), "haproxy is required");
+        eprintln!("skipped {test}: haproxy (Debian's package) is not installed");
+        return;
+    }
+    let Some(server) = PgServer::start(test) else { return };
+    let db = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap().block_on(server.database());
+    let env = [("RUST_LOG", "warn"), ("MECHDYN_DATABASE_WAIT_SECONDS", "30")];
+    let ports = [free_port(), free_port(), free_port()];
+    let mut replicas: Vec<Child> = ports.iter().map(|&p| start_logged(&db, p, &env, None)).collect();
+    let lb = Balancer::start(&ports);
+    let (stop, seen) = (Arc::new(AtomicBool::new(false)), Arc::new(Mutex::new(Seen::default())));
+    let load = clients(lb.port, &stop, &seen);
+    std::thread::sleep(Duration::from_secs(2));
+
+    // A replica killed: the balancer takes it out, and back once it is started again.
+    replicas[1].kill().unwrap();
+    replicas[1].wait().unwrap();
+    lb.wait_until(|up| up == 2, "the killed replica taken out");
+    std::thread::sleep(Duration::from_secs(2));
+    replicas[1] = start_logged(&db, ports[1], &env, None);
+    let back = lb.wait_until(|up| up == 3, "the restarted replica back");
+    eprintln!("{test}: the restarted replica was back in the balancer after {back:.1?}");
+
+    // The database away for 10 s: every replica out while it is, every one back after.
+    server.stop();
+    let out = lb.wait_until(|up| up == 0, "every replica out without its database");
+    eprintln!("{test}: all replicas out {out:.1?} after the database stopped");
+    std::thread::sleep(Duration::from_secs(10).saturating_sub(out));
+    let restarted = Instant::now();
+    server.start_again();
+    lb.wait_until(|up| up == 3, "every replica back with its database");
+    eprintln!("{test}: all replicas back {:.1?} after the database started again", restarted.elapsed());
+    std::thread::sleep(Duration::from_secs(2));
+    stop.store(true, Ordering::SeqCst);
+    load.into_iter().for_each(|c| c.join().unwrap());
+
+    let seen = Arc::try_unwrap(seen).ok().unwrap().into_inner().unwrap();
+    eprintln!("{test}: answers by status {:?}", seen.statuses);
+    assert!(seen.lost.is_empty(), "answers that never came: {:?}", seen.lost);
+    assert!(seen.bare_503.is_empty(), "503s without their reason: {:?}", seen.bare_503);
+    assert!(seen.statuses.get(&503).is_some_and(|n| *n > 0), "the outage was answered 503: {:?}", seen.statuses);
+    let unexpected: Vec<&u16> = seen.statuses.keys().filter(|s| ![201, 502, 503].contains(*s)).collect();
+    assert!(unexpected.is_empty(), "{:?}", seen.statuses);
+    assert!(seen.jobs.len() > 20, "{} jobs acknowledged", seen.jobs.len());
+    for (id, posted) in &seen.jobs {
+        let (status, read) = http(lb.port, "GET", &format!("/v1/jobs/{id}"), "").unwrap();
+        assert_eq!(status, 200, "{id}: {read}");
+        assert_eq!(&read, posted, "{id}: read back through the balancer as acknowledged");
+    }
+    for mut r in replicas {
+        let _ = r.kill();
+        let _ = r.wait();
+    }
+}
