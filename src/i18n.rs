@@ -107,6 +107,7 @@ enum Arg {
     Text(String),
     Number(f64),
     Figures(f64),
+    Written(String),
     Count(usize),
     Said(Box<Msg>),
     List(Vec<Msg>),
@@ -150,6 +151,13 @@ impl Msg {
         self
     }
 
+    /// A number already written with a decimal point in the caller's
+    /// format (`1.000000e-3`), its decimal mark the language's.
+    pub fn written(mut self, name: &'static str, text: String) -> Self {
+        self.args.push((Cow::Borrowed(name), Arg::Written(text)));
+        self
+    }
+
     /// A count, for the catalogue's plural forms (`1 campo`, `2 campos`).
     pub fn count(mut self, name: &'static str, n: usize) -> Self {
         self.args.push((Cow::Borrowed(name), Arg::Count(n)));
@@ -182,6 +190,7 @@ impl Msg {
                 Arg::Text(t) => args.set(name.clone(), t.as_str()),
                 Arg::Number(x) => args.set(name.clone(), lang.number(*x)),
                 Arg::Figures(x) => args.set(name.clone(), lang.figures(*x)),
+                Arg::Written(text) => args.set(name.clone(), lang.decimal(text.clone())),
                 Arg::Count(n) => args.set(name.clone(), *n),
                 Arg::Said(inner) => args.set(name.clone(), inner.render(lang)),
                 Arg::List(items) => {

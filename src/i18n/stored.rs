@@ -2,7 +2,8 @@
 //! so that a result computed once is read later in any language. A text
 //! argument is a JSON string, a number a JSON float (`3.0`), a count a JSON
 //! integer (for the catalogue's plural forms), a number said to four
-//! figures `{"figures": x}`, a message within a message an object of the
+//! figures `{"figures": x}`, a number written with a decimal point
+//! `{"written": "1.0e-3"}`, a message within a message an object of the
 //! same shape, a list of messages an array of them.
 
 use super::{Arg, Msg};
@@ -54,6 +55,7 @@ impl Arg {
             Arg::Number(x) => Value::from(*x),
             Arg::Figures(x) if !x.is_finite() => Value::from(x.to_string()),
             Arg::Figures(x) => serde_json::json!({ "figures": x }),
+            Arg::Written(text) => serde_json::json!({ "written": text }),
             Arg::Count(n) => Value::from(*n),
             Arg::Said(inner) => inner.to_value(),
             Arg::List(items) => Value::Array(items.iter().map(Msg::to_value).collect()),
@@ -66,6 +68,9 @@ impl Arg {
             Value::Number(n) if n.is_u64() => Arg::Count(usize::try_from(n.as_u64()?).ok()?),
             Value::Number(n) => Arg::Number(n.as_f64()?),
             Value::Object(o) if o.len() == 1 && o.contains_key("figures") => Arg::Figures(o["figures"].as_f64()?),
+            Value::Object(o) if o.len() == 1 && o.contains_key("written") => {
+                Arg::Written(o["written"].as_str()?.into())
+            }
             Value::Object(_) => Arg::Said(Box::new(Msg::of_value(value)?)),
             Value::Array(items) => Arg::List(items.iter().map(Msg::of_value).collect::<Option<_>>()?),
             _ => return None,
@@ -101,7 +106,9 @@ mod tests {
         let nested = Msg::new("unit-wrong-dimension").with("found", Msg::new("unit-none")).with("expected", inner);
         let figures = Msg::new("parameter-below").arg("text", "x").fig("min", 34.234567).arg("unit", "°");
         let list = Msg::new("text-as-is").list("why", vec![Msg::new("unit-none"), Msg::new("field-finite")]);
-        for msg in [m, nested, figures, list, Msg::new("field-finite").num("x", f64::NAN)] {
+        let written = Msg::new("text-value-unit").written("value", "1.000000e-3".into()).arg("unit", "m");
+        assert_eq!(written.render(Lang::Es), "1,000000e-3 m");
+        for msg in [m, nested, figures, list, written, Msg::new("field-finite").num("x", f64::NAN)] {
             let text = serde_json::to_string(&msg).unwrap();
             let back: Msg = serde_json::from_str(&text).unwrap();
             for lang in Lang::ALL {

@@ -171,7 +171,7 @@ fn human(bytes: usize) -> Msg {
         b if b >= 1_000 => (tenths(b as f64 / 1e3), "kB"),
         b => (b as f64, "B"),
     };
-    Msg::new("warning-at-value").num("value", n).arg("unit", unit)
+    Msg::new("text-value-unit").num("value", n).arg("unit", unit)
 }
 
 /// Bytes of `value` as JSON, counted without keeping them.

@@ -212,13 +212,6 @@ pub fn unit_msg(e: &UnitError) -> Msg {
     }
 }
 
-/// `x` to `digits` significant figures, for a message's number ([`Msg::num`]
-/// writes the shortest digits of what it is given): `1.234e-3`, not the
-/// whole of 0.0012340000071.
-pub fn figures(x: f64, digits: usize) -> f64 {
-    format!("{x:.*e}", digits.saturating_sub(1)).parse().unwrap_or(x)
-}
-
 /// Collects (pointer, message) errors while converting a request, under
 /// the limits in force.
 #[derive(Default)]

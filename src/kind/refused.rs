@@ -2,8 +2,8 @@
 //! says it: its errors' variants, each a message with its numbers.
 
 use crate::engine::EngineError;
+use crate::engine::variants::round_sig;
 use crate::i18n::Msg;
-use crate::kind::quantity::figures;
 
 /// An error of the engine (a mechanism that cannot be moved, a function
 /// out of range) as the catalogue says it.
@@ -22,7 +22,7 @@ pub fn engine_msg(e: &EngineError) -> Msg {
             .num("input", *input)
             .arg("step", step)
             .arg("joint", joint)
-            .num("residual", figures(*residual, 2)),
+            .num("residual", round_sig(*residual, 2)),
         EngineError::Locked { grubler } => Msg::new("mechanism-locked").arg("grubler", grubler),
         EngineError::Singular { step, input } => Msg::new("mechanism-singular").arg("step", step).num("input", *input),
         EngineError::DofMismatch { dof, inputs } => {

@@ -10,7 +10,7 @@ use axum::body::Body;
 use axum::http::{Request, StatusCode};
 use serde_json::{Value, json};
 
-async fn in_spanish(app: &TestApp, method: &str, path: &str, body: Option<&Value>) -> Reply {
+pub async fn in_spanish(app: &TestApp, method: &str, path: &str, body: Option<&Value>) -> Reply {
     let req = Request::builder().method(method).uri(path).header("accept-language", "es-ES,es;q=0.9,en;q=0.5");
     let req = match body {
         Some(b) => req.header("content-type", "application/json").body(Body::from(b.to_string())),

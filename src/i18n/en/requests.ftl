@@ -49,7 +49,6 @@ contact-two-curves = must hold exactly two curves, the first body's and the seco
 contact-point-rolling = a point cannot roll: rolling needs two curves
 contact-gap = the curves do not touch as drawn: { $gap } m apart near ({ $x }, { $y }) (they must meet within { $tolerance } m, 1e-6 of the mechanism's size)
 contact-cross = the curves cross at ({ $x }, { $y }) at { $angle }° instead of touching (a common tangent): draw them touching
-contact-decimal = { $units }.{ $digits }
 contact-lines = two lines do not make a contact (they touch along their length or cross): use a prismatic joint
 contact-spline-points = must hold 4 to { $max } points
 contact-no-spline = no spline passes through these points
@@ -110,7 +109,6 @@ kinetostatics-points-track = "points" follows the points of "track": give them
 kinetostatics-at = { $what } at input { $value } (step { $step } of { $steps }): { $why }
 kinetostatics-at-start = { $what } at input { $value } (step { $step } of { $steps }, the start): { $why }
 kinetostatics-on-the-way = { $said }; on the way there from the drawn configuration (input "reference") it stops closing at { $value }
-kinetostatics-value = { $value } { $unit }
 kinetostatics-value-rad = { $value } rad = { $degrees } deg
 kinetostatics-not-assembled = the mechanism cannot be assembled
 kinetostatics-loop = the loop through { $joint } does not close (Newton-Raphson ends { $residual } short); check start, end and the lengths (a non-Grashof crank, say, cannot make a full turn)

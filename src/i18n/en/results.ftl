@@ -25,7 +25,6 @@ warning-flywheel-no-disk = no disk: the flywheel inertia needed is { $inertia } 
 warning-dimensions-free = the dimensions leave some points free to move: they stay as near the sketch as the others allow
 warning-span = { $from } to { $to }
 warning-at-time = t = { $t } s
-warning-at-value = { $value } { $unit }
 warning-contact-off-end = contact { $name }: the contact runs off the end of an open curve at { $at }: the results there are not a contact's (extend the curve)
 warning-contact-jumped = contact { $name }: the contact jumped at { $at } to a point far from where it was followed to (another lobe): the follower leaves the curve it was on and lands elsewhere, a jump the motion there does not show
 warning-contact-overlap = contact { $name }: the curves overlap around the contact at { $at }: the bodies would touch elsewhere there (the follower jumps to another lobe: a flat face on a concave stretch, a roller in a tighter hollow); the results there follow a contact that cannot be

@@ -51,6 +51,7 @@ detail-no-file-none = job '{ $id }' has no file '{ $name }' (it has none)
 detail-no-template = no template with id '{ $id }' (GET /v1/templates lists them)
 text-as-is = { $why }
 text-nothing = { "" }
+text-value-unit = { $value } { $unit }
 detail-in-progress = a request with Idempotency-Key '{ $key }' is still being answered; retry after 1 s
 detail-failed = job '{ $id }' failed and has no result: GET /v1/jobs/{ $id } says why (its `problem`)
 detail-not-done = job '{ $id }' is { $status }: its result is not there yet; retry after 1 s

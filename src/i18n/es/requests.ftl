@@ -56,7 +56,6 @@ contact-two-curves = debe tener exactamente dos curvas, la del primer cuerpo y l
 contact-point-rolling = un punto no puede rodar: la rodadura necesita dos curvas
 contact-gap = las curvas no se tocan tal como están dibujadas: están a { $gap } m cerca de ({ $x }; { $y }) (deben encontrarse a menos de { $tolerance } m, 1e-6 del tamaño del mecanismo)
 contact-cross = las curvas se cortan en ({ $x }; { $y }) con un ángulo de { $angle }° en lugar de tocarse (con una tangente común): dibújelas en contacto
-contact-decimal = { $units },{ $digits }
 contact-lines = dos rectas no forman un contacto (se tocan a lo largo de toda su longitud o se cortan): use un par prismático
 contact-spline-points = debe tener de 4 a { $max } puntos
 contact-no-spline = ningún spline pasa por estos puntos
@@ -124,7 +123,6 @@ kinetostatics-points-track = "points" sigue los puntos de "track": indíquelos
 kinetostatics-at = { $what } en la entrada { $value } (paso { $step } de { $steps }): { $why }
 kinetostatics-at-start = { $what } en la entrada { $value } (paso { $step } de { $steps }, el inicio): { $why }
 kinetostatics-on-the-way = { $said }; en el camino hasta allí desde la configuración dibujada (la "reference" de la entrada) deja de cerrar en { $value }
-kinetostatics-value = { $value } { $unit }
 kinetostatics-value-rad = { $value } rad = { $degrees } deg
 kinetostatics-not-assembled = el mecanismo no se puede montar
 kinetostatics-loop = el lazo que pasa por { $joint } no cierra (Newton-Raphson se queda a { $residual } de cerrarlo); revise start, end y las longitudes (una manivela que no cumple Grashof, por ejemplo, no puede dar una vuelta completa)

@@ -25,7 +25,6 @@ warning-flywheel-no-disk = sin disco: la inercia de volante necesaria es { $iner
 warning-dimensions-free = las dimensiones dejan libres algunos puntos: quedan tan cerca del croquis como permiten los demás
 warning-span = { $from } a { $to }
 warning-at-time = t = { $t } s
-warning-at-value = { $value } { $unit }
 warning-contact-off-end = contacto { $name }: el contacto sale por el extremo de una curva abierta en { $at }: ahí los resultados no son los de un contacto (prolongue la curva)
 warning-contact-jumped = contacto { $name }: el contacto saltó en { $at } a un punto lejos de donde se seguía (otro lóbulo): el seguidor deja la curva en la que estaba y cae en otro sitio, un salto que el movimiento ahí no muestra
 warning-contact-overlap = contacto { $name }: las curvas se solapan alrededor del contacto en { $at }: ahí los sólidos se tocarían en otro punto (el seguidor salta a otro lóbulo: una cara plana en un tramo cóncavo, un rodillo en un hueco más cerrado); los resultados ahí siguen un contacto imposible

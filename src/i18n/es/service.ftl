@@ -51,6 +51,7 @@ detail-no-file-none = el trabajo '{ $id }' no tiene el fichero '{ $name }' (no t
 detail-no-template = no hay ninguna plantilla con id '{ $id }' (GET /v1/templates las lista)
 text-as-is = { $why }
 text-nothing = { "" }
+text-value-unit = { $value } { $unit }
 detail-in-progress = aún se está respondiendo una petición con Idempotency-Key '{ $key }'; reinténtelo dentro de 1 s
 detail-failed = el trabajo '{ $id }' falló y no tiene resultado: GET /v1/jobs/{ $id } dice por qué (su `problem`)
 detail-not-done = el trabajo '{ $id }' está { $status }: su resultado aún no está; reinténtelo dentro de 1 s

@@ -230,7 +230,7 @@ fn summary(p: &Problem, cam: &Cam, turn: &[Sample], forces: &[Option<[f64; 3]>],
     };
     if let Some(ranges) = separation.as_ref().filter(|r| !r.is_empty()) {
         let deg =
-            |x: f64| Msg::new("warning-at-value").num("value", (x.to_degrees() * 10.0).round() / 10.0).arg("unit", "°");
+            |x: f64| Msg::new("text-value-unit").num("value", (x.to_degrees() * 10.0).round() / 10.0).arg("unit", "°");
         let span = |[a, b]: &[f64; 2]| Msg::new("warning-span").with("from", deg(*a)).with("to", deg(*b));
         notes.warn(Msg::new("warning-cam-separation").list("at", ranges.iter().map(span).collect()));
     }

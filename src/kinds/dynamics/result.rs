@@ -184,8 +184,8 @@ pub(super) const NOT_REACHED: &str = "warning-dynamics-not-reached";
 fn stopped(s: &Stopped) -> Msg {
     match s {
         Stopped::NotReached { angle, max_time } => Msg::new(NOT_REACHED)
-            .with("angle", Msg::new("warning-at-value").num("value", *angle).arg("unit", "rad"))
-            .with("time", Msg::new("warning-at-value").num("value", *max_time).arg("unit", "s")),
+            .with("angle", Msg::new("text-value-unit").num("value", *angle).arg("unit", "rad"))
+            .with("time", Msg::new("text-value-unit").num("value", *max_time).arg("unit", "s")),
         Stopped::ContactOpens { joint, t } => {
             Msg::new("warning-dynamics-contact-opens").arg("name", joint).with("t", at_time(*t))
         }

@@ -2,12 +2,13 @@
 //! ordinary or epicyclic gear train.
 
 use crate::engine::gear_train::{Mesh, Train, TrainError};
+use crate::engine::variants::round_sig;
 use crate::i18n::Msg;
 use crate::kind::Kind;
 use crate::kind::limits::Limits;
 use crate::kind::notes::Notes;
 use crate::kind::problem::{ApiError, FieldError};
-use crate::kind::quantity::{Errors, Quantity, figures};
+use crate::kind::quantity::{Errors, Quantity};
 use crate::kind::validated;
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
@@ -159,7 +160,7 @@ fn compute(request: &TrainRequest, unknown: Vec<FieldError>) -> Result<TrainResu
 fn msg(e: &TrainError) -> Msg {
     match *e {
         TrainError::Speeds { dof, given } => Msg::new("train-speeds").count("dof", dof).count("given", given),
-        TrainError::Inconsistent { residual } => Msg::new("train-inconsistent").num("residual", figures(residual, 4)),
+        TrainError::Inconsistent { residual } => Msg::new("train-inconsistent").num("residual", round_sig(residual, 4)),
         TrainError::Torques { dof, asked } => Msg::new("train-torques").count("dof", dof).count("asked", asked),
         TrainError::TorquesSingular => Msg::new("train-torques-singular"),
         TrainError::Degenerate => Msg::new("train-degenerate"),

@@ -4,10 +4,12 @@
 //! `/input/end` for one further along the range).
 
 use crate::engine::EngineError;
+use crate::engine::variants::round_sig;
 use crate::i18n::Msg;
 use crate::kind::problem::{ApiError, FieldError};
-use crate::kind::quantity::{Quantity, figures};
-use crate::kinds::mechanism::{InputDto, engine_msg};
+use crate::kind::quantity::Quantity;
+use crate::kind::refused::engine_msg;
+use crate::kinds::mechanism::InputDto;
 use crate::units::{self, Dim};
 
 /// How the first input was written: where it is and in which unit.
@@ -42,7 +44,7 @@ impl Written {
         let shown = |v: f64| six_digits(v).parse().unwrap_or(v);
         match self.unit.0.as_str() {
             "rad" => Msg::new("kinetostatics-value-rad").num("value", shown(si)).num("degrees", shown(si.to_degrees())),
-            unit => Msg::new("kinetostatics-value").num("value", shown(si / self.unit.1)).arg("unit", unit),
+            unit => Msg::new("text-value-unit").num("value", shown(si / self.unit.1)).arg("unit", unit),
         }
     }
 
@@ -53,7 +55,7 @@ impl Written {
                 *step,
                 *input,
                 "kinetostatics-not-assembled",
-                Msg::new("kinetostatics-loop").arg("joint", joint).num("residual", figures(*residual, 2)),
+                Msg::new("kinetostatics-loop").arg("joint", joint).num("residual", round_sig(*residual, 2)),
             ),
             EngineError::Singular { step, input } => {
                 (*step, *input, "kinetostatics-singular", Msg::new("kinetostatics-dead-centre"))
@@ -67,7 +69,7 @@ impl Written {
                 "kinetostatics-unactuated",
                 Msg::new("kinetostatics-unactuated-why").arg("actuators", actuators),
             ),
-            EngineError::BudgetExceeded { .. } => return ApiError::OverBudget(crate::kind::refused::engine_msg(&e)),
+            EngineError::BudgetExceeded { .. } => return ApiError::OverBudget(engine_msg(&e)),
             EngineError::Locked { .. } => return ApiError::Invalid(vec![refused(&e, "/mechanism")]),
             _ => return ApiError::Invalid(vec![refused(&e, &self.at)]),
         };

@@ -142,29 +142,20 @@ pub fn contact(
         }
         Err(NoTouch::Gap { gap, point }) => {
             let msg = Msg::new("contact-gap")
-                .with("gap", written(format!("{gap:.6e}")))
-                .with("x", written(format!("{:.6}", point[0])))
-                .with("y", written(format!("{:.6}", point[1])))
-                .with("tolerance", written(format!("{tolerance:.1e}")));
+                .written("gap", format!("{gap:.6e}"))
+                .written("x", format!("{:.6}", point[0]))
+                .written("y", format!("{:.6}", point[1]))
+                .written("tolerance", format!("{tolerance:.1e}"));
             e.refuse(&format!("{at}/curves"), msg)
         }
         Err(NoTouch::Cross { point, angle }) => {
             let msg = Msg::new("contact-cross")
-                .with("x", written(format!("{:.6}", point[0])))
-                .with("y", written(format!("{:.6}", point[1])))
-                .with("angle", written(format!("{:.3}", angle.to_degrees())));
+                .written("x", format!("{:.6}", point[0]))
+                .written("y", format!("{:.6}", point[1]))
+                .written("angle", format!("{:.3}", angle.to_degrees()));
             e.refuse(&format!("{at}/curves"), msg)
         }
         Err(NoTouch::Lines) => e.refuse(&format!("{at}/curves"), Msg::new("contact-lines")),
-    }
-}
-
-/// A number as `format!` wrote it (`1.000000e-3`, `0.250000`), its decimal
-/// mark the language's.
-fn written(text: String) -> Msg {
-    match text.split_once('.') {
-        Some((units, digits)) => Msg::new("contact-decimal").arg("units", units).arg("digits", digits),
-        None => Msg::new("text-as-is").arg("why", text),
     }
 }
 

@@ -4,8 +4,9 @@
 
 use super::MechanismDto;
 use crate::engine::sketch::{Dimension, solve};
+use crate::engine::variants::round_sig;
 use crate::i18n::Msg;
-use crate::kind::quantity::{Errors, Quantity, figures};
+use crate::kind::quantity::{Errors, Quantity};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
@@ -74,7 +75,7 @@ impl MechanismDto {
             Ok(s) => s,
             Err(c) => {
                 for k in c.dimensions {
-                    let msg = Msg::new("dimensions-conflict").num("residual", figures(c.residual, 4));
+                    let msg = Msg::new("dimensions-conflict").num("residual", round_sig(c.residual, 4));
                     e.say(&format!("{at}/dimensions/{k}"), msg);
                 }
                 return None;

@@ -12,7 +12,6 @@ mod points;
 mod reactions;
 pub mod track;
 
-pub use crate::kind::refused::engine_msg;
 pub use contact::{CircleDto, CurveDto, LineDto, PolarDto, SplineDto};
 pub use dimensions::{Assembled, DimensionDto};
 pub use energy::EnergyDto;
