@@ -14,10 +14,11 @@
 //! is set (CI sets it).
 
 use crate::crash::{free_port, http, start_logged};
+use crate::haproxy::Balancer;
 use crate::helpers::request;
 use crate::pg_server::PgServer;
 use std::collections::BTreeMap;
-use std::process::{Child, Command, Stdio};
+use std::process::{Child, Command};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
@@ -33,64 +34,6 @@ struct Seen {
     /// 503s without a problem document saying why.
     bare_503: Vec<String>,
     jobs: Vec<(String, String)>,
-}
-
-struct Balancer {
-    child: Child,
-    port: u16,
-    stats: u16,
-    _dir: tempfile::TempDir,
-}
-
-impl Balancer {
-    /// HAProxy with the deployment's configuration in front of `replicas`.
-    fn start(replicas: &[u16]) -> Self {
-        let root = env!("CARGO_MANIFEST_DIR");
-        let cfg = std::fs::read_to_string(format!("{root}/deploy/haproxy.cfg")).unwrap();
-        let (port, stats, dir) = (free_port(), free_port(), tempfile::tempdir().unwrap());
-        let mut text = cfg
-            .replace("bind :8080", &format!("bind 127.0.0.1:{port}"))
-            .replace("/usr/local/etc/haproxy/errors", &format!("{root}/deploy/errors"))
-            .replace("log stdout format raw local0 info", "");
-        for (k, p) in replicas.iter().enumerate() {
-            text = text.replace(&format!("mechdyn-{}:8080", k + 1), &format!("127.0.0.1:{p}"));
-        }
-        text.push_str(&format!(
-            "\nfrontend stats\n    bind 127.0.0.1:{stats}\n    stats enable\n    stats uri /stats\n"
-        ));
-        let file = dir.path().join("haproxy.cfg");
-        std::fs::write(&file, text).unwrap();
-        let check = Command::new("haproxy").arg("-c").arg("-f").arg(&file).output().unwrap();
-        assert!(check.status.success(), "{}", String::from_utf8_lossy(&check.stderr));
-        let child =
-            Command::new("haproxy").arg("-db").arg("-f").arg(&file).stdout(Stdio::null()).stderr(Stdio::null()).spawn();
-        let b = Self { child: child.unwrap(), port, stats, _dir: dir };
-        b.wait_until(|up| up == 3, "all three replicas up");
-        b
-    }
-
-    /// How many of the replicas HAProxy has up.
-    fn up(&self) -> usize {
-        let Ok((200, csv)) = http(self.stats, "GET", "/stats;csv", "") else { return 0 };
-        csv.lines().filter(|l| l.starts_with("replicas,mechdyn-") && l.split(',').nth(17) == Some("UP")).count()
-    }
-
-    /// Waits (30 s at most) until `ok(up)`; the time it took.
-    fn wait_until(&self, ok: impl Fn(usize) -> bool, what: &str) -> Duration {
-        let started = Instant::now();
-        while !ok(self.up()) {
-            assert!(started.elapsed() < Duration::from_secs(30), "{what}: not in 30 s ({} up)", self.up());
-            std::thread::sleep(Duration::from_millis(50));
-        }
-        started.elapsed()
-    }
-}
-
-impl Drop for Balancer {
-    fn drop(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
-    }
 }
 
 fn body(k: usize) -> String {

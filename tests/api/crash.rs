@@ -4,8 +4,6 @@
 //! `PRAGMA integrity_check` must say ok.
 
 use serde_json::Value;
-use std::io::{Read, Write};
-use std::net::{TcpListener, TcpStream};
 use std::process::{Child, Command, Stdio};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
@@ -14,32 +12,7 @@ use std::time::{Duration, Instant};
 const KILLS: usize = 8;
 const CLIENTS: usize = 4;
 
-/// One HTTP/1.1 exchange on a fresh connection: (status, body).
-pub fn http(port: u16, method: &str, path: &str, body: &str) -> std::io::Result<(u16, String)> {
-    http_with(port, method, path, "", body)
-}
-
-/// [`http`] with more header lines (`extra`: each ending in `\r\n`).
-pub fn http_with(port: u16, method: &str, path: &str, extra: &str, body: &str) -> std::io::Result<(u16, String)> {
-    let mut s = TcpStream::connect(("127.0.0.1", port))?;
-    s.set_read_timeout(Some(Duration::from_secs(10)))?;
-    let head = format!(
-        "{method} {path} HTTP/1.1\r\nHost: localhost\r\nContent-Type: application/json\r\n{extra}\
-         Content-Length: {}\r\nConnection: close\r\n\r\n",
-        body.len()
-    );
-    s.write_all(head.as_bytes())?;
-    s.write_all(body.as_bytes())?;
-    let mut raw = String::new();
-    s.read_to_string(&mut raw)?;
-    let status = raw.get(9..12).and_then(|c| c.parse().ok()).ok_or(std::io::ErrorKind::InvalidData)?;
-    let body = raw.split_once("\r\n\r\n").map(|(_, b)| b.to_string()).ok_or(std::io::ErrorKind::InvalidData)?;
-    Ok((status, body))
-}
-
-pub fn free_port() -> u16 {
-    TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port()
-}
+pub use crate::wire::{free_port, http, http_with};
 
 /// Starts the service on `db` and waits until /healthz answers.
 pub fn start(db: &str, port: u16) -> Child {

@@ -34,7 +34,7 @@ impl PgServer {
             chown_to_postgres(dir.path());
         }
         let data = dir.path().join("data");
-        let server = Self { bin, data, port: crate::crash::free_port(), as_postgres, _dir: dir };
+        let server = Self { bin, data, port: crate::wire::free_port(), as_postgres, _dir: dir };
         let data = server.data.display().to_string();
         server.run("initdb", &["-D", &data, "-U", "mechdyn", "--auth=trust", "-E", "UTF8", "--no-sync"]);
         server.start_again();
