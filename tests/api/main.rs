@@ -10,6 +10,7 @@ mod cases;
 mod class;
 mod cli;
 mod constants;
+mod container;
 mod contact;
 mod crash;
 mod decimal;
