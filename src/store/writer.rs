@@ -7,7 +7,9 @@
 //! again, so writes resume when space returns). Where the database refuses
 //! the statement for another reason, the jobs are inserted one by one in an
 //! explicit transaction, so a bad row fails alone; where it cannot be
-//! reached, every job fails at once (no second wait for a connection). The
+//! reached, every job fails at once (no second wait for a connection), and
+//! so do the jobs that came while it waited: a job waits for the database
+//! at most once, one pool's wait (5 s), however many come while it is away. The
 //! transaction is plain `BEGIN`/`COMMIT` on a connection [`Held`] for it,
 //! which goes back to the pool only once committed (closed otherwise: a
 //! failed transaction's state is the database's to know, not the pool's).
@@ -42,7 +44,14 @@ pub async fn write_batches(db: Db, mut queue: mpsc::Receiver<Pending>, commits: 
         while !waiting.is_empty() {
             let take = within_bytes(&waiting);
             let batch: Vec<Pending> = waiting.drain(..take).collect();
-            write(&db, batch, &commits, &writes).await;
+            if let Some(away) = write(&db, batch, &commits, &writes).await {
+                // The jobs that came while that batch waited for the database: the same answer
+                // now, not a wait of their own on top of the one they sat through.
+                waiting.extend(std::iter::from_fn(|| queue.try_recv().ok()));
+                for (_, reply) in waiting.drain(..) {
+                    let _ = reply.send(Err(away.clone()));
+                }
+            }
         }
     }
 }
@@ -57,14 +66,15 @@ fn within_bytes(jobs: &[Pending]) -> usize {
     fit.count().max(1)
 }
 
-/// One batch in one transaction; each caller answered.
-async fn write(db: &Db, batch: Vec<Pending>, commits: &AtomicU64, writes: &Writes) {
-    let outcome = match insert_together(db, &batch).await {
-        Ok(seqs) => Ok(seqs.into_iter().map(Ok).collect()),
+/// One batch in one transaction; each caller answered. The error where the
+/// database could not be reached (not where it refused the statement).
+async fn write(db: &Db, batch: Vec<Pending>, commits: &AtomicU64, writes: &Writes) -> Option<StoreError> {
+    let (outcome, away) = match insert_together(db, &batch).await {
+        Ok(seqs) => (Ok(seqs.into_iter().map(Ok).collect()), false),
         // The database refused the statement: one bad row fails it whole, so insert them one by one.
-        Err(e) if matches!(e, sqlx::Error::Database(_)) && !is_full(&e) => insert_all(db, &batch).await,
+        Err(e) if matches!(e, sqlx::Error::Database(_)) && !is_full(&e) => (insert_all(db, &batch).await, false),
         // Full, or the database away (no second wait for a connection).
-        Err(e) => Err(classify(e)),
+        Err(e) => (Err(classify(e)), true),
     };
     match outcome {
         Ok(seqs) => {
@@ -73,6 +83,7 @@ async fn write(db: &Db, batch: Vec<Pending>, commits: &AtomicU64, writes: &Write
             for ((_, reply), seq) in batch.into_iter().zip(seqs) {
                 let _ = reply.send(seq);
             }
+            None
         }
         Err(e) => {
             tracing::warn!(error = %e, jobs = batch.len(), "jobs not stored");
@@ -81,6 +92,7 @@ async fn write(db: &Db, batch: Vec<Pending>, commits: &AtomicU64, writes: &Write
             for (_, reply) in batch {
                 let _ = reply.send(Err(e.clone()));
             }
+            (away && matches!(e, StoreError::Unavailable(_))).then_some(e)
         }
     }
 }

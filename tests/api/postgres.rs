@@ -181,6 +181,46 @@ async fn two_replicas_share_one_database_and_ride_out_its_outage() {
     }
 }
 
+/// While the database is away, a POST waits for it at most once: the pool's
+/// wait for a connection (5 s, `store::backend::ACQUIRE`) and the job's
+/// computing. 24 clients POST to one replica for 8 s after the server
+/// stopped; every answer is the 503 that says so, the slowest within 7.5 s.
+/// (Before the writer answered the jobs that had come while a batch waited
+/// with that batch, one that came just after a batch began waited for it
+/// and then for its own: 10 s, past a client's usual timeout.)
+#[test]
+fn a_post_waits_for_an_absent_database_once() {
+    let Some(server) = PgServer::start("a_post_waits_for_an_absent_database_once") else { return };
+    let db = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap().block_on(server.database());
+    let replica = Replica::start(&db);
+    let body = request("p103_slider").to_string();
+    assert_eq!(http(replica.port, "POST", "/v1/flywheel", &body).unwrap().0, 201);
+    server.stop();
+    let until = Instant::now() + Duration::from_secs(8);
+    let answers: Vec<(u16, String, Duration)> = std::thread::scope(|s| {
+        let clients: Vec<_> = (0..24)
+            .map(|_| {
+                s.spawn(|| {
+                    let mut seen = Vec::new();
+                    while Instant::now() < until {
+                        let asked = Instant::now();
+                        let (status, text) =
+                            http(replica.port, "POST", "/v1/flywheel", &body).expect("an answer in 10 s");
+                        seen.push((status, text, asked.elapsed()));
+                    }
+                    seen
+                })
+            })
+            .collect();
+        clients.into_iter().flat_map(|c| c.join().unwrap()).collect()
+    });
+    for (status, text, _) in &answers {
+        assert_eq!((*status, json(text)["type"].as_str()), (503, Some("/problems/database-unavailable")), "{text}");
+    }
+    let slowest = answers.iter().map(|a| a.2).max().unwrap();
+    assert!(slowest < Duration::from_millis(7500), "{} answers, the slowest after {slowest:.1?}", answers.len());
+}
+
 /// Jobs deferred on a replica that computes none (`MECHDYN_ASYNC_WORKERS=0`)
 /// are computed by the two others on the same PostgreSQL database, each
 /// job once (their `/metrics` count 12 jobs done between them), and read
