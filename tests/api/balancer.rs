@@ -136,3 +136,17 @@ fn three_replicas_behind_haproxy_ride_out_a_kill_and_a_database_outage() {
         let _ = r.wait();
     }
 }
+
+/// HAProxy sends its error file as it is: the no-replica answer's
+/// Content-Length must be its body's, or a client reads a cut document (or,
+/// without one, a body ended only by the connection's close, which wrk and
+/// keep-alive clients count as a read error).
+#[test]
+fn the_no_replica_answer_says_its_own_length() {
+    let file = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/deploy/errors/503.http")).unwrap();
+    let (head, body) = file.split_once("\r\n\r\n").unwrap();
+    let length = head.lines().find_map(|l| l.strip_prefix("Content-Length: ")).expect("a Content-Length");
+    assert_eq!(length.parse::<usize>().unwrap(), body.len(), "{body}");
+    let problem: serde_json::Value = serde_json::from_str(body).unwrap();
+    assert_eq!(problem["status"], 503);
+}
