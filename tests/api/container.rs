@@ -120,7 +120,8 @@ fn the_image_serves_read_only_as_nonroot_and_keeps_its_jobs_on_the_volume() {
     let pid = inspect(&first.name, "{{.State.Pid}}");
     let status = std::fs::read_to_string(format!("/proc/{pid}/status")).unwrap();
     for field in ["Uid:", "Gid:"] {
-        let ids: Vec<&str> = status.lines().find(|l| l.starts_with(field)).unwrap().split_whitespace().skip(1).collect();
+        let ids: Vec<&str> =
+            status.lines().find(|l| l.starts_with(field)).unwrap().split_whitespace().skip(1).collect();
         assert_eq!(ids, ["65532"; 4], "{field} of the container's process");
     }
 

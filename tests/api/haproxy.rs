@@ -68,4 +68,3 @@ impl Drop for Balancer {
         let _ = self.child.wait();
     }
 }
-

@@ -32,4 +32,3 @@ pub fn http_with(port: u16, method: &str, path: &str, extra: &str, body: &str) -
 pub fn free_port() -> u16 {
     TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port()
 }
-
