@@ -5,7 +5,11 @@
 //! flood (`soak/flood.rs`): on a fresh service, the largest jobs the limits
 //! allow from 64 and from 256 connections; then the faults
 //! (`soak/faults.rs`): SIGKILL under writers, slow clients, the full-disk
-//! cycle, the cost of syncing every commit. Writes docs/SOAK.md: throughput,
+//! cycle, the cost of syncing every commit; then the deployment example
+//! (`soak/balancer.rs`): one and three replicas on PostgreSQL behind
+//! HAProxy, and their recovery from a SIGKILL and a database outage
+//! (BALANCER_SECONDS, default 20; SOAK_ONLY=balancer measures this part
+//! alone). Writes docs/SOAK.md: throughput,
 //! latency, answers by status and socket errors, panics and "database is
 //! locked" in the service's log, and memory over time and at its peak. No
 //! assertions: benchmarks are not tests.
@@ -19,6 +23,21 @@ mod flood;
 
 #[path = "soak/faults.rs"]
 mod faults;
+
+#[path = "soak/balancer.rs"]
+mod balancer;
+
+// The tests' own PostgreSQL server, HAProxy and HTTP helpers, shared as files.
+#[allow(dead_code)]
+#[path = "../tests/api/wire.rs"]
+mod wire;
+
+#[allow(dead_code)]
+#[path = "../tests/api/pg_server.rs"]
+mod pg_server;
+
+#[path = "../tests/api/haproxy.rs"]
+mod haproxy;
 
 use serde_json::Value;
 use std::fmt::Write as _;
@@ -76,6 +95,9 @@ fn main() {
         println!("soak skipped: `wrk` is not installed (`apt-get install wrk`)");
         return;
     }
+    if std::env::var("SOAK_ONLY").as_deref() == Ok("balancer") {
+        return balancer_only();
+    }
     let service = http::start().expect("the service starts");
     let script = tempfile::NamedTempFile::new().expect("temp file");
     std::fs::write(script.path(), lua(&mix())).expect("write the wrk script");
@@ -99,10 +121,22 @@ fn main() {
     let log = service.log();
     drop(service);
     let faults = faults::sigkill() + &faults::slow_clients() + &faults::full_disk() + &faults::durability();
+    let faults = faults + &balancer::report();
     let report = report(seconds, &text, idle, &samples, end, peak, &log) + &flood_report() + &faults;
     println!("{report}");
     let path = format!("{}/docs/SOAK.md", env!("CARGO_MANIFEST_DIR"));
     std::fs::write(&path, report).expect("write docs/SOAK.md");
+    println!("wrote {path}");
+}
+
+/// `SOAK_ONLY=balancer`: the last section of docs/SOAK.md measured again, the rest kept.
+fn balancer_only() {
+    let path = format!("{}/docs/SOAK.md", env!("CARGO_MANIFEST_DIR"));
+    let before = std::fs::read_to_string(&path).unwrap_or_default();
+    let kept = before.split(balancer::HEADING).next().unwrap_or_default().trim_end();
+    let report = balancer::report();
+    println!("{report}");
+    std::fs::write(&path, format!("{kept}\n{report}")).expect("write docs/SOAK.md");
     println!("wrote {path}");
 }
 

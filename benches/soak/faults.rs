@@ -4,19 +4,16 @@
 //! (tests/api/crash.rs, slow_clients.rs, full_disk.rs) hold the rules.
 
 use crate::http;
+use crate::wire::free_port;
 use serde_json::Value;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::io::{Read, Write};
-use std::net::{TcpListener, TcpStream};
+use std::net::TcpStream;
 use std::process::{Child, Command, Stdio};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
-
-fn free_port() -> u16 {
-    TcpListener::bind("127.0.0.1:0").and_then(|l| l.local_addr()).map(|a| a.port()).unwrap_or(0)
-}
 
 /// One exchange on a fresh connection (`extra`: header lines): the status
 /// and body, (0, "") when the connection failed.
@@ -41,7 +38,7 @@ fn call(port: u16, method: &str, path: &str, extra: &str, body: &str) -> (u16, S
 }
 
 /// The release binary, killed (SIGKILL) when dropped.
-struct Binary(Child);
+pub struct Binary(Child);
 
 impl Drop for Binary {
     fn drop(&mut self) {
@@ -52,7 +49,7 @@ impl Drop for Binary {
 
 /// The binary on `db` at `port` (through `nsenter` into the mount
 /// namespace of process `ns` when given), once /healthz answers.
-fn spawn(db: &str, port: u16, env: &[(&str, &str)], ns: Option<u32>) -> Binary {
+pub fn spawn(db: &str, port: u16, env: &[(&str, &str)], ns: Option<u32>) -> Binary {
     let bin = env!("CARGO_BIN_EXE_mechdyn");
     let mut command = match ns {
         Some(pid) => {

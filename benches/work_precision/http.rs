@@ -78,6 +78,23 @@ pub fn start_with(env: &[(&str, &str)]) -> Result<Service, String> {
 /// One wrk run (a POST of `body`, or a GET without one): requests/s, p50
 /// and p99 latency (ms), and non-2xx answers.
 pub fn wrk(service: &Service, path: &str, body: &Value, connections: u32) -> Result<(f64, f64, f64, u64), String> {
+    let load = wrk_for(&service.addr, path, body, connections, SECONDS.into())?;
+    Ok((load.rate, load.p50, load.p99, load.non_2xx))
+}
+
+/// What `wrk` measured: requests per second, latency quantiles (ms), the
+/// answers other than 2xx, and its socket errors ("" when none).
+pub struct Load {
+    pub rate: f64,
+    pub p50: f64,
+    pub p99: f64,
+    pub non_2xx: u64,
+    #[allow(dead_code)] // read by the soak bench, which shares this file
+    pub socket_errors: String,
+}
+
+/// `wrk` against `addr` for `seconds`: GETs, or POSTs of `body` unless it is null.
+pub fn wrk_for(addr: &str, path: &str, body: &Value, connections: u32, seconds: u64) -> Result<Load, String> {
     let script = tempfile::NamedTempFile::new().map_err(|e| e.to_string())?;
     let lua = if body.is_null() {
         String::new()
@@ -89,18 +106,23 @@ pub fn wrk(service: &Service, path: &str, body: &Value, connections: u32) -> Res
     std::fs::write(script.path(), lua).map_err(|e| e.to_string())?;
     let out = Command::new("wrk")
         .args(["-t", &connections.min(2).to_string(), "-c", &connections.to_string()])
-        .args(["-d", &format!("{SECONDS}s"), "--latency", "-s"])
+        // The tests' clients wait 10 s for an answer; wrk's own default is 2 s.
+        .args(["-d", &format!("{seconds}s"), "--timeout", "10s", "--latency", "-s"])
         .arg(script.path())
-        .arg(format!("http://{}{path}", service.addr))
+        .arg(format!("http://{addr}{path}"))
         .output()
         .map_err(|e| format!("wrk: {e}"))?;
     let text = String::from_utf8_lossy(&out.stdout);
     let field = |prefix: &str| {
         text.lines().find_map(|l| l.trim().strip_prefix(prefix).map(|v| v.trim().to_string())).unwrap_or_default()
     };
-    let rate = field("Requests/sec:").parse::<f64>().map_err(|_| format!("wrk printed no rate:\n{text}"))?;
-    let errors = field("Non-2xx or 3xx responses:").parse::<u64>().unwrap_or(0);
-    Ok((rate, millis(&field("50%")), millis(&field("99%")), errors))
+    Ok(Load {
+        rate: field("Requests/sec:").parse::<f64>().map_err(|_| format!("wrk printed no rate:\n{text}"))?,
+        p50: millis(&field("50%")),
+        p99: millis(&field("99%")),
+        non_2xx: field("Non-2xx or 3xx responses:").parse::<u64>().unwrap_or(0),
+        socket_errors: field("Socket errors:"),
+    })
 }
 
 /// wrk's "1.23ms", "456.00us" or "1.20s" in milliseconds.
