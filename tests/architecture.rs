@@ -90,8 +90,9 @@ fn the_committed_openapi_document_is_up_to_date() {
     );
 }
 
-/// Without a Docker engine here, check that the Dockerfile agrees with the
-/// code: binary name, non-root user, listen port, health check, data volume.
+/// The Dockerfile agrees with the code, checked without building it (CI
+/// builds and runs the image with podman: tests/api/container.rs): binary
+/// name, non-root user, listen port, health check, data volume.
 #[test]
 fn the_dockerfile_agrees_with_the_code() {
     use clap::CommandFactory;
