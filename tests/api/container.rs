@@ -91,7 +91,7 @@ impl Drop for Container {
     }
 }
 
-/// The README's first request (the flywheel of its "Use it" section) and the
+/// The README's first request (its example, the flywheel of P.103) and the
 /// value it prints for `result/inertia_exact`.
 fn readme_job() -> (String, String) {
     let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
@@ -125,8 +125,15 @@ fn the_image_serves_read_only_as_nonroot_and_keeps_its_jobs_on_the_volume() {
         assert_eq!(ids, ["65532"; 4], "{field} of the container's process");
     }
 
-    // Read-only root: the home the image gives uid 65532 cannot be written; the volume can.
+    // Read-only root: mounted so (the process's own mount table), and the home the image gives
+    // uid 65532 cannot be written; the volume can.
     assert_eq!(inspect(&first.name, "{{.HostConfig.ReadonlyRootfs}}"), "true");
+    let mounts = std::fs::read_to_string(format!("/proc/{pid}/mountinfo")).unwrap();
+    let options = |at: &str| {
+        let line = mounts.lines().find(|l| l.split(' ').nth(4) == Some(at)).unwrap_or_else(|| panic!("{at}: {mounts}"));
+        line.split(' ').nth(5).unwrap().split(',').next().unwrap().to_string()
+    };
+    assert_eq!((options("/").as_str(), options("/data").as_str()), ("ro", "rw"), "{mounts}");
     let refused = first.exec(&["/app/mechdyn", "backup", "/home/nonroot/copy.db"]);
     assert!(!refused.status.success(), "a write outside /data: {refused:?}");
     let backup = first.exec(&["/app/mechdyn", "backup", "/data/copy.db"]);
