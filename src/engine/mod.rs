@@ -29,7 +29,7 @@ pub mod sketch;
 pub mod touch;
 pub mod variants;
 
-pub use deadline::Deadline;
+pub use deadline::{Deadline, Phase, Progress};
 
 /// Why a problem has no answer.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -91,5 +91,5 @@ pub enum EngineError {
         "the compute budget of {seconds} s ran out ({progress}); ask for fewer steps, samples or bodies, \
          or a looser tolerance"
     )]
-    BudgetExceeded { seconds: f64, progress: String },
+    BudgetExceeded { seconds: f64, progress: deadline::Progress },
 }

@@ -1,8 +1,8 @@
 //! Why the engine cannot answer a problem (a mechanism, a cycle), as the catalogue
 //! says it: its errors' variants, each a message with its numbers.
 
-use crate::engine::EngineError;
 use crate::engine::variants::round_sig;
+use crate::engine::{EngineError, Phase, Progress};
 use crate::i18n::Msg;
 
 /// An error of the engine (a mechanism that cannot be moved, a function
@@ -40,8 +40,24 @@ pub fn engine_msg(e: &EngineError) -> Msg {
     }
 }
 
-/// A spent compute budget: its seconds, and where the engine was (its own
-/// words: the phase it had reached).
-pub fn budget_msg(seconds: f64, progress: &str) -> Msg {
-    Msg::new("detail-over-budget").num("seconds", seconds).arg("progress", progress)
+/// A spent compute budget: its seconds, and how far the engine had got.
+pub fn budget_msg(seconds: f64, progress: &Progress) -> Msg {
+    Msg::new("detail-over-budget").num("seconds", seconds).with("progress", progress_msg(progress))
+}
+
+fn progress_msg(progress: &Progress) -> Msg {
+    let phase = |p: &Phase| match p {
+        Phase::Sampling => "progress-flywheel-sampling",
+        Phase::Work => "progress-flywheel-work",
+        Phase::Crossings => "progress-flywheel-crossings",
+        Phase::Exact => "progress-flywheel-exact",
+        Phase::TimeCheck => "progress-flywheel-time-check",
+        Phase::Table => "progress-flywheel-table",
+    };
+    match progress {
+        Progress::Flywheel(p) => Msg::new(phase(p)),
+        Progress::Late => Msg::new("progress-late"),
+        Progress::AssemblingMachine => Msg::new("progress-assembling-machine"),
+        Progress::Assembled { step, of } => Msg::new("progress-assembled").count("step", *step).count("of", *of),
+    }
 }

@@ -32,6 +32,24 @@ async fn kinetostatics_over_its_budget_is_stopped_with_its_progress() {
     assert_over_budget(&app, "/v1/kinetostatics", &heavy_kinetostatics(), "0.02").await;
 }
 
+/// How far a stopped job got, in the asker's language: K1's sweep at 100000
+/// positions stopped at 20 ms says at which position, in English and in
+/// Spanish (its numbers with the language's marks); the message's id is in
+/// the catalogue of both.
+#[tokio::test]
+async fn a_spent_budget_says_how_far_it_got_in_the_askers_language() {
+    let app = TestApp::with_job_budget(Duration::from_millis(20)).await;
+    let r = app.post("/v1/kinetostatics", &heavy_kinetostatics()).await;
+    let detail = r.json()["detail"].as_str().unwrap().to_string();
+    let at = detail.split("(the mechanism was assembled at ").nth(1).unwrap_or_else(|| panic!("{detail}"));
+    assert!(at.contains(" of 100000 positions)"), "{detail}");
+    let r = crate::spanish::in_spanish(&app, "POST", "/v1/kinetostatics", Some(&heavy_kinetostatics())).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let detail = r.json()["detail"].as_str().unwrap().to_string();
+    let at = detail.strip_prefix("se agotó el presupuesto de cálculo de 0,02 s (el mecanismo se había montado en ");
+    assert!(at.is_some_and(|a| a.contains(" de 100000 posiciones); pida menos pasos")), "{detail}");
+}
+
 /// The flywheel of P.103 with the slider-crank itself as the machine: every
 /// M* and I* evaluation assembles the mechanism; a 1 ms budget runs out
 /// while it is being assembled or solved, and the answer says so instead of

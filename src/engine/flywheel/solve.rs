@@ -7,8 +7,8 @@ use super::wittenbauer::{Exact, exact};
 use super::{
     Accuracy, Condition, Disk, DiskSize, DiskSpec, FlywheelProblem, FlywheelSolution, Load, Pair, SamplePoint,
 };
-use crate::engine::EngineError;
 use crate::engine::function::Side;
+use crate::engine::{EngineError, Phase, Progress};
 use std::f64::consts::PI;
 
 /// Net cycle work tolerated without a balance torque, relative to the largest area.
@@ -18,25 +18,25 @@ pub const NET_WORK_TOLERANCE: f64 = 1e-6;
 /// A solution finished past the deadline is not returned: machine functions
 /// answer NaN once it has passed.
 pub fn solve(p: &FlywheelProblem) -> Result<FlywheelSolution, EngineError> {
-    let phase = std::cell::Cell::new("sampling M* and I*");
+    let phase = std::cell::Cell::new(Phase::Sampling);
     let d = &p.deadline;
-    let progress = || format!("stopped while {}", phase.get());
+    let progress = || Progress::Flywheel(phase.get());
     let solution = phases(p, &|next| {
         d.check(progress)?;
         phase.set(next);
         Ok(())
     });
     match solution {
-        Ok(s) => d.check(|| "the solution was complete but late".into()).map(|()| s),
+        Ok(s) => d.check(|| Progress::Late).map(|()| s),
         Err(e) => Err(d.explain(e, progress)),
     }
 }
 
-/// The solution phase by phase; `next` is called between them with the name
-/// of the next one and stops the solution when it fails.
+/// The solution phase by phase; `next` is called between them with the next
+/// one and stops the solution when it fails.
 fn phases(
     p: &FlywheelProblem,
-    next: &dyn Fn(&'static str) -> Result<(), EngineError>,
+    next: &dyn Fn(Phase) -> Result<(), EngineError>,
 ) -> Result<FlywheelSolution, EngineError> {
     let terms = p
         .torques
@@ -49,14 +49,14 @@ fn phases(
     let mut cycle = Cycle::new(terms, &p.reduced_inertia, &p.reduced_inertia_label, p.period, 0.1 * p.tolerance);
     let mut samples = cycle.sample()?;
     cycle.abs_tol_per_rad = 0.1 * p.tolerance * samples.abs_work.max(f64::MIN_POSITIVE) / p.period;
-    next("integrating the work of each torque")?;
+    next(Phase::Work)?;
     let (item_work, balance_torque, mut evaluations) = item_works(p, &mut cycle, &mut samples);
-    next("locating the crossings and lobes of M*")?;
+    next(Phase::Crossings)?;
     let lobes = lobes(&cycle, crossings(&cycle, &samples));
     let mut warnings = Vec::new();
     check_steady_state(p, &item_work, &lobes, &mut warnings)?;
     let (omega_a, eps) = (p.mean_speed, p.irregularity);
-    next("finding the exact inertia")?;
+    next(Phase::Exact)?;
     let ex = exact(&cycle, &samples, &lobes, eps, omega_a);
     let inertia_approximate = lobes.energy_fluctuation / (eps * omega_a * omega_a);
     // An irregularity or speed at the edge of double precision (ε = 1e-308) overflows
@@ -68,14 +68,14 @@ fn phases(
     let flywheel_inertia = Pair { approximate: flywheel(inertia_approximate), exact: flywheel(ex.inertia) };
     let speed = SpeedLaw { cycle: &cycle, ex: &ex, omega_a };
     let omega_at_start = speed.omega(0.0, 0.0, Side::Right);
-    next("checking by time integration")?;
+    next(Phase::TimeCheck)?;
     let check = run_check(p, &cycle, &ex, omega_at_start, &mut warnings);
     if ex.degenerate {
         warnings.push(Condition::Degenerate);
     }
     let shaft_speed = p.flywheel_ratio.abs() * omega_a;
     let disk = p.disk.and_then(|d| size_disk(d, flywheel_inertia.exact, shaft_speed, &mut warnings));
-    next("sampling the table")?;
+    next(Phase::Table)?;
     let table = sample_table(p, &speed);
     let quadrature_error = lobes.quadrature.error + ex.quadrature.error + table.1;
     evaluations += lobes.quadrature.evaluations + ex.quadrature.evaluations;

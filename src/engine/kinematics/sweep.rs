@@ -5,7 +5,7 @@
 
 use super::{Configuration, Dyads, SINGULAR_CONDITION, Trig, Workspace, unreachable};
 use crate::engine::model::Mechanism;
-use crate::engine::{Deadline, EngineError};
+use crate::engine::{Deadline, EngineError, Progress};
 use nalgebra::DMatrix;
 
 /// The configurations along the given input positions, starting from the
@@ -54,7 +54,7 @@ pub fn sweep_each(
     // The least jump of each curve parameter: 1e-3 of its period (of 1 m unbounded).
     let jump_scale: Vec<f64> = m.parameter_periods().iter().map(|p| 1e-3 * p.unwrap_or(1.0)).collect();
     for (step, inputs) in positions.iter().enumerate() {
-        deadline.check(|| format!("the mechanism was assembled at {step} of {} positions", positions.len()))?;
+        deadline.check(|| Progress::Assembled { step, of: positions.len() })?;
         let predict = |q: &mut Vec<f64>| {
             q.clone_from(&base);
             if let Some(from) = from {

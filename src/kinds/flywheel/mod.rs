@@ -9,8 +9,8 @@ pub use result::{
     AccuracyDto, AreaDto, CSV_COLUMNS, CheckDto, DiskOut, FlywheelResult, InertiaPair, ItemWork, SampleDto, csv_table,
 };
 
-use crate::engine::Deadline;
 use crate::engine::flywheel::solve;
+use crate::engine::{Deadline, Progress};
 use crate::kind::limits::Limits;
 use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
@@ -92,9 +92,7 @@ impl Kind for Flywheel {
 fn compute(request: &FlywheelRequest, unknown: Vec<FieldError>, limits: &Limits) -> Result<FlywheelResult, ApiError> {
     let deadline = Deadline::after(limits.budget);
     let p = validated(unknown, request.to_problem(limits, deadline)).map_err(|e| match deadline.expired() {
-        true => ApiError::OverBudget(crate::kind::refused::engine_msg(
-            &deadline.exceeded("while assembling the machine".into()),
-        )),
+        true => ApiError::OverBudget(crate::kind::refused::engine_msg(&deadline.exceeded(Progress::AssemblingMachine))),
         false => e,
     })?;
     let solution = solve(&p).map_err(|e| engine_failure(e, "/torques"))?;
