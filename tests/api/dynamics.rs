@@ -230,6 +230,12 @@ async fn machine_form_errors_point_at_the_field() {
     assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
     assert_eq!(r.json()["errors"][0]["pointer"], "/machine/input", "{}", r.text);
     assert!(r.text.contains("2 degree(s) of freedom"), "{}", r.text);
+    // The reason in the asker's language, as the rest of the message.
+    let r = crate::spanish::in_spanish(&app, "POST", "/v1/dynamics", Some(&loose)).await;
+    let said = r.json()["errors"][0]["message"].as_str().unwrap().to_string();
+    let expected = "el estado inicial no se puede montar: el mecanismo tiene 2 grado(s) de libertad, pero 1 entrada(s) \
+                    nombran sus coordenadas";
+    assert_eq!(said, expected);
 }
 
 /// The integrator and the energy hold: chosen (`auto`: DOP853 in the reduced

@@ -23,7 +23,7 @@ mod grip;
 mod ode;
 
 use super::range_space::RangeSpace;
-use super::{DynamicsError, DynamicsSolution, End, Integrator, Sample, Settings, energy_residual, run};
+use super::{DynamicsError, DynamicsSolution, End, Failure, Integrator, Sample, Settings, Start, energy_residual, run};
 use crate::engine::Deadline;
 use crate::engine::constraints::{State, evaluate, evaluate_blocks, joint_offsets};
 use crate::engine::kinematics::sweep;
@@ -132,22 +132,18 @@ pub fn solve_in(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution,
 /// One run, the sparse form holding folds if `hold`.
 fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSolution, DynamicsError> {
     let m = &p.mechanism;
-    let initial = |reason: String| DynamicsError::Initial { reason };
+    let initial = |reason: Start| DynamicsError::Initial { reason };
     let inputs: Vec<[f64; 3]> = p.initial.iter().map(|[a, w]| [*a, *w, 0.0]).collect();
     let over = |t: f64, steps: usize| DynamicsError::Budget { seconds: p.deadline.seconds(), t, steps };
     let start = sweep(m, &[inputs], &p.deadline, false)
-        .map_err(|e| if p.deadline.expired() { over(0.0, 0) } else { initial(e.to_string()) })?
+        .map_err(|e| if p.deadline.expired() { over(0.0, 0) } else { initial(Start::Engine(e)) })?
         .remove(0);
     if start.singular {
-        return Err(initial("the start is a singular position of the inputs (a dead centre or toggle)".into()));
+        return Err(initial(Start::SingularInputs));
     }
     let mobility = mobility(m, &start.q);
     if mobility.dof != m.drivers.len() {
-        return Err(initial(format!(
-            "the mechanism has {} degree(s) of freedom but {} input(s) name its coordinates",
-            mobility.dof,
-            m.drivers.len()
-        )));
+        return Err(initial(Start::Dof { dof: mobility.dof, inputs: m.drivers.len() }));
     }
     let n = m.n_coordinates();
     let mass = masses(m);
@@ -180,11 +176,7 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         grips,
     };
     if dae.motion(0.0, &start.q, &start.qd, false).is_none() {
-        return Err(initial(
-            "the equations of motion are singular at the start: some motion of the inputs moves no mass \
-             (bodies without mass or inertia where the motion needs them)"
-                .into(),
-        ));
+        return Err(initial(Start::MovesNoMass));
     }
     let settings = settings(p, &start.q, &start.qd, length);
     let mut y0 = start.q.clone();
@@ -308,10 +300,8 @@ fn characteristic_length(m: &Mechanism) -> f64 {
 fn sample(dae: &Equations, mobility: &Mobility, t: f64, y: &[f64]) -> Result<MechanismSample, DynamicsError> {
     let (n, r) = (dae.n, dae.r);
     let (q, qd) = (&y[..n], &y[n..2 * n]);
-    let motion = dae.motion(t, q, qd, dae.p.reactions).ok_or_else(|| DynamicsError::Integration {
-        t,
-        reason: "the equations of motion are singular here (a singular position)".into(),
-    })?;
+    let singular = || DynamicsError::Integration { t, reason: Failure::SingularMotion };
+    let motion = dae.motion(t, q, qd, dae.p.reactions).ok_or_else(singular)?;
     let reactions = if dae.p.reactions {
         let m = &dae.p.mechanism;
         let zeros = vec![[0.0; 3]; m.drivers.len()];

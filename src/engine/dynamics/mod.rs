@@ -16,12 +16,14 @@
 //! cannot go on or the compute budget runs out.
 
 mod events;
+mod failure;
 pub mod mechanism;
 mod range_space;
 pub mod reduced;
 mod rows;
 mod sampler;
 
+pub use failure::{DynamicsError, Failure, Start};
 pub use reduced::{ReducedProblem, solve};
 
 use super::numeric::dop853::Dp853;
@@ -154,23 +156,6 @@ pub enum Stopped {
     Chatter { switches: usize, t: f64 },
     /// A guard crossed where the model has none.
     Unexpected,
-}
-
-/// Why the motion cannot be computed.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum DynamicsError {
-    #[error("the reduced inertia is not positive at phi = {phi} rad")]
-    NonPositiveInertia { phi: f64 },
-    #[error("the integration failed at t = {t} s: {reason}")]
-    Integration { t: f64, reason: String },
-    #[error(
-        "the compute budget of {seconds} s ran out at t = {t} s of simulated time after {steps} steps; \
-         the motion is too fast for the tolerance (a stiff spring?) or the run too long: \
-         ask for a shorter run or a looser tolerance"
-    )]
-    Budget { seconds: f64, t: f64, steps: usize },
-    #[error("the initial state cannot be assembled: {reason}")]
-    Initial { reason: String },
 }
 
 /// What the integrator needs from a model with state y.
@@ -335,7 +320,7 @@ fn drive<S: Stepper>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<R
         if deadline.expired() {
             return Err(over(&ode));
         }
-        let step = step.map_err(|e| DynamicsError::Integration { t: ode.time(), reason: e.to_string() })?;
+        let step = step.map_err(|e| DynamicsError::Integration { t: ode.time(), reason: Failure::Ode(e) })?;
         if s.automatic && ode.stiff() {
             spent.add(&ode);
             let [accepted, rejected, evaluations] = spent.counts;

@@ -145,6 +145,13 @@ dynamics-speed-constant = must be a constant: the input's speed at t = 0
 dynamics-inertia-not-positive = the reduced inertia is not positive at phi = { $phi } rad
 dynamics-integration = the integration failed at t = { $t } s: { $reason }
 dynamics-initial = the initial state cannot be assembled: { $reason }
+dynamics-step-too-small = the step size fell below round-off at t = { $t } s
+dynamics-too-many-steps = more than { $steps } steps
+dynamics-not-finite = the derivative is not finite at t = { $t } s
+dynamics-singular-motion = the equations of motion are singular here (a singular position)
+dynamics-start-singular = the start is a singular position of the inputs (a dead centre or toggle)
+dynamics-start-dof = the mechanism has { $dof } degree(s) of freedom but { $inputs } input(s) name its coordinates
+dynamics-start-no-mass = the equations of motion are singular at the start: some motion of the inputs moves no mass (bodies without mass or inertia where the motion needs them)
 
 ## A cam: its follower, program, size, speed and dynamics
 

@@ -1,9 +1,11 @@
 //! A run the engine cannot make, as the answer: a 422 at the field it
 //! comes from in the catalogue's words, or a spent budget.
 
-use crate::engine::dynamics::DynamicsError;
+use crate::engine::dynamics::{DynamicsError, Failure, Start};
+use crate::engine::numeric::ode::OdeError;
 use crate::i18n::Msg;
 use crate::kind::problem::{ApiError, FieldError};
+use crate::kind::refused::engine_msg;
 
 /// A failed integration as a 422 at the field it comes from; a spent budget
 /// as such, naming the 8th-order method where the 5th-order one ran.
@@ -21,14 +23,33 @@ pub(super) fn invalid(e: DynamicsError, dopri5: bool) -> ApiError {
     ApiError::Invalid(vec![FieldError::said(pointer, msg(&e))])
 }
 
-/// A dynamics error as the catalogue says it; the engine's reason for a
-/// failed step or start is its own text.
+/// A dynamics error as the catalogue says it, its reason too.
 fn msg(e: &DynamicsError) -> Msg {
     match e {
         DynamicsError::NonPositiveInertia { phi } => Msg::new("dynamics-inertia-not-positive").num("phi", *phi),
-        DynamicsError::Integration { t, reason } => Msg::new("dynamics-integration").num("t", *t).arg("reason", reason),
+        DynamicsError::Integration { t, reason } => {
+            Msg::new("dynamics-integration").num("t", *t).with("reason", failure(reason))
+        }
         // Answered as a spent budget, never as a field's error.
         DynamicsError::Budget { .. } => Msg::new("text-as-is").arg("why", e),
-        DynamicsError::Initial { reason } => Msg::new("dynamics-initial").arg("reason", reason),
+        DynamicsError::Initial { reason } => Msg::new("dynamics-initial").with("reason", start(reason)),
+    }
+}
+
+fn failure(reason: &Failure) -> Msg {
+    match reason {
+        Failure::Ode(OdeError::StepTooSmall { t }) => Msg::new("dynamics-step-too-small").num("t", *t),
+        Failure::Ode(OdeError::TooManySteps { steps }) => Msg::new("dynamics-too-many-steps").count("steps", *steps),
+        Failure::Ode(OdeError::NotFinite { t }) => Msg::new("dynamics-not-finite").num("t", *t),
+        Failure::SingularMotion => Msg::new("dynamics-singular-motion"),
+    }
+}
+
+fn start(reason: &Start) -> Msg {
+    match reason {
+        Start::Engine(e) => engine_msg(e),
+        Start::SingularInputs => Msg::new("dynamics-start-singular"),
+        Start::Dof { dof, inputs } => Msg::new("dynamics-start-dof").count("dof", *dof).count("inputs", *inputs),
+        Start::MovesNoMass => Msg::new("dynamics-start-no-mass"),
     }
 }
