@@ -5,9 +5,11 @@ mod located;
 mod plots;
 mod request;
 mod result;
+mod table;
 
 pub use request::{KinetostaticsRequest, OutputKind};
-pub use result::{KinetostaticsResult, Scalars, StepDto, csv_table};
+pub use result::{KinetostaticsResult, Scalars, StepDto};
+pub use table::csv_table;
 
 use crate::engine::Deadline;
 use crate::engine::kinetostatics::solve_each;
