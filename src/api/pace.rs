@@ -79,7 +79,7 @@ pub async fn read_body(body: Body, limit: usize, pace: Pace, admission: &Admissi
             () = &mut timer => return Err(behind(buf.len(), started.elapsed(), pace)),
         };
         let Some(frame) = frame else { return Ok(buf.freeze()) };
-        let frame = frame.map_err(|e| ApiError::MalformedJson(format!("the body could not be read: {e}")))?;
+        let frame = frame.map_err(|e| ApiError::MalformedJson(Msg::new("json-unreadable").arg("why", e)))?;
         if let Some(data) = frame.data_ref() {
             if buf.len() + data.len() > limit {
                 return Err(ApiError::PayloadTooLarge(limit));

@@ -91,7 +91,7 @@ pub struct Problem {
 /// Everything a handler can fail with.
 #[derive(Debug)]
 pub enum ApiError {
-    MalformedJson(String),
+    MalformedJson(Msg),
     UnsupportedMediaType,
     UnsupportedTable,
     PayloadTooLarge(usize),

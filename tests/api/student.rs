@@ -103,6 +103,17 @@ async fn json_mistakes_are_said_in_words() {
     assert_eq!(r.status, StatusCode::BAD_REQUEST);
     let detail = r.json()["detail"].as_str().unwrap().to_string();
     assert!(detail.contains("near `NaN}`") && detail.contains("not JSON numbers"), "{detail}");
+    // In Spanish, every word of it (serde_json's own words mapped by the catalogue).
+    let req = axum::http::Request::post("/v1/flywheel?lang=es")
+        .header("content-type", "application/json")
+        .body(axum::body::Body::from("{\"mean_speed\": \"60 rpm\", \"irregularity\": NaN}"))
+        .unwrap();
+    let r = app.send(req).await;
+    assert_eq!(
+        r.json()["detail"],
+        "el cuerpo no es JSON válido: se esperaba un valor en la línea 1, columna 42, junto a `NaN}`; NaN e Infinity no \
+         son números de JSON: dé un número finito"
+    );
 }
 
 /// Every invalid field in one answer: the speed's unknown unit does not hide

@@ -3,7 +3,7 @@
 //! unknown field and for the first field of the wrong type.
 
 mod strict;
-mod words;
+pub(crate) mod words;
 
 use crate::i18n::Msg;
 pub use crate::kind::problem::escape;
@@ -42,7 +42,7 @@ impl<S: Send + Sync, T: DeserializeOwned> FromRequest<S> for JsonBody<T> {
         let limit = req.extensions().get::<BodyLimit>().map_or(usize::MAX, |l| l.0);
         let raw = read_within(req.into_body(), limit).await?;
         if std::str::from_utf8(&raw).is_err() {
-            return Err(ApiError::MalformedJson("the body is not UTF-8".into()));
+            return Err(ApiError::MalformedJson(Msg::new("json-not-utf8")));
         }
         parse(raw)
     }
@@ -71,14 +71,13 @@ pub async fn read_within(body: Body, limit: usize) -> Result<Bytes, ApiError> {
     }
     if announced.is_some() {
         // A body of a known length within the limit (admission read it whole): taken as it is, not copied.
-        let read =
-            body.collect().await.map_err(|e| ApiError::MalformedJson(format!("the body could not be read: {e}")));
+        let read = body.collect().await.map_err(|e| ApiError::MalformedJson(Msg::new("json-unreadable").arg("why", e)));
         return Ok(read?.to_bytes());
     }
     let mut body = body;
     let mut buf = BytesMut::new();
     while let Some(frame) = body.frame().await {
-        let frame = frame.map_err(|e| ApiError::MalformedJson(format!("the body could not be read: {e}")))?;
+        let frame = frame.map_err(|e| ApiError::MalformedJson(Msg::new("json-unreadable").arg("why", e)))?;
         if let Some(data) = frame.data_ref() {
             if buf.len() + data.len() > limit {
                 return Err(ApiError::PayloadTooLarge(limit));

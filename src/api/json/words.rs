@@ -76,7 +76,7 @@ fn got_words(got: &str) -> Msg {
 }
 
 /// A body that is not JSON: where, what is there, and the usual cause.
-pub fn malformed(e: &serde_json::Error, raw: &[u8]) -> String {
+pub fn malformed(e: &serde_json::Error, raw: &[u8]) -> Msg {
     let text = String::from_utf8_lossy(raw);
     let (line, column) = (e.line(), e.column());
     let near: String = text
@@ -87,18 +87,43 @@ pub fn malformed(e: &serde_json::Error, raw: &[u8]) -> String {
     let cause = e.to_string();
     let cause = cause.split(" at line ").next().unwrap_or(&cause);
     let hint = match near.trim_start() {
-        n if ["NaN", "Infinity", "-Infinity", "inf", "nan"].iter().any(|w| n.starts_with(w)) => {
-            "; NaN and Infinity are not JSON numbers: give a finite number"
-        }
-        n if n.starts_with('\'') => "; JSON strings take double quotes",
-        n if n.starts_with('}') || n.starts_with(']') => "; is there a comma before it?",
-        _ => "",
+        n if ["NaN", "Infinity", "-Infinity", "inf", "nan"].iter().any(|w| n.starts_with(w)) => "json-hint-nan",
+        n if n.starts_with('\'') => "json-hint-quotes",
+        n if n.starts_with('}') || n.starts_with(']') => "json-hint-comma",
+        _ => "text-nothing",
     };
-    if near.is_empty() {
-        format!("{cause} at line {line}, column {column}{hint}")
-    } else {
-        format!("{cause} at line {line}, column {column}, near `{near}`{hint}")
-    }
+    let at = match near.is_empty() {
+        true => Msg::new("json-at"),
+        false => Msg::new("json-at-near").arg("near", near),
+    };
+    let at = at.count("line", line).count("column", column);
+    Msg::new("json-syntax").with("cause", syntax(cause)).with("at", at).with("hint", Msg::new(hint))
+}
+
+/// serde_json's syntax error, as the catalogue words it.
+fn syntax(cause: &str) -> Msg {
+    let id = match cause {
+        "EOF while parsing a list" => "json-eof-list",
+        "EOF while parsing an object" => "json-eof-object",
+        "EOF while parsing a string" => "json-eof-string",
+        "EOF while parsing a value" => "json-eof-value",
+        "expected `:`" => "json-expected-colon",
+        "expected `,` or `]`" => "json-expected-comma-bracket",
+        "expected `,` or `}`" => "json-expected-comma-brace",
+        "expected value" => "json-expected-value",
+        "expected ident" => "json-expected-ident",
+        "invalid escape" => "json-invalid-escape",
+        "invalid number" => "json-invalid-number",
+        "number out of range" => "json-number-out-of-range",
+        "key must be a string" => "json-key-not-string",
+        "trailing comma" => "json-trailing-comma",
+        "trailing characters" => "json-trailing-characters",
+        "recursion limit exceeded" => "json-too-deep",
+        c if c.starts_with("control character") => "json-control-character",
+        // A typed body's error (a wrong type, an unknown name), or one unknown here.
+        _ => return plain(cause),
+    };
+    Msg::new(id)
 }
 
 #[cfg(test)]
@@ -137,6 +162,40 @@ mod tests {
         let raw = b"{\"irregularity\": NaN}";
         let e = serde_json::from_slice::<serde_json::Value>(raw).unwrap_err();
         let m = malformed(&e, raw);
-        assert!(m.contains("near `NaN}`") && m.contains("not JSON numbers"), "{m}");
+        assert_eq!(
+            m.render(Lang::En),
+            "expected value at line 1, column 18, near `NaN}`; NaN and Infinity are not JSON numbers: give a finite number"
+        );
+        assert_eq!(
+            m.render(Lang::Es),
+            "se esperaba un valor en la línea 1, columna 18, junto a `NaN}`; NaN e Infinity no son números de JSON: \
+             dé un número finito"
+        );
+    }
+
+    /// Each syntax error serde_json gives for a broken body has its words in the catalogue.
+    #[test]
+    fn every_usual_syntax_error_is_worded() {
+        let bodies: [&[u8]; 11] = [
+            b"[1, 2",
+            b"{\"a\": 1",
+            b"\"abc",
+            b"",
+            b"{\"a\" 1}",
+            b"[1 2]",
+            b"{\"a\": 1 \"b\": 2}",
+            b"{\"a\": x}",
+            b"[1,]",
+            b"{1: 2}",
+            b"[1] 2",
+        ];
+        for raw in bodies {
+            let e = serde_json::from_slice::<serde_json::Value>(raw).unwrap_err();
+            let m = malformed(&e, raw);
+            let cause = e.to_string();
+            let cause = cause.split(" at line ").next().unwrap();
+            assert_ne!(syntax(cause).id(), "text-as-is", "{cause}");
+            assert!(m.render(Lang::En).starts_with(cause), "{}", m.render(Lang::En));
+        }
     }
 }

@@ -6,6 +6,7 @@
 use super::model::Template;
 use super::{RESERVED, Want, job_for};
 use crate::api::AppState;
+use crate::api::json::words::malformed;
 use crate::api::tables::{Csv, Decimal, at, tokens};
 use crate::i18n::Msg;
 use crate::kind::cell;
@@ -60,7 +61,8 @@ pub async fn study(
 ) -> Result<(String, bool), ApiError> {
     let mime = mime(headers);
     if mime.starts_with("application/json") {
-        let request: TableRequest = serde_json::from_slice(body).map_err(|e| ApiError::MalformedJson(e.to_string()))?;
+        let request: TableRequest =
+            serde_json::from_slice(body).map_err(|e| ApiError::MalformedJson(malformed(&e, body)))?;
         let pointers: Vec<String> =
             if request.values.is_empty() { values.map_or_else(Vec::new, |v| pointer_list(v)) } else { request.values };
         let rows = request.rows.iter().map(super::texts).collect();

@@ -9,7 +9,7 @@ impl ApiError {
     /// The detail of this error as the catalogue says it.
     pub fn msg(&self) -> Msg {
         match self {
-            Self::MalformedJson(why) => Msg::new("detail-malformed-json").arg("why", why),
+            Self::MalformedJson(why) => Msg::new("detail-malformed-json").with("why", why.clone()),
             Self::UnsupportedMediaType => Msg::new("detail-unsupported-media-type"),
             Self::UnsupportedTable => Msg::new("detail-unsupported-table"),
             Self::PayloadTooLarge(limit) => Msg::new("detail-payload-too-large").arg("limit", limit),
