@@ -4,7 +4,7 @@
 //! (tests/api/crash.rs, slow_clients.rs, full_disk.rs) hold the rules.
 
 use crate::http;
-use crate::wire::free_port;
+use crate::wire::{exchange, free_port};
 use serde_json::Value;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -15,26 +15,10 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
-/// One exchange on a fresh connection (`extra`: header lines): the status
-/// and body, (0, "") when the connection failed.
+/// One exchange on a fresh connection (`extra`: header lines), the answer
+/// awaited 60 s: the status and body, (0, "") when the connection failed.
 fn call(port: u16, method: &str, path: &str, extra: &str, body: &str) -> (u16, String) {
-    let exchange = || -> std::io::Result<(u16, String)> {
-        let mut s = TcpStream::connect(("127.0.0.1", port))?;
-        s.set_read_timeout(Some(Duration::from_secs(60)))?;
-        let head = format!(
-            "{method} {path} HTTP/1.1\r\nHost: localhost\r\nContent-Type: application/json\r\n{extra}\
-             Content-Length: {}\r\nConnection: close\r\n\r\n",
-            body.len()
-        );
-        s.write_all(head.as_bytes())?;
-        s.write_all(body.as_bytes())?;
-        let mut raw = Vec::new();
-        s.read_to_end(&mut raw)?;
-        let text = String::from_utf8_lossy(&raw).into_owned();
-        let status = text.get(9..12).and_then(|c| c.parse().ok()).unwrap_or(0);
-        Ok((status, text.split_once("\r\n\r\n").map_or(String::new(), |(_, b)| b.to_string())))
-    };
-    exchange().unwrap_or((0, String::new()))
+    exchange(port, method, path, extra, body, Duration::from_secs(60)).unwrap_or((0, String::new()))
 }
 
 /// The release binary, killed (SIGKILL) when dropped.

@@ -3,7 +3,7 @@
 //! starting the service on the copy: every job acknowledged before the
 //! backup began is read from the copy byte for byte as from the live one.
 
-use crate::crash::{free_port, http, start};
+use crate::crash::{flywheel_job, free_port, http, start};
 use std::process::Command;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
@@ -17,16 +17,8 @@ fn backup(database: &str, file: &std::path::Path) -> std::process::Output {
         .unwrap()
 }
 
-/// A flywheel job of its own (the irregularity tells it from the others).
-fn job(k: usize) -> String {
-    let mut b = crate::helpers::request("p103_slider");
-    b["irregularity"] = (0.01 + 0.0001 * k as f64).into();
-    b["check"] = false.into();
-    b.to_string()
-}
-
 fn post(port: u16, k: usize) -> String {
-    let (status, text) = http(port, "POST", "/v1/flywheel", &job(k)).unwrap();
+    let (status, text) = http(port, "POST", "/v1/flywheel", &flywheel_job(k)).unwrap();
     assert_eq!(status, 201, "{text}");
     serde_json::from_str::<serde_json::Value>(&text).unwrap()["id"].as_str().unwrap().to_string()
 }

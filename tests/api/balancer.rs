@@ -13,9 +13,8 @@
 //! Without haproxy the test says it is skipped, unless MECHDYN_REQUIRE_HAPROXY
 //! is set (CI sets it).
 
-use crate::crash::{free_port, http, start_logged};
+use crate::crash::{flywheel_job, free_port, http, start_logged};
 use crate::haproxy::Balancer;
-use crate::helpers::request;
 use crate::pg_server::PgServer;
 use std::collections::BTreeMap;
 use std::process::{Child, Command};
@@ -36,13 +35,6 @@ struct Seen {
     jobs: Vec<(String, String)>,
 }
 
-fn body(k: usize) -> String {
-    let mut b = request("p103_slider");
-    b["irregularity"] = (0.02 + 0.0001 * (k % 1000) as f64).into();
-    b["check"] = false.into();
-    b.to_string()
-}
-
 /// Clients POSTing through the balancer until `stop`.
 fn clients(port: u16, stop: &Arc<AtomicBool>, seen: &Arc<Mutex<Seen>>) -> Vec<std::thread::JoinHandle<()>> {
     (0..CLIENTS)
@@ -53,7 +45,7 @@ fn clients(port: u16, stop: &Arc<AtomicBool>, seen: &Arc<Mutex<Seen>>) -> Vec<st
                     if stop.load(Ordering::SeqCst) {
                         return;
                     }
-                    let answer = http(port, "POST", "/v1/flywheel", &body(k));
+                    let answer = http(port, "POST", "/v1/flywheel", &flywheel_job(k));
                     let mut seen = seen.lock().unwrap();
                     match answer {
                         Ok((201, text)) => {

@@ -46,9 +46,9 @@ pub fn start_logged(db: &str, port: u16, env: &[(&str, &str)], log: Option<std::
     child
 }
 
-/// A flywheel job whose answer depends on `k` (the irregularity), so every
-/// acknowledged result is distinguishable.
-fn body(k: usize) -> String {
+/// A flywheel job (P.103, no check) whose answer depends on `k` (the
+/// irregularity), so every acknowledged result is distinguishable.
+pub fn flywheel_job(k: usize) -> String {
     let mut b = crate::helpers::request("p103_slider");
     b["irregularity"] = (0.01 + 0.0001 * (k % 500) as f64).into();
     b["check"] = false.into();
@@ -64,7 +64,7 @@ fn load_until_killed(port: u16, child: &mut Child, delay: Duration) -> Vec<(Stri
             let (acknowledged, stop) = (acknowledged.clone(), stop.clone());
             std::thread::spawn(move || {
                 for k in (c..).step_by(CLIENTS) {
-                    match http(port, "POST", "/v1/flywheel", &body(k)) {
+                    match http(port, "POST", "/v1/flywheel", &flywheel_job(k)) {
                         // A body cut short by the kill is not an acknowledgement.
                         Ok((201, text)) => match serde_json::from_str::<Value>(&text) {
                             Ok(job) => {

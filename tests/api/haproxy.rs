@@ -29,7 +29,7 @@ impl Balancer {
             text = text.replace(&format!("mechdyn-{}:8080", k + 1), &format!("127.0.0.1:{p}"));
         }
         // Fewer replicas than the example's three: the others' lines go.
-        let unused = |l: &&str| l.trim().starts_with("server mechdyn-") && l.ends_with(":8080");
+        let unused = |l: &&str| l.split_whitespace().nth(2).is_some_and(|a| a.starts_with("mechdyn-"));
         text = text.lines().filter(|l| !unused(l)).collect::<Vec<_>>().join("\n");
         text.push_str(&format!(
             "\nfrontend stats\n    bind 127.0.0.1:{stats}\n    stats enable\n    stats uri /stats\n"

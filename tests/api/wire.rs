@@ -11,10 +11,23 @@ pub fn http(port: u16, method: &str, path: &str, body: &str) -> std::io::Result<
     http_with(port, method, path, "", body)
 }
 
-/// [`http`] with more header lines (`extra`: each ending in `\r\n`).
+/// [`http`] with more header lines (`extra`: each ending in `\r\n`), an answer
+/// awaited 10 s (the clients' timeout of the tests).
 pub fn http_with(port: u16, method: &str, path: &str, extra: &str, body: &str) -> std::io::Result<(u16, String)> {
+    exchange(port, method, path, extra, body, Duration::from_secs(10))
+}
+
+/// [`http_with`], the answer awaited `wait` at most.
+pub fn exchange(
+    port: u16,
+    method: &str,
+    path: &str,
+    extra: &str,
+    body: &str,
+    wait: Duration,
+) -> std::io::Result<(u16, String)> {
     let mut s = TcpStream::connect(("127.0.0.1", port))?;
-    s.set_read_timeout(Some(Duration::from_secs(10)))?;
+    s.set_read_timeout(Some(wait))?;
     let head = format!(
         "{method} {path} HTTP/1.1\r\nHost: localhost\r\nContent-Type: application/json\r\n{extra}\
          Content-Length: {}\r\nConnection: close\r\n\r\n",
