@@ -41,7 +41,7 @@ pub fn engine_msg(e: &EngineError) -> Msg {
 }
 
 /// A spent compute budget: its seconds, and how far the engine had got.
-pub fn budget_msg(seconds: f64, progress: &Progress) -> Msg {
+fn budget_msg(seconds: f64, progress: &Progress) -> Msg {
     Msg::new("detail-over-budget").num("seconds", seconds).with("progress", progress_msg(progress))
 }
 
