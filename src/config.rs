@@ -3,6 +3,7 @@
 use crate::api::Capacity;
 use crate::api::pace::Pace;
 use crate::api::retention::Policy;
+use crate::api::serve::Bounds;
 use crate::kind::limits::{Limits, MAX_EXPRESSION_DEPTH};
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -12,6 +13,17 @@ use std::time::Duration;
 pub const DEFAULT_DATABASE: &str = "sqlite://data/mechdyn.db";
 /// Default listen address.
 pub const DEFAULT_ADDR: &str = "127.0.0.1:8080";
+/// Default address of the operator's listener: loopback, so a container's
+/// health check reaches it and nothing outside does until it is asked to.
+pub const DEFAULT_OPERATOR_ADDR: &str = "127.0.0.1:9464";
+/// File descriptors kept for everything but the service's connections: the
+/// database, the operator's listener, logs, the runtime.
+pub const RESERVED_FILES: u64 = 256;
+/// Connections of the operator's listener.
+pub const OPERATOR_CONNECTIONS: usize = 64;
+/// The most connections held by default, however many descriptors: an idle
+/// connection holds some 20 KiB (docs/SOAK.md).
+pub const MAX_DEFAULT_CONNECTIONS: usize = 16_384;
 
 #[derive(Parser, Debug)]
 #[command(name = "mechdyn", version, about = "Machine-dynamics calculation service")]
@@ -102,6 +114,18 @@ pub struct Cli {
     /// Keep only the newest this many jobs (default: keep them all).
     #[arg(long, env = "MECHDYN_RETENTION_JOBS", value_parser = clap::value_parser!(u64).range(1..), global = true)]
     pub retention_jobs: Option<u64>,
+    /// Seconds a connection may take to send a request head (from its start, or from the head's first byte on a kept-alive connection); then it is closed.
+    #[arg(long, env = "MECHDYN_HEADER_SECONDS", default_value_t = 10.0, value_parser = positive_seconds, global = true)]
+    pub header_seconds: f64,
+    /// Seconds a kept-alive connection may stay idle between requests; then it is closed.
+    #[arg(long, env = "MECHDYN_IDLE_SECONDS", default_value_t = 60.0, value_parser = positive_seconds, global = true)]
+    pub idle_seconds: f64,
+    /// Most connections held at once; beyond them a new one is answered 503 at once (default: below the file descriptors the process may open).
+    #[arg(long, env = "MECHDYN_MAX_CONNECTIONS", value_parser = at_least_one, global = true)]
+    pub max_connections: Option<usize>,
+    /// Address of the operator's listener (/healthz, /readyz, /metrics, with connections of their own, reachable while the service's are all taken); `off` for none. The default is used only if it can be bound.
+    #[arg(long, env = "MECHDYN_OPERATOR_ADDR", default_value = DEFAULT_OPERATOR_ADDR, global = true)]
+    pub operator_addr: String,
     /// Seconds between the retention's sweeps (the first runs at start).
     #[arg(long, env = "MECHDYN_RETENTION_INTERVAL_SECONDS", default_value_t = 60.0, value_parser = positive_seconds, global = true)]
     pub retention_interval_seconds: f64,
@@ -119,6 +143,7 @@ impl Cli {
             expression_length: self.max_expression_length,
             expression_depth: self.max_expression_depth,
             result_bytes: self.max_result_bytes,
+            started: None,
         }
     }
 
@@ -140,6 +165,24 @@ impl Cli {
             bodies: self.body_memory_bytes,
             ..Capacity::default()
         })
+    }
+
+    /// The bounds of the service's connections, its cap from `files` (the
+    /// descriptors the process may open) unless given.
+    pub fn bounds(&self, files: Option<u64>) -> Bounds {
+        let reserve = RESERVED_FILES + OPERATOR_CONNECTIONS as u64;
+        let below =
+            files.map_or(Bounds::default().max, |n| usize::try_from(n.saturating_sub(reserve)).unwrap_or(usize::MAX));
+        Bounds {
+            header: Duration::from_secs_f64(self.header_seconds),
+            idle: Duration::from_secs_f64(self.idle_seconds),
+            max: self.max_connections.unwrap_or(below.clamp(16, MAX_DEFAULT_CONNECTIONS)),
+        }
+    }
+
+    /// The operator's listener's address, None when `off`.
+    pub fn operator(&self) -> Option<&str> {
+        Some(self.operator_addr.trim()).filter(|a| !a.eq_ignore_ascii_case("off") && !a.is_empty())
     }
 
     /// The pace a client must keep sending a body and taking an answer.
@@ -200,7 +243,7 @@ fn positive_seconds(s: &str) -> Result<f64, String> {
 pub enum Command {
     /// Run the HTTP service (the default).
     Serve,
-    /// Exit 0 when the service at --addr answers GET /healthz with 200 (for container health checks).
+    /// Exit 0 when the service answers GET /healthz with 200 on --operator-addr, or where that does not answer on --addr (for container health checks).
     Healthcheck,
     /// Print the OpenAPI document.
     Openapi,

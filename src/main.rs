@@ -21,7 +21,7 @@ fn main() -> ExitCode {
     let kinds = mechdyn::registry();
     match &cli.command {
         None | Some(Command::Serve) => serve(&cli, kinds),
-        Some(Command::Healthcheck) => healthcheck(&cli.addr),
+        Some(Command::Healthcheck) => healthcheck(cli.operator(), &cli.addr),
         Some(Command::Openapi) => match writeln!(std::io::stdout().lock(), "{}", kinds.openapi_json()) {
             // `mechdyn openapi | head` closes the pipe early: not a failure.
             Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => fail(&format!("cannot write: {e}")),
@@ -85,23 +85,63 @@ async fn run(cli: &Cli, kinds: mechdyn::api::kind::Registry) -> Result<(), Strin
         pace: cli.pace(),
     };
     api::retention::spawn(state.clone(), cli.retention());
+    api::watchdog::spawn(state.clone());
     let runner = api::deferred::spawn(state.clone());
-    let app = api::router(state, &settings);
+    let app = api::router(state.clone(), &settings);
     let listener = tokio::net::TcpListener::bind(&cli.addr).await.map_err(|e| format!("bind {}: {e}", cli.addr))?;
     let local = listener.local_addr().map_err(|e| e.to_string())?;
-    // Every connection takes its answers at the client's minimal pace, or is closed.
-    let listener = api::pace::PacedListener::new(listener, cli.pace());
-    tracing::info!(addr = %local, database = %shown, "mechdyn listening; docs at http://{local}/docs");
+    let bounds = cli.bounds(api::serve::open_files());
+    let operator = operator(cli, &state, bounds).await?;
+    tracing::info!(addr = %local, database = %shown, connections = bounds.max, "mechdyn listening; docs at http://{local}/docs");
+    let (stop, stopped) = tokio::sync::watch::channel(false);
     let stopping = async move {
         shutdown_signal().await;
+        let _ = stop.send(true);
         // The deferred jobs this replica computes go back to the queue first.
         if let Some(runner) = runner {
             runner.stop().await;
         }
     };
-    axum::serve(listener, app).with_graceful_shutdown(stopping).await.map_err(|e| e.to_string())?;
+    let metrics = state.metrics.clone();
+    // Every connection takes its answers at the client's minimal pace, or is closed.
+    let served = api::serve::serve((listener, "service"), app, (bounds, cli.pace(), metrics), stopping);
+    match operator {
+        Some(op) => {
+            let mut stopped = stopped;
+            let stop = async move {
+                let _ = stopped.wait_for(|s| *s).await;
+            };
+            let (listener, settings) = op;
+            tokio::join!(served, api::serve::serve(listener, api::operator_router(state.clone()), settings, stop));
+        }
+        None => served.await,
+    }
     tracing::info!("stopped");
     Ok(())
+}
+
+/// The operator's listener (its connections and bounds), bound at
+/// `--operator-addr`: None when `off`, or when the default cannot be bound
+/// (another service has it: said, and the service goes on); an address asked
+/// for that cannot be bound stops the start.
+async fn operator(
+    cli: &Cli,
+    state: &AppState,
+    bounds: api::serve::Bounds,
+) -> Result<Option<api::serve::Operator>, String> {
+    let Some(addr) = cli.operator() else { return Ok(None) };
+    let listener = match tokio::net::TcpListener::bind(addr).await {
+        Ok(l) => l,
+        Err(e) if addr == mechdyn::config::DEFAULT_OPERATOR_ADDR => {
+            tracing::warn!(addr, error = %e, "the operator's listener is not bound: /healthz, /readyz and /metrics only on the service's");
+            return Ok(None);
+        }
+        Err(e) => return Err(format!("bind the operator's listener {addr}: {e}")),
+    };
+    let local = listener.local_addr().map_err(|e| e.to_string())?;
+    tracing::info!(addr = %local, "the operator's endpoints (/healthz, /readyz, /metrics) also on their own listener");
+    let bounds = api::serve::Bounds { max: mechdyn::config::OPERATOR_CONNECTIONS, ..bounds };
+    Ok(Some(((listener, "operator"), (bounds, cli.pace(), state.metrics.clone()))))
 }
 
 /// Resolves on SIGINT (Ctrl-C) or SIGTERM (docker stop).
@@ -144,10 +184,12 @@ fn backup(database: &str, file: &std::path::Path) -> ExitCode {
     }
 }
 
-/// A plain TCP `GET /healthz`; 0.0.0.0 is probed on loopback.
-fn healthcheck(addr: &str) -> ExitCode {
-    let target = addr.replace("0.0.0.0", "127.0.0.1").replace("[::]", "[::1]");
-    let probe = || -> std::io::Result<bool> {
+/// A plain TCP `GET /healthz`, on the operator's listener (its connections
+/// are free while the service's are all taken) or, where it does not answer,
+/// on the service's; 0.0.0.0 is probed on loopback.
+fn healthcheck(operator: Option<&str>, addr: &str) -> ExitCode {
+    let probe = |addr: &str| -> std::io::Result<bool> {
+        let target = addr.replace("0.0.0.0", "127.0.0.1").replace("[::]", "[::1]");
         let mut s = std::net::TcpStream::connect(&target)?;
         s.set_read_timeout(Some(std::time::Duration::from_secs(3)))?;
         let request = format!("GET {} HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n", api::HEALTH_PATH);
@@ -156,10 +198,8 @@ fn healthcheck(addr: &str) -> ExitCode {
         s.read_exact(&mut head)?;
         Ok(head.starts_with(b"HTTP/1.1 200"))
     };
-    match probe() {
-        Ok(true) => ExitCode::SUCCESS,
-        _ => ExitCode::FAILURE,
-    }
+    let healthy = operator.into_iter().chain([addr]).map(probe).find_map(Result::ok);
+    if healthy == Some(true) { ExitCode::SUCCESS } else { ExitCode::FAILURE }
 }
 
 /// Runs an offline command on the text of `file` (`-`: standard input):

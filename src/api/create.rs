@@ -90,14 +90,19 @@ where
     let limit = state.limits.result_bytes;
     // The largest result is reserved before computing, so that no job is
     // computed only to be refused for want of memory; the spare is given back.
-    let mut reserved = state.admission.memory(limit.saturating_add(request.len())).await?;
+    let reserved = state.admission.memory(limit.saturating_add(request.len())).await?;
+    // The compute slot, the memory and the watchdog's entry go with the
+    // computation: a client that leaves does not free them while it runs.
+    let listed = state.watchdog.start(kind);
     let run = move || {
         let start = Instant::now();
         let r = compute();
         let elapsed = start.elapsed();
-        (r.and_then(|r| serialized(&r, limit)), elapsed)
+        let result = r.and_then(|r| serialized(&r, limit));
+        drop((computing, listed));
+        (result, elapsed, reserved)
     };
-    let (result, elapsed) = match state.admission.inline(kind) {
+    let (result, elapsed, mut reserved) = match state.admission.inline(kind) {
         Some(_inline) => run(),
         None => tokio::task::spawn_blocking(run).await.map_err(|e| ApiError::Internal(format!("engine task: {e}")))?,
     };
@@ -108,7 +113,6 @@ where
     if let Some(spare) = reserved.num_permits().checked_sub(bytes).and_then(|n| reserved.split(n)) {
         drop(spare);
     }
-    drop(computing);
     let stored = match to {
         Destination::New { key } => state
             .store

@@ -15,6 +15,13 @@
 //! - `mechdyn_jobs_computing`, `mechdyn_queue_depth`: this replica's jobs
 //!   computing now, and its POSTs not computing yet (their body arriving,
 //!   or waiting for a compute slot), read at the scrape;
+//! - `mechdyn_jobs_overrun_total{kind}`, `mechdyn_jobs_overrunning`: jobs
+//!   that computed well past their compute budget (an escape from it, a
+//!   bug: [`super::watchdog`]), and how many are past it now;
+//! - `mechdyn_connections{listener}`, `mechdyn_connections_refused_total{listener}`,
+//!   `mechdyn_connections_closed_total{listener, reason}`: connections open
+//!   now, those answered 503 at the cap, those closed by a bound (`header`,
+//!   `idle`), on the service's listener and the operator's ([`super::serve`]);
 //! - `mechdyn_deferred_jobs{status}`: jobs POSTed with `Prefer:
 //!   respond-async` `queued` or `running`, over every replica (the
 //!   database's count at the scrape).
@@ -46,6 +53,11 @@ struct Inner {
     computing: IntGauge,
     queue_depth: IntGauge,
     deferred: IntGaugeVec,
+    overrun: IntCounterVec,
+    overrunning: IntGauge,
+    connections: IntGaugeVec,
+    refused: IntCounterVec,
+    closed: IntCounterVec,
 }
 
 impl Default for Metrics {
@@ -105,6 +117,37 @@ impl Metrics {
         registry.register(Box::new(deferred.clone()))?;
         registry.register(Box::new(computing.clone()))?;
         registry.register(Box::new(queue_depth.clone()))?;
+        let overrun = IntCounterVec::new(
+            Opts::new(
+                "mechdyn_jobs_overrun_total",
+                "Jobs that computed past twice their compute budget and 5 s more: escapes from the budget (a bug)",
+            ),
+            &["kind"],
+        )?;
+        let overrunning = IntGauge::new("mechdyn_jobs_overrunning", "Jobs computing past their budget's margin now")?;
+        registry.register(Box::new(overrun.clone()))?;
+        registry.register(Box::new(overrunning.clone()))?;
+        let connections = IntGaugeVec::new(
+            Opts::new("mechdyn_connections", "Connections open now, on the service's listener or the operator's"),
+            &["listener"],
+        )?;
+        let refused = IntCounterVec::new(
+            Opts::new(
+                "mechdyn_connections_refused_total",
+                "Connections answered 503 at once because the listener held its most connections",
+            ),
+            &["listener"],
+        )?;
+        let closed = IntCounterVec::new(
+            Opts::new(
+                "mechdyn_connections_closed_total",
+                "Connections closed by their bounds: a request head not whole in time (header), idle too long (idle)",
+            ),
+            &["listener", "reason"],
+        )?;
+        registry.register(Box::new(connections.clone()))?;
+        registry.register(Box::new(refused.clone()))?;
+        registry.register(Box::new(closed.clone()))?;
         Ok(Self(Arc::new(Inner {
             registry,
             requests,
@@ -115,6 +158,11 @@ impl Metrics {
             computing,
             queue_depth,
             deferred,
+            overrun,
+            overrunning,
+            connections,
+            refused,
+            closed,
         })))
     }
 
@@ -123,6 +171,45 @@ impl Metrics {
         let status = if done { "done" } else { "failed" };
         self.0.jobs.with_label_values(&[kind, status]).inc();
         self.0.engine_seconds.with_label_values(&[kind]).observe(elapsed.as_secs_f64());
+    }
+
+    /// A job of `kind` found computing past its budget's margin.
+    pub fn overrun(&self, kind: &str) {
+        self.0.overrun.with_label_values(&[kind]).inc();
+    }
+
+    /// Every kind's overrun count shown from the start, at 0.
+    pub fn kinds<'a>(&self, names: impl Iterator<Item = &'a str>) {
+        names.for_each(|kind| drop(self.0.overrun.with_label_values(&[kind])));
+    }
+
+    /// How many jobs compute past their budget's margin now.
+    pub fn overrunning(&self, n: usize) {
+        self.0.overrunning.set(i64::try_from(n).unwrap_or(i64::MAX));
+    }
+
+    /// A listener's series shown from its start, at 0.
+    pub fn listener(&self, listener: &str) {
+        self.0.connections.with_label_values(&[listener]).set(0);
+        self.0.refused.with_label_values(&[listener]);
+        for reason in ["header", "idle"] {
+            self.0.closed.with_label_values(&[listener, reason]);
+        }
+    }
+
+    /// Connections of `listener` opened (+1) or closed (−1).
+    pub fn connections(&self, listener: &str, change: i64) {
+        self.0.connections.with_label_values(&[listener]).add(change);
+    }
+
+    /// A connection of `listener` answered 503 at the cap.
+    pub fn connection_refused(&self, listener: &str) {
+        self.0.refused.with_label_values(&[listener]).inc();
+    }
+
+    /// A connection of `listener` closed by a bound (`header`, `idle`).
+    pub fn connection_closed(&self, listener: &str, reason: &str) {
+        self.0.closed.with_label_values(&[listener, reason]).inc();
     }
 
     /// `n` jobs deleted, for `reason` (`request`, `age`, `count`).

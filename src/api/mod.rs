@@ -26,9 +26,11 @@ pub mod parts;
 pub mod plots;
 pub mod read;
 pub mod retention;
+pub mod serve;
 pub mod service;
 pub mod tables;
 pub mod templates;
+pub mod watchdog;
 
 use crate::kind::Limits;
 use crate::kind::problem::{ApiError, FieldError, Problem};
@@ -59,14 +61,16 @@ pub struct AppState {
     pub deferred: deferred::Deferred,
     /// The answers of template parts asked before, bounded by bytes.
     pub answers: templates::Answers,
+    /// The jobs computing now, watched for escapes from their budget.
+    pub watchdog: watchdog::Watchdog,
 }
 
 impl AppState {
     /// The state of a service of `kinds` on `store`, with the default limits and capacity.
     pub fn new(store: Store, kinds: kind::Registry) -> Self {
         let (limits, admission) = (Limits::default(), Admission::default());
-        let (metrics, deferred, answers) = Default::default();
-        Self { kinds, store, limits, admission, metrics, deferred, answers }
+        let (metrics, deferred, answers, watchdog) = Default::default();
+        Self { kinds, store, limits, admission, metrics, deferred, answers, watchdog }
     }
 }
 
@@ -196,6 +200,18 @@ fn document(kinds: &kind::Registry) -> (serde_json::Value, bytes::Bytes) {
 }
 
 /// The service's router with its middleware ([`middleware::layered`]).
+/// The operator's endpoints alone (`/healthz`, `/readyz`, `/metrics`), for
+/// the operator's listener: connections of their own, so an orchestrator's
+/// probes are answered while every connection of the service's is taken.
+pub fn operator_router(state: AppState) -> Router {
+    Router::new()
+        .route(HEALTH_PATH, get(service::healthz))
+        .route("/readyz", get(service::readyz))
+        .route("/metrics", get(metrics::metrics))
+        .fallback(|| async { ApiError::NoRoute })
+        .with_state(state)
+}
+
 pub fn router(state: AppState, settings: &Settings) -> Router {
     let (routes, _) = routes(&state.kinds).split_for_parts();
     let kinds = state.kinds.clone();

@@ -124,6 +124,11 @@ pub fn at<'a>(v: &'a Value, tokens: &[String]) -> Option<&'a Value> {
     })
 }
 
+/// The JSON pointer of `tokens`.
+pub fn pointer(tokens: &[String]) -> String {
+    tokens.iter().map(|t| format!("/{}", escape(t))).collect()
+}
+
 fn escape(token: &str) -> String {
     token.replace('~', "~0").replace('/', "~1")
 }
@@ -152,7 +157,7 @@ fn walk(kind: &dyn AnyKind, root: &Value, v: &Value, path: &mut Vec<String>, out
         scalar => {
             let tokens: Vec<&str> = path.iter().map(String::as_str).collect();
             let unit = if scalar.is_number() { kind.unit(root, &tokens) } else { None };
-            let pointer = path.iter().map(|t| format!("/{}", escape(t))).collect();
+            let pointer = self::pointer(path);
             out.push(Scalar { pointer, value: scalar.clone(), unit });
         }
     }

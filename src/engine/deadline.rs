@@ -19,6 +19,18 @@ pub enum Progress {
     AssemblingMachine,
     /// A kinematic sweep: the mechanism assembled at `step` of `of` positions.
     Assembled { step: usize, of: usize },
+    /// A mechanism's candidate inputs: the joint reached, of those that can drive it.
+    Candidates { joint: usize, of: usize },
+    /// A cam's smallest base radius: the radii tried so far.
+    CamSize { tried: usize },
+    /// The mechanism moved from its drawing towards the first position: `step` of `of`.
+    Approach { step: usize, of: usize },
+    /// The friction of the joints iterated at position `step`.
+    Friction { step: usize },
+    /// A cam's lift evaluated at `angle` of `of` angles.
+    CamLift { angle: usize, of: usize },
+    /// The request was being read (a sketch assembled, contacts placed, inputs laid out).
+    Reading,
 }
 
 /// The phases of the flywheel's solution, in order.
@@ -53,6 +65,12 @@ impl fmt::Display for Progress {
             Self::Late => f.write_str("the solution was complete but late"),
             Self::AssemblingMachine => f.write_str("while assembling the machine"),
             Self::Assembled { step, of } => write!(f, "the mechanism was assembled at {step} of {of} positions"),
+            Self::Candidates { joint, of } => write!(f, "the inputs were sought at joint {joint} of {of}"),
+            Self::CamSize { tried } => write!(f, "{tried} base radii had been tried"),
+            Self::Approach { step, of } => write!(f, "the mechanism had moved {step} of {of} steps from its drawing"),
+            Self::Friction { step } => write!(f, "the friction was being iterated at position {step}"),
+            Self::CamLift { angle, of } => write!(f, "the lift had been evaluated at {angle} of {of} angles"),
+            Self::Reading => f.write_str("while the request was being read"),
         }
     }
 }
@@ -68,6 +86,11 @@ impl Deadline {
     /// A budget counted from now.
     pub fn after(budget: Duration) -> Self {
         Self { start: Instant::now(), budget: Some(budget) }
+    }
+
+    /// A budget counted from `start`.
+    pub fn from(start: Instant, budget: Duration) -> Self {
+        Self { start, budget: Some(budget) }
     }
 
     /// No budget.

@@ -48,6 +48,10 @@ pub struct Table {
     curvature: Vec<f64>,
     /// 0: the interpolant; 1: its derivative.
     order: u8,
+    /// ∫ from the first node to each node over one period (n + 1 values,
+    /// the last the period's), made at the first integral: an integral is
+    /// then two look-ups, however many rows.
+    cumulative: std::sync::OnceLock<Vec<f64>>,
 }
 
 /// A function of φ computed by other means than a formula or a table (e.g.
@@ -84,7 +88,7 @@ impl Table {
             Interpolation::Spline => periodic_spline_curvature(&angle, &value, period),
             _ => Vec::new(),
         };
-        Self { angle, value, interpolation, period, curvature, order: 0 }
+        Self { angle, value, interpolation, period, curvature, order: 0, cumulative: Default::default() }
     }
 
     fn node(&self, i: usize) -> (f64, f64) {
@@ -145,23 +149,38 @@ impl Table {
         self.angle.iter().copied()
     }
 
-    /// Exact integral over [a, b] (Simpson on every polynomial piece).
+    /// Exact integral over [a, b] (Simpson on every polynomial piece, cubic
+    /// at most): the primitive at b less the primitive at a.
     fn integral(&self, a: f64, b: f64) -> f64 {
-        let mut cuts: Vec<f64> = vec![a, b];
-        let first = ((a - self.angle[0]) / self.period).floor() as i64 - 1;
-        let last = ((b - self.angle[0]) / self.period).ceil() as i64 + 1;
-        for p in first..=last {
-            let shift = p as f64 * self.period;
-            cuts.extend(self.angle.iter().map(|x| x + shift).filter(|x| *x > a && *x < b));
-        }
-        cuts.sort_by(f64::total_cmp);
-        cuts.windows(2)
-            .map(|w| {
-                let (x, y) = (w[0], w[1]);
-                let m = 0.5 * (x + y);
-                (y - x) / 6.0 * (self.eval(x, Side::Right) + 4.0 * self.eval(m, Side::Right) + self.eval(y, Side::Left))
-            })
-            .sum()
+        let ((pa, ka, ua), (pb, kb, ub)) = (self.placed(a), self.placed(b));
+        let c = self.cumulative();
+        let whole = (pb - pa) * c[self.angle.len()];
+        whole + (c[kb] + self.piece(kb, ub)) - (c[ka] + self.piece(ka, ua))
+    }
+
+    /// φ as whole periods from the first node, its interval and its angle shifted into that period.
+    fn placed(&self, phi: f64) -> (f64, usize, f64) {
+        let (k, u) = self.locate(phi, Side::Right);
+        (((phi - u) / self.period).round(), k, u)
+    }
+
+    /// ∫ of interval k's polynomial from its first node to u.
+    fn piece(&self, k: usize, u: f64) -> f64 {
+        let x = self.node(k).0;
+        let m = 0.5 * (x + u);
+        (u - x) / 6.0 * (self.eval_in(k, x) + 4.0 * self.eval_in(k, m) + self.eval_in(k, u))
+    }
+
+    fn cumulative(&self) -> &[f64] {
+        self.cumulative.get_or_init(|| {
+            let n = self.angle.len();
+            let mut c = Vec::with_capacity(n + 1);
+            c.push(0.0);
+            for k in 0..n {
+                c.push(c[k] + self.piece(k, self.node(k + 1).0));
+            }
+            c
+        })
     }
 }
 
@@ -178,41 +197,7 @@ fn periodic_spline_curvature(x: &[f64], v: &[f64], period: f64) -> Vec<f64> {
     let diag: Vec<f64> = (0..n).map(|i| 2.0 * (h[prev(i)] + h[i])).collect();
     let upper: Vec<f64> = h.clone();
     let rhs: Vec<f64> = (0..n).map(|i| 6.0 * (delta[i] - delta[prev(i)])).collect();
-    cyclic_tridiagonal(&lower, &diag, &upper, &rhs)
-}
-
-/// Solves the cyclic tridiagonal system (corner terms lower[0], upper[n−1]).
-fn cyclic_tridiagonal(a: &[f64], b: &[f64], c: &[f64], r: &[f64]) -> Vec<f64> {
-    let n = b.len();
-    let gamma = -b[0];
-    let mut bb = b.to_vec();
-    bb[0] -= gamma;
-    bb[n - 1] -= a[0] * c[n - 1] / gamma;
-    let x = tridiagonal(a, &bb, c, r);
-    let mut u = vec![0.0; n];
-    u[0] = gamma;
-    u[n - 1] = c[n - 1];
-    let z = tridiagonal(a, &bb, c, &u);
-    let fact = (x[0] + a[0] * x[n - 1] / gamma) / (1.0 + z[0] + a[0] * z[n - 1] / gamma);
-    x.iter().zip(&z).map(|(xi, zi)| xi - fact * zi).collect()
-}
-
-/// Thomas algorithm; a[0] and c[n−1] are ignored.
-fn tridiagonal(a: &[f64], b: &[f64], c: &[f64], r: &[f64]) -> Vec<f64> {
-    let n = b.len();
-    let mut cp = vec![0.0; n];
-    let mut x = vec![0.0; n];
-    let mut beta = b[0];
-    x[0] = r[0] / beta;
-    for i in 1..n {
-        cp[i] = c[i - 1] / beta;
-        beta = b[i] - a[i] * cp[i];
-        x[i] = (r[i] - a[i] * x[i - 1]) / beta;
-    }
-    for i in (0..n - 1).rev() {
-        x[i] -= cp[i + 1] * x[i + 1];
-    }
-    x
+    crate::engine::numeric::tridiagonal::cyclic(&lower, &diag, &upper, &rhs)
 }
 
 impl Function {
@@ -306,10 +291,22 @@ impl Function {
             Self::Segments(segs) => Self::Segments(
                 segs.iter().map(|s| Segment { from: s.from, to: s.to, expr: s.expr.derivative(0) }).collect(),
             ),
-            Self::Table(t) => Self::Table(Table { order: t.order + 1, ..t.clone() }),
+            Self::Table(t) => Self::Table(Table { order: t.order + 1, cumulative: Default::default(), ..t.clone() }),
             // Only I* is differentiated (for the equation of motion); others have no use for it.
             Self::Curve(c) => c.derivative().map_or(Self::Constant(f64::NAN), Self::Curve),
             Self::Sum(fs) => Self::Sum(fs.iter().map(Function::derivative).collect()),
+        }
+    }
+
+    /// Whether its derivatives up to `order` stay within `max` nodes each
+    /// (an expression's; other functions are differentiated without trees):
+    /// Err(the first order that would not).
+    pub fn derivatives_fit(&self, order: usize, max: usize) -> Result<(), usize> {
+        match self {
+            Self::Expr(e) => e.derivatives_fit(0, order, max),
+            Self::Segments(segs) => segs.iter().try_for_each(|s| s.expr.derivatives_fit(0, order, max)),
+            Self::Sum(fs) => fs.iter().try_for_each(|f| f.derivatives_fit(order, max)),
+            Self::Constant(_) | Self::Table(_) | Self::Curve(_) => Ok(()),
         }
     }
 

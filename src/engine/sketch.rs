@@ -16,6 +16,7 @@
 //! dimension still unmet at the end cannot hold with the others: it is
 //! named, never met approximately in silence.
 
+use super::Deadline;
 use super::numeric::svd::svd;
 use nalgebra::{DMatrix, DVector};
 
@@ -54,20 +55,74 @@ pub struct Contradiction {
 const MAX_ITERATIONS: usize = 60;
 
 /// The least change from `sketch` (weights per point) meeting `dimensions`.
-pub fn solve(sketch: &[[f64; 2]], weights: &[f64], dimensions: &[Dimension]) -> Result<Solved, Contradiction> {
+/// Only the points the dimensions name move (the others stay as sketched,
+/// and leave the figure underdetermined); the `deadline` is read at every
+/// iteration, and past it the dimensions still unmet are reported as if
+/// they could not hold (the service answers the spent budget instead).
+pub fn solve(
+    sketch: &[[f64; 2]],
+    weights: &[f64],
+    dimensions: &[Dimension],
+    deadline: &Deadline,
+) -> Result<Solved, Contradiction> {
     if dimensions.is_empty() {
         return Ok(Solved { points: sketch.to_vec(), iterations: 0, residual: 0.0, underdetermined: false });
     }
-    let x0 = DVector::from_iterator(2 * sketch.len(), sketch.iter().flatten().copied());
     let size = sketch
         .iter()
         .flatten()
         .fold(0.0f64, |a, v| a.max(v.abs()))
         .max(dimensions.iter().map(scale).fold(0.0, f64::max));
+    let mut used: Vec<usize> = dimensions.iter().flat_map(named).collect();
+    used.sort_unstable();
+    used.dedup();
+    let mut local = vec![usize::MAX; sketch.len()];
+    used.iter().enumerate().for_each(|(k, &p)| local[p] = k);
+    let dims: Vec<Dimension> = dimensions.iter().map(|d| renamed(d, &local)).collect();
+    let part: Vec<[f64; 2]> = used.iter().map(|&p| sketch[p]).collect();
+    let part_weights: Vec<f64> = used.iter().map(|&p| weights[p]).collect();
+    let mut solved = solve_used(&part, &part_weights, &dims, size, deadline)?;
+    let mut points = sketch.to_vec();
+    used.iter().zip(&solved.points).for_each(|(&p, x)| points[p] = *x);
+    solved.points = points;
+    solved.underdetermined |= used.len() < sketch.len();
+    Ok(solved)
+}
+
+/// The points a dimension names.
+fn named(d: &Dimension) -> Vec<usize> {
+    match *d {
+        Dimension::Distance([p, q], _) | Dimension::Angle([p, q], _) => vec![p, q],
+        Dimension::X(p, _) | Dimension::Y(p, _) => vec![p],
+    }
+}
+
+/// A dimension between points renumbered by `local`.
+fn renamed(d: &Dimension, local: &[usize]) -> Dimension {
+    match *d {
+        Dimension::Distance([p, q], v) => Dimension::Distance([local[p], local[q]], v),
+        Dimension::Angle([p, q], v) => Dimension::Angle([local[p], local[q]], v),
+        Dimension::X(p, v) => Dimension::X(local[p], v),
+        Dimension::Y(p, v) => Dimension::Y(local[p], v),
+    }
+}
+
+/// [`solve`] on the points the dimensions name, all of them; `size` the figure's.
+fn solve_used(
+    sketch: &[[f64; 2]],
+    weights: &[f64],
+    dimensions: &[Dimension],
+    size: f64,
+    deadline: &Deadline,
+) -> Result<Solved, Contradiction> {
+    let x0 = DVector::from_iterator(2 * sketch.len(), sketch.iter().flatten().copied());
     let tol = 1e-13 * size.max(1e-3);
     let inverse_w = DVector::from_iterator(x0.len(), weights.iter().flat_map(|w| [1.0 / w, 1.0 / w]));
     let mut x = x0.clone();
     for iteration in 0..MAX_ITERATIONS {
+        if deadline.expired() {
+            break;
+        }
         let (c, j) = evaluate(&x, dimensions);
         let residual = c.amax();
         if residual <= tol {
@@ -196,7 +251,7 @@ mod tests {
         let weights = [1e6, 1e6, 1.0, 1.0];
         for (b_sketch, expected) in [([0.3, 0.3], above), ([0.2, -0.15], below)] {
             let sketch = [[0.0, 0.0], [0.3, 0.0], [0.04, 0.1], b_sketch];
-            let s = solve(&sketch, &weights, &dims).unwrap();
+            let s = solve(&sketch, &weights, &dims, &Deadline::none()).unwrap();
             for k in 0..2 {
                 assert!((s.points[2][k] - a[k]).abs() < 1e-12, "A: {:?}", s.points[2]);
                 assert!((s.points[3][k] - expected[k]).abs() < 1e-12, "B: {:?} against {expected:?}", s.points[3]);
@@ -209,7 +264,7 @@ mod tests {
     /// and an SVD of the empty system panicked).
     #[test]
     fn no_dimensions_leave_the_sketch_as_drawn() {
-        let s = solve(&[[0.0, 0.0], [1.0, 0.5]], &[1.0; 2], &[]).unwrap();
+        let s = solve(&[[0.0, 0.0], [1.0, 0.5]], &[1.0; 2], &[], &Deadline::none()).unwrap();
         assert_eq!(s.points, vec![[0.0, 0.0], [1.0, 0.5]]);
     }
 
@@ -218,9 +273,12 @@ mod tests {
     fn a_triangle_that_does_not_close_is_a_contradiction() {
         let dims =
             [Dimension::Distance([0, 1], 1.0), Dimension::Distance([1, 2], 1.0), Dimension::Distance([0, 2], 3.0)];
-        let e = solve(&[[0.0, 0.0], [1.0, 0.0], [0.5, 0.5]], &[1.0; 3], &dims).unwrap_err();
+        let e = solve(&[[0.0, 0.0], [1.0, 0.0], [0.5, 0.5]], &[1.0; 3], &dims, &Deadline::none()).unwrap_err();
         assert_eq!(e.dimensions, vec![0, 1, 2]);
         let twice = [Dimension::Distance([0, 1], 1.0), Dimension::Distance([0, 1], 1.2)];
-        assert!(solve(&[[0.0, 0.0], [1.0, 0.0]], &[1.0; 2], &twice).is_err(), "two values for one distance");
+        assert!(
+            solve(&[[0.0, 0.0], [1.0, 0.0]], &[1.0; 2], &twice, &Deadline::none()).is_err(),
+            "two values for one distance"
+        );
     }
 }

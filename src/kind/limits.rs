@@ -3,7 +3,8 @@
 //! a pointer to the field, and a job over its compute budget is stopped.
 //! The OpenAPI document states the defaults.
 
-use std::time::Duration;
+use crate::engine::Deadline;
+use std::time::{Duration, Instant};
 
 /// Deepest expression nesting that may be configured: the parser recurses
 /// once per level, on the blocking pool's 2 MiB thread stacks.
@@ -28,6 +29,9 @@ pub struct Limits {
     pub expression_depth: usize,
     /// Bytes of a job's result as JSON (and of a page of the jobs list).
     pub result_bytes: usize,
+    /// When the job's computation began (its budget counts from then); None
+    /// until [`Limits::started`].
+    pub started: Option<Instant>,
 }
 
 impl Default for Limits {
@@ -41,6 +45,20 @@ impl Default for Limits {
             expression_length: 2_000,
             expression_depth: 64,
             result_bytes: 16 << 20,
+            started: None,
         }
+    }
+}
+
+impl Limits {
+    /// These limits for a job that begins now (or began already: a check's
+    /// reference computes within the check's budget).
+    pub fn started(&self) -> Self {
+        Self { started: Some(self.started.unwrap_or_else(Instant::now)), ..self.clone() }
+    }
+
+    /// The job's budget from its start: every conversion and engine loop reads it.
+    pub fn deadline(&self) -> Deadline {
+        Deadline::from(self.started.unwrap_or_else(Instant::now), self.budget)
     }
 }

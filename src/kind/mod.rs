@@ -19,6 +19,7 @@ pub mod problem;
 pub mod quantity;
 pub mod refused;
 
+use crate::engine::Progress;
 use crate::i18n::Msg;
 pub use limits::Limits;
 use problem::{ApiError, FieldError};
@@ -100,7 +101,14 @@ pub fn compute<K: Kind>(
     raw: &[u8],
     limits: &Limits,
 ) -> Result<K::Result, ApiError> {
-    let mut result = K::compute(request, unknown, limits)?;
+    let limits = &limits.started();
+    let mut result = K::compute(request, unknown, limits).map_err(|e| match e {
+        // Refused as invalid once the budget had run out: the reading was stopped by it.
+        ApiError::Invalid(_) if limits.deadline().expired() => {
+            ApiError::OverBudget(refused::engine_msg(&limits.deadline().exceeded(Progress::Reading)))
+        }
+        e => e,
+    })?;
     if let Some(notes) = result.notes() {
         let sent = serde_json::from_slice::<Value>(raw).unwrap_or_default();
         notes.extend(crate::kind::constants::unused(&sent));

@@ -4,6 +4,7 @@
 use super::limits::Limits;
 use super::problem::FieldError;
 use crate::engine::expr::Expr;
+use crate::engine::function::Function;
 use crate::i18n::Msg;
 use crate::units::{self, Dim, UnitError};
 use serde::de::{self, Deserializer, MapAccess, Visitor};
@@ -214,6 +215,9 @@ pub fn unit_msg(e: &UnitError) -> Msg {
 
 /// Collects (pointer, message) errors while converting a request, under
 /// the limits in force.
+/// Most nodes of a derivative of a request's expression (a few MB of tree).
+pub const MAX_DERIVATIVE_NODES: usize = 100_000;
+
 #[derive(Default)]
 pub struct Errors {
     pub list: Vec<FieldError>,
@@ -238,6 +242,20 @@ impl Errors {
     pub fn refuse<T>(&mut self, at: &str, msg: Msg) -> Option<T> {
         self.say(at, msg);
         None
+    }
+
+    /// Whether the derivatives of `f` up to `order` (what its use needs: a
+    /// cam's lift three, a reduced inertia one) are of a size to compute: a
+    /// product of many factors grows with each derivative like its factors
+    /// to the order's power.
+    pub fn differentiable(&mut self, f: &Function, order: usize, at: &str) -> Option<()> {
+        match f.derivatives_fit(order, MAX_DERIVATIVE_NODES) {
+            Ok(()) => Some(()),
+            Err(k) => {
+                let said = Msg::new("expression-derivative-too-large").count("order", k);
+                self.refuse(at, said.count("max", MAX_DERIVATIVE_NODES))
+            }
+        }
     }
 
     /// A string of at most `max` characters (the schema's `maxLength`).

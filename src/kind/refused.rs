@@ -59,5 +59,11 @@ fn progress_msg(progress: &Progress) -> Msg {
         Progress::Late => Msg::new("progress-late"),
         Progress::AssemblingMachine => Msg::new("progress-assembling-machine"),
         Progress::Assembled { step, of } => Msg::new("progress-assembled").count("step", *step).count("of", *of),
+        Progress::Candidates { joint, of } => Msg::new("progress-candidates").count("joint", *joint).count("of", *of),
+        Progress::CamSize { tried } => Msg::new("progress-cam-size").count("tried", *tried),
+        Progress::Reading => Msg::new("progress-reading"),
+        Progress::Friction { step } => Msg::new("progress-friction").count("step", *step),
+        Progress::Approach { step, of } => Msg::new("progress-approach").count("step", *step).count("of", *of),
+        Progress::CamLift { angle, of } => Msg::new("progress-cam-lift").count("angle", *angle).count("of", *of),
     }
 }

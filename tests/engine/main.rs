@@ -6,6 +6,7 @@ mod dynamics;
 mod elliptic;
 mod free_body;
 mod kinetostatics;
+mod many_turns;
 mod mechanism_dynamics;
 mod particle;
 mod rotor;

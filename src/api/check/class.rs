@@ -11,7 +11,7 @@ use crate::api::AppState;
 use crate::api::json::RawBody;
 use crate::api::read;
 use crate::api::tables;
-use crate::api::tables::{Csv, Scalar};
+use crate::api::tables::Csv;
 use crate::api::templates::table::{self, Column, bad, parameters_of, ragged, read_csv, said};
 use crate::api::templates::{RESERVED, Template, Want, find, job_for, texts, variants};
 use crate::i18n::Msg;
@@ -120,10 +120,13 @@ pub async fn class(
     head.extend(["feedback".to_string(), "error".to_string()]);
     out.record(&head)?;
     let (mut seen, mut students) = (References::default(), HashSet::new());
+    // The rows share one job's budget ([`table::spent`]).
+    let deadline = state.limits.deadline();
     for (i, row) in rows.iter().enumerate() {
         let student = row.get(l.student).cloned().unwrap_or_default();
         let refused = ragged(&header, row, i)
             .map(|m| m.text())
+            .or_else(|| deadline.expired().then(|| table::spent(state).text()))
             .or_else(|| student.is_empty().then(|| Msg::new("class-row-no-student").count("row", i + 1).text()))
             .or_else(|| {
                 let twice = !students.insert(student.clone());
@@ -185,7 +188,7 @@ struct References {
 }
 
 /// A reference job's id, its result parsed, and its scalars once flattened (for slips).
-type Reference = (String, Arc<Value>, Arc<OnceLock<Vec<Scalar>>>);
+type Reference = (String, Arc<Value>, Arc<OnceLock<super::items::Nearby>>);
 
 /// Stored JSON of the references kept parsed at once in a grade.
 const REFERENCE_BYTES: usize = 4 << 20;

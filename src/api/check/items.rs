@@ -5,7 +5,7 @@
 
 use super::{CheckItem, ToleranceDto};
 use crate::api::kind::AnyKind;
-use crate::api::tables::{self, Scalar};
+use crate::api::tables;
 use crate::engine::grading::{self, Measure, Rule, Slip, Tolerance, Verdict};
 use crate::engine::variants::round_sig;
 use crate::i18n::{Lang, Msg};
@@ -215,36 +215,85 @@ fn slip_text(s: Slip, name: &str, others: &[(String, f64)]) -> Msg {
 /// the answer is in the same item.
 const SHORT_LIST: usize = 10;
 
+/// A reference's numbers that may be near an answer, found once for every
+/// answer checked against it: those in no item of a long series (an array
+/// of more than [`SHORT_LIST`] items). The items of a long series are read
+/// only for an answer inside them ([`others`]), so a 12 MB result costs
+/// the few numbers of its summary, not its million samples.
+pub struct Nearby {
+    short: Vec<Number>,
+}
+
+/// A number of a result, with its tokens and unit.
+struct Number {
+    tokens: Vec<String>,
+    value: f64,
+    unit: Option<String>,
+}
+
+impl Nearby {
+    pub fn new(kind: &dyn AnyKind, result: &Value) -> Self {
+        let mut short = Vec::new();
+        numbers(kind, result, result, &mut Vec::new(), &mut short);
+        Self { short }
+    }
+}
+
+/// The numbers under `v` (at `path`) in document order, not going into the
+/// items of a long series; a result's `messages` hold none.
+fn numbers(kind: &dyn AnyKind, root: &Value, v: &Value, path: &mut Vec<String>, out: &mut Vec<Number>) {
+    let mut child = |key: &str, item: &Value, path: &mut Vec<String>| {
+        path.push(key.to_string());
+        numbers(kind, root, item, path, out);
+        path.pop();
+    };
+    match v {
+        Value::Object(map) => {
+            let top = path.is_empty();
+            map.iter().filter(|(k, _)| !top || *k != "messages").for_each(|(k, item)| child(k, item, path))
+        }
+        Value::Array(items) if items.len() <= SHORT_LIST => {
+            items.iter().enumerate().for_each(|(i, item)| child(&i.to_string(), item, path))
+        }
+        Value::Array(_) => {}
+        Value::Number(n) => {
+            let tokens: Vec<&str> = path.iter().map(String::as_str).collect();
+            let unit = kind.unit(root, &tokens);
+            out.push(Number { tokens: path.clone(), value: n.as_f64().unwrap_or(f64::NAN), unit });
+        }
+        _ => {}
+    }
+}
+
 /// The result's other numbers in `unit`, the nearest to `pointer` first:
 /// those sharing all but its last two tokens (siblings and cousins, e.g. the
 /// other reaction of the same step, `/inertia_approximate` for
 /// `/inertia_exact`, `/flywheel_inertia/exact` for it), not inside another
 /// item of a long series: a value matched by chance in a table is no slip a
-/// student makes.
-pub fn others(flat: &[Scalar], result: &Value, pointer: &str, unit: &str) -> Vec<(String, f64)> {
+/// student makes. The numbers of the items `pointer` is inside are read here.
+pub fn others(nearby: &Nearby, kind: &dyn AnyKind, result: &Value, pointer: &str, unit: &str) -> Vec<(String, f64)> {
     let own = tables::tokens(pointer);
-    let mut near: Vec<((std::cmp::Reverse<usize>, usize), String, f64)> = flat
+    let mut inside = Vec::new();
+    for i in 0..own.len() {
+        let long = tables::at(result, &own[..i]).and_then(Value::as_array).is_some_and(|a| a.len() > SHORT_LIST);
+        if let Some(item) = tables::at(result, &own[..=i]).filter(|_| long) {
+            numbers(kind, result, item, &mut own[..=i].to_vec(), &mut inside);
+        }
+    }
+    let mut near: Vec<((std::cmp::Reverse<usize>, usize), String, f64)> = nearby
+        .short
         .iter()
-        .filter(|s| s.unit.as_deref() == Some(unit))
-        .filter_map(|s| {
-            let tokens = tables::tokens(&s.pointer);
-            let shared = own.iter().zip(&tokens).take_while(|(a, b)| a == b).count();
-            let near =
-                shared + 2 >= own.len().min(tokens.len()) && tokens != own && !in_series(result, &tokens, shared);
+        .chain(&inside)
+        .filter(|n| n.unit.as_deref() == Some(unit) && n.value.is_finite() && n.tokens != own)
+        .filter_map(|n| {
+            let shared = own.iter().zip(&n.tokens).take_while(|(a, b)| a == b).count();
             // Nearest first: most tokens shared, then the same depth (siblings before cousins).
-            let rank = (std::cmp::Reverse(shared), tokens.len().abs_diff(own.len()));
-            Some((rank, s.pointer.clone(), s.value.as_f64()?)).filter(|_| near)
+            let rank = (std::cmp::Reverse(shared), n.tokens.len().abs_diff(own.len()));
+            (shared + 2 >= own.len().min(n.tokens.len())).then(|| (rank, tables::pointer(&n.tokens), n.value))
         })
         .collect();
     near.sort_by_key(|(rank, ..)| *rank);
     near.into_iter().map(|(_, p, x)| (p, x)).collect()
-}
-
-/// Whether `tokens`, past their first `shared`, go through an item of an
-/// array longer than [`SHORT_LIST`].
-fn in_series(result: &Value, tokens: &[String], shared: usize) -> bool {
-    (shared..tokens.len())
-        .any(|i| tables::at(result, &tokens[..i]).and_then(Value::as_array).is_some_and(|a| a.len() > SHORT_LIST))
 }
 
 /// A value in a message: its JSON, cut after 60 characters (a whole table is no help).

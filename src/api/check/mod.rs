@@ -14,7 +14,6 @@ mod run;
 pub use platforms::{Gradescope, PrairieLearn};
 pub use run::{CHECK, CheckKind, check_job, post};
 
-use super::tables;
 use crate::i18n::Msg;
 use crate::kind::JobResult;
 use crate::kind::Table;
@@ -278,7 +277,7 @@ pub fn grade_with(
     kind: &dyn super::kind::AnyKind,
     result: &Value,
     job: Option<String>,
-    flat: &OnceLock<Vec<tables::Scalar>>,
+    flat: &OnceLock<items::Nearby>,
 ) -> Result<CheckOutput, ApiError> {
     let reveal = r.reveal.unwrap_or(true);
     let own: BTreeMap<String, &ToleranceDto> = r.tolerances.iter().flatten().map(|(k, t)| (pointer(k), t)).collect();
@@ -295,7 +294,8 @@ pub fn grade_with(
             Ok((e, unit)) => {
                 let tolerance = items::tolerance(r.tolerance.as_ref(), own.get(&p).copied());
                 let asked = items::Asked { pointer: &p, answer, tolerance };
-                let others = || items::others(flat.get_or_init(|| tables::flatten(kind, result)), result, &p, &unit);
+                let nearby = || flat.get_or_init(|| items::Nearby::new(kind, result));
+                let others = || items::others(nearby(), kind, result, &p, &unit);
                 judged.push(items::judge(&asked, e, &unit, others, reveal));
             }
         }

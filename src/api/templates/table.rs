@@ -214,7 +214,14 @@ pub async fn run(
         return Err(ApiError::BadQuery(unknown));
     }
     let mut out = Vec::with_capacity(rows.len());
+    // The rows' new jobs share one job's budget; past it the rest are left for
+    // the next request (those done are stored, and found again at once).
+    let deadline = state.limits.deadline();
     for given in rows {
+        if deadline.expired() {
+            out.push((vec![Value::Null; pointers.len()], None, Some(spent(state).text())));
+            continue;
+        }
         out.push(match job_for(state, t, &given, want).await {
             Ok((row, _reserved)) => {
                 let mut result: Value = serde_json::from_slice(&row.result).unwrap_or_default();
@@ -232,6 +239,12 @@ pub async fn run(
         });
     }
     Ok(out)
+}
+
+/// Why a row of a table, study, variants or class was not computed: the
+/// request's budget (one job's) went on the rows before it.
+pub fn spent(state: &AppState) -> Msg {
+    Msg::new("rows-budget-spent").num("seconds", state.limits.budget.as_secs_f64())
 }
 
 pub fn unknown_parameter(t: &Template, name: &str) -> FieldError {

@@ -44,17 +44,50 @@ pub(super) fn crossing(model: &impl Model, step: &mut Step, end: End, cache: &mu
     Some(k)
 }
 
-/// Multiples of 2π crossed during the step, in either direction.
-pub(super) fn turns(model: &impl Model, step: &Step, (a, b): (f64, f64), events: &mut Vec<Event>) {
-    let (ka, kb) = ((a / (2.0 * PI)).floor() as i64, (b / (2.0 * PI)).floor() as i64);
-    let crossed: Vec<i64> = if kb > ka { (ka + 1..=kb).collect() } else { (kb + 1..=ka).rev().collect() };
-    for k in crossed {
-        let target = 2.0 * PI * k as f64;
-        if target == a {
-            continue;
-        }
+/// The most turns a run lists as events; those crossed after are counted.
+pub const MAX_TURN_EVENTS: usize = 100_000;
+
+/// The turns a run has listed, and those it crossed without listing them.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct Turns {
+    pub listed: usize,
+    pub unlisted: u64,
+}
+
+/// Multiples of 2π crossed during the step, in either direction, listed
+/// while the run has listed fewer than [`MAX_TURN_EVENTS`]; the others
+/// counted in `unlisted` (a rotor at 2·10⁶ rad/s crosses millions in a step).
+pub(super) fn turns(model: &impl Model, step: &Step, (a, b): (f64, f64), events: &mut Vec<Event>, tally: &mut Turns) {
+    let (ka, kb) = ((a / (2.0 * PI)).floor(), (b / (2.0 * PI)).floor());
+    if !(ka.is_finite() && kb.is_finite()) || ka == kb {
+        return;
+    }
+    // Up: ka + 1 ..= kb; down: ka ..= kb + 1, but ka itself where the step starts on it.
+    let (first, dir) = match kb > ka {
+        true => (ka + 1.0, 1.0),
+        false if 2.0 * PI * ka == a => (ka - 1.0, -1.0),
+        false => (ka, -1.0),
+    };
+    // Up: first ..= kb; down: first down to kb + 1.
+    let count = if dir > 0.0 { kb - first + 1.0 } else { first - kb }.max(0.0);
+    let shown = count.min(MAX_TURN_EVENTS.saturating_sub(tally.listed) as f64);
+    tally.listed += shown as usize;
+    tally.unlisted += (count - shown) as u64;
+    for i in 0..shown as u64 {
+        let target = 2.0 * PI * (first + dir * i as f64);
         let t = brent(|s| model.angle(&step.at(s)) - target, step.t0, step.t1, 0.0);
         events.push(at(model, EventKind::Turn, t, &step.at(t), None));
+    }
+}
+
+/// φ at the step's ends, the second cut at the run's end where the run
+/// ends within the step (a free rotor's last step may run far past it).
+pub(super) fn to_end(model: &impl Model, end: End, step: &Step, (a, b): (f64, f64)) -> (f64, f64) {
+    let ends_at = |t: f64| if step.t1 > t { (a, model.angle(&step.at(t.max(step.t0)))) } else { (a, b) };
+    match end {
+        End::Duration(d) => ends_at(d),
+        End::UntilAngle { angle, .. } if (a - angle) * (b - angle) <= 0.0 && a != b => (a, angle),
+        End::UntilAngle { max_time, .. } => ends_at(max_time),
     }
 }
 

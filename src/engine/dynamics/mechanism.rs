@@ -217,6 +217,7 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         repeated: run.repeated,
         estimated_error: (0..p.mechanism.bodies.len() - 1).map(|b| run.local_errors[3 * b + 2]).fold(0.0, f64::max),
         stopped: run.stopped,
+        unlisted_turns: run.unlisted_turns,
     };
     let near_singular = clusters(&dae.held_at.borrow(), run.t_end);
     let (sparse, sparse_hold) = (dae.sparse.is_some(), dae.sparse.is_some() && hold);

@@ -23,6 +23,7 @@ pub mod reduced;
 mod rows;
 mod sampler;
 
+pub use events::MAX_TURN_EVENTS;
 pub use failure::{DynamicsError, Failure, Start};
 pub use reduced::{ReducedProblem, solve};
 
@@ -141,6 +142,8 @@ pub struct DynamicsSolution {
     pub estimated_error: f64,
     /// Why the run stopped early (e.g. the end angle was not reached in time).
     pub stopped: Option<Stopped>,
+    /// Turns crossed after the first [`MAX_TURN_EVENTS`] listed as events.
+    pub unlisted_turns: u64,
 }
 
 /// Why a run stopped before its end.
@@ -242,6 +245,8 @@ pub(crate) struct Run {
     pub integrator: Integrator,
     pub stiff_at: Option<f64>,
     pub repeated: bool,
+    /// Turns crossed after the first [`events::MAX_TURN_EVENTS`], not listed.
+    pub unlisted_turns: u64,
 }
 
 const MAX_STEPS: usize = 2_000_000;
@@ -312,6 +317,7 @@ fn drive<S: Stepper>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<R
     let mut sampler = Sampler::new(s.samples, known, s.kept_bytes);
     let (mut events, mut stopped, mut drift, mut reversal) = (Vec::new(), None, 0.0f64, [f64::INFINITY; 2]);
     let (mut guards, mut switches, mut spent) = (None, 0, events::Spent { counts: [0; 3], errors: Vec::new() });
+    let mut turns = events::Turns::default();
     let t_end = loop {
         if deadline.expired() {
             return Err(over(&ode));
@@ -331,7 +337,7 @@ fn drive<S: Stepper>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<R
         // φ at both ends of the step, evaluated once: for a mechanism each
         // evaluation assembles the constraints.
         let span = (model.angle(&step.y0), model.angle(&step.y1));
-        events::turns(model, &step, span, &mut events);
+        events::turns(model, &step, events::to_end(model, s.end, &step, span), &mut events, &mut turns);
         if let Some(w) = model.end_speed(&step.y1) {
             let first = |t: f64, reached: bool| if reached { t.min(step.t0) } else { t };
             reversal = [first(reversal[0], w <= 0.0), first(reversal[1], w >= 0.0)];
@@ -386,6 +392,7 @@ fn drive<S: Stepper>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<R
         integrator: s.integrator,
         stiff_at: None,
         repeated: false,
+        unlisted_turns: turns.unlisted,
     }))
 }
 

@@ -82,20 +82,30 @@ impl ReducedProblem {
         0.5 * self.inertia.eval(self.reduce(phi), Side::Right) * omega * omega
     }
 
-    /// ∫ M* dφ from a to b, across periods.
+    /// ∫ M* dφ from a to b, across periods: the whole periods between them
+    /// counted (n·∫₀ᵀ, one quadrature however many turns), the partial
+    /// periods at both ends integrated. The periods are numbered by integers,
+    /// never found again from an angle that rounding puts a hair below a
+    /// multiple of T (that loop never ended at 11 turns).
     pub(super) fn work(&self, a: f64, b: f64) -> f64 {
         let (lo, hi, sign) = if a <= b { (a, b, 1.0) } else { (b, a, -1.0) };
-        let mut total = 0.0f64;
-        let mut x = lo;
-        while x < hi {
-            let base = (x / self.period).floor() * self.period;
-            let end = (base + self.period).min(hi);
-            let (u0, u1) = (x - base, end - base);
-            for (f, k) in &self.torques {
-                total += k * f.integral(u0, u1, 1e-14 * (1.0 + total.abs()), 1e-13).value;
+        let period = self.period;
+        let (k_lo, k_hi) = ((lo / period).floor(), (hi / period).floor());
+        // Where in its period each end lies, within [0, T].
+        let (u_lo, u_hi) = ((lo - k_lo * period).clamp(0.0, period), (hi - k_hi * period).clamp(0.0, period));
+        let integral = |u0: f64, u1: f64| -> f64 {
+            if u1 <= u0 {
+                return 0.0;
             }
-            x = end;
-        }
+            self.torques.iter().map(|(f, k)| k * f.integral(u0, u1, 1e-14, 1e-13).value).sum()
+        };
+        let total = if k_lo == k_hi {
+            integral(u_lo, u_hi)
+        } else {
+            let whole = k_hi - k_lo - 1.0;
+            let cycle = if whole > 0.0 { whole * integral(0.0, period) } else { 0.0 };
+            integral(u_lo, period) + cycle + integral(0.0, u_hi)
+        };
         sign * total
     }
 }
@@ -169,5 +179,6 @@ pub fn solve(p: &ReducedProblem) -> Result<DynamicsSolution, DynamicsError> {
         repeated: run.repeated,
         estimated_error: run.local_errors[0],
         stopped: run.stopped,
+        unlisted_turns: run.unlisted_turns,
     })
 }

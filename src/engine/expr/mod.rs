@@ -22,6 +22,8 @@ use program::Program;
 pub const MAX_LENGTH: usize = 2000;
 /// Deepest accepted nesting of parentheses and unary operators.
 pub const MAX_DEPTH: usize = 64;
+/// Most nodes of a derivative the engine builds (some 50 MB of tree).
+pub const MAX_DERIVATIVE_NODES: usize = 1_000_000;
 
 /// Why an expression was rejected; `position` is a character index into the source.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -116,9 +118,36 @@ impl Expr {
         }
     }
 
-    /// Derivative with respect to variable number `var`.
+    /// Derivative with respect to variable number `var`. A derivative of
+    /// more than [`MAX_DERIVATIVE_NODES`] nodes is never built (a product of
+    /// many factors grows like its factors to the power of the order): it is
+    /// NaN instead, which the service refuses beforehand with the field's
+    /// words ([`Expr::derivatives_fit`]).
     pub fn derivative(&self, var: usize) -> Self {
+        if self.derivative_size(var) > MAX_DERIVATIVE_NODES {
+            return Self::from_root(Node::Const(f64::NAN));
+        }
         Self::from_root(self.root.derivative(var).fold())
+    }
+
+    /// An upper bound on the nodes of the derivative with respect to `var`.
+    pub fn derivative_size(&self, var: usize) -> usize {
+        self.root.sizes(var).1
+    }
+
+    /// Whether the derivatives up to `order` with respect to `var` stay
+    /// within `max` nodes each: Err(the first order that would not).
+    pub fn derivatives_fit(&self, var: usize, order: usize, max: usize) -> Result<(), usize> {
+        let mut e = self.clone();
+        for k in 1..=order {
+            if e.derivative_size(var) > max.min(MAX_DERIVATIVE_NODES) {
+                return Err(k);
+            }
+            if k < order {
+                e = e.derivative(var);
+            }
+        }
+        Ok(())
     }
 
     /// `k · self`.

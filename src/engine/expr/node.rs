@@ -242,6 +242,46 @@ impl Node {
 }
 
 /// Derivative of `f(u)` with respect to `u`.
+impl Node {
+    /// The nodes of this tree and an upper bound on those of its derivative
+    /// with respect to variable `i` before folding, found without building it
+    /// (saturating): each rule of [`Node::derivative`] copies its operands a
+    /// known number of times.
+    pub fn sizes(&self, i: usize) -> (usize, usize) {
+        let s = |n: &Node| n.sizes(i);
+        let sum = |terms: &[usize]| terms.iter().fold(0usize, |a, t| a.saturating_add(*t));
+        let times = |k: usize, n: usize| n.saturating_mul(k);
+        match self {
+            Const(_) | Var(_) => (1, 1),
+            Neg(a) => {
+                let (sa, da) = s(a);
+                (sa.saturating_add(1), da.saturating_add(1))
+            }
+            Add(a, q) | Sub(a, q) | Mul(a, q) | Div(a, q) | Pow(a, q) | Call2(_, a, q) => {
+                let ((sa, da), (sq, dq)) = (s(a), s(q));
+                let d = match self {
+                    Add(..) | Sub(..) => sum(&[da, dq, 1]),
+                    Mul(..) => sum(&[da, dq, sa, sq, 3]),
+                    Div(..) => sum(&[da, dq, sa, times(3, sq), 4]),
+                    Pow(_, q) if !q.uses(i) => sum(&[da, sa, times(2, sq), 5]),
+                    Pow(..) => sum(&[da, dq, times(3, sa), times(2, sq), 8]),
+                    Call2(Fn2::Atan2, ..) => sum(&[da, dq, times(3, sa), times(3, sq), 7]),
+                    _ => sum(&[da, dq, sa, sq, 1]),
+                };
+                (sum(&[sa, sq, 1]), d)
+            }
+            Call1(_, a) => {
+                let (sa, da) = s(a);
+                (sa.saturating_add(1), sum(&[times(2, sa), da, 9]))
+            }
+            IfLess(n) => {
+                let [(s0, _), (s1, _), (s2, d2), (s3, d3)] = [s(&n[0]), s(&n[1]), s(&n[2]), s(&n[3])];
+                (sum(&[s0, s1, s2, s3, 1]), sum(&[s0, s1, d2, d3, 1]))
+            }
+        }
+    }
+}
+
 fn d1(f: Fn1, u: &Node) -> Node {
     let u = || b(u.clone());
     let one = || b(Const(1.0));

@@ -12,6 +12,7 @@
 //! kinetic energy is kept: ω₊ = ω₋·√((I + I*₋)/(I + I*₊)).
 
 use super::cycle::Cycle;
+use crate::engine::Deadline;
 use crate::engine::function::Side;
 use crate::engine::numeric::ode::{Dopri5, OdeError, Rhs, Step};
 use crate::engine::numeric::roots::brent;
@@ -33,7 +34,14 @@ pub struct Check {
 
 const MAX_STEPS: usize = 400_000;
 
-pub(crate) fn simulate(cycle: &Cycle, inertia: f64, omega0: f64, omega_a: f64, rtol: f64) -> Result<Check, OdeError> {
+/// One cycle in time; stopped (not finite) once the `deadline` has passed,
+/// which the solution then reports as a spent budget.
+pub(crate) fn simulate(
+    cycle: &Cycle,
+    (inertia, omega0, omega_a): (f64, f64, f64),
+    rtol: f64,
+    deadline: &Deadline,
+) -> Result<Check, OdeError> {
     let mut state = vec![0.0, omega0];
     let (mut t, mut w_max, mut w_min) = (0.0, omega0, omega0);
     let (mut steps, mut evaluations) = (0, 0);
@@ -55,6 +63,9 @@ pub(crate) fn simulate(cycle: &Cycle, inertia: f64, omega0: f64, omega_a: f64, r
         };
         let mut ode = Dopri5::new(&mut rhs, t, state.clone(), rtol, vec![rtol * omega_a.max(cycle.period); 2], h_max);
         loop {
+            if deadline.expired() {
+                return Err(OdeError::NotFinite { t });
+            }
             let step = ode.step(&mut rhs, MAX_STEPS)?;
             let t_end =
                 if step.y1[0] >= end { brent(|s| step.component(s, 0) - end, step.t0, step.t1, 0.0) } else { step.t1 };

@@ -2,9 +2,9 @@
 //! I*(φ) and its slope, split into smooth pieces at every breakpoint, with
 //! the work W(φ) = ∫₀^φ M* dφ integrated piece by piece.
 
-use crate::engine::EngineError;
 use crate::engine::function::{Function, Side};
 use crate::engine::numeric::quadrature::Integral;
+use crate::engine::{Deadline, EngineError, Phase, Progress};
 
 /// Samples per period used to bracket sign changes (at least 8 per piece).
 const SAMPLES_PER_PERIOD: usize = 1024;
@@ -30,6 +30,9 @@ pub(crate) struct Cycle<'a> {
     pub rel_tol: f64,
     /// Absolute quadrature tolerance per radian (set once the scale is known).
     pub abs_tol_per_rad: f64,
+    /// The job's budget: past it the sampling stops and every work is NaN,
+    /// which the solution reports as the spent budget.
+    pub deadline: Deadline,
 }
 
 /// M* (and the slope of I*) sampled on a grid inside every piece.
@@ -44,7 +47,13 @@ pub(crate) struct Samples {
 }
 
 impl<'a> Cycle<'a> {
-    pub fn new(terms: Vec<Term<'a>>, inertia: &'a Function, inertia_label: &'a str, period: f64, rel_tol: f64) -> Self {
+    pub fn new(
+        terms: Vec<Term<'a>>,
+        (inertia, inertia_label): (&'a Function, &'a str),
+        period: f64,
+        rel_tol: f64,
+        deadline: Deadline,
+    ) -> Self {
         let mut pieces = vec![0.0, period];
         for t in &terms {
             pieces.extend(t.f.breakpoints(period));
@@ -63,6 +72,7 @@ impl<'a> Cycle<'a> {
             pieces,
             rel_tol,
             abs_tol_per_rad: 0.0,
+            deadline,
         }
     }
 
@@ -89,6 +99,7 @@ impl<'a> Cycle<'a> {
         let (mut abs_work, mut max_abs_torque) = (0.0, 0.0f64);
         let mut scratch = Vec::new();
         for w in self.pieces.windows(2) {
+            self.deadline.check(|| Progress::Flywheel(Phase::Sampling))?;
             let (a, b) = (w[0], w[1]);
             let n = ((SAMPLES_PER_PERIOD as f64 * (b - a) / self.period).ceil() as usize).max(8);
             let xs: Vec<f64> = (0..=n).map(|j| a + (b - a) * j as f64 / n as f64).collect();
@@ -130,19 +141,25 @@ impl<'a> Cycle<'a> {
         EngineError::NotFinite { function: bad.map_or("reduced torque", |t| t.label).into(), phi }
     }
 
-    /// ∫ₐᵇ k·f dφ for one function, split at the pieces.
+    /// ∫ₐᵇ k·f dφ for one function, split at the pieces (those inside
+    /// found by bisection: a table of 80 000 rows has as many).
     pub fn integrate(&self, f: &Function, a: f64, b: f64) -> Integral {
         let mut total = Integral::default();
         let mut lo = a;
-        for &p in self.pieces.iter().filter(|&&p| p > a && p < b).chain(std::iter::once(&b)) {
+        let start = self.pieces.partition_point(|&p| p <= a);
+        let inside = start..self.pieces.partition_point(|&p| p < b).max(start);
+        for &p in self.pieces[inside].iter().chain(std::iter::once(&b)) {
             total += f.integral(lo, p, self.abs_tol_per_rad * (p - lo), self.rel_tol);
             lo = p;
         }
         total
     }
 
-    /// Work of M* over [a, b].
+    /// Work of M* over [a, b]; NaN past the budget.
     pub fn work(&self, a: f64, b: f64) -> Integral {
+        if self.deadline.expired() {
+            return Integral { value: f64::NAN, error: f64::NAN, evaluations: 0 };
+        }
         let mut total = Integral { value: self.balance * (b - a), ..Integral::default() };
         for t in &self.terms {
             let i = self.integrate(t.f, a, b);

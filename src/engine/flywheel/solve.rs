@@ -46,7 +46,8 @@ fn phases(
             Load::Balance => None,
         })
         .collect();
-    let mut cycle = Cycle::new(terms, &p.reduced_inertia, &p.reduced_inertia_label, p.period, 0.1 * p.tolerance);
+    let inertia = (&p.reduced_inertia, p.reduced_inertia_label.as_str());
+    let mut cycle = Cycle::new(terms, inertia, p.period, 0.1 * p.tolerance, p.deadline);
     let mut samples = cycle.sample()?;
     cycle.abs_tol_per_rad = 0.1 * p.tolerance * samples.abs_work.max(f64::MIN_POSITIVE) / p.period;
     next(Phase::Work)?;
@@ -195,7 +196,7 @@ fn run_check(
         return None;
     }
     let rtol = (0.01 * p.tolerance).clamp(1e-13, 1e-6);
-    match simulate(cycle, ex.inertia, omega0, p.mean_speed, rtol) {
+    match simulate(cycle, (ex.inertia, omega0, p.mean_speed), rtol, &p.deadline) {
         Ok(c) => Some(c),
         Err(e) => {
             warnings.push(Condition::CheckIncomplete(e));
@@ -228,10 +229,13 @@ fn sample_table(p: &FlywheelProblem, speed: &SpeedLaw) -> (Vec<SamplePoint>, f64
     let n = p.samples.max(2);
     let angles: Vec<f64> = (0..n).map(|i| p.period * i as f64 / (n - 1) as f64).collect();
     let (works, q) = speed.cycle.work_at(&angles);
+    // Past the budget the rest are not made (the solution is then refused as late).
     let rows = angles
         .iter()
         .zip(works)
-        .map(|(&angle, work)| {
+        .enumerate()
+        .take_while(|(i, _)| i % 256 != 0 || !p.deadline.expired())
+        .map(|(_, (&angle, work))| {
             // The last row closes the cycle: values as φ → period from below.
             let side = if angle < p.period { Side::Right } else { Side::Left };
             SamplePoint {

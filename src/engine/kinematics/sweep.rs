@@ -42,7 +42,10 @@ pub fn sweep_each(
     let mut ws = Workspace::default();
     let mut base = m.reference_q();
     if let Some(first) = positions.first() {
-        approach(m, &mut ws, &mut base, first).map_err(|e| unreachable(m, e))?;
+        approach(m, &mut ws, &mut base, first, deadline).map_err(|e| match e {
+            EngineError::BudgetExceeded { .. } => e,
+            e => unreachable(m, e),
+        })?;
     }
     // Velocity coefficients g, h at the last regular position (one input)
     // and that position's input, for the predictor.
@@ -158,12 +161,20 @@ const APPROACH_STEP: f64 = 0.05;
 
 /// Moves q from the drawn configuration (inputs at their `reference`) to the
 /// first requested position in small steps, so the assembly branch drawn is
-/// the branch solved.
-fn approach(m: &Mechanism, ws: &mut Workspace, q: &mut [f64], target: &[[f64; 3]]) -> Result<(), EngineError> {
+/// the branch solved; the `deadline` read at every step (up to 10 000 of
+/// them, each a Newton solve).
+fn approach(
+    m: &Mechanism,
+    ws: &mut Workspace,
+    q: &mut [f64],
+    target: &[[f64; 3]],
+    deadline: &Deadline,
+) -> Result<(), EngineError> {
     let from: Vec<f64> = m.drivers.iter().map(|d| d.reference).collect();
     let span = from.iter().zip(target).map(|(a, t)| (t[0] - a).abs()).fold(0.0, f64::max);
     let n = (span / APPROACH_STEP).ceil().min(10_000.0) as usize;
     for k in 1..n {
+        deadline.check(|| Progress::Approach { step: k, of: n })?;
         let f = k as f64 / n as f64;
         let inputs: Vec<[f64; 3]> = from.iter().zip(target).map(|(a, t)| [a + f * (t[0] - a), 0.0, 0.0]).collect();
         ws.assemble(m, q, &inputs, 0)?;

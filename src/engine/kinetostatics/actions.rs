@@ -8,10 +8,10 @@
 use super::actuators::Actuated;
 use super::loads::{applied_forces_into, point_motion};
 use super::{ContactState, Motion, Outputs, Reaction, Step, friction, mass_times};
-use crate::engine::EngineError;
 use crate::engine::kinematics::{Configuration, solve_linear};
 use crate::engine::mobility::Mobility;
 use crate::engine::model::{BodyId, JointKind, Mechanism, Pitch, cross, dot, perp, rotate_by};
+use crate::engine::{Deadline, EngineError, Progress};
 use nalgebra::{DMatrix, DVector};
 
 /// The vectors of one position's actions, kept for the next: Q, M q̈ − Q,
@@ -32,6 +32,8 @@ pub(super) struct Actions<'a> {
     pub loads: &'a [super::Load],
     pub outputs: Outputs,
     pub scratch: Scratch,
+    /// The job's budget, read at every iteration of friction.
+    pub deadline: &'a Deadline,
 }
 
 impl Step {
@@ -97,7 +99,7 @@ impl Actions<'_> {
             });
         }
         applied_forces_into(m, self.loads, (&c.q, &c.trig), &c.qd, phi, [inputs[0][1], 0.0], &mut s.qv);
-        out.friction_iterations = with_friction(m, c, s, k, phi)?;
+        out.friction_iterations = with_friction(m, c, s, (k, phi), self.deadline)?;
         s.inertial.clear();
         s.inertial.extend(c.qdd.iter().zip(&s.qv).enumerate().map(|(i, (a, q))| a * m.mass_of(i) - q));
         virtual_power(m, c, &s.inertial, s.actuated.as_ref(), &mut out.driving_virtual_power);
@@ -172,8 +174,8 @@ fn with_friction(
     m: &Mechanism,
     c: &Configuration,
     s: &mut Scratch,
-    step: usize,
-    input: f64,
+    (step, input): (usize, f64),
+    deadline: &Deadline,
 ) -> Result<usize, EngineError> {
     if !friction::present(m) {
         return Ok(0);
@@ -184,6 +186,7 @@ fn with_friction(
     let mut qf = DVector::zeros(q_applied.len());
     let (mut driving, mut reactions) = (Vec::new(), Vec::new());
     for iteration in 1..=friction::MAX_ITERATIONS {
+        deadline.check(|| Progress::Friction { step })?;
         s.inertial.clear();
         s.inertial.extend((&mq - &q_applied - &qf).iter());
         multipliers(m, c, s, Some(&[]), (step, input), (&mut driving, &mut reactions))?;

@@ -166,6 +166,7 @@ pub fn solve_each(
         loads,
         outputs,
         scratch: Scratch { offsets: joint_offsets(m), actuated: Actuated::new(m), ..Scratch::default() },
+        deadline,
     };
     let (mut step, mut tally) = (Step::default(), Tally::new(m.joints.len()));
     // Each position solved as soon as it is assembled, once the mobility at

@@ -10,3 +10,4 @@ pub mod quadrature;
 pub mod radau;
 pub mod roots;
 pub mod svd;
+pub mod tridiagonal;

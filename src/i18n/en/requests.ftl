@@ -264,6 +264,7 @@ constants-reserved = '{ $name }' is taken by the expressions (phi, t, omega, pi,
 
 ## An expression
 
+expression-derivative-too-large = its derivative of order { $order } would have more than { $max } terms: write the expression more compactly (a power such as sin(theta)^16 rather than a product of equal factors)
 expr-too-long = expression has { $length } characters; the maximum is { $max }
 expr-malformed-number = malformed number '{ $text }'
 expr-unexpected-character = unexpected character '{ $char }'

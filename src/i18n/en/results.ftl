@@ -46,6 +46,7 @@ accuracy-energy-held = { " " }and, the loads having a potential, onto T + V = Eâ
 warning-dynamics-not-reached = the angle { $angle } was not reached within { $time }
 warning-dynamics-contact-opens = the contact '{ $name }' opens at { $t }: its normal force falls to 0 and the bodies would separate (what follows is not the motion of these joints): the run stops there
 warning-dynamics-unexpected-guard = the run stopped where the model changes nothing (a guard crossed where the model has none)
+warning-dynamics-turns-unlisted = the first { $listed } turns are listed as events; { $more } more were crossed after them and are not listed
 warning-dynamics-near-singular = the motion passed close to singular positions (the joint Jacobian nearly lost rank) { $count } time(s), the first at { $first }: the mechanism was kept on its branch; see machine.near_singular
 
 ## Kinetostatics

@@ -290,6 +290,7 @@ constants-reserved = '{ $name }' ya lo usan las expresiones (phi, t, omega, pi, 
 
 ## Una expresión
 
+expression-derivative-too-large = su derivada de orden { $order } tendría más de { $max } términos: escriba la expresión de forma más compacta (una potencia como sin(theta)^16 en lugar de un producto de factores iguales)
 expr-too-long = la expresión tiene { $length } caracteres; el máximo es { $max }
 expr-malformed-number = número mal escrito '{ $text }'
 expr-unexpected-character = carácter inesperado '{ $char }'

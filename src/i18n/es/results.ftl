@@ -46,6 +46,7 @@ accuracy-energy-held = { " " }y, al tener potencial las cargas, sobre T + V = E�
 warning-dynamics-not-reached = no se alcanzó el ángulo { $angle } en { $time }
 warning-dynamics-contact-opens = el contacto '{ $name }' se abre en { $t }: su fuerza normal cae a 0 y los sólidos se separarían (lo que sigue no es el movimiento de estos pares): la integración se detiene ahí
 warning-dynamics-unexpected-guard = la integración se detuvo donde el modelo no cambia nada (una condición cruzó donde el modelo no tiene ninguna)
+warning-dynamics-turns-unlisted = las primeras { $listed } vueltas se listan como eventos; después se cruzaron { $more } más, que no se listan
 warning-dynamics-near-singular = el movimiento pasó cerca de posiciones singulares (el jacobiano de los pares casi perdió rango) { $count ->
         [one] una vez
        *[other] { $count } veces

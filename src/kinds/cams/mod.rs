@@ -16,12 +16,13 @@ pub use program::program;
 pub use request::{CamFollowerDto, CamFollowerMotion, CamFollowerType, CamProgramDto, CamRequest, CamSense};
 pub use result::CamResult;
 
-use crate::engine::cam::design::{Cam, CamError, Lift, Sample, smallest_base, turn};
+use crate::engine::Deadline;
+use crate::engine::cam::design::{Cam, CamError, Sample, lifts, smallest_base, turn};
 use crate::i18n::Msg;
 use crate::kind::limits::Limits;
 use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
-use crate::kind::{Kind, Table, cell, unit_in, validated};
+use crate::kind::{Kind, Table, cell, engine_failure, unit_in, validated};
 use request::Problem;
 use serde_json::Value;
 
@@ -94,14 +95,16 @@ impl Kind for Cams {
     }
 
     fn compute(request: &CamRequest, unknown: Vec<FieldError>, limits: &Limits) -> Result<CamResult, ApiError> {
+        let deadline = limits.deadline();
         let problem = validated(unknown, request.to_problem(limits))?;
         let lift = result::lift_of(&problem);
+        let lifts = lifts(&lift, problem.samples, &deadline).map_err(|e| engine_failure(e, "/program"))?;
         let base = match problem.size {
             None => problem.cam.base,
-            Some(size) => sized(&problem, &lift, size)?,
+            Some(size) => sized(&problem, &lifts, size, &deadline)?,
         };
         let cam = Cam { base, ..problem.cam };
-        let samples = turn(&cam, &lift, problem.samples).map_err(|e| refused(&e))?;
+        let samples = turn(&cam, &lifts).map_err(|e| refused(&e))?;
         Ok(result::result(&problem, &cam, &samples))
     }
 
@@ -142,7 +145,12 @@ impl Kind for Cams {
 
 /// The smallest base radius meeting `size` ([largest pressure angle, smallest
 /// radius of curvature]) without undercut.
-fn sized(p: &Problem, lift: Lift, [angle, rho]: [Option<f64>; 2]) -> Result<f64, ApiError> {
+fn sized(
+    p: &Problem,
+    lifts: &[(f64, [f64; 4])],
+    [angle, rho]: [Option<f64>; 2],
+    deadline: &Deadline,
+) -> Result<f64, ApiError> {
     let follower = p.cam.follower;
     let ok = |turn: &[Sample]| {
         let angle_ok = angle.is_none_or(|a| turn.iter().all(|x| x.pressure_angle.abs() <= a));
@@ -150,7 +158,8 @@ fn sized(p: &Problem, lift: Lift, [angle, rho]: [Option<f64>; 2]) -> Result<f64,
         let rho_ok = rho.is_none_or(|r| turn.iter().filter(convex).all(|x| x.curvature_radius >= r));
         angle_ok && rho_ok && !result::undercut(follower, turn)
     };
-    smallest_base(p.cam, lift, p.samples, ok)
+    smallest_base(p.cam, lifts, ok, deadline)
+        .map_err(|e| engine_failure(e, "/size"))?
         .ok_or_else(|| ApiError::Invalid(vec![FieldError::said("/size", Msg::new("cam-no-base"))]))
 }
 

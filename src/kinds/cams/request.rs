@@ -305,6 +305,7 @@ impl CamRequest {
                 if (a - b).abs() > 1e-9 * a.abs().max(b.abs()).max(1e-3) {
                     return e.refuse("/program/lift", Msg::new("cam-lift-closed").num("start", a).num("end", b));
                 }
+                e.differentiable(&s, 3, "/program/lift")?;
                 let d1 = s.derivative();
                 let d2 = d1.derivative();
                 let d3 = d2.derivative();

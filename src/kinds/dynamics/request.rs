@@ -78,7 +78,7 @@ impl DynamicsRequest {
             period: period.unwrap_or(2.0 * PI),
             tolerance: tolerance.unwrap_or(1e-9),
             samples: samples.unwrap_or(DEFAULT_SAMPLES),
-            deadline: Deadline::after(e.limits.budget),
+            deadline: e.limits.deadline(),
         }
     }
 
@@ -110,7 +110,9 @@ impl DynamicsRequest {
             })
             .collect();
         let inertia = match &self.reduced_inertia {
-            Some(f) => e.function(f, Dim::INERTIA, period, "/reduced_inertia"),
+            Some(f) => e
+                .function(f, Dim::INERTIA, period, "/reduced_inertia")
+                .and_then(|f| e.differentiable(&f, 1, "/reduced_inertia").map(|()| f)),
             None => e.refuse("/reduced_inertia", Msg::new("dynamics-inertia-required")),
         };
         let initial = self.initial.as_ref();

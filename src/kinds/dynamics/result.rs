@@ -2,7 +2,7 @@
 
 use super::{IntegratorChoice, MachineDynamics};
 use crate::engine::dynamics::mechanism::MechanismSolution;
-use crate::engine::dynamics::{DynamicsSolution, EventKind, KEPT_BYTES, Stopped};
+use crate::engine::dynamics::{DynamicsSolution, EventKind, KEPT_BYTES, MAX_TURN_EVENTS, Stopped};
 use crate::i18n::Msg;
 use crate::kind::notes::Notes;
 use crate::kind::{list, names};
@@ -138,6 +138,10 @@ impl From<DynamicsSolution> for DynamicsResult {
             .collect();
         let mut notes = Notes::default();
         notes.extend(s.stopped.as_ref().map(stopped));
+        if s.unlisted_turns > 0 {
+            let said = Msg::new("warning-dynamics-turns-unlisted").count("listed", MAX_TURN_EVENTS);
+            notes.warn(said.count("more", usize::try_from(s.unlisted_turns).unwrap_or(usize::MAX)));
+        }
         Self {
             samples: s
                 .samples

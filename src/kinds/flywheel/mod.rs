@@ -9,8 +9,8 @@ pub use result::{
     AccuracyDto, AreaDto, CSV_COLUMNS, CheckDto, DiskOut, FlywheelResult, InertiaPair, ItemWork, SampleDto, csv_table,
 };
 
+use crate::engine::Progress;
 use crate::engine::flywheel::solve;
-use crate::engine::{Deadline, Progress};
 use crate::kind::limits::Limits;
 use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
@@ -90,7 +90,7 @@ impl Kind for Flywheel {
 
 /// Validates and solves a request within `limits`, stopping when the compute budget runs out.
 fn compute(request: &FlywheelRequest, unknown: Vec<FieldError>, limits: &Limits) -> Result<FlywheelResult, ApiError> {
-    let deadline = Deadline::after(limits.budget);
+    let deadline = limits.deadline();
     let p = validated(unknown, request.to_problem(limits, deadline)).map_err(|e| match deadline.expired() {
         true => ApiError::OverBudget(crate::kind::refused::engine_msg(&deadline.exceeded(Progress::AssemblingMachine))),
         false => e,

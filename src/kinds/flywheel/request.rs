@@ -154,7 +154,9 @@ impl FlywheelRequest {
         let machine = self.machine(&mut e, p, speeds.map_or(0.0, |s| s.0), deadline);
         let mut torques = self.torques(&mut e, p, machine.is_some());
         let mut inertia = match &self.reduced_inertia {
-            Some(f) => e.function(f, Dim::INERTIA, p, "/reduced_inertia"),
+            Some(f) => e
+                .function(f, Dim::INERTIA, p, "/reduced_inertia")
+                .and_then(|f| e.differentiable(&f, 1, "/reduced_inertia").map(|()| f)),
             None => Some(Function::Constant(0.0)),
         };
         if let (Some(m), Some(t), Some(i)) = (machine, torques.as_mut(), inertia.as_mut()) {

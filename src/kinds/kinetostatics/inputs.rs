@@ -55,11 +55,24 @@ pub fn positions(
     }
     // Only a valid count of steps is laid out (a count over the limit would not fit in memory).
     let valid = ranges.len() == inputs.len() && (1..=max).contains(&steps);
-    let positions = match valid {
-        true => (0..steps).map(|s| ranges.iter().map(|r: &Range| r.at(s as f64 / steps as f64)).collect()).collect(),
-        false => Vec::new(),
-    };
+    let positions = if valid { laid_out(e, &ranges, steps) } else { Vec::new() };
     (drivers, positions, linear)
+}
+
+/// The inputs at each of `steps` positions, the budget read every 256 (an
+/// input's speed may be an expression to evaluate at each): past it, none
+/// and an error, which the budget's 422 replaces ([`crate::kind::compute`]).
+fn laid_out(e: &mut Errors, ranges: &[Range], steps: usize) -> Vec<Vec<[f64; 3]>> {
+    let deadline = e.limits.deadline();
+    let mut positions = Vec::with_capacity(steps);
+    for s in 0..steps {
+        if s % 256 == 0 && deadline.expired() {
+            e.say("/input", Msg::new("progress-reading"));
+            return Vec::new();
+        }
+        positions.push(ranges.iter().map(|r| r.at(s as f64 / steps as f64)).collect());
+    }
+    positions
 }
 
 /// The joint named where an input's effort acts: a revolute or prismatic joint.
@@ -114,6 +127,7 @@ fn input_range(e: &mut Errors, input: &InputDto, prismatic: bool, at: &str) -> O
         Some(q) => Some(e.quantity(q, accel_dim, &format!("{at}/acceleration"))?),
         None => None,
     };
+    e.differentiable(&speed, 1, &format!("{at}/speed"))?;
     let slope = speed.constant().is_none().then(|| speed.derivative());
     Some((reference, Range { start, end, speed, slope, acceleration }))
 }

@@ -11,7 +11,6 @@ pub use request::{KinetostaticsRequest, OutputKind};
 pub use result::{KinetostaticsResult, Scalars, StepDto};
 pub use table::csv_table;
 
-use crate::engine::Deadline;
 use crate::engine::kinetostatics::solve_each;
 use crate::kind::limits::Limits;
 use crate::kind::plots::Plots;
@@ -131,7 +130,7 @@ fn compute(
     unknown: Vec<FieldError>,
     limits: &Limits,
 ) -> Result<KinetostaticsResult, ApiError> {
-    let deadline = Deadline::after(limits.budget);
+    let deadline = limits.deadline();
     let problem = validated(unknown, request.to_problem(limits))?;
     let joint_names: Vec<String> = problem.mechanism.joints.iter().map(|j| j.name.clone()).collect();
     let (joints, bodies) = (names(&joint_names), names(&problem.body_names));

@@ -204,6 +204,7 @@ fn polar(e: &mut Errors, p: &PolarDto, point: &PointReader, at: &str) -> Option<
     };
     let rho = e.function_of(&p.radius, Dim::LENGTH, TAU, &format!("{at}/radius"), &["psi"]);
     let (centre, zero, rho) = (centre?, zero?, rho?);
+    e.differentiable(&rho, 3, &format!("{at}/radius"))?;
     if let Some(bad) = (0..360)
         .map(|k| f64::from(k).to_radians())
         .find(|&psi| !matches!(rho.eval(psi, Side::Right).partial_cmp(&0.0), Some(std::cmp::Ordering::Greater)))

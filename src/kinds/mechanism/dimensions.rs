@@ -71,7 +71,7 @@ impl MechanismDto {
         };
         let weights: Vec<f64> = names.iter().map(|n| if on_ground(n) { GROUND_WEIGHT } else { 1.0 }).collect();
         let points: Vec<[f64; 2]> = sketch.values().copied().collect();
-        let solved = match solve(&points, &weights, &read) {
+        let solved = match solve(&points, &weights, &read, &e.limits.deadline()) {
             Ok(s) => s,
             Err(c) => {
                 for k in c.dimensions {

@@ -12,7 +12,7 @@ use crate::kind::limits::Limits;
 use crate::kind::notes::Notes;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::quantity::Errors;
-use crate::kind::{JobResult, Kind, validated};
+use crate::kind::{JobResult, Kind, engine_failure, validated};
 use crate::kinds::mechanism::MechanismDto;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
@@ -132,12 +132,14 @@ impl Kind for Mobility {
 
 /// The mobility of a drawn mechanism.
 fn drawn(dto: &MechanismDto, unknown: Vec<FieldError>, limits: &Limits) -> Result<MobilityResult, ApiError> {
+    let deadline = limits.deadline();
     let mut e = Errors::new(limits);
     let converted = dto.assembled(&mut e, "/mechanism").and_then(|(dto, _)| dto.convert(&mut e, "/mechanism"));
     let converted = validated(unknown, converted.filter(|_| e.list.is_empty()).ok_or(e.list))?;
     let m = &converted.mechanism;
     let q = m.reference_q();
     let found = mobility(m, &q);
+    let candidates = candidate_inputs(m, &q, found.dof, &deadline).map_err(|e| engine_failure(e, "/mechanism"))?;
     let name = |k: &usize| m.joints[*k].name.clone();
     let dof = found.dof as i64;
     let g = found.grubler;
@@ -156,7 +158,7 @@ fn drawn(dto: &MechanismDto, unknown: Vec<FieldError>, limits: &Limits) -> Resul
         },
         redundant_constraints: Some(found.redundant_constraints as i64),
         locked: dof == 0,
-        candidate_inputs: candidate_inputs(m, &q, found.dof).iter().map(name).collect(),
+        candidate_inputs: candidates.iter().map(name).collect(),
         indeterminate_joints: found.indeterminate_joints.iter().map(name).collect(),
         notes,
     })

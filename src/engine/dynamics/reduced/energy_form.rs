@@ -34,7 +34,8 @@ pub(super) fn event_times(p: &ReducedProblem, events: &[Event], reversal: f64) -
         .iter()
         .enumerate()
         .map(|(k, e)| {
-            going = going && k < MAX_EVENTS && e.t < reversal && (e.angle - at) * d >= 0.0;
+            // Past the budget the events go untimed (the solution is then refused as late).
+            going = going && k < MAX_EVENTS && e.t < reversal && (e.angle - at) * d >= 0.0 && !p.deadline.expired();
             if !going {
                 return None;
             }
@@ -56,7 +57,10 @@ fn inertia(p: &ReducedProblem, phi: f64) -> f64 {
 
 /// ∫ₐᵇ dφ/|ω| with the kinetic energy `energy` at a.
 fn segment(p: &ReducedProblem, a: f64, b: f64, energy: f64, from_rest: bool) -> Option<f64> {
-    let speed = |phi: f64| (2.0 * (energy + p.work(a, phi)) / inertia(p, phi)).sqrt();
+    // NaN past the budget: the quadrature stops at once.
+    let speed = |phi: f64| {
+        if p.deadline.expired() { f64::NAN } else { (2.0 * (energy + p.work(a, phi)) / inertia(p, phi)).sqrt() }
+    };
     let tol = |scale: f64| (1e-13 * scale, 1e-12);
     let r = if from_rest {
         let d = (b - a).signum();

@@ -132,6 +132,11 @@ impl Stepper for Radau5 {
             let outcome = match outcome {
                 Newton::Failed if !self.jac_current => {
                     self.jacobian(f);
+                    // A Jacobian not finite at an accepted state stays so at any step size
+                    // (f answers NaN past a job's budget): no factorisation can help.
+                    if !self.jac.iter().all(|v| v.is_finite()) {
+                        return Err(OdeError::NotFinite { t: self.t });
+                    }
                     self.lu = None;
                     continue;
                 }
@@ -142,7 +147,7 @@ impl Stepper for Radau5 {
                 Newton::Converged { z, iterations, rate } => (z, iterations, rate),
                 failed => {
                     not_finite = if matches!(failed, Newton::NotFinite) { not_finite + 1 } else { 0 };
-                    if not_finite >= NOT_FINITE {
+                    if not_finite >= NOT_FINITE || (not_finite > 0 && !self.finite_here(f)) {
                         return Err(OdeError::NotFinite { t: self.t });
                     }
                     self.reject(0.5);
@@ -188,6 +193,15 @@ impl Stepper for Radau5 {
 }
 
 impl Radau5 {
+    /// Whether f is finite at the accepted state: where it is not (past a
+    /// job's budget f answers NaN), no smaller step can help.
+    fn finite_here(&mut self, f: &mut impl Rhs) -> bool {
+        let mut here = vec![0.0; self.y.len()];
+        f(self.t, &self.y, &mut here);
+        self.evaluations += 1;
+        here.iter().all(|v| v.is_finite())
+    }
+
     /// 1 % of the state's scale over f's (as the explicit stepper starts).
     fn first_step(&self) -> f64 {
         let sc = |i: usize| self.atol[i] + self.rtol * self.y[i].abs();
