@@ -24,10 +24,11 @@ FROM gcr.io/distroless/cc-debian12:nonroot
 COPY --from=builder /src/target/release/mechdyn /app/mechdyn
 COPY --from=builder --chown=65532:65532 /data /data
 ENV MECHDYN_ADDR=0.0.0.0:8080 \
+    MECHDYN_OPERATOR_ADDR=0.0.0.0:9464 \
     DATABASE_URL=sqlite:///data/mechdyn.db \
     RUST_LOG=info
 USER 65532:65532
-EXPOSE 8080
+EXPOSE 8080 9464
 VOLUME ["/data"]
 HEALTHCHECK --interval=30s --timeout=3s --start-period=5s CMD ["/app/mechdyn", "healthcheck"]
 ENTRYPOINT ["/app/mechdyn"]

@@ -34,10 +34,16 @@ fn seconds() -> u64 {
     std::env::var("BALANCER_SECONDS").ok().and_then(|s| s.parse().ok()).unwrap_or(20)
 }
 
+/// A replica on `db` at its service's and operator's ports.
+fn replica(db: &str, (port, operator): (u16, u16)) -> Binary {
+    let operator = format!("127.0.0.1:{operator}");
+    spawn(db, port, &[ENV[0], ("MECHDYN_OPERATOR_ADDR", &operator)], None)
+}
+
 /// `n` replicas on `db` and the balancer in front of them.
-fn deployment(db: &str, n: usize) -> (Vec<u16>, Vec<Binary>, Balancer) {
-    let ports: Vec<u16> = (0..n).map(|_| free_port()).collect();
-    let replicas = ports.iter().map(|&p| spawn(db, p, &ENV, None)).collect();
+fn deployment(db: &str, n: usize) -> (Vec<(u16, u16)>, Vec<Binary>, Balancer) {
+    let ports: Vec<(u16, u16)> = (0..n).map(|_| (free_port(), free_port())).collect();
+    let replicas = ports.iter().map(|&p| replica(db, p)).collect();
     let lb = Balancer::start(&ports);
     (ports, replicas, lb)
 }
@@ -106,7 +112,7 @@ fn faults(server: &PgServer, db: &str) -> String {
         let out = lb.wait_until(|up| up == 2, "the killed replica taken out");
         std::thread::sleep(Duration::from_secs(2));
         let restarted = Instant::now();
-        replicas.insert(1, spawn(db, ports[1], &ENV, None));
+        replicas.insert(1, replica(db, ports[1]));
         let started = restarted.elapsed();
         lb.wait_until(|up| up == 3, "the restarted replica back");
         (out, started, restarted.elapsed())

@@ -30,8 +30,8 @@ struct Seen {
     statuses: BTreeMap<u16, usize>,
     /// Answers that never came (the client's 10 s timeout, a reset).
     lost: Vec<String>,
-    /// 503s without a problem document saying why.
-    bare_503: Vec<String>,
+    /// The balancer's or a replica's errors without a problem document saying why.
+    bare: Vec<String>,
     jobs: Vec<(String, String)>,
 }
 
@@ -55,8 +55,8 @@ fn clients(port: u16, stop: &Arc<AtomicBool>, seen: &Arc<Mutex<Seen>>) -> Vec<st
                         }
                         Ok((status, text)) => {
                             let said = serde_json::from_str::<serde_json::Value>(&text).ok();
-                            if status == 503 && !said.is_some_and(|p| p["detail"].is_string()) {
-                                seen.bare_503.push(text);
+                            if status >= 500 && !said.is_some_and(|p| p["detail"].is_string()) {
+                                seen.bare.push(format!("{status} {text}"));
                             }
                             *seen.statuses.entry(status).or_default() += 1;
                             drop(seen);
@@ -80,9 +80,13 @@ fn three_replicas_behind_haproxy_ride_out_a_kill_and_a_database_outage() {
     }
     let Some(server) = PgServer::start(test) else { return };
     let db = tokio::runtime::Builder::new_current_thread().enable_all().build().unwrap().block_on(server.database());
-    let env = [("RUST_LOG", "warn"), ("MECHDYN_DATABASE_WAIT_SECONDS", "30")];
-    let ports = [free_port(), free_port(), free_port()];
-    let mut replicas: Vec<Child> = ports.iter().map(|&p| start_logged(&db, p, &env, None)).collect();
+    let ports = [(free_port(), free_port()), (free_port(), free_port()), (free_port(), free_port())];
+    let start = |(port, operator): (u16, u16)| {
+        let operator = format!("127.0.0.1:{operator}");
+        let env = [("RUST_LOG", "warn"), ("MECHDYN_DATABASE_WAIT_SECONDS", "30"), ("MECHDYN_OPERATOR_ADDR", &operator)];
+        start_logged(&db, port, &env, None)
+    };
+    let mut replicas: Vec<Child> = ports.iter().map(|&p| start(p)).collect();
     let lb = Balancer::start(&ports);
     let (stop, seen) = (Arc::new(AtomicBool::new(false)), Arc::new(Mutex::new(Seen::default())));
     let load = clients(lb.port, &stop, &seen);
@@ -93,7 +97,7 @@ fn three_replicas_behind_haproxy_ride_out_a_kill_and_a_database_outage() {
     replicas[1].wait().unwrap();
     lb.wait_until(|up| up == 2, "the killed replica taken out");
     std::thread::sleep(Duration::from_secs(2));
-    replicas[1] = start_logged(&db, ports[1], &env, None);
+    replicas[1] = start(ports[1]);
     let back = lb.wait_until(|up| up == 3, "the restarted replica back");
     eprintln!("{test}: the restarted replica was back in the balancer after {back:.1?}");
 
@@ -113,7 +117,7 @@ fn three_replicas_behind_haproxy_ride_out_a_kill_and_a_database_outage() {
     let seen = Arc::try_unwrap(seen).ok().unwrap().into_inner().unwrap();
     eprintln!("{test}: answers by status {:?}", seen.statuses);
     assert!(seen.lost.is_empty(), "answers that never came: {:?}", seen.lost);
-    assert!(seen.bare_503.is_empty(), "503s without their reason: {:?}", seen.bare_503);
+    assert!(seen.bare.is_empty(), "errors without their reason: {:?}", seen.bare);
     assert!(seen.statuses.get(&503).is_some_and(|n| *n > 0), "the outage was answered 503: {:?}", seen.statuses);
     let unexpected: Vec<&u16> = seen.statuses.keys().filter(|s| ![201, 502, 503].contains(*s)).collect();
     assert!(unexpected.is_empty(), "{:?}", seen.statuses);
@@ -129,16 +133,51 @@ fn three_replicas_behind_haproxy_ride_out_a_kill_and_a_database_outage() {
     }
 }
 
-/// HAProxy sends its error file as it is: the no-replica answer's
-/// Content-Length must be its body's, or a client reads a cut document (or,
-/// without one, a body ended only by the connection's close, which wrk and
-/// keep-alive clients count as a read error).
+/// HAProxy sends its error files as they are: each answer's Content-Length
+/// must be its body's, or a client reads a cut document (or, without one, a
+/// body ended only by the connection's close, which wrk and keep-alive
+/// clients count as a read error); each is a problem document of its status.
 #[test]
-fn the_no_replica_answer_says_its_own_length() {
-    let file = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/deploy/errors/503.http")).unwrap();
-    let (head, body) = file.split_once("\r\n\r\n").unwrap();
-    let length = head.lines().find_map(|l| l.strip_prefix("Content-Length: ")).expect("a Content-Length");
-    assert_eq!(length.parse::<usize>().unwrap(), body.len(), "{body}");
-    let problem: serde_json::Value = serde_json::from_str(body).unwrap();
-    assert_eq!(problem["status"], 503);
+fn the_balancer_s_own_answers_say_their_length_and_are_problem_documents() {
+    for status in [502, 503, 504] {
+        let path = format!("{}/deploy/errors/{status}.http", env!("CARGO_MANIFEST_DIR"));
+        let file = std::fs::read_to_string(path).unwrap();
+        let (head, body) = file.split_once("\r\n\r\n").unwrap();
+        assert!(head.starts_with(&format!("HTTP/1.1 {status} ")), "{head}");
+        assert!(head.contains("Content-Type: application/problem+json"), "{head}");
+        let length = head.lines().find_map(|l| l.strip_prefix("Content-Length: ")).expect("a Content-Length");
+        assert_eq!(length.parse::<usize>().unwrap(), body.len(), "{body}");
+        let problem: serde_json::Value = serde_json::from_str(body).unwrap();
+        assert_eq!(problem["status"], status);
+        assert!(problem["detail"].is_string());
+    }
+}
+
+/// A replica killed while it computes a request's job: HAProxy answers the
+/// client its 502 as a problem document (it sent its HTML page before).
+/// One replica on SQLite behind the deployment's configuration.
+#[test]
+fn a_replica_killed_mid_request_is_answered_502_as_a_problem_document() {
+    if Command::new("haproxy").arg("-v").output().is_err() {
+        assert!(std::env::var_os("MECHDYN_REQUIRE_HAPROXY").is_none(), "haproxy is required");
+        eprintln!("skipped: haproxy (Debian's package) is not installed");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let db = format!("sqlite://{}", dir.path().join("jobs.db").display());
+    let (port, operator) = (free_port(), free_port());
+    let operator_addr = format!("127.0.0.1:{operator}");
+    let env = [("MECHDYN_JOB_SECONDS", "30"), ("MECHDYN_OPERATOR_ADDR", operator_addr.as_str())];
+    let mut replica = start_logged(&db, port, &env, None);
+    let lb = Balancer::start(&[(port, operator)]);
+    let (_, _, long) =
+        crate::hostile::requests().into_iter().find(|(n, ..)| n.starts_with("the yoke for 1e5 s")).unwrap();
+    let client = std::thread::spawn(move || http(lb.port, "POST", "/v1/dynamics", &long.to_string()));
+    std::thread::sleep(Duration::from_secs(2));
+    replica.kill().unwrap();
+    replica.wait().unwrap();
+    let (status, text) = client.join().unwrap().unwrap();
+    assert_eq!(status, 502, "{text}");
+    let problem: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}: {text}"));
+    assert_eq!(problem["type"], "/problems/replica-failed");
 }

@@ -30,7 +30,7 @@ fn solve_reports_invalid_requests_as_problems() {
 #[test]
 fn healthcheck_fails_when_nothing_listens() {
     let port = std::net::TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port();
-    let out = mechdyn(&["healthcheck", "--addr", &format!("127.0.0.1:{port}")]);
+    let out = mechdyn(&["healthcheck", "--addr", &format!("127.0.0.1:{port}"), "--operator-addr", "off"]);
     assert!(!out.status.success());
 }
 

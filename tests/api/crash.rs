@@ -30,7 +30,10 @@ pub fn start_logged(db: &str, port: u16, env: &[(&str, &str)], log: Option<std::
         Some(file) => (Stdio::from(file.try_clone().unwrap()), Stdio::from(file)),
         None => (Stdio::null(), Stdio::null()),
     };
+    // No operator's listener unless asked for: the tests' services would
+    // contend for its default port (and a probe of it find another's).
     let child = Command::new(env!("CARGO_BIN_EXE_mechdyn"))
+        .env("MECHDYN_OPERATOR_ADDR", "off")
         .envs(env.iter().copied())
         .env("DATABASE_URL", db)
         .env("MECHDYN_ADDR", format!("127.0.0.1:{port}"))

@@ -16,8 +16,10 @@ pub struct Balancer {
 }
 
 impl Balancer {
-    /// HAProxy with the deployment's configuration in front of `replicas` (one to three ports).
-    pub fn start(replicas: &[u16]) -> Self {
+    /// HAProxy with the deployment's configuration in front of `replicas`
+    /// (one to three: each its service's port and its operator's, where
+    /// the balancer checks /readyz).
+    pub fn start(replicas: &[(u16, u16)]) -> Self {
         let root = env!("CARGO_MANIFEST_DIR");
         let cfg = std::fs::read_to_string(format!("{root}/deploy/haproxy.cfg")).unwrap();
         let (port, stats, dir) = (free_port(), free_port(), tempfile::tempdir().unwrap());
@@ -25,8 +27,11 @@ impl Balancer {
             .replace("bind :8080", &format!("bind 127.0.0.1:{port}"))
             .replace("/usr/local/etc/haproxy/errors", &format!("{root}/deploy/errors"))
             .replace("log stdout format raw local0 info", "");
-        for (k, p) in replicas.iter().enumerate() {
-            text = text.replace(&format!("mechdyn-{}:8080", k + 1), &format!("127.0.0.1:{p}"));
+        for (k, (p, operator)) in replicas.iter().enumerate() {
+            let (example, ours) =
+                (format!("mechdyn-{}:8080 port 9464", k + 1), format!("127.0.0.1:{p} port {operator}"));
+            assert!(text.contains(&example), "the example's server line: {example}");
+            text = text.replace(&example, &ours);
         }
         // Fewer replicas than the example's three: the others' lines go.
         let unused = |l: &&str| l.split_whitespace().nth(2).is_some_and(|a| a.starts_with("mechdyn-"));
