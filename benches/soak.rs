@@ -27,6 +27,17 @@ mod faults;
 #[path = "soak/balancer.rs"]
 mod balancer;
 
+#[path = "soak/attacks.rs"]
+mod attacks;
+
+#[path = "soak/million.rs"]
+mod million;
+
+// The tests' attacker on connections, shared as a file.
+#[allow(dead_code)]
+#[path = "../tests/api/attack.rs"]
+mod attack;
+
 // The tests' own PostgreSQL server, HAProxy and HTTP helpers, shared as files.
 #[allow(dead_code)]
 #[path = "../tests/api/wire.rs"]
@@ -51,6 +62,15 @@ pub fn fixture(path: &str) -> Value {
     let folder = if path.starts_with("requests/") { "library" } else { "tests/fixtures" };
     let full = format!("{}/{folder}/{path}", env!("CARGO_MANIFEST_DIR"));
     serde_json::from_str(&std::fs::read_to_string(full).expect("fixture")).expect("fixture JSON")
+}
+
+/// P.103's flywheel, exact inertia only: a light job, so that the service
+/// around it shows (the balancer, the database, the connections).
+pub fn light() -> Value {
+    let mut body = fixture("requests/p103_slider.json");
+    body["check"] = false.into();
+    body["samples"] = 0.into();
+    body
 }
 
 /// The example of a schema in the committed OpenAPI document.
@@ -95,8 +115,11 @@ fn main() {
         println!("soak skipped: `wrk` is not installed (`apt-get install wrk`)");
         return;
     }
-    if std::env::var("SOAK_ONLY").as_deref() == Ok("balancer") {
-        return balancer_only();
+    match std::env::var("SOAK_ONLY").as_deref() {
+        Ok("balancer") => return only(balancer::HEADING, balancer::report),
+        Ok("attacks") => return only(attacks::HEADING, attacks::report),
+        Ok("million") => return only(million::HEADING, million::report),
+        _ => {}
     }
     let service = http::start().expect("the service starts");
     let script = tempfile::NamedTempFile::new().expect("temp file");
@@ -121,7 +144,7 @@ fn main() {
     let log = service.log();
     drop(service);
     let faults = faults::sigkill() + &faults::slow_clients() + &faults::full_disk() + &faults::durability();
-    let faults = faults + &balancer::report();
+    let faults = faults + &balancer::report() + &attacks::report() + &million::report();
     let report = report(seconds, &text, idle, &samples, end, peak, &log) + &flood_report() + &faults;
     println!("{report}");
     let path = format!("{}/docs/SOAK.md", env!("CARGO_MANIFEST_DIR"));
@@ -129,14 +152,22 @@ fn main() {
     println!("wrote {path}");
 }
 
-/// `SOAK_ONLY=balancer`: the last section of docs/SOAK.md measured again, the rest kept.
-fn balancer_only() {
+/// `SOAK_ONLY=balancer|attacks|million`: that section of docs/SOAK.md
+/// measured again (added at the end if it is not there), the rest kept.
+fn only(heading: &str, report: fn() -> String) {
     let path = format!("{}/docs/SOAK.md", env!("CARGO_MANIFEST_DIR"));
     let before = std::fs::read_to_string(&path).unwrap_or_default();
-    let kept = before.split(balancer::HEADING).next().unwrap_or_default().trim_end();
-    let report = balancer::report();
+    let report = report();
     println!("{report}");
-    std::fs::write(&path, format!("{kept}\n{report}")).expect("write docs/SOAK.md");
+    let text = match before.find(heading) {
+        Some(start) => {
+            let rest = &before[start + heading.len()..];
+            let end = rest.find("\n## ").map_or(before.len(), |e| start + heading.len() + e);
+            format!("{}\n{}\n{}", before[..start].trim_end(), report.trim(), &before[end..])
+        }
+        None => format!("{}\n{report}", before.trim_end()),
+    };
+    std::fs::write(&path, text).expect("write docs/SOAK.md");
     println!("wrote {path}");
 }
 

@@ -21,8 +21,8 @@ pub const DEFAULT_OPERATOR_ADDR: &str = "127.0.0.1:9464";
 pub const RESERVED_FILES: u64 = 256;
 /// Connections of the operator's listener.
 pub const OPERATOR_CONNECTIONS: usize = 64;
-/// The most connections held by default, however many descriptors: an idle
-/// connection holds some 20 KiB (docs/SOAK.md).
+/// The most connections held by default, however many descriptors: a held
+/// connection costs 10 to 19 KiB of memory (docs/SOAK.md), some 300 MiB at this cap.
 pub const MAX_DEFAULT_CONNECTIONS: usize = 16_384;
 
 #[derive(Parser, Debug)]

@@ -12,7 +12,6 @@ use crate::haproxy::Balancer;
 use crate::http::{Load, wrk_for};
 use crate::pg_server::PgServer;
 use crate::wire::free_port;
-use serde_json::Value;
 use std::fmt::Write as _;
 use std::process::Command;
 use std::time::{Duration, Instant};
@@ -21,14 +20,6 @@ const CONNECTIONS: u32 = 64;
 /// This part's heading in docs/SOAK.md (it is the last part).
 pub const HEADING: &str = "\n## Through the load balancer\n";
 const ENV: [(&str, &str); 1] = [("MECHDYN_DATABASE_WAIT_SECONDS", "30")];
-
-/// P.103's flywheel, exact inertia only: a light job, so that the balancer and the database show.
-fn light() -> Value {
-    let mut body = crate::fixture("requests/p103_slider.json");
-    body["check"] = false.into();
-    body["samples"] = 0.into();
-    body
-}
 
 fn seconds() -> u64 {
     std::env::var("BALANCER_SECONDS").ok().and_then(|s| s.parse().ok()).unwrap_or(20)
@@ -84,7 +75,7 @@ pub fn report() -> String {
     for n in [1, 3] {
         let db = runtime.block_on(server.database());
         let (_ports, _replicas, lb) = deployment(&db, n);
-        let load = wrk_for(&format!("127.0.0.1:{}", lb.port), "/v1/flywheel", &light(), CONNECTIONS, seconds);
+        let load = wrk_for(&format!("127.0.0.1:{}", lb.port), "/v1/flywheel", &crate::light(), CONNECTIONS, seconds);
         row(&mut s, &n.to_string(), &load);
     }
     s += "\nThe replicas share this machine's two cores with HAProxy, PostgreSQL and wrk, so three give no more \
@@ -96,7 +87,7 @@ pub fn report() -> String {
 /// `fault` run while `wrk` loads the balancer for `seconds`, starting 3 s in.
 fn under_load<T>(lb: &Balancer, seconds: u64, fault: impl FnOnce() -> T) -> (T, Result<Load, String>) {
     let addr = format!("127.0.0.1:{}", lb.port);
-    let load = std::thread::spawn(move || wrk_for(&addr, "/v1/flywheel", &light(), CONNECTIONS, seconds));
+    let load = std::thread::spawn(move || wrk_for(&addr, "/v1/flywheel", &crate::light(), CONNECTIONS, seconds));
     std::thread::sleep(Duration::from_secs(3));
     let seen = fault();
     (seen, load.join().expect("wrk"))

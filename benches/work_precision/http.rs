@@ -51,13 +51,21 @@ pub fn start() -> Result<Service, String> {
 
 /// [`start`] with more environment variables.
 pub fn start_with(env: &[(&str, &str)]) -> Result<Service, String> {
+    start_on(None, env)
+}
+
+/// [`start_with`] on the database `database` (None: a fresh SQLite file of its own).
+pub fn start_on(database: Option<&str>, env: &[(&str, &str)]) -> Result<Service, String> {
     let port = TcpListener::bind("127.0.0.1:0").and_then(|l| l.local_addr()).map_err(|e| e.to_string())?.port();
     let addr = format!("127.0.0.1:{port}");
     let dir = tempfile::tempdir().map_err(|e| e.to_string())?;
     let log = std::fs::File::create(dir.path().join("service.log")).map_err(|e| e.to_string())?;
     let child = Command::new(env!("CARGO_BIN_EXE_mechdyn"))
         .env("MECHDYN_ADDR", &addr)
-        .env("DATABASE_URL", format!("sqlite://{}/jobs.db", dir.path().display()))
+        .env(
+            "DATABASE_URL",
+            database.map_or_else(|| format!("sqlite://{}/jobs.db", dir.path().display()), String::from),
+        )
         .env("RUST_LOG", "warn")
         .envs(env.iter().copied())
         .stdout(log)
@@ -65,7 +73,7 @@ pub fn start_with(env: &[(&str, &str)]) -> Result<Service, String> {
         .spawn()
         .map_err(|e| format!("mechdyn: {e}"))?;
     let service = Service { child, addr, dir };
-    let deadline = Instant::now() + Duration::from_secs(20);
+    let deadline = Instant::now() + Duration::from_secs(120);
     while TcpStream::connect(&service.addr).is_err() {
         if Instant::now() > deadline {
             return Err("the service did not start listening".into());
@@ -88,6 +96,9 @@ pub struct Load {
     pub rate: f64,
     pub p50: f64,
     pub p99: f64,
+    /// The slowest answer (ms).
+    #[allow(dead_code)] // read by the soak bench, which shares this file
+    pub max: f64,
     pub non_2xx: u64,
     #[allow(dead_code)] // read by the soak bench, which shares this file
     pub socket_errors: String,
@@ -120,6 +131,11 @@ pub fn wrk_for(addr: &str, path: &str, body: &Value, connections: u32, seconds: 
         rate: field("Requests/sec:").parse::<f64>().map_err(|_| format!("wrk printed no rate:\n{text}"))?,
         p50: millis(&field("50%")),
         p99: millis(&field("99%")),
+        max: text
+            .lines()
+            .find(|l| l.trim().starts_with("Latency") && !l.contains("Distribution"))
+            .and_then(|l| l.split_whitespace().nth(3))
+            .map_or(f64::NAN, millis),
         non_2xx: field("Non-2xx or 3xx responses:").parse::<u64>().unwrap_or(0),
         socket_errors: field("Socket errors:"),
     })

@@ -10,7 +10,7 @@ use super::read::{self, READ_MEMORY_FACTOR, load};
 use super::tables::{self, AngleUnit, Angles, Decimal, DecimalMark};
 use crate::i18n::Msg;
 use crate::kind::problem::{ApiError, FieldError, Problem, ReadErrors};
-use crate::store::{Filter, Page};
+use crate::store::Filter;
 use axum::body::Body;
 use axum::extract::rejection::QueryRejection;
 use axum::extract::{Path, Query, State};
@@ -133,19 +133,12 @@ pub async fn list(
     let Query(q) = query.map_err(|e| ApiError::BadQuery(vec![FieldError::parameter("", e.body_text())]))?;
     let (kind, limit, before) = list_params(&state.kinds, &q)?;
     let label = q.get("label").cloned().map(super::label::checked).transpose()?;
-    let page_bytes = state.limits.result_bytes;
-    let mut reserved = state.admission.memory(READ_MEMORY_FACTOR * page_bytes).await?;
-    let Page { rows, bytes, cut } = {
-        let filter = Filter { kind: kind.as_deref(), label: label.as_deref() };
-        state.store.list(&filter, before, limit, page_bytes).await?
-    };
-    // A single job may exceed the page's share; reserve the rest of it too.
-    let (held, needed) = (READ_MEMORY_FACTOR * page_bytes, READ_MEMORY_FACTOR * bytes.max(1));
-    if needed > held {
-        reserved.merge(state.admission.memory(needed - held).await?);
-    } else if let Some(spare) = reserved.split(held - needed) {
-        drop(spare);
-    }
+    let filter = Filter { kind: kind.as_deref(), label: label.as_deref() };
+    // The page's sizes first: its memory is what it holds, reserved before
+    // its jobs are loaded (a list reserved 48 MiB for its whole run).
+    let plan = state.store.list_plan(&filter, before, limit, state.limits.result_bytes).await?;
+    let reserved = state.admission.memory(READ_MEMORY_FACTOR * plan.bytes.max(1)).await?;
+    let (rows, cut) = (state.store.list_rows(&filter, &plan).await?, plan.cut);
     let next = (rows.len() as i64 == limit || cut).then(|| {
         let last = rows.last().map_or(0, |r| r.seq);
         let (limit, last) = (limit.to_string(), last.to_string());

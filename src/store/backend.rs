@@ -29,6 +29,8 @@ pub static POSTGRES: Migrator = sqlx::migrate!("./migrations/postgres");
 
 /// Connections a store keeps open.
 const CONNECTIONS: u32 = 8;
+/// How long a SQLite statement waits for the database's lock (store/wal.rs says it again in SQL).
+pub const BUSY: Duration = Duration::from_secs(10);
 /// Longest wait for a connection of the pool: a query while the database
 /// is away fails after it (a readiness probe's answer comes within it).
 const ACQUIRE: Duration = Duration::from_secs(5);
@@ -80,7 +82,7 @@ async fn sqlite(url: &str, options: &Options) -> Result<SqlitePool, sqlx::Error>
         .create_if_missing(true)
         .journal_mode(SqliteJournalMode::Wal)
         .synchronous(if options.power_safe { SqliteSynchronous::Full } else { SqliteSynchronous::Normal })
-        .busy_timeout(Duration::from_secs(10))
+        .busy_timeout(BUSY)
         .foreign_keys(true)
         // A checkpoint runs inside the commit that crosses the mark and holds up
         // the jobs waiting behind it: every 100 pages (not SQLite's 1000) those
@@ -88,7 +90,8 @@ async fn sqlite(url: &str, options: &Options) -> Result<SqlitePool, sqlx::Error>
         // 20.3–22.9 ms at 1000 pages, 16.3–16.7 ms at 100; a checkpoint beside the
         // writer instead (PASSIVE) never resets a log that is always being
         // written, and it grew by 100 MB/s.
-        .pragma("wal_autocheckpoint", "100");
+        .pragma("wal_autocheckpoint", "100")
+        .pragma("journal_size_limit", super::wal::LIMIT.to_string());
     if let Some(max) = options.max_bytes {
         // SQLite's default page size, 4096 bytes (set before the first table).
         connect = connect.page_size(4096).pragma("max_page_count", (max / 4096).max(1).to_string());
@@ -99,6 +102,7 @@ async fn sqlite(url: &str, options: &Options) -> Result<SqlitePool, sqlx::Error>
     }
     let pool = SqlitePoolOptions::new().max_connections(CONNECTIONS).connect_with(connect).await?;
     SQLITE.run(&pool).await?;
+    super::wal::at_open(&pool).await?;
     Ok(pool)
 }
 

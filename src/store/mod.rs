@@ -28,14 +28,17 @@ pub mod backup;
 mod health;
 mod held;
 mod idempotency;
+mod list;
 mod queue;
 mod retention;
 mod url;
+mod wal;
 mod writer;
 
 pub use idempotency::{Answer, KEEP};
+pub use list::{Filter, Plan, list_sql};
 pub use queue::{Claimed, Queued, Waiting};
-pub use retention::Retention;
+pub use retention::{BY_AGE, NTH_NEWEST, Retention};
 pub use url::{Backend, SchemeError, check_scheme, redact};
 
 use backend::{Db, on_pool};
@@ -196,23 +199,6 @@ impl NewJob {
     }
 }
 
-/// A page of the jobs list.
-#[derive(Debug)]
-pub struct Page {
-    pub rows: Vec<JobRow>,
-    /// Bytes of their requests and results together.
-    pub bytes: usize,
-    /// Whether the page stopped at its size in bytes (more jobs follow).
-    pub cut: bool,
-}
-
-/// Which jobs a list holds: of one kind, of one label (None: any).
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Filter<'a> {
-    pub kind: Option<&'a str>,
-    pub label: Option<&'a str>,
-}
-
 /// A job handed to the writer, with where to send its seq.
 type Pending = (NewJob, oneshot::Sender<Result<i64, StoreError>>);
 
@@ -261,7 +247,16 @@ impl Store {
         let db = Db::open(url, backend, options).await?;
         let (writer, queue) = mpsc::channel(writer::QUEUE);
         let (commits, writes) = (Arc::new(AtomicU64::new(0)), Arc::new(health::Writes::default()));
-        tokio::spawn(writer::write_batches(db.clone(), queue, commits.clone(), writes.clone()));
+        // The log's keeper lives as long as the writer, which ends with the last of the store's clones.
+        let (alive, ended) = oneshot::channel::<()>();
+        if let Db::Sqlite(pool) = &db {
+            wal::spawn(pool.clone(), ended);
+        }
+        let writing = writer::write_batches(db.clone(), queue, commits.clone(), writes.clone());
+        tokio::spawn(async move {
+            writing.await;
+            drop(alive);
+        });
         Ok(Self { db, writer, commits, writes })
     }
 
@@ -338,36 +333,6 @@ impl Store {
         Ok(bytes.map(|b| usize::try_from(b).unwrap_or(0)))
     }
 
-    /// Up to `limit` jobs, newest first, of one kind or all (and of one
-    /// label or any), older than `before` (a seq), stopping before their
-    /// requests and results together exceed `max_bytes` (one job at least).
-    pub async fn list(
-        &self,
-        filter: &Filter<'_>,
-        before: Option<i64>,
-        limit: i64,
-        max_bytes: usize,
-    ) -> Result<Page, StoreError> {
-        let (kind, label, before) = (filter.kind, filter.label, before.unwrap_or(i64::MAX));
-        let sizes: Vec<(i64, i64)> = on_pool!(&self.db, pool => {
-            sqlx::query_as(LIST_SIZES).bind(kind).bind(before).bind(limit).bind(label).fetch_all(pool).await?
-        });
-        let (mut total, mut last, mut cut) = (0usize, None, false);
-        for (i, &(seq, bytes)) in sizes.iter().enumerate() {
-            let bytes = usize::try_from(bytes).unwrap_or(0);
-            if i > 0 && total + bytes > max_bytes {
-                cut = true;
-                break;
-            }
-            (total, last) = (total + bytes, Some(seq));
-        }
-        let Some(last) = last else { return Ok(Page { rows: Vec::new(), bytes: 0, cut }) };
-        let rows: Vec<Row> = on_pool!(&self.db, pool => {
-            sqlx::query_as(LIST_ROWS).bind(kind).bind(before).bind(last).bind(label).fetch_all(pool).await?
-        });
-        Ok(Page { rows: rows.into_iter().map(JobRow::from).collect(), bytes: total, cut })
-    }
-
     /// The database's kind.
     pub fn backend(&self) -> Backend {
         self.db.backend()
@@ -427,13 +392,3 @@ pub(crate) use row_columns;
 const SELECT_ROW: &str = concat!("SELECT ", row_columns!(), " FROM jobs WHERE id = $1");
 const SELECT_BY_KEY: &str =
     "SELECT id, request FROM jobs WHERE request_key = $1 AND status = 'done' ORDER BY seq DESC LIMIT 8";
-/// The sizes of a page's jobs: $1 kind, $2 before, $3 limit, $4 label.
-const LIST_SIZES: &str = "SELECT seq, bytes FROM jobs WHERE ($1 IS NULL OR kind = $1) AND ($4 IS NULL OR label = $4) \
-                          AND seq < $2 ORDER BY seq DESC LIMIT $3";
-/// A page's jobs: $1 kind, $2 before, $3 the last seq, $4 label.
-const LIST_ROWS: &str = concat!(
-    "SELECT ",
-    row_columns!(),
-    " FROM jobs WHERE ($1 IS NULL OR kind = $1) AND ($4 IS NULL OR label = $4) AND seq < $2 AND seq >= $3 \
-     ORDER BY seq DESC"
-);

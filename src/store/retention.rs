@@ -7,9 +7,15 @@
 use super::backend::on_pool;
 use super::held::Held;
 use super::{Store, StoreError};
+use std::time::{Duration, Instant};
 
-/// Rows deleted per statement of a sweep.
-const BATCH: i64 = 1000;
+/// Rows deleted per statement of a sweep: each statement holds SQLite's one
+/// writer while it runs (a few ms; docs/SOAK.md measures the stall).
+const BATCH: i64 = 100;
+/// The pause after each statement, at least as long as it took: the jobs
+/// being stored take the database meanwhile (a sweep deleting 10⁵ jobs in
+/// one go held every POST behind it for most of a second).
+const PAUSE: Duration = Duration::from_millis(20);
 
 /// Which stored jobs are kept; None keeps every one.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -44,16 +50,19 @@ impl Store {
     pub async fn expire(&self, r: &Retention<'_>) -> Result<(u64, u64), StoreError> {
         let mut by_age = 0;
         if let Some(before) = r.created_before {
-            by_age = self.delete_batches(BY_AGE, Bound::Text(before)).await?;
+            by_age = self.delete_batches(BY_AGE, before).await?;
         }
         let mut by_count = 0;
         if let Some(newest) = r.newest {
-            let sql = "SELECT seq FROM jobs ORDER BY seq DESC LIMIT 1 OFFSET $1";
+            // The creation time of the newest N-th job, read off the index (the
+            // table's order read every row's page: 0.5 s of CPU a sweep at 10^6).
             let offset = newest.max(1) - 1;
-            let last_kept: Option<i64> =
-                on_pool!(&self.db, pool => sqlx::query_scalar(sql).bind(offset).fetch_optional(pool).await?);
-            if let Some(seq) = last_kept {
-                by_count = self.delete_batches(OLDER_THAN, Bound::Int(seq)).await?;
+            let started = Instant::now();
+            let last_kept: Option<String> =
+                on_pool!(&self.db, pool => sqlx::query_scalar(NTH_NEWEST).bind(offset).fetch_optional(pool).await?);
+            tracing::debug!(ms = started.elapsed().as_secs_f64() * 1e3, "retention: the newest N's cut found");
+            if let Some(at) = last_kept {
+                by_count = self.delete_batches(BY_AGE, &at).await?;
             }
         }
         if by_age + by_count > 0 {
@@ -65,33 +74,28 @@ impl Store {
         Ok((by_age, by_count))
     }
 
-    /// Runs the DELETE `sql` (its parameters `value` and the batch size)
+    /// Runs the DELETE `sql` (its parameters `before` and the batch size)
     /// until it deletes nothing: the rows deleted.
-    async fn delete_batches(&self, sql: &'static str, value: Bound<'_>) -> Result<u64, StoreError> {
+    async fn delete_batches(&self, sql: &'static str, before: &str) -> Result<u64, StoreError> {
         let mut total = 0;
         loop {
-            let done = on_pool!(&self.db, pool => match value {
-                Bound::Text(t) => sqlx::query(sql).bind(t).bind(BATCH).execute(pool).await?,
-                Bound::Int(i) => sqlx::query(sql).bind(i).bind(BATCH).execute(pool).await?,
-            }
-            .rows_affected());
+            let started = Instant::now();
+            let done = on_pool!(&self.db, pool => sqlx::query(sql).bind(before).bind(BATCH).execute(pool).await?.rows_affected());
             total += done;
+            tracing::debug!(done, ms = started.elapsed().as_secs_f64() * 1e3, "retention: a batch deleted");
             if done == 0 {
                 return Ok(total);
             }
+            tokio::time::sleep(PAUSE.max(started.elapsed())).await;
         }
     }
 }
 
-/// The first parameter of a sweep's DELETE.
-#[derive(Clone, Copy)]
-enum Bound<'a> {
-    Text(&'a str),
-    Int(i64),
-}
-
-/// Jobs waiting or computing are never swept: they are kept until they end.
-const BY_AGE: &str = "DELETE FROM jobs WHERE seq IN (SELECT seq FROM jobs WHERE created_at < $1 \
-                      AND status IN ('done', 'failed') ORDER BY seq LIMIT $2)";
-const OLDER_THAN: &str = "DELETE FROM jobs WHERE seq IN (SELECT seq FROM jobs WHERE seq < $1 \
-                          AND status IN ('done', 'failed') ORDER BY seq LIMIT $2)";
+/// A batch of the jobs created before $1, oldest first, on the index of the
+/// creation time (a sweep with nothing to delete reads nothing; without it,
+/// each sweep scanned the table inside its write). Jobs waiting or computing
+/// are never swept: they are kept until they end. The newest N are those
+/// created at or after the N-th newest's time (ties kept: never fewer).
+pub const BY_AGE: &str = "DELETE FROM jobs WHERE seq IN (SELECT seq FROM jobs WHERE created_at < $1 \
+                          AND status IN ('done', 'failed') ORDER BY created_at LIMIT $2)";
+pub const NTH_NEWEST: &str = "SELECT created_at FROM jobs ORDER BY created_at DESC LIMIT 1 OFFSET $1";

@@ -7,6 +7,7 @@
 //! Counts and bounds, measured by the clients: when each connection was
 //! closed, against the bound it had.
 
+use crate::attack::{closed, idle, more_files, slow_head, watch};
 use crate::crash::{flywheel_job, start_with};
 use crate::hostile::metric;
 use crate::wire::{free_port, http};
@@ -35,78 +36,6 @@ fn service(dir: &tempfile::TempDir, header: u32, idle: u32, max: Option<usize>) 
         env.push(("MECHDYN_MAX_CONNECTIONS", max.as_str()));
     }
     (start_with(&db, port, &env), port, operator)
-}
-
-/// The client's own descriptors raised to its hard limit (thousands of
-/// connections), as the service raises its own.
-fn more_files() {
-    mechdyn::api::serve::open_files();
-}
-
-/// A connection that has sent the start of a head and no end of it.
-fn slow_head(port: u16) -> TcpStream {
-    let mut s = TcpStream::connect(("127.0.0.1", port)).unwrap();
-    s.write_all(b"GET /healthz HTTP/1.1\r\nHost: x\r\nX-Slow: ").unwrap();
-    s.set_nonblocking(true).unwrap();
-    s
-}
-
-/// A kept-alive connection that has had its answer and says nothing more.
-fn idle(port: u16) -> TcpStream {
-    let mut s = TcpStream::connect(("127.0.0.1", port)).unwrap();
-    s.write_all(b"GET /healthz HTTP/1.1\r\nHost: x\r\n\r\n").unwrap();
-    s.set_read_timeout(Some(Duration::from_secs(10))).unwrap();
-    let mut got = Vec::new();
-    let mut buf = [0u8; 1024];
-    while !String::from_utf8_lossy(&got).contains("\"status\"") {
-        let n = s.read(&mut buf).unwrap();
-        assert!(n > 0, "answered: {}", String::from_utf8_lossy(&got));
-        got.extend_from_slice(&buf[..n]);
-    }
-    assert!(got.starts_with(b"HTTP/1.1 200"));
-    s.set_nonblocking(true).unwrap();
-    s
-}
-
-/// Whether the service has closed `s` (an end of stream or a reset; what it
-/// sent before is read and dropped).
-fn closed(s: &mut TcpStream) -> bool {
-    let mut buf = [0u8; 4096];
-    loop {
-        match s.read(&mut buf) {
-            Ok(0) => return true,
-            Ok(_) => continue,
-            Err(e) if e.kind() == ErrorKind::WouldBlock => return false,
-            Err(_) => return true,
-        }
-    }
-}
-
-/// Trickles a byte into each open slow head every `every`, and notes when
-/// each connection is seen closed, until all are or `limit` passes: the
-/// seconds after `since` at which each was closed (None: still open).
-fn watch(conns: &mut [TcpStream], since: Instant, every: Duration, limit: Duration) -> Vec<Option<f64>> {
-    let mut at = vec![None; conns.len()];
-    let mut last_trickle = Instant::now();
-    while at.iter().any(Option::is_none) && since.elapsed() < limit {
-        let trickle = last_trickle.elapsed() >= every;
-        for (k, s) in conns.iter_mut().enumerate() {
-            if at[k].is_some() {
-                continue;
-            }
-            if trickle {
-                let _ = s.write(b"a");
-            }
-            if closed(s) {
-                at[k] = Some(since.elapsed().as_secs_f64());
-            }
-        }
-        if trickle {
-            last_trickle = Instant::now();
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    at
 }
 
 /// Well-behaved clients at work meanwhile: `jobs` POSTs, each read back.

@@ -114,5 +114,6 @@ pub async fn stored_before_201(url: &str) {
         });
     }
     tasks.join_all().await;
-    assert_eq!(other.list(&Default::default(), None, 1000, usize::MAX).await.unwrap().rows.len(), 96);
+    let plan = other.list_plan(&Default::default(), None, 1000, usize::MAX).await.unwrap();
+    assert_eq!(other.list_rows(&Default::default(), &plan).await.unwrap().len(), 96);
 }

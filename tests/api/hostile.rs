@@ -228,6 +228,15 @@ fn examples(port: u16) -> Vec<(String, Value)> {
         .collect()
 }
 
+/// The binary on a fresh SQLite file with a budget of `seconds`: its folder, process and port.
+fn service(seconds: &str) -> (tempfile::TempDir, std::process::Child, u16) {
+    let dir = tempfile::tempdir().unwrap();
+    let db = format!("sqlite://{}", dir.path().join("jobs.db").display());
+    let port = free_port();
+    let child = start_with(&db, port, &[("MECHDYN_JOB_SECONDS", seconds)]);
+    (dir, child, port)
+}
+
 /// One POST timed: its status and body, and the seconds it took.
 fn timed(port: u16, path: &str, body: &str) -> (u16, String, f64) {
     let started = Instant::now();
@@ -259,10 +268,7 @@ pub fn metric(port: u16, name: &str) -> f64 {
 /// and the watchdog saw no job past its budget.
 #[test]
 fn every_hostile_request_and_every_example_answers_within_its_budget() {
-    let dir = tempfile::tempdir().unwrap();
-    let db = format!("sqlite://{}", dir.path().join("jobs.db").display());
-    let port = free_port();
-    let mut child = start_with(&db, port, &[("MECHDYN_JOB_SECONDS", "1")]);
+    let (_dir, mut child, port) = service("1");
     let hostile = requests().into_iter().map(|(name, path, body)| (name.to_string(), path.to_string(), body));
     let documented = examples(port).into_iter().map(|(path, body)| (format!("the example of {path}"), path, body));
     let all: Vec<_> = hostile.chain(documented).collect();
@@ -294,10 +300,7 @@ fn every_hostile_request_and_every_example_answers_within_its_budget() {
 /// the next ones computed.
 #[test]
 fn a_table_of_slow_rows_answers_within_its_budget_and_goes_on_when_asked_again() {
-    let dir = tempfile::tempdir().unwrap();
-    let db = format!("sqlite://{}", dir.path().join("jobs.db").display());
-    let port = free_port();
-    let mut child = start_with(&db, port, &[("MECHDYN_JOB_SECONDS", "1")]);
+    let (_dir, mut child, port) = service("1");
     let mut request = crate::helpers::example("DynamicsRequest");
     request.as_object_mut().unwrap().remove("until_angle");
     request["duration"] = json!(1);
@@ -337,10 +340,7 @@ fn a_table_of_slow_rows_answers_within_its_budget_and_goes_on_when_asked_again()
 /// budget — /metrics says 1 computing, then 0.
 #[test]
 fn a_job_whose_client_left_holds_its_slot_until_its_budget_stops_it() {
-    let dir = tempfile::tempdir().unwrap();
-    let db = format!("sqlite://{}", dir.path().join("jobs.db").display());
-    let port = free_port();
-    let mut child = start_with(&db, port, &[("MECHDYN_JOB_SECONDS", "4")]);
+    let (_dir, mut child, port) = service("4");
     let (_, _, body) = requests().into_iter().find(|(name, ..)| name.starts_with("the yoke for 1e5 s")).unwrap();
     {
         use std::io::Write;

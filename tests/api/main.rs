@@ -1,6 +1,7 @@
 //! Integration tests through the real router and a real SQLite file.
 
 mod andrews;
+mod attack;
 mod backup;
 mod balancer;
 mod browser;
@@ -37,6 +38,7 @@ mod jobs;
 mod kinetostatics;
 mod libreoffice;
 mod limits;
+mod million;
 mod mobility;
 mod offline;
 mod operations;

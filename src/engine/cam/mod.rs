@@ -9,6 +9,7 @@
 
 pub mod design;
 pub mod laws;
+pub mod sizing;
 
 pub use laws::Law;
 use std::f64::consts::TAU;

@@ -17,7 +17,8 @@ pub use request::{CamFollowerDto, CamFollowerMotion, CamFollowerType, CamProgram
 pub use result::CamResult;
 
 use crate::engine::Deadline;
-use crate::engine::cam::design::{Cam, CamError, Sample, lifts, smallest_base, turn};
+use crate::engine::cam::design::{Cam, CamError, Sample};
+use crate::engine::cam::sizing::{lifts, smallest_base, turn};
 use crate::i18n::Msg;
 use crate::kind::limits::Limits;
 use crate::kind::plots::Plots;
