@@ -119,10 +119,30 @@ pub struct Joint {
     /// The joint's point in the reference configuration.
     pub at: [f64; 2],
     pub friction: Option<Friction>,
-    /// A prismatic joint's guide length L, centred on `at`: its reaction is
-    /// then borne as two normal forces at the guide's ends, each with its
+    /// A prismatic joint's guide of length L, centred on `at`: its reaction
+    /// is then borne as two normal forces at the guide's ends, each with its
     /// own friction (None: one normal force).
-    pub length: Option<f64>,
+    pub length: Option<Guide>,
+}
+
+/// Where a prismatic joint's two bearing ends are, L apart and centred on
+/// the joint's point as drawn.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Guide {
+    /// On the first body, which carries the guide: the ends stay there
+    /// while the second body slides (a stem in two bushings).
+    Fixed(f64),
+    /// On the second body: a block of that length sliding in a long guide (a piston).
+    Block(f64),
+}
+
+impl Guide {
+    /// L (m).
+    pub fn length(self) -> f64 {
+        match self {
+            Self::Fixed(l) | Self::Block(l) => l,
+        }
+    }
 }
 
 /// Coulomb friction of a joint: a revolute joint resists with a couple

@@ -1,20 +1,31 @@
 //! A mechanism from its dimensions: rough points read off a figure (the
 //! sketch, x₀) and the statement's dimensions c(x) = 0 (distances, the
-//! direction of a line, a coordinate). The points found are the least
-//! change from the sketch that satisfies every dimension,
+//! direction of a line, a coordinate, a point at a fraction of a segment).
+//! The points found are the least change from the sketch that satisfies
+//! every dimension,
 //!
 //! ```text
 //! min ½ (x − x₀)ᵀ W (x − x₀)   subject to   c(x) = 0,
 //! ```
 //!
-//! W the points' weights (a point on the ground weighs 10⁶ times another,
-//! so a frame drawn to scale stays where it is drawn), so the sketch picks
-//! the branch (which side of a line the coupler's joint lies on). Solved by
-//! Gauss–Newton on the linearised constraint, each iterate the least
-//! W-change from x₀: x = x₀ − W⁻¹Jᵀ(JW⁻¹Jᵀ)⁺(c(xₖ) + J(x₀ − xₖ)), the
-//! pseudo-inverse (an SVD) taking repeated dimensions that agree. A
-//! dimension still unmet at the end cannot hold with the others: it is
-//! named, never met approximately in silence.
+//! W the points' weights (a point that cannot move weighs 10⁶ times
+//! another, so a frame drawn to scale stays where it is drawn), so the
+//! sketch picks the branch (which side of a line the coupler's joint lies
+//! on). Solved in three stages, each step the least W-change that meets
+//! the linearised dimensions (J the Jacobian of c, W⁻¹Jᵀ(JW⁻¹Jᵀ)⁺ its
+//! pseudo-inverse by an SVD, which takes repeated dimensions that agree):
+//! 1. onto the dimensions from the sketch: Newton steps
+//!    x ← x − W⁻¹Jᵀ(JW⁻¹Jᵀ)⁺c(x), halved while they do not reduce |c|
+//!    (a rough sketch is far from the figure: a full step may jump branch);
+//! 2. the least change: Gauss–Newton, each iterate the least W-change from
+//!    x₀ meeting the dimensions linearised at the last,
+//!    x = x₀ − W⁻¹Jᵀ(JW⁻¹Jᵀ)⁺(c(xₖ) + J(x₀ − xₖ)), while it moves;
+//! 3. Newton steps again until |c| stops falling (quadratically, to
+//!    rounding: the Gauss–Newton iterates converge only linearly).
+//!
+//! A misfit within [`ROUNDING`] of the figure's size is met; a dimension
+//! still unmet beyond it cannot hold with the others: it is named, never
+//! met approximately in silence.
 
 use super::Deadline;
 use super::numeric::svd::svd;
@@ -31,6 +42,8 @@ pub enum Dimension {
     X(usize, f64),
     /// y of P (m).
     Y(usize, f64),
+    /// M = A + r·(B − A): `on` M at the fraction `ratio` of A→B (two rows).
+    Between { on: usize, a: usize, b: usize, ratio: f64 },
 }
 
 /// The points found.
@@ -52,7 +65,10 @@ pub struct Contradiction {
     pub residual: f64,
 }
 
+/// Most iterations of each stage.
 const MAX_ITERATIONS: usize = 60;
+/// A misfit this fraction of the figure's size is rounding, not a contradiction.
+pub const ROUNDING: f64 = 1e-12;
 
 /// The least change from `sketch` (weights per point) meeting `dimensions`.
 /// Only the points the dimensions name move (the others stay as sketched,
@@ -94,6 +110,7 @@ fn named(d: &Dimension) -> Vec<usize> {
     match *d {
         Dimension::Distance([p, q], _) | Dimension::Angle([p, q], _) => vec![p, q],
         Dimension::X(p, _) | Dimension::Y(p, _) => vec![p],
+        Dimension::Between { on, a, b, .. } => vec![on, a, b],
     }
 }
 
@@ -104,6 +121,7 @@ fn renamed(d: &Dimension, local: &[usize]) -> Dimension {
         Dimension::Angle([p, q], v) => Dimension::Angle([local[p], local[q]], v),
         Dimension::X(p, v) => Dimension::X(local[p], v),
         Dimension::Y(p, v) => Dimension::Y(local[p], v),
+        Dimension::Between { on, a, b, ratio } => Dimension::Between { on: local[on], a: local[a], b: local[b], ratio },
     }
 }
 
@@ -116,32 +134,103 @@ fn solve_used(
     deadline: &Deadline,
 ) -> Result<Solved, Contradiction> {
     let x0 = DVector::from_iterator(2 * sketch.len(), sketch.iter().flatten().copied());
-    let tol = 1e-13 * size.max(1e-3);
     let inverse_w = DVector::from_iterator(x0.len(), weights.iter().flat_map(|w| [1.0 / w, 1.0 / w]));
-    let mut x = x0.clone();
-    for iteration in 0..MAX_ITERATIONS {
-        if deadline.expired() {
-            break;
-        }
-        let (c, j) = evaluate(&x, dimensions);
-        let residual = c.amax();
-        if residual <= tol {
-            let underdetermined = free(&j);
-            return Ok(Solved { points: points(&x), iterations: iteration, residual, underdetermined });
-        }
-        let jw = DMatrix::from_fn(j.nrows(), j.ncols(), |r, k| j[(r, k)] * inverse_w[k]);
-        let Some(s) = svd(&jw * j.transpose(), true, true) else { break };
-        let rhs = &c + &j * (&x0 - &x);
-        let Ok(mu) = s.solve(&rhs, 1e-12 * s.singular_values.max()) else { break };
-        x = &x0 - jw.transpose() * mu;
-    }
+    let system = System { dimensions, inverse_w: &inverse_w, deadline };
+    let mut iterations = 0;
+    let x = system.newton(x0.clone(), &mut iterations, true);
+    let x = system.least_change(&x0, x, 1e-9 * size.max(1e-300), &mut iterations);
+    let x = system.newton(x, &mut iterations, false);
     let (c, j) = evaluate(&x, dimensions);
     let residual = c.amax();
-    if residual <= tol {
-        return Ok(Solved { points: points(&x), iterations: MAX_ITERATIONS, residual, underdetermined: free(&j) });
+    let tolerance = ROUNDING * size.max(1e-300);
+    if residual <= tolerance {
+        return Ok(Solved { points: points(&x), iterations, residual, underdetermined: free(&j) });
     }
-    let worst: Vec<usize> = (0..c.len()).filter(|&k| c[k].abs() > 1e-6 * residual.max(tol)).collect();
+    let rows = rows_of(dimensions);
+    let mut worst: Vec<usize> =
+        (0..c.len()).filter(|&k| c[k].abs() > 1e-6 * residual.max(tolerance)).map(|k| rows[k]).collect();
+    worst.dedup();
     Err(Contradiction { dimensions: worst, residual })
+}
+
+/// The dimensions, their weights and the deadline: the stages of [`solve_used`].
+struct System<'a> {
+    dimensions: &'a [Dimension],
+    inverse_w: &'a DVector<f64>,
+    deadline: &'a Deadline,
+}
+
+impl System<'_> {
+    /// The least W-change δ with J δ = −r (None where the SVD fails).
+    fn step(&self, j: &DMatrix<f64>, r: &DVector<f64>) -> Option<DVector<f64>> {
+        let jw = DMatrix::from_fn(j.nrows(), j.ncols(), |row, k| j[(row, k)] * self.inverse_w[k]);
+        let s = svd(&jw * j.transpose(), true, true)?;
+        let mu = s.solve(r, 1e-12 * s.singular_values.max()).ok()?;
+        Some(-(jw.transpose() * mu))
+    }
+
+    /// Newton steps from `x` while |c| falls (`damped`: each step halved
+    /// until it does, at most 30 times; else the first step that does not
+    /// reduce |c| ends them).
+    fn newton(&self, mut x: DVector<f64>, iterations: &mut usize, damped: bool) -> DVector<f64> {
+        let mut c = evaluate(&x, self.dimensions).0;
+        for _ in 0..MAX_ITERATIONS {
+            if self.deadline.expired() || c.amax() == 0.0 {
+                break;
+            }
+            *iterations += 1;
+            let j = evaluate(&x, self.dimensions).1;
+            let Some(delta) = self.step(&j, &c) else { break };
+            let mut t = 1.0;
+            let next = loop {
+                let y = &x + t * &delta;
+                let cy = evaluate(&y, self.dimensions).0;
+                if cy.amax() < c.amax() {
+                    break Some((y, cy));
+                }
+                t *= 0.5;
+                if !damped || t < 1e-9 {
+                    break None;
+                }
+            };
+            let Some((y, cy)) = next else { break };
+            (x, c) = (y, cy);
+        }
+        x
+    }
+
+    /// Gauss–Newton towards the least W-change from `x0`, from `x` on the
+    /// dimensions, until an iterate moves less than `still` (m).
+    fn least_change(&self, x0: &DVector<f64>, mut x: DVector<f64>, still: f64, iterations: &mut usize) -> DVector<f64> {
+        for _ in 0..MAX_ITERATIONS {
+            if self.deadline.expired() {
+                break;
+            }
+            *iterations += 1;
+            let (c, j) = evaluate(&x, self.dimensions);
+            let Some(delta) = self.step(&j, &(&c + &j * (x0 - &x))) else { break };
+            let next = x0 + delta;
+            let moved = (&next - &x).amax();
+            // A step that leaves the dimensions far behind is not taken (the Newton stage's point stands).
+            if !moved.is_finite() || evaluate(&next, self.dimensions).0.amax() > 1e3 * c.amax().max(still) {
+                break;
+            }
+            x = next;
+            if moved <= still {
+                break;
+            }
+        }
+        x
+    }
+}
+
+/// The dimension of each row of c.
+fn rows_of(dimensions: &[Dimension]) -> Vec<usize> {
+    dimensions
+        .iter()
+        .enumerate()
+        .flat_map(|(k, d)| std::iter::repeat_n(k, if matches!(d, Dimension::Between { .. }) { 2 } else { 1 }))
+        .collect()
 }
 
 /// Whether the dimensions leave some coordinate free: J's rank below the coordinates'.
@@ -154,7 +243,7 @@ fn free(j: &DMatrix<f64>) -> bool {
 fn scale(d: &Dimension) -> f64 {
     match d {
         Dimension::Distance(_, v) | Dimension::X(_, v) | Dimension::Y(_, v) => v.abs(),
-        Dimension::Angle(..) => 0.0,
+        Dimension::Angle(..) | Dimension::Between { .. } => 0.0,
     }
 }
 
@@ -164,10 +253,12 @@ fn points(x: &DVector<f64>) -> Vec<[f64; 2]> {
 
 /// c(x) and its Jacobian.
 fn evaluate(x: &DVector<f64>, dimensions: &[Dimension]) -> (DVector<f64>, DMatrix<f64>) {
-    let mut c = DVector::zeros(dimensions.len());
-    let mut j = DMatrix::zeros(dimensions.len(), x.len());
+    let rows = rows_of(dimensions).len();
+    let mut c = DVector::zeros(rows);
+    let mut j = DMatrix::zeros(rows, x.len());
     let at = |p: usize| [x[2 * p], x[2 * p + 1]];
-    for (r, d) in dimensions.iter().enumerate() {
+    let mut r = 0;
+    for d in dimensions {
         match *d {
             Dimension::Distance([p, q], value) => {
                 let (a, b) = (at(p), at(q));
@@ -198,7 +289,18 @@ fn evaluate(x: &DVector<f64>, dimensions: &[Dimension]) -> (DVector<f64>, DMatri
                 c[r] = x[2 * p + 1] - value;
                 j[(r, 2 * p + 1)] = 1.0;
             }
+            Dimension::Between { on, a, b, ratio } => {
+                for k in 0..2 {
+                    c[r] = x[2 * on + k] - (1.0 - ratio) * x[2 * a + k] - ratio * x[2 * b + k];
+                    j[(r, 2 * on + k)] += 1.0;
+                    j[(r, 2 * a + k)] -= 1.0 - ratio;
+                    j[(r, 2 * b + k)] -= ratio;
+                    r += 1;
+                }
+                continue;
+            }
         }
+        r += 1;
     }
     (c, j)
 }

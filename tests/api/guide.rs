@@ -1,8 +1,8 @@
-//! A prismatic joint with its guide's `length` (seed 000: a prismatic
-//! pair's reaction is two forces at the ends of the pair), against the
-//! drawer's closed form: a block of mass m slides at constant speed along
-//! a horizontal guide of length L, against a force P applied at height h
-//! above the guide. Moments about the guide's centre and the vertical
+//! A prismatic joint's two bearing ends (seed 000: a prismatic pair's
+//! reaction is two forces at the ends of the pair; contract, part four: "A
+//! guide's length"). The drawer, a block of length L (`slider_length`: its
+//! ends ride with it) that slides at constant speed along a long horizontal
+//! guide against a force P applied at height h above the guide, in closed form. Moments about the guide's centre and the vertical
 //! balance give N₁ = mg/2 + hP/L (rear end) and N₂ = mg/2 − hP/L (front);
 //! the driving force is D = P + μ(|N₁| + |N₂|) — with hP/L > mg/2 the front
 //! end pulls down (N₂ < 0) and the drawer needs P + 2μhP/L, not P + μmg.
@@ -15,7 +15,7 @@ fn drawer(length: Option<f64>, mu: f64) -> Value {
     let mut guide = json!({"name": "guide", "type": "prismatic", "bodies": ["ground", "block"], "at": "O",
         "axis": [1, 0], "friction": {"mu": mu}});
     if let Some(l) = length {
-        guide["length"] = json!(l);
+        guide["slider_length"] = json!(l);
     }
     json!({
         "mechanism": {
@@ -53,9 +53,52 @@ async fn a_guide_with_its_length_bears_its_load_at_both_ends() {
     assert!(one["reactions"][0].get("ends").is_none());
     let mut pin = drawer(None, mu);
     pin["mechanism"]["joints"][0]["type"] = json!("revolute");
-    pin["mechanism"]["joints"][0]["length"] = json!(0.2);
+    pin["mechanism"]["joints"][0]["slider_length"] = json!(0.2);
     pin["mechanism"]["joints"][0].as_object_mut().unwrap().remove("friction");
     let r = app.post("/v1/kinetostatics", &pin).await;
     assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
-    assert!(r.text.contains("/mechanism/joints/0/length"), "{}", r.text);
+    assert!(r.text.contains("/mechanism/joints/0/slider_length"), "{}", r.text);
+}
+
+/// A translating follower's stem in two bushings fixed to the frame
+/// (`length` 0.1 m on the ground, the guide's body, centred on G = (0, 0),
+/// axis +y), pushed at its tip T = (0, −0.05 m) + s·ŷ by a cam's force F =
+/// (30, 100) N and held by the driving force along the axis, at lifts s =
+/// 0, 10 and 20 mm. The follower's free body, written by hand: the guide
+/// pushes N₁ at E₁ = G − (L/2)ŷ and N₂ at E₂ = G + (L/2)ŷ along n = (−1, 0)
+/// (the axis turned 90°), so N₁ + N₂ = −F·n and, about G (the driving force
+/// acts along the axis through it), (L/2)(N₂ − N₁) + (T − G) × F = 0:
+/// N₁ = −F·n/2 + (T − G) × F / L, N₂ = −F·n/2 − (T − G) × F / L, which
+/// change with the lift. A block of that length on the stem
+/// (`slider_length`) carries its ends up with it: T − centre stays
+/// (0, −0.05) and N₁, N₂ stay those of s = 0 (1e-9 N).
+#[tokio::test]
+async fn a_guides_ends_stay_on_the_frame_while_a_blocks_ride_with_it() {
+    let app = TestApp::new().await;
+    let (l, f, n) = (0.1, [30.0, 100.0], [-1.0, 0.0]);
+    let ends = |t: [f64; 2]| {
+        let (along, turn) = (f[0] * n[0] + f[1] * n[1], t[0] * f[1] - t[1] * f[0]);
+        [-along / 2.0 + turn / l, -along / 2.0 - turn / l]
+    };
+    for (field, fixed) in [("length", true), ("slider_length", false)] {
+        let request = json!({
+            "mechanism": {
+                "points": {"G": [0, 0], "T": [0, -0.05]},
+                "bodies": [{"name": "follower"}],
+                "joints": [{"name": "stem", "type": "prismatic", "bodies": ["ground", "follower"], "at": "G",
+                    "axis": [0, 1], field: l}]
+            },
+            "input": {"joint": "stem", "speed": 0, "start": 0, "end": "30 mm", "steps": 3},
+            "loads": [{"type": "force", "body": "follower", "at": "T", "direction": [0.3, 1], "magnitude": f[0].hypot(f[1])}]
+        });
+        let r = app.post("/v1/kinetostatics", &request).await;
+        assert_eq!(r.status, StatusCode::CREATED, "{field}: {}", r.text);
+        for (k, step) in r.json()["result"]["steps"].as_array().unwrap().iter().enumerate() {
+            let s = 0.01 * k as f64;
+            let expected = ends(if fixed { [0.0, -0.05 + s] } else { [0.0, -0.05] });
+            let got = &step["reactions"][0]["ends"];
+            close(&got[0], expected[0], 1e-9, &format!("{field}, s = {s}: N₁"));
+            close(&got[1], expected[1], 1e-9, &format!("{field}, s = {s}: N₂"));
+        }
+    }
 }

@@ -10,7 +10,7 @@ use super::loads::{applied_forces_into, point_motion};
 use super::{ContactState, Motion, Outputs, Reaction, Step, friction, mass_times};
 use crate::engine::kinematics::{Configuration, solve_linear};
 use crate::engine::mobility::Mobility;
-use crate::engine::model::{BodyId, JointKind, Mechanism, Pitch, cross, dot, perp, rotate_by};
+use crate::engine::model::{BodyId, Guide, JointKind, Mechanism, Pitch, cross, dot, perp, rotate_by};
 use crate::engine::{Deadline, EngineError, Progress};
 use nalgebra::{DMatrix, DVector};
 
@@ -282,14 +282,25 @@ fn reactions_into(
         }
         let [fx, fy, moment] = [sign * fx, sign * fy, sign * moment];
         let ends = match (&joint.kind, joint.length) {
-            (JointKind::Prismatic { axis }, Some(length)) => {
-                let normal = dot(perp(rotate_by(trig[i], *axis)), [fx, fy]);
+            (JointKind::Prismatic { axis }, Some(guide)) => {
+                // The moment about the guide's centre, on the body that carries it.
+                let carrier = if matches!(guide, Guide::Fixed(_)) { i } else { j };
+                let (centre, here) = (placed(m, (q, trig), carrier, joint.at), placed(m, (q, trig), b, joint.at));
+                let moment = moment + cross([here[0] - centre[0], here[1] - centre[1]], [fx, fy]);
+                let (normal, length) = (dot(perp(rotate_by(trig[i], *axis)), [fx, fy]), guide.length());
                 Some([normal / 2.0 - moment / length, normal / 2.0 + moment / length])
             }
             _ => None,
         };
         Reaction { joint: k, on: j, by: i, fx, fy, moment, ends, determinate }
     }));
+}
+
+/// Where body `b`'s point `p` (reference coordinates) is at q.
+fn placed(m: &Mechanism, (q, trig): (&[f64], &[(f64, f64)]), b: BodyId, p: [f64; 2]) -> [f64; 2] {
+    let Some(c) = m.column(b) else { return p };
+    let s = rotate_by(trig[b], m.local(b, p));
+    [q[c] + s[0], q[c + 1] + s[1]]
 }
 
 /// The tooth force on the second gear at the pitch point, from the mesh's

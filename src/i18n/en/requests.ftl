@@ -37,6 +37,7 @@ joint-gear-teeth = a gear with a module needs "teeth": [z1, z2]
 joint-gear-bearings = a gear with a module needs a revolute joint (its bearing) on each gear, to find its centre
 joint-gear-friction = friction is not modelled for gears
 joint-length-prismatic = applies to prismatic joints only (a guide's length)
+joint-length-one = give "length" (the guide's, on the first body) or "slider_length" (the block's, on the second), not both
 joint-mu = must be a finite number ≥ 0
 joint-friction-radius = a revolute joint's friction needs the pin "radius"
 joint-radius-revolute = applies to revolute joints only
@@ -61,7 +62,10 @@ contact-cam-oscillating = a cam curve is made for a translating follower: for an
 ## A mechanism's dimensions
 
 dimensions-too-many = at most { $max } dimensions
-dimensions-one-of = give exactly one of "distance", "angle", "x" and "y"
+dimensions-one-of = give exactly one of "distance", "angle", "x", "y" and "on"
+dimensions-between = give the two points "between" [A, B] the point "on" lies between
+dimensions-ratio = give "ratio", the fraction of A→B at which the point lies (0.5: the midpoint)
+dimensions-value = give the dimension's "value" (a length, or an angle for "angle")
 dimensions-two-points = must name two points
 dimensions-unknown-point = unknown point '{ $name }' (dimensions join named points)
 dimensions-positive = must be positive

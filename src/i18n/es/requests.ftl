@@ -44,6 +44,7 @@ joint-gear-teeth = un engranaje con módulo necesita "teeth": [z1, z2], sus núm
 joint-gear-bearings = un engranaje con módulo necesita un par de rotación (su cojinete) en cada rueda, para hallar su centro
 joint-gear-friction = el rozamiento no se modela en los engranajes
 joint-length-prismatic = solo se aplica a los pares prismáticos (la longitud de una guía)
+joint-length-one = dé "length" (la de la guía, en el primer sólido) o "slider_length" (la del bloque, en el segundo), no ambas
 joint-mu = debe ser un número finito ≥ 0
 joint-friction-radius = el rozamiento de un par de rotación necesita el radio "radius" del pasador
 joint-radius-revolute = solo se aplica a los pares de rotación
@@ -68,7 +69,10 @@ contact-cam-oscillating = una curva de leva se construye para un seguidor de tra
 ## Las cotas de un mecanismo
 
 dimensions-too-many = como mucho { $max } cotas
-dimensions-one-of = dé exactamente una de "distance", "angle", "x" e "y"
+dimensions-one-of = dé exactamente una de "distance", "angle", "x", "y" y "on"
+dimensions-between = dé los dos puntos "between" [A, B] entre los que está el punto "on"
+dimensions-ratio = dé "ratio", la fracción de A→B a la que está el punto (0,5: el punto medio)
+dimensions-value = dé el valor de la cota, "value" (una longitud, o un ángulo para "angle")
 dimensions-two-points = debe nombrar dos puntos
 dimensions-unknown-point = punto desconocido '{ $name }' (las cotas unen puntos con nombre)
 dimensions-positive = debe ser positiva

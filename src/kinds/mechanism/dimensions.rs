@@ -15,12 +15,11 @@ use utoipa::ToSchema;
 
 /// Most dimensions of one mechanism.
 pub const MAX_DIMENSIONS: usize = 400;
-/// How much more a point on the ground weighs in the least change.
-const GROUND_WEIGHT: f64 = 1e6;
 
 /// One dimension of the statement: exactly one of `distance` ([P, Q]: |PQ|),
 /// `angle` ([P, Q]: the direction of P→Q from +x, counter-clockwise), `x`
-/// or `y` (P's coordinate), and its `value` (a length or an angle).
+/// or `y` (P's coordinate), each with its `value` (a length or an angle);
+/// or `on` M `between` [A, B] at the fraction `ratio` of A→B (0.5: the midpoint).
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 #[schema(example = json!({"distance": ["O2", "A"], "value": "100 mm"}))]
 pub struct DimensionDto {
@@ -30,8 +29,14 @@ pub struct DimensionDto {
     pub angle: Option<Vec<String>>,
     pub x: Option<String>,
     pub y: Option<String>,
-    #[schema(value_type = Quantity)]
-    pub value: Quantity,
+    /// With `between` and `ratio`: the point M = A + ratio·(B − A).
+    pub on: Option<String>,
+    #[schema(min_items = 2, max_items = 2)]
+    pub between: Option<Vec<String>>,
+    pub ratio: Option<f64>,
+    /// Required with `distance`, `angle`, `x` and `y`.
+    #[schema(value_type = Option<Quantity>)]
+    pub value: Option<Quantity>,
 }
 
 /// Where a mechanism's dimensions put its points, and what they said.
@@ -64,19 +69,15 @@ impl MechanismDto {
         let read: Vec<Option<Dimension>> =
             dimensions.iter().enumerate().map(|(k, d)| read(e, d, &names, &format!("{at}/dimensions/{k}"))).collect();
         let read: Vec<Dimension> = read.into_iter().collect::<Option<_>>()?;
-        let on_ground = |name: &str| {
-            self.joints.iter().any(|j| {
-                matches!(&j.at, Some(super::PointRef::Name(n)) if n == name) && j.bodies.iter().any(|b| b == "ground")
-            })
-        };
-        let weights: Vec<f64> = names.iter().map(|n| if on_ground(n) { GROUND_WEIGHT } else { 1.0 }).collect();
+        let weights = self.weights(&names);
         let points: Vec<[f64; 2]> = sketch.values().copied().collect();
         let solved = match solve(&points, &weights, &read, &e.limits.deadline()) {
             Ok(s) => s,
             Err(c) => {
+                let (unit, factor) = length_unit(dimensions);
+                let misfit = format!("{} {unit}", round_sig(c.residual / factor, 4));
                 for k in c.dimensions {
-                    let msg = Msg::new("dimensions-conflict").num("residual", round_sig(c.residual, 4));
-                    e.say(&format!("{at}/dimensions/{k}"), msg);
+                    e.say(&format!("{at}/dimensions/{k}"), Msg::new("dimensions-conflict").arg("residual", &misfit));
                 }
                 return None;
             }
@@ -89,8 +90,8 @@ impl MechanismDto {
             warnings.push(crate::i18n::Msg::new("warning-dimensions-free"));
         }
         let assembled: BTreeMap<String, [f64; 2]> = names.into_iter().cloned().zip(solved.points).collect();
-        let dto = MechanismDto { points: Some(assembled), dimensions: None, ..self.clone() };
-        Some((Cow::Owned(dto), warnings))
+        let dto = self.clone().carried(&sketch, &assembled);
+        Some((Cow::Owned(MechanismDto { points: Some(assembled), dimensions: None, ..dto }), warnings))
     }
 }
 
@@ -106,18 +107,31 @@ fn read(e: &mut Errors, d: &DimensionDto, names: &[&String], at: &str) -> Option
         [p, q] => Some([index(e, p, &format!("{ptr}/0"))?, index(e, q, &format!("{ptr}/1"))?]),
         _ => e.refuse(ptr, Msg::new("dimensions-two-points")),
     };
-    let given = [d.distance.is_some(), d.angle.is_some(), d.x.is_some(), d.y.is_some()].iter().filter(|g| **g).count();
-    if given != 1 {
+    let given = [d.distance.is_some(), d.angle.is_some(), d.x.is_some(), d.y.is_some(), d.on.is_some()];
+    if given.iter().filter(|g| **g).count() != 1 {
         return e.refuse(at, Msg::new("dimensions-one-of"));
     }
+    if let Some(on) = &d.on {
+        let m = index(e, on, &format!("{at}/on"));
+        let [a, b] = match &d.between {
+            Some(list) => pair(e, list, &format!("{at}/between"))?,
+            None => return e.refuse(&format!("{at}/between"), Msg::new("dimensions-between")),
+        };
+        let ratio = match d.ratio {
+            Some(r) if r.is_finite() => r,
+            _ => return e.refuse(&format!("{at}/ratio"), Msg::new("dimensions-ratio")),
+        };
+        return Some(Dimension::Between { on: m?, a, b, ratio });
+    }
     let value = format!("{at}/value");
+    let Some(given) = d.value.as_ref() else { return e.refuse(&value, Msg::new("dimensions-value")) };
     if let Some(list) = &d.distance {
-        let v = e.quantity(&d.value, Dim::LENGTH, &value);
+        let v = e.quantity(given, Dim::LENGTH, &value);
         let v = e.require_said(v, |v| v > 0.0, &value, Msg::new("dimensions-positive"));
         return Some(Dimension::Distance(pair(e, list, &format!("{at}/distance"))?, v?));
     }
     if let Some(list) = &d.angle {
-        let v = e.angle(&d.value, &value);
+        let v = e.angle(given, &value);
         return Some(Dimension::Angle(pair(e, list, &format!("{at}/angle"))?, v?));
     }
     let (name, is_x) = match (&d.x, &d.y) {
@@ -126,6 +140,24 @@ fn read(e: &mut Errors, d: &DimensionDto, names: &[&String], at: &str) -> Option
         _ => return None,
     };
     let p = index(e, name, &format!("{at}/{}", if is_x { "x" } else { "y" }));
-    let v = e.quantity(&d.value, Dim::LENGTH, &value);
+    let v = e.quantity(given, Dim::LENGTH, &value);
     Some(if is_x { Dimension::X(p?, v?) } else { Dimension::Y(p?, v?) })
+}
+
+/// The unit the statement writes its lengths in (the first length given
+/// with a unit, as "100 mm"), and its factor to metres; m where none is.
+fn length_unit(dimensions: &[DimensionDto]) -> (String, f64) {
+    dimensions
+        .iter()
+        .filter(|d| d.angle.is_none())
+        .filter_map(|d| match &d.value {
+            Some(Quantity::Text(t)) => crate::units::parse_quantity(t).ok().map(|_| t),
+            _ => None,
+        })
+        .find_map(|t| {
+            let unit = t.trim().trim_start_matches(|c: char| c.is_ascii_digit() || ".,+-eE ".contains(c)).trim();
+            let factor = crate::units::unit_factor(unit, Dim::LENGTH).ok()?;
+            Some((unit.to_string(), factor))
+        })
+        .unwrap_or_else(|| ("m".into(), 1.0))
 }

@@ -3,17 +3,24 @@
 //! belong to another type.
 
 use super::{JointDto, JointType};
-use crate::engine::model::{Friction, JointKind};
+use crate::engine::model::{Friction, Guide, JointKind};
 use crate::i18n::Msg;
 use crate::kind::quantity::Errors;
 use crate::units::Dim;
 
-/// A prismatic joint's guide length (> 0), checked against its type.
-pub fn guide_length(e: &mut Errors, j: &JointDto, at: &str) -> Option<f64> {
-    let length = j.length.as_ref()?;
+/// A prismatic joint's guide (`length`, on the first body) or block
+/// (`slider_length`, on the second), its length > 0, checked against its type.
+pub fn guide_length(e: &mut Errors, j: &JointDto, at: &str) -> Option<Guide> {
+    let (field, length, guide): (_, _, fn(f64) -> Guide) = match (&j.length, &j.slider_length) {
+        (Some(_), Some(_)) => return e.refuse(&format!("{at}/slider_length"), Msg::new("joint-length-one")),
+        (Some(l), None) => ("length", l, Guide::Fixed),
+        (None, Some(l)) => ("slider_length", l, Guide::Block),
+        (None, None) => return None,
+    };
+    let at = format!("{at}/{field}");
     match j.kind {
-        JointType::Prismatic => e.positive(length, Dim::LENGTH, &format!("{at}/length")),
-        _ => e.refuse(&format!("{at}/length"), Msg::new("joint-length-prismatic")),
+        JointType::Prismatic => e.positive(length, Dim::LENGTH, &at).map(guide),
+        _ => e.refuse(&at, Msg::new("joint-length-prismatic")),
     }
 }
 

@@ -1,6 +1,7 @@
 //! Wire form of a planar mechanism (named points, bodies, joints) and its
 //! conversion into the engine's model, with every error under its pointer.
 
+mod assembly;
 mod contact;
 mod dimensions;
 pub mod drawing;
@@ -96,11 +97,18 @@ pub struct JointDto {
     pub pressure_angle: Option<Quantity>,
     /// Coulomb friction: {"mu", "radius"} on a revolute joint, {"mu"} on a prismatic, pin-in-slot or contact joint.
     pub friction: Option<FrictionDto>,
-    /// A prismatic joint's guide length, centred on `at`: the reaction is
-    /// borne as two normal forces at its ends (the reaction's `ends`), each
-    /// with its own friction μ|N₁| + μ|N₂|.
+    /// A prismatic joint's guide length, on the first body (which carries
+    /// the guide), centred on `at` as drawn: its ends stay there while the
+    /// second body slides (a stem in two bushings). The reaction is borne as
+    /// two normal forces at the ends (the reaction's `ends`, N₁ behind `at`
+    /// along the axis, N₂ ahead), each with its own friction μ|N₁| + μ|N₂|.
     #[schema(value_type = Option<Quantity>)]
     pub length: Option<Quantity>,
+    /// Instead of `length`: a block of this length carried by the second
+    /// body, centred on `at` as drawn, sliding in a long guide (a piston):
+    /// its ends move with it.
+    #[schema(value_type = Option<Quantity>)]
+    pub slider_length: Option<Quantity>,
     /// Contact: the curve fixed in each body, in `bodies` order.
     #[schema(min_items = 2, max_items = 2)]
     pub curves: Option<Vec<CurveDto>>,
@@ -134,9 +142,11 @@ pub struct MechanismDto {
     #[schema(min_items = 2, max_items = 2)]
     pub gravity: Option<Vec<f64>>,
     /// The statement's dimensions: `points` are then a sketch, moved as
-    /// little as they can be (a point on the ground weighs 10⁶ times
-    /// another, and the sketch picks the branch) until every dimension
-    /// holds; the result's `assembled_points` says where they went.
+    /// little as they can be (a point that cannot move — a pivot with the
+    /// ground, a point of no moving body — weighs 10⁶ times another, and
+    /// the sketch picks the branch) until every dimension holds; a body's
+    /// `cg` given as [x, y] moves with its body; the result's
+    /// `assembled_points` says where the points went.
     #[schema(max_items = 400)]
     pub dimensions: Option<Vec<DimensionDto>>,
 }
