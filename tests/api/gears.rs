@@ -89,6 +89,24 @@ async fn k5_differential_train_speeds_and_torques() {
     assert_eq!(r.json()["errors"][0]["pointer"], "/meshes/1/carrier", "{}", r.text);
 }
 
+/// Teeth that cannot assemble: seed 002's differential assembles (sun 60 +
+/// 2 × planet 30 = ring 120: no warning); with a ring of 118 teeth the
+/// planet cannot sit as far from the axis in both meshes, and the answer
+/// says so with the ring that would fit, 120 (z_ring = z_sun + 2 z_planet).
+#[tokio::test]
+async fn a_planetary_that_cannot_assemble_is_warned_with_the_count_that_fits() {
+    let app = TestApp::new().await;
+    let body = example("TrainRequest");
+    let r = app.post("/v1/gears/train", &body).await;
+    assert_eq!(r.json()["result"]["warnings"], json!([]), "{}", r.text);
+    let mut odd = body;
+    odd["meshes"][1]["teeth_b"] = json!(118);
+    let r = app.post("/v1/gears/train", &odd).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let warnings = r.json()["result"]["warnings"].to_string();
+    assert!(warnings.contains("118 teeth") && warnings.contains("a ring of 120"), "{warnings}");
+}
+
 /// A module near the largest double (found by schemathesis: 1.49e308 m)
 /// overflows the radii: a 422 at /module, never a 201 holding nulls.
 #[tokio::test]

@@ -55,6 +55,7 @@ mod rotor;
 mod schema;
 mod security;
 mod seed_exams;
+mod seed_templates;
 mod sketches;
 mod slipping;
 mod slow_clients;

@@ -183,6 +183,31 @@ pub async fn a_client_creates_a_template_and_uses_it_on(app: TestApp) {
     assert_eq!(unnamed.json()["id"].as_str().unwrap().len(), 36, "a UUID");
 }
 
+/// A derived value follows the parameters: a gear whose module is 0.12 m/z
+/// keeps its pitch radius m·z/2 = 60 mm whatever its teeth (closed form,
+/// 1e-15); a derived value at a field the request lacks, or of a name that
+/// is no parameter, is refused at `/derived/…`.
+#[tokio::test]
+async fn a_derived_value_follows_the_parameters() {
+    let app = TestApp::new().await;
+    let mut t = gear_template("fixed-radius");
+    t["parameters"].as_object_mut().unwrap().remove("m");
+    t["derived"] = json!({"/module": "0.12/z"});
+    let r = app.post("/v1/templates", &t).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    for z in [30, 48, 120] {
+        let radius = number(&app, &format!("/v1/templates/fixed-radius/result/pitch_radius?z={z}")).await;
+        assert!((radius - 0.06).abs() < 1e-15, "z = {z}: {radius}");
+    }
+    t["name"] = json!("broken");
+    t["derived"] = json!({"/nothing": "z", "/module": "q*2"});
+    let r = app.post("/v1/templates", &t).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let pointers: Vec<String> =
+        r.json()["errors"].as_array().unwrap().iter().map(|e| e["pointer"].as_str().unwrap().to_string()).collect();
+    assert_eq!(pointers, ["/derived/~1module", "/derived/~1nothing"], "{}", r.text);
+}
+
 #[tokio::test]
 async fn a_bad_template_is_refused_at_its_fields() {
     let app = TestApp::new().await;

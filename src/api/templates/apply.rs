@@ -37,7 +37,11 @@ pub fn request_for(t: &Template, given: &HashMap<String, String>, ignore: &[&str
             Err(why) => errors.push(FieldError::parameter_said(name, why)),
         }
     }
-    if errors.is_empty() { Ok(request) } else { Err(ApiError::BadQuery(errors)) }
+    if !errors.is_empty() {
+        return Err(ApiError::BadQuery(errors));
+    }
+    super::derived::apply(t, &mut request).map_err(ApiError::Invalid)?;
+    Ok(request)
 }
 
 /// Parameters given as JSON (a study's row, a drawn variant, a check's

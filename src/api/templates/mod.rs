@@ -6,6 +6,7 @@
 
 mod answers;
 mod apply;
+mod derived;
 mod model;
 pub mod table;
 pub mod variants;

@@ -57,6 +57,11 @@ pub struct Template {
     #[schema(value_type = Object)]
     pub request: Value,
     pub parameters: BTreeMap<String, Parameter>,
+    /// Fields of `request` that follow the parameters: `{pointer:
+    /// expression}`, each expression of the parameters' names (their values
+    /// in SI), e.g. a bar's inertia `"m*1^2/12"` as its mass m changes.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub derived: BTreeMap<String, String>,
     /// Shipped with the service (true) or created by a client.
     #[serde(default)]
     pub builtin: bool,
@@ -114,6 +119,9 @@ pub struct NewTemplate {
     #[schema(value_type = Object)]
     pub request: Value,
     pub parameters: BTreeMap<String, Parameter>,
+    /// Fields of `request` that follow the parameters (see Template).
+    #[serde(default)]
+    pub derived: BTreeMap<String, String>,
     #[schema(max_length = 200)]
     pub title: Option<String>,
     /// A slug (lower-case letters, digits, `-`), unique: the template's id.
@@ -199,6 +207,8 @@ pub fn checked(
         let at = format!("/parameters/{}", name.replace('~', "~0").replace('/', "~1"));
         errors.extend(parameter_errors(name, p, &t.request, &at));
     }
+    let names: Vec<&str> = t.parameters.keys().map(String::as_str).collect();
+    errors.extend(super::derived::errors(&t.derived, &names, &t.request));
     for name in t.es.iter().flat_map(|es| es.parameters.keys()).filter(|n| !t.parameters.contains_key(*n)) {
         let at = format!("/es/parameters/{}", crate::kind::problem::escape(name));
         errors.push(FieldError::said(at, Msg::new("template-no-parameter").arg("name", name)));
@@ -214,6 +224,7 @@ pub fn checked(
         source: None,
         request: t.request,
         parameters: t.parameters,
+        derived: t.derived,
         builtin: false,
         es: t.es,
     })

@@ -15,6 +15,7 @@ warning-ode-not-finite = the derivative is not finite at t = { $t }
 ## Flywheel
 
 accuracy-flywheel = M* integrated piecewise between its breakpoints: adaptive Gauss-Kronrod 7/15 for expressions, exact (Simpson on each polynomial piece) for tables; sign changes bracketed on 1024 samples per cycle and located by Brent's method; exact inertia from the extrema of (1±eps/2)^2 I*(phi) - F(phi) at piece ends and stationary points (closed form when I* is constant); check by Dormand-Prince 5(4) time integration of the equation of motion
+warning-train-assembly = the planet { $planet } cannot assemble with one module: its ring has { $ring } teeth, but the sun ({ $sun }) and the planet need a ring of { $fits } (z_ring = z_sun + 2 z_planet for a simple planet)
 warning-flywheel-net-work = the net work over a cycle is { $net } J, within the tolerance; the loads are used as given
 warning-flywheel-check = the time-simulation check did not complete: { $why }
 warning-flywheel-degenerate = M* is identically zero and I* constant: the speed is constant for any inertia, so no flywheel is needed

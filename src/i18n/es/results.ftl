@@ -15,6 +15,7 @@ warning-ode-not-finite = la derivada no es finita en t = { $t }
 ## Volante
 
 accuracy-flywheel = M* integrado a trozos entre sus puntos de ruptura: Gauss-Kronrod 7/15 adaptativo para las expresiones, exacto (Simpson en cada trozo polinómico) para las tablas; cambios de signo acotados con 1024 muestras por ciclo y localizados por el método de Brent; inercia exacta a partir de los extremos de (1±eps/2)^2 I*(phi) - F(phi) en los extremos de los trozos y en los puntos estacionarios (forma cerrada cuando I* es constante); comprobación por integración en el tiempo (Dormand-Prince 5(4)) de la ecuación del movimiento
+warning-train-assembly = el satélite { $planet } no se puede montar con un mismo módulo: su corona tiene { $ring } dientes, pero el planeta ({ $sun }) y el satélite piden una corona de { $fits } (z_corona = z_planeta + 2 z_satélite en un satélite simple)
 warning-flywheel-net-work = el trabajo neto en un ciclo es { $net } J, dentro de la tolerancia; las cargas se usan tal como se dan
 warning-flywheel-check = la comprobación por simulación en el tiempo no terminó: { $why }
 warning-flywheel-degenerate = M* es idénticamente nulo e I* constante: la velocidad es constante con cualquier inercia, así que no hace falta volante

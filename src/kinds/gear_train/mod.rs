@@ -152,6 +152,9 @@ fn compute(request: &TrainRequest, unknown: Vec<FieldError>) -> Result<TrainResu
         })
         .collect();
     let mut notes = Notes::default();
+    for msg in request.misassembled() {
+        notes.warn(msg);
+    }
     let method = notes.say("/method", Msg::new("accuracy-gear-train"));
     Ok(TrainResult { dof: s.dof, members, power_residual: s.power_residual, method, notes })
 }
@@ -168,6 +171,37 @@ fn msg(e: &TrainError) -> Msg {
 }
 
 impl TrainRequest {
+    /// Planets that cannot assemble with one module: a planet meshing a sun
+    /// (externally) and a ring (internally) about one carrier sits as far
+    /// from the axis in both meshes only where z_ring = z_sun + z_planet +
+    /// z_planet′ (its wheel in each mesh); each that does not is said with
+    /// the ring's count that would fit.
+    fn misassembled(&self) -> Vec<Msg> {
+        let carrier = |m: &MeshDto| m.carrier.as_deref().unwrap_or("ground").to_string();
+        let mut out = Vec::new();
+        for ring in self.meshes.iter().filter(|m| m.internal == Some(true)) {
+            let suns = self.meshes.iter().filter(|m| m.internal != Some(true) && carrier(m) == carrier(ring));
+            for sun in suns {
+                let (z_sun, z_planet) = match () {
+                    _ if sun.b == ring.a => (sun.teeth_a, sun.teeth_b),
+                    _ if sun.a == ring.a => (sun.teeth_b, sun.teeth_a),
+                    _ => continue,
+                };
+                let fits = z_sun + z_planet + ring.teeth_a;
+                if (ring.teeth_b - fits).abs() > 1e-9 {
+                    out.push(
+                        Msg::new("warning-train-assembly")
+                            .arg("planet", &ring.a)
+                            .num("ring", ring.teeth_b)
+                            .num("sun", z_sun)
+                            .num("fits", fits),
+                    );
+                }
+            }
+        }
+        out
+    }
+
     fn to_train(&self) -> Result<Parts, Vec<FieldError>> {
         let mut e = Errors::default();
         if self.members.is_empty() || self.members.len() > MAX_MEMBERS {
