@@ -44,7 +44,8 @@ impl Lang {
         }
     }
 
-    fn of(tag: &str) -> Option<Lang> {
+    /// The language of a tag (`es-ES` is Spanish), where the service speaks it.
+    pub fn of(tag: &str) -> Option<Lang> {
         let primary = tag.trim().split(['-', '_']).next().unwrap_or("").to_ascii_lowercase();
         Lang::ALL.into_iter().find(|l| l.tag() == primary)
     }

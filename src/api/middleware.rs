@@ -80,6 +80,7 @@ pub fn layered(routes: Router, s: &Settings, state: AppState) -> Router {
         .layer(from_fn(single_parameters))
         .layer(CatchPanicLayer::custom(panic_response))
         .layer(from_fn(drain_unread))
+        .layer(from_fn(super::plain_errors::as_text))
         .layer(from_fn(super::language::in_language));
     let routes = match cors(&s.cors_origins) {
         Some(cors) => routes.layer(cors),

@@ -23,6 +23,7 @@ pub mod middleware;
 pub mod pace;
 pub mod pages;
 pub mod parts;
+pub mod plain_errors;
 pub mod plots;
 pub mod read;
 pub mod retention;

@@ -30,6 +30,7 @@ use std::collections::HashMap;
             `inertia_exact`, `flywheel_inertia/exact`, `steps/90/driving` (RFC 6901: `~1` for a `/` in a key, `~0` for `~`)"),
         ("unit" = Option<String>, Query, description = "Convert a number to this unit, e.g. `slug*ft^2`, `rpm`, `deg`, `%`"),
         ("decimal" = Option<DecimalMark>, Query, description = "`point` (default) or `comma`: `0,628…` for a sheet in a Spanish locale"),
+        ("errors" = Option<String>, Query, description = "`text`: an error answered as 200 `text/plain`, one line in the asker's language, its own status in the `Mechdyn-Status` header (a spreadsheet's WEBSERVICE() shows only #VALUE! for a 4xx)"),
     ),
     responses(
         (status = 200, description = "The value alone (text/plain), or JSON for an object or array or with `Accept: application/json`",

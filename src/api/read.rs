@@ -37,12 +37,12 @@ pub fn query(
     known: &[&str],
 ) -> Result<HashMap<String, String>, ApiError> {
     let Query(q) = query.map_err(|e| ApiError::BadQuery(vec![FieldError::parameter("", e.body_text())]))?;
-    // `lang` is every answer's ([`super::language`]).
+    // `lang` and `errors` are every answer's ([`super::language`], [`super::plain_errors`]).
     let mut names: Vec<&String> = q.keys().collect();
     names.sort();
     let unknown: Vec<FieldError> = names
         .into_iter()
-        .filter(|k| !known.contains(&k.as_str()) && *k != "lang")
+        .filter(|k| !known.contains(&k.as_str()) && *k != "lang" && *k != "errors")
         .map(|k| FieldError::parameter_said(k, Msg::new("query-unknown").arg("known", known.join(", "))))
         .collect();
     if unknown.is_empty() { Ok(q) } else { Err(ApiError::BadQuery(unknown)) }

@@ -82,12 +82,14 @@ async fn libreoffice_calc_fetches_answers_with_webservice() {
 }
 
 /// The same in a Spanish Calc (es-ES locale, Spanish interface from
-/// Debian's libreoffice-l10n-es): formulas typed as VALOR(SERVICIOWEB(…))
-/// with TEXTO, the sheet writing F = 1200,5 and ε = 0,03 itself, the
+/// Debian's libreoffice-l10n-es): formulas typed as VALOR(SERVICIOWEB(…)),
+/// the sheet writing F = 1200,5 and ε = 0,03 (and 0,025, every digit) itself, the
 /// answers asked with `decimal=comma` and read by VALOR equal to the
 /// English run's (the service's own answer for 1200.5 and 0.03) to every
 /// digit; without `decimal=comma`, VALOR cannot read the answer (why the
 /// parameter exists). The closed-form scaling of case F1 checks I_approx.
+/// An error (ε = 3) reaches its cell as the service's Spanish reason with
+/// `lang=es&errors=text`, where Calc shows only #¡VALOR! for a 4xx.
 #[tokio::test]
 async fn a_spanish_calc_reads_decimal_commas() {
     let spanish = std::path::Path::new("/usr/lib/libreoffice/program/resource/es").exists();
@@ -113,6 +115,11 @@ async fn a_spanish_calc_reads_decimal_commas() {
         assert_eq!(cells["study"][k].as_f64().unwrap(), english(format!("F={f}&eps=0.03")).await, "F = {f}");
     }
     assert_ne!(cells["B9_error"], 0, "VALOR of a decimal point in es-ES is an error: {cells}");
+    let kept = cells["B17"].as_f64().unwrap();
+    assert!((kept - 0.025).abs() < 1e-6, "ε = 0,025 reached the service with every digit: {kept}");
+    let reason = app.get(&format!("{base}?F=1200,5&eps=3&lang=es&errors=text")).await.text;
+    assert!(reason.starts_with("eps: 3 está por encima del valor máximo"), "{reason}");
+    assert_eq!(cells["B18"].as_str().unwrap(), reason, "the cell shows the reason in Spanish, not #¡VALOR!");
 }
 
 /// The example sheets a lab opens (examples/p103-flywheel.fods and its

@@ -270,3 +270,53 @@ async fn a_bad_mechanism_and_a_bad_cam_in_spanish() {
         }
     }
 }
+
+/// The language sticks: a page asked with `?lang=es` gives the browser its
+/// cookie, with which the template's form (no `lang`, no Accept-Language)
+/// redirects to a job page in Spanish; a form sent with `?lang=es` carries
+/// it into its redirect; without either, the same job page is English.
+#[tokio::test]
+async fn the_language_of_a_page_sticks_to_its_form_and_redirect() {
+    let app = TestApp::new().await;
+    let page = app.get("/templates/p103-slider-flywheel?lang=es").await;
+    assert_eq!(page.status, StatusCode::OK, "{}", page.text);
+    let cookie = page.headers.get("set-cookie").and_then(|v| v.to_str().ok()).unwrap_or_default().to_string();
+    assert!(cookie.starts_with("mechdyn_lang=es;"), "{cookie}");
+    let with_cookie = |path: &str| {
+        let req = Request::get(path).header("cookie", "theme=dark; mechdyn_lang=es").body(Body::empty()).unwrap();
+        app.send(req)
+    };
+    let sent = with_cookie("/templates/p103-slider-flywheel?F=1200").await;
+    assert_eq!(sent.status, StatusCode::SEE_OTHER, "{}", sent.text);
+    let job = sent.location.unwrap();
+    let spanish = with_cookie(&job).await;
+    assert_eq!(spanish.headers["content-language"], "es");
+    assert!(spanish.text.contains("<html lang=\"es\""), "the job page in Spanish");
+    let english = app.get(&job).await;
+    assert_eq!(english.headers["content-language"], "en", "no cookie, no header: English");
+    let asked = app.get("/templates/p103-slider-flywheel?F=1200&lang=es").await;
+    assert_eq!(asked.location.as_deref(), Some(format!("{job}?lang=es").as_str()));
+}
+
+/// `?errors=text`, a spreadsheet's way to read why: the 400 of ε = 3 comes
+/// back as 200 plain text, the parameter's message in the asker's language
+/// (the same words as the problem document's field), its status in
+/// `Mechdyn-Status`; an answer that is no error is unchanged.
+#[tokio::test]
+async fn an_error_read_as_text_says_why_with_its_status_aside() {
+    let app = TestApp::new().await;
+    let base = "/v1/templates/p103-slider-flywheel/result/inertia_exact?eps=3";
+    let problem = app.get(&format!("{base}&lang=es")).await;
+    assert_eq!(problem.status, StatusCode::BAD_REQUEST);
+    let message = problem.json()["errors"][0]["message"].as_str().unwrap().to_string();
+    let text = app.get(&format!("{base}&lang=es&errors=text")).await;
+    assert_eq!(text.status, StatusCode::OK);
+    assert_eq!(text.content_type, "text/plain; charset=utf-8");
+    assert_eq!(text.headers["mechdyn-status"], "400");
+    assert_eq!(text.text, format!("eps: {message}"));
+    assert!(text.text.contains("por encima del valor máximo"), "{}", text.text);
+    let fine = app.get("/v1/templates/p103-slider-flywheel/result/inertia_exact?errors=text").await;
+    assert_eq!(fine.status, StatusCode::OK);
+    assert!(fine.headers.get("mechdyn-status").is_none());
+    assert!(fine.text.parse::<f64>().is_ok(), "{}", fine.text);
+}

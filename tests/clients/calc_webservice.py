@@ -10,8 +10,9 @@ Usage: /usr/bin/python3 calc_webservice.py [--es] BASE_URL PROFILE_DIR [SAVE_AS.
 
 With --es, Calc runs in Spanish with the es-ES locale (Debian's
 libreoffice-l10n-es): the formulas are typed with their Spanish names
-(VALOR, SERVICIOWEB, TEXTO; `;` between arguments), the sheet writes its
-parameters with decimal commas itself and asks for `decimal=comma`
+(VALOR, SERVICIOWEB; `;` between arguments), the sheet writes its
+parameters with decimal commas itself (every digit: B3&"") and asks for
+`decimal=comma`, and an error's reason in Spanish with `lang=es&errors=text`
 (examples/p103-flywheel-es.fods is made so).
 """
 import json
@@ -80,7 +81,9 @@ def spanish_sheet(cell):
     cell("A2").String, cell("B2").Value = "F (N*m)", 1200.5
     cell("A3").String, cell("B3").Value = "eps", 0.03
     url = '$B$1&"/v1/templates/p103-slider-flywheel/result/'
-    query = '?F="&B2&"&eps="&TEXTO(B3;"0,00")&"&decimal=comma&lang=es'
+    # The sheet writes each number with every digit and its decimal comma
+    # (B3&"": "0,03"; TEXTO(B3;"0,00") rounded ε = 0,025 to 0,03).
+    query = '?F="&B2&"&eps="&B3&"&decimal=comma&lang=es'
     cell("A5").String = "I exacta (kg*m^2)"
     cell("B5").FormulaLocal = f'=VALOR(SERVICIOWEB({url}inertia_exact{query}"))'
     cell("A6").String = "I aproximada (kg*m^2)"
@@ -96,8 +99,14 @@ def spanish_sheet(cell):
         row = 11 + k
         cell(f"A{row}").Value = f
         cell(f"B{row}").FormulaLocal = (
-            f'=VALOR(SERVICIOWEB({url}inertia_exact?F="&A{row}&"&eps="&TEXTO($B$3;"0,00")&"&decimal=comma"))'
+            f'=VALOR(SERVICIOWEB({url}inertia_exact?F="&A{row}&"&eps="&$B$3&"&decimal=comma"))'
         )
+    # Every digit reaches the service: ε = 0,025, read back as the irregularity the flywheel keeps.
+    cell("A17").String, cell("C17").Value = "eps = 0,025", 0.025
+    cell("B17").FormulaLocal = f'=VALOR(SERVICIOWEB({url}check/irregularity?F="&B2&"&eps="&C17&"&decimal=comma"))'
+    # An error reaches the cell as its reason, in Spanish (errors=text), not as #¡VALOR!.
+    cell("A18").String = "ε = 3: el motivo"
+    cell("B18").FormulaLocal = f'=SERVICIOWEB({url}inertia_exact?F="&B2&"&eps=3&lang=es&errors=text")'
 
 
 # Calc's interface language comes from the environment at its first start
@@ -138,6 +147,10 @@ try:
     out["B9"] = cell("B9").String
     out["B9_error"] = cell("B9").getError()
     out["decimal_separator"] = cell("B3").String
+    if SPANISH:
+        out["B17"] = cell("B17").Value
+        out["B18"] = cell("B18").String
+        out["errors"].update({name: cell(name).getError() for name in ["B17", "B18"]})
     if len(ARGS) > 2:
         target = uno.systemPathToFileUrl(os.path.abspath(ARGS[2]))
         doc.storeToURL(target, (prop("FilterName", "OpenDocument Spreadsheet Flat XML"),))

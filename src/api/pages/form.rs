@@ -43,7 +43,8 @@ pub async fn template(
         Ok(t) => t,
         Err(e) => return layout::error(e),
     };
-    if given.is_empty() {
+    // Only the answer's own settings (`?lang=es`): the form, in that language.
+    if given.keys().all(|k| templates::RESERVED.contains(&k.as_str())) {
         return layout::answer(StatusCode::OK, form(&t, &given, None, &super::job::kind_title(&state, &t.kind)));
     }
     // A field left blank or at its default is not asked: an unchanged form is
@@ -55,7 +56,12 @@ pub async fn template(
     let asked: HashMap<String, String> =
         given.iter().filter(|(k, v)| !unchanged(k, v)).map(|(k, v)| (k.clone(), v.clone())).collect();
     match templates::job_for(&state, &t, &asked, templates::Want::Job).await {
-        Ok((row, _)) => (StatusCode::SEE_OTHER, [(header::LOCATION, format!("/jobs/{}", row.id))]).into_response(),
+        Ok((row, _)) => {
+            // The language asked in the query goes with the redirect (a browser keeps it in its cookie too).
+            let lang =
+                given.get("lang").map(|l| format!("?lang={}", crate::api::plots::segment(l))).unwrap_or_default();
+            (StatusCode::SEE_OTHER, [(header::LOCATION, format!("/jobs/{}{lang}", row.id))]).into_response()
+        }
         Err(
             e @ (ApiError::BadQuery(_)
             | ApiError::Invalid(_)

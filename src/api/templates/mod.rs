@@ -157,6 +157,7 @@ pub async fn job(
         ("pointer" = String, Path, description = "JSON pointer into the result without its leading `/`, e.g. `inertia_exact`"),
         ("unit" = Option<String>, Query, description = "Convert a number to this unit, e.g. `slug*ft^2`"),
         ("decimal" = Option<super::tables::DecimalMark>, Query, description = "`point` (default) or `comma`: `0,628…` for a sheet in a Spanish locale"),
+        ("errors" = Option<String>, Query, description = "`text`: an error answered as 200 `text/plain`, one line in the asker's language, its own status in the `Mechdyn-Status` header (a spreadsheet's WEBSERVICE() shows only #VALUE! for a 4xx)"),
         ("parameters" = Option<HashMap<String, String>>, Query, style = Form, explode,
             description = "The template's parameters, e.g. `F=1200&eps=0.03`")),
     responses(

@@ -11,7 +11,8 @@ use std::collections::BTreeMap;
 use utoipa::ToSchema;
 
 /// Query names a parameter may not take (they mean something else in a template's URL).
-pub const RESERVED: &[&str] = &["unit", "values", "angles", "label", "format", "seed", "count", "decimal", "lang"];
+pub const RESERVED: &[&str] =
+    &["unit", "values", "angles", "label", "format", "seed", "count", "decimal", "lang", "errors"];
 
 /// One parameter of a template: where it goes in the request, its unit and range.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
