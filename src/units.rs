@@ -13,7 +13,7 @@ use std::f64::consts::PI;
 
 mod written;
 use written::number_length;
-pub use written::{number, suggestion};
+pub use written::{number, suggestion, ungrouped};
 
 /// Exponents of (length, mass, time, angle).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -221,6 +221,10 @@ fn table_unit(name: &str) -> Option<&'static (&'static str, f64, Dim)> {
 pub fn parse_quantity(text: &str) -> Result<Quantity, UnitError> {
     let t = text.trim();
     let spaced = t.find(|c: char| c.is_whitespace()).unwrap_or(t.len());
+    // "1.200,5": a number with thousands separators, said as such ([`unit_msg`]'s).
+    if number(&t[..spaced]).is_none() && written::ungrouped(&t[..spaced]).is_some() {
+        return Err(UnitError::Malformed(text.into()));
+    }
     let split = match number_length(t) {
         n if n > 0 && n < spaced && number(&t[..spaced]).is_none() => n,
         _ => spaced,

@@ -195,7 +195,15 @@ impl ToSchema for FunctionDto {
 /// means when one is close ([`units::suggestion`]).
 pub fn unit_msg(e: &UnitError) -> Msg {
     match e {
-        UnitError::Malformed(text) => Msg::new("unit-malformed").arg("text", text),
+        UnitError::Malformed(text) => {
+            let (written, unit) = text.trim().split_once(' ').unwrap_or((text.trim(), ""));
+            match crate::units::ungrouped(written) {
+                Some(plain) => {
+                    Msg::new("unit-thousands").arg("text", text).arg("plain", format!("{plain} {unit}").trim_end())
+                }
+                None => Msg::new("unit-malformed").arg("text", text),
+            }
+        }
         UnitError::Unknown(unit) => match units::suggestion(unit) {
             Some(hint) => Msg::new("unit-unknown-hint").arg("hint", hint),
             None => Msg::new("unit-unknown"),

@@ -22,6 +22,30 @@ pub fn number(text: &str) -> Option<f64> {
     }
 }
 
+/// `text` without its thousands separators, where it is a number written
+/// with them ("1.200,5" → "1200,5", "1,200.5" → "1200.5", "1.200.000" →
+/// "1200000"): groups of three digits after the first, apart by one mark,
+/// the other mark (once, last) the decimal one. None for anything else.
+pub fn ungrouped(text: &str) -> Option<String> {
+    let t = text.trim();
+    let (sign, t) = t.strip_prefix(['-', '+']).map_or(("", t), |rest| (&text.trim()[..1], rest));
+    let marks: Vec<char> = t.chars().filter(|c| *c == '.' || *c == ',').collect();
+    let (&last, _) = marks.split_last()?;
+    let group = if marks.iter().all(|m| *m == last) && marks.len() >= 2 { last } else { *marks.first()? };
+    let (whole, decimals) = match t.rfind(|c| c != group && (c == '.' || c == ',')) {
+        Some(i) => (&t[..i], Some(&t[i..])),
+        None => (t, None),
+    };
+    let parts: Vec<&str> = whole.split(group).collect();
+    let digits = |p: &str| !p.is_empty() && p.chars().all(|c| c.is_ascii_digit());
+    let grouped = parts.len() >= 2
+        && digits(parts[0])
+        && parts[0].len() <= 3
+        && parts[1..].iter().all(|p| p.len() == 3 && digits(p))
+        && decimals.is_none_or(|d| d.len() > 1 && digits(&d[1..]));
+    grouped.then(|| format!("{sign}{}{}", parts.concat(), decimals.unwrap_or("")))
+}
+
 /// Length (bytes) of the number at the start of `t`: sign, digits, a
 /// decimal point or comma followed by digits, exponent.
 pub fn number_length(t: &str) -> usize {
@@ -118,6 +142,18 @@ fn edits_le_one(a: &str, b: &str) -> bool {
 
 #[cfg(test)]
 mod tests {
+    use super::ungrouped;
+
+    #[test]
+    fn a_number_with_thousands_separators_is_recognised() {
+        assert_eq!(ungrouped("1.200,5").as_deref(), Some("1200,5"));
+        assert_eq!(ungrouped("1,200.5").as_deref(), Some("1200.5"));
+        assert_eq!(ungrouped("-1.200.000").as_deref(), Some("-1200000"));
+        for not in ["1.2.3", "12,3,4", "1.20,5", "abc", "1,5", "1.200,"] {
+            assert_eq!(ungrouped(not), None, "{not}");
+        }
+    }
+
     use super::*;
 
     /// Decimal points and commas read the same; thousands separators and

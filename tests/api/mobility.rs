@@ -14,7 +14,8 @@ async fn mobility(app: &TestApp, body: &Value) -> Value {
 
 /// Seed 002, question 1 (the document's example): five links, five lower
 /// pairs and one higher pair in the plane, 3(5 − 1) − 2·5 − 1 = 1 (the
-/// seed's answer). In space, four links of four revolutes (Bennett's
+/// seed's answer), 12 unknowns with the driving action as the notes count
+/// them, and one input coordinate. In space, four links of four revolutes (Bennett's
 /// linkage) count 6·3 − 5·4 = −2: locked by the count.
 #[tokio::test]
 async fn counts_as_the_course_writes_them() {
@@ -22,8 +23,14 @@ async fn counts_as_the_course_writes_them() {
     let r = mobility(&app, &example("MobilityRequest")).await;
     assert_eq!((r["grubler"]["mobility"].as_i64(), r["grubler"]["equations"].as_i64()), (Some(1), Some(12)));
     assert_eq!(r["grubler"]["unknowns"], 11);
+    // The notes' count (seed 000, "previsión del número de ecuaciones y de
+    // incógnitas"): N_INC = G + 2P_I + P_II = 1 + 10 + 1 = 12, as many as the equations.
+    assert_eq!(r["grubler"]["unknowns_with_actions"], 12);
     assert_eq!(r["grubler"]["formula"], "3(5 − 1) − (2·5 + 1·1) = 1");
     assert_eq!((r["dof"].clone(), r["locked"].clone()), (Value::Null, json!(false)));
+    // The question's second half: one input coordinate, and what counts alone cannot tell.
+    let said = r["input_coordinates"].as_str().unwrap_or_default();
+    assert!(said.starts_with("one input coordinate describes the motion") && said.contains("drawing"), "{said}");
     let spatial = json!({"counts": {"space": "spatial", "bodies": 4, "pairs": {"I": 4}}});
     let r = mobility(&app, &spatial).await;
     assert_eq!((r["grubler"]["mobility"].as_i64(), r["locked"].as_bool()), (Some(-2), Some(true)));

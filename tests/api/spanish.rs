@@ -320,3 +320,16 @@ async fn an_error_read_as_text_says_why_with_its_status_aside() {
     assert!(fine.headers.get("mechdyn-status").is_none());
     assert!(fine.text.parse::<f64>().is_ok(), "{}", fine.text);
 }
+
+/// A number written with a thousands separator ("1.200,5", as a Spanish
+/// sheet formats it) is named as such, with the way to write it, in the
+/// asker's language.
+#[tokio::test]
+async fn a_thousands_separator_is_named_as_such() {
+    let app = TestApp::new().await;
+    let path = "/v1/templates/p103-slider-flywheel/result/inertia_exact?F=1.200,5&lang=es&errors=text";
+    let r = app.get(path).await;
+    assert_eq!(r.headers["mechdyn-status"], "400", "{}", r.text);
+    assert!(r.text.starts_with("F: "), "{}", r.text);
+    assert!(r.text.ends_with("'1.200,5' lleva separador de miles, que no se lee: escriba 1200,5"), "{}", r.text);
+}

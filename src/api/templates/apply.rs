@@ -40,7 +40,9 @@ pub fn request_for(t: &Template, given: &HashMap<String, String>, ignore: &[&str
     if !errors.is_empty() {
         return Err(ApiError::BadQuery(errors));
     }
-    super::derived::apply(t, &mut request).map_err(ApiError::Invalid)?;
+    let names: Vec<&str> = t.parameters.keys().map(String::as_str).collect();
+    let pointers: Vec<&str> = t.parameters.values().map(|p| p.pointer.as_str()).collect();
+    super::derived::apply(&names, &pointers, &t.derived, &mut request).map_err(ApiError::Invalid)?;
     Ok(request)
 }
 

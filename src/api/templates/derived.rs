@@ -3,7 +3,6 @@
 //! expression of the parameters' names, read in SI where the parameters
 //! put them, and written into the request after them.
 
-use super::model::Template;
 use crate::engine::expr::Expr;
 use crate::i18n::Msg;
 use crate::kind::problem::FieldError;
@@ -13,13 +12,18 @@ use std::collections::BTreeMap;
 /// Most derived values of one template.
 pub const MAX_DERIVED: usize = 100;
 
-/// Sets every derived value of `t` in `request` (its parameters already set).
-pub fn apply(t: &Template, request: &mut Value) -> Result<(), Vec<FieldError>> {
-    let names: Vec<&str> = t.parameters.keys().map(String::as_str).collect();
-    let values: Vec<f64> = t.parameters.values().map(|p| si(request.pointer(&p.pointer)).unwrap_or(f64::NAN)).collect();
+/// Sets every `derived` value in `request`, its parameters (`names`)
+/// already set there at their `pointers`.
+pub fn apply(
+    names: &[&str],
+    pointers: &[&str],
+    derived: &BTreeMap<String, String>,
+    request: &mut Value,
+) -> Result<(), Vec<FieldError>> {
+    let values: Vec<f64> = pointers.iter().map(|p| si(request.pointer(p)).unwrap_or(f64::NAN)).collect();
     let mut errors = Vec::new();
-    for (pointer, source) in &t.derived {
-        let value = Expr::compile(source, &names).map(|e| e.eval(&values));
+    for (pointer, source) in derived {
+        let value = Expr::compile(source, names).map(|e| e.eval(&values));
         match (value, request.pointer_mut(pointer)) {
             (Ok(v), Some(slot)) if v.is_finite() => {
                 *slot = serde_json::Number::from_f64(v).map_or(Value::Null, Value::Number)

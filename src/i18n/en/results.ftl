@@ -73,6 +73,10 @@ warning-dynamics-chatter = the contacts changed between rolling and slipping { $
 ## Mobility
 
 warning-mobility-grubler = Grübler's count gives { $grubler } but the drawing moves with { $dof }: { $count } constraint(s) repeat what the others impose (a special geometry, such as parallel links), so the count does not see them
+mobility-counts-inputs = { $inputs ->
+        [one] one input coordinate describes
+       *[other] { $inputs } input coordinates describe
+    } the motion (with one, any coordinate that moves serves: an angle, a slide); which joints can serve together depends on the geometry, which counts alone cannot tell: send the mechanism's drawing for its candidate inputs
 
 ## A check of students' answers
 

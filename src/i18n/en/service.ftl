@@ -69,6 +69,7 @@ detail-internal = internal error; the x-request-id header of this answer finds i
 ## Quantities and units
 
 unit-malformed = '{ $text }' is not a number followed by a unit, e.g. "300 rpm"
+unit-thousands = '{ $text }' has a thousands separator, which is not read: write { $plain }
 unit-unknown = unknown unit '{ $unit }'; known units: { $known }
 unit-unknown-hint = unknown unit '{ $unit }'; did you mean { $hint }? Known units: { $known }
 unit-wrong-dimension = a value in { $found } where { $expected } is expected

@@ -82,6 +82,10 @@ warning-mobility-grubler = el criterio de Grübler da { $grubler } pero el dibuj
         [one] una restricción repite
        *[other] { $count } restricciones repiten
     } lo que imponen las demás (una geometría especial, como barras paralelas), y el recuento no las ve
+mobility-counts-inputs = { $inputs ->
+        [one] una coordenada de entrada describe
+       *[other] { $inputs } coordenadas de entrada describen
+    } el movimiento (con una, sirve cualquier coordenada que se mueva: un ángulo, un desplazamiento); qué pares pueden servir juntos depende de la geometría, que los recuentos solos no dicen: envíe el dibujo del mecanismo para sus entradas posibles
 
 ## La corrección de las respuestas de los alumnos
 

@@ -69,6 +69,7 @@ detail-internal = error interno; la cabecera x-request-id de esta respuesta lo e
 ## Magnitudes y unidades
 
 unit-malformed = '{ $text }' no es un número seguido de una unidad, p. ej. "300 rpm" o "0,02"
+unit-thousands = '{ $text }' lleva separador de miles, que no se lee: escriba { $plain }
 unit-unknown = unidad desconocida '{ $unit }'; unidades conocidas: { $known }
 unit-unknown-hint = unidad desconocida '{ $unit }'; ¿quería decir { $hint }? Unidades conocidas: { $known }
 unit-wrong-dimension = un valor en { $found } donde se espera { $expected }

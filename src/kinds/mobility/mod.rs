@@ -7,6 +7,7 @@
 //! pair of class k leaves k relative freedoms), M the mobility.
 
 use crate::engine::mobility::{Space, candidate_inputs, kutzbach, mobility};
+use crate::engine::model::Grubler;
 use crate::i18n::Msg;
 use crate::kind::limits::Limits;
 use crate::kind::notes::Notes;
@@ -66,6 +67,24 @@ pub struct Count {
     pub unknowns: i64,
     /// The count written out, e.g. `3(5 − 1) − (2·5 + 1·1) = 1`.
     pub formula: String,
+    /// The kinetostatic problem's unknowns as the course's notes count them:
+    /// the driving actions (one an input coordinate, the mobility) and the
+    /// reactions, N_INC = G + 2P_I + P_II in the plane (12 for seed 002's
+    /// question 1, as many as its 3(N − 1) equations).
+    pub unknowns_with_actions: i64,
+}
+
+impl Count {
+    fn of(g: Grubler, formula: String) -> Self {
+        let actions = g.mobility.max(0);
+        Count {
+            formula,
+            mobility: g.mobility,
+            equations: g.equations,
+            unknowns: g.unknowns,
+            unknowns_with_actions: actions + g.unknowns,
+        }
+    }
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
@@ -82,6 +101,9 @@ pub struct MobilityResult {
     pub candidate_inputs: Vec<String>,
     /// Joints whose reactions equilibrium cannot determine (redundant constraints).
     pub indeterminate_joints: Vec<String>,
+    /// For counts: how many input coordinates describe the motion, and what
+    /// counts alone cannot tell of which (null for a drawing: see `candidate_inputs`).
+    pub input_coordinates: Option<String>,
     #[serde(flatten)]
     pub notes: Notes,
 }
@@ -108,6 +130,7 @@ impl Kind for Mobility {
         ("/grubler/mobility", "1"),
         ("/grubler/equations", "1"),
         ("/grubler/unknowns", "1"),
+        ("/grubler/unknowns_with_actions", "1"),
         ("/redundant_constraints", "1"),
     ];
     type Request = MobilityRequest;
@@ -150,16 +173,12 @@ fn drawn(dto: &MechanismDto, unknown: Vec<FieldError>, limits: &Limits) -> Resul
     }
     Ok(MobilityResult {
         dof: Some(dof),
-        grubler: Count {
-            formula: formula(Space::Planar, m.bodies.len() as i64, &m.pairs(), g.mobility),
-            mobility: g.mobility,
-            equations: g.equations,
-            unknowns: g.unknowns,
-        },
+        grubler: Count::of(g, formula(Space::Planar, m.bodies.len() as i64, &m.pairs(), g.mobility)),
         redundant_constraints: Some(found.redundant_constraints as i64),
         locked: dof == 0,
         candidate_inputs: candidates.iter().map(name).collect(),
         indeterminate_joints: found.indeterminate_joints.iter().map(name).collect(),
+        input_coordinates: None,
         notes,
     })
 }
@@ -194,19 +213,19 @@ fn counted(c: &PairCounts, unknown: Vec<FieldError>) -> Result<MobilityResult, A
         return Err(ApiError::Invalid(errors));
     }
     let g = kutzbach(space, c.bodies, &pairs);
+    let mut notes = Notes::default();
+    // The question's second half: how many input coordinates, and what counts alone cannot tell.
+    let inputs = Msg::new("mobility-counts-inputs").count("inputs", g.mobility.max(0) as usize);
+    let input_coordinates = (g.mobility > 0).then(|| notes.say("/input_coordinates", inputs));
     Ok(MobilityResult {
         dof: None,
-        grubler: Count {
-            formula: formula(space, c.bodies, &pairs, g.mobility),
-            mobility: g.mobility,
-            equations: g.equations,
-            unknowns: g.unknowns,
-        },
+        grubler: Count::of(g, formula(space, c.bodies, &pairs, g.mobility)),
         redundant_constraints: None,
         locked: g.mobility <= 0,
         candidate_inputs: Vec::new(),
         indeterminate_joints: Vec::new(),
-        notes: Notes::default(),
+        input_coordinates,
+        notes,
     })
 }
 
