@@ -173,28 +173,27 @@ impl System<'_> {
     /// until it does, at most 30 times; else the first step that does not
     /// reduce |c| ends them).
     fn newton(&self, mut x: DVector<f64>, iterations: &mut usize, damped: bool) -> DVector<f64> {
-        let mut c = evaluate(&x, self.dimensions).0;
+        let (mut c, mut j) = evaluate(&x, self.dimensions);
         for _ in 0..MAX_ITERATIONS {
             if self.deadline.expired() || c.amax() == 0.0 {
                 break;
             }
             *iterations += 1;
-            let j = evaluate(&x, self.dimensions).1;
             let Some(delta) = self.step(&j, &c) else { break };
             let mut t = 1.0;
             let next = loop {
                 let y = &x + t * &delta;
-                let cy = evaluate(&y, self.dimensions).0;
+                let (cy, jy) = evaluate(&y, self.dimensions);
                 if cy.amax() < c.amax() {
-                    break Some((y, cy));
+                    break Some((y, cy, jy));
                 }
                 t *= 0.5;
                 if !damped || t < 1e-9 {
                     break None;
                 }
             };
-            let Some((y, cy)) = next else { break };
-            (x, c) = (y, cy);
+            let Some((y, cy, jy)) = next else { break };
+            (x, c, j) = (y, cy, jy);
         }
         x
     }

@@ -45,7 +45,7 @@ pub fn apply(
 pub fn errors(derived: &BTreeMap<String, String>, parameters: &[&str], request: &Value) -> Vec<FieldError> {
     let mut errors = Vec::new();
     if derived.len() > MAX_DERIVED {
-        errors.push(FieldError::said("/derived", Msg::new("template-parameters-too-many").count("max", MAX_DERIVED)));
+        errors.push(FieldError::said("/derived", Msg::new("template-derived-too-many").count("max", MAX_DERIVED)));
     }
     for (pointer, source) in derived {
         let at = format!("/derived/{}", crate::kind::problem::escape(pointer));

@@ -412,6 +412,7 @@ template-parameter-reserved = '{ $name }' is reserved in a template's URL ({ $re
 template-pointer-scalar = must point at a number or a text of the request
 template-pointer-missing = { $pointer } is not in the request
 template-min-above-max = min { $min } is above max { $max }
+template-derived-too-many = at most { $max } derived values
 template-derived-expression = the derived value's expression does not read: { $why }
 template-derived-finite = the derived value comes out as { $value }, not a finite number
 

@@ -412,6 +412,7 @@ template-parameter-reserved = '{ $name }' está reservado en la URL de una plant
 template-pointer-scalar = debe apuntar a un número o a un texto de la petición
 template-pointer-missing = { $pointer } no está en la petición
 template-min-above-max = min { $min } está por encima de max { $max }
+template-derived-too-many = como mucho { $max } valores derivados
 template-derived-expression = la expresión del valor derivado no se entiende: { $why }
 template-derived-finite = el valor derivado sale { $value }, no un número finito
 

@@ -182,10 +182,13 @@ impl TrainRequest {
         for ring in self.meshes.iter().filter(|m| m.internal == Some(true)) {
             let suns = self.meshes.iter().filter(|m| m.internal != Some(true) && carrier(m) == carrier(ring));
             for sun in suns {
-                let (z_sun, z_planet) = match () {
-                    _ if sun.b == ring.a => (sun.teeth_a, sun.teeth_b),
-                    _ if sun.a == ring.a => (sun.teeth_b, sun.teeth_a),
-                    _ => continue,
+                // The planet is the ring mesh's first wheel; the sun its partner in this mesh.
+                let (z_sun, z_planet) = if sun.b == ring.a {
+                    (sun.teeth_a, sun.teeth_b)
+                } else if sun.a == ring.a {
+                    (sun.teeth_b, sun.teeth_a)
+                } else {
+                    continue;
                 };
                 let fits = z_sun + z_planet + ring.teeth_a;
                 if (ring.teeth_b - fits).abs() > 1e-9 {
