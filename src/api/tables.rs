@@ -69,13 +69,26 @@ pub enum Decimal {
 }
 
 impl Decimal {
-    /// `?decimal=point|comma` of a read's query, 400 otherwise.
+    /// `?decimal=point|comma` of a read's query (a point without it), 400 otherwise.
     pub fn of(q: &std::collections::HashMap<String, String>) -> Result<Self, ApiError> {
+        Ok(Self::asked(q)?.unwrap_or(Self::Point))
+    }
+
+    /// `?decimal=point|comma` of a read's query, if given; 400 otherwise.
+    pub fn asked(q: &std::collections::HashMap<String, String>) -> Result<Option<Self>, ApiError> {
         match q.get("decimal").map(|t| t.trim().to_ascii_lowercase()).as_deref() {
-            None | Some("point") => Ok(Self::Point),
-            Some("comma") => Ok(Self::Comma),
+            None => Ok(None),
+            Some("point") => Ok(Some(Self::Point)),
+            Some("comma") => Ok(Some(Self::Comma)),
             Some(_) => Err(ApiError::BadQuery(vec![FieldError::parameter_said("decimal", Msg::new("query-decimal"))])),
         }
+    }
+
+    /// The mark of a CSV answer to a CSV sent with `delimiter`, unless the
+    /// query says: a `;`-separated sheet (a European spreadsheet's) is
+    /// answered in its own way, `;` and decimal commas.
+    pub fn as_sent(delimiter: u8) -> Self {
+        if delimiter == b';' { Self::Comma } else { Self::Point }
     }
 
     /// A cell or a plain answer as this mark writes it: a number's decimal

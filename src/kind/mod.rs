@@ -14,6 +14,7 @@ pub mod function_csv;
 pub mod function_read;
 pub mod limits;
 pub mod notes;
+pub mod noticed;
 pub mod plots;
 pub mod problem;
 pub mod quantity;
@@ -102,18 +103,33 @@ pub fn compute<K: Kind>(
     limits: &Limits,
 ) -> Result<K::Result, ApiError> {
     let limits = &limits.started();
-    let mut result = K::compute(request, unknown, limits).map_err(|e| match e {
+    let (computed, noticed) = noticed::gather(|| K::compute(request, unknown, limits));
+    let mut result = computed.map_err(|e| match e {
         // Refused as invalid once the budget had run out: the reading was stopped by it.
         ApiError::Invalid(_) if limits.deadline().expired() => {
             ApiError::OverBudget(refused::engine_msg(&limits.deadline().exceeded(Progress::Reading)))
         }
+        ApiError::Invalid(errors) => ApiError::Invalid(beside(errors, noticed.clone())),
         e => e,
     })?;
     if let Some(notes) = result.notes() {
         let sent = serde_json::from_slice::<Value>(raw).unwrap_or_default();
         notes.extend(crate::kind::constants::unused(&sent));
+        let at = |(pointer, msg): (String, Msg)| Msg::new("warning-at-field").arg("pointer", pointer).with("said", msg);
+        notes.extend(noticed.into_iter().map(at));
     }
     Ok(result)
+}
+
+/// A refusal's errors and, each at its field, what the reading noticed
+/// about the fields they concern (a bare 360 read as radians beside "the
+/// sweep is too long").
+fn beside(mut errors: Vec<FieldError>, noticed: Vec<(String, Msg)>) -> Vec<FieldError> {
+    let concerns = |p: &str| errors.iter().any(|e| e.pointer.as_deref().is_some_and(|q| noticed::related(p, q)));
+    let kept: Vec<FieldError> =
+        noticed.into_iter().filter(|(p, _)| concerns(p)).map(|(p, msg)| FieldError::said(p, msg)).collect();
+    errors.extend(kept);
+    errors
 }
 
 /// The unit of `pointer` in a table of patterns.

@@ -22,21 +22,44 @@ pub struct FieldError {
     /// Name of the query parameter.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub parameter: Option<String>,
+    /// Row of a CSV body, counted as a spreadsheet counts them (the header
+    /// is row 1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub row: Option<u32>,
+    /// Column of a CSV body, by its header's name.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub column: Option<String>,
     pub message: String,
-    /// The message as the catalogue has it, rendered in the asker's language.
+    /// The message as the catalogue has it, rendered in the asker's language
+    /// (boxed: an error is small on the paths that return it).
     #[serde(skip)]
-    pub text: Option<Msg>,
+    pub text: Option<Box<Msg>>,
 }
 
 impl FieldError {
     /// An error at `pointer` said by the catalogue's `msg`.
     pub fn said(pointer: impl Into<String>, msg: Msg) -> Self {
-        Self { pointer: Some(pointer.into()), parameter: None, message: msg.render(Lang::En), text: Some(msg) }
+        Self { pointer: Some(pointer.into()), ..Self::of(msg) }
     }
 
     /// An error of the query parameter `name` said by the catalogue's `msg`.
     pub fn parameter_said(name: impl Into<String>, msg: Msg) -> Self {
-        Self { pointer: None, parameter: Some(name.into()), message: msg.render(Lang::En), text: Some(msg) }
+        Self { parameter: Some(name.into()), ..Self::of(msg) }
+    }
+
+    /// An error of a CSV body, at its `row` (the header is row 1) and
+    /// `column` where it has them, said by the catalogue's `msg`.
+    pub fn cell(row: Option<usize>, column: Option<&str>, msg: Msg) -> Self {
+        Self {
+            row: row.map(|r| u32::try_from(r).unwrap_or(u32::MAX)),
+            column: column.map(String::from),
+            ..Self::of(msg)
+        }
+    }
+
+    /// `msg`, nowhere yet.
+    fn of(msg: Msg) -> Self {
+        Self { text: Some(Box::new(msg.clone())), ..Self::plain(msg.render(Lang::En)) }
     }
 
     /// This error with its message in `lang` (where the catalogue has it).
@@ -47,20 +70,28 @@ impl FieldError {
         self
     }
 
-    /// "where: message" (the query parameter or the pointer), for a person.
+    /// "where: message" (the query parameter, the pointer, or the CSV's
+    /// column), for a person.
     pub fn describe(&self) -> String {
-        match (&self.parameter, &self.pointer) {
-            (Some(p), _) | (None, Some(p)) if !p.is_empty() => format!("{p}: {}", self.message),
+        match (&self.parameter, &self.pointer, &self.column) {
+            (Some(p), _, _) | (None, Some(p), _) | (None, None, Some(p)) if !p.is_empty() => {
+                format!("{p}: {}", self.message)
+            }
             _ => self.message.clone(),
         }
     }
 
     pub fn at(pointer: impl Into<String>, message: impl Into<String>) -> Self {
-        Self { pointer: Some(pointer.into()), parameter: None, message: message.into(), text: None }
+        Self { pointer: Some(pointer.into()), ..Self::plain(message) }
     }
 
     pub fn parameter(name: impl Into<String>, message: impl Into<String>) -> Self {
-        Self { pointer: None, parameter: Some(name.into()), message: message.into(), text: None }
+        Self { parameter: Some(name.into()), ..Self::plain(message) }
+    }
+
+    /// A message not from the catalogue, nowhere yet.
+    fn plain(message: impl Into<String>) -> Self {
+        Self { pointer: None, parameter: None, row: None, column: None, message: message.into(), text: None }
     }
 }
 
@@ -97,6 +128,8 @@ pub enum ApiError {
     PayloadTooLarge(usize),
     Invalid(Vec<FieldError>),
     BadQuery(Vec<FieldError>),
+    /// A CSV body's rows or columns that cannot be read, each by row and column.
+    BadTable(Vec<FieldError>),
     NotFound(String),
     NoPart {
         id: String,
@@ -166,6 +199,7 @@ impl ApiError {
             }
             Self::Invalid(_) => (StatusCode::UNPROCESSABLE_ENTITY, "invalid-request", "problem-invalid-request"),
             Self::BadQuery(_) => (StatusCode::BAD_REQUEST, "invalid-query", "problem-invalid-query"),
+            Self::BadTable(_) => (StatusCode::BAD_REQUEST, "invalid-table", "problem-invalid-table"),
             Self::NotFound(_) => (StatusCode::NOT_FOUND, "not-found", "problem-job-not-found"),
             Self::NoRoute => (StatusCode::NOT_FOUND, "not-found", "problem-not-found"),
             Self::NoTemplate(_) => (StatusCode::NOT_FOUND, "not-found", "problem-template-not-found"),
@@ -203,7 +237,7 @@ impl ApiError {
     /// The field errors, each as "where: message" (a page shows them).
     pub fn fields(&self) -> &[FieldError] {
         match self {
-            Self::Invalid(e) | Self::BadQuery(e) | Self::ResultTooLarge { errors: e, .. } => e,
+            Self::Invalid(e) | Self::BadQuery(e) | Self::BadTable(e) | Self::ResultTooLarge { errors: e, .. } => e,
             _ => &[],
         }
     }
@@ -229,7 +263,9 @@ impl ApiError {
     pub fn problem(&self) -> Problem {
         let (status, kind, title) = self.parts();
         let errors = match self {
-            Self::Invalid(e) | Self::BadQuery(e) | Self::ResultTooLarge { errors: e, .. } => e.clone(),
+            Self::Invalid(e) | Self::BadQuery(e) | Self::BadTable(e) | Self::ResultTooLarge { errors: e, .. } => {
+                e.clone()
+            }
             _ => Vec::new(),
         };
         let lang = i18n::current();

@@ -43,7 +43,7 @@ impl<'de> Visitor<'de> for QuantityVisitor {
     type Value = Quantity;
 
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-        f.write_str("a number (SI) or a string \"VALUE UNIT\" such as \"300 rpm\"")
+        f.write_str("json-expect-quantity")
     }
     fn visit_f64<E: de::Error>(self, v: f64) -> Result<Quantity, E> {
         Ok(Quantity::Number(v))
@@ -148,7 +148,7 @@ impl<'de> Visitor<'de> for FunctionVisitor {
     type Value = FunctionDto;
 
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-        f.write_str("a number, a quantity string, or an object with expr, segments or table")
+        f.write_str("json-expect-function")
     }
     fn visit_f64<E: de::Error>(self, v: f64) -> Result<FunctionDto, E> {
         QuantityVisitor.visit_f64(v).map(FunctionDto::Constant)
@@ -219,6 +219,19 @@ pub fn unit_msg(e: &UnitError) -> Msg {
             Msg::new("unit-wrong-dimension").with("found", name(found)).with("expected", name(expected))
         }
     }
+}
+
+/// An angle in degrees written with another word for them (`20 grados`,
+/// `20 gr`, `20 g`): refused with the way to write it ("20°").
+fn degrees_in_words(text: &str) -> Option<Msg> {
+    let t = text.trim();
+    let number_ends = t.find(|c: char| !(c.is_ascii_digit() || ".,+-eE".contains(c))).unwrap_or(t.len());
+    let (n, unit) = (t[..number_ends].trim(), t[number_ends..].trim().trim_end_matches('.'));
+    let degrees = ["g", "gr", "gra", "grad", "grd", "d", "dg", "dgr", "degree"];
+    let meant = degrees.iter().any(|d| unit.eq_ignore_ascii_case(d))
+        || units::suggestion(unit).is_some_and(|s| s == "deg")
+        || unit.to_lowercase().starts_with("grado");
+    (!n.is_empty() && meant).then(|| Msg::new("field-angle-degrees").arg("text", text).arg("n", n))
 }
 
 /// Collects (pointer, message) errors while converting a request, under
@@ -294,6 +307,12 @@ impl Errors {
             self.short(s, QUANTITY_MAX_LENGTH, at)?;
         }
         if let Quantity::Text(s) = q
+            && units::parse_as(s, Dim::ANGLE).is_err()
+            && let Some(said) = degrees_in_words(s)
+        {
+            return self.refuse(at, said);
+        }
+        if let Quantity::Text(s) = q
             && units::parse_quantity(s).is_err()
         {
             let (length, depth) = (self.limits.expression_length, self.limits.expression_depth);
@@ -301,6 +320,9 @@ impl Errors {
                 Ok(Some(v)) if v.is_finite() => Some(v),
                 _ => self.refuse(at, Msg::new("field-not-angle").arg("text", s)),
             };
+        }
+        if let Quantity::Number(v) = q {
+            super::noticed::bare_angle(*v, at);
         }
         self.quantity(q, Dim::ANGLE, at)
     }

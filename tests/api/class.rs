@@ -255,7 +255,8 @@ async fn a_class_file_s_mistakes_are_said_where_they_are() {
         csv::Reader::from_reader(r.text.as_bytes()).records().map(Result::unwrap).collect();
     let errors: Vec<(&str, &str, &str)> = rows.iter().map(|r| (&r[0], &r[1], &r[5])).collect();
     assert_eq!(errors[0], ("ana", "1", ""));
-    assert!(errors[1].2.contains("row 2 has 2 cells for 4 columns"), "{errors:?}");
+    // Rows as the sheet counts them: the header is row 1, bob's row 3.
+    assert!(errors[1].2.contains("row 3 has 2 cells for 4 columns"), "{errors:?}");
     assert!(errors[2].2.contains("student ana appears twice"), "{errors:?}");
     assert!(errors[3].2.contains("not both"), "{errors:?}");
     assert!(errors[4].2.contains("no variant"), "{errors:?}");
@@ -264,21 +265,27 @@ async fn a_class_file_s_mistakes_are_said_where_they_are() {
         .post_raw("/v1/templates/p103-class/grade", "text/csv", "student,variant,inertia_exakt\nana,1,3\nbob,2,4\n")
         .await;
     assert_eq!(typo.status, StatusCode::BAD_REQUEST, "{}", typo.text);
+    // Named as the CSV's column in its header row, not as a query parameter.
+    assert_eq!(typo.json()["type"], "/problems/invalid-table", "{}", typo.text);
     let errors = typo.json()["errors"].clone();
     assert_eq!(errors.as_array().unwrap().len(), 1, "{errors}");
-    assert_eq!(errors[0]["parameter"], "inertia_exakt");
+    assert_eq!(errors[0]["column"], "inertia_exakt");
+    assert_eq!(errors[0]["row"], 1);
+    assert!(errors[0].get("parameter").is_none(), "{errors}");
 
     let no_ranges = app
         .post_raw("/v1/templates/p103-slider-flywheel/grade", "text/csv", "student,variant,inertia_exact\nana,1,3\n")
         .await;
     assert_eq!(no_ranges.status, StatusCode::BAD_REQUEST, "{}", no_ranges.text);
     assert!(no_ranges.text.contains("every variant would be its defaults"), "{}", no_ranges.text);
+    assert_eq!(no_ranges.json()["errors"][0]["column"], "variant", "{}", no_ranges.text);
     assert_eq!(app.get("/v1/templates/p103-slider-flywheel/variants").await.status, StatusCode::BAD_REQUEST);
 
     let european = format!("student;variant;inertia_approximate\nana;1;{}\n", format!("{v1:.3}").replace('.', ","));
     let r = app.post_raw("/v1/templates/p103-class/grade", "text/csv", european).await;
     assert_eq!(r.status, StatusCode::OK, "{}", r.text);
-    assert!(r.text.lines().nth(1).unwrap().starts_with("ana,1,true,"), "{}", r.text);
+    // Answered in the sheet's own way: `;` and decimal commas.
+    assert!(r.text.lines().nth(1).unwrap().starts_with("ana;1;true;"), "{}", r.text);
 }
 
 /// A CSV over the limit on a request body is the same 413 problem as a JSON

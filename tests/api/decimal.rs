@@ -103,8 +103,20 @@ async fn a_study_from_a_spanish_sheet() {
     assert_eq!(values(&quoted.text, b','), en);
     let unquoted = app.post_raw(path, "text/csv", "F,eps\n1200,5,0.03\n").await;
     assert_eq!(unquoted.status, StatusCode::BAD_REQUEST, "{}", unquoted.text);
-    let message = unquoted.json()["errors"][0]["message"].as_str().unwrap().to_string();
-    assert!(message.contains("row 1 has 3 cells for 2 columns") && message.contains("in quotes"), "{message}");
+    let error = &unquoted.json()["errors"][0];
+    assert_eq!((error["row"].clone(), unquoted.json()["type"].clone()), (json!(2), json!("/problems/invalid-table")));
+    let message = error["message"].as_str().unwrap().to_string();
+    assert!(message.contains("row 2 has 3 cells for 2 columns") && message.contains("in quotes"), "{message}");
+    // A `;`-separated sheet is answered in its own way without `?decimal=comma`;
+    // `?decimal=point` still says otherwise.
+    let as_sent = app.post_raw(path, "text/csv", "F;eps\n1200,5;0,03\n800;0,05\n").await;
+    assert_eq!(values(&as_sent.text, b';'), es, "{}", as_sent.text);
+    let point = app.post_raw(&format!("{path}&decimal=point"), "text/csv", "F;eps\n1200,5;0,03\n800;0,05\n").await;
+    assert_eq!(values(&point.text, b','), en, "{}", point.text);
+    // One cell too many in a `;`-separated sheet is not a decimal comma: the hint is not given.
+    let long = app.post_raw(path, "text/csv", "F;eps\n1200,5;0,03;9\n").await;
+    let message = long.json()["errors"][0]["message"].as_str().unwrap().to_string();
+    assert!(message.contains("row 2 has 3 cells for 2 columns") && !message.contains("quotes"), "{message}");
 }
 
 /// Every other text answer with `?decimal=comma`: the values and the job's

@@ -333,3 +333,96 @@ async fn a_thousands_separator_is_named_as_such() {
     assert!(r.text.starts_with("F: "), "{}", r.text);
     assert!(r.text.ends_with("'1.200,5' lleva separador de miles, que no se lee: escriba 1200,5"), "{}", r.text);
 }
+
+/// serde's own words never reach a Spanish asker: a two-way choice ("o",
+/// not "or"), and what the service's readers expect (a point by name or
+/// coordinates), in the catalogue's Spanish.
+#[tokio::test]
+async fn the_readers_expectations_in_spanish() {
+    let app = TestApp::new().await;
+    let counts = json!({"counts": {"space": "plano", "bodies": 4, "pairs": {"I": 4}}});
+    let said = field_messages(&app, "/v1/mobility", &counts, true).await;
+    assert_eq!(
+        said,
+        [("/counts/space".into(), "variante desconocida \"plano\", se esperaba \"planar\" o \"spatial\"".into())]
+    );
+    let mut k1 = request("k1_offset_slider_crank");
+    k1["mechanism"]["joints"][0]["at"] = json!({"x": 0});
+    let said = field_messages(&app, "/v1/kinetostatics", &k1, true).await;
+    let expected = "se esperaba el nombre de un punto o sus coordenadas [x, y] y llegó un objeto";
+    assert_eq!(said, [("/mechanism/joints/0/at".into(), expected.into())]);
+    let mut k1 = request("k1_offset_slider_crank");
+    k1["input"]["start"] = json!(["0", "deg"]);
+    let said = field_messages(&app, "/v1/kinetostatics", &k1, true).await;
+    let expected = "se esperaba un número (SI) o un texto \"VALOR UNIDAD\" como \"300 rpm\" y llegó una lista";
+    assert_eq!(said, [("/input/start".into(), expected.into())]);
+}
+
+/// Degrees written with another word ("20 grados", "20 gr", "20 g") are
+/// refused with the way to write them; a bare 360 where degrees look meant
+/// is read in radians, as the contract says, and the result says how to
+/// write degrees, at the field; beside a refusal of the same field the
+/// same words explain it.
+#[tokio::test]
+async fn degrees_are_answered_with_the_way_to_write_them() {
+    let app = TestApp::new().await;
+    for (written, n) in [("20 grados", "20"), ("22,5 gr", "22,5"), ("20 g", "20")] {
+        let mut k1 = request("k1_offset_slider_crank");
+        k1["input"]["start"] = json!(written);
+        let said = field_messages(&app, "/v1/kinetostatics", &k1, true).await;
+        let expected =
+            format!("'{written}' no es un ángulo tal como está escrito: los grados se escriben \"{n}°\" o \"{n} deg\"");
+        assert_eq!(said, [("/input/start".to_string(), expected)], "{written}");
+    }
+    let mut k1 = request("k1_offset_slider_crank");
+    k1["input"]["end"] = json!(360);
+    let r = in_spanish(&app, "POST", "/v1/kinetostatics", Some(&k1)).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let warnings = r.json()["result"]["warnings"].clone();
+    let expected = "/input/end: el número sin unidad 360 se lee en radianes (20626°); para grados escriba \"360°\"";
+    assert!(warnings.as_array().unwrap().iter().any(|w| w == expected), "{warnings}");
+    let english = app.get(&format!("/v1/jobs/{}", r.json()["id"].as_str().unwrap())).await.json();
+    let warnings = english["result"]["warnings"].to_string();
+    assert!(
+        warnings.contains("the bare number 360 is read in radians (20626°); for degrees write \\\"360°\\\""),
+        "{warnings}"
+    );
+    // An angle that is plainly radians (π/2) is not remarked on.
+    k1["input"]["end"] = json!(std::f64::consts::FRAC_PI_2);
+    let r = app.post("/v1/kinetostatics", &k1).await;
+    assert!(!r.text.contains("bare number"), "{}", r.text);
+    // A cam's largest pressure angle of 30 (radians): refused, and the reason said beside it.
+    let mut cam = crate::helpers::example("CamRequest");
+    cam["size"] = json!({"max_pressure_angle": 30});
+    let r = app.post("/v1/cams", &cam).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let errors = r.json()["errors"].clone();
+    let at = |e: &Value| e["pointer"] == "/size/max_pressure_angle";
+    let said: Vec<&str> =
+        errors.as_array().unwrap().iter().filter(|e| at(e)).filter_map(|e| e["message"].as_str()).collect();
+    assert!(said.iter().any(|m| m.contains("for degrees write \"30°\"")), "{errors}");
+}
+
+/// A CSV's mistakes are named by the sheet's row and column, not as query
+/// parameters, under their own problem type, in the asker's language.
+#[tokio::test]
+async fn a_csv_row_is_named_as_a_csv_row() {
+    let app = TestApp::new().await;
+    let path = "/v1/templates/p103-slider-flywheel/table?values=inertia_exact&lang=es";
+    let r = app.post_raw(path, "text/csv", "F;eps\n500;0,04\n\n600;0,03;7\n").await;
+    assert_eq!(r.status, StatusCode::BAD_REQUEST, "{}", r.text);
+    let p = r.json();
+    assert_eq!(
+        (p["type"].as_str(), p["title"].as_str()),
+        (Some("/problems/invalid-table"), Some("La tabla CSV no es válida"))
+    );
+    assert_eq!(p["errors"][0]["row"], 4, "the blank row counts, as in the sheet: {p}");
+    assert_eq!(p["errors"][0]["message"], "la fila 4 tiene 3 celdas para 2 columnas");
+    assert!(p["errors"][0].get("parameter").is_none(), "{p}");
+    let r = app.post_raw(path, "text/csv", "F;epsilon\n500;0,04\n").await;
+    let e = &r.json()["errors"][0];
+    assert_eq!((e["row"].clone(), e["column"].clone()), (json!(1), json!("epsilon")), "{}", r.text);
+    assert!(
+        e["message"].as_str().unwrap().starts_with("la plantilla p103-slider-flywheel no tiene el parámetro epsilon")
+    );
+}

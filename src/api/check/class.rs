@@ -12,7 +12,7 @@ use crate::api::json::RawBody;
 use crate::api::read;
 use crate::api::tables;
 use crate::api::tables::Csv;
-use crate::api::templates::table::{self, Column, bad, parameters_of, ragged, read_csv, said};
+use crate::api::templates::table::{self, Column, Sheet, bad, bad_cell, parameters_of, ragged, read_csv, said};
 use crate::api::templates::{RESERVED, Template, Want, find, job_for, texts, variants};
 use crate::i18n::Msg;
 use crate::kind::problem::{ApiError, FieldError};
@@ -73,7 +73,7 @@ struct Layout {
 
 fn layout(t: &Template, header: &[Column]) -> Result<Layout, ApiError> {
     let find = |name: &str| header.iter().position(|(_, n, _)| n == name);
-    let student = find("student").ok_or_else(|| bad("body", Msg::new("class-student-column")))?;
+    let student = find("student").ok_or_else(|| bad_cell(Some(1), None, Msg::new("class-student-column")))?;
     let variant = find("variant");
     let answers: Vec<(usize, String, Option<String>)> = header
         .iter()
@@ -84,10 +84,10 @@ fn layout(t: &Template, header: &[Column]) -> Result<Layout, ApiError> {
         .map(|(i, (_, n, u))| (i, n.trim_start_matches('/').to_string(), u.clone()))
         .collect();
     if answers.is_empty() {
-        return Err(bad("body", Msg::new("class-answers-none")));
+        return Err(bad_cell(Some(1), None, Msg::new("class-answers-none")));
     }
     if let Some((_, n, _)) = answers.iter().find(|(_, n, _)| RESERVED.contains(&n.as_str())) {
-        return Err(bad(n, Msg::new("class-reserved")));
+        return Err(bad_cell(Some(1), Some(n), Msg::new("class-reserved")));
     }
     Ok(Layout { student, variant, answers })
 }
@@ -100,11 +100,10 @@ pub async fn class(
     body: &[u8],
 ) -> Result<String, ApiError> {
     let (tolerance, reveal) = options(q)?;
-    let text = std::str::from_utf8(body).map_err(|_| bad("body", Msg::new("csv-not-utf8")))?;
-    let (header, rows) = read_csv(text)?;
+    let Sheet { header, rows, lines, delimiter } = read_csv(body)?;
     let l = layout(t, &header)?;
     if l.variant.is_some() {
-        variants::drawable(t).map_err(|why| bad("variant", why))?;
+        variants::drawable(t).map_err(|why| bad_cell(Some(1), Some("variant"), why))?;
     }
     let params: Vec<Column> = header
         .iter()
@@ -112,7 +111,8 @@ pub async fn class(
         .filter(|(i, _)| *i != l.student && Some(*i) != l.variant && !l.answers.iter().any(|a| a.0 == *i))
         .map(|(_, c)| c.clone())
         .collect();
-    let mut out = Csv::new(crate::api::tables::Decimal::of(q)?);
+    let decimal = crate::api::tables::Decimal::asked(q)?;
+    let mut out = Csv::new(decimal.unwrap_or(crate::api::tables::Decimal::as_sent(delimiter)));
     let mut head = vec!["student".to_string(), "score".to_string()];
     for (_, name, _) in &l.answers {
         head.extend([format!("{name} pass"), format!("{name} relative_error")]);
@@ -122,12 +122,12 @@ pub async fn class(
     let (mut seen, mut students) = (References::default(), HashSet::new());
     // The rows share one job's budget ([`table::spent`]).
     let deadline = state.limits.deadline();
-    for (i, row) in rows.iter().enumerate() {
+    for (row, &line) in rows.iter().zip(&lines) {
         let student = row.get(l.student).cloned().unwrap_or_default();
-        let refused = ragged(&header, row, i)
+        let refused = ragged(&header, row, line, delimiter)
             .map(|m| m.text())
             .or_else(|| deadline.expired().then(|| table::spent(state).text()))
-            .or_else(|| student.is_empty().then(|| Msg::new("class-row-no-student").count("row", i + 1).text()))
+            .or_else(|| student.is_empty().then(|| Msg::new("class-row-no-student").count("row", line).text()))
             .or_else(|| {
                 let twice = !students.insert(student.clone());
                 twice.then(|| Msg::new("class-student-twice").arg("student", &student).text())
@@ -164,9 +164,9 @@ fn column_errors(errors: Vec<FieldError>) -> ApiError {
             .trim_start_matches("/answers/")
             .replace("~1", "/")
             .replace("~0", "~");
-        FieldError { pointer: None, parameter: Some(column), ..f }
+        FieldError { pointer: None, row: Some(1), column: Some(column), ..f }
     });
-    ApiError::BadQuery(named.collect())
+    ApiError::BadTable(named.collect())
 }
 
 /// A row that could not be graded: its student and why.

@@ -26,18 +26,34 @@ pub fn plain(message: &str) -> Msg {
     if let Some(rest) = message.strip_prefix("unknown variant ")
         && let Some((got, e)) = rest.split_once(", expected ")
     {
-        let (id, e) = match e.strip_prefix("one of ") {
-            Some(list) => ("json-variant-one-of", list),
-            None => ("json-variant", e),
+        let quoted = |s: &str| s.replace('`', "\"");
+        let said = match (e.strip_prefix("one of "), e.split_once(" or ")) {
+            (Some(list), _) => Msg::new("json-variant-one-of").arg("expected", quoted(list)),
+            (None, Some((a, b))) => Msg::new("json-variant-either").arg("a", quoted(a)).arg("b", quoted(b)),
+            (None, None) => Msg::new("json-variant").arg("expected", quoted(e)),
         };
-        return Msg::new(id).arg("got", got.replace('`', "\"")).arg("expected", e.replace('`', "\""));
+        return said.arg("got", quoted(got));
     }
     Msg::new("text-as-is").arg("why", message.replace('`', "\""))
 }
 
+/// What the service's own readers expect (their visitors' `expecting`
+/// writes the catalogue's id, so that serde's message carries it here).
+const EXPECTING: [&str; 6] = [
+    "json-expect-quantity",
+    "json-expect-function",
+    "json-expect-program",
+    "json-expect-inputs",
+    "json-expect-track",
+    "json-expect-point",
+];
+
 /// What serde expected, in words.
 fn expected_words(expected: &str) -> Msg {
     let e = expected.trim();
+    if let Some(id) = EXPECTING.iter().find(|id| **id == e) {
+        return Msg::new(id);
+    }
     let id = match e {
         "f64" | "f32" => "json-number",
         "u8" | "u16" | "u32" | "u64" | "usize" => "json-whole",

@@ -271,7 +271,7 @@ pub async fn table(
 ) -> Result<Response, ApiError> {
     let q = read::query(q, &["values", "label", "decimal"])?;
     let t = find(&state, &id).await?;
-    let (text, csv) = study(&state, &t, &headers, (q.get("values"), Decimal::of(&q)?), &body).await?;
+    let (text, csv) = study(&state, &t, &headers, (q.get("values"), Decimal::asked(&q)?), &body).await?;
     let mime = if csv { "text/csv; charset=utf-8" } else { "application/json" };
     Ok(([(header::CONTENT_TYPE, mime)], text).into_response())
 }

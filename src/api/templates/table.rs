@@ -56,7 +56,7 @@ pub async fn study(
     state: &AppState,
     t: &Template,
     headers: &HeaderMap,
-    (values, decimal): (Option<&String>, Decimal),
+    (values, decimal): (Option<&String>, Option<Decimal>),
     body: &[u8],
 ) -> Result<(String, bool), ApiError> {
     let mime = mime(headers);
@@ -78,20 +78,20 @@ pub async fn study(
         return Err(ApiError::UnsupportedTable);
     }
     let pointers: Vec<String> = values.map_or_else(Vec::new, |v| pointer_list(v));
-    let text = std::str::from_utf8(body).map_err(|_| bad("body", Msg::new("csv-not-utf8")))?;
-    let (header, rows) = read_csv(text)?;
-    even(&header, &rows)?;
+    let sheet = read_csv(body)?;
+    even(&sheet)?;
+    let Sheet { header, rows, delimiter, .. } = sheet;
     let unknown: Vec<FieldError> = header
         .iter()
         .filter(|(_, name, _)| !t.parameters.contains_key(name) || RESERVED.contains(&name.as_str()))
-        .map(|(_, name, _)| unknown_parameter(t, name))
+        .map(|(_, name, _)| unknown_column(t, name))
         .collect();
     if !unknown.is_empty() {
-        return Err(ApiError::BadQuery(unknown));
+        return Err(ApiError::BadTable(unknown));
     }
     let given = rows.iter().map(|r| parameters_of(&header, r)).collect();
     let results = run(state, t, given, (&pointers, Want::Job)).await?;
-    let mut out = Csv::new(decimal);
+    let mut out = Csv::new(decimal.unwrap_or(Decimal::as_sent(delimiter)));
     let names = pointers.iter().map(|p| p.trim_start_matches('/').to_string());
     let head = header.iter().map(|(raw, _, _)| raw.clone()).chain(names).chain(["job".into(), "error".into()]);
     out.record(head)?;
@@ -123,10 +123,26 @@ pub fn bad(parameter: &str, msg: Msg) -> ApiError {
 /// A header cell `name [unit]`: (as written, name, unit).
 pub type Column = (String, String, Option<String>);
 
+/// A CSV body read: its header, its data rows, the row each has in the
+/// sheet (as a spreadsheet counts them: the header is row 1), and the
+/// separator it was written with.
+pub struct Sheet {
+    pub header: Vec<Column>,
+    pub rows: Vec<Vec<String>>,
+    pub lines: Vec<usize>,
+    pub delimiter: u8,
+}
+
+/// A CSV body's error, at its row and column where it has them.
+pub fn bad_cell(row: Option<usize>, column: Option<&str>, msg: Msg) -> ApiError {
+    ApiError::BadTable(vec![FieldError::cell(row, column, msg)])
+}
+
 /// The header and rows of a CSV (`,`, or `;` or tab when the header has no
 /// comma: a European spreadsheet's export). Rows may be ragged here;
 /// [`even`] refuses them where every row must be whole.
-pub fn read_csv(text: &str) -> Result<(Vec<Column>, Vec<Vec<String>>), ApiError> {
+pub fn read_csv(body: &[u8]) -> Result<Sheet, ApiError> {
+    let text = std::str::from_utf8(body).map_err(|_| bad_cell(None, None, Msg::new("csv-not-utf8")))?;
     let first = text.lines().next().unwrap_or("");
     let delimiter = if first.contains(',') {
         b','
@@ -141,7 +157,7 @@ pub fn read_csv(text: &str) -> Result<(Vec<Column>, Vec<Vec<String>>), ApiError>
         csv::ReaderBuilder::new().delimiter(delimiter).trim(csv::Trim::All).flexible(true).from_reader(text.as_bytes());
     let header: Vec<Column> = reader
         .headers()
-        .map_err(|e| bad("body", Msg::new("csv-header").arg("why", e)))?
+        .map_err(|e| bad_cell(Some(1), None, Msg::new("csv-header").arg("why", e)))?
         .iter()
         .map(|h| match h.split_once('[') {
             Some((name, unit)) => {
@@ -150,33 +166,53 @@ pub fn read_csv(text: &str) -> Result<(Vec<Column>, Vec<Vec<String>>), ApiError>
             None => (h.to_string(), h.to_string(), None),
         })
         .collect();
-    let mut rows = Vec::new();
+    let (mut rows, mut lines) = (Vec::new(), Vec::new());
+    // A record's line from its byte offset, past the blank lines before it
+    // (which csv's position, in lines and in bytes, counts into the record).
+    let mut counted = (0, 1);
+    let mut line_at = |byte: u64| {
+        let mut byte = (byte as usize).min(text.len());
+        byte += text.as_bytes()[byte..].iter().take_while(|b| matches!(b, b'\n' | b'\r')).count();
+        let (from, line) = counted;
+        counted = (byte, line + text.as_bytes()[from.min(byte)..byte].iter().filter(|&&b| b == b'\n').count());
+        counted.1
+    };
     for record in reader.records() {
-        let record = record.map_err(|e| bad("body", Msg::new("csv-unreadable").arg("why", e)))?;
+        let record = record.map_err(|e| {
+            let line = e.position().map(|p| line_at(p.byte()));
+            bad_cell(line, None, Msg::new("csv-unreadable").arg("why", e))
+        })?;
         if record.iter().all(str::is_empty) {
             continue;
         }
+        lines.push(record.position().map_or(rows.len() + 2, |p| line_at(p.byte())));
         rows.push(record.iter().map(String::from).collect());
         if rows.len() > MAX_ROWS {
-            return Err(bad("body", Msg::new("csv-too-many-rows").count("max", MAX_ROWS)));
+            return Err(bad_cell(None, None, Msg::new("csv-too-many-rows").count("max", MAX_ROWS)));
         }
     }
-    Ok((header, rows))
+    Ok(Sheet { header, rows, lines, delimiter })
 }
 
-/// Why a row has not one cell per column, if it has not (`row` counts the data rows from 1).
-pub fn ragged(header: &[Column], row: &[String], i: usize) -> Option<Msg> {
-    let id = if row.len() > header.len() { "csv-ragged-comma" } else { "csv-ragged" };
-    let msg = Msg::new(id).arg("row", i + 1).arg("cells", row.len()).arg("columns", header.len());
+/// Why a row has not one cell per column, if it has not (`line`: its row
+/// in the sheet); one cell too many in a `,`-separated CSV is most often a
+/// decimal comma, and said so.
+pub fn ragged(header: &[Column], row: &[String], line: usize, delimiter: u8) -> Option<Msg> {
+    let comma = row.len() > header.len() && delimiter == b',';
+    let id = if comma { "csv-ragged-comma" } else { "csv-ragged" };
+    let msg = Msg::new(id).arg("row", line).arg("cells", row.len()).arg("columns", header.len());
     (row.len() != header.len()).then_some(msg)
 }
 
-/// Every row whole, or a 400 naming the first that is not.
-fn even(header: &[Column], rows: &[Vec<String>]) -> Result<(), ApiError> {
-    match rows.iter().enumerate().find_map(|(i, r)| ragged(header, r, i)) {
-        Some(why) => Err(ApiError::BadQuery(vec![FieldError::parameter_said("body", why)])),
-        None => Ok(()),
-    }
+/// Every row whole, or a 400 naming each that is not, by its row.
+fn even(sheet: &Sheet) -> Result<(), ApiError> {
+    let Sheet { header, rows, lines, delimiter } = sheet;
+    let said = |(r, &line): (&Vec<String>, &usize)| {
+        Some(FieldError::cell(Some(line), None, ragged(header, r, line, *delimiter)?))
+    };
+    let uneven = rows.iter().zip(lines).filter_map(said);
+    let errors: Vec<FieldError> = uneven.take(20).collect();
+    if errors.is_empty() { Ok(()) } else { Err(ApiError::BadTable(errors)) }
 }
 
 /// A CSV row's parameters: a cell under `name [unit]` is the quantity `cell unit`; empty cells keep the default.
@@ -248,9 +284,17 @@ pub fn spent(state: &AppState) -> Msg {
 }
 
 pub fn unknown_parameter(t: &Template, name: &str) -> FieldError {
+    FieldError::parameter_said(name, no_parameter(t, name))
+}
+
+/// A CSV column that names no parameter of `t`, by its header.
+pub fn unknown_column(t: &Template, name: &str) -> FieldError {
+    FieldError::cell(Some(1), Some(name), no_parameter(t, name))
+}
+
+fn no_parameter(t: &Template, name: &str) -> Msg {
     let known = t.parameters.keys().map(String::as_str).collect::<Vec<_>>().join(", ");
-    let msg = Msg::new("parameter-unknown").arg("name", name).arg("template", &t.id);
-    FieldError::parameter_said(name, msg.arg("known", known))
+    Msg::new("parameter-unknown").arg("name", name).arg("template", &t.id).arg("known", known)
 }
 
 /// What a row's `error` says where its job's result has no value at some
@@ -272,7 +316,10 @@ pub fn said(e: &ApiError) -> String {
     let fields: Vec<String> = p
         .errors
         .iter()
-        .map(|f| format!("{}: {}", f.parameter.clone().or_else(|| f.pointer.clone()).unwrap_or_default(), f.message))
+        .map(|f| {
+            let at = f.parameter.clone().or_else(|| f.pointer.clone()).or_else(|| f.column.clone());
+            format!("{}: {}", at.unwrap_or_default(), f.message)
+        })
         .collect();
     if fields.is_empty() { p.detail } else { fields.join("; ") }
 }
@@ -296,5 +343,20 @@ mod tests {
             )
         );
         assert_eq!(absent(&result, &pointers[..1], &found[..1]), None);
+    }
+}
+
+#[cfg(test)]
+mod sheet {
+    use super::*;
+
+    /// Each row is named by its row in the sheet (the header is row 1),
+    /// blank lines and quoted line breaks counted, as a spreadsheet shows them.
+    #[test]
+    fn rows_are_counted_as_the_sheet_counts_them() {
+        let body = "F;eps\n500;0,04\n\n600;0,03\n\"7\n00\";1\n;\n800;1\n";
+        let sheet = read_csv(body.as_bytes()).map_err(|e| e.to_string()).unwrap();
+        assert_eq!(sheet.lines, [2, 4, 5, 8]);
+        assert_eq!(sheet.delimiter, b';');
     }
 }

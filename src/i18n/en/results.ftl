@@ -5,6 +5,7 @@
 ## Any kind
 
 warning-constant-unused = the constant { $name } is not used by any expression of the request
+warning-at-field = { $pointer }: { $said }
 
 ## A time integration that stopped
 

@@ -9,6 +9,7 @@ problem-unsupported-media-type = Unsupported content type
 problem-payload-too-large = Request body too large
 problem-invalid-request = The request is not a valid problem
 problem-invalid-query = Invalid query parameters
+problem-invalid-table = The CSV table is not valid
 problem-job-not-found = Job not found
 problem-not-found = Not found
 problem-template-not-found = Template not found
@@ -42,6 +43,11 @@ detail-invalid =
        *[other] { $count } invalid fields
     }
 detail-bad-query = invalid query parameters
+detail-bad-table =
+    { $count ->
+        [one] 1 error in the CSV table
+       *[other] { $count } errors in the CSV table
+    }
 detail-not-found = no job with id '{ $id }'
 detail-no-part = job '{ $id }' has no part of its result at '{ $pointer }'
 detail-no-plot = job '{ $id }' has no plot '{ $name }' (its plots: { $known })
@@ -83,6 +89,8 @@ field-finite = must be finite
 field-positive = must be greater than 0
 field-too-long = must be at most { $max } characters (has { $has })
 field-not-angle = '{ $text }' is neither an angle (e.g. "90 deg") nor a constant expression (e.g. "7*pi/4")
+field-angle-degrees = '{ $text }' is not an angle as written: degrees are written "{ $n }°" or "{ $n } deg"
+field-bare-angle = the bare number { $value } is read in radians ({ $degrees }°); for degrees write "{ $value }°"
 field-expression = '{ $text }' is an expression, not a quantity: write it as {"{"}"expr": "{ $text }"{"}"}
 field-expected = expected { $expected }, got { $got }
 field-between = must be between { $min } and { $max }
@@ -164,6 +172,13 @@ json-control-character = control character (\u0000-\u001F) found while parsing a
 json-not-utf8 = the body is not UTF-8
 json-unreadable = the body could not be read: { $why }
 json-variant-one-of = unknown variant { $got }, expected one of { $expected }
+json-variant-either = unknown variant { $got }, expected { $a } or { $b }
+json-expect-quantity = a number (SI) or a text "VALUE UNIT" such as "300 rpm"
+json-expect-function = a number, a quantity text, or an object with expr, segments or table
+json-expect-program = a list of segments or an object {"{"}"lift": ...{"}"}
+json-expect-inputs = an input object or a list of them
+json-expect-track = a point's name or an object {"{"}"name", "body", "at"{"}"}
+json-expect-point = a point's name or coordinates [x, y]
 
 ## Pages
 

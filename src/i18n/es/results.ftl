@@ -5,6 +5,7 @@
 ## Cualquier tipo
 
 warning-constant-unused = la constante { $name } no la usa ninguna expresión de la petición
+warning-at-field = { $pointer }: { $said }
 
 ## Una integración en el tiempo que se detuvo
 

@@ -9,6 +9,7 @@ problem-unsupported-media-type = Tipo de contenido no admitido
 problem-payload-too-large = Cuerpo de la petición demasiado grande
 problem-invalid-request = La petición no es un problema válido
 problem-invalid-query = Parámetros de consulta no válidos
+problem-invalid-table = La tabla CSV no es válida
 problem-job-not-found = Trabajo no encontrado
 problem-not-found = No encontrado
 problem-template-not-found = Plantilla no encontrada
@@ -42,6 +43,11 @@ detail-invalid =
        *[other] { $count } campos no válidos
     }
 detail-bad-query = parámetros de consulta no válidos
+detail-bad-table =
+    { $count ->
+        [one] 1 error en la tabla CSV
+       *[other] { $count } errores en la tabla CSV
+    }
 detail-not-found = no hay ningún trabajo con id '{ $id }'
 detail-no-part = el trabajo '{ $id }' no tiene ninguna parte de su resultado en '{ $pointer }'
 detail-no-plot = el trabajo '{ $id }' no tiene la gráfica '{ $name }' (sus gráficas: { $known })
@@ -83,6 +89,8 @@ field-finite = debe ser finito
 field-positive = debe ser mayor que 0
 field-too-long = debe tener como mucho { $max } caracteres (tiene { $has })
 field-not-angle = '{ $text }' no es ni un ángulo (p. ej. "90 deg" o "90°") ni una expresión constante (p. ej. "7*pi/4")
+field-angle-degrees = '{ $text }' no es un ángulo tal como está escrito: los grados se escriben "{ $n }°" o "{ $n } deg"
+field-bare-angle = el número sin unidad { $value } se lee en radianes ({ $degrees }°); para grados escriba "{ $value }°"
 field-expression = '{ $text }' es una expresión, no una magnitud: escríbala como {"{"}"expr": "{ $text }"{"}"}
 field-expected = se esperaba { $expected } y llegó { $got }
 field-between = debe estar entre { $min } y { $max }
@@ -164,6 +172,13 @@ json-control-character = carácter de control (\u0000-\u001F) dentro de un texto
 json-not-utf8 = el cuerpo no está en UTF-8
 json-unreadable = no se pudo leer el cuerpo: { $why }
 json-variant-one-of = variante desconocida { $got }, se esperaba una de { $expected }
+json-variant-either = variante desconocida { $got }, se esperaba { $a } o { $b }
+json-expect-quantity = un número (SI) o un texto "VALOR UNIDAD" como "300 rpm"
+json-expect-function = un número, un texto con unidad o un objeto con expr, segments o table
+json-expect-program = una lista de tramos o un objeto {"{"}"lift": ...{"}"}
+json-expect-inputs = un objeto de entrada o una lista de ellos
+json-expect-track = el nombre de un punto o un objeto {"{"}"name", "body", "at"{"}"}
+json-expect-point = el nombre de un punto o sus coordenadas [x, y]
 
 ## Páginas
 

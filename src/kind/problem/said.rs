@@ -15,6 +15,7 @@ impl ApiError {
             Self::PayloadTooLarge(limit) => Msg::new("detail-payload-too-large").arg("limit", limit),
             Self::Invalid(errors) => Msg::new("detail-invalid").count("count", errors.len()),
             Self::BadQuery(_) => Msg::new("detail-bad-query"),
+            Self::BadTable(errors) => Msg::new("detail-bad-table").count("count", errors.len()),
             Self::NotFound(id) => Msg::new("detail-not-found").arg("id", id),
             Self::NoPart { id, pointer } => Msg::new("detail-no-part").arg("id", id).arg("pointer", pointer),
             Self::NoPlot { id, name, known } => listed("detail-no-plot", "detail-no-plot-none", id, name, known),

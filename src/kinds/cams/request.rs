@@ -115,7 +115,7 @@ impl<'de> Deserialize<'de> for CamProgramDto {
         impl<'de> serde::de::Visitor<'de> for Program {
             type Value = CamProgramDto;
             fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-                f.write_str("a list of segments or {\"lift\": Function}")
+                f.write_str("json-expect-program")
             }
             fn visit_seq<A: serde::de::SeqAccess<'de>>(self, seq: A) -> Result<CamProgramDto, A::Error> {
                 Vec::deserialize(serde::de::value::SeqAccessDeserializer::new(seq)).map(CamProgramDto::Segments)

@@ -71,7 +71,7 @@ struct InputsVisitor;
 impl<'de> Visitor<'de> for InputsVisitor {
     type Value = Inputs;
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-        f.write_str("an input object or a list of them")
+        f.write_str("json-expect-inputs")
     }
     fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Inputs, A::Error> {
         InputDto::deserialize(de::value::MapAccessDeserializer::new(map)).map(|i| Inputs::One(Box::new(i)))

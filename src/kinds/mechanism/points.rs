@@ -23,7 +23,7 @@ impl<'de> Visitor<'de> for PointVisitor {
     type Value = PointRef;
 
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-        f.write_str("a point name or coordinates [x, y]")
+        f.write_str("json-expect-point")
     }
     fn visit_str<E: de::Error>(self, v: &str) -> Result<PointRef, E> {
         Ok(PointRef::Name(v.to_string()))

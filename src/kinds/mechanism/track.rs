@@ -39,7 +39,7 @@ struct TrackVisitor;
 impl<'de> Visitor<'de> for TrackVisitor {
     type Value = TrackDto;
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-        f.write_str("a point's name or {\"name\", \"body\", \"at\"}")
+        f.write_str("json-expect-track")
     }
     fn visit_str<E: de::Error>(self, v: &str) -> Result<TrackDto, E> {
         Ok(TrackDto::Name(v.to_string()))
