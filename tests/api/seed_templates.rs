@@ -2,7 +2,7 @@
 //! seed's printed one (or its reference case's) with the statement's
 //! directions, and a changed parameter changes the answer as the seed's
 //! formula says, read as a sheet reads it (`/v1/templates/{id}/result/…`).
-//! P.103 is checked against case F1 in templates.rs, K1 and D1 in
+//! P.103 is also checked against case F1 in templates.rs, K1 and D1 in
 //! cases.rs, the rotor of seed 003 in rotor.rs.
 
 use crate::helpers::{TestApp, case};
@@ -138,4 +138,89 @@ async fn the_punch_press_has_case_f9s_inertia() {
     let w = c["problem"]["energy_per_revolution_ft_lbf"].as_f64().unwrap();
     let doubled = part(&app, "punch-press-us", "/inertia_approximate", &format!("W={}", 2.0 * w)).await;
     near(doubled, 2.0 * trusted, 1e-9, "twice the work");
+}
+
+/// The library's four-bar (crank 0.1 m, coupler 0.3 m, rocker 0.25 m,
+/// frame 0.3 m, each centre of mass at its bar's middle; a resisting
+/// torque M on the rocker; gravity) against the power balance written by
+/// hand over closed-form kinematics (the loop equations solved for ω₃, ω₄
+/// and α₃, α₄): T·ω₂ − M·ω₄ − Σ m g v_Gy = Σ (m a_G·v_G + I_G α ω) at four
+/// crank angles, at the defaults (M = 20 N·m, 100 rpm) and at M = 50 N·m,
+/// 60 rpm (1e-9 of the largest term).
+#[tokio::test]
+async fn the_four_bar_balances_its_power() {
+    let app = TestApp::new().await;
+    for (query, m_load, rpm) in [("", 20.0, 100.0), ("M=50&speed=60", 50.0, 60.0)] {
+        for step in [0, 3, 13, 27] {
+            let (theta2, omega2) = (step as f64 * 10f64.to_radians(), rpm * std::f64::consts::TAU / 60.0);
+            let (torque, scale) = four_bar_torque(theta2, omega2, m_load);
+            let got = part(&app, "four-bar", &format!("/steps/{step}/driving"), query).await;
+            let what = format!("{query}: θ₂ = {}°", step * 10);
+            assert!((got - torque).abs() <= 1e-9 * scale, "{what}: {got} against {torque}");
+        }
+    }
+}
+
+/// The driving torque of the library's four-bar at crank angle θ₂ turning
+/// at ω₂ (constant) against M on the rocker, by the power balance; and the
+/// largest term of the balance, for the tolerance.
+fn four_bar_torque(theta2: f64, omega2: f64, m_load: f64) -> (f64, f64) {
+    type V = (f64, f64);
+    let (a, b, c, d) = (0.1, 0.3, 0.25, 0.3);
+    let e = |t: f64| (t.cos(), t.sin());
+    let perp = |v: V| (-v.1, v.0);
+    let sum = |p: V, q: V| (p.0 + q.0, p.1 + q.1);
+    let times = |k: f64, v: V| (k * v.0, k * v.1);
+    let dot = |p: V, q: V| p.0 * q.0 + p.1 * q.1;
+    // Positions: B on the circles about A (b) and O₄ (c), above the line A–O₄.
+    let r_a = times(a, e(theta2));
+    let to_o4 = (d - r_a.0, -r_a.1);
+    let l = dot(to_o4, to_o4).sqrt();
+    let u = times(1.0 / l, to_o4);
+    let along = (b * b - c * c + l * l) / (2.0 * l);
+    let r_b = sum(r_a, sum(times(along, u), times((b * b - along * along).sqrt(), perp(u))));
+    let (theta3, theta4) = ((r_b.1 - r_a.1).atan2(r_b.0 - r_a.0), r_b.1.atan2(r_b.0 - d));
+    let (e2, e3, e4) = (e(theta2), e(theta3), e(theta4));
+    // Loop: a e₂ + b e₃ = d + c e₄, differentiated once and twice; Cramer's rule on (x₃, x₄) with
+    // b x₃ ⊥e₃ − c x₄ ⊥e₄ = rhs.
+    let solve = |rhs: V| {
+        let (p, q) = (times(b, perp(e3)), times(-c, perp(e4)));
+        let det = p.0 * q.1 - p.1 * q.0;
+        ((rhs.0 * q.1 - rhs.1 * q.0) / det, (p.0 * rhs.1 - p.1 * rhs.0) / det)
+    };
+    let (w3, w4) = solve(times(-a * omega2, perp(e2)));
+    let centripetal = sum(sum(times(a * omega2 * omega2, e2), times(b * w3 * w3, e3)), times(-c * w4 * w4, e4));
+    let (al3, al4) = solve(centripetal);
+    // Each centre of mass at its bar's middle: (mass, I_G, v_G, a_G, ω, α).
+    let (v_a, a_a) = (times(a * omega2, perp(e2)), times(-a * omega2 * omega2, e2));
+    let tip = |l: f64, w: f64, al: f64, e: V| sum(times(l * al, perp(e)), times(-l * w * w, e));
+    let bodies = [
+        (1.0, 0.002, times(0.5, v_a), times(0.5, a_a), omega2, 0.0),
+        (2.0, 0.015, sum(v_a, times(b / 2.0 * w3, perp(e3))), sum(a_a, tip(b / 2.0, w3, al3, e3)), w3, al3),
+        (1.5, 0.008, times(c / 2.0 * w4, perp(e4)), tip(c / 2.0, w4, al4, e4), w4, al4),
+    ];
+    let terms: Vec<f64> = bodies
+        .iter()
+        .flat_map(|&(m, i, v, acc, w, al)| [m * dot(acc, v), i * al * w, m * G * v.1])
+        .chain([m_load * w4])
+        .collect();
+    let torque = terms.iter().sum::<f64>() / omega2;
+    (torque, terms.iter().fold(0.0f64, |s, t| s.max(t.abs())) / omega2)
+}
+
+/// P.103 for a class at its defaults and at F = 700 N·m, ε = 0.05: the
+/// approximate inertia ΔE/(ε ω²) with the energy's swing over the cycle in
+/// closed form — the motor's mean torque F/π against −F sin φ on [0, π]
+/// swings by ΔE = F(2 cos s − 1 + 2s/π), s = asin(1/π) between its
+/// extremes at φ = s and π − s — 348.99 kg·m² at the defaults (1e-6).
+#[tokio::test]
+async fn p103_for_a_class_has_the_closed_form_swing() {
+    let app = TestApp::new().await;
+    let s = (1.0 / std::f64::consts::PI).asin();
+    let swing = 2.0 * s.cos() - 1.0 + 2.0 * s / std::f64::consts::PI;
+    for (query, f, eps, rpm) in [("", 500.0, 0.04, 60.0), ("F=700&eps=0.05", 700.0, 0.05, 60.0)] {
+        let omega = rpm * std::f64::consts::TAU / 60.0;
+        let expected = f * swing / (eps * omega * omega);
+        near(part(&app, "p103-class", "/inertia_approximate", query).await, expected, 1e-6, query);
+    }
 }
