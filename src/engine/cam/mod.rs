@@ -8,6 +8,7 @@
 //! v = s′ω, a = s″ω², j = s‴ω³.
 
 pub mod design;
+pub mod extremes;
 pub mod laws;
 pub mod sizing;
 

@@ -3,6 +3,7 @@
 //! the job's budget read as they go.
 
 use super::design::{Cam, CamError, Lift, Sample};
+use crate::engine::numeric::roots::brent;
 use crate::engine::{Deadline, EngineError, Progress};
 use std::f64::consts::TAU;
 
@@ -25,42 +26,92 @@ pub fn turn(cam: &Cam, lifts: &[(f64, [f64; 4])]) -> Result<Vec<Sample>, CamErro
     lifts.iter().map(|&(t, l)| cam.at(t, l)).collect()
 }
 
-/// The smallest base radius the follower can start from that meets `ok`
-/// (a test that holds for every base radius above the smallest that meets
-/// it, such as a largest pressure angle or a smallest radius of
-/// curvature): the first of 64 radii over the range [`Cam::base_range`]
-/// that meets it, then bisected to 1e-9 of the range; None where none does.
-/// The `deadline` is read before each radius is tried.
+/// The smallest base radius the follower can start from whose `excess`
+/// is at most 0 — a test of the cam with that radius (whose turn at the
+/// samples can be made), continuous and decreasing in the radius, such as
+/// its largest pressure angle less the largest allowed: the first of 64
+/// radii over the range [`Cam::base_range`] that meets it, then the root
+/// of the excess in the cell below it by
+/// Brent's method to 1e-12 of the radius (the radius returned meets it);
+/// None where none does. The `deadline` is read before each radius is tried.
 pub fn smallest_base(
     cam: Cam,
     lifts: &[(f64, [f64; 4])],
-    ok: impl Fn(&[Sample]) -> bool,
+    excess: impl Fn(&Cam) -> f64,
     deadline: &Deadline,
 ) -> Result<Option<f64>, EngineError> {
     // The lift does not depend on the base radius: evaluated once, by the caller.
     let scale = lifts.iter().map(|(_, l)| l[0].abs()).fold(1e-6, f64::max);
     let tried = std::cell::Cell::new(0);
-    let meets = |base: f64| -> Result<bool, EngineError> {
+    let over = |base: f64| -> Result<f64, EngineError> {
         deadline.check(|| Progress::CamSize { tried: tried.get() })?;
         tried.set(tried.get() + 1);
         let cam = Cam { base, ..cam };
-        Ok(turn(&cam, lifts).is_ok_and(|s| ok(&s)))
+        Ok(if turn(&cam, lifts).is_ok() { excess(&cam) } else { f64::INFINITY })
     };
     let (lo, hi) = cam.base_range(scale);
     let grid = |k: usize| lo + (hi - lo) * k as f64 / 64.0;
+    // The first of the grid's radii that meets it (an oscillating arm's
+    // reach may fail again near the range's top: searched from below).
     let mut first = None;
     for k in 1..64 {
-        if meets(grid(k))? {
+        if over(grid(k))? <= 0.0 {
             first = Some(k);
             break;
         }
     }
-    let Some(first) = first else { return Ok(None) };
-    let (mut lo, mut hi) = (grid(first - 1), grid(first));
-    let tolerance = 1e-9 * (hi - lo) * 64.0;
-    while hi - lo > tolerance {
-        let mid = 0.5 * (lo + hi);
-        if meets(mid)? { hi = mid } else { lo = mid }
+    let Some(meets) = first else { return Ok(None) };
+    let (mut a, b) = (grid(meets - 1), grid(meets));
+    // Brent needs a finite excess at both ends: bisect a turn that cannot be made out of the cell's lower end.
+    let mut at_a = over(a)?;
+    while !at_a.is_finite() && b - a > 1e-12 * b {
+        let mid = 0.5 * (a + b);
+        match over(mid)? {
+            x if x.is_finite() && x > 0.0 => (a, at_a) = (mid, x),
+            x if x.is_finite() => return refine(&over, mid, a, deadline).map(Some),
+            _ => a = mid,
+        }
     }
-    Ok(Some(hi))
+    if !at_a.is_finite() {
+        return Ok(Some(b));
+    }
+    refine(&over, b, a, deadline).map(Some)
+}
+
+/// The smallest radius that meets the test between `a` (fails) and `b`
+/// (meets), to 1e-12 of it.
+fn refine(
+    over: &dyn Fn(f64) -> Result<f64, EngineError>,
+    b: f64,
+    a: f64,
+    deadline: &Deadline,
+) -> Result<f64, EngineError> {
+    let tolerance = 1e-12 * b;
+    let mut failed = None;
+    let root = brent(
+        |r| match over(r) {
+            Ok(x) if x.is_finite() => x,
+            Ok(_) => f64::MAX,
+            Err(e) => {
+                failed = Some(e);
+                0.0
+            }
+        },
+        a,
+        b,
+        tolerance,
+    );
+    if let Some(e) = failed {
+        return Err(e);
+    }
+    deadline.check(|| Progress::CamSize { tried: 0 })?;
+    // Brent's answer may sit a hair below the root: the radius returned meets the test.
+    let mut r = root;
+    for _ in 0..4 {
+        if over(r)? <= 0.0 {
+            return Ok(r);
+        }
+        r += tolerance;
+    }
+    Ok(b)
 }

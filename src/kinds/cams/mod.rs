@@ -17,7 +17,8 @@ pub use request::{CamFollowerDto, CamFollowerMotion, CamFollowerType, CamProgram
 pub use result::CamResult;
 
 use crate::engine::Deadline;
-use crate::engine::cam::design::{Cam, CamError, Sample};
+use crate::engine::cam::design::{Cam, CamError};
+use crate::engine::cam::extremes::{self, scan};
 use crate::engine::cam::sizing::{lifts, smallest_base, turn};
 use crate::i18n::Msg;
 use crate::kind::limits::Limits;
@@ -152,14 +153,19 @@ fn sized(
     [angle, rho]: [Option<f64>; 2],
     deadline: &Deadline,
 ) -> Result<f64, ApiError> {
-    let follower = p.cam.follower;
-    let ok = |turn: &[Sample]| {
-        let angle_ok = angle.is_none_or(|a| turn.iter().all(|x| x.pressure_angle.abs() <= a));
-        let convex = |x: &&Sample| result::convex(follower, x);
-        let rho_ok = rho.is_none_or(|r| turn.iter().filter(convex).all(|x| x.curvature_radius >= r));
-        angle_ok && rho_ok && !result::undercut(follower, turn)
+    let (lift, grid) = (result::lift_of(p), scan(&result::breaks(p)));
+    // How far the cam is from meeting the size (≤ 0: met): the largest of
+    // its pressure angle over the allowed, the radius of curvature under
+    // the least allowed, and under 0 (an undercut), each relative.
+    let excess = |cam: &Cam| {
+        let e = extremes::of(cam, &lift, &grid);
+        let rho_min = e.min_curvature_radius.map_or(f64::INFINITY, |m| m.value);
+        let over_angle = angle.map_or(f64::NEG_INFINITY, |a| e.max_pressure_angle.value / a - 1.0);
+        let under_rho = rho.map_or(f64::NEG_INFINITY, |r| 1.0 - rho_min / r);
+        let undercut = -rho_min / cam.base.max(f64::MIN_POSITIVE);
+        over_angle.max(under_rho).max(undercut)
     };
-    smallest_base(p.cam, lifts, ok, deadline)
+    smallest_base(p.cam, lifts, excess, deadline)
         .map_err(|e| engine_failure(e, "/size"))?
         .ok_or_else(|| ApiError::Invalid(vec![FieldError::said("/size", Msg::new("cam-no-base"))]))
 }

@@ -1,8 +1,9 @@
 //! The `result` of a cam design job and how it is made from the engine's samples.
 
 use super::request::{Motion, Problem};
-use crate::engine::cam::design::{Cam, Follower, Guide, Sample};
-use crate::engine::function::Side;
+use crate::engine::cam::design::{Cam, Follower, Guide, Loads, Sample};
+use crate::engine::cam::extremes::{self, At, scan};
+use crate::engine::function::{Function, Side};
 use crate::i18n::Msg;
 use crate::kind::notes::Notes;
 use serde::{Deserialize, Serialize};
@@ -198,16 +199,12 @@ fn peaks(s: &crate::engine::cam::Segment, name: &str, w: f64) -> SegmentPeaks {
 }
 
 fn summary(p: &Problem, cam: &Cam, turn: &[Sample], forces: &[Option<[f64; 3]>], notes: &mut Notes) -> CamSummary {
-    let at = |x: &Sample, v: f64| AtAngle { value: v, theta: x.theta };
-    let max_angle = turn
-        .iter()
-        .map(|x| at(x, x.pressure_angle.abs()))
-        .fold(at(&turn[0], 0.0), |a, b| if b.value > a.value { b } else { a });
-    let convex = turn.iter().filter(|x| convex(cam.follower, x));
-    let min_rho = convex
-        .map(|x| at(x, x.curvature_radius))
-        .fold(AtAngle { value: f64::INFINITY, theta: 0.0 }, |a, b| if b.value < a.value { b } else { a });
-    let undercut = undercut(cam.follower, turn);
+    let (lift, grid) = (lift_of(p), scan(&breaks(p)));
+    let e = extremes::of(cam, &lift, &grid);
+    let at = |a: At| AtAngle { value: a.value, theta: a.theta };
+    let max_angle = at(e.max_pressure_angle);
+    let min_rho = e.min_curvature_radius.map_or(AtAngle { value: f64::INFINITY, theta: 0.0 }, at);
+    let undercut = e.undercut();
     if undercut {
         let id = if cam.follower == Follower::Flat { "warning-cam-undercut-flat" } else { "warning-cam-undercut" };
         notes.warn(Msg::new(id).fig("at", min_rho.theta.to_degrees()).fig("rho", min_rho.value));
@@ -221,13 +218,12 @@ fn summary(p: &Problem, cam: &Cam, turn: &[Sample], forces: &[Option<[f64; 3]>],
         let at = |x: f64| (x.to_degrees() * 100.0).round() / 100.0;
         notes.warn(Msg::new(id).num("max", at(max_angle.value)).num("at", at(max_angle.theta)).num("limit", limit));
     }
-    let face = turn.iter().map(|x| x.face_offset);
-    let face_width = (cam.follower == Follower::Flat)
-        .then(|| face.clone().fold(f64::NEG_INFINITY, f64::max) - face.fold(f64::INFINITY, f64::min));
+    let face_width = e.face.map(|(near, far)| far - near);
     let (separation, critical_speed, min_preload) = match &p.loads {
-        Some((loads, _)) => dynamics(p, turn, forces, loads),
+        Some((loads, external)) => dynamics(p, (loads, external.as_ref()), &grid),
         None => (None, None, None),
     };
+    let _ = (turn, forces);
     if let Some(ranges) = separation.as_ref().filter(|r| !r.is_empty()) {
         let deg =
             |x: f64| Msg::new("text-value-unit").num("value", (x.to_degrees() * 10.0).round() / 10.0).arg("unit", "°");
@@ -247,52 +243,42 @@ fn summary(p: &Problem, cam: &Cam, turn: &[Sample], forces: &[Option<[f64; 3]>],
     }
 }
 
-/// Where the profile is convex (a flat face's profile must be everywhere;
-/// a roller's where its pitch curve is).
-pub fn convex(follower: Follower, x: &Sample) -> bool {
-    follower == Follower::Flat || x.pitch_curvature_radius > 0.0
-}
-
-/// The profile folds: a roller larger than a convex pitch radius, a flat face on a concave stretch.
-pub fn undercut(follower: Follower, turn: &[Sample]) -> bool {
-    match follower {
-        Follower::Flat => turn.iter().any(|x| x.curvature_radius < 0.0),
-        Follower::Roller(r) => turn.iter().any(|x| x.pitch_curvature_radius > 0.0 && x.pitch_curvature_radius < r),
+/// The angles a motion changes law at: a program's segments' starts, a
+/// lift Function's pieces'.
+pub fn breaks(p: &Problem) -> Vec<f64> {
+    match &p.motion {
+        Motion::Program(program, _) => program.segments().iter().map(|s| s.start).collect(),
+        Motion::Function(f) => f.iter().flat_map(|f| f.breakpoints(TAU)).collect(),
     }
 }
 
 type Dynamics = (Option<Vec<[f64; 2]>>, Option<f64>, Option<f64>);
 
-/// Separation ranges, critical speed and least preload: with N_x = m s″ω² + G,
-/// G = F₀ + k s − F, contact holds while N_x ≥ 0.
-fn dynamics(
-    p: &Problem,
-    turn: &[Sample],
-    forces: &[Option<[f64; 3]>],
-    loads: &crate::engine::cam::design::Loads,
-) -> Dynamics {
-    let mut ranges: Vec<[f64; 2]> = Vec::new();
-    let mut open = false;
-    for (x, f) in turn.iter().zip(forces) {
-        let negative = f.is_some_and(|f| f[0] < 0.0);
-        match (negative, open) {
-            (true, true) => ranges.last_mut().expect("open")[1] = x.theta,
-            (true, false) => ranges.push([x.theta, x.theta]),
-            _ => {}
-        }
-        open = negative;
-    }
+/// Separation ranges, critical speed and least preload over the whole turn
+/// (scanned at `grid` and refined, [`extremes`]): with the follower's force
+/// from the cam Q = m s″ω² + G, G = F₀ + k s − F, contact holds while Q ≥ 0;
+/// it fails first at ω_c = min √(G/(−m s″)) where s″ < 0 (0 where G < 0
+/// somewhere); the least preload is the largest F₀ − Q.
+fn dynamics(p: &Problem, (loads, external): (&Loads, Option<&Function>), grid: &[f64]) -> Dynamics {
+    let lift = lift_of(p);
     let w = p.speed;
-    let mut critical = f64::INFINITY;
-    for (x, f) in turn.iter().zip(forces) {
-        let (Some(f), s2) = (f, x.lift[2]) else { continue };
-        let g = f[0] - loads.mass * s2 * w * w;
-        if g < 0.0 {
-            critical = 0.0;
-        } else if s2 < 0.0 && loads.mass > 0.0 {
-            critical = critical.min((g / (-loads.mass * s2)).sqrt());
+    let g = |t: f64| {
+        let s = lift(t)[0];
+        loads.preload + loads.stiffness * s - external.map_or(0.0, |f| f.eval(t, Side::Right))
+    };
+    let q = |t: f64| loads.mass * lift(t)[2] * w * w + g(t);
+    let ranges = extremes::below_zero(&q, grid);
+    let short = extremes::largest(&|t| Some(-g(t)), grid).is_some_and(|a| a.value > 0.0);
+    let critical = match short {
+        true => Some(0.0),
+        false => {
+            let speed = |t: f64| {
+                let s2 = lift(t)[2];
+                (s2 < 0.0 && loads.mass > 0.0).then(|| -(g(t) / (-loads.mass * s2)).sqrt())
+            };
+            extremes::largest(&speed, grid).map(|a| -a.value)
         }
-    }
-    let preload = forces.iter().flatten().map(|f| loads.preload - f[0]).fold(0.0f64, f64::max);
-    ((!ranges.is_empty()).then_some(ranges), critical.is_finite().then_some(critical), Some(preload))
+    };
+    let preload = extremes::largest(&|t| Some(loads.preload - q(t)), grid).map_or(0.0, |a| a.value.max(0.0));
+    ((!ranges.is_empty()).then_some(ranges), critical, Some(preload))
 }
