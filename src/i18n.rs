@@ -219,6 +219,15 @@ pub fn tr(lang: Lang, id: &'static str) -> String {
     Msg::new(id).render(lang)
 }
 
+/// The catalogue's message `id` without arguments in `lang`, for an id
+/// made at run time (a result's field named in words); None where the
+/// catalogue has none.
+pub fn tr_named(lang: Lang, id: &str) -> Option<String> {
+    let bundle = &CATALOGUES[lang as usize];
+    let pattern = bundle.get_message(id).and_then(|m| m.value())?;
+    Some(bundle.format_pattern(pattern, None, &mut Vec::new()).into_owned())
+}
+
 /// Each language's catalogue, in files by what they speak of.
 const SOURCES: [[&str; 3]; 2] = [
     [include_str!("i18n/en/service.ftl"), include_str!("i18n/en/requests.ftl"), include_str!("i18n/en/results.ftl")],

@@ -167,7 +167,8 @@ pub fn parse_unit(text: &str) -> Result<(f64, Dim), UnitError> {
     let mut factor = 1.0;
     let mut dim = Dim::NONE;
     let mut sign = 1i8;
-    let mut rest = text.trim();
+    let normal = written::normalized(text);
+    let mut rest = normal.as_str();
     if rest.is_empty() {
         return Err(UnitError::Malformed(text.into()));
     }
@@ -196,6 +197,13 @@ fn parse_factor(text: &str) -> Result<(f64, Dim), UnitError> {
     };
     if name == "1" {
         return Ok((1.0, Dim::NONE));
+    }
+    // A power written without its caret, as a student writes it (`m2`, `s2`): the table's names have no digits.
+    let stem = name.trim_end_matches(|c: char| c.is_ascii_digit());
+    if power == 1 && stem.len() + 1 == name.len() && table_unit(stem).is_some() {
+        let power: i8 = name[stem.len()..].parse().unwrap_or(1);
+        let &(_, f, d) = table_unit(stem).ok_or_else(|| UnitError::Unknown(name.to_string()))?;
+        return Ok((f.powi(power.into()), d.pow(power)));
     }
     let &(_, f, d) = table_unit(name).ok_or_else(|| UnitError::Unknown(name.to_string()))?;
     Ok((f.powi(power.into()), d.pow(power)))

@@ -14,12 +14,14 @@ impl Axis {
     pub fn new(name: impl Into<String>, unit: impl Into<String>) -> Self {
         Self { name: name.into(), unit: unit.into() }
     }
-    /// "crank angle φ (deg)"; a dimensionless axis has no unit.
+    /// "crank angle φ (°)" (degrees as the course writes them); a
+    /// dimensionless axis has no unit.
     pub fn label(&self) -> String {
         if self.unit.is_empty() || self.unit == "1" {
             self.name.clone()
         } else {
-            format!("{} ({})", self.name, self.unit)
+            let unit = if self.unit == "deg" { "°" } else { &self.unit };
+            format!("{} ({unit})", self.name)
         }
     }
 }

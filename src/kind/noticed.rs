@@ -56,10 +56,13 @@ pub fn bare_angle(value: f64, pointer: &str) {
     }
 }
 
-/// Whether `pointer` concerns the field at `other`: one is the other or inside it.
+/// Whether what was noticed at `pointer` concerns an error at `other`: the
+/// error is in the object the noticed field belongs to (a dimension's
+/// `value` and its `angle`), or inside the field.
 pub fn related(pointer: &str, other: &str) -> bool {
     let inside = |a: &str, b: &str| a.strip_prefix(b).is_some_and(|rest| rest.is_empty() || rest.starts_with('/'));
-    inside(pointer, other) || inside(other, pointer)
+    let parent = pointer.rsplit_once('/').map_or("", |(p, _)| p);
+    inside(other, if parent.is_empty() { pointer } else { parent }) || inside(pointer, other)
 }
 
 #[cfg(test)]
@@ -95,9 +98,11 @@ mod tests {
     #[test]
     fn fields_are_related_along_their_pointers() {
         assert!(related("/input/end", "/input"));
-        assert!(related("/input", "/input/end"));
+        assert!(related("/input/end", "/input/steps"), "a sibling");
+        assert!(related("/mechanism/dimensions/4/value", "/mechanism/dimensions/4/angle"));
+        assert!(!related("/mechanism/dimensions/4/value", "/mechanism/dimensions/5/angle"));
         assert!(related("/a", "/a"));
-        assert!(!related("/input/ending", "/input/end"));
+        assert!(!related("/inputs/end", "/input"));
         assert!(!related("/b", "/a"));
     }
 }

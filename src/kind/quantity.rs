@@ -321,8 +321,13 @@ impl Errors {
                 _ => self.refuse(at, Msg::new("field-not-angle").arg("text", s)),
             };
         }
-        if let Quantity::Number(v) = q {
-            super::noticed::bare_angle(*v, at);
+        // A bare number, or a text with a number alone ("30"), read in radians.
+        let bare = match q {
+            Quantity::Number(v) => Some(*v),
+            Quantity::Text(s) => units::number(s),
+        };
+        if let Some(v) = bare {
+            super::noticed::bare_angle(v, at);
         }
         self.quantity(q, Dim::ANGLE, at)
     }

@@ -81,6 +81,32 @@ pub fn number_length(t: &str) -> usize {
 /// service reads it: a power without `^` (`m2` → `m^2`), two units run
 /// together (`kgm` → `kg*m`, `Nmm` → `N*mm`), a plural (`lbs` → `lb`), one
 /// letter off (`rmp` → `rpm`), or a Spanish word (`seg` → `s`, `grados` → `deg`).
+/// A unit as a person writes it, in the table's notation: superscript
+/// powers (`m²`, `s⁻¹`) with a caret, `×` and a dot between names
+/// (`kg.m`) as `*`, and a space between names (`kg m^2`) as a product.
+pub fn normalized(text: &str) -> String {
+    let t =
+        text.trim().replace('²', "^2").replace('³', "^3").replace("⁻¹", "^-1").replace("⁻²", "^-2").replace('×', "*");
+    let chars: Vec<char> = t.chars().collect();
+    let operator = |c: char| "*/·^".contains(c);
+    let mut out = String::with_capacity(t.len());
+    for (i, &c) in chars.iter().enumerate() {
+        let next = chars[i + 1..].iter().copied().find(|c| !c.is_whitespace());
+        let prev = out.chars().last();
+        let between_names = prev.is_some_and(|p: char| !operator(p)) && next.is_some_and(|n| !operator(n));
+        match c {
+            c if c.is_whitespace() => {
+                if between_names && prev != Some('*') {
+                    out.push('*');
+                }
+            }
+            '.' if prev.is_some_and(char::is_alphabetic) && next.is_some_and(char::is_alphabetic) => out.push('*'),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
 pub fn suggestion(name: &str) -> Option<String> {
     let name = name.trim();
     if name.is_empty() {
@@ -169,6 +195,25 @@ mod tests {
         assert_eq!(number_length("0,02 m"), 4);
         assert_eq!(number_length("3,m"), 1);
         assert_eq!(number_length("1,5e-3kg"), 6);
+    }
+
+    #[test]
+    fn units_as_a_person_writes_them() {
+        for (written, as_table) in [
+            ("kg·m²", "kg·m^2"),
+            ("kg*m²", "kg*m^2"),
+            ("kg m^2", "kg*m^2"),
+            ("kg  m ^2", "kg*m^2"),
+            ("kg.m2", "kg*m2"),
+            ("N × m", "N*m"),
+            ("s⁻¹", "s^-1"),
+            ("rad / s", "rad/s"),
+        ] {
+            assert_eq!(normalized(written), as_table, "{written}");
+        }
+        for written in ["kg·m²", "kg*m²", "kg m^2", "kg.m2", "kg m2"] {
+            assert_eq!(crate::units::parse_unit(written), crate::units::parse_unit("kg*m^2"), "{written}");
+        }
     }
 
     #[test]

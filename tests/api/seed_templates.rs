@@ -67,6 +67,28 @@ async fn the_scissor_lift_has_the_seeds_piston_force() {
     near(part(&app, "scissor-lift", "/steps/0/driving", "v=1").await, f(1.0), 1e-9, "v = 1");
 }
 
+/// Seed 002's scissor lift, the inertia forces its statement asks for: each
+/// bar's centre F accelerates at a_F = 2√3v²/(9L) to the left and the bars
+/// turn at α = √3v²/(9L²), DE one way and BC the other; so −m·a_G =
+/// (2√3mv²/(9L), 0) on each bar, −I_G·α = ∓(√3/27)mv² (I_G = m(2L)²/12),
+/// and nothing on the platform descending at constant v (1e-9).
+#[tokio::test]
+async fn the_scissor_lift_has_the_seeds_inertia_forces() {
+    let app = TestApp::new().await;
+    let (m, l, v) = (10.0, 0.5, 0.3);
+    let force = 2.0 * 3f64.sqrt() * m * v * v / (9.0 * l);
+    let moment = 3f64.sqrt() / 27.0 * m * v * v;
+    let at = |body: usize, field: &str| format!("/steps/0/kinematics/{body}/{field}");
+    for (body, fx, couple) in [(0, force, -moment), (1, force, moment)] {
+        near(part(&app, "scissor-lift", &at(body, "inertia_force/0"), "").await, fx, 1e-9, "a bar's force");
+        let fy = part(&app, "scissor-lift", &at(body, "inertia_force/1"), "").await;
+        assert!(fy.abs() < 1e-9 * force, "a bar's vertical force {fy}");
+        near(part(&app, "scissor-lift", &at(body, "inertia_moment"), "").await, couple, 1e-9, "a bar's moment");
+    }
+    let platform = part(&app, "scissor-lift", &at(2, "inertia_force/1"), "").await;
+    assert!(platform.abs() < 1e-9 * force, "the platform at constant speed: {platform}");
+}
+
 /// Seed 002, question 2's eccentric disk (e = 20 mm, R = 50 mm, ω = 10
 /// rad/s, μ = 0.1, the follower's m = 2 kg): N = m(g + eω² cos θ), torque
 /// N(e sin θ + μ(R − e cos θ)) at θ = 10°, 90° and 200°; and with m = 3 kg (1e-9).

@@ -300,3 +300,47 @@ async fn a_slider_pin_moves_like_any_other_point_and_a_frame_mark_stays() {
     let b = got("M", 0) - (0.01 - got("M", 1).powi(2)).sqrt();
     assert!((got("B", 0) - b).abs() < 1e-12 && got("B", 1).abs() < 1e-12, "B {points} against ({b}, 0)");
 }
+
+/// A student's slips on the scissor lift, each answered so it can be put
+/// right: a bare 30 for the angle (read in radians, 278.9° on the sketch's
+/// other side) is refused with the reason beside it — the number read in
+/// radians and "30°" the way to write degrees; `"ratio": "0,5"` (a decimal
+/// comma in a text where a number is asked) is read as 0.5; a point's
+/// coordinates with decimal commas ([0,45, 0,6], four numbers to JSON) are
+/// said in Spanish with the comma named; an input of one position needs no
+/// `end`; the answer is the same as the figure's without the slips.
+#[tokio::test]
+async fn a_students_slips_are_answered_so_they_can_be_put_right() {
+    let app = TestApp::new().await;
+    let mut figure = scissor_lift();
+    figure.request["mechanism"]["points"] = json!(figure.exact);
+    let mut bare = figure.request.clone();
+    bare["mechanism"]["dimensions"][3]["value"] = json!(30);
+    let r = app.post("/v1/kinetostatics?lang=es", &bare).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let beside = r.json()["errors"].as_array().unwrap().iter().any(|e| {
+        e["pointer"] == "/mechanism/dimensions/3/value"
+            && e["message"] == "el número sin unidad 30 se lee en radianes (1719°); para grados escriba \"30°\""
+    });
+    assert!(beside, "{}", r.text);
+
+    let mut slips = figure.request.clone();
+    slips["mechanism"]["dimensions"][4]["ratio"] = json!("0,5");
+    slips["input"].as_object_mut().unwrap().remove("end");
+    let r = app.post("/v1/kinetostatics", &slips).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let clean = app.post("/v1/kinetostatics", &figure.request).await.json();
+    assert_eq!(r.json()["result"]["steps"][0]["driving"], clean["result"]["steps"][0]["driving"]);
+
+    let mut commas = figure.request.clone();
+    commas["mechanism"]["points"] =
+        json!({"D": [0, 0], "E": [0.87, 0.5], "F": [0,45, 0,25], "B": [0.87, 0], "C": [0, 0.5]});
+    let r = app.post("/v1/kinetostatics?lang=es", &commas).await;
+    let message = r.json()["errors"][0]["message"].as_str().unwrap_or_default().to_string();
+    assert!(message.contains("menos elementos") && message.contains("coma decimal"), "{}", r.text);
+    let raw = figure.request.to_string().replace("\"ratio\":0.5", "\"ratio\":0,5");
+    assert!(raw.contains("\"ratio\":0,5"), "{raw}");
+    let r = app.post_raw("/v1/kinetostatics?lang=es", "application/json", raw).await;
+    assert_eq!(r.status, StatusCode::BAD_REQUEST, "{}", r.text);
+    assert!(r.json()["detail"].as_str().unwrap().contains("una coma decimal parte un número de JSON"), "{}", r.text);
+}

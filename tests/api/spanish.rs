@@ -426,3 +426,23 @@ async fn a_csv_row_is_named_as_a_csv_row() {
         e["message"].as_str().unwrap().starts_with("la plantilla p103-slider-flywheel no tiene el parámetro epsilon")
     );
 }
+
+/// Units as a student writes them (`kg·m²`, `kg m^2`, `kg.m2`) are the
+/// table's; a count of pairs needs no `space` (the course's are planar).
+#[tokio::test]
+async fn units_and_counts_as_a_student_writes_them() {
+    let app = TestApp::new().await;
+    let clean = app.post("/v1/kinetostatics", &request("k1_offset_slider_crank")).await.json();
+    let i = clean["request"]["mechanism"]["bodies"][1]["inertia"].clone();
+    let si = i.as_f64().unwrap_or_else(|| panic!("a number in the library's K1: {i}"));
+    for unit in ["kg·m²", "kg*m²", "kg m^2", "kg.m2"] {
+        let mut k1 = request("k1_offset_slider_crank");
+        k1["mechanism"]["bodies"][1]["inertia"] = json!(format!("{} {unit}", si.to_string().replace('.', ",")));
+        let r = app.post("/v1/kinetostatics", &k1).await;
+        assert_eq!(r.status, StatusCode::CREATED, "{unit}: {}", r.text);
+        assert_eq!(r.json()["result"]["steps"], clean["result"]["steps"], "{unit}");
+    }
+    let r = app.post("/v1/mobility", &json!({"counts": {"bodies": 5, "pairs": {"I": 5, "II": 1}}})).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    assert_eq!(r.json()["result"]["grubler"]["mobility"], 1);
+}

@@ -3,8 +3,9 @@
 //! the schema forbids and which hides a client's mistake behind jargon
 //! ("expected struct FlywheelRequest with 13 elements"). [`Strict`] reads
 //! a `serde_json::Value` as serde_json does, except that a struct must be a
-//! JSON object. It is a deserializer of its own (not a pre-pass) because only
-//! the types being read know where a struct is expected.
+//! JSON object; and a number may come as a text a person wrote (`"0,1"`).
+//! It is a deserializer of its own (not a pre-pass) because only the types
+//! being read know where a struct (or a number) is expected.
 
 use serde::de::value::StrDeserializer;
 use serde::de::{self, DeserializeSeed, Deserializer, IntoDeserializer, Unexpected, Visitor};
@@ -62,7 +63,7 @@ impl<'de> Deserializer<'de> for Strict<'de> {
                 let value = visitor.visit_seq(&mut seq)?;
                 match seq.0.len() {
                     0 => Ok(value),
-                    _ => Err(de::Error::invalid_length(a.len(), &"fewer items")),
+                    _ => Err(de::Error::invalid_length(a.len(), &"json-expect-fewer")),
                 }
             }
             Value::Object(m) => visitor.visit_map(Members::new(m)),
@@ -110,8 +111,23 @@ impl<'de> Deserializer<'de> for Strict<'de> {
         }
     }
 
+    /// A plain number, or a text a person wrote it as (`"0,1"`, `"0.1"`:
+    /// a decimal comma wherever a number is text); other texts as serde says.
+    fn deserialize_f64<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, Error> {
+        match self.0 {
+            Value::String(s) if crate::units::number(s).is_some_and(f64::is_finite) => {
+                visitor.visit_f64(crate::units::number(s).unwrap_or_default())
+            }
+            _ => self.deserialize_any(visitor),
+        }
+    }
+
+    fn deserialize_f32<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, Error> {
+        self.deserialize_f64(visitor)
+    }
+
     serde::forward_to_deserialize_any! {
-        bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string
+        bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 char str string
         bytes byte_buf unit unit_struct seq tuple tuple_struct map identifier ignored_any
     }
 }

@@ -39,13 +39,14 @@ pub fn plain(message: &str) -> Msg {
 
 /// What the service's own readers expect (their visitors' `expecting`
 /// writes the catalogue's id, so that serde's message carries it here).
-const EXPECTING: [&str; 6] = [
+const EXPECTING: [&str; 7] = [
     "json-expect-quantity",
     "json-expect-function",
     "json-expect-program",
     "json-expect-inputs",
     "json-expect-track",
     "json-expect-point",
+    "json-expect-fewer",
 ];
 
 /// What serde expected, in words.
@@ -102,9 +103,16 @@ pub fn malformed(e: &serde_json::Error, raw: &[u8]) -> Msg {
         .unwrap_or_default();
     let cause = e.to_string();
     let cause = cause.split(" at line ").next().unwrap_or(&cause);
+    let before: String = text
+        .lines()
+        .nth(line.saturating_sub(1))
+        .map(|l| l.chars().take(column.saturating_sub(1)).collect())
+        .unwrap_or_default();
     let hint = match near.trim_start() {
+        _ if decimal_comma(&before, &near) => "json-hint-decimal-comma",
         n if ["NaN", "Infinity", "-Infinity", "inf", "nan"].iter().any(|w| n.starts_with(w)) => "json-hint-nan",
         n if n.starts_with('\'') => "json-hint-quotes",
+        _ if cause == "trailing comma" => "text-nothing",
         n if n.starts_with('}') || n.starts_with(']') => "json-hint-comma",
         _ => "text-nothing",
     };
@@ -114,6 +122,16 @@ pub fn malformed(e: &serde_json::Error, raw: &[u8]) -> Msg {
     };
     let at = at.count("line", line).count("column", column);
     Msg::new("json-syntax").with("cause", syntax(cause)).with("at", at).with("hint", Msg::new(hint))
+}
+
+/// A decimal comma inside a JSON number (`"mu": 0,1`): a digit, a comma
+/// and a digit where the parse stopped.
+fn decimal_comma(before: &str, near: &str) -> bool {
+    let b = before.trim_end();
+    let digit_then_comma = b.strip_suffix(',').is_some_and(|r| r.ends_with(|c: char| c.is_ascii_digit()));
+    let b = before.trim_end_matches(|c: char| c.is_ascii_digit());
+    let comma_then_digits = b.ends_with(',') && b[..b.len() - 1].trim_end().ends_with(|c: char| c.is_ascii_digit());
+    (digit_then_comma && near.starts_with(|c: char| c.is_ascii_digit())) || comma_then_digits
 }
 
 /// serde_json's syntax error, as the catalogue words it.

@@ -199,7 +199,7 @@ fn summary(row: &JobRow, result: &Value) -> Markup {
         p { (Msg::new("page-computed-in").arg("time", duration(row.engine_us)).render(lang)) }
         @if let Some(a) = accuracy {
             div.scroll { table.accuracy { tbody { @for (k, v) in a { tr {
-                th { (k.replace('_', " ")) }
+                th { (accuracy_label(lang, k)) }
                 @if v.is_number() { td.num { (text(v)) } } @else { td { (text(v)) } }
             } } } } }
         } @else {
@@ -210,6 +210,12 @@ fn summary(row: &JobRow, result: &Value) -> Markup {
             ul.warnings { @for w in &warnings { li { (w) } } }
         }
     }
+}
+
+/// A field of a result's `accuracy` in the page's words (the catalogue's
+/// `page-accuracy-…`), or its name with spaces where the catalogue has none.
+fn accuracy_label(lang: i18n::Lang, key: &str) -> String {
+    i18n::tr_named(lang, &format!("page-accuracy-{}", key.replace('_', "-"))).unwrap_or_else(|| key.replace('_', " "))
 }
 
 fn plot_figures(id: &str, listed: &[Listed], step: Option<usize>) -> Markup {

@@ -104,7 +104,7 @@ input-same-steps = all inputs share the steps of the first
 input-actuators = give one actuator per input: { $inputs } input(s), { $actuators } actuator(s)
 input-own-actuator = each input needs its own actuator: '{ $name }' drives another
 input-actuator-kind = an actuator must be a revolute joint (a torque) or a prismatic one (a force)
-input-needs-end = an input in metres (a prismatic joint, a point) needs "end"
+input-needs-end = an input in metres (a prismatic joint, a point on a guide, a contact's arc length) needs "end" (or "steps": 1, one position)
 input-speed = "speed" is required
 
 ## Kinetostatics: what it asks of its outputs, and the positions a mechanism cannot reach

@@ -118,7 +118,7 @@ input-actuators =
     }
 input-own-actuator = cada entrada necesita su propio actuador: '{ $name }' ya acciona otra
 input-actuator-kind = un actuador debe ser un par de rotación (da un par) o uno prismático (da una fuerza)
-input-needs-end = una entrada en metros (un par prismático, un punto) necesita "end"
+input-needs-end = una entrada en metros (un par prismático, un punto sobre una guía, la longitud de arco de un contacto) necesita "end" (o "steps": 1, una sola posición)
 input-speed = "speed" es obligatorio
 
 ## Cinetostática: lo que pide de sus resultados, y las posiciones que un mecanismo no alcanza

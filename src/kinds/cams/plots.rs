@@ -43,7 +43,7 @@ pub fn draw(job: &Job, name: &str, _: &Options) -> Drawn {
         "svaj" => Some(svaj(job, rows)),
         "profile" => Some(profile(job, rows)),
         "pressure" => Some(
-            Chart::new(say("plot-cam-pressure-title"), angle_axis(), Axis::new("φ (deg), ρ (mm)", ""))
+            Chart::new(say("plot-cam-pressure-title"), angle_axis(), Axis::new("φ (°), ρ (mm)", ""))
                 .line(
                     say("plot-cam-pressure-line"),
                     curve(rows, "pressure_angle", 180.0 / std::f64::consts::PI),

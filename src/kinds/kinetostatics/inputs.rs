@@ -117,6 +117,8 @@ fn input_range(e: &mut Errors, input: &InputDto, prismatic: bool, at: &str) -> O
     let end = match value(e, &input.end, "end")? {
         Some(v) => v,
         None if !prismatic => start + 2.0 * PI,
+        // One position: where it ends does not matter.
+        None if input.steps == Some(1) => start,
         None => return e.refuse(at, Msg::new("input-needs-end")),
     };
     let reference = value(e, &input.reference, "reference")?.unwrap_or(0.0);

@@ -47,6 +47,8 @@ impl Kind for Kinetostatics {
         ("/steps/*/kinematics/*/ax", "m/s^2"),
         ("/steps/*/kinematics/*/ay", "m/s^2"),
         ("/steps/*/kinematics/*/alpha", "rad/s^2"),
+        ("/steps/*/kinematics/*/inertia_force/*", "N"),
+        ("/steps/*/kinematics/*/inertia_moment", "N*m"),
         ("/assembled_points/*/*", "m"),
         ("/steps/*/points/*/x", "m"),
         ("/steps/*/points/*/y", "m"),

@@ -2,11 +2,11 @@
 
 use super::request::Problem;
 use crate::engine::kinetostatics::{Motion, Reaction, Step, Totals, energy};
-use crate::engine::model::{Coordinate, Driver};
+use crate::engine::model::{Coordinate, Driver, Mechanism};
 use crate::i18n::Msg;
 use crate::kind::notes::Notes;
 use crate::kinds::mechanism::track::{PointState, states};
-use crate::kinds::mechanism::{ContactDto, EnergyDto, Name, ReactionDto, annotate, contact_warnings};
+use crate::kinds::mechanism::{ContactDto, Coords, EnergyDto, Name, ReactionDto, annotate, contact_warnings};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use utoipa::ToSchema;
@@ -52,6 +52,12 @@ pub struct BodyMotion {
     pub ax: Option<f64>,
     pub ay: Option<f64>,
     pub alpha: f64,
+    /// The resultant of the body's inertia forces at its centre of mass,
+    /// −m·a_G (N): with `inertia_moment`, what d'Alembert adds to the loads.
+    #[schema(value_type = Option<Coords>)]
+    pub inertia_force: Option<[f64; 2]>,
+    /// The moment of the body's inertia forces about its centre of mass, −I_G·α (N·m).
+    pub inertia_moment: f64,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
@@ -291,7 +297,11 @@ impl StepDto {
                 .map(|v| names[1..].iter().cloned().zip(v.iter().copied()).collect()),
             jacobian_condition: s.condition,
             singular: s.singular,
-            kinematics: s.kinematics.as_ref().filter(|_| p.kinematics).map(|m| motion(m, names, &p.centred)),
+            kinematics: s
+                .kinematics
+                .as_ref()
+                .filter(|_| p.kinematics)
+                .map(|m| motion(m, &p.mechanism, names, &p.centred)),
             energy: s
                 .kinematics
                 .as_ref()
@@ -309,11 +319,12 @@ impl StepDto {
 
 /// Every moving body's motion; `centred[b]` says whether moving body b has
 /// a centre of mass to report.
-fn motion(m: &Motion, names: &[Name], centred: &[bool]) -> Vec<BodyMotion> {
+fn motion(m: &Motion, mechanism: &Mechanism, names: &[Name], centred: &[bool]) -> Vec<BodyMotion> {
     (0..names.len() - 1)
         .map(|b| {
             let c = 3 * b;
             let at = |v: &[f64], k: usize| centred[b].then_some(v[c + k]);
+            let body = &mechanism.bodies[b + 1];
             BodyMotion {
                 body: names[b + 1].clone(),
                 x: at(&m.q, 0),
@@ -325,6 +336,8 @@ fn motion(m: &Motion, names: &[Name], centred: &[bool]) -> Vec<BodyMotion> {
                 ax: at(&m.qdd, 0),
                 ay: at(&m.qdd, 1),
                 alpha: m.qdd[c + 2],
+                inertia_force: centred[b].then(|| [-body.mass * m.qdd[c], -body.mass * m.qdd[c + 1]]),
+                inertia_moment: -body.inertia * m.qdd[c + 2],
             }
         })
         .collect()

@@ -142,10 +142,10 @@ pub fn contact(
         }
         Err(NoTouch::Gap { gap, point }) => {
             let msg = Msg::new("contact-gap")
-                .written("gap", format!("{gap:.6e}"))
-                .written("x", format!("{:.6}", point[0]))
-                .written("y", format!("{:.6}", point[1]))
-                .written("tolerance", format!("{tolerance:.1e}"));
+                .fig("gap", gap)
+                .fig("x", point[0])
+                .fig("y", point[1])
+                .fig("tolerance", tolerance);
             e.refuse(&format!("{at}/curves"), msg)
         }
         Err(NoTouch::Cross { point, angle }) => {

@@ -4,7 +4,6 @@
 
 use super::MechanismDto;
 use crate::engine::sketch::{Dimension, solve};
-use crate::engine::variants::round_sig;
 use crate::i18n::Msg;
 use crate::kind::quantity::{Errors, Quantity};
 use crate::units::Dim;
@@ -75,9 +74,10 @@ impl MechanismDto {
             Ok(s) => s,
             Err(c) => {
                 let (unit, factor) = length_unit(dimensions);
-                let misfit = format!("{} {unit}", round_sig(c.residual / factor, 4));
+                let misfit = Msg::new("text-value-unit").fig("value", c.residual / factor).arg("unit", unit);
                 for k in c.dimensions {
-                    e.say(&format!("{at}/dimensions/{k}"), Msg::new("dimensions-conflict").arg("residual", &misfit));
+                    let said = Msg::new("dimensions-conflict").with("residual", misfit.clone());
+                    e.say(&format!("{at}/dimensions/{k}"), said);
                 }
                 return None;
             }

@@ -20,7 +20,12 @@ use utoipa::{PartialSchema, ToSchema};
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct InputDto {
     /// A revolute (crank) or prismatic (linear actuator) joint: its relative
-    /// rotation or displacement along the axis.
+    /// rotation or displacement along the axis. Or a contact joint that
+    /// carries a point along a curve (a ring on a rim): the arc length
+    /// along its first curve, growing the way the curve runs — counter-
+    /// clockwise round a circle or a polar curve (growing ψ), along a
+    /// line's direction, from a spline's first point to its last — so that
+    /// a ring at the top of a rim moving to the right has a negative speed.
     #[schema(max_length = 100)]
     pub joint: Option<String>,
     /// Instead of a joint: a point of `points` whose displacement along

@@ -38,6 +38,8 @@ pub struct MobilityRequest {
 /// Bodies and pairs counted, as the course's exercises give them.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct PairCounts {
+    /// `planar` (the default, as the course's exercises are) or `spatial`.
+    #[serde(default)]
     pub space: MobilitySpace,
     /// Bodies, the ground counted.
     #[schema(minimum = 1, maximum = 10000)]
@@ -49,9 +51,10 @@ pub struct PairCounts {
 }
 
 /// Plane (3 freedoms a body) or space (6).
-#[derive(Clone, Copy, Debug, Serialize, Deserialize, ToSchema)]
+#[derive(Clone, Copy, Debug, Default, Serialize, Deserialize, ToSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum MobilitySpace {
+    #[default]
     Planar,
     Spatial,
 }
