@@ -230,7 +230,7 @@ fn four_bar_torque(theta2: f64, omega2: f64, m_load: f64) -> (f64, f64) {
     (torque, terms.iter().fold(0.0f64, |s, t| s.max(t.abs())) / omega2)
 }
 
-/// P.103 for a class at its defaults and at F = 700 N·m, ε = 0.05: the
+/// P.103, alone and for a class, at its defaults and at F = 700 N·m, ε = 0.05: the
 /// approximate inertia ΔE/(ε ω²) with the energy's swing over the cycle in
 /// closed form — the motor's mean torque F/π against −F sin φ on [0, π]
 /// swings by ΔE = F(2 cos s − 1 + 2s/π), s = asin(1/π) between its
@@ -240,9 +240,11 @@ async fn p103_for_a_class_has_the_closed_form_swing() {
     let app = TestApp::new().await;
     let s = (1.0 / std::f64::consts::PI).asin();
     let swing = 2.0 * s.cos() - 1.0 + 2.0 * s / std::f64::consts::PI;
-    for (query, f, eps, rpm) in [("", 500.0, 0.04, 60.0), ("F=700&eps=0.05", 700.0, 0.05, 60.0)] {
-        let omega = rpm * std::f64::consts::TAU / 60.0;
-        let expected = f * swing / (eps * omega * omega);
-        near(part(&app, "p103-class", "/inertia_approximate", query).await, expected, 1e-6, query);
+    for id in ["p103-class", "p103-slider-flywheel"] {
+        for (query, f, eps, rpm) in [("", 500.0, 0.04, 60.0), ("F=700&eps=0.05", 700.0, 0.05, 60.0)] {
+            let omega = rpm * std::f64::consts::TAU / 60.0;
+            let expected = f * swing / (eps * omega * omega);
+            near(part(&app, id, "/inertia_approximate", query).await, expected, 1e-6, &format!("{id}: {query}"));
+        }
     }
 }

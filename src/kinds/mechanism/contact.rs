@@ -141,11 +141,9 @@ pub fn contact(
             Some((JointKind::Contact(Box::new(Contact::new(curves, rolling, p))), p))
         }
         Err(NoTouch::Gap { gap, point }) => {
-            let msg = Msg::new("contact-gap")
-                .fig("gap", gap)
-                .fig("x", point[0])
-                .fig("y", point[1])
-                .fig("tolerance", tolerance);
+            // A coordinate that is rounding off zero (1e-18 where the figure is 0.1 m) is 0.
+            let [x, y] = point.map(|v| if v.abs() < 1e-12 * size { 0.0 } else { v });
+            let msg = Msg::new("contact-gap").fig("gap", gap).fig("x", x).fig("y", y).fig("tolerance", tolerance);
             e.refuse(&format!("{at}/curves"), msg)
         }
         Err(NoTouch::Cross { point, angle }) => {
