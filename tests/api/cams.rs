@@ -353,6 +353,16 @@ async fn bad_programs_curves_and_undercuts_are_said_where_they_are() {
     let mut curves = template_request("cam-flat-follower");
     curves["mechanism"]["joints"][2]["curves"][0] = json!({"spline": {"points": [[0, 0], [0.1, 0], [0.1, 0.1]]}});
     assert_eq!(app.pointers("/v1/kinetostatics", &curves).await, ["/mechanism/joints/2/curves/0/spline/points"]);
+    // A point given twice in a row, or a closed spline's first repeated last, would draw a loop: refused at it.
+    let square = [[0.0, 0.0], [0.1, 0.0], [0.1, 0.1], [0.0, 0.1]];
+    for (points, closed, at) in [
+        (vec![square[0], square[1], square[1], square[2], square[3]], false, 2),
+        (vec![square[0], square[1], square[2], square[3], square[0]], true, 4),
+    ] {
+        curves["mechanism"]["joints"][2]["curves"][0] = json!({"spline": {"points": points, "closed": closed}});
+        let pointer = format!("/mechanism/joints/2/curves/0/spline/points/{at}");
+        assert_eq!(app.pointers("/v1/kinetostatics", &curves).await, [pointer]);
+    }
     curves["mechanism"]["joints"][2]["curves"][0] =
         json!({"polar": {"center": "O", "radius": {"expr": "0.03*cos(psi)"}}});
     let r = app.post("/v1/kinetostatics", &curves).await;

@@ -52,6 +52,23 @@ async fn a_kinetostatics_result_over_the_limit_is_refused_with_the_steps_that_fi
     assert!(result.len() <= limit, "{} bytes", result.len());
 }
 
+/// A cam's samples over the limit: refused at `samples` with how many fit,
+/// which then fit (issue 48: 36 000 samples were refused saying only the size).
+#[tokio::test]
+async fn a_cams_samples_over_the_limit_are_refused_with_the_samples_that_fit() {
+    let limit = 300_000;
+    let app = TestApp::with_limits(Limits { result_bytes: limit, ..Limits::default() }).await;
+    let mut body = crate::helpers::template_request("cam-design");
+    body["samples"] = 3600.into();
+    let message = too_large(&app.post("/v1/cams", &body).await, "/samples");
+    let fit = would_fit(&message, "samples");
+    assert!((100..3600).contains(&fit), "{message}");
+    body["samples"] = fit.into();
+    let r = app.post("/v1/cams", &body).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", &r.text[..r.text.len().min(400)]);
+    assert!(serde_json::to_string(&r.json()["result"]).unwrap().len() <= limit);
+}
+
 /// A flywheel's table over the limit is found when the result is written
 /// (no estimate before): refused with the samples that fit, which then fit.
 #[tokio::test]

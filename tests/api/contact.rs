@@ -225,6 +225,14 @@ async fn a_disk_rolling_in_a_circular_track_swings_as_its_pendulum() {
     assert!((s.abs() - 2.0 * big * theta).abs() < 1e-5 * 2.0 * big * theta, "s(T/2) = {s}");
     assert!(result["energy_residual"].as_f64().unwrap().abs() < 1e-9, "{}", result["energy_residual"]);
     assert!(result["warnings"].as_array().unwrap().is_empty(), "{}", result["warnings"]);
+    // A disk of the track's own radius fills it: refused at the curves, not a run in which nothing moves.
+    let mut full = body.clone();
+    full["machine"]["mechanism"]["joints"][0]["curves"][1]["circle"]["radius"] = json!(big);
+    full["machine"]["mechanism"]["points"]["C"] = json!([0, big]);
+    let r = app.post("/v1/dynamics", &full).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert_eq!(r.json()["errors"][0]["pointer"], "/machine/mechanism/joints/0/curves", "{}", r.text);
+    assert!(r.text.contains("touches it all round"), "{}", r.text);
 }
 
 /// A flywheel's `machine` may hold a contact: the eccentric cam of

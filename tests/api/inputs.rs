@@ -158,3 +158,18 @@ async fn a_pendulum_on_a_free_cart_integrates_with_a_sliding_input() {
     }
     assert!(swung > 0.05, "the cart moves: {swung} m");
 }
+
+/// K1 driven by its piston past the outer dead centre (B at 0.379 m can
+/// go 0.0013 m further out, crank and rod in line): refused at the step
+/// where the loop stops closing, saying what a slider input meets there,
+/// not a non-Grashof crank's turn (issue 48).
+#[tokio::test]
+async fn a_slider_driven_past_its_dead_centre_is_told_so() {
+    let app = TestApp::new().await;
+    let mut k1 = crate::helpers::request("k1_offset_slider_crank");
+    k1["input"] = json!({"joint": "guide", "speed": "1 m/s", "start": 0, "end": "10 mm", "steps": 10});
+    let r = app.post("/v1/kinetostatics", &k1).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert!(r.text.contains("a slider driven to or through a dead centre"), "{}", r.text);
+    assert!(!r.text.contains("Grashof"), "{}", r.text);
+}

@@ -53,6 +53,8 @@ contact-cross = the curves cross at ({ $x }, { $y }) at { $angle }° instead of 
 contact-lines = two lines do not make a contact (they touch along their length or cross): use a prismatic joint
 contact-spline-points = must hold 4 to { $max } points
 contact-no-spline = no spline passes through these points
+contact-circle-fills = a circle of radius { $radius } m inside a circle of the same radius touches it all round: it cannot roll or slide in it (make the inner one smaller)
+contact-spline-repeated = repeats point { $other }: a spline through a point twice draws a loop nobody drew; give each point once (a closed spline joins its last point to its first by itself)
 contact-polar-positive = must be positive over the whole turn: r({ $angle }°) = { $value }
 contact-cam-ccw = a cam curve's program runs counter-clockwise: write it in the cam's ccw angle
 contact-cam-segments = a cam curve takes a program of segments
@@ -115,7 +117,9 @@ kinetostatics-at-start = { $what } at input { $value } (step { $step } of { $ste
 kinetostatics-on-the-way = { $said }; on the way there from the drawn configuration (input "reference") it stops closing at { $value }
 kinetostatics-value-rad = { $value } rad = { $degrees } deg
 kinetostatics-not-assembled = the mechanism cannot be assembled
-kinetostatics-loop = the loop through { $joint } does not close (Newton-Raphson ends { $residual } short); check start, end and the lengths (a non-Grashof crank, say, cannot make a full turn)
+kinetostatics-loop = the loop through { $joint } does not close (Newton-Raphson ends { $residual } short); check start, end and the lengths ({ $why })
+kinetostatics-loop-crank = a non-Grashof crank, say, cannot make a full turn
+kinetostatics-loop-slider = a slider driven to or through a dead centre, say, where the linkage's position is no function of the slider's: start and end short of it, or drive the crank; or a follower past where its curve holds it
 kinetostatics-singular = the mechanism is at a singular position
 kinetostatics-dead-centre = a dead centre or toggle the input cannot pass (the constraint Jacobian loses rank)
 kinetostatics-friction = joint friction does not settle

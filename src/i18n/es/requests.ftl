@@ -60,6 +60,8 @@ contact-cross = las curvas se cortan en ({ $x }; { $y }) con un ángulo de { $an
 contact-lines = dos rectas no forman un contacto (se tocan a lo largo de toda su longitud o se cortan): use un par prismático
 contact-spline-points = debe tener de 4 a { $max } puntos
 contact-no-spline = ningún spline pasa por estos puntos
+contact-circle-fills = un círculo de radio { $radius } m dentro de otro del mismo radio lo toca en toda la vuelta: no puede rodar ni deslizar en él (haga menor el interior)
+contact-spline-repeated = repite el punto { $other }: un spline que pasa dos veces por un punto dibuja un bucle que nadie dibujó; dé cada punto una vez (un spline cerrado une su último punto con el primero por sí solo)
 contact-polar-positive = debe ser positivo en toda la vuelta: r({ $angle }°) = { $value }
 contact-cam-ccw = el programa de una curva de leva va en sentido antihorario: escríbalo en el ángulo antihorario (ccw) de la leva
 contact-cam-segments = una curva de leva toma un programa de tramos
@@ -129,7 +131,9 @@ kinetostatics-at-start = { $what } en la entrada { $value } (paso { $step } de {
 kinetostatics-on-the-way = { $said }; en el camino hasta allí desde la configuración dibujada (la "reference" de la entrada) deja de cerrar en { $value }
 kinetostatics-value-rad = { $value } rad = { $degrees } deg
 kinetostatics-not-assembled = el mecanismo no se puede montar
-kinetostatics-loop = el lazo que pasa por { $joint } no cierra (Newton-Raphson se queda a { $residual } de cerrarlo); revise start, end y las longitudes (una manivela que no cumple Grashof, por ejemplo, no puede dar una vuelta completa)
+kinetostatics-loop = el lazo que pasa por { $joint } no cierra (Newton-Raphson se queda a { $residual } de cerrarlo); revise start, end y las longitudes ({ $why })
+kinetostatics-loop-crank = una manivela que no cumple Grashof, por ejemplo, no puede dar una vuelta completa
+kinetostatics-loop-slider = una deslizadera llevada hasta un punto muerto o más allá, por ejemplo, donde la posición del mecanismo no es función de la suya: empiece y acabe antes, o accione la manivela; o un seguidor más allá de donde su curva lo sostiene
 kinetostatics-singular = el mecanismo está en una posición singular
 kinetostatics-dead-centre = un punto muerto que la entrada no puede pasar (el jacobiano de las restricciones pierde rango)
 kinetostatics-friction = el rozamiento en los pares cinemáticos no converge

@@ -111,6 +111,12 @@ impl crate::kind::JobResult for CamResult {
     fn notes(&mut self) -> Option<&mut Notes> {
         Some(&mut self.notes)
     }
+
+    /// A turn's samples set its size: a result too large says how many fit.
+    fn rows(&self) -> Option<crate::kind::Rows> {
+        let (field, count) = ("/samples".into(), self.samples.len());
+        Some(crate::kind::Rows { field, count, also: "text-nothing" })
+    }
 }
 
 /// The lift of a problem as the engine reads it.

@@ -22,6 +22,8 @@ pub struct Written {
     pub steps: usize,
     /// The first position, SI.
     pub start: f64,
+    /// The input is a length (a slider's, a point's, an arc's).
+    pub prismatic: bool,
 }
 
 impl Written {
@@ -35,7 +37,7 @@ impl Written {
             .find_map(|q| written_unit(q, dim))
             .unwrap_or_else(|| (si.to_string(), 1.0));
         let start = positions.first().and_then(|p| p.first()).map_or(0.0, |i| i[0]);
-        Self { at, unit, steps: positions.len(), start }
+        Self { at, unit, steps: positions.len(), start, prismatic }
     }
 
     /// `si` in the written unit, to 6 significant digits (radians also in
@@ -55,7 +57,10 @@ impl Written {
                 *step,
                 *input,
                 "kinetostatics-not-assembled",
-                Msg::new("kinetostatics-loop").arg("joint", joint).num("residual", round_sig(*residual, 2)),
+                Msg::new("kinetostatics-loop").arg("joint", joint).num("residual", round_sig(*residual, 2)).with(
+                    "why",
+                    Msg::new(if self.prismatic { "kinetostatics-loop-slider" } else { "kinetostatics-loop-crank" }),
+                ),
             ),
             EngineError::Singular { step, input } => {
                 (*step, *input, "kinetostatics-singular", Msg::new("kinetostatics-dead-centre"))

@@ -132,6 +132,13 @@ pub fn contact(
     let [Some(a), Some(b)] = <[Option<Curve>; 2]>::try_from(read).ok()? else { return None };
     let curves = [a, b];
     let tolerance = TOUCH_TOLERANCE * size;
+    // A circle inside another of its own radius touches it all round: it cannot roll or slide.
+    if let [Curve::Circle { radius: r, inside: i, .. }, Curve::Circle { radius: q, inside: k, .. }] = &curves
+        && i != k
+        && (r - q).abs() <= tolerance
+    {
+        return e.refuse(&format!("{at}/curves"), Msg::new("contact-circle-fills").fig("radius", *r));
+    }
     match touching(&curves, tolerance, hint) {
         Ok(p) => {
             let rolling = j.rolling.unwrap_or(false);
@@ -184,12 +191,26 @@ fn curve(e: &mut Errors, c: &CurveDto, point: &PointReader, at: &str) -> Option<
             if let Some(k) = s.points.iter().position(|p| !p.iter().all(|v| v.is_finite())) {
                 return e.refuse(&format!("{at}/points/{k}"), Msg::new("mechanism-coordinates"));
             }
+            if let Some((k, other)) = repeated(&s.points, s.closed.unwrap_or(false)) {
+                return e.refuse(&format!("{at}/points/{k}"), Msg::new("contact-spline-repeated").arg("other", other));
+            }
             match Spline::new(s.points.clone(), s.closed.unwrap_or(false)) {
                 Some(spline) => Some(Curve::Spline(spline)),
                 None => e.refuse(&format!("{at}/points"), Msg::new("contact-no-spline")),
             }
         }
     }
+}
+
+/// A point of a spline that repeats the one before it (a closed spline's
+/// first, the last): (its index, the other's), within 1e-9 of the
+/// points' extent — a spline through a point twice draws a loop nobody drew.
+fn repeated(points: &[[f64; 2]], closed: bool) -> Option<(usize, usize)> {
+    let extent = points.iter().flat_map(|p| p.iter()).fold(0.0f64, |m, v| m.max(v.abs())).max(f64::MIN_POSITIVE);
+    let same = |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).hypot(a[1] - b[1]) <= 1e-9 * extent;
+    let n = points.len();
+    let pairs = (1..n).map(|k| (k, k - 1)).chain(closed.then_some((n - 1, 0)));
+    pairs.into_iter().find(|&(k, j)| same(points[k], points[j]))
 }
 
 /// A polar curve: r(ψ) read as a Function of `psi` over a turn, positive
