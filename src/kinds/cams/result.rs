@@ -163,7 +163,7 @@ pub fn result(p: &Problem, cam: &Cam, turn: &[Sample]) -> CamResult {
         })
         .collect();
     let mut notes = Notes::default();
-    let summary = summary(p, cam, turn, &forces, &mut notes);
+    let summary = summary(p, cam, &mut notes);
     let segments = match &p.motion {
         Motion::Program(program, names) => {
             // A jump of the jerk keeps the acceleration continuous: only
@@ -204,7 +204,7 @@ fn peaks(s: &crate::engine::cam::Segment, name: &str, w: f64) -> SegmentPeaks {
     }
 }
 
-fn summary(p: &Problem, cam: &Cam, turn: &[Sample], forces: &[Option<[f64; 3]>], notes: &mut Notes) -> CamSummary {
+fn summary(p: &Problem, cam: &Cam, notes: &mut Notes) -> CamSummary {
     let (lift, grid) = (lift_of(p), scan(&breaks(p)));
     let e = extremes::of(cam, &lift, &grid);
     let at = |a: At| AtAngle { value: a.value, theta: a.theta };
@@ -229,7 +229,6 @@ fn summary(p: &Problem, cam: &Cam, turn: &[Sample], forces: &[Option<[f64; 3]>],
         Some((loads, external)) => dynamics(p, (loads, external.as_ref()), &grid),
         None => (None, None, None),
     };
-    let _ = (turn, forces);
     if let Some(ranges) = separation.as_ref().filter(|r| !r.is_empty()) {
         let deg =
             |x: f64| Msg::new("text-value-unit").num("value", (x.to_degrees() * 10.0).round() / 10.0).arg("unit", "°");
