@@ -49,8 +49,13 @@ pub fn scan(breaks: &[f64]) -> Vec<f64> {
 /// from the scan at `grid` ([`scan`]) refined at each contending local
 /// maximum; None where `f` has no value anywhere.
 pub fn largest(f: &dyn Fn(f64) -> Option<f64>, grid: &[f64]) -> Option<At> {
-    let n = grid.len();
     let values: Vec<f64> = grid.iter().map(|&t| f(t).unwrap_or(f64::NEG_INFINITY)).collect();
+    refined(f, grid, &values)
+}
+
+/// [`largest`] from the scan's `values` at `grid` already computed (−∞ where `f` has none).
+fn refined(f: &dyn Fn(f64) -> Option<f64>, grid: &[f64], values: &[f64]) -> Option<At> {
+    let n = grid.len();
     let top = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     if top == f64::NEG_INFINITY {
         return None;
@@ -103,9 +108,9 @@ fn golden(f: &dyn Fn(f64) -> Option<f64>, mut a: f64, mut b: f64, mut best: At) 
 /// [`TOLERANCE`]; a stretch across 2π ends past it.
 pub fn below_zero(f: &dyn Fn(f64) -> f64, grid: &[f64]) -> Vec<[f64; 2]> {
     let f = |t: f64| f(t.rem_euclid(TAU));
-    let grid = &with_dips(&f, grid);
+    let (grid, values) = &with_dips(&f, grid);
     let n = grid.len();
-    let negative: Vec<bool> = grid.iter().map(|&t| f(t) < 0.0).collect();
+    let negative: Vec<bool> = values.iter().map(|&v| v < 0.0).collect();
     if negative.iter().all(|&b| b) {
         return vec![[0.0, TAU]];
     }
@@ -139,14 +144,14 @@ pub fn below_zero(f: &dyn Fn(f64) -> f64, grid: &[f64]) -> Vec<[f64; 2]> {
     out.into_iter().map(|[a, b]| [a.rem_euclid(TAU), if a.rem_euclid(TAU) < a { b - TAU } else { b }]).collect()
 }
 
-/// `grid` with the angle of each dip of `f` below zero between its angles:
-/// every local minimum of the scan at or above zero refined (golden
-/// section), kept where it is below.
-fn with_dips(f: &dyn Fn(f64) -> f64, grid: &[f64]) -> Vec<f64> {
+/// `grid` with the angle of each dip of `f` below zero between its angles
+/// (every local minimum of the scan at or above zero refined by golden
+/// section, kept where it is below), sorted, and `f` at each.
+fn with_dips(f: &dyn Fn(f64) -> f64, grid: &[f64]) -> (Vec<f64>, Vec<f64>) {
     let n = grid.len();
     let values: Vec<f64> = grid.iter().map(|&t| f(t)).collect();
     let angle = |k: isize| grid[k.rem_euclid(n as isize) as usize] + TAU * k.div_euclid(n as isize) as f64;
-    let mut out = grid.to_vec();
+    let mut out: Vec<(f64, f64)> = grid.iter().copied().zip(values.iter().copied()).collect();
     for k in 0..n {
         let (before, after) = (values[(k + n - 1) % n], values[(k + 1) % n]);
         if values[k] < 0.0 || values[k] > before || values[k] > after {
@@ -159,11 +164,11 @@ fn with_dips(f: &dyn Fn(f64) -> f64, grid: &[f64]) -> Vec<f64> {
             At { value: -values[k], theta: grid[k] },
         );
         if lowest.value > 0.0 {
-            out.push(lowest.theta.rem_euclid(TAU));
+            out.push((lowest.theta.rem_euclid(TAU), -lowest.value));
         }
     }
-    out.sort_by(f64::total_cmp);
-    out
+    out.sort_by(|a, b| a.0.total_cmp(&b.0));
+    out.into_iter().unzip()
 }
 
 /// The turn's extremes of a cam's geometry.
@@ -195,16 +200,22 @@ pub fn convex(follower: Follower, x: &Sample) -> bool {
 /// The extremes of `cam` with `lift` over the turn scanned at `grid`.
 pub fn of(cam: &Cam, lift: Lift, grid: &[f64]) -> Extremes {
     let at = |t: f64| cam.at(t, lift(t)).ok();
-    let pressure = |t: f64| at(t).map(|x| x.pressure_angle.abs());
-    let concave = |t: f64| at(t).filter(|x| convex(cam.follower, x)).map(|x| -x.curvature_radius);
-    let min_rho = largest(&concave, grid).map(|a| At { value: -a.value, ..a });
+    // The scan's samples once; each quantity reads them, and refines on its own.
+    let scanned: Vec<Option<Sample>> = grid.iter().map(|&t| at(t)).collect();
+    let extreme = |q: &dyn Fn(&Sample) -> Option<f64>| {
+        let values: Vec<f64> = scanned.iter().map(|x| x.as_ref().and_then(q).unwrap_or(f64::NEG_INFINITY)).collect();
+        refined(&|t| at(t).as_ref().and_then(q), grid, &values)
+    };
+    let pressure = |x: &Sample| Some(x.pressure_angle.abs());
+    let concave = |x: &Sample| convex(cam.follower, x).then_some(-x.curvature_radius);
+    let min_rho = extreme(&concave).map(|a| At { value: -a.value, ..a });
     let face = (cam.follower == Follower::Flat).then(|| {
-        let far = largest(&|t| at(t).map(|x| x.face_offset), grid);
-        let near = largest(&|t| at(t).map(|x| -x.face_offset), grid);
+        let far = extreme(&|x| Some(x.face_offset));
+        let near = extreme(&|x| Some(-x.face_offset));
         (near.map_or(0.0, |a| -a.value), far.map_or(0.0, |a| a.value))
     });
     Extremes {
-        max_pressure_angle: largest(&pressure, grid).unwrap_or(At { value: 0.0, theta: 0.0 }),
+        max_pressure_angle: extreme(&pressure).unwrap_or(At { value: 0.0, theta: 0.0 }),
         min_curvature_radius: min_rho,
         face,
     }
