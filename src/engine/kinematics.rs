@@ -20,15 +20,18 @@ use super::constraints::{State, System, evaluate, evaluate_gamma, evaluate_into,
 use super::mobility::mobility;
 use super::model::Mechanism;
 use super::numeric::lu::Lu;
+use super::numeric::scaled;
 use super::numeric::svd::{singular_values, svd};
 use nalgebra::{DMatrix, DVector};
 
 /// Newton iterations allowed per position.
 const MAX_ITERATIONS: usize = 30;
-/// Φ_q is treated as singular beyond this condition number: velocities and
-/// forces there are not computed (a regular position of a mechanism in SI
-/// units has a condition number well below 1e4; at a toggle or change point
-/// it is 1e6 or more, from round-off alone).
+/// Φ_q is treated as singular beyond this condition number of its scaled
+/// form R Φ_q C ([`scaled`] with the coordinates' length scales
+/// [`Mechanism::column_lengths`]: the same at any size of the drawing): velocities and
+/// forces there are not computed (a regular position has a condition
+/// number well below 1e4; at a toggle or change point it is 1e6 or more,
+/// from round-off alone).
 pub const SINGULAR_CONDITION: f64 = 1e6;
 
 /// The mechanism at one input position.
@@ -46,9 +49,13 @@ pub struct Configuration {
     /// LU of Φ_q (regular when Φ_q is square and regular), for the
     /// multipliers (Φ_qᵀλ = b).
     pub lu: Lu,
-    /// Condition number of Φ_q: κ₂ (exact), or below [`ESTIMATE_LIMIT`] an
-    /// estimate of κ₁ when the sweep did not ask for it exactly.
+    /// Condition number of Φ_q in SI units: κ₂ (exact), or below
+    /// [`ESTIMATE_LIMIT`] an estimate of κ₁ when the sweep did not ask for
+    /// it exactly.
     pub condition: f64,
+    /// The same of Φ_q scaled by the mechanism's size ([`scaled`]): what
+    /// decides a singular position, the same at any scale of the drawing.
+    pub scaled_condition: f64,
     pub iterations: usize,
     pub residual: f64,
     /// q was placed in closed form ([`Dyads`]) before Newton confirmed it.
@@ -116,15 +123,22 @@ pub struct Workspace {
     /// (g and h when the one input's speed is 1 and its acceleration 0).
     pub qd: Vec<f64>,
     pub qdd: Vec<f64>,
-    /// Scratch: a right-hand side kept for the least-squares fallback, the estimator's vectors.
+    /// The coordinates' length scales c_j ([`Mechanism::column_lengths`];
+    /// empty: all 1) and the rows' r_i at the last evaluation ([`scaled`]).
+    pub cols: Vec<f64>,
+    rows: Vec<f64>,
+    /// Scratch: a right-hand side kept for the least-squares fallback, the
+    /// estimators' start vectors (SI, scaled) and their scratch.
     b: Vec<f64>,
     x: Vec<f64>,
+    xs: Vec<f64>,
     y: Vec<f64>,
 }
 
 impl Workspace {
-    /// Newton–Raphson from `q` to Φ = 0 at the given inputs: the iterations
-    /// and the final |Φ|∞; Φ and Φ_q there are in `self.sys`.
+    /// Newton–Raphson from `q` to Φ = 0 at the given inputs, to |R Φ|∞ ≤
+    /// 1e-13 (1 + max |q_j / c_j|) (each row in its own size, [`scaled`]):
+    /// the iterations and the final |Φ|∞; Φ and Φ_q there are in `self.sys`.
     pub fn assemble(
         &mut self,
         m: &Mechanism,
@@ -132,13 +146,14 @@ impl Workspace {
         inputs: &[[f64; 3]],
         step: usize,
     ) -> Result<(usize, f64), EngineError> {
-        let scale = 1.0 + q.iter().fold(0.0f64, |a, v| a.max(v.abs()));
-        let tol = 1e-13 * scale;
+        let c = |j: usize| self.cols.get(j).copied().unwrap_or(1.0);
+        let tol = 1e-13 * (1.0 + q.iter().enumerate().fold(0.0f64, |a, (j, v)| a.max((v / c(j)).abs())));
         let mut residual = f64::INFINITY;
         for iteration in 0..=MAX_ITERATIONS {
             evaluate_into(m, &State { q, qd: None, inputs }, &mut self.sys);
             residual = self.sys.phi.amax();
-            if residual <= tol {
+            scaled::row_scales(&self.sys.jacobian, &self.cols, &mut self.rows);
+            if self.sys.phi.iter().zip(&self.rows).all(|(v, r)| (v * r).abs() <= tol) {
                 return Ok((iteration, residual));
             }
             // Δq with Φ_q Δq = −Φ, in `qd`'s storage.
@@ -174,16 +189,22 @@ impl Workspace {
         solve(&self.sys.jacobian, &self.lu, &mut self.b, &mut self.qdd)
     }
 
-    /// Φ_q's condition number: κ₂ exactly when `exact` or where the estimate
-    /// from its LU exceeds [`ESTIMATE_LIMIT`]; else the estimate.
-    fn condition(&mut self, exact: bool) -> f64 {
-        if !exact && self.lu.is_regular() {
-            let estimate = estimated_condition(&self.sys.jacobian, &self.lu, [&mut self.x, &mut self.y]);
-            if estimate <= ESTIMATE_LIMIT {
-                return estimate;
-            }
-        }
-        condition(&self.sys.jacobian)
+    /// Φ_q's condition numbers, in SI units and scaled ([`scaled`]), each
+    /// κ₂ exactly when `exact` or where its estimate from Φ_q's LU exceeds
+    /// [`ESTIMATE_LIMIT`]; else the estimate.
+    fn conditions(&mut self, exact: bool) -> [f64; 2] {
+        let a = &self.sys.jacobian;
+        scaled::row_scales(a, &self.cols, &mut self.rows);
+        let scales = [self.rows.as_slice(), self.cols.as_slice()];
+        let estimates = (!exact && self.lu.is_regular()).then(|| {
+            let si = estimated_condition(a, &self.lu, [&mut self.x, &mut self.y]);
+            [si, scaled::estimated_condition(a, &self.lu, scales, [&mut self.xs, &mut self.y])]
+        });
+        let [si, of_scaled] = estimates.unwrap_or([f64::INFINITY; 2]);
+        [
+            if si <= ESTIMATE_LIMIT { si } else { condition(a) },
+            if of_scaled <= ESTIMATE_LIMIT { of_scaled } else { condition(&scaled::scaled(a, scales)) },
+        ]
     }
 }
 

@@ -1,5 +1,7 @@
 //! Degrees of freedom from the rank of the constraint Jacobian, redundant
-//! constraints, and which joint reactions they leave indeterminate.
+//! constraints, and which joint reactions they leave indeterminate. Ranks
+//! are taken of Φ_q scaled by the mechanism's size (`numeric::scaled`),
+//! so a mechanism drawn in micrometres or kilometres counts the same.
 //!
 //! With J = Φ_q of the joints alone, DOF = n − rank J and the redundant
 //! constraints number rows(J) − rank J. The multipliers of Φ_qᵀλ = Q − Mq̈
@@ -15,6 +17,7 @@
 
 use super::constraints::{State, evaluate, joint_offsets};
 use super::model::{Driver, Grubler, JointKind, Mechanism};
+use super::numeric::scaled::{row_scales, scaled};
 use super::numeric::svd::{singular_values, svd};
 use super::{Deadline, EngineError, Progress};
 use nalgebra::{DMatrix, DVector};
@@ -44,7 +47,7 @@ fn rank(a: &DMatrix<f64>) -> usize {
 /// Mobility of the mechanism at an assembled configuration `q`.
 pub fn mobility(m: &Mechanism, q: &[f64]) -> Mobility {
     let inputs = vec![[0.0; 3]; m.drivers.len()];
-    let jac = evaluate(m, &State { q, qd: None, inputs: &inputs }).jacobian;
+    let jac = scaled_jacobian(m, &State { q, qd: None, inputs: &inputs });
     let joint_rows = jac.nrows() - m.drivers.len();
     let rank_joints = rank(&jac.rows(0, joint_rows).into_owned());
     Mobility {
@@ -53,6 +56,13 @@ pub fn mobility(m: &Mechanism, q: &[f64]) -> Mobility {
         grubler: m.grubler(),
         indeterminate_joints: indeterminate(m, &jac),
     }
+}
+
+/// R Φ_q C at a state (`numeric::scaled`).
+fn scaled_jacobian(m: &Mechanism, state: &State) -> DMatrix<f64> {
+    let (jac, cols, mut rows) = (evaluate(m, state).jacobian, m.column_lengths(), Vec::new());
+    row_scales(&jac, &cols, &mut rows);
+    scaled(&jac, [&rows, &cols])
 }
 
 /// Where a Kutzbach count is made.
@@ -101,7 +111,7 @@ pub fn candidate_inputs(m: &Mechanism, q: &[f64], dof: usize, deadline: &Deadlin
     }
     let driven = Mechanism { drivers: drivable.iter().map(|&k| Driver::joint(k, 0.0)).collect(), ..m.clone() };
     let inputs = vec![[0.0; 3]; drivable.len()];
-    let jac = evaluate(&driven, &State { q, qd: None, inputs: &inputs }).jacobian;
+    let jac = scaled_jacobian(&driven, &State { q, qd: None, inputs: &inputs });
     let joint_rows = jac.nrows() - drivable.len();
     let mut basis = row_space(&jac.rows(0, joint_rows).into_owned());
     let scale = jac.rows(0, joint_rows).iter().fold(1.0f64, |a, v| a.max(v.abs()));

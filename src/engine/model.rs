@@ -10,6 +10,8 @@
 //! - Φ(q, φ) = 0 are the joint constraints and the driving constraints of the
 //!   inputs (coordinates φ), Φ_q their Jacobian.
 
+mod scale;
+
 use super::curves::{Curve, Domain, Local};
 pub use super::numeric::plane::{cross, dot, perp};
 

@@ -31,6 +31,7 @@ mod grading;
 mod group_commit;
 mod guide;
 mod haproxy;
+mod hard_cases;
 mod helpers;
 mod hostile;
 mod inputs;

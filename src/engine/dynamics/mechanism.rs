@@ -147,7 +147,7 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
     }
     let n = m.n_coordinates();
     let mass = masses(m);
-    let length = characteristic_length(m);
+    let (length, lengths) = (m.size(), m.column_lengths());
     let (phi, _, jac) = evaluate_blocks(m, &State { q: &start.q, qd: None, inputs: &vec![[0.0; 3]; m.drivers.len()] });
     let r = phi.len() - m.drivers.len();
     let energy = energy(p, &mass, &start.q, &start.qd);
@@ -163,7 +163,7 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         n,
         r,
         mass,
-        scale: (0..n).map(|k| if k % 3 == 2 { 1.0 / length } else { 1.0 }).collect(),
+        scale: lengths.iter().map(|c| c / length).collect(),
         tol: 1e-12 * length,
         sparse: sparse.map(RefCell::new),
         held_at: RefCell::new(Vec::new()),
@@ -178,7 +178,7 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
     if dae.motion(0.0, &start.q, &start.qd, false).is_none() {
         return Err(initial(Start::MovesNoMass));
     }
-    let settings = settings(p, &start.q, &start.qd, length);
+    let settings = settings(p, &start.qd, &lengths);
     let mut y0 = start.q.clone();
     y0.extend(&start.qd);
     y0.push(0.0);
@@ -251,25 +251,16 @@ fn clusters(held_at: &[f64], t_end: f64) -> Vec<f64> {
 }
 
 /// Tolerances: relative `tolerance`/100 on every component; absolute on
-/// positions relative to the mechanism's size L, on angles in rad, on
-/// velocities relative to L·Ω with Ω the largest of 1 rad/s, √(|g|/L) and
-/// the initial angular speeds.
-fn settings(p: &MechanismProblem, q: &[f64], qd: &[f64], length: f64) -> Settings {
-    let n = q.len();
+/// each coordinate relative to its length scale c_j (the mechanism's size
+/// L, or 1 rad; `model::scale`), on velocities relative to c_j·Ω with Ω
+/// the largest of 1 rad/s, √(|g|/L) and the initial angular speeds.
+fn settings(p: &MechanismProblem, qd: &[f64], lengths: &[f64]) -> Settings {
     let g = p.mechanism.gravity[0].hypot(p.mechanism.gravity[1]);
     let spin = (0..p.mechanism.bodies.len() - 1).map(|b| qd[3 * b + 2].abs()).fold(0.0, f64::max);
-    let rate = 1.0f64.max((g / length).sqrt()).max(spin);
+    let rate = 1.0f64.max((g / p.mechanism.size()).sqrt()).max(spin);
     let rtol = (0.01 * p.tolerance).clamp(1e-13, 1e-4);
-    let scale = |k: usize| {
-        let angle = k % 3 == 2;
-        match (k < n, angle) {
-            (true, true) => 1.0,
-            (true, false) => length,
-            (false, true) => rate,
-            (false, false) => length * rate,
-        }
-    };
-    let mut atol: Vec<f64> = (0..2 * n).map(|k| rtol * scale(k)).collect();
+    let positions = lengths.iter().map(|c| rtol * c);
+    let mut atol: Vec<f64> = positions.clone().chain(positions.map(|a| a * rate)).collect();
     atol.push(f64::INFINITY);
     let integrator = p.integrator.unwrap_or_else(|| Integrator::auto(p.tolerance, false));
     let (end, samples, automatic, deadline) = (p.end, p.samples, p.integrator.is_none(), p.deadline);
@@ -282,19 +273,6 @@ fn energy(p: &MechanismProblem, mass: &[f64], q: &[f64], qd: &[f64]) -> Option<f
         return None;
     }
     potential(&p.mechanism, &p.loads, q).map(|v| v + kinetic(mass, qd))
-}
-
-/// The span of the drawn points and centres of mass (at least 1 mm).
-fn characteristic_length(m: &Mechanism) -> f64 {
-    let points = m.bodies.iter().map(|b| b.cg).chain(m.joints.iter().map(|j| j.at));
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for p in points {
-        for k in 0..2 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
-    (hi[0] - lo[0]).hypot(hi[1] - lo[1]).max(1e-3)
 }
 
 /// Inputs, reactions and constraint residual at a sampled state.

@@ -10,7 +10,9 @@
 //! underflows.
 //!
 //! So the rows are replaced by their combinations along the left singular
-//! vectors uᵢ of the column-scaled Φ_q (its SVD). Those with
+//! vectors uᵢ of the scaled R·Φ_q·S (its SVD; S the columns' scale, R each
+//! row's own size, `numeric::scaled`: the same matrix at any size of
+//! the mechanism). Those with
 //! σᵢ ≥ τ·σ_max (τ = [`TAU`]) are used as they are. The nearly dependent
 //! ones are *held*: the row uᵢᵀΦ_q/σᵢ (a unit vector vᵢᵀ, the fold's
 //! direction) gets a zero right-hand side in the velocity and acceleration
@@ -23,6 +25,7 @@
 //! cheaply, whether any singular value can be that small; the SVD runs
 //! only then.
 
+use crate::engine::numeric::scaled::{row_scales, scaled};
 use crate::engine::numeric::svd::svd;
 use nalgebra::{DMatrix, DVector};
 
@@ -40,7 +43,8 @@ pub(crate) enum Rows {
     /// are; `held` (h × r): the nearly dependent ones, uᵢ/σᵢ, which hold the
     /// motion they constrain (zero right-hand side). The multipliers of the
     /// rows outside the span of `kept` are not determinate.
-    Reduced { kept: DMatrix<f64>, held: DMatrix<f64> },
+    /// `basis` (k × r): the kept uᵢ themselves (the combinations of R·Φ_q).
+    Reduced { kept: DMatrix<f64>, held: DMatrix<f64>, basis: DMatrix<f64> },
 }
 
 impl Rows {
@@ -50,10 +54,9 @@ impl Rows {
         if jac.nrows() == 0 {
             return Self::All;
         }
-        let mut scaled = jac.clone();
-        for (k, s) in scale.iter().enumerate() {
-            scaled.column_mut(k).scale_mut(*s);
-        }
+        let mut size = Vec::new();
+        row_scales(jac, scale, &mut size);
+        let scaled = self::scaled(jac, [&size, scale]);
         let r = scaled.clone().col_piv_qr().r();
         let diag: Vec<f64> = (0..r.nrows().min(r.ncols())).map(|i| r[(i, i)].abs()).collect();
         let (lo, hi) = diag.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), d| (lo.min(*d), hi.max(*d)));
@@ -75,10 +78,12 @@ impl Rows {
         if keep.len() == jac.nrows() {
             return Self::All;
         }
-        let rows = |idx: &[usize], unit: bool| {
-            DMatrix::from_fn(idx.len(), jac.nrows(), |i, j| u[(j, idx[i])] / if unit { 1.0 } else { sigma[idx[i]] })
+        let rows = |idx: &[usize], unit: bool, r: &[f64]| {
+            DMatrix::from_fn(idx.len(), jac.nrows(), |i, j| {
+                u[(j, idx[i])] * r.get(j).unwrap_or(&1.0) / if unit { 1.0 } else { sigma[idx[i]] }
+            })
         };
-        Self::Reduced { kept: rows(&keep, true), held: rows(&held, false) }
+        Self::Reduced { kept: rows(&keep, true, &size), held: rows(&held, false, &size), basis: rows(&keep, true, &[]) }
     }
 
     /// Whether a nearly dependent combination is held here (a singular position).
@@ -143,7 +148,7 @@ impl Rows {
     pub fn touches_loose(&self, row: usize) -> bool {
         match self {
             Self::All => false,
-            Self::Reduced { kept, .. } => 1.0 - kept.column(row).norm_squared() > 1e-12,
+            Self::Reduced { basis, .. } => 1.0 - basis.column(row).norm_squared() > 1e-12,
         }
     }
 }

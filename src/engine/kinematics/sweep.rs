@@ -39,7 +39,7 @@ pub fn sweep_each(
     exact: bool,
     mut each: impl FnMut(usize, &Configuration) -> Result<(), EngineError>,
 ) -> Result<(), EngineError> {
-    let mut ws = Workspace::default();
+    let mut ws = Workspace { cols: m.column_lengths(), ..Workspace::default() };
     let mut base = m.reference_q();
     if let Some(first) = positions.first() {
         approach(m, &mut ws, &mut base, first, deadline).map_err(|e| match e {
@@ -54,8 +54,10 @@ pub fn sweep_each(
     let mut c = Configuration::default();
     let single = m.drivers.len() == 1;
     let (dyads, mut trig) = (Dyads::new(m), Trig::default());
-    // The least jump of each curve parameter: 1e-3 of its period (of 1 m unbounded).
-    let jump_scale: Vec<f64> = m.parameter_periods().iter().map(|p| 1e-3 * p.unwrap_or(1.0)).collect();
+    // The least jump of each curve parameter: 1e-3 of its period (of its length scale unbounded).
+    let lengths = &ws.cols[m.n_body_coordinates()..];
+    let periods = m.parameter_periods();
+    let jump_scale: Vec<f64> = periods.iter().zip(lengths).map(|(p, c)| 1e-3 * p.unwrap_or(*c)).collect();
     for (step, inputs) in positions.iter().enumerate() {
         deadline.check(|| Progress::Assembled { step, of: positions.len() })?;
         let predict = |q: &mut Vec<f64>| {
@@ -80,7 +82,7 @@ pub fn sweep_each(
             // singular point passed; two in a row is a position out of reach.
             Err(e) if failure.is_none() => {
                 failure = Some(e);
-                c.set_singular(f64::INFINITY, 0, f64::NAN);
+                c.set_singular([f64::INFINITY; 2], 0, f64::NAN);
                 each(step, &c)?;
                 continue;
             }
@@ -91,15 +93,15 @@ pub fn sweep_each(
         failure = None;
         c.jumped.clear();
         if let Some(predicted) = &predicted {
-            c.jumped.extend(jumps(m.n_body_coordinates(), &jump_scale, [&base, predicted, &c.q]));
+            c.jumped.extend(jumps(m.n_body_coordinates(), (&jump_scale, &periods), [&base, predicted, &c.q]));
         }
         // One input: g = dq/dφ and h = d²q/dφ² give q̇ = gω and q̈ = gα + hω²
         // (γ is quadratic in q̇), and they are the next step's predictor.
         let unit = [[inputs[0][0], 1.0, 0.0]];
         let solved = ws.motion(m, &c.q, if single { &unit } else { inputs });
-        let cond = if solved { ws.condition(exact) } else { f64::INFINITY };
-        if !solved || cond > SINGULAR_CONDITION {
-            c.set_singular(cond, iterations, residual);
+        let [cond, scaled] = if solved { ws.conditions(exact) } else { [f64::INFINITY; 2] };
+        if !solved || scaled > SINGULAR_CONDITION {
+            c.set_singular([cond, scaled], iterations, residual);
             each(step, &c)?;
             continue;
         }
@@ -124,7 +126,8 @@ pub fn sweep_each(
         // Φ_q and its LU change hands: the workspace refills the last ones.
         std::mem::swap(&mut c.jacobian, &mut ws.sys.jacobian);
         std::mem::swap(&mut c.lu, &mut ws.lu);
-        (c.condition, c.iterations, c.residual, c.singular) = (cond, iterations, residual, false);
+        (c.condition, c.scaled_condition, c.iterations, c.residual) = (cond, scaled, iterations, residual);
+        c.singular = false;
         each(step, &c)?;
     }
     match failure {
@@ -134,29 +137,39 @@ pub fn sweep_each(
 }
 
 /// The curve parameters' columns (from `first`) where q settled far from
-/// the prediction: more than ten times the predicted change from the last
-/// position, and more than `least` (1e-3 of the curve's period; 1e-3 m
-/// along a line or an open curve).
-fn jumps<'a>(first: usize, least: &'a [f64], [base, predicted, q]: [&'a [f64]; 3]) -> impl Iterator<Item = usize> + 'a {
+/// the prediction: Newton's correction more than twice the predicted
+/// change from the last position (a quadratic predictor's error is a small
+/// part of it), the parameter's own period discounted, and more than
+/// `least` (1e-3 of the curve's period; 1e-3 of the mechanism's size along
+/// a line or an open curve).
+fn jumps<'a>(
+    first: usize,
+    (least, periods): (&'a [f64], &'a [Option<f64>]),
+    [base, predicted, q]: [&'a [f64]; 3],
+) -> impl Iterator<Item = usize> + 'a {
     (first..q.len()).filter(move |&c| {
         let (step, off) = ((predicted[c] - base[c]).abs(), (q[c] - predicted[c]).abs());
-        off > 10.0 * step && off > least[c - first]
+        let off = periods[c - first].map_or(off, |p| off.rem_euclid(p).min(p - off.rem_euclid(p)));
+        off > 2.0 * step && off > least[c - first]
     })
 }
 
 impl Configuration {
     /// A singular position at the q it holds: nothing but q is valid.
-    fn set_singular(&mut self, condition: f64, iterations: usize, residual: f64) {
+    fn set_singular(&mut self, [condition, scaled]: [f64; 2], iterations: usize, residual: f64) {
         let n = self.q.len();
         (self.qd, self.qdd, self.g, self.jacobian) = (vec![0.0; n], vec![0.0; n], None, DMatrix::zeros(0, 0));
         self.trig.clear();
-        (self.condition, self.iterations, self.residual, self.singular) = (condition, iterations, residual, true);
+        (self.condition, self.scaled_condition, self.iterations, self.residual) =
+            (condition, scaled, iterations, residual);
+        self.singular = true;
         self.jumped.clear();
     }
 }
 
 /// Largest change of an input coordinate per continuation step on the way
-/// from the drawn configuration to the first position (rad or m).
+/// from the drawn configuration to the first position (rad, or of the
+/// mechanism's size L).
 const APPROACH_STEP: f64 = 0.05;
 
 /// Moves q from the drawn configuration (inputs at their `reference`) to the
@@ -171,7 +184,8 @@ fn approach(
     deadline: &Deadline,
 ) -> Result<(), EngineError> {
     let from: Vec<f64> = m.drivers.iter().map(|d| d.reference).collect();
-    let span = from.iter().zip(target).map(|(a, t)| (t[0] - a).abs()).fold(0.0, f64::max);
+    let span =
+        (from.iter().zip(target).zip(m.input_lengths())).map(|((a, t), c)| (t[0] - a).abs() / c).fold(0.0, f64::max);
     let n = (span / APPROACH_STEP).ceil().min(10_000.0) as usize;
     for k in 1..n {
         deadline.check(|| Progress::Approach { step: k, of: n })?;

@@ -48,7 +48,8 @@ impl Step {
         self.reactions.clear();
         self.contacts.clear();
         (self.reduced_inertia, self.reduced_torque) = (None, None);
-        (self.condition, self.friction_iterations, self.singular) = (c.condition, 0, false);
+        (self.condition, self.scaled_condition) = (c.condition, c.scaled_condition);
+        (self.friction_iterations, self.singular) = (0, false);
     }
 
     /// This step as a singular position: its input and condition number, nothing solved.

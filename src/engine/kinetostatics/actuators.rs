@@ -11,9 +11,10 @@
 //! actuators cannot drive the inputs: their forces do no work on the motion.
 
 use crate::engine::constraints::{State, System, evaluate_into};
-use crate::engine::kinematics::{SINGULAR_CONDITION, estimated_condition};
+use crate::engine::kinematics::SINGULAR_CONDITION;
 use crate::engine::model::{Coordinate, Mechanism};
 use crate::engine::numeric::lu::Lu;
+use crate::engine::numeric::scaled::{estimated_condition, row_scales};
 use nalgebra::{DMatrix, DVector};
 
 /// J_a at the current position, and its LU.
@@ -22,7 +23,9 @@ pub(super) struct Actuated {
     m: Mechanism,
     sys: System,
     pub lu: Lu,
-    scratch: [Vec<f64>; 2],
+    /// The coordinates' length scales (`numeric::scaled`).
+    cols: Vec<f64>,
+    scratch: [Vec<f64>; 3],
 }
 
 impl Actuated {
@@ -35,15 +38,17 @@ impl Actuated {
         for d in &mut by_actuators.drivers {
             d.coordinate = d.actuator.map_or(d.coordinate, Coordinate::Joint);
         }
-        Some(Self { m: by_actuators, sys: System::default(), lu: Lu::default(), scratch: Default::default() })
+        let cols = m.column_lengths();
+        Some(Self { m: by_actuators, sys: System::default(), lu: Lu::default(), cols, scratch: Default::default() })
     }
 
     /// J_a at q and its LU; false where it is singular.
     pub fn at(&mut self, q: &[f64], inputs: &[[f64; 3]]) -> bool {
         evaluate_into(&self.m, &State { q, qd: None, inputs }, &mut self.sys);
-        let [x, y] = &mut self.scratch;
+        let [x, y, rows] = &mut self.scratch;
+        row_scales(&self.sys.jacobian, &self.cols, rows);
         self.lu.factor(&self.sys.jacobian)
-            && estimated_condition(&self.sys.jacobian, &self.lu, [x, y]) <= SINGULAR_CONDITION
+            && estimated_condition(&self.sys.jacobian, &self.lu, [rows, &self.cols], [x, y]) <= SINGULAR_CONDITION
     }
 
     pub fn jacobian(&self) -> &DMatrix<f64> {

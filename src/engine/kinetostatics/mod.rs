@@ -116,7 +116,10 @@ pub struct Step {
     /// Quinn's energy-contribution coefficients ε_b = T_b/T of the moving
     /// bodies (one input; share of I* per body, since T_b/T = g_bᵀM_b g_b / I*).
     pub energy_shares: Option<Vec<f64>>,
+    /// Φ_q's condition number in SI units, and scaled by the mechanism's
+    /// size (what decides near-singular and singular positions).
     pub condition: f64,
+    pub scaled_condition: f64,
     pub kinematics: Option<Motion>,
     /// Fixed-point iterations of joint friction (0 without friction).
     pub friction_iterations: usize,

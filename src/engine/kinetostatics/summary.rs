@@ -2,7 +2,8 @@
 
 use super::Step;
 
-/// Φ_q counts as near-singular beyond this condition number (reported, not an error).
+/// Φ_q counts as near-singular beyond this condition number of its scaled
+/// form (reported, not an error).
 pub const NEAR_SINGULAR: f64 = 1e4;
 
 /// Means and RMS are over the regular sampled steps (not weighted by time).
@@ -20,6 +21,7 @@ pub struct Summary {
     /// Inputs at singular positions (no forces computed there).
     pub singular: Vec<Vec<f64>>,
     pub max_condition: f64,
+    pub max_scaled_condition: f64,
 }
 
 /// A [`Summary`] gathered one step at a time, as a sweep hands them over.
@@ -39,6 +41,7 @@ pub struct Tally {
     near_singular: Vec<Vec<f64>>,
     singular: Vec<Vec<f64>>,
     max_condition: f64,
+    max_scaled_condition: f64,
     max_friction_iterations: usize,
 }
 
@@ -49,7 +52,7 @@ impl Tally {
 
     /// Counts a step in.
     pub fn add(&mut self, s: &Step) {
-        if s.condition > NEAR_SINGULAR {
+        if s.scaled_condition > NEAR_SINGULAR {
             self.near_singular.push(s.input.clone());
         }
         self.max_friction_iterations = self.max_friction_iterations.max(s.friction_iterations);
@@ -63,6 +66,7 @@ impl Tally {
         }
         self.count += 1;
         self.max_condition = self.max_condition.max(s.condition);
+        self.max_scaled_condition = self.max_scaled_condition.max(s.scaled_condition);
         for (d, &t) in s.driving.iter().enumerate().take(self.sum.len()) {
             self.max_abs_driving[d] = self.max_abs_driving[d].max(t.abs());
             self.sum[d] += t;
@@ -110,6 +114,7 @@ impl Tally {
             near_singular: self.near_singular,
             singular: self.singular,
             max_condition: self.max_condition,
+            max_scaled_condition: self.max_scaled_condition,
         }
     }
 }
@@ -127,7 +132,8 @@ mod tests {
             driving: driving.to_vec(),
             driving_virtual_power: virtual_power.to_vec(),
             reactions: vec![reaction(3.0 * input, 4.0 * input), reaction(1.0, 0.0)],
-            condition,
+            condition: 3.0 * condition,
+            scaled_condition: condition,
             ..Step::default()
         }
     }
@@ -137,7 +143,7 @@ mod tests {
     /// worked by hand.
     #[test]
     fn the_tally_gives_each_statistic() {
-        let singular = Step { input: vec![9.0], condition: 1e9, singular: true, ..Step::default() };
+        let singular = Step { input: vec![9.0], scaled_condition: 1e9, singular: true, ..Step::default() };
         let mut second = step(2.0, [-4.0, 1.0], [-4.0, 1.5], true, 2e4);
         second.reactions[1].determinate = false;
         let steps = [step(1.0, [2.0, 1.0], [2.5, 1.0], true, 10.0), singular, second];
@@ -151,6 +157,7 @@ mod tests {
         assert_eq!(s.virtual_power_residual, Some(0.5), "max(0.5/4, 0.5/1)");
         assert_eq!(s.singular, [vec![9.0]]);
         assert_eq!(s.near_singular, [vec![9.0], vec![2.0]], "κ above 1e4, singular steps included");
-        assert_eq!(s.max_condition, 2e4, "over the regular steps");
+        assert_eq!(s.max_condition, 6e4, "over the regular steps");
+        assert_eq!(s.max_scaled_condition, 2e4, "over the regular steps");
     }
 }

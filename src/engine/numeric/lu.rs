@@ -71,24 +71,36 @@ impl Lu {
     /// position, where it is usually a maximiser again (one solve each way
     /// instead of two), else n⁻¹·(1, …, 1) starts.
     pub fn inverse_norm1(&self, x: &mut Vec<f64>, y: &mut Vec<f64>) -> f64 {
+        self.scaled_inverse_norm1(x, y, [&[], &[]])
+    }
+
+    /// ‖(R A C)⁻¹‖₁ = ‖C⁻¹ A⁻¹ R⁻¹‖₁ for diagonal scalings R = diag(`rows`)
+    /// and C = diag(`cols`) (an empty slice: the identity), by the same
+    /// estimator over A's factors.
+    pub fn scaled_inverse_norm1(&self, x: &mut Vec<f64>, y: &mut Vec<f64>, [rows, cols]: [&[f64]; 2]) -> f64 {
         let n = self.n;
         if x.len() != n {
             x.clear();
             x.resize(n, 1.0 / n as f64);
         }
+        let divide = |v: &mut [f64], d: &[f64]| v.iter_mut().zip(d).for_each(|(v, d)| *v /= d);
         let mut estimate = f64::INFINITY;
         for _ in 0..5 {
             y.clear();
             y.extend_from_slice(x);
+            divide(y, rows);
             if !self.solve(y) {
                 return f64::INFINITY;
             }
+            divide(y, cols);
             estimate = y.iter().map(|v| v.abs()).sum();
-            // z = A⁻ᵀ sign(y), in y's place; x·z before x changes.
+            // z = (RAC)⁻ᵀ sign(y) = R⁻¹ A⁻ᵀ C⁻¹ sign(y), in y's place; x·z before x changes.
             y.iter_mut().for_each(|v| *v = if *v >= 0.0 { 1.0 } else { -1.0 });
+            divide(y, cols);
             if !self.solve_transposed(y) {
                 return f64::INFINITY;
             }
+            divide(y, rows);
             let j = (0..n).fold(0, |j, i| if y[i].abs() > y[j].abs() { i } else { j });
             let zx: f64 = y.iter().zip(x.iter()).map(|(a, b)| a * b).sum();
             if y[j].abs() <= zx {

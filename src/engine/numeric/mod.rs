@@ -9,5 +9,6 @@ pub mod plane;
 pub mod quadrature;
 pub mod radau;
 pub mod roots;
+pub mod scaled;
 pub mod svd;
 pub mod tridiagonal;

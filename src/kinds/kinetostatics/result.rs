@@ -82,6 +82,11 @@ pub struct StepDto {
     /// (LAPACK's xGECON), a few solves instead of an SVD, within a factor
     /// of the coordinates' number of κ₂.
     pub jacobian_condition: f64,
+    /// The same of Φ_q scaled by the mechanism's size (each length
+    /// coordinate in units of the drawing's size L, each row divided by its
+    /// largest entry): free of the units and of the size of the drawing,
+    /// it decides the singular (above 1e6) and near-singular (1e4) positions.
+    pub scaled_condition: f64,
     /// A singular position (toggle, change point): nothing but the input is computed here.
     pub singular: bool,
     pub kinematics: Option<Vec<BodyMotion>>,
@@ -108,15 +113,17 @@ pub struct SummaryDto {
     pub max_reaction: BTreeMap<String, Option<f64>>,
     /// Largest |driving from multipliers − driving from virtual power| / max |driving|.
     pub virtual_power_residual: Option<f64>,
-    /// Whether any sampled position is singular (condition number above 1e6):
+    /// Whether any sampled position is singular (scaled condition number above 1e6):
     /// its step has no driving action, reactions or reduced quantities.
     pub singular: bool,
     #[schema(value_type = Vec<Scalars>)]
     pub singular_inputs: Vec<Scalars>,
-    /// Inputs where the condition number exceeds 1e4 (results valid but sensitive).
+    /// Inputs where the scaled condition number exceeds 1e4 (results valid but sensitive).
     #[schema(value_type = Vec<Scalars>)]
     pub near_singular_inputs: Vec<Scalars>,
     pub max_jacobian_condition: f64,
+    /// The largest `scaled_condition` of the regular steps.
+    pub max_scaled_condition: f64,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
@@ -260,6 +267,7 @@ impl KinetostaticsResult {
                 singular_inputs: sum.singular.iter().map(|v| Scalars::of(v)).collect(),
                 near_singular_inputs: sum.near_singular.iter().map(|v| Scalars::of(v)).collect(),
                 max_jacobian_condition: sum.max_condition,
+                max_scaled_condition: sum.max_scaled_condition,
             },
             accuracy: KinetostaticsAccuracy {
                 virtual_power_residual: sum.virtual_power_residual,
@@ -296,6 +304,7 @@ impl StepDto {
                 .as_ref()
                 .map(|v| names[1..].iter().cloned().zip(v.iter().copied()).collect()),
             jacobian_condition: s.condition,
+            scaled_condition: s.scaled_condition,
             singular: s.singular,
             kinematics: s
                 .kinematics

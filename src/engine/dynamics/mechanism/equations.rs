@@ -18,6 +18,7 @@ use crate::engine::dynamics::range_space::RangeSpace;
 use crate::engine::dynamics::rows::Rows;
 use crate::engine::kinetostatics::{Frame, applied_forces, potential};
 use crate::engine::model::Mechanism;
+use crate::engine::numeric::scaled::row_scales;
 use nalgebra::{DMatrix, DVector};
 use std::cell::{Cell, RefCell};
 
@@ -42,9 +43,10 @@ pub(super) struct Equations<'a> {
     pub n: usize,
     pub r: usize,
     pub mass: Vec<f64>,
-    /// Column scale of Φ_q for [`Rows`]: 1 for x, y and 1/L for angles.
+    /// Column scale S of Φ_q for [`Rows`], the projection and the
+    /// equations of motion: c_j/L (`model::scale`), 1 for x, y and 1/L for angles.
     pub scale: Vec<f64>,
-    /// Position tolerance of the projection, m.
+    /// Position tolerance of the projection, m (angles: rad times L).
     pub tol: f64,
     /// The sparse form, when it applies.
     pub sparse: Option<RefCell<RangeSpace>>,
@@ -124,20 +126,23 @@ impl Equations<'_> {
         if rows.holds() {
             self.held_at.borrow_mut().push(t);
         }
-        let jac = rows.motion(jac);
+        // Solved for S⁻¹q̈ (S the columns' `scale`): [S M S, (Φ_q S)ᵀ; Φ_q S, 0]
+        // alike in every entry's size at any size of the mechanism.
+        let s = &self.scale;
+        let jac = rows.motion(jac) * DMatrix::from_diagonal(&DVector::from_column_slice(s));
         let k = jac.nrows();
         let speed = |row: usize, v: &DVector<f64>| (sys.jacobian.row(row) * v)[0];
         let qd_v = DVector::from_column_slice(qd);
         let mut forces = self.forces(t, q, qd, [sys.phi[r], speed(r, &qd_v)]);
         let mut a = DMatrix::zeros(n + k, n + k);
         for (i, m) in self.mass.iter().enumerate() {
-            a[(i, i)] = *m;
+            a[(i, i)] = m * s[i] * s[i];
         }
         a.view_mut((0, n), (n, k)).copy_from(&jac.transpose());
         a.view_mut((n, 0), (k, n)).copy_from(&jac);
         let lu = a.lu();
         let mut b = DVector::zeros(n + k);
-        b.rows_mut(0, n).copy_from_slice(&forces);
+        b.rows_mut(0, n).iter_mut().zip(forces.iter().zip(s)).for_each(|(b, (f, s))| *b = f * s);
         b.rows_mut(n, k).copy_from(&rows.gamma(sys.gamma.select_rows(&active)));
         let mut x = lu.solve(&b)?;
         // λ of every joint row (0 for a slipping grip's rolling row, left out).
@@ -154,7 +159,7 @@ impl Equations<'_> {
                 slipping.iter().map(|(g, ..)| sys.jacobian.row(g.roll_row).transpose()).collect();
             let units: Vec<DVector<f64>> = gradients
                 .iter()
-                .map(|g| lu.solve(&DVector::from_fn(n + k, |i, _| if i < n { g[i] } else { 0.0 })))
+                .map(|g| lu.solve(&DVector::from_fn(n + k, |i, _| if i < n { g[i] * s[i] } else { 0.0 })))
                 .collect::<Option<_>>()?;
             let unit_lambda: Vec<Vec<f64>> = units.iter().map(&lambda).collect();
             let alpha = friction(&slipping, &lambda_all, &unit_lambda)?;
@@ -166,7 +171,7 @@ impl Equations<'_> {
             // The rolling row's multiplier in effect: the friction along it.
             slipping.iter().zip(&alpha).for_each(|((grip, ..), a)| lambda_all[grip.roll_row] = *a);
         }
-        let qdd = x.rows(0, n).into_owned();
+        let qdd = x.rows(0, n).component_mul(&DVector::from_column_slice(s));
         let inputs = (r..sys.phi.len()).map(|row| [sys.phi[row], speed(row, &qd_v), speed(row, &qdd) - sys.gamma[row]]);
         Some(Motion {
             inputs: inputs.collect(),
@@ -211,10 +216,14 @@ impl Equations<'_> {
         self.grips.iter().zip(&held.modes).filter_map(slip).collect()
     }
 
-    /// The minimum-norm x with J x = b, J of full row rank.
-    fn min_norm(jac: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
-        let ch = (jac * jac.transpose()).cholesky()?;
-        Some(jac.transpose() * ch.solve(b))
+    /// The x with J x = b (J of full row rank) of least |S⁻¹x|, S the
+    /// columns' `scale`: the least change in lengths of the mechanism's
+    /// size, whatever that size.
+    fn min_norm(&self, jac: DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
+        let s = DVector::from_column_slice(&self.scale);
+        let jac = jac * DMatrix::from_diagonal(&s);
+        let ch = (&jac * jac.transpose()).cholesky()?;
+        Some((jac.transpose() * ch.solve(b)).component_mul(&s))
     }
 
     pub fn kinetic(&self, qd: &[f64]) -> f64 {
@@ -294,15 +303,18 @@ impl Equations<'_> {
             // A held or dropped combination is not corrected in position.
             let rows = Rows::of(&jac, &self.scale);
             let phi = rows.position_residual(phi);
-            if phi.amax() <= self.tol {
+            // Each row in its own size: a length row within `tol`, an angle row within tol/L.
+            let mut size = Vec::new();
+            row_scales(&rows.positions(jac.clone()), &self.scale, &mut size);
+            if phi.iter().zip(&size).all(|(v, r)| (v * r).abs() <= self.tol) {
                 let jac = rows.motion(jac);
                 let v = &jac * DVector::from_column_slice(&y[n..2 * n]);
-                if let Some(dv) = Self::min_norm(&jac, &(-v)) {
+                if let Some(dv) = self.min_norm(jac, &(-v)) {
                     y[n..2 * n].iter_mut().zip(dv.iter()).for_each(|(a, d)| *a += d);
                 }
                 break;
             }
-            let Some(dq) = Self::min_norm(&rows.positions(jac), &(-phi)) else { break };
+            let Some(dq) = self.min_norm(rows.positions(jac), &(-phi)) else { break };
             y[..n].iter_mut().zip(dq.iter()).for_each(|(a, d)| *a += d);
         }
         removed
