@@ -238,6 +238,21 @@ impl Mechanism {
         (n > 0.0).then(|| [t[0] / n, t[1] / n])
     }
 
+    /// The direction along which a force on contact joint k's second body,
+    /// at the contact, works on the joint's coordinate (the arc length run
+    /// on its measured curve): that curve's unit tangent at q (ground frame,
+    /// its parameter rising) where it is the first body's, the opposite
+    /// where it is the second's (the curve then runs under the contact).
+    pub fn contact_arc_direction(&self, k: usize, q: &[f64]) -> Option<[f64; 2]> {
+        let JointKind::Contact(c) = &self.joints[k].kind else { return None };
+        let side = c.measured_side()?;
+        let b = self.joints[k].bodies[side];
+        let theta = self.column(b).map_or(0.0, |c| q[c + 2]);
+        let t = rotate(theta, self.contact_local(k, b, q)?.d1);
+        let n = t[0].hypot(t[1]) * if side == 0 { 1.0 } else { -1.0 };
+        (n != 0.0).then(|| [t[0] / n, t[1] / n])
+    }
+
     /// The parameter of contact joint k's curve `side` (0 the first body's,
     /// 1 the second's) at q (0 for a point); None for another joint.
     pub fn contact_parameter(&self, k: usize, side: usize, q: &[f64]) -> Option<f64> {

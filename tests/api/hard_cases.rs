@@ -153,3 +153,55 @@ async fn mobility_counts_the_same_at_every_size() {
         assert_eq!(r["candidate_inputs"][0], "O2", "at s = {s}: {r}");
     }
 }
+
+/// A contact used as an input: the driving effort is the actuator's, and
+/// the contact's reaction is what is left. A bead of 1 kg threaded on a
+/// frictionless slope at α = 30° and pushed up it at constant speed: the
+/// actuator holds m·g·sin α = 4.905 N along the slope, the slope only
+/// presses, |N| = m·g·cos α, tangential 0 (closed forms).
+#[tokio::test]
+async fn a_contact_driven_along_itself_carries_no_driving_force() {
+    let app = TestApp::new().await;
+    let (alpha, g) = (30f64.to_radians(), 9.81);
+    let body = json!({
+        "mechanism": {
+            "points": {"A": [0, 0], "P": [alpha.cos(), alpha.sin()]},
+            "bodies": [{"name": "bead", "mass": 1, "inertia": 0, "cg": "P"}],
+            "joints": [{"name": "slope", "type": "contact", "bodies": ["ground", "bead"],
+                "curves": [{"line": {"through": "A", "direction": [alpha.cos(), alpha.sin()]}}, {"point": "P"}]}],
+            "gravity": [0, -g]
+        },
+        "input": {"joint": "slope", "speed": 0.2, "start": 0, "end": 0.5, "steps": 5},
+        "outputs": ["driving", "reactions"]
+    });
+    let r = created(&app, "/v1/kinetostatics", &body).await;
+    for step in r["steps"].as_array().unwrap() {
+        let slope = &step["reactions"][0];
+        assert!((step["driving"].as_f64().unwrap() - g * alpha.sin()).abs() < 1e-12, "{step}");
+        assert!((slope["normal"].as_f64().unwrap().abs() - g * alpha.cos()).abs() < 1e-12, "{slope}");
+        assert!(slope["tangential"].as_f64().unwrap().abs() < 1e-12, "{slope}");
+    }
+}
+
+/// The ring-on-rim template (a ring run along the rim of a turning disk):
+/// the frictionless rim's reaction on the ring has no tangential part, and
+/// the ring's free body balances with each force named once — the rim's
+/// reaction plus the actuator's effort along the rim's tangent (−x at the
+/// top of a circle run counter-clockwise) is m·a of the ring.
+#[tokio::test]
+async fn the_ring_on_the_rim_balances_with_each_force_named_once() {
+    let app = TestApp::new().await;
+    let r = created(&app, "/v1/kinetostatics", &template_request("ring-on-rim")).await;
+    let step = &r["steps"][0];
+    let rim = &step["reactions"][1];
+    assert_eq!(rim["joint"], "rim");
+    let effort = step["driving"][1].as_f64().unwrap();
+    let ring = &step["kinematics"][1];
+    let m = 0.05;
+    assert!(rim["tangential"].as_f64().unwrap().abs() < 1e-12, "{rim}");
+    let fx = rim["fx"].as_f64().unwrap() - effort;
+    let fy = rim["fy"].as_f64().unwrap();
+    assert!((fx - m * ring["ax"].as_f64().unwrap()).abs() < 1e-12, "{fx} vs m·a_x: {ring}");
+    assert!((fy - m * ring["ay"].as_f64().unwrap()).abs() < 1e-12, "{fy} vs m·a_y: {ring}");
+    assert!(effort.abs() > 1e-3, "the ring is accelerated along the rim: {effort}");
+}

@@ -45,11 +45,13 @@ fn a_ring_on_a_turning_rim_moves_as_the_composition_of_motions_says() {
             close(k.qdd[3 + i], ap[i], 10.0, "a_P");
         }
         close(k.q[5], 0.0, 1.0, "the particle's rotation, held");
-        // The rim drives the ring: its force on it is m a_P (no gravity),
-        // the arc-length input's force m a_P · e_t.
+        // The ring moves by m a_P (no gravity): the arc-length input's
+        // actuator pushes it along the rim with m a_P · e_t, and the
+        // frictionless rim's reaction is the rest, m (a_P · e_n) e_n.
+        let (along, across) = (ap[0] * e_t[0] + ap[1] * e_t[1], ap[0] * e_n[0] + ap[1] * e_n[1]);
         let force = &step.reactions[1];
-        close(force.fx, m * ap[0], 10.0 * m, "rim on ring, x");
-        close(force.fy, m * ap[1], 10.0 * m, "rim on ring, y");
-        close(step.driving[1], m * (ap[0] * e_t[0] + ap[1] * e_t[1]), 10.0 * m, "force along the rim");
+        close(step.driving[1], m * along, 10.0 * m, "force along the rim");
+        close(force.fx, m * across * e_n[0], 10.0 * m, "rim on ring, x");
+        close(force.fy, m * across * e_n[1], 10.0 * m, "rim on ring, y");
     }
 }

@@ -10,7 +10,9 @@ use super::loads::{applied_forces_into, point_motion};
 use super::{ContactState, Motion, Outputs, Reaction, Step, friction, mass_times};
 use crate::engine::kinematics::{Configuration, solve_linear};
 use crate::engine::mobility::Mobility;
-use crate::engine::model::{BodyId, Guide, JointKind, Mechanism, Pitch, cross, dot, perp, rotate_by};
+use crate::engine::model::{
+    BodyId, Coordinate, Driver, Guide, JointKind, Mechanism, Pitch, cross, dot, perp, rotate_by,
+};
 use crate::engine::{Deadline, EngineError, Progress};
 use nalgebra::{DMatrix, DVector};
 
@@ -228,7 +230,8 @@ fn multipliers(
     driving.extend(lambda[first_driver..].iter().map(|l| -l));
     reactions.clear();
     if let Some(indeterminate) = reactions_with {
-        reactions_into(m, (&c.q, &c.trig), &c.jacobian, lambda, (&s.offsets, indeterminate), reactions);
+        let (at, efforts) = ((c.q.as_slice(), c.trig.as_slice()), (&c.jacobian, lambda.as_slice(), driving.as_slice()));
+        reactions_into(m, at, efforts, (&s.offsets, indeterminate), reactions);
     }
     Ok(())
 }
@@ -247,17 +250,20 @@ pub fn reactions(
     let mut trig = Vec::new();
     m.turns_into(q, &mut trig);
     let mut out = Vec::with_capacity(m.joints.len());
-    reactions_into(m, (q, &trig), jac, lambda, (offsets, indeterminate), &mut out);
+    reactions_into(m, (q, &trig), (jac, lambda, &[]), (offsets, indeterminate), &mut out);
     out
 }
 
 /// [`reactions`] appended to `out`, with (sin θ, cos θ) of every body at q
-/// (ground first) in `trig`.
+/// (ground first) in `trig`. A contact that carries an input's `driving`
+/// effort (its own coordinate driven, or it the actuator) passes it through
+/// its equations to the bodies; its reaction is what is left, the effort
+/// being the actuator's, not the contact's (a frictionless contact's
+/// tangential part is then 0).
 fn reactions_into(
     m: &Mechanism,
     (q, trig): (&[f64], &[(f64, f64)]),
-    jac: &DMatrix<f64>,
-    lambda: &[f64],
+    (jac, lambda, driving): (&DMatrix<f64>, &[f64], &[f64]),
     (offsets, indeterminate): (&[usize], &[usize]),
     out: &mut Vec<Reaction>,
 ) {
@@ -282,6 +288,9 @@ fn reactions_into(
             return Reaction { joint: k, on: j, by: i, fx: tx, fy: ty, moment: 0.0, ends: None, determinate };
         }
         let [fx, fy, moment] = [sign * fx, sign * fy, sign * moment];
+        // The actuator's force at the contact point: no moment about it.
+        let [ax, ay] = contact_effort(m, q, k, driving);
+        let [fx, fy] = [fx - ax, fy - ay];
         let ends = match (&joint.kind, joint.length) {
             (JointKind::Prismatic { axis }, Some(guide)) => {
                 // The moment about the guide's centre, on the body that carries it.
@@ -295,6 +304,19 @@ fn reactions_into(
         };
         Reaction { joint: k, on: j, by: i, fx, fy, moment, ends, determinate }
     }));
+}
+
+/// The force on the second body of joint k from the inputs' efforts that
+/// act at it, where it is a sliding contact: each effort along the
+/// direction in which it works on the contact's arc length.
+fn contact_effort(m: &Mechanism, q: &[f64], k: usize, driving: &[f64]) -> [f64; 2] {
+    let JointKind::Contact(c) = &m.joints[k].kind else { return [0.0; 2] };
+    let acting = |d: &Driver| d.actuator.or(if let Coordinate::Joint(j) = d.coordinate { Some(j) } else { None });
+    let effort: f64 = m.drivers.iter().zip(driving).filter(|(d, _)| acting(d) == Some(k)).map(|(_, f)| f).sum();
+    match m.contact_arc_direction(k, q) {
+        Some(t) if effort != 0.0 && !c.rolling => [effort * t[0], effort * t[1]],
+        _ => [0.0; 2],
+    }
 }
 
 /// Where body `b`'s point `p` (reference coordinates) is at q.

@@ -39,7 +39,10 @@ pub struct ReactionDto {
     /// A contact: the normal force (N ≥ 0 when the bodies press on each other).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub normal: Option<f64>,
-    /// A contact: the force along the common tangent (the friction, or the force rolling needs).
+    /// A contact: the force along the common tangent (the friction, or the
+    /// force rolling needs). A sliding contact that is an input, or an
+    /// input's actuator, leaves out the driving effort: it is the
+    /// actuator's (in `driving`), acting along the contact's arc length.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tangential: Option<f64>,
     /// A rolling contact: |tangential|/normal, the least friction coefficient that rolls.
