@@ -205,3 +205,24 @@ async fn the_ring_on_the_rim_balances_with_each_force_named_once() {
     assert!((fy - m * ring["ay"].as_f64().unwrap()).abs() < 1e-12, "{fy} vs m·a_y: {ring}");
     assert!(effort.abs() > 1e-3, "the ring is accelerated along the rim: {effort}");
 }
+
+/// Rolling exactly at its friction limit: the library's disk (a uniform
+/// disk on a 30° incline, released from rest) with μ = tan α / 3, the
+/// least friction that rolls it. Rolling and slipping are then the same
+/// motion, and it must roll: no `slip` event, the disk's centre down the
+/// slope by ½·(2/3)g sin α·t² = 1.635 m in 1 s (closed form, to 1e-9 m),
+/// where it froze at the start with 10 001 slip events before.
+#[tokio::test]
+async fn a_disk_at_exactly_its_friction_limit_rolls() {
+    let app = TestApp::new().await;
+    let mut body = template_request("rolling-disk");
+    let alpha = 30f64.to_radians();
+    body["machine"]["mechanism"]["joints"][0]["friction"] = json!({"mu": alpha.tan() / 3.0});
+    let r = created(&app, "/v1/dynamics", &body).await;
+    let events: Vec<&str> = r["events"].as_array().unwrap().iter().map(|e| e["kind"].as_str().unwrap()).collect();
+    assert_eq!(events, ["end"], "{}", r["events"]);
+    let last = r["samples"].as_array().unwrap().last().unwrap().clone();
+    let (t, s) = (last["t"].as_f64().unwrap(), last["angle"].as_f64().unwrap());
+    let expected = 0.5 * (2.0 / 3.0) * 9.81 * alpha.sin() * t * t;
+    assert!((t - 1.0).abs() < 1e-12 && (s.abs() - expected).abs() < 1e-9, "{s} m vs {expected} m at {t} s");
+}

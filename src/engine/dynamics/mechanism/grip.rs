@@ -20,6 +20,13 @@ use crate::engine::kinetostatics::Frame;
 use crate::engine::model::{JointKind, Mechanism};
 use nalgebra::{DMatrix, DVector};
 
+/// How far past μN the force rolling needs may go and the grip still
+/// rolls, relative to μN. At the limit itself rolling and slipping are the
+/// same motion (kinetic friction supplies exactly what rolling needs), and
+/// the rounding of F_t would otherwise switch the grip at every step: a
+/// disk at exactly μ = tan α / 3 slipped and rolled 10 001 times at t = 0.
+pub(crate) const ROLLING_TOLERANCE: f64 = 1e-9;
+
 /// How a grip moves now.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Mode {
@@ -65,12 +72,13 @@ impl Grip {
         frame.parts([-lambda[self.first_row], -lambda[self.first_row + 1]])
     }
 
-    /// The grip's guards, each ≥ 0 while its mode holds: rolling μN − |F_t|,
-    /// slipping σ·v_s; and N (the contact stays closed).
+    /// The grip's guards, each ≥ 0 while its mode holds: rolling
+    /// μN(1 + [`ROLLING_TOLERANCE`]) − |F_t|, slipping σ·v_s; and N (the
+    /// contact stays closed).
     pub fn guards(&self, mode: Mode, frame: &Frame, lambda: &[f64]) -> [f64; 2] {
         let [n, ft] = self.parts(frame, lambda);
         match mode {
-            Mode::Roll => [self.mu * n - ft.abs(), n],
+            Mode::Roll => [self.mu * n * (1.0 + ROLLING_TOLERANCE) - ft.abs(), n],
             Mode::Slip(sigma) => [sigma * frame.sliding(), n],
         }
     }
