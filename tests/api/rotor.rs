@@ -57,3 +57,18 @@ async fn rotor_errors_point_at_the_field() {
     let r = app.post("/v1/rotor", &bad).await;
     assert_eq!(r.json()["errors"][0]["pointer"], "/inertia", "{}", r.text);
 }
+
+/// Inputs at the limits of f64 (schemathesis's case: a speed of 1.8e308
+/// rad/s, a bearing at 1.8e308 m) overflow the reactions: a 422 that says
+/// the result is not finite, never a 201 with nulls in place of numbers.
+#[tokio::test]
+async fn a_rotor_that_overflows_is_refused() {
+    let app = TestApp::new().await;
+    let body = json!({"bearings": [4.502005810726814e16, 1.7976931348623157e308],
+        "cg": [1.1320928443869089e-206, -1.1754943508222875e-38, -1.7976931348623157e308],
+        "frame": {"speed": 1.7976931348623157e308}, "inertia": {"xx": 0.0, "yy": 0.0, "zz": 0.0},
+        "mass": 4.502005810726814e16, "gravity": [1.1320928443869089e-206, 0.0, 0.0], "spin": [0.0, 0.0, 0.0]});
+    let r = app.post("/v1/rotor", &body).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert!(r.text.contains("non-finite"), "{}", r.text);
+}

@@ -168,7 +168,12 @@ impl Kind for RigidRotor {
 /// Validates and computes a request.
 fn compute(request: &RotorRequest, unknown: Vec<FieldError>) -> Result<RotorResult, ApiError> {
     let (rotor, times) = validated(unknown, request.to_rotor())?;
-    let states = times.iter().map(|t| state_dto(&rotor.at(*t))).collect();
+    let states: Vec<RotorStateDto> = times.iter().map(|t| state_dto(&rotor.at(*t))).collect();
+    // Inputs near f64's limits overflow (every field of a state is a number:
+    // a null in its JSON is one that is not finite): refused, never served as null.
+    if serde_json::to_string(&states).map_or(true, |text| text.contains("null")) {
+        return Err(crate::kind::engine_failure(crate::engine::EngineError::NotFiniteResult, ""));
+    }
     let mut notes = Notes::default();
     let method = notes.say("/method", Msg::new("accuracy-rotor"));
     Ok(RotorResult { states, method, notes })
