@@ -110,7 +110,7 @@ characters) makes a retry safe: the same key with the same request answers the f
     ),
     components(schemas(
         Problem, FieldError, service::Health, service::Readiness, quantity::Quantity, quantity::FunctionDto, quantity::FunctionSpec,
-        tables::AngleUnit, tables::Format
+        tables::AngleUnit, tables::Format, tables::DecimalMark
     )),
     tags(
         (name = "flywheel", description = "Flywheel design for a machine in steady state"),
