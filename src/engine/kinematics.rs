@@ -96,12 +96,7 @@ pub const ESTIMATE_LIMIT: f64 = 100.0;
 /// ([`Lu::inverse_norm1`]): a few solves with the factors instead of an
 /// SVD. A lower bound of κ₁, in practice within a factor 3 of it.
 pub fn estimated_condition(a: &DMatrix<f64>, lu: &Lu, scratch: [&mut Vec<f64>; 2]) -> f64 {
-    // ‖A‖₁ over the column-major storage (nalgebra's column iterator took as long as the estimate).
-    let a_norm =
-        a.as_slice().chunks_exact(a.nrows().max(1)).map(|c| c.iter().map(|x| x.abs()).sum::<f64>()).fold(0.0, f64::max);
-    let [x, y] = scratch;
-    let estimate = lu.inverse_norm1(x, y);
-    if estimate.is_finite() { a_norm * estimate } else { f64::INFINITY }
+    scaled::estimated_condition(a, lu, [&[], &[]], scratch)
 }
 
 /// 2-norm condition number σ_max/σ_min of a matrix with at least as many rows as columns.

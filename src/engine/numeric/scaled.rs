@@ -33,15 +33,17 @@ pub fn scaled(a: &DMatrix<f64>, [rows, cols]: [&[f64]; 2]) -> DMatrix<f64> {
 }
 
 /// κ₁(R A C) = ‖R A C‖₁ ‖(R A C)⁻¹‖₁ from A's LU (Hager's estimator, a
-/// lower bound, in practice within a factor 3); `x` starts it and keeps
-/// its maximiser for the next position, `y` is scratch.
+/// lower bound, in practice within a factor 3; empty scales: κ₁(A)); `x`
+/// starts it and keeps its maximiser for the next position, `y` is scratch.
 pub fn estimated_condition(a: &DMatrix<f64>, lu: &Lu, scales: [&[f64]; 2], [x, y]: [&mut Vec<f64>; 2]) -> f64 {
     let [rows, cols] = scales;
+    let r = |i: usize| rows.get(i).copied().unwrap_or(1.0);
+    // ‖R A C‖₁ over the column-major storage (nalgebra's column iterator took as long as the estimate).
     let norm = a
         .as_slice()
         .chunks_exact(a.nrows().max(1))
         .zip(cols.iter().chain(std::iter::repeat(&1.0)))
-        .map(|(column, c)| c * column.iter().zip(rows).map(|(v, r)| (v * r).abs()).sum::<f64>())
+        .map(|(column, c)| c * column.iter().enumerate().map(|(i, v)| (v * r(i)).abs()).sum::<f64>())
         .fold(0.0, f64::max);
     let estimate = lu.scaled_inverse_norm1(x, y, scales);
     if estimate.is_finite() { norm * estimate } else { f64::INFINITY }

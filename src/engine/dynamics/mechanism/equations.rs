@@ -18,7 +18,7 @@ use crate::engine::dynamics::range_space::RangeSpace;
 use crate::engine::dynamics::rows::Rows;
 use crate::engine::kinetostatics::{Frame, applied_forces, potential};
 use crate::engine::model::Mechanism;
-use crate::engine::numeric::scaled::row_scales;
+use crate::engine::numeric::scaled::{row_scales, scaled};
 use nalgebra::{DMatrix, DVector};
 use std::cell::{Cell, RefCell};
 
@@ -129,7 +129,7 @@ impl Equations<'_> {
         // Solved for S⁻¹q̈ (S the columns' `scale`): [S M S, (Φ_q S)ᵀ; Φ_q S, 0]
         // alike in every entry's size at any size of the mechanism.
         let s = &self.scale;
-        let jac = rows.motion(jac) * DMatrix::from_diagonal(&DVector::from_column_slice(s));
+        let jac = scaled(&rows.motion(jac), [&[], s]);
         let k = jac.nrows();
         let speed = |row: usize, v: &DVector<f64>| (sys.jacobian.row(row) * v)[0];
         let qd_v = DVector::from_column_slice(qd);
@@ -220,10 +220,9 @@ impl Equations<'_> {
     /// columns' `scale`: the least change in lengths of the mechanism's
     /// size, whatever that size.
     fn min_norm(&self, jac: DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> {
-        let s = DVector::from_column_slice(&self.scale);
-        let jac = jac * DMatrix::from_diagonal(&s);
+        let jac = scaled(&jac, [&[], &self.scale]);
         let ch = (&jac * jac.transpose()).cholesky()?;
-        Some((jac.transpose() * ch.solve(b)).component_mul(&s))
+        Some((jac.transpose() * ch.solve(b)).component_mul(&DVector::from_column_slice(&self.scale)))
     }
 
     pub fn kinetic(&self, qd: &[f64]) -> f64 {
@@ -304,8 +303,8 @@ impl Equations<'_> {
             let rows = Rows::of(&jac, &self.scale);
             let phi = rows.position_residual(phi);
             // Each row in its own size: a length row within `tol`, an angle row within tol/L.
-            let mut size = Vec::new();
-            row_scales(&rows.positions(jac.clone()), &self.scale, &mut size);
+            let (positions, mut size) = (rows.positions(jac.clone()), Vec::new());
+            row_scales(&positions, &self.scale, &mut size);
             if phi.iter().zip(&size).all(|(v, r)| (v * r).abs() <= self.tol) {
                 let jac = rows.motion(jac);
                 let v = &jac * DVector::from_column_slice(&y[n..2 * n]);
@@ -314,7 +313,7 @@ impl Equations<'_> {
                 }
                 break;
             }
-            let Some(dq) = self.min_norm(rows.positions(jac), &(-phi)) else { break };
+            let Some(dq) = self.min_norm(positions, &(-phi)) else { break };
             y[..n].iter_mut().zip(dq.iter()).for_each(|(a, d)| *a += d);
         }
         removed
