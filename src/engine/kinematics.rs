@@ -9,6 +9,7 @@
 //! mechanism is a crank and dyads, each position is placed in closed form
 //! first ([`Dyads`]) and Newton only confirms it.
 
+mod cut;
 mod dyads;
 mod sweep;
 
@@ -67,6 +68,9 @@ pub struct Configuration {
     /// from the continuation's prediction (another lobe of a cam, another
     /// stretch of a curve), not where the contact was followed to.
     pub jumped: Vec<usize>,
+    /// The contacts whose bodies still cut into each other here, and how
+    /// deep (joint, m): no contact outside both was found (`cut.rs`).
+    pub cuts: Vec<(usize, f64)>,
 }
 
 /// Solves A x = b: LU when A is square and regular, else least squares (SVD).

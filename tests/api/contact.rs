@@ -336,12 +336,14 @@ async fn a_spring_loaded_cam_follower_keeps_its_energy_in_dynamics() {
 
 /// A flat-faced follower on a peanut-shaped cam r(ψ) = 50 + 20 cos 2ψ mm:
 /// its profile turns concave at ψᵢ where r² + 2r′² − r r″ = 0 (72.37°),
-/// so the contact followed from the top of a lobe can go no further once
-/// the cam has turned by the tangent's turn from ψ = 0 to ψᵢ (θ_f =
-/// 106.8°, both found here from the polar curve's formulas): the face must
-/// leave that lobe. The sweep (5° steps) reports the jump at the first
-/// position past θ_f that assembles (within two steps), and again half a
-/// turn later, in the contacts and in a warning, never silently.
+/// so the contact followed from the top of a lobe could go on until the
+/// cam has turned by the tangent's turn from ψ = 0 to ψᵢ (the fold, θ_f =
+/// 106.8°, both found here from the polar curve's formulas). But the face
+/// leaves that lobe earlier: it rests on the cam's highest points, and by
+/// the cam's half-turn symmetry both lobes are level at θ = 90° (and
+/// 270°), where the face touches both. The sweep (5° steps) reports the
+/// jump at the first position past 90° and before the fold, and again
+/// half a turn later, in the contacts and in a warning, never silently.
 #[tokio::test]
 async fn a_contact_that_jumps_to_another_lobe_is_a_warning() {
     let app = TestApp::new().await;
@@ -378,8 +380,11 @@ async fn a_contact_that_jumps_to_another_lobe_is_a_warning() {
         .map(|s| s["input"].as_f64().unwrap().to_degrees())
         .collect();
     assert_eq!(jumped.len(), 2, "{jumped:?}");
-    for (at, from) in jumped.iter().zip([fold, fold + 180.0]) {
-        assert!(*at > from && *at <= from + 10.0 + 1e-9, "the jump at {at}° after θ_f = {from}°");
+    for (at, level) in jumped.iter().zip([90.0, 270.0]) {
+        assert!(
+            *at > level && *at <= level + 5.0 + 1e-9 && *at < level + fold - 90.0,
+            "the jump at {at}° (level at {level}°)"
+        );
     }
     let warnings = result["warnings"].to_string();
     assert!(warnings.contains("contact K: the contact jumped at"), "{warnings}");

@@ -15,7 +15,9 @@ pub(super) fn at(model: &impl Model, kind: EventKind, t: f64, y: &[f64], joint: 
 }
 
 /// The first guard that crosses 0 within the step (≥ 0 at its start, < 0
-/// at its end) before the run's end, the step ended there; `cache` holds
+/// at its end) before the run's end, the step ended there — or, in the
+/// run's first step, a guard that stops the run ([`Model::stops`]) and is
+/// below 0 already at t = 0, the step ended at once; `cache` holds
 /// the guards at the step's start (those at its end, for the next step;
 /// None after a change of equations).
 pub(super) fn crossing(model: &impl Model, step: &mut Step, end: End, cache: &mut Option<Vec<f64>>) -> Option<usize> {
@@ -28,9 +30,13 @@ pub(super) fn crossing(model: &impl Model, step: &mut Step, end: End, cache: &mu
         End::Duration(d) => d,
         End::UntilAngle { max_time, .. } => max_time,
     };
+    let at_start = |k: usize| step.t0 == 0.0 && g0[k] < 0.0 && model.stops(k);
     let crossed: Vec<(usize, f64)> = (0..g0.len())
-        .filter(|&k| g0[k] >= 0.0 && g1[k] < 0.0)
-        .map(|k| (k, brent(|t| model.guards(t, &step.at(t))[k], step.t0, step.t1, 0.0)))
+        .filter(|&k| (g0[k] >= 0.0 && g1[k] < 0.0) || at_start(k))
+        .map(|k| match at_start(k) {
+            true => (k, step.t0),
+            false => (k, brent(|t| model.guards(t, &step.at(t))[k], step.t0, step.t1, 0.0)),
+        })
         .filter(|&(_, t)| t < limit)
         .collect();
     // The earliest; of guards crossing together (within 1e-9 of the step),

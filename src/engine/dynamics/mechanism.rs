@@ -110,6 +110,9 @@ pub struct MechanismSolution {
     pub energy_conserved: bool,
     /// Steps after which T + V was E₀ (0 when the energy was not held).
     pub energy_held_steps: usize,
+    /// The rolling contacts with friction (joints) that slip from the
+    /// start: μN does not cover the force rolling needs there.
+    pub slipping_from_start: Vec<usize>,
 }
 
 /// Integrates the mechanism from its initial state.
@@ -173,6 +176,7 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         held: RefCell::new(Grips { modes: vec![Mode::Roll; grips.len()], slipped: vec![0.0; grips.len()] }),
         start: Grips { modes: vec![Mode::Roll; grips.len()], slipped: vec![0.0; grips.len()] },
         history: RefCell::new(Vec::new()),
+        one_sided: grip::one_sided(m, &grips),
         grips,
     };
     if dae.motion(0.0, &start.q, &start.qd, false).is_none() {
@@ -186,6 +190,11 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
     let run = run(&dae, y0, &settings)?;
     let states = &run.states;
     let t0 = states.first().map_or(0.0, |(_, y)| dae.kinetic(&y[n..2 * n]));
+    // W: −ΔV where the loads have a potential and nothing dissipates (no
+    // quadrature error, which over a long run would dwarf the motion's),
+    // else the integrated power.
+    let v0 = potential(m, &p.loads, &start.q).filter(|_| dae.grips.is_empty());
+    let work = |y: &[f64]| v0.and_then(|v0| Some(v0 - potential(m, &p.loads, &y[..n])?)).unwrap_or(y[2 * n]);
     let mut details = Vec::with_capacity(states.len());
     let mut samples = Vec::with_capacity(states.len());
     let mut peak = 0.0f64;
@@ -198,24 +207,23 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         let [angle, speed, acceleration] = detail.inputs[0];
         let kinetic = dae.kinetic(&y[n..2 * n]);
         peak = peak.max(kinetic);
-        let energy_residual = energy_residual(y[2 * n], t0, kinetic, peak);
+        let energy_residual = energy_residual(work(y), t0, kinetic, peak);
         samples.push(Sample { t: *t, angle, speed, acceleration, energy_residual });
         details.push(detail);
     }
     let (first, last) = (&states[0].1, &states[states.len() - 1].1);
-    let work = last[2 * n];
     let solution = DynamicsSolution {
         samples,
         events: run.events,
         energy_times: Vec::new(),
         work_by_quadrature: false,
-        energy_residual: energy_residual(work, dae.kinetic(&first[n..2 * n]), dae.kinetic(&last[n..2 * n]), peak),
+        energy_residual: energy_residual(work(last), dae.kinetic(&first[n..2 * n]), dae.kinetic(&last[n..2 * n]), peak),
         steps: run.attempted,
         evaluations: run.evaluations,
         integrator: run.integrator,
         stiff_at: run.stiff_at,
         repeated: run.repeated,
-        estimated_error: (0..p.mechanism.bodies.len() - 1).map(|b| run.local_errors[3 * b + 2]).fold(0.0, f64::max),
+        estimated_error: estimated_error(&dae, last, &run.local_errors),
         stopped: run.stopped,
         unlisted_turns: run.unlisted_turns,
     };
@@ -234,7 +242,24 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         dense_evaluations,
         energy_conserved,
         energy_held_steps,
+        slipping_from_start: (dae.grips.iter().zip(&dae.start.modes))
+            .filter(|(_, mode)| **mode != Mode::Roll)
+            .map(|(g, _)| g.joint)
+            .collect(),
     })
+}
+
+/// The run's error estimate in the first input's unit: its Σ of local
+/// errors bounded through the input's row (a slider's travel as much as a
+/// crank's angle), and where the input is an angle, the largest over the
+/// bodies' angles too.
+fn estimated_error(dae: &Equations, last: &[f64], local_errors: &[f64]) -> f64 {
+    let m = &dae.p.mechanism;
+    let input = dae.input_error(&last[..dae.n], local_errors);
+    if m.drivers.first().is_some_and(|d| m.is_length(d.coordinate)) {
+        return input;
+    }
+    (0..m.bodies.len() - 1).map(|b| local_errors[3 * b + 2]).fold(input, f64::max)
 }
 
 /// The first time of each cluster of held evaluations (gaps over t_end/1000 apart).
@@ -298,7 +323,15 @@ fn sample(dae: &Equations, mobility: &Mobility, t: f64, y: &[f64]) -> Result<Mec
         Vec::new()
     };
     let states = reactions.iter().filter(|r| r.determinate);
-    let contacts = states.filter_map(|r| kinetostatics::contact_state(&dae.p.mechanism, q, qd, r)).collect();
+    let held = dae.held.borrow();
+    let slipping = |joint: usize| {
+        let grip = dae.grips.iter().position(|g| g.joint == joint)?;
+        Some(held.modes[grip] != Mode::Roll)
+    };
+    let contacts = states
+        .filter_map(|r| kinetostatics::contact_state(&dae.p.mechanism, q, qd, r))
+        .map(|c| ContactState { slipping: slipping(c.joint), ..c })
+        .collect();
     let poses = q[..dae.p.mechanism.n_body_coordinates()].chunks_exact(3).map(|b| [b[0], b[1], b[2]]).collect();
     let energy = kinetostatics::energy(&dae.p.mechanism, &dae.p.loads, q, qd);
     let kept = dae.p.motion.then(|| Motion { q: q.to_vec(), qd: qd.to_vec(), qdd: motion.qdd.clone() });

@@ -100,6 +100,8 @@ pub enum EventKind {
     Slip,
     /// A slipping contact began to roll.
     Roll,
+    /// A contact's normal force fell to 0: the bodies part (the run stops).
+    Separation,
     End,
 }
 
@@ -151,9 +153,10 @@ pub struct DynamicsSolution {
 pub enum Stopped {
     /// The end angle (rad) was not reached within `max_time` (s).
     NotReached { angle: f64, max_time: f64 },
-    /// The normal force of contact `joint` fell to 0 at `t` (s): the bodies
-    /// would separate, and what follows is not these joints' motion.
-    ContactOpens { joint: String, t: f64 },
+    /// The normal force of contact `joint` (its name and index) fell to 0
+    /// at `t` (s), or was below 0 at the start: the bodies would separate,
+    /// and what follows is not these joints' motion.
+    ContactOpens { joint: String, index: usize, t: f64 },
     /// The contacts changed between rolling and slipping `switches` times
     /// by `t` (s): they chatter.
     Chatter { switches: usize, t: f64 },
@@ -193,6 +196,11 @@ pub(crate) trait Model {
     /// or the run stops.
     fn cross(&self, _k: usize, _t: f64, _y: &[f64]) -> Crossing {
         Crossing::Stop(Stopped::Unexpected)
+    }
+    /// Guard k stops the run (a contact's normal force): one already below
+    /// 0 at the start stops it there.
+    fn stops(&self, _k: usize) -> bool {
+        false
     }
 }
 
@@ -358,6 +366,9 @@ fn drive<S: Stepper>(model: &impl Model, y0: Vec<f64>, s: &Settings) -> Result<R
                 Crossing::Stop(reason) => Some(reason),
             };
             if let Some(reason) = reason {
+                if let Stopped::ContactOpens { index, .. } = reason {
+                    events.push(events::at(model, EventKind::Separation, t, &y, Some(index)));
+                }
                 events.push(events::at(model, EventKind::End, t, &y, None));
                 stopped = Some(reason);
                 sampler.accept(step, true);

@@ -61,11 +61,19 @@ impl Sampler {
     }
 
     /// The instants not given yet that `step` reaches (all of them where the
-    /// run ends in it), each from its dense output.
+    /// run ends in it), each from its dense output. A run stopped before
+    /// its end time (a contact opened) ends its states with the stop's
+    /// own, and gives none after it.
     fn emit(&mut self, step: &Step, t_end: f64, last: bool) {
         while self.states.len() < self.n {
             let t = t_end * self.states.len() as f64 / (self.n - 1) as f64;
             if t > step.t1 && !last {
+                break;
+            }
+            if t > step.t1 && step.t1 < t_end {
+                if self.states.last().is_none_or(|s| s.0 < step.t1) {
+                    self.states.push((step.t1, step.y1.clone()));
+                }
                 break;
             }
             self.states.push((t, step.at(t.min(step.t1))));

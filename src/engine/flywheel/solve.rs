@@ -100,7 +100,8 @@ fn phases(
         omega_at_start,
         kinetic_energy_at_start: 0.5 * total_at_start * omega_at_start * omega_at_start,
         accuracy: Accuracy {
-            estimated_relative_error: if scale > 0.0 { quadrature_error / scale } else { 0.0 },
+            estimated_relative_error: (if scale > 0.0 { quadrature_error / scale } else { 0.0 })
+                .max(ex.rounding + ex.per_joule * (lobes.quadrature.error + ex.quadrature.error)),
             quadrature_error,
             function_evaluations: evaluations + check.map_or(0, |c| c.evaluations),
             check_relative_difference: check

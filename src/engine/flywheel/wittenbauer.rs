@@ -7,6 +7,14 @@
 //! I = (max_φ [b I* − F] − min_φ [a I* − F]) / (a − b)
 //! ```
 //!
+//! With a = 1 + d_a and b = 1 − d_b (d_a = ε + ε²/4, d_b = ε − ε²/4, so
+//! a − b = 2ε exactly), each k·I* − κW is formed as (I* − κW) + d·I*: a
+//! and b themselves would carry a rounding of 1e-16 into a − b, 5e-5 of
+//! it at ε = 1e-12. What rounding is left — each I* − κW known to about
+//! 1e-16 of its terms — and the works' quadrature error E (J), over the
+//! numerator's size 2ε(|I| + |I*|), bound the relative error of I (of
+//! I + I* where I is near 0): `rounding` + `per_joule`·E.
+//!
 //! I enters only linearly, so the two extrema are taken once: at the ends of
 //! the smooth pieces (both sides) and at the stationary points
 //! a·I*'(φ) = κ·M*(φ), resp. b·I*'(φ) = κ·M*(φ). With I* constant they are
@@ -28,6 +36,10 @@ pub(crate) struct Exact {
     /// constant for any inertia and z is undefined.
     pub degenerate: bool,
     pub quadrature: Integral,
+    /// I's relative error from rounding, and per joule of the works'
+    /// quadrature error (see the module's notes).
+    pub rounding: f64,
+    pub per_joule: f64,
 }
 
 /// A candidate extremum: angle, side, and W there.
@@ -38,7 +50,7 @@ struct Candidate {
 }
 
 pub(crate) fn exact(cycle: &Cycle, samples: &Samples, lobes: &Lobes, eps: f64, omega_a: f64) -> Exact {
-    let (a, b) = ((1.0 + eps / 2.0).powi(2), (1.0 - eps / 2.0).powi(2));
+    let (da, db) = (eps + eps * eps / 4.0, eps - eps * eps / 4.0);
     let kappa = 2.0 / (omega_a * omega_a);
     let (candidates, quadrature) = match cycle.inertia.constant() {
         Some(_) => (
@@ -48,15 +60,25 @@ pub(crate) fn exact(cycle: &Cycle, samples: &Samples, lobes: &Lobes, eps: f64, o
             ],
             Integral::default(),
         ),
-        None => general_candidates(cycle, samples, kappa, [a, b]),
+        None => general_candidates(cycle, samples, kappa, [1.0 + da, 1.0 - db]),
     };
-    let h = |k: f64, c: &Candidate| k * cycle.inertia_at(c.phi, c.side) - kappa * c.work;
-    let arg = |k: f64, better: fn(f64, f64) -> bool| {
-        candidates.iter().fold(&candidates[0], |best, c| if better(h(k, c), h(k, best)) { c } else { best })
+    // k·I* − κW for k = 1 + d.
+    let h = |d: f64, c: &Candidate| {
+        let i = cycle.inertia_at(c.phi, c.side);
+        (i - kappa * c.work) + d * i
     };
-    let (at_max, at_min) = (arg(a, |x, y| x < y), arg(b, |x, y| x > y));
-    let inertia = (h(b, at_min) - h(a, at_max)) / (a - b);
-    let c = a * inertia + h(a, at_max);
+    let arg = |d: f64, better: fn(f64, f64) -> bool| {
+        candidates.iter().fold(&candidates[0], |best, c| if better(h(d, c), h(d, best)) { c } else { best })
+    };
+    let (at_max, at_min) = (arg(da, |x, y| x < y), arg(-db, |x, y| x > y));
+    let numerator = h(-db, at_min) - h(da, at_max);
+    let inertia = numerator / (da + db);
+    let c = (1.0 + da) * inertia + h(da, at_max);
+    let size = |c: &Candidate| cycle.inertia_at(c.phi, c.side).abs() + (kappa * c.work).abs();
+    let largest = cycle.inertia_at(at_min.phi, at_min.side).abs().max(cycle.inertia_at(at_max.phi, at_max.side).abs());
+    let total = numerator.abs() + (da + db) * largest;
+    let relative = |x: f64| if total > 0.0 { x / total } else { 0.0 };
+    let (rounding, per_joule) = (relative(4.0 * f64::EPSILON * (size(at_min) + size(at_max))), relative(2.0 * kappa));
     let scale = inertia.abs() + candidates.iter().map(|c| cycle.inertia_at(c.phi, c.side).abs()).fold(0.0, f64::max);
     let lowest_total =
         candidates.iter().map(|c| inertia + cycle.inertia_at(c.phi, c.side)).fold(f64::INFINITY, f64::min);
@@ -67,6 +89,8 @@ pub(crate) fn exact(cycle: &Cycle, samples: &Samples, lobes: &Lobes, eps: f64, o
         phi_omega_min: at_min.phi,
         degenerate: lowest_total <= 1e-12 * scale.max(f64::MIN_POSITIVE),
         quadrature,
+        rounding,
+        per_joule,
     }
 }
 

@@ -3,6 +3,7 @@
 //! the whole sweep: Φ_q, its LU and the vectors are refilled in place, and
 //! each position is handed over by reference before the next is solved.
 
+use super::cut::{Cuts, Settled};
 use super::{Configuration, Dyads, SINGULAR_CONDITION, Trig, Workspace, unreachable};
 use crate::engine::model::Mechanism;
 use crate::engine::{Deadline, EngineError, Progress};
@@ -54,6 +55,7 @@ pub fn sweep_each(
     let mut c = Configuration::default();
     let single = m.drivers.len() == 1;
     let (dyads, mut trig) = (Dyads::new(m), Trig::default());
+    let cuts = Cuts::new(m);
     // The least jump of each curve parameter: 1e-3 of its period (of its length scale unbounded).
     let lengths = &ws.cols[m.n_body_coordinates()..];
     let periods = m.parameter_periods();
@@ -76,7 +78,7 @@ pub fn sweep_each(
         if dyads.is_some() && !c.placed {
             predict(&mut c.q);
         }
-        let (iterations, residual) = match ws.assemble(m, &mut c.q, inputs, step) {
+        let mut newton = match ws.assemble(m, &mut c.q, inputs, step) {
             Ok(r) => r,
             // One position that will not assemble between two that do is a
             // singular point passed; two in a row is a position out of reach.
@@ -91,10 +93,21 @@ pub fn sweep_each(
             }
         };
         failure = None;
+        // A contact that cuts into its cam is moved to where it rests (a jump).
+        let settled = if cuts.is_empty() {
+            Settled::default()
+        } else {
+            cuts.settle(m, &mut ws, (&mut c.q, predicted.as_deref()), (inputs, step), &mut newton)
+        };
+        let (iterations, residual) = newton;
         c.jumped.clear();
         if let Some(predicted) = &predicted {
             c.jumped.extend(jumps(m.n_body_coordinates(), (&jump_scale, &periods), [&base, predicted, &c.q]));
         }
+        c.jumped.extend(&settled.moved);
+        c.jumped.sort_unstable();
+        c.jumped.dedup();
+        c.cuts.clone_from(&settled.cut);
         // One input: g = dq/dφ and h = d²q/dφ² give q̇ = gω and q̈ = gα + hω²
         // (γ is quadratic in q̇), and they are the next step's predictor.
         let unit = [[inputs[0][0], 1.0, 0.0]];
@@ -164,6 +177,7 @@ impl Configuration {
             (condition, scaled, iterations, residual);
         self.singular = true;
         self.jumped.clear();
+        self.cuts.clear();
     }
 }
 

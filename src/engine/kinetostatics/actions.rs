@@ -128,11 +128,13 @@ impl Actions<'_> {
                 let states = out.reactions.iter().filter(|r| r.determinate);
                 let jumped =
                     |k: usize| (0..2).any(|side| m.contact_column(k, side).is_some_and(|col| c.jumped.contains(&col)));
-                out.contacts.extend(
-                    states
-                        .filter_map(|r| super::contact_state(m, &c.q, &c.qd, r))
-                        .map(|s| ContactState { jumped: jumped(s.joint), ..s }),
-                );
+                out.contacts.extend(states.filter_map(|r| super::contact_state(m, &c.q, &c.qd, r)).map(|s| {
+                    ContactState {
+                        jumped: jumped(s.joint),
+                        penetration: c.cuts.iter().find(|cut| cut.0 == s.joint).map(|cut| cut.1),
+                        ..s
+                    }
+                }));
             }
         } else {
             out.driving.push(out.driving_virtual_power.first().copied().unwrap_or(f64::NAN));

@@ -46,6 +46,13 @@ pub struct ContactState {
     /// The contact jumped to this position from far off the point it was
     /// followed to (a sweep's continuation: [`crate::engine::kinematics::Configuration::jumped`]).
     pub jumped: bool,
+    /// The bodies cut into each other here away from the contact, this
+    /// deep (m): no contact outside both was found (a sweep's
+    /// [`crate::engine::kinematics::Configuration::cuts`]).
+    pub penetration: Option<f64>,
+    /// Direct dynamics, a rolling contact with friction: whether it slips
+    /// at this instant (None elsewhere: kinetostatics assumes it rolls).
+    pub slipping: Option<bool>,
 }
 
 /// Contact joint k's frame at (q, q̇): where the curves touch, t, n, and
@@ -107,6 +114,8 @@ pub fn contact_state(m: &Mechanism, q: &[f64], qd: &[f64], r: &Reaction) -> Opti
         }),
         overlap: overlap(m, k, q, frame.n),
         jumped: false,
+        penetration: None,
+        slipping: None,
     })
 }
 

@@ -29,6 +29,8 @@ warning-span = { $from } to { $to }
 warning-at-time = t = { $t } s
 warning-contact-off-end = contact { $name }: the contact runs off the end of an open curve at { $at }: the results there are not a contact's (extend the curve)
 warning-contact-jumped = contact { $name }: the contact jumped at { $at } to a point far from where it was followed to (another lobe): the follower leaves the curve it was on and lands elsewhere, a jump the motion there does not show
+warning-contact-cut = contact { $name }: the bodies cut into each other at { $at } (each step's `penetration` says how deep): the contact the equations follow there cannot be, and none outside both bodies was found (a rolling contact cannot jump to another lobe; a cam too hollow for its follower)
+warning-contact-slipping = contact { $name } slips from { $at }: μN does not cover the friction rolling would need there, and kinetic friction acts instead (each sample's contact says `state`)
 warning-contact-overlap = contact { $name }: the curves overlap around the contact at { $at }: the bodies would touch elsewhere there (the follower jumps to another lobe: a flat face on a concave stretch, a roller in a tighter hollow); the results there follow a contact that cannot be
 warning-contact-separates = contact { $name }: the normal force is negative at { $at }: the bodies would separate there (a follower jump, a disk leaving its track) unless something holds them together
 warning-contact-slips = contact { $name }: rolling needs more friction than mu = { $mu } gives at { $at } (see mu_required): it would slip there
@@ -46,6 +48,7 @@ accuracy-form-sparse = solved by the range-space method (sparse LDLᵀ of Φ_q M
 accuracy-form-lu = solved by LU
 accuracy-energy-held = { " " }and, the loads having a potential, onto T + V = E₀ ({ $held } of { $steps } steps)
 warning-dynamics-not-reached = the angle { $angle } was not reached within { $time }
+warning-dynamics-contact-open-at-start = the contact '{ $name }' pulls at the start: its normal force is below 0 there, and a contact only pushes — the bodies part at once (gravity or the loads draw them apart): the run stops at t = 0
 warning-dynamics-contact-opens = the contact '{ $name }' opens at { $t }: its normal force falls to 0 and the bodies would separate (what follows is not the motion of these joints): the run stops there
 warning-dynamics-unexpected-guard = the run stopped where the model changes nothing (a guard crossed where the model has none)
 warning-dynamics-turns-unlisted = the first { $listed } turns are listed as events; { $more } more were crossed after them and are not listed

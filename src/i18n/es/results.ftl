@@ -29,6 +29,8 @@ warning-span = { $from } a { $to }
 warning-at-time = t = { $t } s
 warning-contact-off-end = contacto { $name }: el contacto sale por el extremo de una curva abierta en { $at }: ahí los resultados no son los de un contacto (prolongue la curva)
 warning-contact-jumped = contacto { $name }: el contacto saltó en { $at } a un punto lejos de donde se seguía (otro lóbulo): el seguidor deja la curva en la que estaba y cae en otro sitio, un salto que el movimiento ahí no muestra
+warning-contact-cut = contacto { $name }: los sólidos se cortan en { $at } (el `penetration` de cada paso dice cuánto): el contacto que siguen las ecuaciones ahí es imposible y no se encontró otro fuera de ambos sólidos (un contacto con rodadura no puede saltar a otro lóbulo; una leva demasiado cóncava para su seguidor)
+warning-contact-slipping = el contacto { $name } desliza de { $at }: μN no cubre el rozamiento que la rodadura necesitaría ahí, y actúa el rozamiento cinético (el `state` del contacto de cada muestra lo dice)
 warning-contact-overlap = contacto { $name }: las curvas se solapan alrededor del contacto en { $at }: ahí los sólidos se tocarían en otro punto (el seguidor salta a otro lóbulo: una cara plana en un tramo cóncavo, un rodillo en un hueco más cerrado); los resultados ahí siguen un contacto imposible
 warning-contact-separates = contacto { $name }: la fuerza normal es negativa en { $at }: ahí los sólidos se separarían (un salto del seguidor, un disco que deja su pista) salvo que algo los mantenga juntos
 warning-contact-slips = contacto { $name }: la rodadura necesita más rozamiento del que da mu = { $mu } en { $at } (vea mu_required): ahí deslizaría
@@ -46,6 +48,7 @@ accuracy-form-sparse = resueltas por el método del espacio imagen (LDLᵀ dispe
 accuracy-form-lu = resueltas por LU
 accuracy-energy-held = { " " }y, al tener potencial las cargas, sobre T + V = E₀ ({ $held } de { $steps } pasos)
 warning-dynamics-not-reached = no se alcanzó el ángulo { $angle } en { $time }
+warning-dynamics-contact-open-at-start = el contacto '{ $name }' tira al comienzo: su fuerza normal ahí es menor que 0, y un contacto solo empuja — los sólidos se separan en el acto (la gravedad o las cargas los apartan): la integración se detiene en t = 0
 warning-dynamics-contact-opens = el contacto '{ $name }' se abre en { $t }: su fuerza normal cae a 0 y los sólidos se separarían (lo que sigue no es el movimiento de estos pares): la integración se detiene ahí
 warning-dynamics-unexpected-guard = la integración se detuvo donde el modelo no cambia nada (una condición cruzó donde el modelo no tiene ninguna)
 warning-dynamics-turns-unlisted = las primeras { $listed } vueltas se listan como eventos; después se cruzaron { $more } más, que no se listan

@@ -206,6 +206,7 @@ impl Kind for Dynamics {
         ("/machine/samples/*/contacts/*/tangential", "N"),
         ("/machine/samples/*/contacts/*/curvature_radius/*", "m"),
         ("/machine/samples/*/contacts/*/pressure_angle", "rad"),
+        ("/machine/samples/*/contacts/*/penetration", "m"),
         ("/machine/samples/*/t", "s"),
         ("/samples/*/acceleration", "rad/s^2"),
         ("/samples/*/angle", "rad"),
@@ -230,19 +231,23 @@ impl Kind for Dynamics {
     }
 
     /// A machine's input in metres (a prismatic joint, a point) has its
-    /// coordinate in m, its speed in m/s; the table says rad otherwise.
+    /// coordinate in m, its speed in m/s; the table says rad otherwise. The
+    /// first input's is also the motion's (`samples`, `events`, `end`) and
+    /// its estimated error's.
     fn unit(result: &Value, pointer: &[&str]) -> Option<String> {
-        if let ["machine", "samples", _, "inputs", k, field] = pointer
-            && result["machine"]["input_units"][k.parse::<usize>().ok()?] == "m"
-        {
-            let unit = match *field {
-                "angle" => "m",
-                "speed" => "m/s",
-                _ => "m/s^2",
-            };
-            return Some(unit.into());
-        }
-        unit_in(Self::UNITS, pointer).map(String::from)
+        let metres = |k: &str| k.parse::<usize>().is_ok_and(|k| result["machine"]["input_units"][k] == "m");
+        let linear = |field: &str| match field {
+            "angle" | "estimated_error" => Some("m".to_string()),
+            "speed" => Some("m/s".into()),
+            "acceleration" => Some("m/s^2".into()),
+            _ => None,
+        };
+        let field = match pointer {
+            ["machine", "samples", _, "inputs", k, field] if metres(k) => Some(*field),
+            ["samples" | "events", _, field] | ["end" | "accuracy", field] if metres("0") => Some(*field),
+            _ => None,
+        };
+        field.and_then(linear).or_else(|| unit_in(Self::UNITS, pointer).map(String::from))
     }
 }
 
@@ -275,6 +280,8 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
             let machine = MachineDynamics::new(&s, &p.mechanism, report);
             let contacts = machine.samples.iter().filter_map(|x| Some((x.t, x.contacts.as_deref()?)));
             result.notes.extend(contact_warnings(contacts, &p.mechanism, result::at_time, true));
+            let joint_names: Vec<String> = p.mechanism.joints.iter().map(|j| j.name.clone()).collect();
+            result.notes.extend(result::slipping(&s, &joint_names));
             result.machine = Some(machine);
             Ok(result)
         }

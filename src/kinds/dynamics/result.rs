@@ -18,8 +18,9 @@ pub struct SampleDto {
     pub speed: f64,
     pub acceleration: f64,
     /// (W − ΔT)/max(|W|, |ΔT|, T₀, T, T_peak) from the start to this sample, W the
-    /// integrated power of the actions, T_peak the largest T sampled so far:
-    /// the energy balance's drift.
+    /// work of the actions (mechanism form: −ΔV where they have a
+    /// potential and no contact has friction; else their integrated power),
+    /// T_peak the largest T sampled so far: the energy balance's drift.
     pub energy_residual: f64,
 }
 
@@ -27,9 +28,11 @@ pub struct SampleDto {
 pub struct EventDto {
     /// "turn" (a multiple of 2π crossed, either direction), "slip" (a
     /// rolling contact with friction starts to slip, or its slip turns
-    /// back), "roll" (a slipping contact rolls again) or "end".
+    /// back), "roll" (a slipping contact rolls again), "separation" (a
+    /// contact's normal force fell to 0, or was below 0 at the start: the
+    /// bodies part, and the run stops there) or "end".
     pub kind: String,
-    /// The contact joint of a "slip" or "roll" event.
+    /// The contact joint of a "slip", "roll" or "separation" event.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub joint: Option<String>,
     pub angle: f64,
@@ -53,9 +56,10 @@ pub struct DynamicsAccuracy {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub energy_form_time_difference: Option<f64>,
     /// Σ over the steps of the integrator's local error estimate of the angle,
-    /// rad (for a mechanism, the largest over its bodies' angles): a
-    /// first-order estimate of the global error that ignores its growth or
-    /// decay along the motion.
+    /// rad (for a mechanism, of its first input's coordinate through its
+    /// joint's row, in its unit — m for a slider — and for an angle the
+    /// largest over its bodies' angles too): a first-order estimate of the
+    /// global error that ignores its growth or decay along the motion.
     pub estimated_error: f64,
     pub steps: usize,
     pub function_evaluations: usize,
@@ -96,6 +100,13 @@ pub struct DynamicsResult {
     /// not depend on how many turns came before (`/end/t`, `/end/speed`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub end: Option<EventDto>,
+    /// Why the run stopped before its end, where it did: "separation" (a
+    /// contact's normal force fell to 0: the bodies part), "not_reached"
+    /// (the end angle was not reached within the longest duration),
+    /// "chatter" (contacts switched between rolling and slipping without
+    /// end); a warning says more.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stopped: Option<String>,
     pub energy_residual: f64,
     pub accuracy: DynamicsAccuracy,
     /// Mechanism form: every input, the reactions and the constraint residual at the samples.
@@ -126,6 +137,7 @@ impl From<DynamicsSolution> for DynamicsResult {
                     EventKind::Turn => "turn",
                     EventKind::Slip => "slip",
                     EventKind::Roll => "roll",
+                    EventKind::Separation => "separation",
                     EventKind::End => "end",
                 }
                 .into(),
@@ -156,6 +168,12 @@ impl From<DynamicsSolution> for DynamicsResult {
                 .collect(),
             end: events.iter().rev().find(|e| e.kind == "end").cloned(),
             events,
+            stopped: s.stopped.as_ref().and_then(|s| match s {
+                Stopped::ContactOpens { .. } => Some("separation".into()),
+                Stopped::NotReached { .. } => Some("not_reached".into()),
+                Stopped::Chatter { .. } => Some("chatter".into()),
+                Stopped::Unexpected => None,
+            }),
             energy_residual: s.energy_residual,
             accuracy: DynamicsAccuracy {
                 energy_residual: s.energy_residual,
@@ -190,7 +208,10 @@ fn stopped(s: &Stopped) -> Msg {
         Stopped::NotReached { angle, max_time } => Msg::new(NOT_REACHED)
             .with("angle", Msg::new("text-value-unit").num("value", *angle).arg("unit", "rad"))
             .with("time", Msg::new("text-value-unit").num("value", *max_time).arg("unit", "s")),
-        Stopped::ContactOpens { joint, t } => {
+        Stopped::ContactOpens { joint, t, .. } if *t == 0.0 => {
+            Msg::new("warning-dynamics-contact-open-at-start").arg("name", joint)
+        }
+        Stopped::ContactOpens { joint, t, .. } => {
             Msg::new("warning-dynamics-contact-opens").arg("name", joint).with("t", at_time(*t))
         }
         Stopped::Chatter { switches, t } => {
@@ -277,4 +298,39 @@ pub fn csv_table(result: &serde_json::Value) -> (Vec<String>, Vec<Vec<String>>) 
         })
         .collect();
     (header, rows)
+}
+
+/// The intervals in which each rolling contact with friction slips, from
+/// the run's events (a slip from the start counted from t = 0, one still
+/// on at the end closed there): a warning per contact.
+pub(super) fn slipping(s: &MechanismSolution, joint_names: &[String]) -> Vec<Msg> {
+    use std::collections::BTreeMap;
+    let mut open: BTreeMap<usize, f64> = s.slipping_from_start.iter().map(|&j| (j, 0.0)).collect();
+    let mut spans: BTreeMap<usize, Vec<(f64, f64)>> = BTreeMap::new();
+    for e in &s.solution.events {
+        match (e.kind, e.joint) {
+            (EventKind::Slip, Some(j)) => {
+                open.entry(j).or_insert(e.t);
+            }
+            (EventKind::Roll, Some(j)) => {
+                if let Some(from) = open.remove(&j) {
+                    spans.entry(j).or_default().push((from, e.t));
+                }
+            }
+            (EventKind::End, _) => {
+                for (j, from) in std::mem::take(&mut open) {
+                    spans.entry(j).or_default().push((from, e.t));
+                }
+            }
+            _ => {}
+        }
+    }
+    let span = |&(a, b): &(f64, f64)| Msg::new("warning-span").with("from", at_time(a)).with("to", at_time(b));
+    (spans.into_iter())
+        .map(|(j, list)| {
+            Msg::new("warning-contact-slipping")
+                .arg("name", &joint_names[j])
+                .list("at", list.iter().map(span).collect())
+        })
+        .collect()
 }

@@ -75,6 +75,7 @@ impl Kind for Kinetostatics {
         ("/steps/*/contacts/*/tangential", "N"),
         ("/steps/*/contacts/*/curvature_radius/*", "m"),
         ("/steps/*/contacts/*/pressure_angle", "rad"),
+        ("/steps/*/contacts/*/penetration", "m"),
         ("/summary/max_reaction/*", "N"),
         ("/summary/virtual_power_residual", "1"),
         ("/summary/max_jacobian_condition", "1"),

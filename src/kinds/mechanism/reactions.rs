@@ -85,6 +85,16 @@ pub struct ContactDto {
     /// another lobe (a warning says where).
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub jumped: bool,
+    /// The bodies cut into each other here, away from the contact, this
+    /// deep (m): the contact the equations follow cannot be, and none
+    /// outside both bodies was found (a warning says where). Absent where
+    /// they only touch.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub penetration: Option<f64>,
+    /// Direct dynamics, a rolling contact with friction: "rolling" or
+    /// "slipping" at this instant.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub state: Option<String>,
 }
 
 impl ContactDto {
@@ -101,6 +111,8 @@ impl ContactDto {
             off_end: c.off_end,
             overlap: c.overlap,
             jumped: c.jumped,
+            penetration: c.penetration,
+            state: c.slipping.map(|s| if s { "slipping" } else { "rolling" }.into()),
         }
     }
 }
@@ -140,41 +152,44 @@ impl ReactionDto {
 /// consecutive positions where it holds (`at` the position, shown by
 /// `show`): a negative normal force (the bodies would separate there: a
 /// follower jump, a disk leaving its track), and a rolling contact needing
-/// more friction than its `friction` gives (it would slip; `slips`: unless
-/// the slip is modelled, as dynamics does), a contact run off the end of
-/// an open curve. A particle's
+/// more friction than its `friction` gives (it would slip), each unless
+/// `dynamics` models it (a slip is then integrated, a separation stops the
+/// run, and the kind says so), a contact run off the end of
+/// an open curve, a jump to another lobe, curves that overlap round the
+/// contact or bodies cut into each other elsewhere. A particle's
 /// contact (a ring threaded on a rim) holds both ways: no warning.
 pub fn contact_warnings<'a>(
     steps: impl Iterator<Item = (f64, &'a [ContactDto])>,
     m: &Mechanism,
     show: impl Fn(f64) -> Msg,
-    slip_modelled: bool,
+    dynamics: bool,
 ) -> Vec<Msg> {
     let joints: Vec<(usize, &str)> = (m.joints.iter().enumerate())
         .filter(|(_, j)| matches!(j.kind, JointKind::Contact(_)))
         .map(|(k, j)| (k, j.name.as_str()))
         .collect();
     // Per contact joint and condition, the runs [from, to] of positions.
-    let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new(); 5 * joints.len()];
-    let mut open = vec![false; 5 * joints.len()];
+    let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new(); 6 * joints.len()];
+    let mut open = vec![false; 6 * joints.len()];
     for (at, contacts) in steps {
         for (i, &(k, name)) in joints.iter().enumerate() {
             let c = contacts.iter().find(|c| &*c.joint == name);
             let mu = m.joints[k].friction.map(|f| f.mu);
             let rolling = matches!(&m.joints[k].kind, JointKind::Contact(c) if c.rolling);
             let slips = |c: &ContactDto| {
-                !slip_modelled && rolling && mu.is_some_and(|mu| c.tangential.abs() > mu * c.normal.max(0.0))
+                !dynamics && rolling && mu.is_some_and(|mu| c.tangential.abs() > mu * c.normal.max(0.0))
             };
             let threaded = matches!(&m.joints[k].kind, JointKind::Contact(c) if c.particle);
-            let separates = c.is_some_and(|c| c.normal < 0.0) && !threaded;
+            let separates = c.is_some_and(|c| c.normal < 0.0) && !threaded && !dynamics;
             let conditions = [
                 separates,
                 c.is_some_and(slips),
                 c.is_some_and(|c| c.off_end),
                 c.is_some_and(|c| c.overlap),
                 c.is_some_and(|c| c.jumped),
+                c.is_some_and(|c| c.penetration.is_some()),
             ];
-            for (slot, holds) in conditions.into_iter().enumerate().map(|(n, h)| (5 * i + n, h)) {
+            for (slot, holds) in conditions.into_iter().enumerate().map(|(n, h)| (6 * i + n, h)) {
                 match (holds, open[slot]) {
                     (true, true) => runs[slot].last_mut().expect("an open run").1 = at,
                     (true, false) => runs[slot].push((at, at)),
@@ -193,20 +208,21 @@ pub fn contact_warnings<'a>(
     };
     let mut out = Vec::new();
     for (i, &(k, name)) in joints.iter().enumerate() {
-        let said = |id, slot: usize| Msg::new(id).arg("name", name).list("at", span(&runs[5 * i + slot]));
+        let said = |id, slot: usize| Msg::new(id).arg("name", name).list("at", span(&runs[6 * i + slot]));
         // In the order a reader needs them: where the results are not a contact's first.
         let conditions = [
             (2, "warning-contact-off-end"),
             (4, "warning-contact-jumped"),
+            (5, "warning-contact-cut"),
             (3, "warning-contact-overlap"),
             (0, "warning-contact-separates"),
         ];
         for (slot, id) in conditions {
-            if !runs[5 * i + slot].is_empty() {
+            if !runs[6 * i + slot].is_empty() {
                 out.push(said(id, slot));
             }
         }
-        if let (false, Some(f)) = (runs[5 * i + 1].is_empty(), m.joints[k].friction) {
+        if let (false, Some(f)) = (runs[6 * i + 1].is_empty(), m.joints[k].friction) {
             out.push(said("warning-contact-slips", 1).num("mu", f.mu));
         }
     }

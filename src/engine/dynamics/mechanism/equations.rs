@@ -61,6 +61,8 @@ pub(super) struct Equations<'a> {
     /// The rolling contacts with friction, their state now, at the start,
     /// and after each change (from its time on) for the samples.
     pub grips: Vec<Grip>,
+    /// The other contacts that push and never pull: (joint, first row).
+    pub one_sided: Vec<(usize, usize)>,
     pub held: RefCell<Grips>,
     pub start: Grips,
     pub history: RefCell<Vec<(f64, Grips)>>,
@@ -69,6 +71,16 @@ pub(super) struct Equations<'a> {
 impl Equations<'_> {
     fn zeros(&self) -> Vec<[f64; 3]> {
         vec![[0.0; 3]; self.p.mechanism.drivers.len()]
+    }
+
+    /// A bound of the first input's error from errors `e` of the
+    /// coordinates: Σ|∂φ/∂q_j|·e_j at q.
+    pub fn input_error(&self, q: &[f64], e: &[f64]) -> f64 {
+        let zeros = self.zeros();
+        let (_, _, jac) = evaluate_blocks(&self.p.mechanism, &State { q, qd: None, inputs: &zeros });
+        let row = &jac.rows[self.r];
+        let blocks: f64 = row.iter().map(|(c, d)| (0..3).map(|k| d[k].abs() * e[c + k]).sum::<f64>()).sum();
+        blocks + row.single[..row.singles].iter().map(|&(c, d)| d.abs() * e[c]).sum::<f64>()
     }
 
     /// φ and φ̇ of the first input.

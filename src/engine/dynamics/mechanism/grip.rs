@@ -66,6 +66,17 @@ pub(crate) fn grips(m: &Mechanism) -> Vec<Grip> {
     m.joints.iter().enumerate().filter_map(grip).collect()
 }
 
+/// The contacts that push and never pull other than the grips (which
+/// guard their own normal force): (joint, the first of its rows) of every
+/// contact that is not a particle threaded on its curve (held both ways).
+pub(crate) fn one_sided(m: &Mechanism, grips: &[Grip]) -> Vec<(usize, usize)> {
+    let offsets = joint_offsets(m);
+    (m.joints.iter().enumerate())
+        .filter(|(k, j)| matches!(&j.kind, JointKind::Contact(c) if !c.particle) && grips.iter().all(|g| g.joint != *k))
+        .map(|(k, _)| (k, offsets[k]))
+        .collect()
+}
+
 impl Grip {
     /// [N, F_t] from the multipliers of every joint row.
     pub fn parts(&self, frame: &Frame, lambda: &[f64]) -> [f64; 2] {

@@ -43,29 +43,50 @@ impl Model for Equations<'_> {
         *self.history.borrow_mut() = vec![(0.0, self.start.clone())];
     }
 
+    /// Each grip's two guards, then each other one-sided contact's normal
+    /// force N (≥ 0 while they press).
     fn guards(&self, t: f64, y: &[f64]) -> Vec<f64> {
-        if self.grips.is_empty() {
+        let count = 2 * self.grips.len() + self.one_sided.len();
+        if count == 0 {
             return Vec::new();
         }
         let (q, qd) = (&y[..self.n], &y[self.n..2 * self.n]);
         let modes = self.held.borrow().modes.clone();
-        let Some(motion) = self.motion(t, q, qd, false) else { return vec![f64::NAN; 2 * self.grips.len()] };
-        let guard = |(g, mode): (&Grip, Mode)| match Frame::of(&self.p.mechanism, g.joint, q, qd) {
+        let Some(motion) = self.motion(t, q, qd, false) else { return vec![f64::NAN; count] };
+        let m = &self.p.mechanism;
+        let guard = |(g, mode): (&Grip, Mode)| match Frame::of(m, g.joint, q, qd) {
             Some(frame) => g.guards(mode, &frame, &motion.lambda),
             None => [f64::NAN; 2],
         };
-        self.grips.iter().zip(modes).flat_map(guard).collect()
+        let normal = |&(joint, row): &(usize, usize)| match Frame::of(m, joint, q, qd) {
+            Some(frame) => frame.parts([-motion.lambda[row], -motion.lambda[row + 1]])[0],
+            None => f64::NAN,
+        };
+        let mut out: Vec<f64> = self.grips.iter().zip(modes).flat_map(guard).collect();
+        out.extend(self.one_sided.iter().map(normal));
+        out
+    }
+
+    fn stops(&self, k: usize) -> bool {
+        k % 2 == 1 || k >= 2 * self.grips.len()
     }
 
     /// Guard 2i (grip i's mode ends): it slips against the tangential
     /// force rolling needs, or, its slip ended, rolls again from here (its
     /// rolling row's offset the arc slipped) if μN covers that force, else
-    /// slips on the other way. Guard 2i + 1: its normal force reached 0.
+    /// slips on the other way. Guard 2i + 1, or a one-sided contact's
+    /// after the grips': its normal force reached 0.
     fn cross(&self, k: usize, t: f64, y: &[f64]) -> Crossing {
+        let opens = |index: usize| {
+            let joint = self.p.mechanism.joints[index].name.clone();
+            Crossing::Stop(Stopped::ContactOpens { joint, index, t })
+        };
+        if let Some(&(index, _)) = k.checked_sub(2 * self.grips.len()).and_then(|i| self.one_sided.get(i)) {
+            return opens(index);
+        }
         let (i, grip) = (k / 2, self.grips[k / 2]);
         if k % 2 == 1 {
-            let joint = self.p.mechanism.joints[grip.joint].name.clone();
-            return Crossing::Stop(Stopped::ContactOpens { joint, t });
+            return opens(grip.joint);
         }
         let (q, qd) = (&y[..self.n], &y[self.n..2 * self.n]);
         let rolled = self.held.borrow().modes[i] == Mode::Roll;
