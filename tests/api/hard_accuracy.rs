@@ -3,14 +3,7 @@
 //! a plain estimate claims too much, against closed forms.
 
 use crate::helpers::{TestApp, request};
-use axum::http::StatusCode;
 use serde_json::{Value, json};
-
-async fn created(app: &TestApp, path: &str, body: &Value) -> Value {
-    let r = app.post(path, body).await;
-    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
-    r.json()["result"].clone()
-}
 
 /// P.103's torque (−500 sin φ N·m over the first half-turn, a constant
 /// motor balancing it) on a constant reduced inertia I* = 5 kg·m² at 60
@@ -27,7 +20,7 @@ async fn wittenbauer_at_a_tiny_irregularity_is_as_accurate_as_it_says() {
         let mut body = request("p103_slider");
         body["irregularity"] = json!(eps);
         body["reduced_inertia"] = json!(5);
-        let result = created(&app, "/v1/flywheel", &body).await;
+        let result = app.result("/v1/flywheel", &body).await;
         let s = (1.0 / std::f64::consts::PI).asin();
         let dw = 500.0 * (2.0 * s.cos() - 1.0 + 2.0 * s / std::f64::consts::PI);
         let omega = std::f64::consts::TAU;
@@ -61,7 +54,7 @@ async fn a_stiff_spring_on_a_slider_estimates_the_travels_error() {
             "loads": [{"type": "spring", "a": ["ground", "S"], "b": ["slider", "G"], "stiffness": k, "free_length": 0.1}],
             "input": {"joint": "P", "start": a, "speed": 0}},
             "duration": 0.2, "samples": 11, "tolerance": tolerance});
-        let result = created(&app, "/v1/dynamics", &body).await;
+        let result = app.result("/v1/dynamics", &body).await;
         let omega = (k / 1.0f64).sqrt();
         let samples = result["samples"].as_array().unwrap();
         let error = samples
@@ -85,7 +78,7 @@ async fn a_stiff_spring_on_a_slider_estimates_the_travels_error() {
 #[tokio::test]
 async fn a_long_pendulum_reports_its_own_energy_balance() {
     let app = TestApp::new().await;
-    let result = created(&app, "/v1/dynamics", &request("a01_pendulum")).await;
+    let result = app.result("/v1/dynamics", &request("a01_pendulum")).await;
     let machine = result["machine"]["samples"].as_array().unwrap();
     let energy = |s: &Value| {
         let e = &s["energy"];

@@ -10,7 +10,6 @@
 //! scaled alike). Singularity, mobility and accuracy must not depend on s.
 
 use crate::helpers::{TestApp, request, template_request};
-use axum::http::StatusCode;
 use serde_json::{Value, json};
 
 /// The scales tried: from micrometres to thousands of kilometres.
@@ -79,12 +78,6 @@ fn same_scaled(a: &Value, b: &Value, s: f64, powers: &[(&str, i32)], tol: f64) {
     }
 }
 
-async fn created(app: &TestApp, path: &str, body: &Value) -> Value {
-    let r = app.post(path, body).await;
-    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
-    r.json()["result"].clone()
-}
-
 /// The library's four-bar (crank-rocker, a resisting torque on the rocker,
 /// gravity) from 1 µm to 1000 km: the same driving torques (s²), reactions
 /// (s), I* (s²) and M* (s²) at every step to 1e-9 of the largest, no step
@@ -98,10 +91,10 @@ async fn the_four_bar_answers_the_same_at_every_size() {
         body["constants"]["M"] = json!(20.0 * s * s);
         body
     };
-    let reference = created(&app, "/v1/kinetostatics", &at(1.0)).await;
+    let reference = app.result("/v1/kinetostatics", &at(1.0)).await;
     let powers = [("driving", 2), ("fx", 1), ("fy", 1), ("reduced_inertia", 2), ("reduced_torque", 2)];
     for s in SCALES {
-        let r = created(&app, "/v1/kinetostatics", &at(s)).await;
+        let r = app.result("/v1/kinetostatics", &at(s)).await;
         assert!(r["steps"].as_array().unwrap().iter().all(|k| k["driving"].is_number()), "at s = {s}: {r}");
         same_scaled(&reference["steps"], &r["steps"], s, &powers, 1e-9);
         let kappa = |r: &Value| r["summary"]["max_scaled_condition"].as_f64().unwrap();
@@ -129,9 +122,9 @@ async fn the_slider_crank_starts_the_same_at_every_size() {
         body["machine"]["loads"][0]["value"] = json!(10.0 * s * s);
         body
     };
-    let reference = created(&app, "/v1/dynamics", &at(1.0)).await;
+    let reference = app.result("/v1/dynamics", &at(1.0)).await;
     for s in SCALES {
-        let r = created(&app, "/v1/dynamics", &at(s)).await;
+        let r = app.result("/v1/dynamics", &at(s)).await;
         let accuracy = &r["accuracy"];
         assert_eq!(accuracy["energy_conserved"], json!(true), "at s = {s}: {accuracy}");
         let drift = accuracy["constraint_drift"].as_f64().unwrap();
@@ -148,7 +141,7 @@ async fn mobility_counts_the_same_at_every_size() {
     for s in [1e-9, 1e-6, 1.0, 1e6] {
         let mut mechanism = template_request("four-bar")["mechanism"].clone();
         drawn_at(&mut mechanism, s);
-        let r = created(&app, "/v1/mobility", &json!({"mechanism": mechanism})).await;
+        let r = app.result("/v1/mobility", &json!({"mechanism": mechanism})).await;
         assert_eq!((r["dof"].as_i64(), r["redundant_constraints"].as_i64()), (Some(1), Some(0)), "at s = {s}: {r}");
         assert_eq!(r["candidate_inputs"][0], "O2", "at s = {s}: {r}");
     }
@@ -174,7 +167,7 @@ async fn a_contact_driven_along_itself_carries_no_driving_force() {
         "input": {"joint": "slope", "speed": 0.2, "start": 0, "end": 0.5, "steps": 5},
         "outputs": ["driving", "reactions"]
     });
-    let r = created(&app, "/v1/kinetostatics", &body).await;
+    let r = app.result("/v1/kinetostatics", &body).await;
     for step in r["steps"].as_array().unwrap() {
         let slope = &step["reactions"][0];
         assert!((step["driving"].as_f64().unwrap() - g * alpha.sin()).abs() < 1e-12, "{step}");
@@ -191,7 +184,7 @@ async fn a_contact_driven_along_itself_carries_no_driving_force() {
 #[tokio::test]
 async fn the_ring_on_the_rim_balances_with_each_force_named_once() {
     let app = TestApp::new().await;
-    let r = created(&app, "/v1/kinetostatics", &template_request("ring-on-rim")).await;
+    let r = app.result("/v1/kinetostatics", &template_request("ring-on-rim")).await;
     let step = &r["steps"][0];
     let rim = &step["reactions"][1];
     assert_eq!(rim["joint"], "rim");
@@ -218,7 +211,7 @@ async fn a_disk_at_exactly_its_friction_limit_rolls() {
     let mut body = template_request("rolling-disk");
     let alpha = 30f64.to_radians();
     body["machine"]["mechanism"]["joints"][0]["friction"] = json!({"mu": alpha.tan() / 3.0});
-    let r = created(&app, "/v1/dynamics", &body).await;
+    let r = app.result("/v1/dynamics", &body).await;
     let events: Vec<&str> = r["events"].as_array().unwrap().iter().map(|e| e["kind"].as_str().unwrap()).collect();
     assert_eq!(events, ["end"], "{}", r["events"]);
     let last = r["samples"].as_array().unwrap().last().unwrap().clone();

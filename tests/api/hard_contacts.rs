@@ -16,7 +16,6 @@
 //! section to 1e-13 rad: exact to about 1e-15 m.
 
 use crate::helpers::{TestApp, template_request};
-use axum::http::StatusCode;
 use serde_json::{Value, json};
 use std::f64::consts::{FRAC_PI_2, TAU};
 
@@ -50,12 +49,6 @@ fn polar_cam(a: f64, b: f64, n: u32, follower: Value, touch: [f64; 2]) -> Value 
     body
 }
 
-async fn solved(app: &TestApp, body: &Value) -> Value {
-    let r = app.post("/v1/kinetostatics", body).await;
-    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
-    r.json()["result"].clone()
-}
-
 /// Each step's (θ, the follower's y, its contact).
 fn follower_steps(result: &Value) -> Vec<(f64, f64, Value)> {
     let steps = result["steps"].as_array().unwrap();
@@ -77,7 +70,7 @@ async fn a_flat_face_rests_on_the_cams_support_function() {
     for (b, n, jumps) in [(0.006, 3, 3), (0.01, 3, 3), (0.04, 1, 1)] {
         let top = 0.05 + b;
         let face = json!({"line": {"through": "F", "direction": [1, 0]}});
-        let result = solved(&app, &polar_cam(0.05, b, n, face, [0.0, top])).await;
+        let result = app.result("/v1/kinetostatics", &polar_cam(0.05, b, n, face, [0.0, top])).await;
         let rho = |psi: f64| 0.05 + b * (n as f64 * psi).cos();
         for (theta, y, contact) in follower_steps(&result) {
             let h = maximum(|psi| rho(psi) * (psi + FRAC_PI_2 + theta).sin());
@@ -100,7 +93,7 @@ async fn a_roller_bridges_a_hollow_narrower_than_itself() {
     let app = TestApp::new().await;
     let r = 0.04;
     let roller = json!({"circle": {"center": "F", "radius": r}});
-    let result = solved(&app, &polar_cam(0.05, 0.01, 3, roller, [0.0, 0.06 + r])).await;
+    let result = app.result("/v1/kinetostatics", &polar_cam(0.05, 0.01, 3, roller, [0.0, 0.06 + r])).await;
     let rho = |psi: f64| 0.05 + 0.01 * (3.0 * psi).cos();
     for (theta, y, contact) in follower_steps(&result) {
         let clear = |psi: f64| {
@@ -134,7 +127,7 @@ async fn a_rolling_disk_that_cannot_bridge_a_hollow_says_how_deep_it_cuts() {
         "input": {"joint": "K", "start": "0 m", "end": "-0.08 m", "steps": 32, "speed": 1},
         "outputs": ["kinematics", "reactions"]
     });
-    let result = solved(&app, &body).await;
+    let result = app.result("/v1/kinetostatics", &body).await;
     let (mut cut, mut clear) = (0, 0);
     for step in result["steps"].as_array().unwrap() {
         let disk = &step["kinematics"][0];
@@ -163,12 +156,6 @@ async fn a_rolling_disk_that_cannot_bridge_a_hollow_says_how_deep_it_cuts() {
     );
 }
 
-async fn dynamics(app: &TestApp, body: &Value) -> Value {
-    let r = app.post("/v1/dynamics", body).await;
-    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
-    r.json()["result"].clone()
-}
-
 /// The cam-flat-follower template's eccentric disk (e = 20 mm) spun at
 /// 30 rad/s and left to run (frictionless, its inertia 1 kg·m²): the
 /// follower's lift is e(1 − cos θ), so it presses with N = m(g + e(ω²cos θ
@@ -186,7 +173,7 @@ async fn a_follower_thrown_off_its_cam_stops_the_run_at_the_separation() {
     mechanism["bodies"][0]["inertia"] = json!(1);
     let body = json!({"machine": {"mechanism": mechanism, "input": {"joint": "O"}},
         "initial": {"angle": 0, "speed": 30}, "duration": 1, "samples": 101, "tolerance": 1e-10});
-    let result = dynamics(&app, &body).await;
+    let result = app.result("/v1/dynamics", &body).await;
     assert_eq!(result["stopped"], "separation");
     let events = result["events"].as_array().unwrap();
     let separation = events.iter().find(|e| e["kind"] == "separation").expect("a separation event");
@@ -217,7 +204,7 @@ async fn a_disk_under_a_ceiling_parts_at_once() {
     let app = TestApp::new().await;
     let mut body = template_request("rolling-disk");
     body["machine"]["mechanism"]["gravity"] = json!([0, 9.81]);
-    let result = dynamics(&app, &body).await;
+    let result = app.result("/v1/dynamics", &body).await;
     let kinds: Vec<&str> = result["events"].as_array().unwrap().iter().map(|e| e["kind"].as_str().unwrap()).collect();
     assert_eq!(kinds, ["separation", "end"]);
     assert_eq!(result["events"][0]["t"], 0.0);
@@ -238,7 +225,7 @@ async fn a_disk_that_slips_from_the_start_says_so_throughout() {
     let app = TestApp::new().await;
     let mut body = template_request("rolling-disk");
     body["machine"]["mechanism"]["joints"][0]["friction"] = json!({"mu": 0.05});
-    let result = dynamics(&app, &body).await;
+    let result = app.result("/v1/dynamics", &body).await;
     let (g, alpha, mu) = (9.81, 30f64.to_radians(), 0.05);
     for s in result["machine"]["samples"].as_array().unwrap() {
         assert_eq!(s["contacts"][0]["state"], "slipping", "{s}");

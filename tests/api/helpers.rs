@@ -115,6 +115,13 @@ impl TestApp {
         self.send(Request::get(path).body(Body::empty()).unwrap()).await
     }
 
+    /// POSTs a request that must be answered 201; returns the job's result.
+    pub async fn result(&self, path: &str, body: &Value) -> Value {
+        let r = self.post(path, body).await;
+        assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+        r.json()["result"].clone()
+    }
+
     /// POSTs a flywheel request that must succeed; returns the job.
     pub async fn flywheel(&self, body: &Value) -> Value {
         let r = self.post("/v1/flywheel", body).await;
