@@ -19,12 +19,13 @@
 //! a profile point into the tool's material is (s − a)·ν for a face
 //! through a with ν = σ·perp(d), R − |s − c| for a disk of centre c and
 //! |s − c| − R for a track. Every sampled local maximum that may hide a
-//! cut (within the samples' largest second difference D of the
-//! tolerance) is refined by Newton on δ′(u) = 0, and the contact cuts
-//! where the largest δ exceeds 1e-8·L (L the mechanism's size): a proper
-//! contact's own point has δ = 0 to Newton's rounding. A cut narrower
-//! than the samples' spacing (about L/160) and shallower than D can be
-//! missed. Pairs of lines and circles are exact already (convex, the
+//! cut (δ_k + |Δ²δ_k| ≥ 0, Δ² the second difference: a bound of the
+//! parabola through it and its neighbours) is refined by Newton on
+//! δ′(u) = 0 — at the contact itself, where δ′ = 0 already, δ″ < 0 says it
+//! is the maximum — and the contact cuts where the largest δ exceeds
+//! 1e-8·L (L the mechanism's size): a proper contact's own point has δ = 0
+//! to Newton's rounding. A cut narrower than the samples' spacing (1/1024
+//! of the profile) and shallower than its Δ² can be missed. Pairs of lines and circles are exact already (convex, the
 //! tangency is the only contact); two profiles are not checked.
 
 use super::Workspace;
@@ -101,11 +102,12 @@ impl Cuts {
     ) -> Settled {
         let mut out = Settled::default();
         let depth = |q: &[f64]| self.worst(m, q).map_or(0.0, |w| w.2);
-        // The least cut q so far: its depth, q, Newton's figures, the watches moved to reach it.
-        let mut best = (depth(q), q.clone(), *assembled, Vec::new());
-        if best.0 <= self.tolerance {
+        let first = depth(q);
+        if first <= self.tolerance {
             return out;
         }
+        // The least cut q so far: its depth, q, Newton's figures, the watches moved to reach it.
+        let mut best = (first, q.clone(), *assembled, Vec::new());
         for start in std::iter::once(&q[..]).chain(predicted) {
             let (mut x, mut path) = (start.to_vec(), Vec::new());
             for _ in 0..ROUNDS {
@@ -116,8 +118,9 @@ impl Cuts {
                 self.watches[w].move_to(m, &mut x, u);
                 let Ok(newton) = ws.assemble(m, &mut x, inputs, step) else { break };
                 path.push(w);
-                if depth(&x) < best.0 {
-                    best = (depth(&x), x.clone(), newton, path.clone());
+                let now = depth(&x);
+                if now < best.0 {
+                    best = (now, x.clone(), newton, path.clone());
                 }
             }
             if best.0 <= self.tolerance {
@@ -260,7 +263,7 @@ impl Watch {
     }
 
     /// The profile's point cut deepest into the tool at q (u, δ), among the
-    /// samples' local maxima within D of the tolerance, each refined; a disk
+    /// samples' local maxima that may hide a cut, each refined; a disk
     /// crossed to the profile's other side counts R + its distance to the
     /// profile. None where nothing is near a cut.
     fn depth(&self, m: &Mechanism, q: &[f64]) -> Option<(f64, f64)> {
@@ -268,19 +271,31 @@ impl Watch {
         let delta: Vec<f64> = self.samples.iter().map(|(_, s)| at_sample(*s)).collect();
         let n = delta.len();
         let closed = self.period.is_some();
-        let neighbours = |k: usize| match closed {
-            true => Some(((k + n - 1) % n, (k + 1) % n)),
-            false => (k > 0 && k + 1 < n).then(|| (k - 1, k + 1)),
+        let neighbours = |k: usize| match (k, k + 1 == n) {
+            (0, _) => closed.then_some((n - 1, 1)),
+            (_, true) => closed.then_some((k - 1, 0)),
+            _ => Some((k - 1, k + 1)),
         };
-        let spread = (0..n).filter_map(|k| neighbours(k).map(|(a, b)| (delta[a] - 2.0 * delta[k] + delta[b]).abs()));
-        let d = spread.fold(0.0, f64::max);
+        // The contact itself: δ′ = 0 there (the equations hold the curves
+        // tangent), so where δ″ < 0 it is the local maximum, δ its value.
+        let h = self.samples[1].0 - self.samples[0].0;
+        let uc = m.contact_parameter(self.joint, self.profile.0, q).unwrap_or(f64::NAN);
+        let at_contact = along(uc);
+        let near_contact = |u: f64| {
+            let gap = self.period.map_or((u - uc).abs(), |p| (u - uc).rem_euclid(p).min((uc - u).rem_euclid(p)));
+            gap <= 1.5 * h && at_contact[2] < 0.0
+        };
         let mut worst: Option<(f64, f64)> = None;
         for k in 0..n {
-            let is_max = neighbours(k).is_none_or(|(a, b)| delta[k] >= delta[a] && delta[k] >= delta[b]);
-            if !is_max || delta[k] < -d {
+            // A sampled local maximum that may hide δ > 0 between its neighbours:
+            // δ_k + |Δ²δ_k| bounds the parabola through the three.
+            let (a, b) = neighbours(k).unwrap_or((k, k));
+            let (da, dk, db) = (delta[a], delta[k], delta[b]);
+            if dk < da || dk < db || dk + (da - 2.0 * dk + db).abs() < 0.0 {
                 continue;
             }
-            let (u, value) = self.refine(k, &along, delta[k]);
+            let (u, value) =
+                if near_contact(self.samples[k].0) { (uc, at_contact[0]) } else { self.refine(k, &along, delta[k]) };
             if worst.is_none_or(|w| value > w.1) {
                 worst = Some((u, value));
             }
