@@ -118,6 +118,31 @@ fn every_reference_of_the_document_resolves() {
     }
 }
 
+/// No schema of the generated document says `"items": false` (issue 49:
+/// valid 3.1, but openapi-python-client refuses the whole document on it —
+/// `BodyPoint`, a spring's end — and generates no client).
+#[test]
+fn no_schema_forbids_items_with_false() {
+    fn walk(v: &serde_json::Value, at: &str, out: &mut Vec<String>) {
+        match v {
+            serde_json::Value::Object(map) => {
+                if map.get("items") == Some(&serde_json::Value::Bool(false)) {
+                    out.push(at.to_string());
+                }
+                map.iter().for_each(|(k, v)| walk(v, &format!("{at}/{k}"), out));
+            }
+            serde_json::Value::Array(items) => {
+                items.iter().enumerate().for_each(|(k, v)| walk(v, &format!("{at}/{k}"), out))
+            }
+            _ => {}
+        }
+    }
+    let doc: serde_json::Value = serde_json::from_str(mechdyn::registry().openapi_json()).unwrap();
+    let mut found = Vec::new();
+    walk(&doc, "", &mut found);
+    assert!(found.is_empty(), "items: false at {found:?}");
+}
+
 /// The Dockerfile agrees with the code, checked without building it (CI
 /// builds and runs the image with podman: tests/api/container.rs): binary
 /// name, non-root user, listen port, health check, data volume.

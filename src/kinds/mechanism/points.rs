@@ -6,7 +6,7 @@ use serde::de::{self, Deserializer, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
 use std::fmt;
 use utoipa::openapi::RefOr;
-use utoipa::openapi::schema::{ArrayBuilder, ArrayItems, ObjectBuilder, OneOfBuilder, Schema, Type};
+use utoipa::openapi::schema::{ArrayBuilder, ObjectBuilder, OneOfBuilder, Schema, Type};
 use utoipa::{PartialSchema, ToSchema};
 
 /// A point: the name of a point of `points`, or coordinates [x, y] in m.
@@ -56,17 +56,22 @@ impl ToSchema for PointRef {}
 
 /// `[body, point]`, a body's name and one of its points (a spring's or a
 /// damper's end), as the document states it; read as `(String, PointRef)`.
+/// Its `items` (what may follow the two, which `maxItems` forbids) are
+/// either kind of entry rather than `false`: valid 3.1 either way, but
+/// openapi-python-client refuses `items: false` and with it the document.
 pub struct BodyPoint;
 
 impl PartialSchema for BodyPoint {
     fn schema() -> RefOr<Schema> {
         let body = ObjectBuilder::new().schema_type(Type::String).max_length(Some(NAME_MAX_LENGTH));
-        let point = OneOfBuilder::new()
-            .item(ObjectBuilder::new().schema_type(Type::String).max_length(Some(NAME_MAX_LENGTH)))
-            .item(coords_schema());
+        let point = || {
+            OneOfBuilder::new()
+                .item(ObjectBuilder::new().schema_type(Type::String).max_length(Some(NAME_MAX_LENGTH)))
+                .item(coords_schema())
+        };
         ArrayBuilder::new()
-            .prefix_items([Schema::from(body.description(Some("a body's name"))), point.into()])
-            .items(ArrayItems::False)
+            .prefix_items([Schema::from(body.description(Some("a body's name"))), point().into()])
+            .items(point())
             .min_items(Some(2))
             .max_items(Some(2))
             .description(Some("[body, point]: a body's name, and one of its points (a name, or [x, y] in m)"))
