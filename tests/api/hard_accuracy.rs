@@ -54,8 +54,10 @@ async fn a_stiff_spring_on_a_slider_estimates_the_travels_error() {
             "loads": [{"type": "spring", "a": ["ground", "S"], "b": ["slider", "G"], "stiffness": k, "free_length": 0.1}],
             "input": {"joint": "P", "start": a, "speed": 0}},
             "duration": 0.2, "samples": 11, "tolerance": tolerance});
-        let result = app.result("/v1/dynamics", &body).await;
-        let omega = (k / 1.0f64).sqrt();
+        let reply = app.post("/v1/dynamics", &body).await;
+        assert_eq!(reply.status, axum::http::StatusCode::CREATED, "{}", reply.text);
+        let (job, omega) = (reply.json(), (k / 1.0f64).sqrt());
+        let result = &job["result"];
         let samples = result["samples"].as_array().unwrap();
         let error = samples
             .iter()
@@ -66,6 +68,16 @@ async fn a_stiff_spring_on_a_slider_estimates_the_travels_error() {
             error > 0.0 && error <= estimate && estimate < 0.1 * a,
             "tol {tolerance}: error {error} m, estimated {estimate} m"
         );
+        // The job's units and table say metres for a slider's travel.
+        let id = job["id"].as_str().unwrap();
+        let values = app.get(&format!("/v1/jobs/{id}/values")).await.json();
+        let unit = |pointer: &str| {
+            values["values"].as_array().unwrap().iter().find(|v| v["pointer"] == pointer).unwrap()["unit"].clone()
+        };
+        let units = [unit("/accuracy/estimated_error"), unit("/samples/0/angle"), unit("/samples/0/speed")];
+        assert_eq!(units, [json!("m"), json!("m"), json!("m/s")]);
+        let table = app.get(&format!("/v1/jobs/{id}/result.csv")).await.text;
+        assert!(table.starts_with("t_s,angle_m,speed_m_s,acceleration_m_s2,slider_x_m"), "{table}");
     }
 }
 

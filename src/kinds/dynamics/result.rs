@@ -271,9 +271,15 @@ fn repeated(s: &DynamicsSolution) -> Msg {
 
 /// CSV of a stored dynamics result: one row per sample; for a mechanism
 /// also every body's position and every joint's reaction at the sample.
+/// The motion's columns carry its first input's unit: rad, or m where it
+/// is a length (a slider's travel, a contact's arc length).
 pub fn csv_table(result: &serde_json::Value) -> (Vec<String>, Vec<Vec<String>>) {
-    let columns =
-        [("t", "t_s"), ("angle", "angle_rad"), ("speed", "speed_rad_s"), ("acceleration", "acceleration_rad_s2")];
+    let columns = match result["machine"]["input_units"][0] == "m" {
+        true => [("t", "t_s"), ("angle", "angle_m"), ("speed", "speed_m_s"), ("acceleration", "acceleration_m_s2")],
+        false => {
+            [("t", "t_s"), ("angle", "angle_rad"), ("speed", "speed_rad_s"), ("acceleration", "acceleration_rad_s2")]
+        }
+    };
     let mut header: Vec<String> = columns.iter().map(|c| c.1.to_string()).collect();
     let samples: &[serde_json::Value] = result["samples"].as_array().map_or(&[], Vec::as_slice);
     let machine = result["machine"]["samples"].as_array().filter(|m| m.len() == samples.len());
