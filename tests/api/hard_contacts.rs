@@ -62,8 +62,8 @@ fn follower_steps(result: &Value) -> Vec<(f64, f64, Value)> {
 /// 0.04·cos ψ: at every step the face is on the support function to 1e-9 m
 /// (it used to sit up to 0.10 m below it, on the cam's far side, or 4.5 to
 /// 8.8 mm inside it without a word); where it passes from one lobe to the
-/// next the contact says `jumped` and a warning says where; nothing is
-/// said to cut, overlap or pull.
+/// next the contact says `jumped` (once per lobe in a turn: 3, 3 and 1) and
+/// a warning says where; nothing is said to cut, overlap or pull.
 #[tokio::test]
 async fn a_flat_face_rests_on_the_cams_support_function() {
     let app = TestApp::new().await;

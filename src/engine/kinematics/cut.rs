@@ -337,18 +337,16 @@ impl Watch {
     }
 
     /// Whether the disk's centre is inside the closed profile at q (the
-    /// samples' polygon, by its winding number).
+    /// samples' polygon, by the crossings of a ray from it: no
+    /// trigonometry at every position of a roller's sweep).
     fn centre_in_profile(&self, m: &Mechanism, q: &[f64]) -> bool {
         let Tool::Disk { c, .. } = self.shape else { return false };
         let c = self.to_profile(m, q)(c, false);
-        let n = self.samples.len();
-        let mut winding = 0.0;
-        for k in 0..n {
-            let (a, b) = (self.samples[k].1, self.samples[(k + 1) % n].1);
-            let (a, b) = ([a[0] - c[0], a[1] - c[1]], [b[0] - c[0], b[1] - c[1]]);
-            winding += (a[0] * b[1] - a[1] * b[0]).atan2(dot(a, b));
-        }
-        winding.abs() > 0.5 * TAU
+        let points = self.samples.iter().map(|(_, s)| *s);
+        let crosses = |(a, b): ([f64; 2], [f64; 2])| {
+            (a[1] > c[1]) != (b[1] > c[1]) && c[0] < a[0] + (c[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+        };
+        points.clone().zip(points.cycle().skip(1)).filter(|&e| crosses(e)).count() % 2 == 1
     }
 
     /// Moves the contact to the profile's parameter u: that column to u

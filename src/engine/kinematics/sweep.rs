@@ -104,9 +104,11 @@ pub fn sweep_each(
         if let Some(predicted) = &predicted {
             c.jumped.extend(jumps(m.n_body_coordinates(), (&jump_scale, &periods), [&base, predicted, &c.q]));
         }
-        c.jumped.extend(&settled.moved);
-        c.jumped.sort_unstable();
-        c.jumped.dedup();
+        if !settled.moved.is_empty() {
+            c.jumped.extend(&settled.moved);
+            c.jumped.sort_unstable();
+            c.jumped.dedup();
+        }
         c.cuts.clone_from(&settled.cut);
         // One input: g = dq/dφ and h = d²q/dφ² give q̇ = gω and q̈ = gα + hω²
         // (γ is quadratic in q̇), and they are the next step's predictor.
