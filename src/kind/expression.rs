@@ -40,6 +40,22 @@ pub fn fault_msg(f: &Fault) -> Msg {
     }
 }
 
+/// The number written with a decimal comma ("0,05") where a comma the
+/// expression could not read stands between two digits: what a Spanish
+/// sheet writes, to be said as such rather than as a stray comma.
+pub fn decimal_comma<'a>(src: &'a str, f: &Fault) -> Option<&'a str> {
+    if !matches!(f, Fault::AfterEnd(Tok::Op(',')) | Fault::Unexpected(Tok::Op(','))) {
+        return None;
+    }
+    let b = src.as_bytes();
+    let at = (1..b.len().saturating_sub(1))
+        .find(|&i| b[i] == b',' && b[i - 1].is_ascii_digit() && b[i + 1].is_ascii_digit())?;
+    let number = |c: u8| c.is_ascii_digit() || c == b'.' || c == b',';
+    let start = (0..at).rev().take_while(|&i| number(b[i])).last().unwrap_or(at);
+    let end = (at + 1..b.len()).take_while(|&i| number(b[i])).last().map_or(at + 1, |i| i + 1);
+    Some(&src[start..end])
+}
+
 fn token(t: &Tok) -> Msg {
     match t {
         Tok::Num(v) => Msg::new("expr-token-number").num("value", *v),

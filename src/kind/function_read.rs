@@ -105,7 +105,10 @@ impl Errors {
         match Expr::compile_with(src, variables, &self.constants, length, depth) {
             Ok(e) => Some(e),
             Err(e) => {
-                let why = super::expression::fault_msg(&e.fault);
+                let why = super::expression::decimal_comma(src, &e.fault).map_or_else(
+                    || super::expression::fault_msg(&e.fault),
+                    |n| Msg::new("expr-decimal-comma").arg("number", n),
+                );
                 let msg = Msg::new("function-parse").with("why", why).arg("position", e.position);
                 self.refuse(at, msg)
             }

@@ -5,7 +5,7 @@
 //! decimal points (the service's own answer, already checked against the
 //! cases elsewhere), so the comma must change nothing but the writing.
 
-use crate::helpers::{TestApp, request};
+use crate::helpers::{TestApp, request, template_request};
 use axum::http::StatusCode;
 use serde_json::json;
 
@@ -150,4 +150,24 @@ async fn every_text_answer_writes_decimal_commas() {
     let row = rows.records().next().unwrap().unwrap();
     assert_eq!(&row[0], "ana");
     assert!(row[3].contains(',') && !row[3].contains('.'), "relative error with a comma: {:?}", &row[3]);
+}
+
+/// A polar cam's radius typed as a Spanish sheet writes it, "0,05 +
+/// 0,006*cos(3*psi)": refused at the expression, naming the number with its
+/// decimal comma (not "an unexpected ','"), in Spanish; a comma between a
+/// function's arguments, max(0,5), still reads as two arguments.
+#[tokio::test]
+async fn a_decimal_comma_in_an_expression_is_named() {
+    let app = TestApp::new().await;
+    let mut body = template_request("cam-flat-follower");
+    body["mechanism"]["points"]["F"] = json!([0, 0.056]);
+    let curve = &mut body["mechanism"]["joints"][2]["curves"][0];
+    *curve = json!({"polar": {"center": "O", "zero": [0, 1], "radius": {"expr": "0,05 + 0,006*cos(3*psi)"}}});
+    let r = app.post("/v1/kinetostatics?lang=es", &body).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let error = &r.json()["errors"][0];
+    assert_eq!(error["pointer"], "/mechanism/joints/2/curves/0/polar/radius/expr");
+    assert!(error["message"].as_str().unwrap().contains("'0,05' está escrito con coma decimal"), "{error}");
+    body["mechanism"]["joints"][2]["curves"][0]["polar"]["radius"]["expr"] = json!("max(0,5)*0.01 + 0.006*cos(3*psi)");
+    assert_eq!(app.post("/v1/kinetostatics", &body).await.status, StatusCode::CREATED);
 }

@@ -277,6 +277,7 @@ expr-too-long = expression has { $length } characters; the maximum is { $max }
 expr-malformed-number = malformed number '{ $text }'
 expr-unexpected-character = unexpected character '{ $char }'
 expr-empty = empty expression
+expr-decimal-comma = '{ $number }' is written with a decimal comma: in an expression a number takes a point (0.05), and a comma parts a function's arguments
 expr-after-end = unexpected { $token } after the end of the expression
 expr-too-deep = expression nested deeper than { $max } levels
 expr-ends-early = expression ends where a value was expected

@@ -303,6 +303,7 @@ expr-too-long = la expresión tiene { $length } caracteres; el máximo es { $max
 expr-malformed-number = número mal escrito '{ $text }'
 expr-unexpected-character = carácter inesperado '{ $char }'
 expr-empty = expresión vacía
+expr-decimal-comma = '{ $number }' está escrito con coma decimal: en una expresión los números llevan punto (0.05), y la coma separa los argumentos de una función
 expr-after-end = { $token } inesperado tras el final de la expresión
 expr-too-deep = expresión anidada a más de { $max } niveles
 expr-ends-early = la expresión termina donde se esperaba un valor
