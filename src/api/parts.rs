@@ -34,7 +34,7 @@ use std::collections::HashMap;
     ),
     responses(
         (status = 200, description = "The value alone (text/plain), or JSON for an object or array or with `Accept: application/json`",
-            content((String = "text/plain", example = "353.52142732201156"), (serde_json::Value = "application/json"))),
+            content((String = "text/plain", example = "353.5214273220119"), (serde_json::Value = "application/json"))),
         (status = 400, description = "A unit of the wrong dimension, a part without a unit, or an unknown query parameter",
             body = Problem, content_type = "application/problem+json",
             example = json!({"type": "/problems/invalid-query", "title": "Invalid query parameters", "status": 400,
@@ -127,7 +127,7 @@ pub fn text_of(value: &Value, json: bool, decimal: Decimal) -> (&'static str, St
     ),
     responses(
         (status = 200, description = "Every scalar of the result",
-            content((Values = "application/json"), (String = "text/csv", example = "pointer,value,unit\n/inertia_exact,353.52142732201156,kg*m^2\n"))),
+            content((Values = "application/json"), (String = "text/csv", example = "pointer,value,unit\n/inertia_exact,353.5214273220119,kg*m^2\n"))),
         (status = 400, description = "An invalid query parameter", body = Problem, content_type = "application/problem+json"),
         ReadErrors,
     ))]

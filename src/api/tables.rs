@@ -202,7 +202,7 @@ pub fn convert(value: f64, unit: Option<&str>, target: &str, pointer: &str) -> R
     Ok(value * own_factor / factor)
 }
 
-/// A number as a spreadsheet reads it: shortest round-trip form (`353.52142732201156`, `1e-7`).
+/// A number as a spreadsheet reads it: shortest round-trip form (`353.5214273220119`, `1e-7`).
 pub fn number_text(x: f64) -> String {
     serde_json::Number::from_f64(x).map_or_else(String::new, |n| n.to_string())
 }

@@ -11,6 +11,7 @@
 //! MECHDYN_REQUIRE_PODMAN is set (CI sets both).
 
 use crate::crash::{free_port, http};
+use crate::readme::readme_job;
 use std::process::{Command, Output};
 use std::time::{Duration, Instant};
 
@@ -91,16 +92,6 @@ impl Drop for Container {
     }
 }
 
-/// The README's first request (its example, the flywheel of P.103) and the
-/// value it prints for `result/inertia_exact`.
-fn readme_job() -> (String, String) {
-    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
-    let start = readme.find("curl -s -X POST http://127.0.0.1:8080/v1/flywheel").unwrap();
-    let body = readme[start..].split("-d '").nth(1).unwrap().split('\'').next().unwrap();
-    let value = readme.split("/result/inertia_exact   # ").nth(1).unwrap().split(',').next().unwrap();
-    (body.to_string(), value.to_string())
-}
-
 #[test]
 fn the_image_serves_read_only_as_nonroot_and_keeps_its_jobs_on_the_volume() {
     let Ok(image) = std::env::var("MECHDYN_IMAGE") else {
@@ -139,14 +130,13 @@ fn the_image_serves_read_only_as_nonroot_and_keeps_its_jobs_on_the_volume() {
     let backup = first.exec(&["/app/mechdyn", "backup", "/data/copy.db"]);
     assert!(backup.status.success(), "{backup:?}");
 
-    // The README's job, with the README's value (case F1's closed form, 353.52142732201185 kg·m², to 1e-15).
-    let (body, value) = readme_job();
-    let closed_form = 353.521_427_322_011_85;
-    assert!((value.parse::<f64>().unwrap() - closed_form).abs() < 1e-15 * closed_form, "the README says {value}");
+    // The README's job, with the README's value (checked against case F1's closed form in readme.rs).
+    let (body, reads) = readme_job();
+    let value = &reads.iter().find(|(p, _)| p.ends_with("/inertia_exact")).unwrap().1;
     let (status, created) = http(first.port, "POST", "/v1/flywheel", &body).unwrap();
     assert_eq!(status, 201, "{created}");
     let id = serde_json::from_str::<serde_json::Value>(&created).unwrap()["id"].as_str().unwrap().to_string();
-    assert_eq!(first.get(&format!("/v1/jobs/{id}/result/inertia_exact")), value);
+    assert_eq!(&first.get(&format!("/v1/jobs/{id}/result/inertia_exact")), value);
     let stored = first.get(&format!("/v1/jobs/{id}"));
 
     // A restart of the same container, then a new container on the same volume.

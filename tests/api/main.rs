@@ -53,6 +53,7 @@ mod plots;
 mod postgres;
 mod prometheus;
 mod protocol;
+mod readme;
 mod robot_arm;
 mod rotor;
 mod schema;

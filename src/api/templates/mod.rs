@@ -162,7 +162,7 @@ pub async fn job(
             description = "The template's parameters, e.g. `F=1200&eps=0.03`")),
     responses(
         (status = 200, description = "The value alone (text/plain), or JSON for an object or array",
-            content((String = "text/plain", example = "353.52142732201156"), (serde_json::Value = "application/json"))),
+            content((String = "text/plain", example = "353.5214273220119"), (serde_json::Value = "application/json"))),
         (status = 400, description = "An unknown parameter, a value out of its range, or a unit of the wrong dimension",
             body = Problem, content_type = "application/problem+json"),
         (status = 422, description = "These parameters do not give a valid problem", body = Problem, content_type = "application/problem+json"),
