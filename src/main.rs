@@ -88,7 +88,7 @@ async fn run(cli: &Cli, kinds: mechdyn::api::kind::Registry) -> Result<(), Strin
     api::watchdog::spawn(state.clone());
     let runner = api::deferred::spawn(state.clone());
     let app = api::router(state.clone(), &settings);
-    let listener = tokio::net::TcpListener::bind(&cli.addr).await.map_err(|e| format!("bind {}: {e}", cli.addr))?;
+    let listener = api::serve::bind(&cli.addr).await.map_err(|e| format!("bind {}: {e}", cli.addr))?;
     let local = listener.local_addr().map_err(|e| e.to_string())?;
     let bounds = cli.bounds(api::serve::open_files());
     let operator = operator(cli, &state, bounds).await?;
@@ -130,7 +130,7 @@ async fn operator(
     bounds: api::serve::Bounds,
 ) -> Result<Option<api::serve::Operator>, String> {
     let Some(addr) = cli.operator() else { return Ok(None) };
-    let listener = match tokio::net::TcpListener::bind(addr).await {
+    let listener = match api::serve::bind(addr).await {
         Ok(l) => l,
         Err(e) if addr == mechdyn::config::DEFAULT_OPERATOR_ADDR => {
             tracing::warn!(addr, error = %e, "the operator's listener is not bound: /healthz, /readyz and /metrics only on the service's");
