@@ -138,11 +138,38 @@ pub async fn values(
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
 ) -> Result<Response, ApiError> {
     let q = query(q, &["format", "angles", "decimal"])?;
-    let angles = Angles::parse(q.get("angles")).map_err(|e| ApiError::BadQuery(vec![e]))?;
-    let decimal = Decimal::of(&q)?;
     super::read::format_checked(&q)?;
     let csv = wants(&headers, q.get("format"), "text/csv");
-    let (row, result, reserved) = result_tree(&state, &id).await?;
+    values_of(&state, &id, &q, csv).await
+}
+
+/// Every scalar of a job's result with its unit, as CSV `pointer,value,unit`
+/// (what `/values` answers with `Accept: text/csv`, at a path of its own for
+/// clients generated from the document, which read one content type an answer).
+#[utoipa::path(get, path = "/v1/jobs/{id}/values.csv", operation_id = "get_job_values_csv", tag = "jobs",
+    params(
+        ("id" = String, Path, description = "Job id"),
+        ("angles" = Option<AngleUnit>, Query, description = "`rad` (default) or `deg`"),
+        ("decimal" = Option<DecimalMark>, Query, description = "`point` (default) or `comma`: numbers with a decimal comma, columns separated by `;`"),
+    ),
+    responses(
+        (status = 200, description = "Every scalar of the result",
+            content((String = "text/csv", example = "pointer,value,unit\n/inertia_exact,353.5214273220119,kg*m^2\n"))),
+        (status = 400, description = "An invalid query parameter", body = Problem, content_type = "application/problem+json"),
+        ReadErrors,
+    ))]
+pub async fn values_csv(
+    State(state): State<AppState>,
+    Path(id): Path<String>,
+    q: Result<Query<HashMap<String, String>>, QueryRejection>,
+) -> Result<Response, ApiError> {
+    values_of(&state, &id, &query(q, &["angles", "decimal"])?, true).await
+}
+
+async fn values_of(state: &AppState, id: &str, q: &HashMap<String, String>, csv: bool) -> Result<Response, ApiError> {
+    let angles = Angles::parse(q.get("angles")).map_err(|e| ApiError::BadQuery(vec![e]))?;
+    let decimal = Decimal::of(q)?;
+    let (row, result, reserved) = result_tree(state, id).await?;
     let kind = state.kinds.find(&row.kind).ok_or_else(|| ApiError::Internal(format!("stored kind {}", row.kind)))?;
     let (mime, text) = tokio::task::spawn_blocking(move || {
         let mut values = tables::flatten(kind, &result);
