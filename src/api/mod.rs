@@ -11,6 +11,7 @@ pub mod create;
 pub mod deferred;
 pub mod examples;
 pub mod files;
+pub mod generators;
 pub mod idempotency;
 pub mod job;
 pub mod jobs;
@@ -139,6 +140,7 @@ fn routes(kinds: &kind::Registry) -> OpenApiRouter<AppState> {
         .routes(utoipa_axum::routes!(jobs::get, jobs::delete))
         .routes(utoipa_axum::routes!(jobs::csv))
         .routes(utoipa_axum::routes!(parts::values))
+        .routes(utoipa_axum::routes!(parts::values_csv))
         .routes(utoipa_axum::routes!(plots::list))
         .routes(svg_route(utoipa_axum::routes!(plots::plot)))
         .routes(utoipa_axum::routes!(templates::list, templates::create))
@@ -196,6 +198,7 @@ fn document(kinds: &kind::Registry) -> (serde_json::Value, bytes::Bytes) {
     let (_, doc) = routes(kinds).split_for_parts();
     let mut value = serde_json::to_value(&doc).unwrap_or_default();
     examples::add(&mut value, kinds);
+    generators::add(&mut value, kinds);
     let text = serde_json::to_string_pretty(&value).unwrap_or_default();
     (value, text.into())
 }
