@@ -27,6 +27,7 @@ mod four_bars;
 mod full_disk;
 mod fuzz;
 mod gears;
+mod generated;
 mod grading;
 mod group_commit;
 mod guide;

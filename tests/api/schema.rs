@@ -14,7 +14,7 @@ use serde_json::{Value, json};
 use std::process::Command;
 
 /// The kind each request of `library/requests/` is POSTed to.
-const LIBRARY_KINDS: &[(&str, &str)] = &[
+pub(crate) const LIBRARY_KINDS: &[(&str, &str)] = &[
     ("a01_pendulum", "/v1/dynamics"),
     ("a03_andrews_squeezer", "/v1/dynamics"),
     ("d1_scotch_yoke_machine", "/v1/dynamics"),
