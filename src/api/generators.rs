@@ -104,11 +104,17 @@ fn binary_bodies(doc: &mut Value) {
 fn post_parameters(doc: &mut Value) {
     let label = json!({
         "name": "label", "in": "query", "required": false,
-        "schema": {"type": "string", "minLength": 1, "maxLength": super::label::MAX_LABEL},
+        "schema": {
+            "type": "string", "minLength": 1, "maxLength": super::label::MAX_LABEL,
+            // No control character, nor a bidirectional embedding, override, isolate or mark.
+            "pattern": "^[^\\u0000-\\u001F\\u007F-\\u009F\\u061C\\u200E\\u200F\\u202A-\\u202E\\u2066-\\u2069]+$",
+        },
         "description": "A label stored with the job this POST creates (a student's id): `GET /v1/jobs?label=` lists them",
     });
     let key = json!({
-        "name": "Idempotency-Key", "in": "header", "required": false, "schema": {"type": "string"},
+        "name": "Idempotency-Key", "in": "header", "required": false,
+        // Visible ASCII, spaces inside only (the key is trimmed).
+        "schema": {"type": "string", "maxLength": super::idempotency::MAX_KEY, "pattern": "^[!-~](?:[ -~]*[!-~])?$"},
         "description": "A retry with the same key and body gets the first answer again (`Idempotent-Replayed: true`), \
                         nothing computed or stored twice; the same key with another body is a 422. Kept 7 days",
     });
