@@ -57,18 +57,23 @@ fn time(a: f64, b: f64) -> f64 {
 /// single bar of mass N kg across all the cranks' tips instead of N
 /// couplers — the same motion, with N − 1 redundant constraints.
 fn chain(one_coupler: bool) -> Value {
+    chain_of(N, one_coupler, OMEGA0)
+}
+
+/// [`chain`] of `n` parallelograms started at `omega0` rad/s.
+fn chain_of(n: usize, one_coupler: bool, omega0: f64) -> Value {
     let crank = |i: usize| format!("crank {i}");
     let mut bodies: Vec<Value> =
-        (0..=N).map(|i| json!({"name": crank(i), "mass": 1, "inertia": 1.0 / 12.0, "cg": [i, 0.5]})).collect();
-    let mut joints: Vec<Value> = (0..=N)
+        (0..=n).map(|i| json!({"name": crank(i), "mass": 1, "inertia": 1.0 / 12.0, "cg": [i, 0.5]})).collect();
+    let mut joints: Vec<Value> = (0..=n)
         .map(|i| json!({"name": format!("O{i}"), "type": "revolute", "bodies": ["ground", crank(i)], "at": [i, 0]}))
         .collect();
     let pin = |i: usize, coupler: &str| json!({"name": format!("A{i}"), "type": "revolute", "bodies": [crank(i), coupler], "at": [i, 1]});
     if one_coupler {
-        bodies.push(json!({"name": "coupler", "mass": N, "inertia": 1.0, "cg": [N as f64 / 2.0, 1]}));
-        joints.extend((0..=N).map(|i| pin(i, "coupler")));
+        bodies.push(json!({"name": "coupler", "mass": n, "inertia": 1.0, "cg": [n as f64 / 2.0, 1]}));
+        joints.extend((0..=n).map(|i| pin(i, "coupler")));
     } else {
-        for i in 0..N {
+        for i in 0..n {
             let name = format!("coupler {i}");
             bodies.push(json!({"name": name, "mass": 1, "inertia": 1.0 / 12.0, "cg": [i as f64 + 0.5, 1]}));
             joints.push(pin(i, &name));
@@ -80,7 +85,7 @@ fn chain(one_coupler: bool) -> Value {
     json!({
         "machine": {
             "mechanism": {"bodies": bodies, "joints": joints, "gravity": [0, -G]},
-            "input": {"joint": "O0", "reference": "90 deg", "start": "90 deg", "speed": OMEGA0},
+            "input": {"joint": "O0", "reference": "90 deg", "start": "90 deg", "speed": omega0},
             "reactions": false
         },
         "duration": 10,
@@ -131,7 +136,8 @@ async fn a02_parallelogram_chain_goes_through_its_singular_positions() {
             let flat = (1..=24).map(|k| time(PI / 2.0, k as f64 * PI));
             assert!(flat.clone().any(|f| (f - t).abs() < 1e-4), "{t} is not at a flat position");
         }
-        assert!(result["warnings"][0].as_str().unwrap().contains("singular position"), "{}", result["warnings"]);
+        let said = result["warnings"][0].as_str().unwrap();
+        assert!(said.contains("singular position") && said.contains("kept on its branch"), "{said}");
         // Gravity has a potential, so T + V is held, but only up to the first
         // singular position: not throughout, and after fewer than all steps.
         let accuracy = &result["accuracy"];
@@ -144,6 +150,31 @@ async fn a02_parallelogram_chain_goes_through_its_singular_positions() {
         let form = if one_coupler { "solved by LU" } else { "pivot sines fall from 1e-3 to 3e-4 held" };
         assert!(method.contains(form), "{method}");
     }
+}
+
+/// A hard case of the same family: IFToMM A02's chain of 10 (its published
+/// size) started upright at 0.5 rad/s comes out of a flat position folded
+/// (found and measured in issue 48; the integration is not mended yet). It
+/// is said, not shown as right: the warning names where the energy balance
+/// fails and the singular position passed before it; every sample before
+/// that time is the closed form's θ̇(θ) within 1e-6, and the motion does go
+/// wrong after it (θ̇ off by more than 1e-3 rad/s).
+#[tokio::test]
+async fn a_chain_that_folds_at_a_flat_position_is_said_to_have_left_its_branch() {
+    let (n, omega0) = (10.0, 0.5);
+    let speed = |theta: f64| {
+        let potential = |t: f64| ((n + 1.0) / 2.0 + n) * G * t.sin();
+        (omega0 * omega0 + 2.0 * (potential(PI / 2.0) - potential(theta)) / ((n + 1.0) / 3.0 + n)).sqrt()
+    };
+    let result = TestApp::new().await.result("/v1/dynamics", &chain_of(10, false, omega0)).await;
+    let said = result["warnings"][0].as_str().unwrap();
+    assert!(said.contains("may have left its branch"), "{}", result["warnings"]);
+    let from: f64 = said.split("fails from t = ").nth(1).unwrap().split(' ').next().unwrap().parse().unwrap();
+    let off = |s: &Value| (s["speed"].as_f64().unwrap() - speed(s["angle"].as_f64().unwrap())).abs();
+    let samples = result["samples"].as_array().unwrap();
+    let t = |s: &Value| s["t"].as_f64().unwrap();
+    assert!(samples.iter().filter(|s| t(s) < from).all(|s| off(s) <= 1e-6), "a sample before {from} s is off");
+    assert!(samples.iter().any(|s| t(s) >= from && off(s) > 1e-3), "nothing goes wrong after {from} s");
 }
 
 /// Seed 000's P.65 (example 2): a four-bar in dependent coordinates, here a

@@ -270,9 +270,8 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
             result.accuracy.energy_conserved = Some(s.energy_conserved);
             result.accuracy.energy_held_steps = Some(s.energy_held_steps);
             result.accuracy.method = result.notes.say("/accuracy/method", result::machine_method(&s));
-            if let Some(t) = s.near_singular.first() {
-                let near = Msg::new("warning-dynamics-near-singular").count("count", s.near_singular.len());
-                result.notes.warn(near.with("first", result::at_time(*t)));
+            if let Some(said) = result::singular(&s, p.tolerance) {
+                result.notes.warn(said);
             }
             if let Some(a) = &report.assembled {
                 result.notes.extend(a.warnings.iter().cloned());
