@@ -8,9 +8,9 @@
 //! - a body that is not JSON (a class's CSV) as `format: binary`, which
 //!   openapi-python-client sends as the bytes it is given (as a plain
 //!   string it generated a call that failed on its own argument);
-//! - the `?label=` and `Idempotency-Key` of every POST that creates a job (which the middleware
-//!   reads for any POST, [`super::label`] and [`super::idempotency`]), so a
-//!   generated call can send them;
+//! - the `?label=` and `Idempotency-Key` of every POST that creates a job
+//!   (the middleware reads them for any POST: [`super::label`],
+//!   [`super::idempotency`]), so that a generated call can send them;
 //! - a member named `d` under `patternProperties`: openapi-python-client's
 //!   `from_dict` keeps the member dict in a local `d`, which a member `d`
 //!   overwrote (its generated parser then failed on every rotor answer). The

@@ -192,8 +192,9 @@ fn svg_route(
 /// `/openapi.json` (and printed by `cargo run -- openapi`): the routes'
 /// operations and schemas, then what the registry adds ([`examples`]): every
 /// POST's 201 example computed by the engine, the units of every result's
-/// fields. Kept as JSON: utoipa's types cannot read back a schema that
-/// allows any value. [`kind::Registry::document`] makes it once.
+/// fields; and what client generators need ([`generators`]). Kept as JSON:
+/// utoipa's types cannot read back a schema that allows any value.
+/// [`kind::Registry::document`] makes it once.
 fn document(kinds: &kind::Registry) -> (serde_json::Value, bytes::Bytes) {
     let (_, doc) = routes(kinds).split_for_parts();
     let mut value = serde_json::to_value(&doc).unwrap_or_default();
