@@ -246,10 +246,19 @@ pub(super) fn singular(s: &MechanismSolution, tolerance: f64) -> Option<Msg> {
             Msg::new("warning-dynamics-branch-left")
                 .with("at", at_time(passed))
                 .with("t", at_time(x.t))
-                .num("residual", x.energy_residual)
+                .num("residual", three_figures(x.energy_residual))
                 .num("bound", bound)
         }
     })
+}
+
+/// x to three significant figures (a residual said in words).
+fn three_figures(x: f64) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return x;
+    }
+    let scale = 10f64.powi(2 - x.abs().log10().floor() as i32);
+    (x * scale).round() / scale
 }
 
 /// How a reduced machine's motion was integrated.
