@@ -279,8 +279,7 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
             let machine = MachineDynamics::new(&s, &p.mechanism, report);
             let contacts = machine.samples.iter().filter_map(|x| Some((x.t, x.contacts.as_deref()?)));
             result.notes.extend(contact_warnings(contacts, &p.mechanism, result::at_time, true));
-            let joint_names: Vec<String> = p.mechanism.joints.iter().map(|j| j.name.clone()).collect();
-            result.notes.extend(result::slipping(&s, &joint_names));
+            result.notes.extend(result::slipping(&s, &p.mechanism));
             result.machine = Some(machine);
             Ok(result)
         }

@@ -3,6 +3,8 @@
 use super::{IntegratorChoice, MachineDynamics};
 use crate::engine::dynamics::mechanism::MechanismSolution;
 use crate::engine::dynamics::{DynamicsSolution, EventKind, KEPT_BYTES, MAX_TURN_EVENTS, Stopped};
+use crate::engine::model::Mechanism;
+use crate::engine::variants::round_sig;
 use crate::i18n::Msg;
 use crate::kind::notes::Notes;
 use crate::kind::{list, names};
@@ -246,19 +248,10 @@ pub(super) fn singular(s: &MechanismSolution, tolerance: f64) -> Option<Msg> {
             Msg::new("warning-dynamics-branch-left")
                 .with("at", at_time(passed))
                 .with("t", at_time(x.t))
-                .num("residual", three_figures(x.energy_residual))
+                .num("residual", round_sig(x.energy_residual, 3))
                 .num("bound", bound)
         }
     })
-}
-
-/// x to three significant figures (a residual said in words).
-fn three_figures(x: f64) -> f64 {
-    if x == 0.0 || !x.is_finite() {
-        return x;
-    }
-    let scale = 10f64.powi(2 - x.abs().log10().floor() as i32);
-    (x * scale).round() / scale
 }
 
 /// How a reduced machine's motion was integrated.
@@ -309,12 +302,11 @@ fn repeated(s: &DynamicsSolution) -> Msg {
 /// The motion's columns carry its first input's unit: rad, or m where it
 /// is a length (a slider's travel, a contact's arc length).
 pub fn csv_table(result: &serde_json::Value) -> (Vec<String>, Vec<Vec<String>>) {
-    let columns = match result["machine"]["input_units"][0] == "m" {
-        true => [("t", "t_s"), ("angle", "angle_m"), ("speed", "speed_m_s"), ("acceleration", "acceleration_m_s2")],
-        false => {
-            [("t", "t_s"), ("angle", "angle_rad"), ("speed", "speed_rad_s"), ("acceleration", "acceleration_rad_s2")]
-        }
+    let (angle, speed, acceleration) = match result["machine"]["input_units"][0] == "m" {
+        true => ("angle_m", "speed_m_s", "acceleration_m_s2"),
+        false => ("angle_rad", "speed_rad_s", "acceleration_rad_s2"),
     };
+    let columns = [("t", "t_s"), ("angle", angle), ("speed", speed), ("acceleration", acceleration)];
     let mut header: Vec<String> = columns.iter().map(|c| c.1.to_string()).collect();
     let samples: &[serde_json::Value] = result["samples"].as_array().map_or(&[], Vec::as_slice);
     let machine = result["machine"]["samples"].as_array().filter(|m| m.len() == samples.len());
@@ -344,7 +336,7 @@ pub fn csv_table(result: &serde_json::Value) -> (Vec<String>, Vec<Vec<String>>) 
 /// The intervals in which each rolling contact with friction slips, from
 /// the run's events (a slip from the start counted from t = 0, one still
 /// on at the end closed there): a warning per contact.
-pub(super) fn slipping(s: &MechanismSolution, joint_names: &[String]) -> Vec<Msg> {
+pub(super) fn slipping(s: &MechanismSolution, m: &Mechanism) -> Vec<Msg> {
     use std::collections::BTreeMap;
     let mut open: BTreeMap<usize, f64> = s.slipping_from_start.iter().map(|&j| (j, 0.0)).collect();
     let mut spans: BTreeMap<usize, Vec<(f64, f64)>> = BTreeMap::new();
@@ -370,7 +362,7 @@ pub(super) fn slipping(s: &MechanismSolution, joint_names: &[String]) -> Vec<Msg
     (spans.into_iter())
         .map(|(j, list)| {
             Msg::new("warning-contact-slipping")
-                .arg("name", &joint_names[j])
+                .arg("name", &m.joints[j].name)
                 .list("at", list.iter().map(span).collect())
         })
         .collect()

@@ -148,6 +148,10 @@ impl ReactionDto {
     }
 }
 
+/// The conditions [`contact_warnings`] follows for each contact, in the order of
+/// its slots: separates, slips, off the end, overlaps, jumped, cut.
+const CONDITIONS: usize = 6;
+
 /// The warnings a sweep's contacts call for, each over the runs of
 /// consecutive positions where it holds (`at` the position, shown by
 /// `show`): a negative normal force (the bodies would separate there: a
@@ -169,8 +173,8 @@ pub fn contact_warnings<'a>(
         .map(|(k, j)| (k, j.name.as_str()))
         .collect();
     // Per contact joint and condition, the runs [from, to] of positions.
-    let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new(); 6 * joints.len()];
-    let mut open = vec![false; 6 * joints.len()];
+    let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new(); CONDITIONS * joints.len()];
+    let mut open = vec![false; CONDITIONS * joints.len()];
     for (at, contacts) in steps {
         for (i, &(k, name)) in joints.iter().enumerate() {
             let c = contacts.iter().find(|c| &*c.joint == name);
@@ -189,7 +193,7 @@ pub fn contact_warnings<'a>(
                 c.is_some_and(|c| c.jumped),
                 c.is_some_and(|c| c.penetration.is_some()),
             ];
-            for (slot, holds) in conditions.into_iter().enumerate().map(|(n, h)| (6 * i + n, h)) {
+            for (slot, holds) in conditions.into_iter().enumerate().map(|(n, h)| (CONDITIONS * i + n, h)) {
                 match (holds, open[slot]) {
                     (true, true) => runs[slot].last_mut().expect("an open run").1 = at,
                     (true, false) => runs[slot].push((at, at)),
@@ -208,7 +212,7 @@ pub fn contact_warnings<'a>(
     };
     let mut out = Vec::new();
     for (i, &(k, name)) in joints.iter().enumerate() {
-        let said = |id, slot: usize| Msg::new(id).arg("name", name).list("at", span(&runs[6 * i + slot]));
+        let said = |id, slot: usize| Msg::new(id).arg("name", name).list("at", span(&runs[CONDITIONS * i + slot]));
         // In the order a reader needs them: where the results are not a contact's first.
         let conditions = [
             (2, "warning-contact-off-end"),
@@ -218,11 +222,11 @@ pub fn contact_warnings<'a>(
             (0, "warning-contact-separates"),
         ];
         for (slot, id) in conditions {
-            if !runs[6 * i + slot].is_empty() {
+            if !runs[CONDITIONS * i + slot].is_empty() {
                 out.push(said(id, slot));
             }
         }
-        if let (false, Some(f)) = (runs[6 * i + 1].is_empty(), m.joints[k].friction) {
+        if let (false, Some(f)) = (runs[CONDITIONS * i + 1].is_empty(), m.joints[k].friction) {
             out.push(said("warning-contact-slips", 1).num("mu", f.mu));
         }
     }
