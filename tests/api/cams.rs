@@ -149,6 +149,47 @@ async fn the_smallest_base_meets_its_pressure_angle_and_errors_point_at_fields()
     assert_eq!(app.pointers("/v1/cams", &bad).await, ["/follower", "/follower", "/follower", "/program/0/lift"]);
 }
 
+/// Sizing where the closed form's radius is not the answer, and where it
+/// is for an oscillating roller (`engine::cam::least`), checked against
+/// the cam's own geometry at the radius found and 1 % under it:
+/// - a 40 mm roller for 60°: the pressure angle allows a base radius of 0
+///   (d₀ = r_r), at which the roller undercuts its pitch curve; the radius
+///   found is where the profile's least convex radius of curvature reaches
+///   0 (to 1e-9 m), its pressure angle under 60°, and 1 % less undercuts;
+/// - an oscillating roller (pivot 150 mm, arm 100 mm, 20° of swing) for
+///   30°: its largest pressure angle is 30° at the radius found (1e-9
+///   rad), over it 1 % under.
+#[tokio::test]
+async fn a_size_the_pressure_angle_alone_cannot_give_is_searched_and_an_arm_s_is_exact() {
+    let app = TestApp::new().await;
+    let mut big = json!({
+        "follower": {"type": "roller", "roller_radius": "40 mm"},
+        "program": [{"to": "60 deg", "law": "cycloidal", "lift": "20 mm"}, {"to": "180 deg", "law": "dwell"},
+                    {"to": "240 deg", "law": "cycloidal", "lift": 0}, {"to": "360 deg", "law": "dwell"}],
+        "size": {"max_pressure_angle": "60 deg"}, "speed": 10
+    });
+    let r = cam(&app, &big).await;
+    let base = r["summary"]["base_radius"].as_f64().unwrap();
+    assert!(base > 1e-3 && r["summary"]["undercut"] == false, "{}", r["summary"]);
+    near(&r["summary"]["min_curvature_radius"]["value"], 0.0, 1e-9, "ρ_min at the smallest base");
+    assert!(r["summary"]["max_pressure_angle"]["value"].as_f64().unwrap() < PI / 3.0);
+    big.as_object_mut().unwrap().remove("size");
+    big["base_radius"] = json!(0.99 * base);
+    assert_eq!(cam(&app, &big).await["summary"]["undercut"], true);
+    let mut arm = json!({
+        "follower": {"type": "roller", "motion": "oscillating", "roller_radius": "10 mm", "pivot": "150 mm", "arm": "100 mm"},
+        "program": [{"to": "90 deg", "law": "cycloidal", "lift": "20 deg"}, {"to": "180 deg", "law": "dwell"},
+                    {"to": "270 deg", "law": "cycloidal", "lift": 0}, {"to": "360 deg", "law": "dwell"}],
+        "size": {"max_pressure_angle": "30 deg"}, "speed": 10
+    });
+    let r = cam(&app, &arm).await;
+    let base = r["summary"]["base_radius"].as_f64().unwrap();
+    near(&r["summary"]["max_pressure_angle"]["value"], PI / 6.0, 1e-9, "an arm's φ_max at the smallest base");
+    arm.as_object_mut().unwrap().remove("size");
+    arm["base_radius"] = json!(0.99 * base);
+    assert!(cam(&app, &arm).await["summary"]["max_pressure_angle"]["value"].as_f64().unwrap() > PI / 6.0 + 1e-6);
+}
+
 /// The Python that has `ezdxf` (a real DXF reader, from PyPI), or None.
 fn ezdxf_python() -> Option<String> {
     let venv = format!("{}/.venv/bin/python", env!("CARGO_MANIFEST_DIR"));

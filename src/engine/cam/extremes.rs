@@ -33,16 +33,27 @@ pub struct At {
 /// `breaks` (angles in [0, 2π), the pieces' starts) in [`PER_PIECE`]
 /// parts, the whole at least [`LEAST`] angles, sorted, in [0, 2π).
 pub fn scan(breaks: &[f64]) -> Vec<f64> {
-    let mut starts: Vec<f64> = breaks.iter().map(|b| b.rem_euclid(TAU)).chain([0.0]).collect();
-    starts.sort_by(f64::total_cmp);
-    starts.dedup_by(|a, b| (*a - *b).abs() <= 1e-12);
-    let per = PER_PIECE.max(LEAST.div_ceil(starts.len()));
+    let pieces = starts(breaks).len();
+    self::pieces(breaks, PER_PIECE.max(LEAST.div_ceil(pieces)))
+}
+
+/// The angles of each piece between consecutive `breaks` in `per` parts, sorted, in [0, 2π).
+pub fn pieces(breaks: &[f64], per: usize) -> Vec<f64> {
+    let starts = starts(breaks);
     let mut out = Vec::with_capacity(starts.len() * per);
     for (k, &a) in starts.iter().enumerate() {
         let b = starts.get(k + 1).copied().unwrap_or(TAU);
         out.extend((0..per).map(|j| a + (b - a) * j as f64 / per as f64));
     }
     out
+}
+
+/// The pieces' starts: `breaks` and 0 in [0, 2π), sorted, each once.
+fn starts(breaks: &[f64]) -> Vec<f64> {
+    let mut starts: Vec<f64> = breaks.iter().map(|b| b.rem_euclid(TAU)).chain([0.0]).collect();
+    starts.sort_by(f64::total_cmp);
+    starts.dedup_by(|a, b| (*a - *b).abs() <= 1e-12);
+    starts
 }
 
 /// The largest of `f` over the turn (None where `f` has no value: skipped),

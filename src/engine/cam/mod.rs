@@ -10,6 +10,7 @@
 pub mod design;
 pub mod extremes;
 pub mod laws;
+pub mod least;
 pub mod sizing;
 
 pub use laws::Law;

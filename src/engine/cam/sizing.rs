@@ -3,6 +3,7 @@
 //! the job's budget read as they go.
 
 use super::design::{Cam, CamError, Lift, Sample};
+use super::least::Least;
 use crate::engine::numeric::roots::brent;
 use crate::engine::{Deadline, EngineError, Progress};
 use std::f64::consts::TAU;
@@ -29,14 +30,18 @@ pub fn turn(cam: &Cam, lifts: &[(f64, [f64; 4])]) -> Result<Vec<Sample>, CamErro
 /// The smallest base radius the follower can start from whose `excess`
 /// is at most 0 — a test of the cam with that radius (whose turn at the
 /// samples can be made), continuous and decreasing in the radius, such as
-/// its largest pressure angle less the largest allowed: the first of 64
-/// radii over the range [`Cam::base_range`] that meets it, then the root
-/// of the excess in the cell below it by
-/// Brent's method to 1e-12 of the radius (the radius returned meets it);
-/// None where none does. The `deadline` is read before each radius is tried.
+/// its largest pressure angle less the largest allowed. First the
+/// `closed` form's radius for the least radius the follower can start
+/// from ([`least`](super::least)), kept where it passes the test; where it
+/// fails, or where there is no closed form, the first of 64 radii from it
+/// to the top of the range [`Cam::base_range`] that meets the test, then
+/// the root of the excess in the cell below it by Brent's method to 1e-12
+/// of the radius (the radius returned meets it); None where none does.
+/// The `deadline` is read before each radius is tried.
 pub fn smallest_base(
     cam: Cam,
     lifts: &[(f64, [f64; 4])],
+    closed: impl Fn(f64) -> Least,
     excess: impl Fn(&Cam) -> f64,
     deadline: &Deadline,
 ) -> Result<Option<f64>, EngineError> {
@@ -50,6 +55,11 @@ pub fn smallest_base(
         Ok(if turn(&cam, lifts).is_ok() { excess(&cam) } else { f64::INFINITY })
     };
     let (lo, hi) = cam.base_range(scale);
+    let lo = match closed(lo) {
+        Least::Unmet => return Ok(None),
+        Least::Base(base) if over(base)? <= 0.0 => return Ok(Some(base)),
+        Least::Base(base) | Least::Search(base) => base.max(lo),
+    };
     let grid = |k: usize| lo + (hi - lo) * k as f64 / 64.0;
     // The first of the grid's radii that meets it (an oscillating arm's
     // reach may fail again near the range's top: searched from below).

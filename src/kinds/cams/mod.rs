@@ -18,7 +18,8 @@ pub use result::CamResult;
 
 use crate::engine::Deadline;
 use crate::engine::cam::design::{Cam, CamError};
-use crate::engine::cam::extremes::{self, scan};
+use crate::engine::cam::extremes::{self, Extremes, scan};
+use crate::engine::cam::least::least_base;
 use crate::engine::cam::sizing::{lifts, smallest_base, turn};
 use crate::i18n::Msg;
 use crate::kind::limits::Limits;
@@ -101,13 +102,13 @@ impl Kind for Cams {
         let problem = validated(unknown, request.to_problem(limits))?;
         let lift = result::lift_of(&problem);
         let lifts = lifts(&lift, problem.samples, &deadline).map_err(|e| engine_failure(e, "/program"))?;
-        let base = match problem.size {
-            None => problem.cam.base,
+        let (base, known) = match problem.size {
+            None => (problem.cam.base, None),
             Some(size) => sized(&problem, &lifts, size, &deadline)?,
         };
         let cam = Cam { base, ..problem.cam };
         let samples = turn(&cam, &lifts).map_err(|e| refused(&e))?;
-        Ok(result::result(&problem, &cam, &samples))
+        Ok(result::result(&problem, &cam, &samples, known))
     }
 
     /// The samples, one row each.
@@ -146,28 +147,34 @@ impl Kind for Cams {
 }
 
 /// The smallest base radius meeting `size` ([largest pressure angle, smallest
-/// radius of curvature]) without undercut.
+/// radius of curvature]) without undercut, with the extremes of the cam
+/// tested last (those of the radius returned, for its summary).
 fn sized(
     p: &Problem,
     lifts: &[(f64, [f64; 4])],
     [angle, rho]: [Option<f64>; 2],
     deadline: &Deadline,
-) -> Result<f64, ApiError> {
-    let (lift, grid) = (result::lift_of(p), scan(&result::breaks(p)));
+) -> Result<(f64, Option<Extremes>), ApiError> {
+    let (lift, breaks) = (result::lift_of(p), result::breaks(p));
+    let grid = scan(&breaks);
     // How far the cam is from meeting the size (≤ 0: met): the largest of
     // its pressure angle over the allowed, the radius of curvature under
     // the least allowed, and under 0 (an undercut), each relative.
+    let last = std::cell::Cell::new(None);
     let excess = |cam: &Cam| {
         let e = extremes::of(cam, &lift, &grid);
+        last.set(Some((cam.base, e)));
         let rho_min = e.min_curvature_radius.map_or(f64::INFINITY, |m| m.value);
         let over_angle = angle.map_or(f64::NEG_INFINITY, |a| e.max_pressure_angle.value / a - 1.0);
         let under_rho = rho.map_or(f64::NEG_INFINITY, |r| 1.0 - rho_min / r);
         let undercut = -rho_min / cam.base.max(f64::MIN_POSITIVE);
         over_angle.max(under_rho).max(undercut)
     };
-    smallest_base(p.cam, lifts, excess, deadline)
+    let closed = |lo: f64| least_base(&p.cam, &lift, &breaks, angle, rho, lo);
+    let base = smallest_base(p.cam, lifts, closed, excess, deadline)
         .map_err(|e| engine_failure(e, "/size"))?
-        .ok_or_else(|| ApiError::Invalid(vec![FieldError::said("/size", Msg::new("cam-no-base"))]))
+        .ok_or_else(|| ApiError::Invalid(vec![FieldError::said("/size", Msg::new("cam-no-base"))]))?;
+    Ok((base, last.get().filter(|(tested, _)| *tested == base).map(|(_, e)| e)))
 }
 
 /// A cam that cannot be made, at its field.

@@ -2,7 +2,7 @@
 
 use super::request::{Motion, Problem};
 use crate::engine::cam::design::{Cam, Follower, Guide, Loads, Sample};
-use crate::engine::cam::extremes::{self, At, scan};
+use crate::engine::cam::extremes::{self, At, Extremes, scan};
 use crate::engine::function::{Function, Side};
 use crate::i18n::Msg;
 use crate::kind::notes::Notes;
@@ -130,8 +130,9 @@ pub fn lift_of(p: &Problem) -> impl Fn(f64) -> [f64; 4] + '_ {
     }
 }
 
-/// The result from the turn's samples of the designed cam.
-pub fn result(p: &Problem, cam: &Cam, turn: &[Sample]) -> CamResult {
+/// The result from the turn's samples of the designed cam, and its
+/// extremes where they are `known` already (sizing tested the cam).
+pub fn result(p: &Problem, cam: &Cam, turn: &[Sample], known: Option<Extremes>) -> CamResult {
     let w = p.speed;
     let external =
         |theta: f64| p.loads.as_ref().and_then(|(_, f)| f.as_ref()).map_or(0.0, |f| f.eval(theta, Side::Right));
@@ -163,7 +164,7 @@ pub fn result(p: &Problem, cam: &Cam, turn: &[Sample]) -> CamResult {
         })
         .collect();
     let mut notes = Notes::default();
-    let summary = summary(p, cam, &mut notes);
+    let summary = summary(p, cam, known, &mut notes);
     let segments = match &p.motion {
         Motion::Program(program, names) => {
             // A jump of the jerk keeps the acceleration continuous: only
@@ -204,9 +205,9 @@ fn peaks(s: &crate::engine::cam::Segment, name: &str, w: f64) -> SegmentPeaks {
     }
 }
 
-fn summary(p: &Problem, cam: &Cam, notes: &mut Notes) -> CamSummary {
+fn summary(p: &Problem, cam: &Cam, known: Option<Extremes>, notes: &mut Notes) -> CamSummary {
     let (lift, grid) = (lift_of(p), scan(&breaks(p)));
-    let e = extremes::of(cam, &lift, &grid);
+    let e = known.unwrap_or_else(|| extremes::of(cam, &lift, &grid));
     let at = |a: At| AtAngle { value: a.value, theta: a.theta };
     let max_angle = at(e.max_pressure_angle);
     let min_rho = e.min_curvature_radius.map_or(AtAngle { value: f64::INFINITY, theta: 0.0 }, at);
