@@ -221,6 +221,7 @@ pub fn section() -> String {
             }
         }
     }
+    text.push_str(&stored(&service));
     let (_, peak) = service.memory();
     let log = service.log();
     let count = |needle: &str| log.lines().filter(|l| l.contains(needle)).count();
@@ -256,6 +257,41 @@ pub fn section() -> String {
              ~4 000–6 000/s, p99 8–21 ms.",
             if met { "met" } else { "missed" }
         );
+    }
+    text
+}
+
+/// A group of stored jobs: kind, compressed, count, bytes served, bytes stored.
+type Held = (String, bool, i64, i64, i64);
+
+/// What the database holds of each kind's jobs after the runs: the bytes
+/// served (request and result, the `bytes` column) against the bytes stored
+/// (the request, the result's text and its compressed bytes).
+fn stored(service: &Service) -> String {
+    let url = format!("sqlite://{}/jobs.db", service.dir.path().display());
+    let sql = "SELECT kind, result_zstd IS NOT NULL AS packed, COUNT(*), SUM(bytes), SUM(length(CAST(request AS BLOB)) \
+               + length(CAST(result AS BLOB)) + COALESCE(length(result_zstd), 0)) FROM jobs GROUP BY kind, packed \
+               ORDER BY kind, packed";
+    let rows: Result<Vec<Held>, sqlx::Error> =
+        tokio::runtime::Builder::new_current_thread().enable_all().build().expect("runtime").block_on(async {
+            let pool = sqlx::SqlitePool::connect(&url).await?;
+            sqlx::query_as(sql).fetch_all(&pool).await
+        });
+    let mut text = String::from(
+        "\nWhat the database holds per job after these runs (a result of 4 KB or more is stored zstd-compressed, \
+         level 1, `store/packed.rs`):\n\n| kind | result | jobs | bytes served per job | bytes stored per job | stored / served |\n|---|---|---|---|---|---|\n",
+    );
+    match rows {
+        Ok(rows) => {
+            for (kind, packed, n, served, held) in rows {
+                let (served, held) = (served as f64 / n as f64, held as f64 / n as f64);
+                let how = if packed { "compressed" } else { "text" };
+                let _ = writeln!(text, "| {kind} | {how} | {n} | {served:.0} | {held:.0} | {:.2} |", held / served);
+            }
+        }
+        Err(e) => {
+            let _ = writeln!(text, "| the database was not read: {e} | | | | | |");
+        }
     }
     text
 }

@@ -76,7 +76,7 @@ impl Store {
             let q = sqlx::query_as(sql).bind(first).bind(last);
             filter.bind(q).fetch_all(pool).await?
         });
-        Ok(rows.into_iter().map(JobRow::from).collect())
+        rows.into_iter().map(JobRow::try_from).collect()
     }
 }
 

@@ -29,6 +29,7 @@ mod health;
 mod held;
 mod idempotency;
 mod list;
+mod packed;
 mod queue;
 mod retention;
 mod url;
@@ -153,13 +154,20 @@ pub(crate) struct Row {
     #[sqlx(try_from = "String")]
     status: Status,
     problem: Option<String>,
+    result_zstd: Option<Vec<u8>>,
 }
 
-impl From<Row> for JobRow {
-    fn from(r: Row) -> Self {
-        let Row { seq, id, kind, created_at, request, result, engine_us, engine_version, label, status, problem } = r;
-        let (request, result, problem) = (request.into(), result.into(), problem.map(Bytes::from));
-        Self { seq, id, kind, created_at, request, result, engine_us, engine_version, label, status, problem }
+/// A row's result expanded where it was stored compressed ([`packed`]).
+impl TryFrom<Row> for JobRow {
+    type Error = StoreError;
+
+    fn try_from(r: Row) -> Result<Self, StoreError> {
+        let Row {
+            seq, id, kind, created_at, request, result, engine_us, engine_version, label, status, problem, ..
+        } = r;
+        let result = packed::unpack(result, r.result_zstd)?;
+        let (request, problem) = (request.into(), problem.map(Bytes::from));
+        Ok(Self { seq, id, kind, created_at, request, result, engine_us, engine_version, label, status, problem })
     }
 }
 
@@ -199,8 +207,9 @@ impl NewJob {
     }
 }
 
-/// A job handed to the writer, with where to send its seq.
-type Pending = (NewJob, oneshot::Sender<Result<i64, StoreError>>);
+/// A job handed to the writer, with its result compressed where it is
+/// stored so ([`packed`]), and where to send its seq.
+type Pending = ((NewJob, Option<Vec<u8>>), oneshot::Sender<Result<i64, StoreError>>);
 
 /// How the database is opened.
 #[derive(Clone, Debug)]
@@ -269,7 +278,9 @@ impl Store {
     pub async fn insert(&self, job: NewJob) -> Result<JobRow, StoreError> {
         let stopped = || StoreError::Unavailable("the store's writer has stopped".into());
         let (reply, stored) = oneshot::channel();
-        self.writer.send((job.clone(), reply)).await.map_err(|_| stopped())?;
+        // Compressed here, on the caller's task, not on the one writer's.
+        let zstd = packed::pack(&job.result).zstd;
+        self.writer.send(((job.clone(), zstd), reply)).await.map_err(|_| stopped())?;
         let seq = stored.await.map_err(|_| stopped())??;
         Ok(job.stored(seq))
     }
@@ -313,7 +324,7 @@ impl Store {
         }
         let row: Option<Row> =
             on_pool!(&self.db, pool => sqlx::query_as(SELECT_ROW).bind(id).fetch_optional(pool).await?);
-        Ok(row.map(JobRow::from))
+        row.map(JobRow::try_from).transpose()
     }
 
     /// The newest `limit` jobs without their request and result (a page's list).
@@ -384,7 +395,7 @@ pub(crate) fn findable(key: &str) -> bool {
 /// The columns of a [`Row`].
 macro_rules! row_columns {
     () => {
-        "seq, id, kind, created_at, request, result, engine_us, engine_version, label, status, problem"
+        "seq, id, kind, created_at, request, result, engine_us, engine_version, label, status, problem, result_zstd"
     };
 }
 pub(crate) use row_columns;

@@ -149,17 +149,17 @@ impl Store {
         bytes: i64,
     ) -> Result<Option<JobRow>, StoreError> {
         let sql = concat!(
-            "UPDATE jobs SET status = 'done', result = $1, engine_us = $2, bytes = $3, claimed_by = NULL, \
-             claimed_until = NULL WHERE id = $4 AND claimed_by = $5 AND status = 'running' RETURNING ",
+            "UPDATE jobs SET status = 'done', result = $1, result_zstd = $2, engine_us = $3, bytes = $4, claimed_by = NULL, \
+             claimed_until = NULL WHERE id = $5 AND claimed_by = $6 AND status = 'running' RETURNING ",
             row_columns!()
         );
-        let result = std::str::from_utf8(result).unwrap_or("null");
+        let packed = super::packed::pack(result);
         let rows: Result<Vec<Row>, sqlx::Error> = on_pool!(&self.db, pool => {
-            let q = sqlx::query_as(sql).bind(result).bind(engine_us).bind(bytes).bind(id).bind(by);
-            q.fetch_all(pool).await
+            let q = sqlx::query_as(sql).bind(packed.text).bind(packed.zstd.as_deref()).bind(engine_us).bind(bytes);
+            q.bind(id).bind(by).fetch_all(pool).await
         });
         let rows = self.noted(rows.map_err(StoreError::from), result.len(), |r| !r.is_empty())?;
-        Ok(rows.into_iter().next().map(JobRow::from))
+        rows.into_iter().next().map(JobRow::try_from).transpose()
     }
 
     /// Stores why job `id` claimed by `by` failed (`problem`, problem+json

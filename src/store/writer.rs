@@ -34,9 +34,9 @@ const MAX_BATCH_BYTES: usize = 32 << 20;
 pub const QUEUE: usize = 4096;
 
 const COLUMNS: &str = "INSERT INTO jobs (id, kind, created_at, request, result, engine_us, engine_version, bytes, \
-                       request_key, label) VALUES ";
+                       request_key, label, result_zstd) VALUES ";
 /// The values of one job.
-const ROW: usize = 10;
+const ROW: usize = 11;
 
 pub async fn write_batches(db: Db, mut queue: mpsc::Receiver<Pending>, commits: Arc<AtomicU64>, writes: Arc<Writes>) {
     let mut waiting = Vec::with_capacity(MAX_BATCH);
@@ -59,7 +59,7 @@ pub async fn write_batches(db: Db, mut queue: mpsc::Receiver<Pending>, commits: 
 /// How many of the first jobs fit in [`MAX_BATCH_BYTES`] (one at least).
 fn within_bytes(jobs: &[Pending]) -> usize {
     let mut total = 0;
-    let fit = jobs.iter().take_while(|(j, _)| {
+    let fit = jobs.iter().take_while(|((j, _), _)| {
         total += j.bytes();
         total <= MAX_BATCH_BYTES
     });
@@ -88,7 +88,7 @@ async fn write(db: &Db, batch: Vec<Pending>, commits: &AtomicU64, writes: &Write
         Err(e) => {
             tracing::warn!(error = %e, jobs = batch.len(), "jobs not stored");
             // The smallest job of the batch: readiness probes with a write that size.
-            writes.failed(batch.iter().map(|(j, _)| j.bytes()).min().unwrap_or(0), &e);
+            writes.failed(batch.iter().map(|((j, _), _)| j.bytes()).min().unwrap_or(0), &e);
             for (_, reply) in batch {
                 let _ = reply.send(Err(e.clone()));
             }
@@ -110,19 +110,21 @@ fn placeholders(rows: usize) -> String {
 }
 
 /// Binds a job's values, in [`COLUMNS`]' order, to a query of either backend.
+/// A result compressed ([`super::packed`]) is bound as empty text and its bytes.
 macro_rules! bind_job {
-    ($query:expr, $j:expr) => {
+    ($query:expr, ($j:expr, $zstd:expr)) => {
         $query
             .bind(&$j.id)
             .bind(&$j.kind)
             .bind(&$j.created_at)
             .bind(text(&$j.request))
-            .bind(text(&$j.result))
+            .bind(if $zstd.is_some() { "" } else { text(&$j.result) })
             .bind($j.engine_us)
             .bind(&$j.engine_version)
             .bind($j.bytes() as i64)
             .bind(&$j.request_key)
             .bind(&$j.label)
+            .bind($zstd.as_deref())
     };
 }
 
@@ -133,15 +135,15 @@ async fn insert_together(db: &Db, batch: &[Pending]) -> Result<Vec<i64>, sqlx::E
     // Safe: the text is the fixed columns and one placeholder group per job; every value is bound.
     let returned: Vec<(String, i64)> = on_pool!(db, pool => {
         let mut query = sqlx::query_as(sqlx::AssertSqlSafe(sql));
-        for (j, _) in batch {
-            query = bind_job!(query, j);
+        for ((j, zstd), _) in batch {
+            query = bind_job!(query, (j, zstd));
         }
         query.fetch_all(pool).await?
     });
     // RETURNING gives the rows in no promised order: match them by id.
     let seqs: std::collections::HashMap<String, i64> = returned.into_iter().collect();
     let missing = || sqlx::Error::Protocol("a stored job was not returned".into());
-    batch.iter().map(|(j, _)| seqs.get(&j.id).copied().ok_or_else(missing)).collect()
+    batch.iter().map(|((j, _), _)| seqs.get(&j.id).copied().ok_or_else(missing)).collect()
 }
 
 /// One transaction, row by row: each job's seq, or why its own insert failed.
@@ -156,11 +158,11 @@ async fn insert_all(db: &Db, batch: &[Pending]) -> Result<Vec<Result<i64, StoreE
         let mut held = Held::acquire(pool).await?;
         sqlx::query(begin).execute(held.conn()).await?;
         let mut seqs = Vec::with_capacity(batch.len());
-        for (j, _) in batch {
+        for ((j, zstd), _) in batch {
             if savepoint {
                 sqlx::query("SAVEPOINT job").execute(held.conn()).await?;
             }
-            let query = bind_job!(sqlx::query_scalar(sqlx::AssertSqlSafe(sql.clone())), j);
+            let query = bind_job!(sqlx::query_scalar(sqlx::AssertSqlSafe(sql.clone())), (j, zstd));
             match query.fetch_all(held.conn()).await {
                 Ok(seq) => seqs.push(seq.first().copied().ok_or_else(|| StoreError::Unavailable("no seq returned".into()))),
                 // A row the schema or the database refuses fails alone; anything else ends the transaction.

@@ -193,3 +193,19 @@ pub fn template_request(id: &str) -> Value {
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     serde_json::from_str::<Value>(&text).unwrap()["request"].clone()
 }
+
+/// `bytes` letters and digits that do not compress (an xorshift's), `seed`
+/// apart: the stored results of storage tests whose premise is the bytes a
+/// job takes on disk (the store compresses results of 4 KB and more).
+pub fn noise(bytes: usize, seed: u64) -> String {
+    const ALPHABET: &[u8] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+    let mut x = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+    (0..bytes)
+        .map(|_| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            ALPHABET[(x % ALPHABET.len() as u64) as usize] as char
+        })
+        .collect()
+}

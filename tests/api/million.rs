@@ -14,7 +14,7 @@ use std::time::{Duration, Instant};
 
 /// A job of `kind` labelled `label`, its result `bytes` long.
 pub fn job(k: usize, kind: &str, label: Option<&str>, bytes: usize) -> NewJob {
-    let result = format!("{{\"x\":\"{}\"}}", "a".repeat(bytes.saturating_sub(8)));
+    let result = format!("{{\"x\":\"{}\"}}", crate::helpers::noise(bytes.saturating_sub(8), k as u64));
     NewJob {
         id: format!("00000000-0000-4000-8000-{k:012}"),
         kind: kind.into(),
