@@ -155,11 +155,8 @@ mod tests {
     #[test]
     fn the_closed_forms_radius_is_the_least_that_meets_the_bound() {
         let p = program();
-        let lift = |t: f64| {
-            let s = p.eval(t);
-            [s[0], s[1], s[2], s[3]]
-        };
-        let breaks: Vec<f64> = p.segments().iter().map(|s| s.start).collect();
+        let lift = |t: f64| p.lift(t);
+        let breaks = p.starts();
         let phi = 30f64.to_radians();
         let roller = |guide, clockwise| Cam { follower: Follower::Roller(0.01), guide, base: 0.0, clockwise };
         let translating = |offset| Guide::Translating { offset };
@@ -195,11 +192,8 @@ mod tests {
     #[test]
     fn the_peers_roller_has_the_searched_radius() {
         let p = program();
-        let lift = |t: f64| {
-            let s = p.eval(t);
-            [s[0], s[1], s[2], s[3]]
-        };
-        let breaks: Vec<f64> = p.segments().iter().map(|s| s.start).collect();
+        let lift = |t: f64| p.lift(t);
+        let breaks = p.starts();
         let cam = Cam {
             follower: Follower::Roller(0.01),
             guide: Guide::Translating { offset: 0.0 },
@@ -219,7 +213,7 @@ mod tests {
             let s = p.eval(t);
             [s[0] * 40.0, s[1] * 40.0, s[2] * 40.0, s[3] * 40.0]
         };
-        let breaks: Vec<f64> = p.segments().iter().map(|s| s.start).collect();
+        let breaks = p.starts();
         let cam = Cam {
             follower: Follower::Roller(0.01),
             guide: Guide::Oscillating { pivot: 0.15, arm: 0.1 },

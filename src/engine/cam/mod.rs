@@ -121,6 +121,17 @@ impl Program {
         self.segments[self.segment_at(theta)].eval(theta)
     }
 
+    /// The lift [s, s′, s″, s‴] at θ, as a cam reads it ([`design::Lift`]).
+    pub fn lift(&self, theta: f64) -> [f64; 4] {
+        let [s, s1, s2, s3, _] = self.eval(theta);
+        [s, s1, s2, s3]
+    }
+
+    /// The angles its segments start at.
+    pub fn starts(&self) -> Vec<f64> {
+        self.segments.iter().map(|s| s.start).collect()
+    }
+
     /// Where the fundamental law of cam design breaks: at each joint
     /// between segments (the last one's end meeting the first's start),
     /// the lowest derivative among s′, s″, s‴ that jumps by more than 1e-9

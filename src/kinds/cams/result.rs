@@ -122,10 +122,7 @@ impl crate::kind::JobResult for CamResult {
 /// The lift of a problem as the engine reads it.
 pub fn lift_of(p: &Problem) -> impl Fn(f64) -> [f64; 4] + '_ {
     move |theta| match &p.motion {
-        Motion::Program(program, _) => {
-            let s = program.eval(theta);
-            [s[0], s[1], s[2], s[3]]
-        }
+        Motion::Program(program, _) => program.lift(theta),
         Motion::Function(f) => f.as_ref().each_ref().map(|f| f.eval(theta.rem_euclid(TAU), Side::Right)),
     }
 }
@@ -253,7 +250,7 @@ fn summary(p: &Problem, cam: &Cam, known: Option<Extremes>, notes: &mut Notes) -
 /// lift Function's pieces'.
 pub fn breaks(p: &Problem) -> Vec<f64> {
     match &p.motion {
-        Motion::Program(program, _) => program.segments().iter().map(|s| s.start).collect(),
+        Motion::Program(program, _) => program.starts(),
         Motion::Function(f) => f.iter().flat_map(|f| f.breakpoints(TAU)).collect(),
     }
 }
