@@ -158,7 +158,8 @@ async fn the_smallest_base_meets_its_pressure_angle_and_errors_point_at_fields()
 ///   0 (to 1e-9 m), its pressure angle under 60°, and 1 % less undercuts;
 /// - an oscillating roller (pivot 150 mm, arm 100 mm, 20° of swing) for
 ///   30°: its largest pressure angle is 30° at the radius found (1e-9
-///   rad), over it 1 % under.
+///   rad), over it 1 % under; a swing of 60° held to 10° has no radius
+///   the arm can reach, and the refusal says so of the arm.
 #[tokio::test]
 async fn a_size_the_pressure_angle_alone_cannot_give_is_searched_and_an_arm_s_is_exact() {
     let app = TestApp::new().await;
@@ -185,9 +186,16 @@ async fn a_size_the_pressure_angle_alone_cannot_give_is_searched_and_an_arm_s_is
     let r = cam(&app, &arm).await;
     let base = r["summary"]["base_radius"].as_f64().unwrap();
     near(&r["summary"]["max_pressure_angle"]["value"], PI / 6.0, 1e-9, "an arm's φ_max at the smallest base");
+    let mut steep = arm.clone();
     arm.as_object_mut().unwrap().remove("size");
     arm["base_radius"] = json!(0.99 * base);
     assert!(cam(&app, &arm).await["summary"]["max_pressure_angle"]["value"].as_f64().unwrap() > PI / 6.0 + 1e-6);
+    // A swing of 60° held to 10°: no radius the arm can reach serves (the closed form's Unmet), said of the arm.
+    (steep["program"][0]["lift"], steep["size"]["max_pressure_angle"]) = (json!("60 deg"), json!("10 deg"));
+    let r = app.post("/v1/cams?lang=es", &steep).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert_eq!(r.json()["errors"][0]["pointer"], "/size");
+    assert!(r.text.contains("alargue el brazo"), "{}", r.text);
 }
 
 /// The Python that has `ezdxf` (a real DXF reader, from PyPI), or None.

@@ -167,6 +167,7 @@ cam-base-or-size = give "base_radius" or "size", not both
 cam-base-required = give the cam's "base_radius", or "size" to find the smallest
 cam-size = give "max_pressure_angle" and/or "min_curvature_radius"
 cam-no-base = no base radius up to 100 times the lift meets it: ask for a larger pressure angle or a smaller radius of curvature
+cam-no-base-arm = no base radius the arm can start its follower from meets it: ask for a larger pressure angle or a smaller radius of curvature, or move the pivot or lengthen the arm
 cam-speed = must be greater than 0 (the sense is "direction")
 cam-roller-radius = a roller follower needs its "roller_radius"
 cam-roller-only = applies to a roller follower only

@@ -181,6 +181,7 @@ cam-base-or-size = dé "base_radius" o "size", no ambos
 cam-base-required = dé el radio del círculo base "base_radius" de la leva, o "size" para hallar el menor
 cam-size = dé "max_pressure_angle" y/o "min_curvature_radius"
 cam-no-base = ningún radio del círculo base de hasta 100 veces la elevación lo cumple: pida un ángulo de presión mayor o un radio de curvatura menor
+cam-no-base-arm = ningún radio del círculo base desde el que el brazo pueda arrancar el seguidor lo cumple: pida un ángulo de presión mayor o un radio de curvatura menor, o mueva el pivote o alargue el brazo
 cam-speed = debe ser mayor que 0 (el sentido lo da "direction")
 cam-roller-radius = un seguidor de rodillo necesita su radio "roller_radius"
 cam-roller-only = solo se aplica a un seguidor de rodillo

@@ -17,7 +17,7 @@ pub use request::{CamFollowerDto, CamFollowerMotion, CamFollowerType, CamProgram
 pub use result::CamResult;
 
 use crate::engine::Deadline;
-use crate::engine::cam::design::{Cam, CamError};
+use crate::engine::cam::design::{Cam, CamError, Guide};
 use crate::engine::cam::extremes::{self, Extremes, scan};
 use crate::engine::cam::least::least_base;
 use crate::engine::cam::sizing::{lifts, smallest_base, turn};
@@ -173,7 +173,11 @@ fn sized(
     let closed = |lo: f64| least_base(&p.cam, &lift, &breaks, angle, rho, lo);
     let base = smallest_base(p.cam, lifts, closed, excess, deadline)
         .map_err(|e| engine_failure(e, "/size"))?
-        .ok_or_else(|| ApiError::Invalid(vec![FieldError::said("/size", Msg::new("cam-no-base"))]))?;
+        .ok_or_else(|| {
+            // A translating follower is tried up to 100 times its lift; an oscillating one wherever its arm reaches.
+            let id = if matches!(p.cam.guide, Guide::Oscillating { .. }) { "cam-no-base-arm" } else { "cam-no-base" };
+            ApiError::Invalid(vec![FieldError::said("/size", Msg::new(id))])
+        })?;
     Ok((base, last.get().filter(|(tested, _)| *tested == base).map(|(_, e)| e)))
 }
 
