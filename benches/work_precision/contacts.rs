@@ -7,9 +7,7 @@
 use crate::http::library;
 use crate::kinematics::best;
 use crate::{run_peer, timed};
-use mechdyn::engine::cam::design::{Cam, Follower, Guide};
 use mechdyn::engine::cam::least::{Least, least_base};
-use mechdyn::engine::cam::{Law, Program, Segment};
 use mechdyn::kind::{Kind, Limits};
 use mechdyn::kinds::cams::{CamRequest, Cams};
 use mechdyn::kinds::kinetostatics::{Kinetostatics, KinetostaticsRequest};
@@ -122,22 +120,10 @@ kinetostatics` of a flat face on the polar cam ρ = 0.05 + 0.0001·cos 3ψ over 
 /// (engine) against the peer's `get_base_circle`, and the whole job sized
 /// against the same job given the radius it finds.
 fn sizing(limits: &Limits) -> String {
-    let p = Program::new(vec![
-        segment(Law::Dwell, 0.0, 60.0, 0.0),
-        segment(Law::Cycloidal, 60.0, 90.0, 0.0),
-        segment(Law::Dwell, 150.0, 60.0, 0.02),
-        segment(Law::Cycloidal, 210.0, 90.0, 0.02),
-        segment(Law::Dwell, 300.0, 60.0, 0.0),
-    ])
-    .expect("program");
+    let p = mechdyn::engine::cam::sample::rise_dwell_fall();
     let lift = |t: f64| p.lift(t);
     let breaks = p.starts();
-    let cam = Cam {
-        follower: Follower::Roller(0.01),
-        guide: Guide::Translating { offset: 0.0 },
-        base: 0.0,
-        clockwise: false,
-    };
+    let cam = mechdyn::engine::cam::sample::roller();
     let phi = 30f64.to_radians();
     let closed = || least_base(&cam, &lift, &breaks, Some(phi), None, 0.0);
     let t_closed = best(201, || {
@@ -180,12 +166,6 @@ fn sizing(limits: &Limits) -> String {
         t_sized * 1e3,
         t_given * 1e3,
     )
-}
-
-/// A segment of the peer's program from `start` over `span` (degrees), lifting from `from` (m) to the other end of 20 mm.
-fn segment(law: Law, start: f64, span: f64, from: f64) -> Segment {
-    let to = if law == Law::Dwell { from } else { 0.02 - from };
-    Segment { law, start: start.to_radians(), span: span.to_radians(), from, to }
 }
 
 /// The rolling pendulum of tests/api/contact.rs over 10 s.

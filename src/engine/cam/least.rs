@@ -119,27 +119,6 @@ fn oscillating(lift: Lift, most: Most, phi: f64, [a, l, r]: [f64; 3], lo: f64) -
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::engine::cam::{Law, Program, Segment};
-
-    /// The benchmark's program (bench/peers/cam_mechanism.py): dwell 60°,
-    /// cycloidal rise of 20 mm over 90°, dwell 60°, cycloidal fall over 90°, dwell.
-    fn program() -> Program {
-        let seg = |law, start: f64, span: f64, from, to| Segment {
-            law,
-            start: start.to_radians(),
-            span: span.to_radians(),
-            from,
-            to,
-        };
-        Program::new(vec![
-            seg(Law::Dwell, 0.0, 60.0, 0.0, 0.0),
-            seg(Law::Cycloidal, 60.0, 90.0, 0.0, 0.02),
-            seg(Law::Dwell, 150.0, 60.0, 0.02, 0.02),
-            seg(Law::Cycloidal, 210.0, 90.0, 0.02, 0.0),
-            seg(Law::Dwell, 300.0, 60.0, 0.0, 0.0),
-        ])
-        .unwrap()
-    }
 
     /// The cam's own geometry ([`Cam::at`]: the pitch curve's normal, not
     /// the closed form) at `base`: its largest |φ| and least convex radius
@@ -154,7 +133,7 @@ mod tests {
     /// and 1e-7 less misses it — the least radius, whatever the formula.
     #[test]
     fn the_closed_forms_radius_is_the_least_that_meets_the_bound() {
-        let p = program();
+        let p = crate::engine::cam::sample::rise_dwell_fall();
         let lift = |t: f64| p.lift(t);
         let breaks = p.starts();
         let phi = 30f64.to_radians();
@@ -191,15 +170,10 @@ mod tests {
     /// peer `mechanism` prints 25.018888 mm on its own grid.
     #[test]
     fn the_peers_roller_has_the_searched_radius() {
-        let p = program();
+        let p = crate::engine::cam::sample::rise_dwell_fall();
         let lift = |t: f64| p.lift(t);
         let breaks = p.starts();
-        let cam = Cam {
-            follower: Follower::Roller(0.01),
-            guide: Guide::Translating { offset: 0.0 },
-            base: 0.0,
-            clockwise: false,
-        };
+        let cam = crate::engine::cam::sample::roller();
         let found = least_base(&cam, &lift, &breaks, Some(30f64.to_radians()), None, 0.0);
         let Least::Base(base) = found else { panic!("{found:?}") };
         assert!((base - 0.0250188906006).abs() < 1e-12, "{base}");
@@ -208,7 +182,7 @@ mod tests {
     /// An arm too short for the angle anywhere: none (|c| > m at the rise).
     #[test]
     fn an_oscillating_roller_that_no_radius_serves_is_unmet() {
-        let p = program();
+        let p = crate::engine::cam::sample::rise_dwell_fall();
         let lift = |t: f64| {
             let s = p.eval(t);
             [s[0] * 40.0, s[1] * 40.0, s[2] * 40.0, s[3] * 40.0]

@@ -11,6 +11,7 @@ pub mod design;
 pub mod extremes;
 pub mod laws;
 pub mod least;
+pub mod sample;
 pub mod sizing;
 
 pub use laws::Law;
