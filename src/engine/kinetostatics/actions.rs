@@ -7,7 +7,7 @@
 
 use super::actuators::Actuated;
 use super::loads::{applied_forces_into, point_motion};
-use super::{ContactState, Motion, Outputs, Reaction, Step, friction, mass_times};
+use super::{ContactState, Motion, Outputs, Reaction, Step, friction};
 use crate::engine::kinematics::{Configuration, solve_linear};
 use crate::engine::mobility::Mobility;
 use crate::engine::model::{
@@ -26,6 +26,22 @@ pub(super) struct Scratch {
     pub offsets: Vec<usize>,
     /// J_a, where an input's effort acts at another joint ([`Actuated`]).
     pub actuated: Option<Actuated>,
+    /// Joint friction: the moving joints' units, and per unit a_k, y_k and
+    /// the reactions y_k gives; λ₀ and the driving actions of a y_k.
+    pub units: Vec<friction::Unit>,
+    pub per_unit: Vec<PerUnit>,
+    pub lambda0: Vec<f64>,
+    pub driving: Vec<f64>,
+    /// M q̈ − Q kept while a y_k is solved.
+    pub qv_scratch: Vec<f64>,
+}
+
+/// One moving joint's friction per unit: a_k, y_k (Φ_qᵀ y_k = a_k) and the reactions R(y_k).
+#[derive(Default)]
+pub(super) struct PerUnit {
+    a: Vec<f64>,
+    y: Vec<f64>,
+    reactions: Vec<Reaction>,
 }
 
 /// The actions at the regular positions of one sweep.
@@ -102,9 +118,15 @@ impl Actions<'_> {
             });
         }
         applied_forces_into(m, self.loads, (&c.q, &c.trig), &c.qd, phi, [inputs[0][1], 0.0], &mut s.qv);
-        out.friction_iterations = with_friction(m, c, s, (k, phi), self.deadline)?;
         s.inertial.clear();
         s.inertial.extend(c.qdd.iter().zip(&s.qv).enumerate().map(|(i, (a, q))| a * m.mass_of(i) - q));
+        let with = outputs.reactions.then_some(&mobility.indeterminate_joints[..]);
+        let frictional = friction::present(m);
+        if frictional {
+            let indeterminate = with.unwrap_or(&[]);
+            out.friction_iterations =
+                with_friction(m, c, s, indeterminate, (k, phi), self.deadline, (&mut out.driving, &mut out.reactions))?;
+        }
         virtual_power(m, c, &s.inertial, s.actuated.as_ref(), &mut out.driving_virtual_power);
         let g = c.g.as_deref().filter(|_| outputs.reduced);
         out.reduced_inertia = g.map(|g| g.iter().enumerate().map(|(i, v)| m.mass_of(i) * v * v).sum::<f64>());
@@ -119,10 +141,10 @@ impl Actions<'_> {
             shares
         });
         if outputs.reactions || m.drivers.len() != 1 {
-            let with = outputs.reactions.then_some(&mobility.indeterminate_joints[..]);
-            multipliers(m, c, s, with, (k, phi), (&mut out.driving, &mut out.reactions))?;
-            if out.friction_iterations > 0 {
-                friction::add_to(m, c, &mut out.reactions);
+            if !frictional {
+                multipliers(m, c, s, with, (k, phi), (&mut out.driving, &mut out.reactions))?;
+            } else if !outputs.reactions {
+                out.reactions.clear();
             }
             if outputs.reactions {
                 let states = out.reactions.iter().filter(|r| r.determinate);
@@ -137,6 +159,8 @@ impl Actions<'_> {
                 }));
             }
         } else {
+            out.driving.clear();
+            out.reactions.clear();
             out.driving.push(out.driving_virtual_power.first().copied().unwrap_or(f64::NAN));
         }
         Ok(())
@@ -173,34 +197,154 @@ fn virtual_power(m: &Mechanism, c: &Configuration, inertial: &[f64], actuated: O
     }
 }
 
-/// Adds the joints' friction forces to Q (`s.qv`), iterated to a fixed
-/// point with the reactions: the iterations (0 without friction).
+/// Moving joints with friction up to which λ is made linear in their
+/// magnitudes (a solve each, then a fixed point over scalars); with more,
+/// each pass of the fixed point is one solve for all of them.
+const COUPLED_UNITS: usize = 4;
+
+/// Adds the joints' friction to Q (`s.qv`) and takes it from M q̈ − Q
+/// (`s.inertial`), with the driving actions and every reaction (each with
+/// its friction) into `out` ([`friction`]): the fixed point's passes.
 fn with_friction(
     m: &Mechanism,
     c: &Configuration,
     s: &mut Scratch,
-    (step, input): (usize, f64),
+    indeterminate: &[usize],
+    at: (usize, f64),
     deadline: &Deadline,
+    out: (&mut Vec<f64>, &mut Vec<Reaction>),
 ) -> Result<usize, EngineError> {
-    if !friction::present(m) {
-        return Ok(0);
+    let scale = c.qdd.iter().enumerate().map(|(i, a)| (a * m.mass_of(i)).abs());
+    let tol = 1e-13 * scale.chain(s.qv.iter().map(|q| q.abs())).fold(f64::MIN_POSITIVE, f64::max);
+    // λ₀ and the reactions of the loads alone; a_k of each moving joint with friction.
+    multipliers(m, c, s, Some(&[]), at, (&mut *out.0, &mut *out.1))?;
+    std::mem::swap(&mut s.lambda0, &mut s.lambda);
+    let (mut units, mut per) = (std::mem::take(&mut s.units), std::mem::take(&mut s.per_unit));
+    friction::units(m, c, &mut units);
+    per.resize_with(units.len(), Default::default);
+    for (unit, p) in units.iter().zip(per.iter_mut()) {
+        p.a.clear();
+        p.a.resize(s.qv.len(), 0.0);
+        unit.add_generalized(m, c, 1.0, &mut p.a);
     }
-    let q_applied = DVector::from_column_slice(&s.qv);
-    let mq = mass_times(m, &c.qdd);
-    let scale = q_applied.amax().max(mq.amax()).max(f64::MIN_POSITIVE);
-    let mut qf = DVector::zeros(q_applied.len());
+    let coupled = units.len() <= COUPLED_UNITS;
+    let f = if coupled {
+        linear(m, c, s, (&units, &mut per), &*out.1, (tol, deadline), at)
+    } else {
+        iterated(m, c, s, (&units, &per), &*out.1, (tol, deadline), at)
+    };
+    let result = f.and_then(|(f, passes)| {
+        for (p, f) in per.iter().zip(&f) {
+            s.qv.iter_mut().zip(&p.a).for_each(|(q, a)| *q += f * a);
+            s.inertial.iter_mut().zip(&p.a).for_each(|(q, a)| *q -= f * a);
+        }
+        if coupled {
+            // λ = λ₀ + Σ f_k y_k.
+            s.lambda.clone_from(&s.lambda0);
+            for (p, f) in per.iter().zip(&f) {
+                s.lambda.iter_mut().zip(&p.y).for_each(|(l, y)| *l += f * y);
+            }
+            read_out(m, c, s, Some(indeterminate), (&mut *out.0, &mut *out.1));
+        } else {
+            multipliers(m, c, s, Some(indeterminate), at, (&mut *out.0, &mut *out.1))?;
+        }
+        for (unit, f) in units.iter().zip(&f) {
+            unit.add_to(*f, &mut out.1[unit.joint]);
+        }
+        Ok(passes)
+    });
+    (s.units, s.per_unit) = (units, per);
+    result
+}
+
+/// The magnitudes with λ linear in them: y_k and R(y_k) solved once per
+/// joint, then f_k = g_k(R_k(λ₀) + Σ_j f_j R_k(y_j)) over scalars.
+fn linear(
+    m: &Mechanism,
+    c: &Configuration,
+    s: &mut Scratch,
+    (units, per): (&[friction::Unit], &mut [PerUnit]),
+    loads: &[Reaction],
+    (tol, deadline): (f64, &Deadline),
+    (step, input): (usize, f64),
+) -> Result<(Vec<f64>, usize), EngineError> {
+    std::mem::swap(&mut s.inertial, &mut s.qv_scratch);
+    let mut solved = Ok(());
+    for p in per.iter_mut() {
+        solved = solved.and_then(|()| deadline.check(|| Progress::Friction { step })).and_then(|()| {
+            s.inertial.clear();
+            s.inertial.extend(p.a.iter().map(|a| -a));
+            let mut driving = std::mem::take(&mut s.driving);
+            let solved = multipliers(m, c, s, Some(&[]), (step, input), (&mut driving, &mut p.reactions));
+            s.driving = driving;
+            p.y.clone_from(&s.lambda);
+            solved
+        });
+    }
+    std::mem::swap(&mut s.inertial, &mut s.qv_scratch);
+    solved?;
+    fixed_point(per, (tol, deadline), (step, input), |f, next| {
+        for (k, unit) in units.iter().enumerate() {
+            let mut r = loads[unit.joint];
+            for (p, f) in per.iter().zip(f) {
+                let y = &p.reactions[unit.joint];
+                (r.fx, r.fy, r.moment) = (r.fx + f * y.fx, r.fy + f * y.fy, r.moment + f * y.moment);
+                r.ends = r.ends.zip(y.ends).map(|([a, b], [c, d])| [a + f * c, b + f * d]);
+            }
+            next[k] = unit.magnitude(&r);
+        }
+        Ok(())
+    })
+}
+
+/// The magnitudes where each pass solves for λ with the last pass's
+/// friction (the first is the loads' alone, solved already).
+fn iterated(
+    m: &Mechanism,
+    c: &Configuration,
+    s: &mut Scratch,
+    (units, per): (&[friction::Unit], &[PerUnit]),
+    loads: &[Reaction],
+    (tol, deadline): (f64, &Deadline),
+    at: (usize, f64),
+) -> Result<(Vec<f64>, usize), EngineError> {
+    let inertial = s.inertial.clone();
     let (mut driving, mut reactions) = (Vec::new(), Vec::new());
-    for iteration in 1..=friction::MAX_ITERATIONS {
+    let found = fixed_point(per, (tol, deadline), at, |f, next| {
+        let solved = if f.iter().all(|f| *f == 0.0) {
+            loads
+        } else {
+            s.inertial.clone_from(&inertial);
+            for (p, f) in per.iter().zip(f) {
+                s.inertial.iter_mut().zip(&p.a).for_each(|(q, a)| *q -= f * a);
+            }
+            multipliers(m, c, s, Some(&[]), at, (&mut driving, &mut reactions))?;
+            &reactions[..]
+        };
+        units.iter().zip(next.iter_mut()).for_each(|(unit, next)| *next = unit.magnitude(&solved[unit.joint]));
+        Ok(())
+    });
+    s.inertial = inertial;
+    found
+}
+
+/// f from 0 by `pass` (g(f) into its second argument) until no f_k·|a_k|∞
+/// changes by more than `tol`: f and the passes.
+fn fixed_point(
+    per: &[PerUnit],
+    (tol, deadline): (f64, &Deadline),
+    (step, input): (usize, f64),
+    mut pass: impl FnMut(&[f64], &mut [f64]) -> Result<(), EngineError>,
+) -> Result<(Vec<f64>, usize), EngineError> {
+    let sizes: Vec<f64> = per.iter().map(|p| p.a.iter().fold(0.0f64, |a, v| a.max(v.abs()))).collect();
+    let (mut f, mut next) = (vec![0.0; per.len()], vec![0.0; per.len()]);
+    for passes in 1..=friction::MAX_ITERATIONS {
         deadline.check(|| Progress::Friction { step })?;
-        s.inertial.clear();
-        s.inertial.extend((&mq - &q_applied - &qf).iter());
-        multipliers(m, c, s, Some(&[]), (step, input), (&mut driving, &mut reactions))?;
-        let next = friction::forces(m, c, &reactions);
-        let change = (&next - &qf).amax();
-        qf = next;
-        if change <= 1e-13 * scale {
-            s.qv.iter_mut().zip(qf.iter()).for_each(|(q, f)| *q += f);
-            return Ok(iteration);
+        pass(&f, &mut next)?;
+        let change = f.iter().zip(&next).zip(&sizes).map(|((a, b), s)| (a - b).abs() * s).fold(0.0, f64::max);
+        std::mem::swap(&mut f, &mut next);
+        if change <= tol {
+            return Ok((f, passes));
         }
     }
     Err(EngineError::FrictionDiverged { step, input })
@@ -215,7 +359,7 @@ fn multipliers(
     s: &mut Scratch,
     reactions_with: Option<&[usize]>,
     (step, input): (usize, f64),
-    (driving, reactions): (&mut Vec<f64>, &mut Vec<Reaction>),
+    out: (&mut Vec<f64>, &mut Vec<Reaction>),
 ) -> Result<(), EngineError> {
     let (jacobian, lu) = s.actuated.as_ref().map_or((&c.jacobian, &c.lu), |a| (a.jacobian(), &a.lu));
     let lambda = &mut s.lambda;
@@ -227,6 +371,19 @@ fn multipliers(
         lambda.clear();
         lambda.extend(solved.iter());
     }
+    read_out(m, c, s, reactions_with, out);
+    Ok(())
+}
+
+/// The driving actions and, if asked, every reaction from λ (`s.lambda`).
+fn read_out(
+    m: &Mechanism,
+    c: &Configuration,
+    s: &Scratch,
+    reactions_with: Option<&[usize]>,
+    (driving, reactions): (&mut Vec<f64>, &mut Vec<Reaction>),
+) {
+    let lambda = &s.lambda;
     let first_driver = lambda.len() - m.drivers.len();
     driving.clear();
     driving.extend(lambda[first_driver..].iter().map(|l| -l));
@@ -235,7 +392,6 @@ fn multipliers(
         let (at, efforts) = ((c.q.as_slice(), c.trig.as_slice()), (&c.jacobian, lambda.as_slice(), driving.as_slice()));
         reactions_into(m, at, efforts, (&s.offsets, indeterminate), reactions);
     }
-    Ok(())
 }
 
 /// Every joint's reaction from the multipliers λ of Φ_qᵀλ = Q − M q̈ (the

@@ -1,10 +1,23 @@
 //! Coulomb friction in the joints, which makes the kinetostatic problem
-//! nonlinear: the friction forces depend on the reactions they change. Solved
-//! by fixed-point iteration on Q_f (generalized friction forces):
+//! nonlinear: the friction forces depend on the reactions they change.
+//!
+//! Each moving joint k with friction acts with a magnitude f_k (the size of
+//! the reaction that presses it) along a direction fixed by the position
+//! and the velocities alone: Q_f = Σ f_k a_k, a_k the generalized force of
+//! a unit of it ([`Unit`]). λ of Φ_qᵀλ = Q + Q_f − M q̈ is then linear in
+//! the f_k, and so is every reaction R:
 //!
 //! ```text
-//! Φ_qᵀλ_k = Q + Q_f(λ_{k−1}) − M q̈,   until |Q_f,k − Q_f,k−1| ≤ tol·|Q|
+//! λ = λ₀ + Σ f_k y_k,   Φ_qᵀ y_k = a_k,   R(λ) = R(λ₀) + Σ f_k R(y_k)
 //! ```
+//!
+//! so one solve for the loads and one per moving joint with friction give
+//! everything; the magnitudes are then a fixed point over scalars,
+//! f_k = g_k(R_k(λ₀) + Σ_j f_j R_k(y_j)), iterated without a solve until
+//! |Δf| ≤ 1e-13 of the loads (piecewise linear g converge in two passes,
+//! |R| in a few). With more than a few such joints (a stack of sliders)
+//! a solve each would cost more than the passes: each pass then solves
+//! once for λ with the last pass's friction (`actions.rs`).
 //!
 //! Revolute: couple −μ·r·|R|·sign(ω₂ − ω₁) on the second body (and its
 //! opposite on the first). Prismatic and pin-in-slot: force −μ·|N|·sign(v)
@@ -16,14 +29,13 @@
 //! contact point, v the second body's material point sliding on the
 //! first's there. Where the joint does not move (sign 0) there is no
 //! friction (static friction is not determined by kinetostatics). The reported reaction of a
-//! joint is λ's (normal) part plus its friction ([`add_to`]): every body's
+//! joint is λ's (normal) part plus its friction ([`Unit::add_to`]): every body's
 //! reported forces balance.
 
 use super::Reaction;
 use super::loads::add_force;
 use crate::engine::kinematics::Configuration;
 use crate::engine::model::{JointKind, Mechanism, dot, perp, rotate, rotate_d};
-use nalgebra::DVector;
 
 /// Fixed-point iterations allowed per position.
 pub const MAX_ITERATIONS: usize = 100;
@@ -43,76 +55,90 @@ fn sign(v: f64) -> f64 {
     }
 }
 
-/// Q_f for the given reactions (one per joint, in joint order).
-pub fn forces(m: &Mechanism, c: &Configuration, reactions: &[Reaction]) -> DVector<f64> {
-    let mut qf = DVector::zeros(m.n_coordinates());
-    for (k, force, couple) in actions(m, c, reactions) {
-        let [i, j] = m.joints[k].bodies;
-        // At the joint's point; a contact's where its curves touch now.
-        let at = |b: usize| m.contact_point(k, b, &c.q).unwrap_or(m.joints[k].at);
-        add_force(m, &c.trig, qf.as_mut_slice(), j, at(j), force, couple);
-        add_force(m, &c.trig, qf.as_mut_slice(), i, at(i), [-force[0], -force[1]], -couple);
-    }
-    qf
+/// What presses a joint, from its normal reaction (λ's part).
+#[derive(Clone, Copy, Debug)]
+enum Measure {
+    /// |R|: a revolute joint's whole force.
+    Resultant,
+    /// |n · F|: the force across a slide or a contact, n its normal.
+    Across([f64; 2]),
+    /// |N₁| + |N₂|: a guide of a given length, at its two ends (else as `Across`).
+    Ends([f64; 2]),
 }
 
-/// The reported reactions made whole: each joint's friction added to its
-/// reaction (the normal part λ gives), so that every body's reported
-/// forces balance. The friction is the force on the second body at the
-/// joint's point (no moment about it) and, in a revolute joint, its couple.
-pub fn add_to(m: &Mechanism, c: &Configuration, reactions: &mut [Reaction]) {
-    let all: Vec<_> = actions(m, c, reactions).collect();
-    for (k, force, couple) in all {
-        // The reactions are in joint order (one per joint).
-        if let Some(r) = reactions.get_mut(k).filter(|r| r.joint == k) {
-            r.fx += force[0];
-            r.fy += force[1];
-            r.moment += couple;
+/// A moving joint's friction per unit of what presses it: the force on its
+/// second body (at the joint's point, or where a contact touches) and the couple.
+#[derive(Clone, Copy, Debug)]
+pub struct Unit {
+    pub joint: usize,
+    force: [f64; 2],
+    couple: f64,
+    measure: Measure,
+}
+
+impl Unit {
+    /// The magnitude f that the joint's normal reaction `r` gives.
+    pub fn magnitude(&self, r: &Reaction) -> f64 {
+        match self.measure {
+            Measure::Resultant => r.fx.hypot(r.fy),
+            Measure::Across(n) => dot(n, [r.fx, r.fy]).abs(),
+            Measure::Ends(n) => r.ends.map_or(dot(n, [r.fx, r.fy]).abs(), |[n1, n2]| n1.abs() + n2.abs()),
         }
     }
+
+    /// a_k·f added to the generalized forces `qv`.
+    pub fn add_generalized(&self, m: &Mechanism, c: &Configuration, f: f64, qv: &mut [f64]) {
+        let [i, j] = m.joints[self.joint].bodies;
+        let at = |b: usize| m.contact_point(self.joint, b, &c.q).unwrap_or(m.joints[self.joint].at);
+        let (force, couple) = ([f * self.force[0], f * self.force[1]], f * self.couple);
+        add_force(m, &c.trig, qv, j, at(j), force, couple);
+        add_force(m, &c.trig, qv, i, at(i), [-force[0], -force[1]], -couple);
+    }
+
+    /// The friction of magnitude f added to the joint's reported reaction.
+    pub fn add_to(&self, f: f64, r: &mut Reaction) {
+        r.fx += f * self.force[0];
+        r.fy += f * self.force[1];
+        r.moment += f * self.couple;
+    }
 }
 
-/// Each joint's friction on its second body, from the normal reactions:
-/// (joint, force at the joint's point, couple).
-fn actions<'a>(
-    m: &'a Mechanism,
-    c: &'a Configuration,
-    reactions: &'a [Reaction],
-) -> impl Iterator<Item = (usize, [f64; 2], f64)> + 'a {
+/// The friction of every joint with friction that moves at this position,
+/// per unit of what presses it, into `out`.
+pub fn units(m: &Mechanism, c: &Configuration, out: &mut Vec<Unit>) {
+    out.clear();
     let pose = |b: usize| m.column(b).map_or((0.0, 0.0), |col| (c.q[col + 2], c.qd[col + 2]));
-    let velocity = move |b: usize, at: [f64; 2]| {
+    let velocity = |b: usize, at: [f64; 2]| {
         m.column(b).map_or([0.0, 0.0], |col| {
             let v = rotate_d(c.q[col + 2], m.local(b, at));
             [c.qd[col] + v[0] * c.qd[col + 2], c.qd[col + 1] + v[1] * c.qd[col + 2]]
         })
     };
-    reactions.iter().filter_map(move |r| {
-        let joint = &m.joints[r.joint];
-        let f = joint.friction?;
+    let sliding = |u: [f64; 2], [pj, pi]: [[f64; 2]; 2], [i, j]: [usize; 2]| {
+        let (vj, vi) = (velocity(j, pj), velocity(i, pi));
+        sign(dot(u, [vj[0] - vi[0], vj[1] - vi[1]]))
+    };
+    out.extend(m.joints.iter().enumerate().filter_map(|(k, joint)| {
+        let f = joint.friction.filter(|f| f.mu > 0.0)?;
         let [i, j] = joint.bodies;
-        match joint.kind {
-            JointKind::Revolute => {
-                let couple = -f.mu * f.radius * r.fx.hypot(r.fy) * sign(pose(j).1 - pose(i).1);
-                Some((r.joint, [0.0, 0.0], couple))
-            }
+        let (force, couple, measure) = match joint.kind {
+            JointKind::Revolute => ([0.0; 2], -f.mu * f.radius * sign(pose(j).1 - pose(i).1), Measure::Resultant),
             JointKind::Prismatic { axis } | JointKind::PinSlot { axis } => {
                 let u = rotate(pose(i).0, axis);
-                let normal = r.ends.map_or(dot(perp(u), [r.fx, r.fy]).abs(), |[n1, n2]| n1.abs() + n2.abs());
-                let (vj, vi) = (velocity(j, joint.at), velocity(i, joint.at));
-                let slide = sign(dot(u, [vj[0] - vi[0], vj[1] - vi[1]]));
-                Some((r.joint, [-f.mu * normal * slide * u[0], -f.mu * normal * slide * u[1]], 0.0))
+                let slide = sliding(u, [joint.at; 2], [i, j]);
+                let measure = if joint.length.is_some() { Measure::Ends(perp(u)) } else { Measure::Across(perp(u)) };
+                ([-f.mu * slide * u[0], -f.mu * slide * u[1]], 0.0, measure)
             }
             // Rolling: the tangential force is the constraint's own, not friction.
-            JointKind::Contact(ref contact) if contact.rolling => None,
+            JointKind::Contact(ref contact) if contact.rolling => return None,
             JointKind::Contact(_) => {
-                let t = m.contact_tangent(r.joint, &c.q)?;
-                let normal = dot(perp(t), [r.fx, r.fy]).abs();
-                let (pj, pi) = (m.contact_point(r.joint, j, &c.q)?, m.contact_point(r.joint, i, &c.q)?);
-                let (vj, vi) = (velocity(j, pj), velocity(i, pi));
-                let slide = sign(dot(t, [vj[0] - vi[0], vj[1] - vi[1]]));
-                Some((r.joint, [-f.mu * normal * slide * t[0], -f.mu * normal * slide * t[1]], 0.0))
+                let t = m.contact_tangent(k, &c.q)?;
+                let at = [m.contact_point(k, j, &c.q)?, m.contact_point(k, i, &c.q)?];
+                let slide = sliding(t, at, [i, j]);
+                ([-f.mu * slide * t[0], -f.mu * slide * t[1]], 0.0, Measure::Across(perp(t)))
             }
-            JointKind::Gear { .. } => None,
-        }
-    })
+            JointKind::Gear { .. } => return None,
+        };
+        (force != [0.0; 2] || couple != 0.0).then_some(Unit { joint: k, force, couple, measure })
+    }));
 }

@@ -35,7 +35,6 @@ use super::model::{BodyId, Mechanism};
 use super::{Deadline, EngineError};
 use actions::{Actions, Scratch};
 use actuators::Actuated;
-use nalgebra::DVector;
 
 /// What to compute at every position.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -125,11 +124,6 @@ pub struct Step {
     pub friction_iterations: usize,
     /// A singular position: no driving action, reaction or reduced quantity is computed.
     pub singular: bool,
-}
-
-/// M·v with M = diag(m, m, I_G).
-pub(crate) fn mass_times(m: &Mechanism, v: &[f64]) -> DVector<f64> {
-    DVector::from_iterator(v.len(), v.iter().enumerate().map(|(k, x)| x * m.mass_of(k)))
 }
 
 /// Solves the inverse dynamics at every position of `positions` (per

@@ -18,9 +18,14 @@ use nalgebra::DMatrix;
 pub fn row_scales(a: &DMatrix<f64>, cols: &[f64], rows: &mut Vec<f64>) {
     rows.clear();
     rows.resize(a.nrows(), 0.0);
-    for (j, column) in a.column_iter().enumerate() {
-        let c = cols.get(j).copied().unwrap_or(1.0);
-        rows.iter_mut().zip(column.iter()).for_each(|(r, v)| *r = r.max((v * c).abs()));
+    // Over the column-major storage: nalgebra's column iterator and f64::max
+    // (NaN-aware) took more than the sweep's Newton solve.
+    let columns = a.as_slice().chunks_exact(a.nrows().max(1));
+    for (column, c) in columns.zip(cols.iter().chain(std::iter::repeat(&1.0))) {
+        rows.iter_mut().zip(column).for_each(|(r, v)| {
+            let v = (v * c).abs();
+            *r = if v > *r || v.is_nan() { v } else { *r };
+        });
     }
     rows.iter_mut().for_each(|r| *r = if *r > 0.0 && r.is_finite() { 1.0 / *r } else { 1.0 });
 }
