@@ -5,6 +5,7 @@
 //! result values, not errors. Errors carry the context needed to explain
 //! them ([`EngineError`]).
 
+pub mod balancing;
 pub mod cam;
 pub mod constraints;
 pub mod curves;

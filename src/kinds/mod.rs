@@ -5,6 +5,7 @@
 //! mechanism's wire form the mechanism kinds share. Each kind is written
 //! against the contract ([`crate::kind`]) only; [`register`] lists them.
 
+pub mod balancing;
 pub mod cams;
 pub mod dynamics;
 pub mod equivalent;
@@ -28,6 +29,7 @@ pub fn register(r: &mut impl Register) {
     r.kind::<gear_train::GearTrain>();
     r.kind::<equivalent::EquivalentMasses>();
     r.kind::<rotor::RigidRotor>();
+    r.kind::<balancing::Balancing>();
     r.kind::<mobility::Mobility>();
     r.kind::<cams::Cams>();
 }

@@ -4,6 +4,7 @@ mod andrews;
 mod attack;
 mod backup;
 mod balancer;
+mod balancing;
 mod browser;
 mod cams;
 mod capacity;

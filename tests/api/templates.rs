@@ -6,7 +6,7 @@ use crate::helpers::{TestApp, case, request};
 use axum::http::StatusCode;
 use serde_json::{Value, json};
 
-const BUILTIN: [&str; 14] = [
+const BUILTIN: [&str; 15] = [
     "p103-slider-flywheel",
     "p103-class",
     "p107-two-stroke-engine",
@@ -15,6 +15,7 @@ const BUILTIN: [&str; 14] = [
     "four-bar",
     "scotch-yoke-startup",
     "rotor-disk",
+    "rotor-balancing",
     "scissor-lift",
     "bar-on-slider",
     "cam-flat-follower",

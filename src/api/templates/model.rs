@@ -165,6 +165,7 @@ pub const LIBRARY_FILES: &[(&str, &str)] = &[
     ("four-bar.json", include_str!("../../../library/four-bar.json")),
     ("scotch-yoke-startup.json", include_str!("../../../library/scotch-yoke-startup.json")),
     ("rotor-disk.json", include_str!("../../../library/rotor-disk.json")),
+    ("rotor-balancing.json", include_str!("../../../library/rotor-balancing.json")),
     ("scissor-lift.json", include_str!("../../../library/scissor-lift.json")),
     ("bar-on-slider.json", include_str!("../../../library/bar-on-slider.json")),
     ("cam-flat-follower.json", include_str!("../../../library/cam-flat-follower.json")),

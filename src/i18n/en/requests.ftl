@@ -297,3 +297,9 @@ expr-token-name = name '{ $name }'
 expr-token-operator = '{ $op }'
 dynamics-budget = the compute budget of { $seconds } s ran out at t = { $t } s of simulated time after { $steps } steps; the motion is too fast for the tolerance (a stiff spring?) or the run too long: ask for a shorter run or a looser tolerance{ $hint }
 dynamics-budget-dop853 = ; for a long smooth run at a tight tolerance, "integrator": "dop853" takes far fewer steps
+
+## Balancing: the rotor's masses or body, and the correction planes
+balancing-masses-or-rotor = give the unbalance either as "masses" (point masses) or as "rotor" (a rotor request's body), one of them
+balancing-masses-count = give 1 to { $max } point masses
+balancing-planes-count = give one correction plane (static balancing) or two (dynamic balancing)
+balancing-planes-apart = the two correction planes must be at different z

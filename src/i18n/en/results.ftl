@@ -120,3 +120,8 @@ warning-gear-pointed = the tooth is pointed before { $radius } m: its thickness 
 warning-gear-module-metres = a module of { $module } m: a bare number is SI (metres); for { $module } mm write "{ $module } mm" (modules over { $plausible } m are rare)
 warning-equivalent-incomplete = no masses at these points match mass, centre of mass and inertia together; the least-squares fit leaves a relative residual of { $residual }
 warning-equivalent-not-unique = the points do not determine the masses; the smallest set (minimum norm) is given
+
+## Balancing
+accuracy-balancing-static = static balancing in one plane: the correction C₁ = −U cancels the static unbalance U = Σ m·r·e^(iθ); the couple is left; closed form
+accuracy-balancing-dynamic = dynamic balancing in two planes: C₁ + C₂ = −U and (z₂ − z₁)·C₂ = −D(z₁), D(z₁) = Σ m·r·(z − z₁)·e^(iθ); closed form
+warning-balancing-couple-left = one correction plane removes the static unbalance only: a dynamic unbalance of { $couple } kg·m² is left (give two planes to remove it)

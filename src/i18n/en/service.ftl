@@ -362,6 +362,10 @@ plot-rotor-frame-angle = angle of the frame
 plot-rotor-force = force on the body
 plot-rotor-bearing = bearing { $name }
 plot-rotor-note = total (static and dynamic) reaction of each bearing; components that stay zero are left out
+plot-balancing-vectors = Unbalance and corrections (m·r, seen along the axis)
+plot-balancing-unbalance = static unbalance U
+plot-balancing-correction = correction at z = { $z } m
+plot-balancing-note = vectors m·r from the axis, to one scale; each correction in its plane
 plot-gear-tooth = The involute teeth, from the computed geometry
 plot-gear-profile = tooth profile
 plot-gear-pitch = pitch circle r = { $value } mm
@@ -378,6 +382,7 @@ kind-kinetostatics = kinetostatics
 kind-dynamics = direct dynamics
 kind-cams = cam design
 kind-rotor = rotor
+kind-balancing = balancing
 kind-gears = gears
 kind-gear-train = gear train
 kind-equivalent = equivalent masses

@@ -323,3 +323,9 @@ expr-token-name = nombre '{ $name }'
 expr-token-operator = '{ $op }'
 dynamics-budget = se agotó el presupuesto de cálculo de { $seconds } s en t = { $t } s de tiempo simulado tras { $steps } pasos; el movimiento es demasiado rápido para la tolerancia (¿un muelle rígido?) o la integración demasiado larga: pida una integración más corta o una tolerancia más holgada{ $hint }
 dynamics-budget-dop853 = ; para una integración larga y suave con una tolerancia estricta, "integrator": "dop853" da muchos menos pasos
+
+## Equilibrado: las masas o el cuerpo del rotor, y los planos de corrección
+balancing-masses-or-rotor = da el desequilibrio como "masses" (masas puntuales) o como "rotor" (el cuerpo de una petición de rotor), uno de los dos
+balancing-masses-count = da de 1 a { $max } masas puntuales
+balancing-planes-count = da un plano de corrección (equilibrado estático) o dos (equilibrado dinámico)
+balancing-planes-apart = los dos planos de corrección deben estar en z distintas

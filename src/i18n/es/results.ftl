@@ -132,3 +132,8 @@ warning-gear-pointed = el diente acaba en punta antes de { $radius } m: su espes
 warning-gear-module-metres = un módulo de { $module } m: un número sin unidad está en el SI (metros); para { $module } mm escriba "{ $module } mm" (los módulos de más de { $plausible } m son raros)
 warning-equivalent-incomplete = ningún conjunto de masas en estos puntos reproduce a la vez la masa, el centro de masas y la inercia; el ajuste por mínimos cuadrados deja un residuo relativo de { $residual }
 warning-equivalent-not-unique = los puntos no determinan las masas; se da el conjunto más pequeño (de norma mínima)
+
+## Equilibrado
+accuracy-balancing-static = equilibrado estático en un plano: la corrección C₁ = −U anula el desequilibrio estático U = Σ m·r·e^(iθ); el par queda; forma cerrada
+accuracy-balancing-dynamic = equilibrado dinámico en dos planos: C₁ + C₂ = −U y (z₂ − z₁)·C₂ = −D(z₁), D(z₁) = Σ m·r·(z − z₁)·e^(iθ); forma cerrada
+warning-balancing-couple-left = un solo plano de corrección elimina solo el desequilibrio estático: queda un desequilibrio dinámico de { $couple } kg·m² (da dos planos para eliminarlo)

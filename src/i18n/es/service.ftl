@@ -362,6 +362,10 @@ plot-rotor-frame-angle = ángulo del bastidor
 plot-rotor-force = fuerza sobre el sólido
 plot-rotor-bearing = cojinete { $name }
 plot-rotor-note = reacción total (estática y dinámica) de cada cojinete; se omiten las componentes que siguen siendo cero
+plot-balancing-vectors = Desequilibrio y correcciones (m·r, vistos a lo largo del eje)
+plot-balancing-unbalance = desequilibrio estático U
+plot-balancing-correction = corrección en z = { $z } m
+plot-balancing-note = vectores m·r desde el eje, a una misma escala; cada corrección en su plano
 plot-gear-tooth = Los dientes de evolvente, a partir de la geometría calculada
 plot-gear-profile = perfil del diente
 plot-gear-pitch = circunferencia primitiva r = { $value } mm
@@ -378,6 +382,7 @@ kind-kinetostatics = cinetostática
 kind-dynamics = dinámica directa
 kind-cams = diseño de levas
 kind-rotor = rotor
+kind-balancing = equilibrado
 kind-gears = engranajes
 kind-gear-train = tren de engranajes
 kind-equivalent = masas equivalentes

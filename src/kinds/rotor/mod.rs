@@ -207,7 +207,7 @@ fn state_dto(s: &RotorState) -> RotorStateDto {
 }
 
 impl RotorRequest {
-    fn to_rotor(&self) -> Result<(Rotor, Vec<f64>), Vec<FieldError>> {
+    pub fn to_rotor(&self) -> Result<(Rotor, Vec<f64>), Vec<FieldError>> {
         let mut e = Errors::default();
         let mass = e.positive(&self.mass, Dim::MASS, "/mass");
         let inertia = self.inertia(&mut e);
