@@ -16,16 +16,10 @@
 //!   at ω with no other load, R_A + R_B = −ω²U and (z_B − z_A)R_B = −ω²D(z_A)
 //!   (the rotor's own frame, at angle 0).
 
+use nalgebra::Vector2;
+
 /// A vector in a plane normal to the axis, (x, y); as a complex number x + iy.
-pub type Planar = [f64; 2];
-
-fn add(a: Planar, b: Planar) -> Planar {
-    [a[0] + b[0], a[1] + b[1]]
-}
-
-fn scale(k: f64, a: Planar) -> Planar {
-    [k * a[0], k * a[1]]
-}
+pub type Planar = Vector2<f64>;
 
 /// A point mass: m (kg), r (m), θ (rad), z (m).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -55,19 +49,18 @@ impl Unbalance {
     pub fn of(masses: &[Mass]) -> Self {
         masses.iter().fold(Self::default(), |acc, p| {
             let (s, c) = p.theta.sin_cos();
-            let mr = [p.m * p.r * c, p.m * p.r * s];
-            Self { u: add(acc.u, mr), d0: add(acc.d0, scale(p.z, mr)) }
+            acc.with(p.m * p.r * Vector2::new(c, s), p.z)
         })
     }
 
     /// D(z₀) = D(0) − z₀U.
     pub fn about(&self, z0: f64) -> Planar {
-        add(self.d0, scale(-z0, self.u))
+        self.d0 - z0 * self.u
     }
 
     /// With a vector C added in the plane z.
     fn with(self, c: Planar, z: f64) -> Self {
-        Self { u: add(self.u, c), d0: add(self.d0, scale(z, c)) }
+        Self { u: self.u + c, d0: self.d0 + z * c }
     }
 }
 
@@ -84,10 +77,10 @@ pub struct Correction {
 /// z and positive radii: validated by the caller) and the unbalance left.
 pub fn balance(before: Unbalance, planes: &[Plane]) -> (Vec<Correction>, Unbalance) {
     let vectors: Vec<Planar> = match planes {
-        [_] => vec![scale(-1.0, before.u)],
+        [_] => vec![-before.u],
         [p1, p2, ..] => {
-            let c2 = scale(-1.0 / (p2.z - p1.z), before.about(p1.z));
-            vec![add(scale(-1.0, before.u), scale(-1.0, c2)), c2]
+            let c2 = -before.about(p1.z) / (p2.z - p1.z);
+            vec![-before.u - c2, c2]
         }
         [] => Vec::new(),
     };
@@ -96,8 +89,7 @@ pub fn balance(before: Unbalance, planes: &[Plane]) -> (Vec<Correction>, Unbalan
         .iter()
         .zip(&vectors)
         .map(|(plane, c)| {
-            let mass_radius = c[0].hypot(c[1]);
-            let angle = if mass_radius > 0.0 { c[1].atan2(c[0]).rem_euclid(std::f64::consts::TAU) } else { 0.0 };
+            let (mass_radius, angle) = polar(*c);
             Correction { plane: *plane, mass: mass_radius / plane.radius, angle, mass_radius }
         })
         .collect();
@@ -108,14 +100,14 @@ pub fn balance(before: Unbalance, planes: &[Plane]) -> (Vec<Correction>, Unbalan
 /// in its own frame at angle 0: [R_A, R_B].
 pub fn bearing_forces(u: &Unbalance, omega: f64, [za, zb]: [f64; 2]) -> [Planar; 2] {
     let w2 = omega * omega;
-    let rb = scale(-w2 / (zb - za), u.about(za));
-    [add(scale(-w2, u.u), scale(-1.0, rb)), rb]
+    let rb = -w2 / (zb - za) * u.about(za);
+    [-w2 * u.u - rb, rb]
 }
 
 /// The magnitude of a planar vector and its angle in [0, 2π) (0 for the zero vector).
 pub fn polar(v: Planar) -> (f64, f64) {
-    let value = v[0].hypot(v[1]);
-    (value, if value > 0.0 { v[1].atan2(v[0]).rem_euclid(std::f64::consts::TAU) } else { 0.0 })
+    let value = v.norm();
+    (value, if value > 0.0 { v.y.atan2(v.x).rem_euclid(std::f64::consts::TAU) } else { 0.0 })
 }
 
 #[cfg(test)]
@@ -144,7 +136,7 @@ mod tests {
         let u = Unbalance::of(&[Mass { m: 1.0, r: 0.01, theta: 0.0, z: 0.5 }]);
         let [ra, rb] = bearing_forces(&u, 100.0, [0.0, 1.0]);
         // m·r·ω² = 100 N, half on each, pulling the rotor back towards the axis (−x).
-        assert!((ra[0] + 50.0).abs() < 1e-12 && (rb[0] + 50.0).abs() < 1e-12);
-        assert!(ra[1].abs() < 1e-15 && rb[1].abs() < 1e-15);
+        assert!((ra.x + 50.0).abs() < 1e-12 && (rb.x + 50.0).abs() < 1e-12);
+        assert!(ra.y.abs() < 1e-15 && rb.y.abs() < 1e-15);
     }
 }

@@ -21,6 +21,7 @@ use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::quantity::Errors;
 use crate::kind::validated;
 use crate::units::Dim;
+use nalgebra::Vector2;
 use wire::{BalancingResidualDto, BearingForcesDto};
 
 /// Point masses a request may list.
@@ -81,20 +82,22 @@ fn result(r: &Read) -> BalancingResult {
         "/method",
         Msg::new(if r.planes.len() == 1 { "accuracy-balancing-static" } else { "accuracy-balancing-dynamic" }),
     );
-    if r.planes.len() == 1 && polar(after.about(z1)).0 > 1e-9 * polar(r.before.d0).0.max(f64::MIN_POSITIVE) {
-        notes.warn(Msg::new("warning-balancing-couple-left").num("couple", polar(after.about(z1)).0));
+    // One plane leaves D(z₁) as it was: said unless it is rounding of D(0) − z₁U's terms.
+    let left = polar(after.about(z1)).0;
+    if r.planes.len() == 1 && left > 1e-12 * (polar(r.before.d0).0 + z1.abs() * u.0) {
+        notes.warn(Msg::new("warning-balancing-couple-left").num("couple", left));
     }
     let reactions = r.reactions.map(|(speed, bearings)| BearingForcesDto {
         speed,
         bearings,
-        before: balancing::bearing_forces(&r.before, speed, bearings),
-        after: balancing::bearing_forces(&after, speed, bearings),
+        before: balancing::bearing_forces(&r.before, speed, bearings).map(|f| [f.x, f.y]),
+        after: balancing::bearing_forces(&after, speed, bearings).map(|f| [f.x, f.y]),
     });
     BalancingResult {
         static_unbalance: UnbalanceDto { value: u.0, angle: u.1 },
         dynamic_unbalance: wire::DynamicUnbalanceDto { value: d.0, angle: d.1, about: z1 },
         corrections: corrections.iter().map(BalancingCorrectionDto::from).collect(),
-        residual: BalancingResidualDto { static_: polar(after.u).0, dynamic: polar(after.about(z1)).0 },
+        residual: BalancingResidualDto { static_: polar(after.u).0, dynamic: left },
         reactions,
         method,
         notes,
@@ -194,7 +197,8 @@ impl Body {
             Body::Rotor(r) => {
                 let (m, g) = (r.mass, r.cg);
                 let (pxy, pxz) = (-r.inertia[(0, 1)], -r.inertia[(0, 2)]);
-                Unbalance { u: [m * g.y, m * g.z], d0: [pxy + m * g.x * g.y, pxz + m * g.x * g.z] }
+                let u = Vector2::new(m * g.y, m * g.z);
+                Unbalance { u, d0: Vector2::new(pxy, pxz) + g.x * u }
             }
         }
     }
