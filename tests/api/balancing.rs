@@ -143,8 +143,8 @@ async fn one_plane_balances_the_static_unbalance_and_says_the_couple_is_left() {
 }
 
 /// Bad requests: both forms, three planes, planes at one z, a negative
-/// mass and a length with an angle's unit — each at its field, in Spanish
-/// where asked.
+/// mass, a length with an angle's unit and a speed without bearings —
+/// each at its field, in Spanish where asked.
 #[tokio::test]
 async fn balancing_errors_point_at_each_field_in_the_user_s_language() {
     let app = TestApp::new().await;
@@ -167,6 +167,12 @@ async fn balancing_errors_point_at_each_field_in_the_user_s_language() {
     body["planes"] = json!([{"z": 0, "radius": 0.1}, {"z": 1, "radius": 0.1}, {"z": 2, "radius": 0.1}]);
     let r = app.post("/v1/balancing", &body).await;
     assert!(r.json()["errors"].as_array().unwrap().iter().any(|e| e["pointer"] == "/planes"), "{}", r.text);
+    // A speed without bearings asks for the forces: refused at the missing field, not answered without them.
+    let mut body = example("BalancingRequest");
+    body.as_object_mut().unwrap().remove("bearings");
+    let r = app.post("/v1/balancing", &body).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert_eq!(r.json()["errors"][0]["pointer"], "/bearings", "{}", r.text);
 }
 
 /// The job has its plot: U and each correction as arrows from the axis, as SVG.

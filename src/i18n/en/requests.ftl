@@ -303,3 +303,4 @@ balancing-masses-or-rotor = give the unbalance either as "masses" (point masses)
 balancing-masses-count = give 1 to { $max } point masses
 balancing-planes-count = give one correction plane (static balancing) or two (dynamic balancing)
 balancing-planes-apart = the two correction planes must be at different z
+balancing-reactions-need = the bearing forces need both the speed and the bearings' z: give "{ $field }" too (or neither)

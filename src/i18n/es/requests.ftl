@@ -329,3 +329,4 @@ balancing-masses-or-rotor = da el desequilibrio como "masses" (masas puntuales) 
 balancing-masses-count = da de 1 a { $max } masas puntuales
 balancing-planes-count = da un plano de corrección (equilibrado estático) o dos (equilibrado dinámico)
 balancing-planes-apart = los dos planos de corrección deben estar en z distintas
+balancing-reactions-need = las fuerzas en los cojinetes necesitan la velocidad y la z de los cojinetes: da también "{ $field }" (o ninguno de los dos)

@@ -156,7 +156,7 @@ impl BalancingRequest {
     }
 
     /// The speed and bearings of the reactions: the request's, else the
-    /// rotor's; none where either is missing.
+    /// rotor's; none where both are missing, refused where one is.
     fn reactions(&self, e: &mut Errors, body: Option<&Body>) -> Option<(f64, [f64; 2])> {
         let rotor = match body {
             Some(Body::Rotor(r)) => Some(r),
@@ -177,7 +177,14 @@ impl BalancingRequest {
             }
             None => rotor.map(|r| r.bearings),
         };
-        speed.zip(bearings)
+        // One without the other asks for the forces: said, not left out in silence.
+        match (speed, bearings, body) {
+            (Some(_), None, Some(_)) => {
+                e.refuse("/bearings", Msg::new("balancing-reactions-need").arg("field", "bearings"))
+            }
+            (None, Some(_), Some(_)) => e.refuse("/speed", Msg::new("balancing-reactions-need").arg("field", "speed")),
+            _ => speed.zip(bearings),
+        }
     }
 }
 
