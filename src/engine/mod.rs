@@ -26,6 +26,7 @@ pub mod model;
 pub mod numeric;
 pub mod rotor;
 pub mod samples;
+pub mod shaking;
 pub mod sketch;
 pub mod touch;
 pub mod variants;

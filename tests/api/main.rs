@@ -62,6 +62,7 @@ mod schema;
 mod security;
 mod seed_exams;
 mod seed_templates;
+mod shaking;
 mod sketches;
 mod slipping;
 mod slow_clients;

@@ -112,6 +112,13 @@ input-speed = "speed" is required
 ## Kinetostatics: what it asks of its outputs, and the positions a mechanism cannot reach
 
 kinetostatics-points-track = "points" follows the points of "track": give them
+balance-fraction = the reciprocating fraction is between 0 and 1, not { $value }
+balance-unknown-body = no body is named '{ $body }'
+balance-not-linkage = counterweights are found for a four-bar (crank, coupler, rocker) or a slider-crank (crank, rod, slider), each link joined by revolute joints and the slider by a prismatic joint to the frame: this mechanism is neither
+balance-not-pivoted = '{ $body }' is not pivoted to the frame: counterweights go on the crank and, of a four-bar, the rocker
+balance-missing = a four-bar's full force balance needs a counterweight on '{ $body }' too
+balance-missing-crank = a slider-crank's counterweight goes on its crank, '{ $body }'
+balance-twice = '{ $body }' is named twice
 kinetostatics-at = { $what } at input { $value } (step { $step } of { $steps }): { $why }
 kinetostatics-at-start = { $what } at input { $value } (step { $step } of { $steps }, the start): { $why }
 kinetostatics-on-the-way = { $said }; on the way there from the drawn configuration (input "reference") it stops closing at { $value }

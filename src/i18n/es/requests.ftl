@@ -126,6 +126,13 @@ input-speed = "speed" es obligatorio
 ## Cinetostática: lo que pide de sus resultados, y las posiciones que un mecanismo no alcanza
 
 kinetostatics-points-track = "points" sigue los puntos de "track": indíquelos
+balance-fraction = la fracción alternativa está entre 0 y 1, no { $value }
+balance-unknown-body = ningún cuerpo se llama «{ $body }»
+balance-not-linkage = los contrapesos se calculan para un cuadrilátero articulado (manivela, biela, balancín) o un biela-manivela (manivela, biela, corredera), con pares de rotación y la corredera unida al bastidor por un par prismático: este mecanismo no es ninguno de los dos
+balance-not-pivoted = «{ $body }» no está articulado al bastidor: los contrapesos van en la manivela y, en un cuadrilátero, en el balancín
+balance-missing = el equilibrado completo de fuerzas de un cuadrilátero necesita también un contrapeso en «{ $body }»
+balance-missing-crank = el contrapeso de un biela-manivela va en su manivela, «{ $body }»
+balance-twice = «{ $body }» está dos veces
 kinetostatics-at = { $what } en la entrada { $value } (paso { $step } de { $steps }): { $why }
 kinetostatics-at-start = { $what } en la entrada { $value } (paso { $step } de { $steps }, el inicio): { $why }
 kinetostatics-on-the-way = { $said }; en el camino hasta allí desde la configuración dibujada (la "reference" de la entrada) deja de cerrar en { $value }

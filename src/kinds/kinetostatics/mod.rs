@@ -5,6 +5,7 @@ mod located;
 mod plots;
 mod request;
 mod result;
+mod shaking;
 mod table;
 
 pub use request::{KinetostaticsRequest, OutputKind};
@@ -76,6 +77,14 @@ impl Kind for Kinetostatics {
         ("/steps/*/contacts/*/curvature_radius/*", "m"),
         ("/steps/*/contacts/*/pressure_angle", "rad"),
         ("/steps/*/contacts/*/penetration", "m"),
+        ("/steps/*/shaking/force/*", "N"),
+        ("/steps/*/shaking/moment", "N*m"),
+        ("/steps/*/shaking/balanced_force/*", "N"),
+        ("/summary/max_shaking_force", "N"),
+        ("/summary/max_shaking_moment", "N*m"),
+        ("/summary/max_shaking_force_balanced", "N"),
+        ("/counterweights/*/mass_radius", "kg*m"),
+        ("/counterweights/*/angle", "rad"),
         ("/summary/max_reaction/*", "N"),
         ("/summary/virtual_power_residual", "1"),
         ("/summary/max_jacobian_condition", "1"),

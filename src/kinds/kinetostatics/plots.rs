@@ -1,6 +1,7 @@
 //! The plots of a kinetostatics job, from its stored steps: the driving
 //! action and every joint's reaction against the input, each joint's polar
-//! diagram (f_x against f_y over the sweep), I*(φ) and M*(φ), and the
+//! diagram (f_x against f_y over the sweep), I*(φ) and M*(φ), the shaking
+//! force's polar diagram (before and after balancing) and moment, and the
 //! mechanism drawn at a step with its reactions to scale.
 
 use crate::i18n::{Msg, say};
@@ -28,6 +29,10 @@ pub fn list(job: &Job) -> Vec<Listed> {
         out.push(Listed::new("reduced-inertia", say("plot-ks-reduced-inertia")));
         out.push(Listed::new("reduced-torque", say("plot-ks-reduced-torque")));
     }
+    if has("shaking") {
+        out.push(Listed::new("shaking", say("plot-ks-shaking")));
+        out.push(Listed::new("shaking-moment", say("plot-ks-shaking-moment")));
+    }
     if has("kinematics") && drawing::model(job.request, "/mechanism").is_some() {
         out.push(Listed::new("mechanism", say("plot-ks-mechanism")));
     }
@@ -49,6 +54,10 @@ pub fn draw(job: &Job, name: &str, options: &Options) -> Drawn {
             .line(say("plot-ks-reduced-torque-line"), along(r, "reduced_torque"), Pen::solid(0))
             .rule(Level::Y(0.0), "", Pen::dashed(7)),
         "mechanism" => return mechanism(job, title, options.step.unwrap_or(0)),
+        "shaking" => shaking(r, title),
+        "shaking-moment" => Chart::new(title, input_axis(r), Axis::new(say("plot-ks-shaking-moment-axis"), "N·m"))
+            .line("M", xy(rows(r, "steps"), input(r), |s| num(s.get("shaking")?, "moment")), Pen::solid(0))
+            .rule(Level::Y(0.0), "", Pen::dashed(7)),
         polar => self::polar(r, polar.trim_start_matches("reaction-"), title),
     }))
 }
@@ -135,6 +144,31 @@ fn polar(r: &Value, joint: &str, title: String) -> Chart {
         c = c.mark(first, first_step.text());
     }
     let largest = points.iter().map(|p| p.0.hypot(p.1)).fold(0.0, f64::max);
+    c.subtitle(Msg::new("plot-ks-polar-note").arg("value", sig(largest)).text())
+}
+
+/// The shaking force's polar diagram over the sweep, and once balanced.
+fn shaking(r: &Value, title: String) -> Chart {
+    let steps = rows(r, "steps");
+    let curve = |key: &str| -> Vec<(f64, f64)> {
+        let at = |s: &Value| {
+            let v = s.get("shaking")?.get(key)?;
+            Some((v.get(0)?.as_f64()?, v.get(1)?.as_f64()?))
+        };
+        steps.iter().filter_map(at).collect()
+    };
+    let mut c = Chart::new(title, Axis::new("F_x", "N"), Axis::new("F_y", "N")).line(
+        say("plot-ks-shaking-force"),
+        curve("force"),
+        Pen::solid(0),
+    );
+    let balanced = curve("balanced_force");
+    if !balanced.is_empty() {
+        c = c.line(say("plot-ks-shaking-balanced"), balanced, Pen::solid(1));
+    }
+    c.equal = true;
+    c.marks.push(Mark { at: (0.0, 0.0), text: say("plot-ks-origin"), dot: true });
+    let largest = r.get("summary").and_then(|s| num(s, "max_shaking_force")).unwrap_or(0.0);
     c.subtitle(Msg::new("plot-ks-polar-note").arg("value", sig(largest)).text())
 }
 

@@ -4,6 +4,7 @@ use super::inputs::positions;
 use super::located::Written;
 use crate::engine::kinetostatics::{Load, Outputs};
 use crate::engine::model::Mechanism;
+use crate::engine::shaking::{Counterweight, Linkage, Unbalanceable, counterweights};
 use crate::i18n::Msg;
 use crate::kind::constants::{self, Constants};
 use crate::kind::limits::Limits;
@@ -65,6 +66,27 @@ pub struct KinetostaticsRequest {
     /// along its direction; on a body, a torque on the body.
     #[schema(max_items = 10)]
     pub actuators: Option<Vec<String>>,
+    /// Counterweights for a four-bar (on the crank and the rocker: full
+    /// force balance) or a slider-crank (on the crank: its rotating masses
+    /// and a fraction of the reciprocating one); the result's
+    /// `counterweights`, and with "shaking" each step's force once balanced.
+    pub balance: Option<BalanceDto>,
+}
+
+/// Which links get counterweights, and how much of a slider-crank's
+/// reciprocating mass they balance.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[schema(example = json!({"counterweights": ["crank", "rocker"]}))]
+pub struct BalanceDto {
+    /// The links pivoted to the frame that carry them, by name: a
+    /// four-bar's crank and rocker, a slider-crank's crank.
+    #[schema(min_items = 1, max_items = 2)]
+    pub counterweights: Vec<String>,
+    /// A slider-crank: the fraction f of the reciprocating mass (the slider
+    /// and the rod's share at its pin) balanced, 0 to 1 (default 0: the
+    /// rotating masses only).
+    #[schema(minimum = 0.0, maximum = 1.0)]
+    pub reciprocating_fraction: Option<f64>,
 }
 
 /// What to compute.
@@ -84,6 +106,10 @@ pub enum OutputKind {
     /// Each step's `points`: the motion of the points of `track` (reported
     /// whenever `track` is given).
     Points,
+    /// Each step's `shaking`: the force and moment the moving links'
+    /// inertia puts on the frame, and their largest in the summary (not
+    /// among the defaults).
+    Shaking,
 }
 
 /// The validated problem, ready for the engine.
@@ -107,6 +133,10 @@ pub struct Problem {
     pub assembled: Option<Assembled>,
     /// Each step's bodies' motion is reported.
     pub kinematics: bool,
+    /// Each step's shaking force and moment are reported.
+    pub shaking: bool,
+    /// The counterweights asked for, and the linkage they balance.
+    pub balance: Option<(Linkage, Vec<Counterweight>)>,
     /// How the first input was written, for errors at a position.
     pub written: Written,
 }
@@ -127,6 +157,7 @@ impl KinetostaticsRequest {
         if outputs.contains(&OutputKind::Points) && track.is_empty() {
             e.say("/outputs", Msg::new("kinetostatics-points-track"));
         }
+        let balance = self.balance.as_ref().and_then(|b| balance(b, &c.mechanism, &c.body_names, &mut e));
         let mut mechanism = c.mechanism;
         let inputs = match &self.input {
             Inputs::One(i) => vec![(**i).clone()],
@@ -166,6 +197,7 @@ impl KinetostaticsRequest {
                 reduced: outputs.contains(&OutputKind::Reduced),
                 kinematics: outputs.contains(&OutputKind::Kinematics)
                     || outputs.contains(&OutputKind::Energy)
+                    || outputs.contains(&OutputKind::Shaking)
                     || !tracked.is_empty(),
                 condition: outputs.contains(&OutputKind::Condition),
             },
@@ -176,7 +208,44 @@ impl KinetostaticsRequest {
             tracked,
             assembled: Assembled::of(&self.mechanism, dto, warnings),
             kinematics: outputs.contains(&OutputKind::Kinematics),
+            shaking: outputs.contains(&OutputKind::Shaking),
+            balance,
             written,
         })
+    }
+}
+
+/// The counterweights `b` asks for on `m` (bodies named in `names`, the
+/// ground first), or why not at `/balance/...`.
+fn balance(b: &BalanceDto, m: &Mechanism, names: &[String], e: &mut Errors) -> Option<(Linkage, Vec<Counterweight>)> {
+    let f = b.reciprocating_fraction.unwrap_or(0.0);
+    let fraction = (0.0..=1.0).contains(&f);
+    if !fraction {
+        e.say("/balance/reciprocating_fraction", Msg::new("balance-fraction").num("value", f));
+    }
+    let mut on = Vec::new();
+    for (k, name) in b.counterweights.iter().enumerate() {
+        match names.iter().skip(1).position(|n| n == name) {
+            Some(i) if on.contains(&(i + 1)) => {
+                e.say(&format!("/balance/counterweights/{k}"), Msg::new("balance-twice").arg("body", name));
+            }
+            Some(i) => on.push(i + 1),
+            None => e.say(&format!("/balance/counterweights/{k}"), Msg::new("balance-unknown-body").arg("body", name)),
+        }
+    }
+    if !e.list.is_empty() {
+        return None;
+    }
+    match counterweights(m, &on, f.clamp(0.0, 1.0)) {
+        Ok(found) => fraction.then_some(found),
+        Err(Unbalanceable::NotALinkage) => e.refuse("/balance", Msg::new("balance-not-linkage")),
+        Err(Unbalanceable::NotPivoted { at }) => e.refuse(
+            &format!("/balance/counterweights/{at}"),
+            Msg::new("balance-not-pivoted").arg("body", &b.counterweights[at]),
+        ),
+        Err(Unbalanceable::Missing { linkage, body }) => {
+            let id = if linkage == Linkage::FourBar { "balance-missing" } else { "balance-missing-crank" };
+            e.refuse("/balance/counterweights", Msg::new(id).arg("body", &names[body]))
+        }
     }
 }

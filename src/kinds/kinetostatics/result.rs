@@ -1,6 +1,7 @@
 //! The `result` of a kinetostatics job, as stored and served, and its CSV table.
 
 use super::request::Problem;
+use super::shaking::{CounterweightDto, ShakingDto, largest};
 use crate::engine::kinetostatics::{Motion, Reaction, Step, Totals, energy};
 use crate::engine::model::{Coordinate, Driver, Mechanism};
 use crate::i18n::Msg;
@@ -99,6 +100,9 @@ pub struct StepDto {
     /// Every contact joint's state, with the reactions.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub contacts: Option<Vec<ContactDto>>,
+    /// Where `outputs` has "shaking".
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shaking: Option<ShakingDto>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
@@ -124,6 +128,15 @@ pub struct SummaryDto {
     pub max_jacobian_condition: f64,
     /// The largest `scaled_condition` of the regular steps.
     pub max_scaled_condition: f64,
+    /// The largest |shaking force| over the sweep (N), where `outputs` has "shaking".
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_shaking_force: Option<f64>,
+    /// The largest |shaking moment| over the sweep (N·m).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_shaking_moment: Option<f64>,
+    /// The largest |shaking force| with the `counterweights` (N).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_shaking_force_balanced: Option<f64>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
@@ -198,6 +211,9 @@ pub struct KinetostaticsResult {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schema(value_type = Option<BTreeMap<String, Vec<f64>>>)]
     pub assembled_points: Option<BTreeMap<String, [f64; 2]>>,
+    /// The counterweights of `balance`, in its order.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub counterweights: Option<Vec<CounterweightDto>>,
 }
 
 impl crate::kind::JobResult for KinetostaticsResult {
@@ -238,6 +254,8 @@ impl KinetostaticsResult {
         let contacts = steps.iter().filter_map(|s| Some((first(s), s.contacts.as_deref()?)));
         notes.extend(contact_warnings(contacts, &p.mechanism, |v| p.written.said(v), false));
         let sum = &s.summary;
+        let [max_shaking_force, max_shaking_moment, max_shaking_force_balanced] =
+            largest(steps.iter().filter_map(|s| s.shaking.as_ref()));
         let driving = |v: &Vec<f64>| p.outputs.driving.then(|| Scalars::of(v));
         let inputs = (p.mechanism.drivers.iter().zip(&p.input_points))
             .map(|(d, point)| InputInfo::new(p, d, point.as_ref(), joint_names))
@@ -268,6 +286,9 @@ impl KinetostaticsResult {
                 near_singular_inputs: sum.near_singular.iter().map(|v| Scalars::of(v)).collect(),
                 max_jacobian_condition: sum.max_condition,
                 max_scaled_condition: sum.max_scaled_condition,
+                max_shaking_force,
+                max_shaking_moment,
+                max_shaking_force_balanced,
             },
             accuracy: KinetostaticsAccuracy {
                 virtual_power_residual: sum.virtual_power_residual,
@@ -278,6 +299,10 @@ impl KinetostaticsResult {
             },
             notes,
             assembled_points: p.assembled.as_ref().map(|a| a.points.clone()),
+            counterweights: p
+                .balance
+                .as_ref()
+                .map(|(_, w)| w.iter().map(|w| CounterweightDto::new(w, &p.body_names)).collect()),
         }
     }
 }
@@ -322,6 +347,7 @@ impl StepDto {
                 .filter(|_| !p.tracked.is_empty())
                 .map(|m| states(&p.mechanism, &p.tracked, [&m.q, &m.qd, &m.qdd])),
             contacts,
+            shaking: s.kinematics.as_ref().filter(|_| !s.singular).and_then(|m| ShakingDto::new(p, m)),
         }
     }
 }

@@ -6,7 +6,8 @@ use serde_json::Value;
 
 /// The CSV table of a stored result: one row per step; columns input(s),
 /// driving action(s), I*, M*, condition number, fx, fy, moment per joint
-/// and, where asked, each body's motion; a singular step's cells are empty.
+/// and, where asked, the shaking force and moment (and once balanced) and
+/// each body's motion; a singular step's cells are empty.
 pub fn csv_table(result: &Value) -> (Vec<String>, Vec<Vec<String>>) {
     let steps = result["steps"].as_array().cloned().unwrap_or_default();
     if steps.is_empty() {
@@ -39,6 +40,14 @@ pub fn csv_table(result: &Value) -> (Vec<String>, Vec<Vec<String>>) {
     for j in &joints {
         header.extend([format!("{j}_fx_N"), format!("{j}_fy_N"), format!("{j}_moment_N_m")]);
     }
+    let has = |key: &str| steps.iter().any(|s| !s["shaking"][key].is_null());
+    let (shaking, balanced) = (has("force"), has("balanced_force"));
+    if shaking {
+        header.extend(["shaking_fx_N", "shaking_fy_N", "shaking_moment_N_m"].map(String::from));
+    }
+    if balanced {
+        header.extend(["balanced_fx_N", "balanced_fy_N"].map(String::from));
+    }
     for b in &bodies {
         header.extend(MOTION.iter().map(|(field, unit)| format!("{b}_{field}_{unit}")));
     }
@@ -51,6 +60,13 @@ pub fn csv_table(result: &Value) -> (Vec<String>, Vec<Vec<String>>) {
             }
             row.extend([cell(&s["reduced_inertia"]), cell(&s["reduced_torque"]), cell(&s["jacobian_condition"])]);
             row.extend(list(&s["reactions"], joints.len(), &["fx", "fy", "moment"]));
+            let f = |key: &str, k: usize| cell(&s["shaking"][key][k]);
+            if shaking {
+                row.extend([f("force", 0), f("force", 1), cell(&s["shaking"]["moment"])]);
+            }
+            if balanced {
+                row.extend([f("balanced_force", 0), f("balanced_force", 1)]);
+            }
             row.extend(list(&s["kinematics"], bodies.len(), &MOTION.map(|(field, _)| field)));
             row
         })
