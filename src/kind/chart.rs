@@ -109,6 +109,32 @@ pub struct Chart {
     pub rules: Vec<Rule>,
     pub arrows: Vec<Arrow>,
     pub marks: Vec<Mark>,
+    /// Pictures shown one after the other over what the chart draws (a
+    /// mechanism in motion), on the same axes.
+    pub animation: Option<Animation>,
+}
+
+/// A chart's frames, played in a loop.
+#[derive(Clone, Debug)]
+pub struct Animation {
+    /// One loop, s.
+    pub seconds: f64,
+    pub frames: Vec<Frame>,
+}
+
+/// What one frame draws, from when it is shown (`at`, a fraction of the
+/// loop, growing from 0 frame by frame) until the next.
+#[derive(Clone, Debug)]
+pub struct Frame {
+    pub at: f64,
+    /// What it shows (the input angle, the time), written at the top right.
+    pub caption: String,
+    /// The step of the result it draws.
+    pub step: usize,
+    pub fills: Vec<Fill>,
+    pub lines: Vec<Line>,
+    pub arrows: Vec<Arrow>,
+    pub marks: Vec<Mark>,
 }
 
 impl Chart {
@@ -124,6 +150,7 @@ impl Chart {
             rules: Vec::new(),
             arrows: Vec::new(),
             marks: Vec::new(),
+            animation: None,
         }
     }
     pub fn line(mut self, label: impl Into<String>, points: Vec<(f64, f64)>, pen: Pen) -> Self {
@@ -144,7 +171,8 @@ impl Chart {
         self
     }
 
-    /// The smallest box holding every point, line, fill, arrow and rule.
+    /// The smallest box holding every point, line, fill, arrow and rule, of
+    /// every frame too.
     pub fn bounds(&self) -> Option<[f64; 4]> {
         let mut b = [f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY];
         let mut add = |(x, y): (f64, f64)| {
@@ -152,10 +180,14 @@ impl Chart {
                 b = [b[0].min(x), b[1].max(x), b[2].min(y), b[3].max(y)];
             }
         };
-        self.lines.iter().flat_map(|l| &l.points).for_each(|p| add(*p));
-        self.fills.iter().flat_map(|f| &f.points).for_each(|p| add(*p));
-        self.arrows.iter().for_each(|a| [a.from, a.to].into_iter().for_each(&mut add));
-        self.marks.iter().for_each(|m| add(m.at));
+        let frames = self.animation.iter().flat_map(|a| &a.frames);
+        let lines = self.lines.iter().chain(frames.clone().flat_map(|f| &f.lines));
+        lines.flat_map(|l| &l.points).for_each(|p| add(*p));
+        let fills = self.fills.iter().chain(frames.clone().flat_map(|f| &f.fills));
+        fills.flat_map(|f| &f.points).for_each(|p| add(*p));
+        let arrows = self.arrows.iter().chain(frames.clone().flat_map(|f| &f.arrows));
+        arrows.for_each(|a| [a.from, a.to].into_iter().for_each(&mut add));
+        self.marks.iter().chain(frames.flat_map(|f| &f.marks)).for_each(|m| add(m.at));
         for r in &self.rules {
             match r.at {
                 Level::X(x) if x.is_finite() => {

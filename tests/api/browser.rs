@@ -224,3 +224,64 @@ fn chromium_in_spanish_reads_and_fills_the_pages_with_decimal_commas() {
         assert!(text.contains("eje de reducción") || text.contains("inercia reducida"), "{path}: {text}");
     }
 }
+
+/// The numbers of attribute `name` of the root `<svg>`.
+fn root_numbers(svg: &str, name: &str) -> Vec<f64> {
+    let head = &svg[..svg.find('>').unwrap()];
+    let at = head.find(&format!(" {name}=\"")).unwrap_or_else(|| panic!("no {name} in {head}")) + name.len() + 3;
+    head[at..].split('"').next().unwrap().split(' ').map(|v| v.parse().unwrap()).collect()
+}
+
+/// The kinetostatics job's mechanism plays in Chromium (issue 51): paused
+/// at two times of its loop, each shows the one frame of that time, the two
+/// screenshots differ, and at each the crank pin's dot is drawn where the
+/// result puts the point A it follows (the root's data-range and data-plot
+/// map metres to the picture; the viewBox is twice the CSS size).
+#[test]
+fn chromium_plays_a_mechanisms_motion_where_the_result_puts_it() {
+    let Some((dir, port, mut service)) = served() else { return };
+    let mut body = request("k1_offset_slider_crank");
+    body["track"] = json!(["A"]);
+    let (status, text) = http(port, "POST", "/v1/kinetostatics", &body.to_string()).unwrap();
+    assert_eq!(status, 201, "{text}");
+    let job: Value = serde_json::from_str(&text).unwrap();
+    let (id, steps) = (job["id"].as_str().unwrap(), job["result"]["steps"].as_array().unwrap());
+    let path = format!("/v1/jobs/{id}/plots/motion.svg");
+    let (_, svg) = http(port, "GET", &path, "").unwrap();
+    let four = |name: &str| -> [f64; 4] { root_numbers(&svg, name).try_into().expect("four numbers") };
+    let ([x0, x1, y0, y1], [left, top, right, bottom]) = (four("data-range"), four("data-plot"));
+    let seconds: f64 = svg.split("dur=\"").nth(1).unwrap().split('s').next().unwrap().parse().unwrap();
+    // Every step is a frame, shown for an equal share of the loop: the middle of frames 3 and 8.
+    let shown = [3usize, 8];
+    let time = |k: usize| (k as f64 + 0.5) / steps.len() as f64 * seconds;
+    let on_screen = |k: usize| {
+        let a = &steps[k]["points"][0];
+        let (x, y) = (a["x"].as_f64().unwrap(), a["y"].as_f64().unwrap());
+        let px = (left + (x - x0) / (x1 - x0) * (right - left)) / 2.0;
+        let py = (top + (y1 - y) / (y1 - y0) * (bottom - top)) / 2.0;
+        json!([px, py])
+    };
+    let out = concat!(env!("CARGO_MANIFEST_DIR"), "/target/screenshots");
+    let plan = json!({
+        "base": format!("http://127.0.0.1:{port}"), "out": out,
+        "motions": [{"name": "motion-k1", "path": path, "times": shown.map(time),
+                     "probes": shown.map(|k| json!([on_screen(k)]))}],
+    });
+    let plan_file = dir.path().join("plan.json");
+    std::fs::write(&plan_file, plan.to_string()).unwrap();
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/clients/browser.py");
+    let run = Command::new("python3").arg(script).arg(&plan_file).output().unwrap();
+    let _ = service.kill();
+    let _ = service.wait();
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    let report: Value = serde_json::from_slice(&run.stdout).unwrap();
+    let r = &report["motions"]["motion-k1"];
+    assert!(r.get("error").is_none(), "{}", r["error"]);
+    assert_eq!(r["console"], json!([]), "no console message");
+    let frames = r["frames"].as_array().unwrap();
+    for (f, k) in frames.iter().zip(shown) {
+        assert_eq!(f["visible"], json!([k]), "at {} s only frame {k} shows: {f}", f["time"]);
+        assert_eq!(f["hits"][0], json!(["circle", k]), "A's dot of frame {k} where the result puts A: {f}");
+    }
+    assert_ne!(frames[0]["screenshot_sha256"], frames[1]["screenshot_sha256"], "the two frames differ");
+}

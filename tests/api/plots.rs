@@ -130,7 +130,8 @@ async fn kinetostatics_plots_draw_the_mechanism_at_any_step_and_refuse_a_step_be
         assert!(names.contains(&expected), "{expected} in {names:?}");
     }
     every_plot_draws(&app, &plots).await;
-    let texts = svg_texts(&app, &format!("/v1/jobs/{id}/plots/mechanism.svg?step=3"), &plots.last().unwrap().1).await;
+    let title = &plots.iter().find(|p| p.0 == "mechanism").unwrap().1;
+    let texts = svg_texts(&app, &format!("/v1/jobs/{id}/plots/mechanism.svg?step=3"), title).await;
     // K1 has 12 steps over 360°: step 3 is at 90°.
     assert!(texts.iter().any(|t| t.contains("step 3 of 0 to 11: input 90°")), "{texts:?}");
     for body in ["crank", "rod", "piston"] {
@@ -157,7 +158,7 @@ async fn a_mechanism_in_dynamics_stores_its_bodies_positions_and_draws_their_pat
     let app = TestApp::new().await;
     let (id, plots) = plots_of(&app, "/v1/dynamics", &request("p68_two_link_arm")).await;
     let names: Vec<&str> = plots.iter().map(|p| p.0.as_str()).collect();
-    assert_eq!(names, ["angle", "speed", "phase", "energy", "reactions", "mechanism", "path-elbow"]);
+    assert_eq!(names, ["angle", "speed", "phase", "energy", "reactions", "mechanism", "motion", "path-elbow"]);
     every_plot_draws(&app, &plots).await;
     let job = app.get(&format!("/v1/jobs/{id}")).await.json();
     for s in job["result"]["machine"]["samples"].as_array().unwrap() {
@@ -234,4 +235,53 @@ async fn the_energy_residual_is_stored_at_every_sample_and_agrees_with_the_resul
     assert!((last - by_quadrature).abs() < 1e-9, "{last} against {by_quadrature}");
     // Along the way the balance holds to the same order: 1e-8, ten times the agreement above.
     assert!(samples.iter().all(|s| s["energy_residual"].as_f64().unwrap().abs() < 1e-8));
+}
+
+/// The frames of a motion SVG: (step, when it shows, a fraction of the
+/// loop) in order, and the loop's duration in seconds; each frame's
+/// `<animate>` turns it visible at its time and hidden at the next's.
+fn frames(svg: &str) -> (Vec<(usize, f64)>, f64) {
+    let doc = roxmltree::Document::parse(svg).unwrap();
+    let mut out = Vec::new();
+    let mut seconds = 0.0;
+    for g in doc.descendants().filter(|n| n.has_tag_name("g") && n.attribute("data-step").is_some()) {
+        let step = g.attribute("data-step").unwrap().parse().unwrap();
+        let a = g.children().find(|n| n.has_tag_name("animate")).expect("each frame animated");
+        assert_eq!((a.attribute("attributeName"), a.attribute("calcMode")), (Some("visibility"), Some("discrete")));
+        seconds = a.attribute("dur").unwrap().trim_end_matches('s').parse().unwrap();
+        let values: Vec<&str> = a.attribute("values").unwrap().split(';').collect();
+        let times: Vec<f64> = a.attribute("keyTimes").unwrap().split(';').map(|t| t.parse().unwrap()).collect();
+        let on = values.iter().position(|v| *v == "visible").unwrap();
+        out.push((step, times[on]));
+    }
+    (out, seconds)
+}
+
+/// A sweep of 360 steps plays in 120 frames (every third step) at equal
+/// shares of its 4 s loop; a dynamics run shows each sample at its own
+/// time (t − t₀ over the run), the run played in 2 to 20 s.
+#[tokio::test]
+async fn a_motion_shows_its_steps_in_turn_at_their_times() {
+    let app = TestApp::new().await;
+    let mut body = request("k1_offset_slider_crank");
+    body["input"]["steps"] = json!(360);
+    let (id, _) = plots_of(&app, "/v1/kinetostatics", &body).await;
+    let svg = app.get(&format!("/v1/jobs/{id}/plots/motion.svg")).await.text;
+    let (shown, seconds) = frames(&svg);
+    assert_eq!(seconds, 4.0);
+    assert_eq!(shown.len(), 120);
+    for (i, (step, at)) in shown.iter().enumerate() {
+        assert_eq!((*step, *at), (3 * i, i as f64 / 120.0), "frame {i}");
+    }
+    let (id, _) = plots_of(&app, "/v1/dynamics", &request("p68_two_link_arm")).await;
+    let job = app.get(&format!("/v1/jobs/{id}")).await.json();
+    let samples = job["result"]["machine"]["samples"].as_array().unwrap();
+    let t = |k: usize| samples[k]["t"].as_f64().unwrap();
+    let run = t(samples.len() - 1) - t(0);
+    let (shown, seconds) = frames(&app.get(&format!("/v1/jobs/{id}/plots/motion.svg")).await.text);
+    assert_eq!(seconds, run.clamp(2.0, 20.0));
+    assert_eq!(shown.len(), samples.len().min(120));
+    for (step, at) in shown {
+        assert!((at - (t(step) - t(0)) / run).abs() < 1e-12, "sample {step} shows at its time: {at}");
+    }
 }

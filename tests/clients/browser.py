@@ -10,11 +10,16 @@ on a phone) and saves screenshots and PDFs; the assertions live in the Rust test
 
 Usage: python3 browser.py PLAN.json   PLAN: {"base", "out", "pages": [{"path", "name",
 "selectors"}], "forms": [{"path", "name", "fill", "submit", "selectors"?}], "svgs": [PATH],
+"motions": [{"path", "name", "times": [s], "probes": [[[x, y]] per time]}],
 "language"?: an Accept-Language every request of the run sends}
+A motion is an animated SVG (SMIL) opened alone at 820 x 520 CSS px: its animations paused
+at each time, it reports which frames (g[data-step]) are visible, the element under each
+probe (CSS px) with the frame it belongs to, and a screenshot's digest.
 Exit 0 when the browser ran (a page's own trouble is reported in its "error"), else 1.
 """
 import base64
 import contextlib
+import hashlib
 import json
 import os
 import select
@@ -35,6 +40,12 @@ FOCUS = """(() => { const el = document.querySelector('[name=' + CSS.escape(%s) 
 CENTRE = """(() => { const el = document.querySelector(%s);
   if (!el) return null; el.scrollIntoView({block: 'center'}); const r = el.getBoundingClientRect();
   return [r.left + r.width / 2, r.top + r.height / 2]; })()"""
+PAUSE_AT = """(() => { const s = document.documentElement; s.pauseAnimations(); s.setCurrentTime(%s);
+  return Array.from(document.querySelectorAll('g[data-step]'))
+    .filter(g => getComputedStyle(g).visibility === 'visible').map(g => +g.dataset.step); })()"""
+HIT = """(() => { const e = document.elementFromPoint(%s, %s); if (!e) return null;
+  const g = e.closest('g[data-step]'); return [e.localName, g ? +g.dataset.step : null]; })()"""
+TWO_FRAMES = "new Promise(r => requestAnimationFrame(() => requestAnimationFrame(() => r(true))))"
 
 
 class Fatal(Exception):
@@ -305,6 +316,20 @@ def svg_report(b, base, out, path):
             "parsererror": b.evaluate("document.getElementsByTagNameNS('*', 'parsererror').length > 0")}
 
 
+def motion_report(b, base, out, item):
+    b.goto(base + item["path"])
+    b.call("Emulation.setDeviceMetricsOverride", width=820, height=520, deviceScaleFactor=1, mobile=False)
+    frames = []
+    for k, (t, probes) in enumerate(zip(item["times"], item["probes"])):
+        visible = b.evaluate(PAUSE_AT % json.dumps(t))
+        b.call("Runtime.evaluate", expression=TWO_FRAMES, awaitPromise=True)  # drawn as paused
+        shot = b.call("Page.captureScreenshot", format="png")["data"]
+        save(os.path.join(out, f"{item['name']}-{k}.png"), shot)
+        frames.append({"time": t, "visible": visible, "screenshot_sha256": hashlib.sha256(shot.encode()).hexdigest(),
+                       "hits": [b.evaluate(HIT % (x, y)) for x, y in probes]})
+    return {**b.facts(), "frames": frames}
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -315,12 +340,13 @@ def main():
     jobs = [("pages", p["name"], page_report, p) for p in plan.get("pages", [])]
     jobs += [("forms", f["name"], form_report, f) for f in plan.get("forms", [])]
     jobs += [("svgs", path, svg_report, path) for path in plan.get("svgs", [])]
+    jobs += [("motions", m["name"], motion_report, m) for m in plan.get("motions", [])]
     try:
         b, failure = Browser(), None
     except Fatal as e:
         sys.exit(f"browser.py: {e}")
     try:
-        report = {"pages": {}, "forms": {}, "svgs": {}, "chromium": b.start()}
+        report = {"pages": {}, "forms": {}, "svgs": {}, "motions": {}, "chromium": b.start()}
         if plan.get("language"):  # every request of the run asks for this language, as a browser set to it does
             b.call("Network.setExtraHTTPHeaders", headers={"Accept-Language": plan["language"]})
         for section, name, run, item in jobs:

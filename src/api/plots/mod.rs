@@ -11,6 +11,7 @@
 //! irregularity, I the flywheel's constant inertia, T₀ the kinetic energy at
 //! φ = 0.
 
+mod animate;
 pub mod svg;
 
 use super::AppState;
@@ -128,7 +129,7 @@ pub async fn render(state: &AppState, id: &str, name: &str, options: Options) ->
         return Err(ApiError::NoPlot { id: id.into(), name: name.into(), known });
     };
     let lang = crate::i18n::current();
-    tokio::task::spawn_blocking(move || crate::i18n::within_sync(lang, || svg::render(&chart)))
+    tokio::task::spawn_blocking(move || crate::i18n::within_sync(lang, || animate::render(&chart)))
         .await
         .map_err(|e| ApiError::Internal(format!("plot: {e}")))?
         .map_err(ApiError::Internal)

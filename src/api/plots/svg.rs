@@ -17,10 +17,10 @@ pub const SIZE: (u32, u32) = (820, 520);
 /// Drawn at this many times the size, then scaled down by the SVG's
 /// `viewBox`: plotters places everything on whole pixels, which made
 /// curves visibly stepped at 1×.
-const S: i32 = 2;
+pub(super) const S: i32 = 2;
 
 /// `v` px of the plot in the backend's pixels.
-const fn px(v: i32) -> i32 {
+pub(super) const fn px(v: i32) -> i32 {
     v * S
 }
 /// Okabe and Ito's palette (told apart with any colour vision), yellow left out.
@@ -34,20 +34,21 @@ const PALETTE: [RGBColor; 8] = [
     RGBColor(0, 0, 0),
     RGBColor(136, 136, 136),
 ];
-const FONT: &str = "sans-serif";
+pub(super) const FONT: &str = "sans-serif";
 /// A curve of at most this many points has each drawn as a dot.
 const FEW: usize = 40;
 /// Approximate width of a character of the labels, in font sizes.
 const CHAR_WIDTH: f64 = 0.56;
 
-type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
-type Failure = Box<dyn std::error::Error>;
+pub(super) type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+pub(super) type Failure = Box<dyn std::error::Error>;
 
 pub fn color(k: usize) -> RGBColor {
     PALETTE[k % PALETTE.len()]
 }
 
-/// The chart as an SVG document with a `<title>`.
+/// The chart as an SVG document with a `<title>` (an animated chart's
+/// frames left to [`super::animate`]).
 pub fn render(chart: &Chart) -> Result<String, String> {
     let mut svg = String::new();
     {
@@ -68,12 +69,14 @@ pub fn render(chart: &Chart) -> Result<String, String> {
     })
 }
 
+/// What plotters wrote before its closing `</svg>`.
+pub(super) fn inner_end(body: &str) -> &str {
+    body.trim_end().strip_suffix("</svg>").unwrap_or(body)
+}
+
 fn draw(root: &Area, chart: &Chart) -> Result<(), Failure> {
     root.fill(&WHITE)?;
-    let legend: Vec<&Line> = chart.lines.iter().filter(|l| l.label.is_some()).collect();
-    let head = if chart.subtitle.is_some() { 58 } else { 36 };
-    let (top, rest) = root.split_vertically(px(head));
-    let (plot, foot) = rest.split_vertically(px(SIZE.1 as i32 - head - 22 * legend_rows(&legend) as i32 - 6));
+    let (top, plot, foot) = areas(root, chart);
     top.draw(&Text::new(clean(&chart.title), (px(16), px(10)), (FONT, px(19)).into_font().color(&BLACK)))?;
     if let Some(sub) = &chart.subtitle {
         top.draw(&Text::new(clean(sub), (px(16), px(36)), (FONT, px(14)).into_font().color(&RGBColor(60, 60, 60))))?;
@@ -82,19 +85,34 @@ fn draw(root: &Area, chart: &Chart) -> Result<(), Failure> {
     let mut c = axes(&plot, chart, range)?;
     data(root, &mut c, chart, range, plot.dim_in_pixel().0 as usize / S as usize)?;
     labels(root, &c, chart, range, plot.dim_in_pixel().0 as usize / S as usize)?;
-    draw_legend(&foot, &legend)
+    draw_legend(&foot, &chart.lines.iter().filter(|l| l.label.is_some()).collect::<Vec<_>>())
 }
 
-type Context<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+/// The title's band, the plot's and the legend's below.
+pub(super) fn areas<'a>(root: &Area<'a>, chart: &Chart) -> (Area<'a>, Area<'a>, Area<'a>) {
+    let legend: Vec<&Line> = chart.lines.iter().filter(|l| l.label.is_some()).collect();
+    let head = if chart.subtitle.is_some() { 58 } else { 36 };
+    let (top, rest) = root.split_vertically(px(head));
+    let (plot, foot) = rest.split_vertically(px(SIZE.1 as i32 - head - 22 * legend_rows(&legend) as i32 - 6));
+    (top, plot, foot)
+}
 
-/// The plot's frame: axes with their names and ticks, a light grid.
-fn axes<'a, 'b>(plot: &'a Area<'b>, chart: &Chart, [x0, x1, y0, y1]: [f64; 4]) -> Result<Context<'a, 'b>, Failure> {
-    let mut c = ChartBuilder::on(plot)
+pub(super) type Context<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// The plot's coordinates over `plot`, its axes' room left around it.
+pub(super) fn builder<'a, 'b>(plot: &'a Area<'b>, [x0, x1, y0, y1]: [f64; 4]) -> Result<Context<'a, 'b>, Failure> {
+    Ok(ChartBuilder::on(plot)
         .margin_right(px(24))
         .margin_top(px(6))
         .x_label_area_size(px(46))
         .y_label_area_size(px(78))
-        .build_cartesian_2d(x0..x1, y0..y1)?;
+        .build_cartesian_2d(x0..x1, y0..y1)?)
+}
+
+/// The plot's frame: axes with their names and ticks, a light grid.
+fn axes<'a, 'b>(plot: &'a Area<'b>, chart: &Chart, range: [f64; 4]) -> Result<Context<'a, 'b>, Failure> {
+    let mut c = builder(plot, range)?;
+    let [x0, x1, y0, y1] = range;
     let (fx, fy) = (ticks(x1 - x0), ticks(y1 - y0));
     c.configure_mesh()
         .x_desc(clean(&chart.x.label()))
@@ -111,7 +129,7 @@ fn axes<'a, 'b>(plot: &'a Area<'b>, chart: &Chart, [x0, x1, y0, y1]: [f64; 4]) -
 }
 
 /// Shaded areas, reference lines, curves (thinned to `columns`), arrows and dots.
-fn data(
+pub(super) fn data(
     root: &Area,
     c: &mut Context,
     chart: &Chart,
@@ -143,7 +161,13 @@ fn data(
 
 /// The labels of reference lines, arrows and marks, each where it overlaps
 /// no other label and no dot.
-fn labels(root: &Area, c: &Context, chart: &Chart, [x0, x1, y0, y1]: [f64; 4], columns: usize) -> Result<(), Failure> {
+pub(super) fn labels(
+    root: &Area,
+    c: &Context,
+    chart: &Chart,
+    [x0, x1, y0, y1]: [f64; 4],
+    columns: usize,
+) -> Result<(), Failure> {
     let mut placed = Placed::new(c.plotting_area().get_pixel_range());
     for m in chart.marks.iter().filter(|m| m.dot) {
         let p = c.backend_coord(&m.at);
@@ -182,7 +206,7 @@ fn labels(root: &Area, c: &Context, chart: &Chart, [x0, x1, y0, y1]: [f64; 4], c
 
 /// The axes' ranges: the chart's bounds with a margin, never empty; with
 /// equal scales, the shorter range widened so a metre is as long either way.
-fn ranges(chart: &Chart, (w, h): (u32, u32)) -> [f64; 4] {
+pub(super) fn ranges(chart: &Chart, (w, h): (u32, u32)) -> [f64; 4] {
     let [mut x0, mut x1, mut y0, mut y1] = chart.bounds().unwrap_or([0.0, 1.0, 0.0, 1.0]);
     for (lo, hi) in [(&mut x0, &mut x1), (&mut y0, &mut y1)] {
         let span = *hi - *lo;

@@ -1,13 +1,14 @@
 //! The plots of a dynamics job, from its stored samples: the angle and the
 //! speed against time with the events marked, the phase portrait ω(φ), and
 //! for a mechanism its joints' reactions, the path of each joint and the
-//! mechanism drawn at a sample over those paths.
+//! mechanism drawn at a sample over those paths, and moving over the run (SMIL).
 
 use crate::engine::model::Mechanism;
 use crate::i18n::{Msg, say};
 use crate::kind::chart::{Axis, Chart, Level, Listed, Pen};
 use crate::kind::plots::{Drawn, Job, Options, deg, magnitudes, no_step, num, reaction_series, rows, sig, xy};
 use crate::kinds::mechanism::drawing;
+use crate::kinds::mechanism::motion::{self, Still};
 use serde_json::Value;
 
 const MECHANISM: &str = "/machine/mechanism";
@@ -31,6 +32,7 @@ pub fn list(job: &Job) -> Vec<Listed> {
         && let Some(m) = drawing::model(job.request, MECHANISM)
     {
         out.push(Listed::new("mechanism", say("plot-dyn-mechanism")));
+        out.push(Listed::new("motion", say("plot-dyn-motion")));
         out.extend(
             moving(&m).map(|j| Listed::new(format!("path-{j}"), Msg::new("plot-dyn-path").arg("joint", j).text())),
         );
@@ -74,6 +76,7 @@ pub fn draw(job: &Job, name: &str, options: &Options) -> Drawn {
             ),
         "reactions" => reactions(r, title),
         "mechanism" => return mechanism(job, title, options.step.unwrap_or(0)),
+        "motion" => return motion(job, title),
         path => return Ok(paths(job, title, Some(path.trim_start_matches("path-")))),
     }))
 }
@@ -161,6 +164,32 @@ fn paths(job: &Job, title: String, only: Option<&str>) -> Option<Chart> {
         );
     }
     Some(c)
+}
+
+/// The mechanism moving over the run, each sample shown at its time: the
+/// run played in its own time, slowed or sped into 2 to 20 s.
+fn motion(job: &Job, title: String) -> Drawn {
+    let Some(m) = drawing::model(job.request, MECHANISM) else { return Ok(None) };
+    let samples = machine_samples(job.result);
+    let poses: Vec<_> = samples.iter().map(|s| drawing::poses(&m, rows(s, "bodies"))).collect();
+    let t = |k: usize| samples.get(k).and_then(|s| num(s, "t")).unwrap_or(0.0);
+    let (t0, run) = (t(0), t(samples.len().saturating_sub(1)) - t(0));
+    let stills: Vec<Still> = motion::shown(samples.len())
+        .map(|k| Still {
+            step: k,
+            at: if run > 0.0 { ((t(k) - t0) / run).clamp(0.0, 1.0) } else { 0.0 },
+            caption: Msg::new("plot-dyn-motion-at").arg("t", sig(t(k))).arg("step", k).text(),
+            poses: poses[k].clone(),
+            reactions: rows(&samples[k], "reactions"),
+            contacts: rows(&samples[k], "contacts"),
+        })
+        .collect();
+    let mut paths = motion::joint_paths(&m, &poses);
+    paths.extend(motion::tracked_paths(samples));
+    let seconds = run.clamp(2.0, 20.0);
+    let mut c = motion::motion(&m, &stills, paths, seconds, title);
+    c.subtitle = Some(Msg::new("plot-motion-note").arg("seconds", sig(seconds)).text());
+    Ok(Some(c))
 }
 
 fn mechanism(job: &Job, title: String, step: usize) -> Drawn {

@@ -1,13 +1,15 @@
 //! The plots of a kinetostatics job, from its stored steps: the driving
 //! action and every joint's reaction against the input, each joint's polar
 //! diagram (f_x against f_y over the sweep), I*(φ) and M*(φ), the shaking
-//! force's polar diagram (before and after balancing) and moment, and the
-//! mechanism drawn at a step with its reactions to scale.
+//! force's polar diagram (before and after balancing) and moment, the
+//! mechanism drawn at a step with its reactions to scale, and moving over
+//! the sweep (SMIL).
 
 use crate::i18n::{Msg, say};
 use crate::kind::chart::{Axis, Chart, Level, Listed, Mark, Pen};
 use crate::kind::plots::{Drawn, Job, Options, deg, magnitudes, no_step, num, reaction_series, rows, sig, xy};
 use crate::kinds::mechanism::drawing;
+use crate::kinds::mechanism::motion::{self, Still};
 use serde_json::Value;
 
 pub fn list(job: &Job) -> Vec<Listed> {
@@ -35,6 +37,9 @@ pub fn list(job: &Job) -> Vec<Listed> {
     }
     if has("kinematics") && drawing::model(job.request, "/mechanism").is_some() {
         out.push(Listed::new("mechanism", say("plot-ks-mechanism")));
+        if steps.len() > 1 {
+            out.push(Listed::new("motion", say("plot-ks-motion")));
+        }
     }
     out
 }
@@ -54,6 +59,7 @@ pub fn draw(job: &Job, name: &str, options: &Options) -> Drawn {
             .line(say("plot-ks-reduced-torque-line"), along(r, "reduced_torque"), Pen::solid(0))
             .rule(Level::Y(0.0), "", Pen::dashed(7)),
         "mechanism" => return mechanism(job, title, options.step.unwrap_or(0)),
+        "motion" => return motion(job, title),
         "shaking" => shaking(r, title),
         "shaking-moment" => Chart::new(title, input_axis(r), Axis::new(say("plot-ks-shaking-moment-axis"), "N·m"))
             .line("M", xy(rows(r, "steps"), input(r), |s| num(s.get("shaking")?, "moment")), Pen::solid(0))
@@ -171,6 +177,36 @@ fn shaking(r: &Value, title: String) -> Chart {
     let largest = r.get("summary").and_then(|s| num(s, "max_shaking_force")).unwrap_or(0.0);
     c.subtitle(Msg::new("plot-ks-polar-note").arg("value", sig(largest)).text())
 }
+
+/// The mechanism moving over the sweep, one loop in [`SWEEP_SECONDS`].
+fn motion(job: &Job, title: String) -> Drawn {
+    let Some(m) = drawing::model(job.request, "/mechanism") else { return Ok(None) };
+    let steps = rows(job.result, "steps");
+    let poses: Vec<_> = steps.iter().map(|s| drawing::poses(&m, rows(s, "kinematics"))).collect();
+    let shown: Vec<usize> = motion::shown(steps.len()).collect();
+    let unit = if angular(job.result) { "°" } else { " m" };
+    let stills: Vec<Still> = (shown.iter().enumerate())
+        .map(|(i, &k)| Still {
+            step: k,
+            at: i as f64 / shown.len() as f64,
+            caption: Msg::new("plot-ks-motion-at")
+                .arg("value", input(job.result)(&steps[k]).map_or(String::new(), |x| format!("{}{unit}", sig(x))))
+                .arg("step", k)
+                .text(),
+            poses: poses[k].clone(),
+            reactions: rows(&steps[k], "reactions"),
+            contacts: rows(&steps[k], "contacts"),
+        })
+        .collect();
+    let mut paths = motion::joint_paths(&m, &poses);
+    paths.extend(motion::tracked_paths(steps));
+    let mut c = motion::motion(&m, &stills, paths, SWEEP_SECONDS, title);
+    c.subtitle = Some(Msg::new("plot-motion-note").arg("seconds", SWEEP_SECONDS).text());
+    Ok(Some(c))
+}
+
+/// How long the motion takes to play the sweep once, s.
+const SWEEP_SECONDS: f64 = 4.0;
 
 fn mechanism(job: &Job, title: String, step: usize) -> Drawn {
     let steps = rows(job.result, "steps");

@@ -65,10 +65,34 @@ pub fn point_of(m: &Mechanism, poses: &[Option<Pose>], j: &crate::engine::model:
 /// The mechanism at the poses, with the reactions (`joint`, `fx`, `fy`) as
 /// arrows, a contact's from its `point` in `contacts`.
 pub fn draw(m: &Mechanism, poses: &[Option<Pose>], reactions: &[Value], contacts: &[Value], title: String) -> Chart {
+    draw_to(m, poses, (reactions, contacts), title, None)
+}
+
+/// The sizes a drawing is made to: the mechanism's span (what sliders and
+/// lines are drawn in proportion to) and the force drawn a quarter of it long.
+#[derive(Clone, Copy, Debug)]
+pub struct Fixed {
+    pub span: f64,
+    pub force: f64,
+}
+
+/// The span of the joints at the poses (the largest of their x and y ranges).
+pub fn span(m: &Mechanism, poses: &[Option<Pose>]) -> f64 {
+    extent(&m.joints.iter().map(|j| point_of(m, poses, j)).collect::<Vec<_>>())
+}
+
+/// [`draw`] to the sizes `fixed` (every frame of a motion alike), or to its own.
+pub fn draw_to(
+    m: &Mechanism,
+    poses: &[Option<Pose>],
+    (reactions, contacts): (&[Value], &[Value]),
+    title: String,
+    fixed: Option<Fixed>,
+) -> Chart {
     let mut c = Chart::new(title, Axis::new("x", "m"), Axis::new("y", "m"));
     c.equal = true;
     let mut joints: Vec<Option<(f64, f64)>> = m.joints.iter().map(|j| point_of(m, poses, j)).collect();
-    let span = extent(&joints);
+    let span = fixed.map_or_else(|| extent(&joints), |f| f.span);
     for b in 1..m.bodies.len() {
         body(&mut c, m, poses, &joints, b);
     }
@@ -94,7 +118,7 @@ pub fn draw(m: &Mechanism, poses: &[Option<Pose>], reactions: &[Value], contacts
         }
         c = c.mark(at, j.name.clone());
     }
-    arrows(&mut c, m, &joints, reactions, span);
+    arrows(&mut c, m, &joints, reactions, (span, fixed.map(|f| f.force)));
     c
 }
 
@@ -172,9 +196,15 @@ fn slider(c: &mut Chart, at: (f64, f64), u: (f64, f64), span: f64, boxed: Option
 }
 
 /// The reactions at the joints: the force on the second body of each (as
-/// stored: `on` by `by`), the largest drawn as long as a quarter of the
-/// mechanism; the scale in the legend.
-fn arrows(c: &mut Chart, m: &Mechanism, joints: &[Option<(f64, f64)>], reactions: &[Value], span: f64) {
+/// stored: `on` by `by`), the largest (or `largest`) drawn as long as a
+/// quarter of the mechanism; the scale in the legend.
+fn arrows(
+    c: &mut Chart,
+    m: &Mechanism,
+    joints: &[Option<(f64, f64)>],
+    reactions: &[Value],
+    (span, largest): (f64, Option<f64>),
+) {
     let forces: Vec<((f64, f64), (f64, f64))> = reactions
         .iter()
         .filter_map(|r| {
@@ -182,7 +212,7 @@ fn arrows(c: &mut Chart, m: &Mechanism, joints: &[Option<(f64, f64)>], reactions
             Some((joints[k]?, (num(r, "fx")?, num(r, "fy")?)))
         })
         .collect();
-    let largest = forces.iter().map(|(_, f)| f.0.hypot(f.1)).fold(0.0, f64::max);
+    let largest = largest.unwrap_or_else(|| forces.iter().map(|(_, f)| f.0.hypot(f.1)).fold(0.0, f64::max));
     if largest <= 0.0 || !largest.is_finite() {
         return;
     }

@@ -9,6 +9,7 @@ mod energy;
 mod inputs;
 mod joints;
 mod loads;
+pub mod motion;
 mod points;
 mod reactions;
 pub mod track;
