@@ -1,10 +1,11 @@
 //! The exam problems of the course notes' flywheel chapter (excerpts in
-//! tests/fixtures/seeds/flywheel-exams.md), each with its printed answer.
+//! tests/fixtures/seeds/flywheel-exams.md), each a built-in template
+//! (library/exam-*.json) solved at its defaults, with its printed answer.
 //! Expected values are closed forms derived here, written next to each test;
 //! where the printed answer is wrong the test says why.
 
-use crate::helpers::{TestApp, close};
-use serde_json::{Value, json};
+use crate::helpers::{TestApp, close, template_request};
+use serde_json::Value;
 use std::f64::consts::PI;
 
 fn result(job: Value) -> Value {
@@ -23,17 +24,7 @@ fn result(job: Value) -> Value {
 #[tokio::test]
 async fn march_2010_flywheel_on_a_faster_shaft() {
     let app = TestApp::new().await;
-    let r = result(
-        app.flywheel(&json!({
-            "mean_speed": "210 rpm", "irregularity": 0.05,
-            "torques": [
-                {"name": "3FR sin", "value": {"segments": [{"from": 0, "to": "pi", "expr": "3*750*0.1*sin(phi)"}]}},
-                {"name": "resisting torque on shaft 2", "balance": true, "ratio": 2}
-            ],
-            "flywheel": {"ratio": 2}
-        }))
-        .await,
-    );
+    let r = result(app.flywheel(&template_request("exam-2010-march")).await);
     close(&r["balance_torque"], -450.0 / (4.0 * PI), 1e-12, "C_r on shaft 2 (printed 35.8099)");
     close(&r["crossings"][0], 0.3239461069319807, 1e-12, "φ₁ (printed 0.32395)");
     close(&r["areas"][0]["work"], -11.49794231003253, 1e-9, "A1 (printed −11.498)");
@@ -54,17 +45,7 @@ async fn march_2010_flywheel_on_a_faster_shaft() {
 #[tokio::test]
 async fn january_2012_motor_on_a_faster_shaft_and_existing_inertia() {
     let app = TestApp::new().await;
-    let r = result(
-        app.flywheel(&json!({
-            "mean_speed": "80 rpm", "irregularity": 0.1,
-            "torques": [
-                {"name": "resisting", "value": {"segments": [{"from": "3*pi/4", "to": "5*pi/4", "expr": "360*cos(phi)"}]}},
-                {"name": "motor", "balance": true, "ratio": 3}
-            ],
-            "existing_inertia": "3.6 kg*m^2"
-        }))
-        .await,
-    );
+    let r = result(app.flywheel(&template_request("exam-2012-january")).await);
     close(&r["balance_torque"], 360.0 * 2f64.sqrt() / (6.0 * PI), 1e-12, "M_m (printed 27)");
     close(&r["energy_fluctuation"], 381.8376618407357, 1e-12, "ΔE (printed 381.838)");
     close(&r["inertia_approximate"], 54.40534292380227, 1e-10, "I (printed 54.405)");
@@ -84,17 +65,7 @@ async fn january_2012_motor_on_a_faster_shaft_and_existing_inertia() {
 #[tokio::test]
 async fn march_2012_flywheel_on_the_motor_shaft() {
     let app = TestApp::new().await;
-    let r = result(
-        app.flywheel(&json!({
-            "mean_speed": "100 rpm", "irregularity": 0.05,
-            "torques": [
-                {"name": "load", "value": {"segments": [{"from": "pi/4", "to": "pi/2", "expr": "-10*0.15*cos(phi)"}], "unit": "kN*m"}},
-                {"name": "motor", "balance": true, "ratio": 10}
-            ],
-            "flywheel": {"ratio": 10}
-        }))
-        .await,
-    );
+    let r = result(app.flywheel(&template_request("exam-2012-march")).await);
     close(&r["balance_torque"], 6.992310535838563, 1e-12, "C_m (printed 6.9923)");
     close(&r["crossings"][1], 1.5241640241796346, 1e-12, "φ₁ (printed 1.524)");
     close(&r["areas"][0]["work"], 54.91747852752235, 1e-12, "A1 (printed 54.917)");
@@ -115,17 +86,7 @@ async fn march_2012_flywheel_on_the_motor_shaft() {
 #[tokio::test]
 async fn may_2013_jump_across_zero_and_disk_sizing() {
     let app = TestApp::new().await;
-    let r = result(
-        app.flywheel(&json!({
-            "mean_speed": "60 rpm", "irregularity": 0.05,
-            "torques": [
-                {"name": "F", "value": {"segments": [{"from": "180 deg", "to": "270 deg", "expr": "-1000*(10/60)*0.120*cos(phi)"}]}},
-                {"name": "motor", "balance": true}
-            ],
-            "flywheel": {"disk": {"density": "7.2 g/cm^3", "rim_speed": "1.5 m/s"}}
-        }))
-        .await,
-    );
+    let r = result(app.flywheel(&template_request("exam-2013-may")).await);
     close(&r["balance_torque"], -10.0 / PI, 1e-12, "C_m (printed −10/π)");
     close(&r["crossings"][0], PI, 1e-15, "crossing at the jump θ = π");
     close(&r["crossings"][1], 4.552554353999552, 1e-12, "θ₁ (printed 4.5526)");
@@ -155,20 +116,7 @@ async fn may_2013_jump_across_zero_and_disk_sizing() {
 #[tokio::test]
 async fn may_2014_four_stroke_engine_printed_answer_is_wrong() {
     let app = TestApp::new().await;
-    let gas = "4*1500*0.04*sin(4*phi)";
-    let r = result(
-        app.flywheel(&json!({
-            "mean_speed": "650 rpm", "irregularity": 0.05,
-            "torques": [
-                {"name": "gas", "value": {"segments": [
-                    {"from": "pi/2", "to": "3*pi/4", "expr": gas},
-                    {"from": "3*pi/2", "to": "7*pi/4", "expr": gas}]}},
-                {"name": "resisting", "balance": true}
-            ],
-            "flywheel": {"disk": {"density": "7800 kg/m^3", "radius": "20 cm"}}
-        }))
-        .await,
-    );
+    let r = result(app.flywheel(&template_request("exam-2014-may")).await);
     close(&r["balance_torque"], -120.0 / PI, 1e-12, "M (printed 38,197)");
     close(&r["crossings"][0], 1.6107549833911807, 1e-12, "φ₁ (printed 1.5724: wrong)");
     close(&r["crossings"][1], 2.3162358335960604, 1e-12, "φ₂ (printed 2.3546: wrong)");
@@ -176,4 +124,30 @@ async fn may_2014_four_stroke_engine_printed_answer_is_wrong() {
     close(&r["inertia_approximate"], 0.39507225701546295, 1e-9, "I (printed 0.389: wrong)");
     close(&r["disk"]["mass"], 19.75361285077315, 1e-9, "disk mass (printed 19.451: wrong)");
     assert!((r["inertia_approximate"].as_f64().unwrap() - 0.389).abs() > 0.005, "the printed value is not reproduced");
+}
+
+/// A Spanish sheet's WEBSERVICE() reads each exam's answer from its
+/// template, with a decimal comma; March 2010's inertia scales as F (the
+/// resisting torque balances F, so the crossings stay: 10.256 × 1500/750),
+/// and May 2014's is the corrected one, not the printed 0.389.
+#[tokio::test]
+async fn a_sheet_reads_the_exams_answers_from_their_templates() {
+    let app = TestApp::new().await;
+    let read = |path: String| {
+        let app = &app;
+        async move {
+            let r = app.get(&path).await;
+            assert_eq!(r.status, axum::http::StatusCode::OK, "{path}: {}", r.text);
+            r.text.replace(',', ".").parse::<f64>().unwrap_or_else(|_| panic!("{path}: {}", r.text))
+        }
+    };
+    let base = "/v1/templates/exam-2010-march/result/inertia_approximate?decimal=comma";
+    let once = read(base.to_string()).await;
+    assert!((once - 10.256014925768827).abs() < 1e-6, "{once}");
+    let twice = read(format!("{base}&F=1500")).await;
+    assert!((twice - 2.0 * 10.256014925768827).abs() < 1e-6, "I ∝ F: {twice}");
+    let r = app.get("/v1/templates/exam-2014-may/result/inertia_approximate?decimal=comma&lang=es").await;
+    assert!(r.text.starts_with("0,395"), "the corrected inertia: {}", r.text);
+    let t = app.get("/v1/templates/exam-2014-may?lang=es").await.json();
+    assert!(t.to_string().contains("está mal"), "the template says the print is wrong: {t}");
 }

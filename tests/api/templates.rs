@@ -6,7 +6,7 @@ use crate::helpers::{TestApp, case, request};
 use axum::http::StatusCode;
 use serde_json::{Value, json};
 
-const BUILTIN: [&str; 15] = [
+const BUILTIN: [&str; 20] = [
     "p103-slider-flywheel",
     "p103-class",
     "p107-two-stroke-engine",
@@ -22,6 +22,11 @@ const BUILTIN: [&str; 15] = [
     "ring-on-rim",
     "rolling-disk",
     "cam-design",
+    "exam-2010-march",
+    "exam-2012-january",
+    "exam-2012-march",
+    "exam-2013-may",
+    "exam-2014-may",
 ];
 
 async fn number(app: &TestApp, path: &str) -> f64 {

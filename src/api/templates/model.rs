@@ -172,6 +172,11 @@ pub const LIBRARY_FILES: &[(&str, &str)] = &[
     ("ring-on-rim.json", include_str!("../../../library/ring-on-rim.json")),
     ("rolling-disk.json", include_str!("../../../library/rolling-disk.json")),
     ("cam-design.json", include_str!("../../../library/cam-design.json")),
+    ("exam-2010-march.json", include_str!("../../../library/exam-2010-march.json")),
+    ("exam-2012-january.json", include_str!("../../../library/exam-2012-january.json")),
+    ("exam-2012-march.json", include_str!("../../../library/exam-2012-march.json")),
+    ("exam-2013-may.json", include_str!("../../../library/exam-2013-may.json")),
+    ("exam-2014-may.json", include_str!("../../../library/exam-2014-may.json")),
 ];
 
 /// A new template checked: its kind, name, parameters' names, pointers,
