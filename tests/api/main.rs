@@ -60,6 +60,7 @@ mod robot_arm;
 mod rotor;
 mod schema;
 mod security;
+mod seed_book;
 mod seed_exams;
 mod seed_templates;
 mod shaking;

@@ -11,7 +11,7 @@ use axum::http::StatusCode;
 const G: f64 = 9.81;
 
 /// The number at `pointer` of the template's result, with `query`.
-async fn part(app: &TestApp, id: &str, pointer: &str, query: &str) -> f64 {
+pub async fn part(app: &TestApp, id: &str, pointer: &str, query: &str) -> f64 {
     let path = format!("/v1/templates/{id}/result{pointer}?{query}");
     let r = app.get(&path).await;
     assert_eq!(r.status, StatusCode::OK, "{path}: {}", r.text);
@@ -19,7 +19,7 @@ async fn part(app: &TestApp, id: &str, pointer: &str, query: &str) -> f64 {
 }
 
 #[track_caller]
-fn near(got: f64, expected: f64, tol: f64, what: &str) {
+pub fn near(got: f64, expected: f64, tol: f64, what: &str) {
     assert!((got - expected).abs() <= tol * expected.abs().max(1e-12), "{what}: {got} against {expected}");
 }
 

@@ -6,7 +6,7 @@ use crate::helpers::{TestApp, case, request};
 use axum::http::StatusCode;
 use serde_json::{Value, json};
 
-const BUILTIN: [&str; 20] = [
+const BUILTIN: [&str; 27] = [
     "p103-slider-flywheel",
     "p103-class",
     "p107-two-stroke-engine",
@@ -27,6 +27,13 @@ const BUILTIN: [&str; 20] = [
     "exam-2012-march",
     "exam-2013-may",
     "exam-2014-may",
+    "p113-pulley-flywheel",
+    "grubler-count",
+    "tooth-thickness",
+    "differential-train",
+    "rotor-disk-angle",
+    "rotor-disk-accelerating",
+    "double-pendulum",
 ];
 
 async fn number(app: &TestApp, path: &str) -> f64 {

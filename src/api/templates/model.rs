@@ -177,6 +177,13 @@ pub const LIBRARY_FILES: &[(&str, &str)] = &[
     ("exam-2012-march.json", include_str!("../../../library/exam-2012-march.json")),
     ("exam-2013-may.json", include_str!("../../../library/exam-2013-may.json")),
     ("exam-2014-may.json", include_str!("../../../library/exam-2014-may.json")),
+    ("p113-pulley-flywheel.json", include_str!("../../../library/p113-pulley-flywheel.json")),
+    ("grubler-count.json", include_str!("../../../library/grubler-count.json")),
+    ("tooth-thickness.json", include_str!("../../../library/tooth-thickness.json")),
+    ("differential-train.json", include_str!("../../../library/differential-train.json")),
+    ("rotor-disk-angle.json", include_str!("../../../library/rotor-disk-angle.json")),
+    ("rotor-disk-accelerating.json", include_str!("../../../library/rotor-disk-accelerating.json")),
+    ("double-pendulum.json", include_str!("../../../library/double-pendulum.json")),
 ];
 
 /// A new template checked: its kind, name, parameters' names, pointers,
