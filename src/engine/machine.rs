@@ -141,7 +141,20 @@ impl Machine {
         })
     }
 
-    fn reduced(&self, phi: f64) -> Option<[f64; 3]> {
+    /// The mechanism's coordinates q at φ (the period's configuration: the
+    /// input taken modulo the period), None where it cannot be assembled.
+    pub fn pose(&self, phi: f64) -> Option<Vec<f64>> {
+        self.assembled(phi).map(|(q, _, _)| q)
+    }
+
+    /// The machine's mechanism (without its drivers' positions).
+    pub fn mechanism(&self) -> &Mechanism {
+        &self.mechanism
+    }
+
+    /// q at φ with its workspace holding q̇ and q̈ per unit input speed, and
+    /// φ within the period.
+    fn assembled(&self, phi: f64) -> Option<(Vec<f64>, Workspace, f64)> {
         let u = phi.rem_euclid(self.period);
         let k = ((u / self.period * ANCHORS as f64).round() as usize) % ANCHORS;
         let Anchor { phi: at, q: q0, g: g0, h: h0 } = &self.anchors[k];
@@ -158,6 +171,12 @@ impl Machine {
         let mut ws = Workspace::default();
         ws.assemble(m, &mut q, &unit, 0).ok()?;
         ws.motion(m, &q, &unit).then_some(())?;
+        Some((q, ws, u))
+    }
+
+    fn reduced(&self, phi: f64) -> Option<[f64; 3]> {
+        let (q, ws, u) = self.assembled(phi)?;
+        let m = &self.mechanism;
         let (g, h) = (&ws.qd, &ws.qdd);
         let mass = |k: usize| m.mass_of(k);
         let inertia = (0..g.len()).map(|k| mass(k) * g[k] * g[k]).sum();

@@ -285,3 +285,42 @@ async fn a_motion_shows_its_steps_in_turn_at_their_times() {
         assert!((at - (t(step) - t(0)) / run).abs() < 1e-12, "sample {step} shows at its time: {at}");
     }
 }
+
+/// A flywheel's machine moves too: its 72 poses are where a kinetostatics
+/// sweep of the same mechanism puts its bodies (a second solver: a sweep
+/// from the drawing against the machine's anchors and Newton, 1e-9 m and
+/// rad), and each is shown at the time the flywheel's speed takes to reach
+/// it: within ε of an even share of the loop, not all of them even.
+#[tokio::test]
+async fn a_flywheels_machine_moves_at_its_speed() {
+    let app = TestApp::new().await;
+    let body = request("p103_slider_machine");
+    let (id, plots) = plots_of(&app, "/v1/flywheel", &body).await;
+    assert!(plots.iter().any(|p| p.0 == "motion"), "{plots:?}");
+    let result = app.get(&format!("/v1/jobs/{id}")).await.json()["result"].clone();
+    let poses = result["machine_poses"].as_array().unwrap();
+    assert_eq!(poses.len(), 72);
+    let sweep = json!({
+        "mechanism": body["machine"]["mechanism"],
+        "input": {"joint": "O", "speed": "60 rpm", "start": 0, "end": "360 deg", "steps": 72},
+        "outputs": ["kinematics"],
+    });
+    let swept = app.result("/v1/kinetostatics", &sweep).await;
+    for (k, (pose, step)) in poses.iter().zip(swept["steps"].as_array().unwrap()).enumerate() {
+        assert!((pose["angle"].as_f64().unwrap() - step["input"].as_f64().unwrap()).abs() < 1e-12);
+        for (b, swept_body) in step["kinematics"].as_array().unwrap().iter().enumerate() {
+            for key in ["x", "y", "theta"] {
+                let Some(expected) = swept_body[key].as_f64() else { continue }; // the massless crank's G
+                let got = pose["bodies"][b][key].as_f64().unwrap();
+                assert!((got - expected).abs() < 1e-9, "pose {k}, body {b}, {key}: {got} against {expected}");
+            }
+        }
+    }
+    let (shown, seconds) = frames(&app.get(&format!("/v1/jobs/{id}/plots/motion.svg")).await.text);
+    assert_eq!((shown.len(), seconds), (72, 4.0));
+    let eps = 0.04;
+    for (step, at) in &shown {
+        assert!((at - *step as f64 / 72.0).abs() <= eps, "frame {step} at {at}");
+    }
+    assert!(shown.iter().any(|(step, at)| (at - *step as f64 / 72.0).abs() > 1e-4), "the speed varies");
+}

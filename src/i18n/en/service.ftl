@@ -304,10 +304,13 @@ plot-ks-first-step = first step
 plot-ks-first-step-at = first step (input { $value })
 plot-ks-polar-note = the force is the vector from the origin to the curve; largest { $value } N
 plot-ks-step = step { $step } of 0 to { $last }: input { $value }
+plot-flywheel-motion = The machine in motion over a cycle, at the flywheel's speed
+plot-flywheel-motion-at = φ = { $phi }° · ω = { $omega } rad/s
 plot-ks-motion = The mechanism in motion over the sweep
 plot-ks-motion-at = input { $value } · step { $step }
 plot-dyn-motion = The mechanism in motion over the run
 plot-dyn-motion-at = t = { $t } s · sample { $step }
+plot-motion-note-paths = one loop in { $seconds } s; dashed: the paths
 plot-motion-note = one loop in { $seconds } s; dashed: the paths; reactions to one scale
 plot-ks-shaking = Shaking force on the frame (polar diagram)
 plot-ks-shaking-moment = Shaking moment on the frame against the input

@@ -304,10 +304,13 @@ plot-ks-first-step = primer paso
 plot-ks-first-step-at = primer paso (entrada { $value })
 plot-ks-polar-note = la fuerza es el vector del origen a la curva; la mayor { $value } N
 plot-ks-step = paso { $step } de 0 a { $last }: entrada { $value }
+plot-flywheel-motion = La máquina en movimiento durante un ciclo, a la velocidad del volante
+plot-flywheel-motion-at = φ = { $phi }° · ω = { $omega } rad/s
 plot-ks-motion = El mecanismo en movimiento a lo largo del barrido
 plot-ks-motion-at = entrada { $value } · paso { $step }
 plot-dyn-motion = El mecanismo en movimiento a lo largo de la simulación
 plot-dyn-motion-at = t = { $t } s · muestra { $step }
+plot-motion-note-paths = un ciclo en { $seconds } s; a trazos: las trayectorias
 plot-motion-note = un ciclo en { $seconds } s; a trazos: las trayectorias; reacciones a una misma escala
 plot-ks-shaking = Fuerza de sacudimiento sobre el bastidor (diagrama polar)
 plot-ks-shaking-moment = Momento de sacudimiento sobre el bastidor frente a la entrada

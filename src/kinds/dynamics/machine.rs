@@ -8,10 +8,11 @@ use crate::engine::kinetostatics::Motion;
 use crate::engine::model::{Driver, JointKind, Mechanism};
 use crate::i18n::Msg;
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
+use crate::kinds::mechanism::motion::BodyPosition;
 use crate::kinds::mechanism::track::{PointState, TrackDto, Tracked, resolve, states};
 use crate::kinds::mechanism::{Assembled, MechanismDto, coordinate};
 use crate::kinds::mechanism::{
-    ContactDto, EnergyDto, InputDto, Inputs, LoadDto, Name, ReactionDto, annotate, convert_loads, names,
+    ContactDto, EnergyDto, InputDto, Inputs, LoadDto, ReactionDto, annotate, convert_loads, names,
 };
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
@@ -178,19 +179,6 @@ pub struct InputState {
     pub angle: f64,
     pub speed: f64,
     pub acceleration: f64,
-}
-
-/// Where a body is: its centre of mass and its rotation from the drawn configuration.
-#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
-pub struct BodyPosition {
-    #[schema(value_type = String)]
-    pub body: Name,
-    /// m
-    pub x: f64,
-    /// m
-    pub y: f64,
-    /// rad
-    pub theta: f64,
 }
 
 /// The mechanism at one sample (the same instants as `samples`).

@@ -11,13 +11,16 @@ pub use result::{
 
 use crate::engine::Progress;
 use crate::engine::flywheel::solve;
+use crate::engine::machine::Machine;
 use crate::kind::limits::Limits;
 use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::quantity::Errors;
 use crate::kind::{Kind, Table};
 use crate::kind::{engine_failure, validated};
-use crate::kinds::mechanism::Assembled;
+use crate::kinds::mechanism::motion::BodyPosition;
+use crate::kinds::mechanism::{Assembled, names};
+use result::MachinePose;
 use serde_json::Value;
 
 /// Flywheel: `POST /v1/flywheel`.
@@ -70,6 +73,10 @@ impl Kind for Flywheel {
         ("/samples/*/reduced_torque", "N*m"),
         ("/samples/*/speed", "rad/s"),
         ("/samples/*/work", "J"),
+        ("/machine_poses/*/angle", "rad"),
+        ("/machine_poses/*/bodies/*/x", "m"),
+        ("/machine_poses/*/bodies/*/y", "m"),
+        ("/machine_poses/*/bodies/*/theta", "rad"),
     ];
     type Request = FlywheelRequest;
     type Result = FlywheelResult;
@@ -91,10 +98,13 @@ impl Kind for Flywheel {
 /// Validates and solves a request within `limits`, stopping when the compute budget runs out.
 fn compute(request: &FlywheelRequest, unknown: Vec<FieldError>, limits: &Limits) -> Result<FlywheelResult, ApiError> {
     let deadline = limits.deadline();
-    let p = validated(unknown, request.to_problem(limits, deadline)).map_err(|e| match deadline.expired() {
-        true => ApiError::OverBudget(crate::kind::refused::engine_msg(&deadline.exceeded(Progress::AssemblingMachine))),
-        false => e,
-    })?;
+    let (p, machine) =
+        validated(unknown, request.to_problem(limits, deadline)).map_err(|e| match deadline.expired() {
+            true => {
+                ApiError::OverBudget(crate::kind::refused::engine_msg(&deadline.exceeded(Progress::AssemblingMachine)))
+            }
+            false => e,
+        })?;
     let solution = solve(&p).map_err(|e| engine_failure(e, "/torques"))?;
     let mut result = FlywheelResult::new(solution, p.torques.iter().map(|t| t.name.clone()));
     // Where a machine's dimensions put its points: the sketch solved again
@@ -106,5 +116,19 @@ fn compute(request: &FlywheelRequest, unknown: Vec<FieldError>, limits: &Limits)
         result.notes.extend(a.warnings);
         result.assembled_points = Some(a.points);
     }
+    result.machine_poses = machine.map(|m| poses(&m, p.period));
     Ok(result)
+}
+
+/// The frames a machine's motion shows over its period.
+const POSES: usize = 72;
+
+/// The machine's moving bodies at [`POSES`] evenly spaced angles over the
+/// period (where it assembles).
+fn poses(m: &Machine, period: f64) -> Vec<MachinePose> {
+    let names = names(&m.mechanism().bodies.iter().map(|b| b.name.clone()).collect::<Vec<_>>());
+    (0..POSES)
+        .map(|k| period * k as f64 / POSES as f64)
+        .filter_map(|angle| Some(MachinePose { angle, bodies: BodyPosition::all(&m.pose(angle)?, &names) }))
+        .collect()
 }

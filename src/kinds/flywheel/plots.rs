@@ -5,6 +5,8 @@
 use crate::i18n::{Msg, say};
 use crate::kind::chart::{Arrow, Axis, Chart, Fill, Level, Listed, Pen};
 use crate::kind::plots::{Drawn, Job, Options, deg, num, rows, sig, xy};
+use crate::kinds::mechanism::drawing;
+use crate::kinds::mechanism::motion::{self, Still};
 use serde_json::Value;
 
 /// Each plot's name and its title's message.
@@ -22,8 +24,15 @@ pub fn list(job: &Job) -> Vec<Listed> {
         return Vec::new();
     }
     let varies = varying_inertia(job.result);
-    PLOTS.iter().filter(|(n, _)| varies || *n != "wittenbauer").map(|(n, t)| Listed::new(*n, say(t))).collect()
+    let mut out: Vec<Listed> =
+        PLOTS.iter().filter(|(n, _)| varies || *n != "wittenbauer").map(|(n, t)| Listed::new(*n, say(t))).collect();
+    if rows(job.result, "machine_poses").len() > 1 && drawing::model(job.request, MECHANISM).is_some() {
+        out.push(Listed::new("motion", say("plot-flywheel-motion")));
+    }
+    out
 }
+
+const MECHANISM: &str = "/machine/mechanism";
 
 /// Whether I*(φ) varies over the cycle: with a constant I* Wittenbauer's
 /// diagram is a vertical segment (the exact inertia is then I_approx − I*,
@@ -39,6 +48,10 @@ fn varying_inertia(r: &Value) -> bool {
 pub fn draw(job: &Job, name: &str, _: &Options) -> Drawn {
     if rows(job.result, "samples").len() < 2 {
         return Ok(None);
+    }
+    if name == "motion" {
+        let title = list(job).into_iter().find(|p| p.name == name).map(|p| p.title);
+        return Ok(title.and_then(|t| motion(job, t)));
     }
     // Wittenbauer's diagram only when I* varies (as listed); the others always.
     let offered = name != "wittenbauer" || varying_inertia(job.result);
@@ -181,4 +194,53 @@ fn wittenbauer(r: &Value, title: String) -> Option<Chart> {
     }
     let note = Msg::new("plot-wittenbauer-note").arg("x", sig(-inertia)).arg("y", sig(-t0));
     Some(c.subtitle(note.arg("inertia", sig(inertia)).arg("t0", sig(t0)).text()))
+}
+
+/// The machine moving over its period, each pose shown at the time the
+/// flywheel's speed takes to reach it (t(φ) = ∫dφ/ω over the samples, the
+/// cycle played in [`CYCLE_SECONDS`]): its speed's fluctuation, slowed.
+fn motion(job: &Job, title: String) -> Option<Chart> {
+    let m = drawing::model(job.request, MECHANISM)?;
+    let samples = samples(job.result, "speed");
+    let time = elapsed(&samples);
+    let cycle = time.last().copied().filter(|t| *t > 0.0)?;
+    let at = |angle: f64| {
+        let k = samples.partition_point(|s| s.0 < angle).clamp(1, samples.len() - 1);
+        let (a, b) = (samples[k - 1], samples[k]);
+        let f = if b.0 > a.0 { ((angle - a.0) / (b.0 - a.0)).clamp(0.0, 1.0) } else { 0.0 };
+        (time[k - 1] + f * (time[k] - time[k - 1]), a.1 + f * (b.1 - a.1))
+    };
+    let poses = rows(job.result, "machine_poses");
+    let stills: Vec<Still> = (poses.iter().enumerate())
+        .filter_map(|(k, p)| {
+            let angle = deg(num(p, "angle")?);
+            let (t, omega) = at(angle);
+            Some(Still {
+                step: k,
+                at: t / cycle,
+                caption: Msg::new("plot-flywheel-motion-at").arg("phi", sig(angle)).arg("omega", sig(omega)).text(),
+                poses: drawing::poses(&m, rows(p, "bodies")),
+                reactions: &[],
+                contacts: &[],
+            })
+        })
+        .collect();
+    let all: Vec<_> = poses.iter().map(|p| drawing::poses(&m, rows(p, "bodies"))).collect();
+    let mut c = motion::motion(&m, &stills, motion::joint_paths(&m, &all), CYCLE_SECONDS, title);
+    c.subtitle = Some(Msg::new("plot-motion-note-paths").arg("seconds", CYCLE_SECONDS).text());
+    Some(c)
+}
+
+/// How long the motion takes to play one cycle, s.
+const CYCLE_SECONDS: f64 = 4.0;
+
+/// t at each sample (φ in degrees, ω in rad/s) from the first: the
+/// trapezoidal ∫dφ/ω.
+fn elapsed(samples: &[(f64, f64)]) -> Vec<f64> {
+    let mut t = vec![0.0; samples.len()];
+    for k in 1..samples.len() {
+        let ((a, wa), (b, wb)) = (samples[k - 1], samples[k]);
+        t[k] = t[k - 1] + (b - a).to_radians() * 0.5 * (1.0 / wa + 1.0 / wb);
+    }
+    t
 }

@@ -124,12 +124,13 @@ pub struct DiskDto {
 
 impl FlywheelRequest {
     /// Validates the request, collecting every error under its pointer; a
-    /// machine is assembled within `deadline`, which the problem keeps.
+    /// machine is assembled within `deadline`, which the problem keeps, and
+    /// given beside it (its poses for the plots).
     pub fn to_problem(
         &self,
         limits: &Limits,
         deadline: Deadline,
-    ) -> Result<FlywheelProblem, Vec<crate::kind::problem::FieldError>> {
+    ) -> Result<(FlywheelProblem, Option<Arc<Machine>>), Vec<crate::kind::problem::FieldError>> {
         let mut e = Errors::new(limits);
         constants::read(self.constants.as_ref(), &mut e);
         let period = match &self.period {
@@ -159,7 +160,7 @@ impl FlywheelRequest {
                 .and_then(|f| e.differentiable(&f, 1, "/reduced_inertia").map(|()| f)),
             None => Some(Function::Constant(0.0)),
         };
-        if let (Some(m), Some(t), Some(i)) = (machine, torques.as_mut(), inertia.as_mut()) {
+        if let (Some(m), Some(t), Some(i)) = (machine.clone(), torques.as_mut(), inertia.as_mut()) {
             let label = "/machine".to_string();
             t.push(TorqueItem {
                 name: "machine".into(),
@@ -185,21 +186,24 @@ impl FlywheelRequest {
                 Some(existing_inertia),
                 Some(flywheel_ratio),
                 Some(disk),
-            ) if e.list.is_empty() => Ok(FlywheelProblem {
-                period,
-                mean_speed,
-                irregularity,
-                torques,
-                reduced_inertia,
-                reduced_inertia_label: "/reduced_inertia".into(),
-                existing_inertia,
-                flywheel_ratio,
-                disk,
-                tolerance,
-                check: self.check.unwrap_or(true),
-                samples,
-                deadline,
-            }),
+            ) if e.list.is_empty() => Ok((
+                FlywheelProblem {
+                    period,
+                    mean_speed,
+                    irregularity,
+                    torques,
+                    reduced_inertia,
+                    reduced_inertia_label: "/reduced_inertia".into(),
+                    existing_inertia,
+                    flywheel_ratio,
+                    disk,
+                    tolerance,
+                    check: self.check.unwrap_or(true),
+                    samples,
+                    deadline,
+                },
+                machine,
+            )),
             _ => Err(e.list),
         }
     }

@@ -3,6 +3,7 @@
 use crate::engine::flywheel as fw;
 use crate::i18n::Msg;
 use crate::kind::notes::Notes;
+use crate::kinds::mechanism::motion::BodyPosition;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use utoipa::ToSchema;
@@ -124,6 +125,18 @@ pub struct FlywheelResult {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schema(value_type = Option<BTreeMap<String, Vec<f64>>>)]
     pub assembled_points: Option<BTreeMap<String, [f64; 2]>>,
+    /// A `machine`'s moving bodies at evenly spaced input angles over the
+    /// period (its motion on the page).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub machine_poses: Option<Vec<MachinePose>>,
+}
+
+/// A machine's moving bodies at one input angle.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct MachinePose {
+    /// φ, rad.
+    pub angle: f64,
+    pub bodies: Vec<BodyPosition>,
 }
 
 impl crate::kind::JobResult for FlywheelResult {
@@ -184,6 +197,7 @@ impl FlywheelResult {
             },
             notes,
             assembled_points: None,
+            machine_poses: None,
             samples: s
                 .samples
                 .iter()

@@ -8,7 +8,33 @@ use super::drawing::{self, Fixed, Pose, point_of};
 use crate::engine::model::{JointKind, Mechanism};
 use crate::kind::chart::{Animation, Axis, Chart, Frame, Line, Pen};
 use crate::kind::plots::num;
+use crate::kinds::mechanism::Name;
+use serde::{Deserialize, Serialize};
 use serde_json::Value;
+use utoipa::ToSchema;
+
+/// Where a body is: its centre of mass and its rotation from the drawn configuration.
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+pub struct BodyPosition {
+    #[schema(value_type = String)]
+    pub body: Name,
+    /// m
+    pub x: f64,
+    /// m
+    pub y: f64,
+    /// rad
+    pub theta: f64,
+}
+
+impl BodyPosition {
+    /// The moving bodies' positions at `q` (body coordinates, three per
+    /// moving body), named by `names` (the ground first).
+    pub fn all(q: &[f64], names: &[Name]) -> Vec<Self> {
+        (q.chunks_exact(3).zip(names.iter().skip(1)))
+            .map(|(p, body)| Self { body: body.clone(), x: p[0], y: p[1], theta: p[2] })
+            .collect()
+    }
+}
 
 /// At most this many frames: a longer result is shown at evenly spaced
 /// steps (every frame is a drawing of the whole mechanism).
