@@ -45,6 +45,18 @@ pub fn no_step(step: usize, count: usize) -> ApiError {
     ApiError::BadQuery(vec![FieldError::parameter_said("step", message)])
 }
 
+/// The plots' cursor: `chart` with a line across it at x (the input or
+/// the time of step `step`, the step a page's drawing of the mechanism
+/// shows), where the step exists.
+pub fn cursor(chart: Chart, x: Option<f64>, step: usize) -> Chart {
+    match x {
+        Some(x) => {
+            chart.rule(chart::Level::X(x), Msg::new("plot-cursor").arg("step", step).text(), chart::Pen::dashed(6))
+        }
+        None => chart,
+    }
+}
+
 /// The number at `key` of `row`.
 pub fn num(row: &Value, key: &str) -> Option<f64> {
     row.get(key).and_then(Value::as_f64)

@@ -137,6 +137,12 @@ async fn kinetostatics_plots_draw_the_mechanism_at_any_step_and_refuse_a_step_be
     for body in ["crank", "rod", "piston"] {
         assert!(texts.iter().any(|t| t == body), "{body} in the legend");
     }
+    // The plots against the input show the drawn step as their cursor; the page asks them so.
+    let title = &plots.iter().find(|p| p.0 == "driving").unwrap().1;
+    let texts = svg_texts(&app, &format!("/v1/jobs/{id}/plots/driving.svg?step=3"), title).await;
+    assert!(texts.iter().any(|t| t == "step 3"), "the cursor at step 3: {texts:?}");
+    let page = app.get(&format!("/jobs/{id}?step=3")).await.text;
+    assert!(page.contains("plots/driving.svg?step=3"), "the page's plots share the step");
     let r = app.get(&format!("/v1/jobs/{id}/plots/mechanism.svg?step=12")).await;
     assert_eq!(r.status, StatusCode::BAD_REQUEST);
     assert_eq!(r.json()["errors"][0]["parameter"], "step");

@@ -219,7 +219,8 @@ fn accuracy_label(lang: i18n::Lang, key: &str) -> String {
 }
 
 fn plot_figures(id: &str, listed: &[Listed], step: Option<usize>) -> Markup {
-    let src = |p: &Listed| match step.filter(|_| p.name == "mechanism") {
+    // The step drawn is every plot's cursor (a plot without one ignores it).
+    let src = |p: &Listed| match step.filter(|_| p.name != "motion") {
         Some(s) => format!("{}?step={s}", plots::href(id, &p.name)),
         None => plots::href(id, &p.name),
     };

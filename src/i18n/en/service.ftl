@@ -306,6 +306,7 @@ plot-ks-polar-note = the force is the vector from the origin to the curve; large
 plot-ks-step = step { $step } of 0 to { $last }: input { $value }
 plot-flywheel-motion = The machine in motion over a cycle, at the flywheel's speed
 plot-flywheel-motion-at = φ = { $phi }° · ω = { $omega } rad/s
+plot-cursor = step { $step }
 plot-ks-motion = The mechanism in motion over the sweep
 plot-ks-motion-at = input { $value } · step { $step }
 plot-dyn-motion = The mechanism in motion over the run

@@ -306,6 +306,7 @@ plot-ks-polar-note = la fuerza es el vector del origen a la curva; la mayor { $v
 plot-ks-step = paso { $step } de 0 a { $last }: entrada { $value }
 plot-flywheel-motion = La máquina en movimiento durante un ciclo, a la velocidad del volante
 plot-flywheel-motion-at = φ = { $phi }° · ω = { $omega } rad/s
+plot-cursor = paso { $step }
 plot-ks-motion = El mecanismo en movimiento a lo largo del barrido
 plot-ks-motion-at = entrada { $value } · paso { $step }
 plot-dyn-motion = El mecanismo en movimiento a lo largo de la simulación

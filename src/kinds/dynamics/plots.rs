@@ -6,7 +6,7 @@
 use crate::engine::model::Mechanism;
 use crate::i18n::{Msg, say};
 use crate::kind::chart::{Axis, Chart, Level, Listed, Pen};
-use crate::kind::plots::{Drawn, Job, Options, deg, magnitudes, no_step, num, reaction_series, rows, sig, xy};
+use crate::kind::plots::{Drawn, Job, Options, cursor, deg, magnitudes, no_step, num, reaction_series, rows, sig, xy};
 use crate::kinds::mechanism::drawing;
 use crate::kinds::mechanism::motion::{self, Still};
 use serde_json::Value;
@@ -54,14 +54,18 @@ pub fn draw(job: &Job, name: &str, options: &Options) -> Drawn {
     let samples = rows(r, "samples");
     let time = || Axis::new(say("plot-time"), "s");
     let (angle, speed) = (|| Axis::new(say("plot-angle"), "deg"), || Axis::new(say("plot-speed"), "rad/s"));
-    Ok(Some(match name {
+    let chart = match name {
+        "mechanism" => return mechanism(job, title, options.step.unwrap_or(0)),
+        "motion" => return motion(job, title),
+        "phase" => {
+            return Ok(Some(Chart::new(title, angle(), speed()).line(
+                say("plot-dyn-phase-line"),
+                xy(samples, |s| num(s, "angle").map(deg), |s| num(s, "speed")),
+                Pen::solid(0),
+            )));
+        }
         "angle" => events(r, inputs(job, Chart::new(title, time(), angle()), "angle", "φ")),
         "speed" => events(r, inputs(job, Chart::new(title, time(), speed()), "speed", "ω")),
-        "phase" => Chart::new(title, angle(), speed()).line(
-            say("plot-dyn-phase-line"),
-            xy(samples, |s| num(s, "angle").map(deg), |s| num(s, "speed")),
-            Pen::solid(0),
-        ),
         "energy" => Chart::new(title, time(), Axis::new(say("plot-dyn-residual"), "1"))
             .line(
                 say("plot-dyn-residual-line"),
@@ -75,9 +79,12 @@ pub fn draw(job: &Job, name: &str, options: &Options) -> Drawn {
                     .text(),
             ),
         "reactions" => reactions(r, title),
-        "mechanism" => return mechanism(job, title, options.step.unwrap_or(0)),
-        "motion" => return motion(job, title),
         path => return Ok(paths(job, title, Some(path.trim_start_matches("path-")))),
+    };
+    // Against time, the sample the page draws the mechanism at.
+    Ok(Some(match options.step {
+        Some(k) => cursor(chart, samples.get(k).and_then(|s| num(s, "t")), k),
+        None => chart,
     }))
 }
 

@@ -7,7 +7,7 @@
 
 use crate::i18n::{Msg, say};
 use crate::kind::chart::{Axis, Chart, Level, Listed, Mark, Pen};
-use crate::kind::plots::{Drawn, Job, Options, deg, magnitudes, no_step, num, reaction_series, rows, sig, xy};
+use crate::kind::plots::{Drawn, Job, Options, cursor, deg, magnitudes, no_step, num, reaction_series, rows, sig, xy};
 use crate::kinds::mechanism::drawing;
 use crate::kinds::mechanism::motion::{self, Still};
 use serde_json::Value;
@@ -47,7 +47,13 @@ pub fn list(job: &Job) -> Vec<Listed> {
 pub fn draw(job: &Job, name: &str, options: &Options) -> Drawn {
     let Some(title) = list(job).into_iter().find(|p| p.name == name).map(|p| p.title) else { return Ok(None) };
     let r = job.result;
-    Ok(Some(match name {
+    let chart = match name {
+        "mechanism" => return mechanism(job, title, options.step.unwrap_or(0)),
+        "motion" => return motion(job, title),
+        "shaking" => return Ok(Some(shaking(r, title))),
+        polar if polar.starts_with("reaction-") => {
+            return Ok(Some(self::polar(r, polar.trim_start_matches("reaction-"), title)));
+        }
         "driving" => driving(r, title),
         "reactions" => reactions(r, title),
         "reduced-inertia" => Chart::new(title, input_axis(r), Axis::new("I*", "kg·m²")).line(
@@ -58,13 +64,14 @@ pub fn draw(job: &Job, name: &str, options: &Options) -> Drawn {
         "reduced-torque" => Chart::new(title, input_axis(r), Axis::new("M*", "N·m"))
             .line(say("plot-ks-reduced-torque-line"), along(r, "reduced_torque"), Pen::solid(0))
             .rule(Level::Y(0.0), "", Pen::dashed(7)),
-        "mechanism" => return mechanism(job, title, options.step.unwrap_or(0)),
-        "motion" => return motion(job, title),
-        "shaking" => shaking(r, title),
-        "shaking-moment" => Chart::new(title, input_axis(r), Axis::new(say("plot-ks-shaking-moment-axis"), "N·m"))
+        _ => Chart::new(title, input_axis(r), Axis::new(say("plot-ks-shaking-moment-axis"), "N·m"))
             .line("M", xy(rows(r, "steps"), input(r), |s| num(s.get("shaking")?, "moment")), Pen::solid(0))
             .rule(Level::Y(0.0), "", Pen::dashed(7)),
-        polar => self::polar(r, polar.trim_start_matches("reaction-"), title),
+    };
+    // Against the input, the step the page draws the mechanism at.
+    Ok(Some(match options.step {
+        Some(k) => cursor(chart, rows(r, "steps").get(k).and_then(input(r)), k),
+        None => chart,
     }))
 }
 
