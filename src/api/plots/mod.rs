@@ -88,7 +88,8 @@ pub fn segment(text: &str) -> String {
         ("id" = String, Path, description = "Job id"),
         ("name" = String, Path, description = "The plot's name, as `GET /v1/jobs/{id}/plots` lists it: `torque`, `speed`, `mechanism`"),
         ("step" = Option<usize>, Query, description = "The drawing of a mechanism (`mechanism`): the step \
-            (kinetostatics) or sample (dynamics) it shows, from 0 (the default)"),
+            (kinetostatics) or sample (dynamics) it shows, from 0 (the default); on the plots against the input \
+            or the time, that step's cursor"),
     ),
     responses(
         (status = 200, description = "The plot", content_type = "image/svg+xml", body = String),
