@@ -130,7 +130,8 @@ async fn a_slider_cranks_counterweight_leaves_the_fraction_it_does_not_balance()
     request["mechanism"]["bodies"][0]["mass"] = json!(2.0); // "2 kg", as a number to add to
     request["outputs"] = json!(["shaking"]);
     request["track"] = json!(["A", "B"]);
-    request["balance"] = json!({"counterweights": ["crank"], "reciprocating_fraction": 0.5});
+    // Half the reciprocating mass, as a Spanish sheet writes it.
+    request["balance"] = json!({"counterweights": ["crank"], "reciprocating_fraction": "50 %"});
     let result = app.result("/v1/kinetostatics", &request).await;
     // m₂p₂ + m₃r₂(1 − 0.3) + f·m_rec·r₂ = 2·0.02 + 1.2·0.08·0.7 + 0.5·(0.9 + 0.36)·0.08, opposite A.
     close(&result["counterweights"][0]["mass_radius"], 0.1576, 1e-12, "the crank's m·r");

@@ -12,6 +12,7 @@ use crate::kind::problem::FieldError;
 use crate::kind::quantity::{Errors, Quantity};
 use crate::kinds::mechanism::track::{TrackDto, Tracked, resolve};
 use crate::kinds::mechanism::{Assembled, Inputs, LoadDto, MechanismDto, convert_loads};
+use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 use utoipa::ToSchema;
@@ -84,9 +85,9 @@ pub struct BalanceDto {
     pub counterweights: Vec<String>,
     /// A slider-crank: the fraction f of the reciprocating mass (the slider
     /// and the rod's share at its pin) balanced, 0 to 1 (default 0: the
-    /// rotating masses only).
-    #[schema(minimum = 0.0, maximum = 1.0)]
-    pub reciprocating_fraction: Option<f64>,
+    /// rotating masses only): a number, or a quantity such as "50 %" or "0,5".
+    #[schema(value_type = Option<Quantity>)]
+    pub reciprocating_fraction: Option<Quantity>,
 }
 
 /// What to compute.
@@ -218,10 +219,14 @@ impl KinetostaticsRequest {
 /// The counterweights `b` asks for on `m` (bodies named in `names`, the
 /// ground first), or why not at `/balance/...`.
 fn balance(b: &BalanceDto, m: &Mechanism, names: &[String], e: &mut Errors) -> Option<(Linkage, Vec<Counterweight>)> {
-    let f = b.reciprocating_fraction.unwrap_or(0.0);
+    let at = "/balance/reciprocating_fraction";
+    let f = match &b.reciprocating_fraction {
+        Some(q) => e.quantity(q, Dim::NONE, at)?,
+        None => 0.0,
+    };
     let fraction = (0.0..=1.0).contains(&f);
     if !fraction {
-        e.say("/balance/reciprocating_fraction", Msg::new("balance-fraction").num("value", f));
+        e.say(at, Msg::new("balance-fraction").num("value", f));
     }
     let mut on = Vec::new();
     for (k, name) in b.counterweights.iter().enumerate() {
