@@ -22,6 +22,8 @@ use std::fmt::Write as _;
 use std::time::Instant;
 
 const G: f64 = 9.81;
+/// Issue 50's time for A02 with N = 40, s (the issue before it asked 1 s).
+const TARGET: f64 = 0.2;
 
 /// θ̇ at θ by energy from θ̇ = 1 rad/s upright.
 fn speed(n: usize, theta: f64) -> f64 {
@@ -94,7 +96,7 @@ pub fn section() -> String {
          position): {seconds:.2} s, {evaluations} evaluations of which {dense} in the dense form, error {error:.1e} rad/s.\n",
         s.near_singular.len()
     );
-    let verdict = if seconds <= 1.0 { "met" } else { "missed" };
+    let verdict = if seconds <= TARGET { "met" } else { "missed" };
     let how = if s.sparse_hold {
         "the sparse form held the folds itself"
     } else {
@@ -102,7 +104,7 @@ pub fn section() -> String {
     };
     let _ = writeln!(
         doc,
-        "**Target** (A02, N = 40, 10 s at 1e-9 in ≤ 1 s): {seconds:.2} s: {verdict} ({how}). An evaluation costs in \
+        "**Target** (issue 50: A02, N = 40, 10 s at 1e-9 in ≤ {TARGET} s): {seconds:.2} s: {verdict} ({how}). An evaluation costs in \
          proportion to the mechanism's size (the table: a sparse LDLᵀ of Φ_q M⁻¹ Φ_qᵀ in a minimum-degree order, \
          {per_coordinate:.2} µs per coordinate at N = 40), near the flat positions too: there the rows whose pivots \
          lose their size are eliminated last and the combinations they leave are held (their right-hand side blended \

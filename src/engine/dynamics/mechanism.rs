@@ -21,6 +21,7 @@
 pub(crate) mod equations;
 mod grip;
 mod ode;
+mod plain;
 
 use super::range_space::RangeSpace;
 use super::{DynamicsError, DynamicsSolution, End, Failure, Integrator, Sample, Settings, Start, energy_residual, run};
@@ -168,6 +169,7 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         mass,
         scale: lengths.iter().map(|c| c / length).collect(),
         tol: 1e-12 * length,
+        plain: (sparse.is_none() && grips.is_empty()).then(Default::default),
         sparse: sparse.map(RefCell::new),
         held_at: RefCell::new(Vec::new()),
         dense: Default::default(),

@@ -113,16 +113,23 @@ impl Lu {
 }
 
 /// `f::<N>(args)` with N = n for the sizes of planar mechanisms of up to
-/// six moving bodies (three coordinates each), where the compiler unrolls
-/// the loops below (a 9×9 solve: 125 → 75 ns; 39 ns once the solves
-/// multiply by the pivots' reciprocals); `f::<0>` (n read at run
-/// time) for other sizes.
+/// six moving bodies (three coordinates each) and the augmented matrices
+/// [M Φ_qᵀ; Φ_q 0] of up to three (3 to 11: a point mass on a link is 5),
+/// where the compiler unrolls the loops below (a 9×9 solve: 125 → 75 ns;
+/// 39 ns once the solves multiply by the pivots' reciprocals); `f::<0>`
+/// (n read at run time) for other sizes.
 macro_rules! by_size {
     ($n:expr, $f:ident($($arg:expr),*)) => {
         match $n {
             3 => $f::<3>($n, $($arg),*),
+            4 => $f::<4>($n, $($arg),*),
+            5 => $f::<5>($n, $($arg),*),
             6 => $f::<6>($n, $($arg),*),
+            7 => $f::<7>($n, $($arg),*),
+            8 => $f::<8>($n, $($arg),*),
             9 => $f::<9>($n, $($arg),*),
+            10 => $f::<10>($n, $($arg),*),
+            11 => $f::<11>($n, $($arg),*),
             12 => $f::<12>($n, $($arg),*),
             15 => $f::<15>($n, $($arg),*),
             18 => $f::<18>($n, $($arg),*),

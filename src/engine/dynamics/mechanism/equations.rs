@@ -13,6 +13,7 @@
 
 use super::MechanismProblem;
 use super::grip::{Grip, Grips, Mode, friction};
+use super::plain::{Plain, Sizes};
 use crate::engine::constraints::{State, System, evaluate, evaluate_blocks};
 use crate::engine::dynamics::range_space::RangeSpace;
 use crate::engine::dynamics::rows::Rows;
@@ -50,6 +51,9 @@ pub(super) struct Equations<'a> {
     pub tol: f64,
     /// The sparse form, when it applies.
     pub sparse: Option<RefCell<RangeSpace>>,
+    /// The dense form's common case, where the sparse form does not apply
+    /// and no contact has friction.
+    pub plain: Option<RefCell<Plain>>,
     /// Times of the evaluations that held a fold.
     pub held_at: RefCell<Vec<f64>>,
     /// Evaluations in the dense form.
@@ -104,6 +108,19 @@ impl Equations<'_> {
             None => self.dense_motion(t, q, qd, loose)?,
         };
         motion.qdd.iter().chain(&motion.lambda).all(|v| v.is_finite()).then_some(motion)
+    }
+
+    fn sizes(&self) -> Sizes<'_> {
+        Sizes { n: self.n, r: self.r, mass: &self.mass, scale: &self.scale }
+    }
+
+    /// q̈ into `qdd` and the loads' power Qᵀq̇ by [`Plain`], where it
+    /// applies (None: [`Self::motion`] decides).
+    pub fn plain(&self, t: f64, q: &[f64], qd: &[f64], qdd: &mut [f64]) -> Option<f64> {
+        let sizes = self.sizes();
+        let power = self.plain.as_ref()?.borrow_mut().accelerations(self.p, &sizes, t, [q, qd], qdd)?;
+        self.dense.set(self.dense.get() + 1);
+        (power.is_finite() && qdd.iter().all(|v| v.is_finite())).then_some(power)
     }
 
     /// The sparse form's motion, or None where the dense form decides: S
@@ -245,9 +262,13 @@ impl Equations<'_> {
     /// metric M in the sparse form, Euclidean in the dense), then onto the
     /// energy when it is held; the largest |Φ| removed.
     pub fn project(&self, y: &mut [f64]) -> f64 {
-        let removed = match &self.sparse {
-            Some(rs) => self.project_sparse(&mut rs.borrow_mut(), y),
-            None => self.project_dense(y),
+        let removed = match (&self.sparse, &self.plain) {
+            (Some(rs), _) => self.project_sparse(&mut rs.borrow_mut(), y),
+            (None, Some(plain)) => {
+                let plain = plain.borrow_mut().project(self.p, &self.sizes(), self.tol, y);
+                plain.unwrap_or_else(|removed| removed.max(self.project_dense(y)))
+            }
+            (None, None) => self.project_dense(y),
         };
         // Not once a singular position has been met: on A02's chain (N = 20)
         // holding it past the held folds took 6× the steps and 40× the

@@ -12,6 +12,11 @@ impl Model for Equations<'_> {
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
         let n = self.n;
         let (q, qd) = (&y[..n], &y[n..2 * n]);
+        if let Some(power) = self.plain(t, q, qd, &mut dy[n..2 * n]) {
+            dy[..n].copy_from_slice(qd);
+            dy[2 * n] = power;
+            return;
+        }
         match self.motion(t, q, qd, false) {
             Some(m) => {
                 dy[..n].copy_from_slice(qd);
