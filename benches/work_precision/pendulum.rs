@@ -71,8 +71,8 @@ pub fn target(points: &[Point]) -> String {
              projection and the samples included. The bob is a point mass (I_G = 0, M singular), so the sparse \
              form does not apply: each evaluation solves the 5 × 5 augmented system by an LU kept from the last \
              (`dynamics/mechanism/plain.rs`), where the general dense form, allocating and deciding the rows' rank \
-             by a QR at every evaluation, took 2.2× as long (0.45 against 0.20 s whole, `mechdyn solve`, \
-             farm-bench median of 10, on 2026-11-29).\n",
+             by a QR at every evaluation, took 2.3× as long (0.54 against 0.23 s whole, `mechdyn solve`, \
+             farm-bench medians of 10 paired runs, on 2026-11-29).\n",
             p.seconds,
             p.series,
             p.tolerance,

@@ -13,7 +13,7 @@
 
 use super::MechanismProblem;
 use super::grip::{Grip, Grips, Mode, friction};
-use super::plain::{Plain, Sizes};
+use super::plain::{Plain, Reported, Sizes};
 use crate::engine::constraints::{State, System, evaluate, evaluate_blocks};
 use crate::engine::dynamics::range_space::RangeSpace;
 use crate::engine::dynamics::rows::Rows;
@@ -103,7 +103,7 @@ impl Equations<'_> {
     /// state is not finite.
     pub fn motion(&self, t: f64, q: &[f64], qd: &[f64], loose: bool) -> Option<Motion> {
         let sparse = self.sparse.as_ref().and_then(|rs| self.sparse_motion(&mut rs.borrow_mut(), t, q, qd, loose));
-        let motion = match sparse {
+        let motion = match sparse.or_else(|| self.plain_motion(t, q, qd, loose)) {
             Some(motion) => motion,
             None => self.dense_motion(t, q, qd, loose)?,
         };
@@ -121,6 +121,18 @@ impl Equations<'_> {
         let power = self.plain.as_ref()?.borrow_mut().accelerations(self.p, &sizes, t, [q, qd], qdd)?;
         self.dense.set(self.dense.get() + 1);
         (power.is_finite() && qdd.iter().all(|v| v.is_finite())).then_some(power)
+    }
+
+    /// [`Self::motion`] by [`Plain`], where it applies (every row kept:
+    /// none is loose).
+    fn plain_motion(&self, t: f64, q: &[f64], qd: &[f64], loose: bool) -> Option<Motion> {
+        let mut plain = self.plain.as_ref()?.borrow_mut();
+        let mut qdd = vec![0.0; self.n];
+        plain.accelerations(self.p, &self.sizes(), t, [q, qd], &mut qdd)?;
+        self.dense.set(self.dense.get() + 1);
+        let Reported { lambda, forces, inputs, residual } = plain.reported(&self.sizes(), qd, &qdd);
+        let loose = if loose { vec![false; self.r] } else { Vec::new() };
+        Some(Motion { qdd, lambda, forces, inputs, residual, loose })
     }
 
     /// The sparse form's motion, or None where the dense form decides: S

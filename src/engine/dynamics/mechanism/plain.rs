@@ -46,6 +46,14 @@ pub(super) struct Plain {
     zeros: Vec<[f64; 3]>,
 }
 
+/// A sample's view of an evaluation ([`Plain::reported`]).
+pub(super) struct Reported {
+    pub lambda: Vec<f64>,
+    pub forces: Vec<f64>,
+    pub inputs: Vec<[f64; 3]>,
+    pub residual: f64,
+}
+
 /// The coordinates n, joint rows r, M's diagonal and the columns' scale S.
 pub(super) struct Sizes<'a> {
     pub n: usize,
@@ -93,6 +101,21 @@ impl Plain {
         }
         qdd.iter_mut().zip(self.x.iter().zip(z.scale)).for_each(|(a, (x, s))| *a = x * s);
         Some(self.forces.iter().zip(qd).map(|(f, v)| f * v).sum())
+    }
+
+    /// What a sample reports of the last [`Self::accelerations`] (q̇ and
+    /// its q̈ given): the joints' λ, the applied forces Q, each input's
+    /// coordinate, speed and acceleration, and the largest |Φ| of the joints.
+    pub fn reported(&self, z: &Sizes, qd: &[f64], qdd: &[f64]) -> Reported {
+        let (n, r) = (z.n, z.r);
+        let (jac, phi, gamma) = (&self.sys.jacobian, &self.sys.phi, &self.sys.gamma);
+        let dot = |k: usize, v: &[f64]| (0..n).map(|j| jac[(k, j)] * v[j]).sum::<f64>();
+        Reported {
+            lambda: self.x[n..n + r].to_vec(),
+            forces: self.forces.clone(),
+            inputs: (r..phi.len()).map(|k| [phi[k], dot(k, qd), dot(k, qdd) - gamma[k]]).collect(),
+            residual: phi.as_slice()[..r].iter().fold(0.0f64, |a, v| a.max(v.abs())),
+        }
     }
 
     /// [S M S, (Φ_q S)ᵀ; Φ_q S, 0] into `a`.
@@ -291,8 +314,8 @@ mod tests {
         let (p, mass, scale) = chain();
         let z = Sizes { n: 9, r: 8, mass: &mass, scale: &scale };
         let c = sweep(&p.mechanism, &[vec![[1.0, 2.0, 0.0]]], &Deadline::none(), false).unwrap().remove(0);
-        let mut qdd = vec![0.0; 9];
-        let power = Plain::default().accelerations(&p, &z, 0.0, [&c.q, &c.qd], &mut qdd).expect("not singular");
+        let (mut plain, mut qdd) = (Plain::default(), vec![0.0; 9]);
+        let power = plain.accelerations(&p, &z, 0.0, [&c.q, &c.qd], &mut qdd).expect("not singular");
         let want = -2.0 * 9.81 * 1.0f64.cos() / (2.0 / 3.0 + 1.0);
         for crank in [2, 5] {
             assert!((qdd[crank] - want).abs() <= 1e-12 * want.abs(), "θ̈ {} vs {want}", qdd[crank]);
@@ -300,6 +323,16 @@ mod tests {
         // The weights' power −dV/dθ·θ̇.
         let weights = -2.0 * 9.81 * 1.0f64.cos() * 2.0;
         assert!((power - weights).abs() <= 1e-12 * weights.abs(), "{power} vs {weights}");
+        // A sample's view: the input's speed and acceleration, and λ with M q̈ + Φ_qᵀλ = Q (to 1e-12 N).
+        let seen = plain.reported(&z, &c.qd, &qdd);
+        assert!((seen.inputs[0][1] - 2.0).abs() <= 1e-12 && (seen.inputs[0][2] - want).abs() <= 1e-12 * want.abs());
+        let jac =
+            evaluate(&p.mechanism, &State { q: &c.q, qd: None, inputs: &[[0.0; 3]] }).jacobian.rows(0, 8).into_owned();
+        let held = jac.transpose() * nalgebra::DVector::from_column_slice(&seen.lambda);
+        for k in 0..9 {
+            let left = mass[k] * qdd[k] + held[k] - seen.forces[k];
+            assert!(left.abs() <= 1e-12, "coordinate {k}: {left}");
+        }
     }
 
     /// Lying flat, the chain's rows lose rank (a singular position): the
