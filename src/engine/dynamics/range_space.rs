@@ -176,9 +176,14 @@ impl RangeSpace {
     /// (J_a W J_bᵀ) of two rows.
     fn product(w: &[f64], a: &RowBlocks, b: &RowBlocks) -> f64 {
         let mut s = 0.0;
-        for (ca, da) in a.iter() {
-            for (cb, db) in b.iter().filter(|(cb, _)| *cb == ca) {
-                s += (0..3).map(|k| da[k] * w[cb + k] * db[k]).sum::<f64>();
+        // Over the blocks' arrays (an iterator with a filter over them was a
+        // sixth of A02's evaluation at N = 40).
+        for (&ca, da) in a.col[..a.len].iter().zip(&a.val) {
+            for (&cb, db) in b.col[..b.len].iter().zip(&b.val) {
+                if cb == ca {
+                    let w = &w[ca..ca + 3];
+                    s += da[0] * w[0] * db[0] + da[1] * w[1] * db[1] + da[2] * w[2] * db[2];
+                }
             }
         }
         s

@@ -130,37 +130,33 @@ impl Ldl {
     /// Factors S given its diagonal (elimination order) and its strictly
     /// lower entries at [`Pattern::position`] (zero at fill positions).
     pub fn factor(&mut self, diag: &[f64], lower: &[f64]) {
+        let (p, l, d, work) = (&self.pattern, &mut self.l, &mut self.d, &mut self.work);
+        // Over slices of each row (L's finished rows, row i's own), which
+        // spare the bounds checks of indexing L and P by position: A02's
+        // factor at N = 40 took a fifth of an evaluation so.
         for (i, s) in diag.iter().enumerate() {
-            self.d[i] = self.factor_row(i, *s, lower);
-        }
-    }
-
-    fn factor_row(&mut self, i: usize, diag: f64, lower: &[f64]) -> f64 {
-        let p = &self.pattern;
-        let mut d = diag;
-        for at in p.row(i) {
-            let j = p.cols[at];
-            // w_j = L_ij·D_j = S_ij − Σ_{k∈P_j} L_jk·w_k.
-            let mut w = lower[at];
-            for bt in p.row(j) {
-                w -= self.l[bt] * self.work[p.cols[bt]];
+            let row = p.row(i);
+            let (done, rest) = l.split_at_mut(row.start);
+            let mut di = *s;
+            for ((l_ij, &j), &s_ij) in rest[..row.len()].iter_mut().zip(&p.cols[row.clone()]).zip(&lower[row.clone()]) {
+                // w_j = L_ij·D_j = S_ij − Σ_{k∈P_j} L_jk·w_k.
+                let of_j = p.row(j);
+                let w = done[of_j.clone()].iter().zip(&p.cols[of_j]).fold(s_ij, |w, (l_jk, &k)| w - l_jk * work[k]);
+                work[j] = w;
+                *l_ij = w / d[j];
+                di -= *l_ij * w;
             }
-            self.work[j] = w;
-            let l = w / self.d[j];
-            self.l[at] = l;
-            d -= l * w;
+            p.cols[row].iter().for_each(|&k| work[k] = 0.0);
+            d[i] = di;
         }
-        for at in p.row(i) {
-            self.work[p.cols[at]] = 0.0;
-        }
-        d
     }
 
     /// z = L⁻¹·b in place (elimination order).
     pub fn forward(&self, z: &mut [f64]) {
         let p = &self.pattern;
         for i in 0..p.len() {
-            let s: f64 = p.row(i).map(|at| self.l[at] * z[p.cols[at]]).sum();
+            let row = p.row(i);
+            let s: f64 = self.l[row.clone()].iter().zip(&p.cols[row]).map(|(l, &k)| l * z[k]).sum();
             z[i] -= s;
         }
     }
@@ -169,9 +165,9 @@ impl Ldl {
     pub fn backward(&self, x: &mut [f64]) {
         let p = &self.pattern;
         for i in (0..p.len()).rev() {
-            let xi = x[i];
-            for at in p.row(i) {
-                x[p.cols[at]] -= self.l[at] * xi;
+            let (xi, row) = (x[i], p.row(i));
+            for (l, &k) in self.l[row.clone()].iter().zip(&p.cols[row]) {
+                x[k] -= l * xi;
             }
         }
     }
