@@ -230,7 +230,7 @@ fn main() {
         ("grading", grading::section),
         ("kinetostatics", kinetostatics::section),
         ("large", large::section),
-        ("flywheel", || flywheel::section(&std::env::temp_dir().to_string_lossy())),
+        ("flywheel", || flywheel::section(&std::env::var(PLOTS).unwrap_or_else(|_| temp_dir()))),
         ("http", http::section),
         ("statements", statements::section),
     ];
@@ -323,24 +323,42 @@ fn dynamics_section() -> (String, Vec<Point>) {
     (doc, points)
 }
 
-/// The whole of docs/BENCHMARKS.md and its plots. The sections timing
-/// microseconds run first, before the long integrations leave the heap
-/// and the caches behind (measured: the flywheel's job 0.071 ms so, 0.100
-/// ms after them).
+/// Where the flywheel section alone writes its plot (the environment
+/// variable; unset, the temporary folder).
+const PLOTS: &str = "MECHDYN_BENCH_PLOTS";
+
+fn temp_dir() -> String {
+    std::env::temp_dir().to_string_lossy().into_owned()
+}
+
+/// A section measured in a process of its own (this benchmark run again
+/// with the section's name), so that none inherits the heap and caches
+/// another left behind (measured once in one process: the flywheel's job
+/// 0.071 ms before the long integrations, 0.100 ms after them). What is
+/// left between runs is this shared host's own noise.
+fn fresh(name: &str, plots: &str) -> String {
+    let exe = std::env::current_exe().expect("the benchmark's own path");
+    let mut run = Command::new(exe);
+    run.arg(name).env(PLOTS, plots).stderr(std::process::Stdio::inherit());
+    let out = run.output().expect("the benchmark runs a section");
+    assert!(out.status.success(), "section {name} failed (its messages above)");
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// The whole of docs/BENCHMARKS.md and its plots, each section in a
+/// process of its own ([`fresh`]) but the direct dynamics, whose points the
+/// plot gathers.
 fn write_docs() {
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/docs");
     let _ = std::fs::create_dir_all(dir);
-    let (kinetostatics, kinematics) = (kinetostatics::section(), kinematics::section());
-    let (flywheel, http, grading) = (flywheel::section(dir), http::section(), grading::section());
+    let names =
+        ["large", "stiff", "kinetostatics", "kinematics", "statements", "contacts", "flywheel", "http", "grading"];
+    let sections: Vec<String> = names.iter().map(|name| fresh(name, dir)).collect();
     let (mut doc, mut points) = dynamics_section();
     let (text, slider_crank) = slider_crank::section();
     doc.push_str(&text);
     points.extend(slider_crank);
-    let statements = statements::section();
-    let contacts = contacts::section();
-    for section in
-        [large::section(), stiff::section(), kinetostatics, kinematics, statements, contacts, flywheel, http, grading]
-    {
+    for section in sections {
         doc.push('\n');
         doc.push_str(&section);
     }
