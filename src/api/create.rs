@@ -5,7 +5,7 @@ use super::AppState;
 use super::body::{Chunks, guarded};
 use super::job::job_chunks;
 use crate::kind::problem::ApiError;
-use crate::kind::{JobResult, json_len, too_large};
+use crate::kind::{JobResult, json_len, too_large, write_json};
 use crate::store::{JobRow, NewJob};
 use axum::body::Body;
 use axum::http::{StatusCode, header};
@@ -147,7 +147,7 @@ pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 /// The result as JSON bytes, or a 422 when it would exceed `limit` bytes.
 fn serialized<R: JobResult>(result: &R, limit: usize) -> Result<Bytes, ApiError> {
     let mut out = Bounded { buf: Vec::new(), limit };
-    match serde_json::to_writer(&mut out, result) {
+    match write_json(&mut out, result) {
         Ok(()) => {
             // The buffer grew by doubling: give back the unused half before it is held in flight.
             out.buf.shrink_to_fit();

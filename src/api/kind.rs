@@ -11,7 +11,7 @@ use super::{AppState, job};
 use crate::kind::limits::Limits;
 use crate::kind::plots;
 use crate::kind::problem::{ApiError, PostErrors};
-use crate::kind::{Kind, Register, Table, compute};
+use crate::kind::{Kind, Register, Table, compute, json_bytes};
 use crate::store::JobRow;
 use axum::extract::State;
 use axum::http::HeaderMap;
@@ -103,7 +103,7 @@ impl<K: Kind> AnyKind for Registered<K> {
     fn solve(&self, raw: String, limits: &Limits, _: &Registry) -> Result<Vec<u8>, ApiError> {
         let body = super::json::parse::<K::Request>(raw)?;
         let result = compute::<K>(&body.value, body.unknown, &body.raw, limits)?;
-        serde_json::to_vec(&result).map_err(|e| ApiError::Internal(format!("result: {e}")))
+        json_bytes(&result).map_err(|e| ApiError::Internal(format!("result: {e}")))
     }
     fn job<'a>(&'a self, state: &'a AppState, request: Bytes, to: Destination) -> StoredJob<'a> {
         Box::pin(async move {

@@ -198,10 +198,33 @@ fn human(bytes: usize) -> Msg {
     Msg::new("text-value-unit").num("value", n).arg("unit", unit)
 }
 
-/// Bytes of `value` as JSON, counted without keeping them.
+/// Bytes of `value` as JSON ([`write_json`]), counted without keeping them.
 pub fn json_len<T: Serialize + ?Sized>(value: &T) -> usize {
     let mut count = Counter(0);
-    serde_json::to_writer(&mut count, value).map_or(usize::MAX, |()| count.0)
+    write_json(&mut count, value).map_or(usize::MAX, |()| count.0)
+}
+
+/// `value` as a result's JSON: serde_json's compact form, but every zero
+/// written 0.0 whatever its sign (a reaction's moment about its own pin
+/// came out -0.0 by rounding, and a sheet showed "-0").
+pub fn write_json<W: io::Write, T: Serialize + ?Sized>(writer: W, value: &T) -> serde_json::Result<()> {
+    value.serialize(&mut serde_json::Serializer::with_formatter(writer, Unsigned))
+}
+
+/// [`write_json`] into a new buffer.
+pub fn json_bytes<T: Serialize + ?Sized>(value: &T) -> serde_json::Result<Vec<u8>> {
+    let mut out = Vec::new();
+    write_json(&mut out, value).map(|()| out)
+}
+
+/// The compact formatter with zeros unsigned.
+struct Unsigned;
+
+impl serde_json::ser::Formatter for Unsigned {
+    fn write_f64<W: ?Sized + io::Write>(&mut self, writer: &mut W, value: f64) -> io::Result<()> {
+        // -0.0 + 0.0 is +0.0; every other value is unchanged.
+        serde_json::ser::CompactFormatter.write_f64(writer, value + 0.0)
+    }
 }
 
 /// Counts bytes written, keeps none.

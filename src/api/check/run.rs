@@ -13,7 +13,7 @@ use crate::api::{AppState, create, job, read};
 use crate::i18n::Msg;
 use crate::kind::limits::Limits;
 use crate::kind::problem::{ApiError, FieldError};
-use crate::kind::{Table, unit_in};
+use crate::kind::{Table, json_bytes, unit_in};
 use crate::store::JobRow;
 use axum::extract::State;
 use axum::http::HeaderMap;
@@ -182,7 +182,7 @@ fn solve_offline(raw: String, limits: &Limits, kinds: &kind::Registry) -> Result
     };
     let result = kind.solve(request.to_string(), limits, kinds).map_err(|e| e.under("/request"))?;
     let result: Value = serde_json::from_slice(&result).map_err(|e| ApiError::Internal(e.to_string()))?;
-    serde_json::to_vec(&grade(&r, kind, &result, None)?).map_err(|e| ApiError::Internal(e.to_string()))
+    json_bytes(&grade(&r, kind, &result, None)?).map_err(|e| ApiError::Internal(e.to_string()))
 }
 
 impl AnyKind for CheckKind {
