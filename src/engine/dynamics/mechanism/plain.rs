@@ -16,8 +16,9 @@
 //! is within τ of dependence — is settled here, where it is plainly not,
 //! by the Gram matrix G = (RΦ_qS)(RΦ_qS)ᵀ (r × r, R the rows' scale): with
 //! λ_max ≤ B, B the largest row sum of |G| (Gershgorin), and λ_min ≥
-//! det G / λ_max^(r−1), every σ² = λ(G) ≥ τ²·σ²_max once det G ≥ τ²·B^r
-//! (det G from G's Cholesky factor). Where the test fails — near a
+//! det G / λ_max^(r−1), every σ² = λ(G) ≥ (10τ)²·σ²_max once det G ≥
+//! (10τ)²·B^r (det G from G's Cholesky factor; ten times the margin the
+//! general form keeps). Where the test fails — near a
 //! singular position, or a long row vector that the bound overstates —
 //! the general form decides, so the test chooses only how fast, never
 //! what is solved. Measured on IFToMM A01 (a point mass on a massless link)
