@@ -169,7 +169,8 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         mass,
         scale: lengths.iter().map(|c| c / length).collect(),
         tol: 1e-12 * length,
-        plain: (sparse.is_none() && grips.is_empty()).then(Default::default),
+        // Redundant rows are dependent at every position: the plain test would fail each time.
+        plain: (sparse.is_none() && grips.is_empty() && mobility.redundant_constraints == 0).then(Default::default),
         sparse: sparse.map(RefCell::new),
         held_at: RefCell::new(Vec::new()),
         dense: Default::default(),

@@ -102,12 +102,22 @@ impl Equations<'_> {
     /// The motion at a state; None where the equations are singular or the
     /// state is not finite.
     pub fn motion(&self, t: f64, q: &[f64], qd: &[f64], loose: bool) -> Option<Motion> {
+        match self.plain_motion(t, q, qd, loose) {
+            Some(motion) => Some(motion).filter(finite),
+            None => self.general_motion(t, q, qd, loose),
+        }
+    }
+
+    /// [`Self::motion`] without [`Plain`]: the sparse form, else the
+    /// general dense one (what the integrator asks where [`Self::plain`]
+    /// declined, so that the plain test is not made twice).
+    pub fn general_motion(&self, t: f64, q: &[f64], qd: &[f64], loose: bool) -> Option<Motion> {
         let sparse = self.sparse.as_ref().and_then(|rs| self.sparse_motion(&mut rs.borrow_mut(), t, q, qd, loose));
-        let motion = match sparse.or_else(|| self.plain_motion(t, q, qd, loose)) {
+        let motion = match sparse {
             Some(motion) => motion,
             None => self.dense_motion(t, q, qd, loose)?,
         };
-        motion.qdd.iter().chain(&motion.lambda).all(|v| v.is_finite()).then_some(motion)
+        Some(motion).filter(finite)
     }
 
     fn sizes(&self) -> Sizes<'_> {
@@ -115,7 +125,7 @@ impl Equations<'_> {
     }
 
     /// q̈ into `qdd` and the loads' power Qᵀq̇ by [`Plain`], where it
-    /// applies (None: [`Self::motion`] decides).
+    /// applies (None: [`Self::general_motion`] decides).
     pub fn plain(&self, t: f64, q: &[f64], qd: &[f64], qdd: &mut [f64]) -> Option<f64> {
         let sizes = self.sizes();
         let power = self.plain.as_ref()?.borrow_mut().accelerations(self.p, &sizes, t, [q, qd], qdd)?;
@@ -126,11 +136,11 @@ impl Equations<'_> {
     /// [`Self::motion`] by [`Plain`], where it applies (every row kept:
     /// none is loose).
     fn plain_motion(&self, t: f64, q: &[f64], qd: &[f64], loose: bool) -> Option<Motion> {
-        let mut plain = self.plain.as_ref()?.borrow_mut();
+        let (mut plain, sizes) = (self.plain.as_ref()?.borrow_mut(), self.sizes());
         let mut qdd = vec![0.0; self.n];
-        plain.accelerations(self.p, &self.sizes(), t, [q, qd], &mut qdd)?;
+        plain.accelerations(self.p, &sizes, t, [q, qd], &mut qdd)?;
         self.dense.set(self.dense.get() + 1);
-        let Reported { lambda, forces, inputs, residual } = plain.reported(&self.sizes(), qd, &qdd);
+        let Reported { lambda, forces, inputs, residual } = plain.reported(&sizes, qd, &qdd);
         let loose = if loose { vec![false; self.r] } else { Vec::new() };
         Some(Motion { qdd, lambda, forces, inputs, residual, loose })
     }
@@ -363,6 +373,11 @@ impl Equations<'_> {
         }
         removed
     }
+}
+
+/// q̈ and λ are finite (else the state or its equations are not).
+fn finite(motion: &Motion) -> bool {
+    motion.qdd.iter().chain(&motion.lambda).all(|v| v.is_finite())
 }
 
 /// T = ½ q̇ᵀ M q̇ with M's diagonal `mass`.

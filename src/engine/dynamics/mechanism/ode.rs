@@ -17,7 +17,7 @@ impl Model for Equations<'_> {
             dy[2 * n] = power;
             return;
         }
-        match self.motion(t, q, qd, false) {
+        match self.general_motion(t, q, qd, false) {
             Some(m) => {
                 dy[..n].copy_from_slice(qd);
                 dy[n..2 * n].copy_from_slice(&m.qdd);

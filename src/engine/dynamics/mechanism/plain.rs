@@ -1,7 +1,9 @@
 //! The dense form's common case, over storage kept from one evaluation to
 //! the next: every joint row clearly independent, no rolling contact with
-//! friction. A mechanism outside the sparse form (a point mass, whose
-//! I_G = 0 leaves M singular; a redundant joint) spends its run here.
+//! friction. A mechanism outside the sparse form for its masses (a point
+//! mass, whose I_G = 0 leaves M singular; a contact, whose curve
+//! parameters carry none) spends its run here; one with redundant joints,
+//! whose rows are dependent everywhere, is left to the general form.
 //!
 //! The same equations as the general dense form (`equations.rs`), solved
 //! for S⁻¹q̈:
