@@ -137,7 +137,8 @@ pub struct Workspace {
 impl Workspace {
     /// Newton–Raphson from `q` to Φ = 0 at the given inputs, to |R Φ|∞ ≤
     /// 1e-13 (1 + max |q_j / c_j|) (each row in its own size, [`scaled`]):
-    /// the iterations and the final |Φ|∞; Φ and Φ_q there are in `self.sys`.
+    /// the iterations and the final |Φ|∞; Φ and Φ_q there are in `self.sys`,
+    /// and R's r_i in `self.rows`.
     pub fn assemble(
         &mut self,
         m: &Mechanism,
@@ -191,9 +192,10 @@ impl Workspace {
     /// Φ_q's condition numbers, in SI units and scaled ([`scaled`]), each
     /// κ₂ exactly when `exact` or where its estimate from Φ_q's LU exceeds
     /// [`ESTIMATE_LIMIT`]; else the estimate.
+    /// The r_i are those [`Workspace::assemble`] left for this Φ_q (where
+    /// it converged: the last Φ_q it evaluated).
     fn conditions(&mut self, exact: bool) -> [f64; 2] {
         let a = &self.sys.jacobian;
-        scaled::row_scales(a, &self.cols, &mut self.rows);
         let scales = [self.rows.as_slice(), self.cols.as_slice()];
         let estimates = (!exact && self.lu.is_regular()).then(|| {
             let si = estimated_condition(a, &self.lu, [&mut self.x, &mut self.y]);
