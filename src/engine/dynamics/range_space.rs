@@ -68,6 +68,14 @@ const CACHED: usize = 16;
 /// The share of a right-hand side kept at a pivot's sine: 0 to 1 between
 /// the ends of [`HOLD`], smooth (cubic in the log of the sine).
 fn kept(sine: f64) -> f64 {
+    // Outside the blend without a logarithm: a sine a row, at every
+    // evaluation, made them 2.6 % of A02's at N = 40 (the same values).
+    if sine >= HOLD.1 {
+        return 1.0;
+    }
+    if sine <= HOLD.0 {
+        return 0.0;
+    }
     let x = ((sine / HOLD.0).ln() / (HOLD.1 / HOLD.0).ln()).clamp(0.0, 1.0);
     x * x * (3.0 - 2.0 * x)
 }
