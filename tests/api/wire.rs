@@ -4,6 +4,7 @@
 
 use std::io::{Read, Write};
 use std::net::{TcpListener, TcpStream};
+use std::sync::atomic::{AtomicU32, Ordering};
 use std::time::Duration;
 
 /// One HTTP/1.1 exchange on a fresh connection: (status, body).
@@ -42,6 +43,19 @@ pub fn exchange(
     Ok((status, body))
 }
 
+/// A loopback port free now, below Linux's ephemeral range (32768–60999):
+/// a port the kernel hands out for port 0 is also one it may give an
+/// outgoing connection's local end, and the tests that stop a process and
+/// start it again on its port (a replica killed, the database stopped)
+/// could then not bind it while the clients' connections come and go.
+/// Consecutive ports from an offset of this process's, each tried.
 pub fn free_port() -> u16 {
-    TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port()
+    static NEXT: AtomicU32 = AtomicU32::new(0);
+    let offset = std::process::id() * 97;
+    loop {
+        let port = 20_000 + ((offset + NEXT.fetch_add(1, Ordering::Relaxed)) % 12_000) as u16;
+        if TcpListener::bind(("127.0.0.1", port)).is_ok() {
+            return port;
+        }
+    }
 }
