@@ -133,14 +133,14 @@ impl Equations<'_> {
         (power.is_finite() && qdd.iter().all(|v| v.is_finite())).then_some(power)
     }
 
-    /// [`Self::motion`] by [`Plain`], where it applies (every row kept:
-    /// none is loose).
+    /// [`Self::motion`] by [`Self::plain`], where it applies (every row
+    /// kept: none is loose): the integrator's evaluation, and what a sample
+    /// reports of it.
     fn plain_motion(&self, t: f64, q: &[f64], qd: &[f64], loose: bool) -> Option<Motion> {
-        let (mut plain, sizes) = (self.plain.as_ref()?.borrow_mut(), self.sizes());
         let mut qdd = vec![0.0; self.n];
-        plain.accelerations(self.p, &sizes, t, [q, qd], &mut qdd)?;
-        self.dense.set(self.dense.get() + 1);
-        let Reported { lambda, forces, inputs, residual } = plain.reported(&sizes, qd, &qdd);
+        self.plain(t, q, qd, &mut qdd)?;
+        let Reported { lambda, forces, inputs, residual } =
+            self.plain.as_ref()?.borrow().reported(&self.sizes(), qd, &qdd);
         let loose = if loose { vec![false; self.r] } else { Vec::new() };
         Some(Motion { qdd, lambda, forces, inputs, residual, loose })
     }
