@@ -6,15 +6,14 @@
 //! own, and joint friction iterates on vectors of its own).
 
 use super::actuators::Actuated;
-use super::loads::{applied_forces_into, point_motion};
+use super::loads::applied_forces_into;
+use super::reactions::{reaction_of, reactions_into};
 use super::{ContactState, Motion, Outputs, Reaction, Step, friction};
 use crate::engine::kinematics::{Configuration, solve_linear};
 use crate::engine::mobility::Mobility;
-use crate::engine::model::{
-    BodyId, Coordinate, Driver, Guide, JointKind, Mechanism, Pitch, cross, dot, perp, rotate_by,
-};
+use crate::engine::model::Mechanism;
 use crate::engine::{Deadline, EngineError, Progress};
-use nalgebra::{DMatrix, DVector};
+use nalgebra::DVector;
 
 /// The vectors of one position's actions, kept for the next: Q, M q̈ − Q,
 /// λ, and the first row of every joint.
@@ -27,16 +26,17 @@ pub(super) struct Scratch {
     /// J_a, where an input's effort acts at another joint ([`Actuated`]).
     pub actuated: Option<Actuated>,
     /// Joint friction: the moving joints' units, and per unit a_k, y_k and
-    /// the reactions y_k gives; λ₀ and the driving actions of a y_k.
+    /// the reactions y_k gives; λ₀ and the driving actions of a λ.
     pub units: Vec<friction::Unit>,
     pub per_unit: Vec<PerUnit>,
     pub lambda0: Vec<f64>,
     pub driving: Vec<f64>,
-    /// M q̈ − Q kept while a y_k is solved.
-    pub qv_scratch: Vec<f64>,
+    /// What presses each joint with friction under the loads alone (λ₀).
+    pub loads: Vec<Reaction>,
 }
 
-/// One moving joint's friction per unit: a_k, y_k (Φ_qᵀ y_k = a_k) and the reactions R(y_k).
+/// One moving joint's friction per unit: a_k, y_k (Φ_qᵀ y_k = a_k) and the
+/// normal reactions R(y_k) of the joints with friction, in their order.
 #[derive(Default)]
 pub(super) struct PerUnit {
     a: Vec<f64>,
@@ -204,7 +204,9 @@ const COUPLED_UNITS: usize = 4;
 
 /// Adds the joints' friction to Q (`s.qv`) and takes it from M q̈ − Q
 /// (`s.inertial`), with the driving actions and every reaction (each with
-/// its friction) into `out` ([`friction`]): the fixed point's passes.
+/// its friction) into `out` ([`friction`]): the fixed point's passes. The
+/// passes read only what presses each joint with friction; every reaction
+/// is read once, from the last λ.
 fn with_friction(
     m: &Mechanism,
     c: &Configuration,
@@ -216,9 +218,8 @@ fn with_friction(
 ) -> Result<usize, EngineError> {
     let scale = c.qdd.iter().enumerate().map(|(i, a)| (a * m.mass_of(i)).abs());
     let tol = 1e-13 * scale.chain(s.qv.iter().map(|q| q.abs())).fold(f64::MIN_POSITIVE, f64::max);
-    // λ₀ and the reactions of the loads alone; a_k of each moving joint with friction.
-    multipliers(m, c, s, Some(&[]), at, (&mut *out.0, &mut *out.1))?;
-    std::mem::swap(&mut s.lambda0, &mut s.lambda);
+    // λ₀ of the loads alone; a_k of each moving joint with friction.
+    solve_transposed(c, s.actuated.as_ref(), s.inertial.iter().map(|v| -v), &mut s.lambda0, at)?;
     let (mut units, mut per) = (std::mem::take(&mut s.units), std::mem::take(&mut s.per_unit));
     friction::units(m, c, &mut units);
     per.resize_with(units.len(), Default::default);
@@ -227,12 +228,15 @@ fn with_friction(
         p.a.resize(s.qv.len(), 0.0);
         unit.add_generalized(m, c, 1.0, &mut p.a);
     }
+    let mut loads = std::mem::take(&mut s.loads);
+    unit_reactions(m, c, (&s.offsets, &units), &s.lambda0, &mut s.driving, &mut loads);
     let coupled = units.len() <= COUPLED_UNITS;
     let f = if coupled {
-        linear(m, c, s, (&units, &mut per), &*out.1, (tol, deadline), at)
+        linear(m, c, s, (&units, &mut per), &loads, (tol, deadline), at)
     } else {
-        iterated(m, c, s, (&units, &per), &*out.1, (tol, deadline), at)
+        iterated(m, c, s, (&units, &per), &loads, (tol, deadline), at)
     };
+    s.loads = loads;
     let result = f.and_then(|(f, passes)| {
         for (p, f) in per.iter().zip(&f) {
             s.qv.iter_mut().zip(&p.a).for_each(|(q, a)| *q += f * a);
@@ -257,8 +261,26 @@ fn with_friction(
     result
 }
 
-/// The magnitudes with λ linear in them: y_k and R(y_k) solved once per
-/// joint, then f_k = g_k(R_k(λ₀) + Σ_j f_j R_k(y_j)) over scalars.
+/// The normal reactions of the joints with friction (`units`, in their
+/// order) from multipliers `lambda`, into `out`; `driving` is scratch.
+fn unit_reactions(
+    m: &Mechanism,
+    c: &Configuration,
+    (offsets, units): (&[usize], &[friction::Unit]),
+    lambda: &[f64],
+    driving: &mut Vec<f64>,
+    out: &mut Vec<Reaction>,
+) {
+    driving.clear();
+    driving.extend(lambda[lambda.len() - m.drivers.len()..].iter().map(|l| -l));
+    let efforts = (&c.jacobian, lambda, driving.as_slice());
+    out.clear();
+    out.extend(units.iter().map(|u| reaction_of(m, (&c.q, &c.trig), efforts, offsets, u.joint)));
+}
+
+/// The magnitudes with λ linear in them: y_k and what it presses the joints
+/// with solved once per joint, then f_k = g_k(R_k(λ₀) + Σ_j f_j R_k(y_j))
+/// over scalars.
 fn linear(
     m: &Mechanism,
     c: &Configuration,
@@ -268,26 +290,16 @@ fn linear(
     (tol, deadline): (f64, &Deadline),
     (step, input): (usize, f64),
 ) -> Result<(Vec<f64>, usize), EngineError> {
-    std::mem::swap(&mut s.inertial, &mut s.qv_scratch);
-    let mut solved = Ok(());
     for p in per.iter_mut() {
-        solved = solved.and_then(|()| deadline.check(|| Progress::Friction { step })).and_then(|()| {
-            s.inertial.clear();
-            s.inertial.extend(p.a.iter().map(|a| -a));
-            let mut driving = std::mem::take(&mut s.driving);
-            let solved = multipliers(m, c, s, Some(&[]), (step, input), (&mut driving, &mut p.reactions));
-            s.driving = driving;
-            p.y.clone_from(&s.lambda);
-            solved
-        });
+        deadline.check(|| Progress::Friction { step })?;
+        solve_transposed(c, s.actuated.as_ref(), p.a.iter().copied(), &mut p.y, (step, input))?;
+        unit_reactions(m, c, (&s.offsets, units), &p.y, &mut s.driving, &mut p.reactions);
     }
-    std::mem::swap(&mut s.inertial, &mut s.qv_scratch);
-    solved?;
     fixed_point(per, (tol, deadline), (step, input), |f, next| {
         for (k, unit) in units.iter().enumerate() {
-            let mut r = loads[unit.joint];
+            let mut r = loads[k];
             for (p, f) in per.iter().zip(f) {
-                let y = &p.reactions[unit.joint];
+                let y = &p.reactions[k];
                 (r.fx, r.fy, r.moment) = (r.fx + f * y.fx, r.fy + f * y.fy, r.moment + f * y.moment);
                 r.ends = r.ends.zip(y.ends).map(|([a, b], [c, d])| [a + f * c, b + f * d]);
             }
@@ -308,24 +320,24 @@ fn iterated(
     (tol, deadline): (f64, &Deadline),
     at: (usize, f64),
 ) -> Result<(Vec<f64>, usize), EngineError> {
-    let inertial = s.inertial.clone();
-    let (mut driving, mut reactions) = (Vec::new(), Vec::new());
-    let found = fixed_point(per, (tol, deadline), at, |f, next| {
+    let (mut b, mut reactions) = (Vec::new(), Vec::new());
+    fixed_point(per, (tol, deadline), at, |f, next| {
         let solved = if f.iter().all(|f| *f == 0.0) {
             loads
         } else {
-            s.inertial.clone_from(&inertial);
+            // Φ_qᵀλ = −(M q̈ − Q − Σ f_k a_k).
+            b.clear();
+            b.extend(s.inertial.iter().map(|v| -v));
             for (p, f) in per.iter().zip(f) {
-                s.inertial.iter_mut().zip(&p.a).for_each(|(q, a)| *q -= f * a);
+                b.iter_mut().zip(&p.a).for_each(|(b, a)| *b += f * a);
             }
-            multipliers(m, c, s, Some(&[]), at, (&mut driving, &mut reactions))?;
+            solve_transposed(c, s.actuated.as_ref(), b.iter().copied(), &mut s.lambda, at)?;
+            unit_reactions(m, c, (&s.offsets, units), &s.lambda, &mut s.driving, &mut reactions);
             &reactions[..]
         };
-        units.iter().zip(next.iter_mut()).for_each(|(unit, next)| *next = unit.magnitude(&solved[unit.joint]));
+        units.iter().zip(solved).zip(next.iter_mut()).for_each(|((unit, r), next)| *next = unit.magnitude(r));
         Ok(())
-    });
-    s.inertial = inertial;
-    found
+    })
 }
 
 /// f from 0 by `pass` (g(f) into its second argument) until no f_k·|a_k|∞
@@ -358,20 +370,33 @@ fn multipliers(
     c: &Configuration,
     s: &mut Scratch,
     reactions_with: Option<&[usize]>,
-    (step, input): (usize, f64),
+    at: (usize, f64),
     out: (&mut Vec<f64>, &mut Vec<Reaction>),
 ) -> Result<(), EngineError> {
-    let (jacobian, lu) = s.actuated.as_ref().map_or((&c.jacobian, &c.lu), |a| (a.jacobian(), &a.lu));
-    let lambda = &mut s.lambda;
-    lambda.clear();
-    lambda.extend(s.inertial.iter().map(|v| -v));
-    if !lu.solve_transposed(lambda) {
-        let b = DVector::from_iterator(s.inertial.len(), s.inertial.iter().map(|v| -v));
-        let solved = solve_linear(&jacobian.transpose(), &b).ok_or(EngineError::Singular { step, input })?;
-        lambda.clear();
-        lambda.extend(solved.iter());
-    }
+    solve_transposed(c, s.actuated.as_ref(), s.inertial.iter().map(|v| -v), &mut s.lambda, at)?;
     read_out(m, c, s, reactions_with, out);
+    Ok(())
+}
+
+/// x of Φ_qᵀx = b into `x` (J_a's, where an input's effort acts at another
+/// joint); a singular Φ_q by least squares, else the error at `at`.
+fn solve_transposed(
+    c: &Configuration,
+    actuated: Option<&Actuated>,
+    b: impl Iterator<Item = f64> + Clone,
+    x: &mut Vec<f64>,
+    (step, input): (usize, f64),
+) -> Result<(), EngineError> {
+    let (jacobian, lu) = actuated.map_or((&c.jacobian, &c.lu), |a| (a.jacobian(), &a.lu));
+    x.clear();
+    x.extend(b.clone());
+    if lu.solve_transposed(x) {
+        return Ok(());
+    }
+    let solved = solve_linear(&jacobian.transpose(), &DVector::from_iterator(x.len(), b));
+    let solved = solved.ok_or(EngineError::Singular { step, input })?;
+    x.clear();
+    x.extend(solved.iter());
     Ok(())
 }
 
@@ -392,115 +417,4 @@ fn read_out(
         let (at, efforts) = ((c.q.as_slice(), c.trig.as_slice()), (&c.jacobian, lambda.as_slice(), driving.as_slice()));
         reactions_into(m, at, efforts, (&s.offsets, indeterminate), reactions);
     }
-}
-
-/// Every joint's reaction from the multipliers λ of Φ_qᵀλ = Q − M q̈ (the
-/// joints' rows first in Φ_q, joint k's from `offsets[k]`), flagged where
-/// `indeterminate` lists the joint.
-pub fn reactions(
-    m: &Mechanism,
-    q: &[f64],
-    jac: &DMatrix<f64>,
-    lambda: &[f64],
-    offsets: &[usize],
-    indeterminate: &[usize],
-) -> Vec<Reaction> {
-    let mut trig = Vec::new();
-    m.turns_into(q, &mut trig);
-    let mut out = Vec::with_capacity(m.joints.len());
-    reactions_into(m, (q, &trig), (jac, lambda, &[]), (offsets, indeterminate), &mut out);
-    out
-}
-
-/// [`reactions`] appended to `out`, with (sin θ, cos θ) of every body at q
-/// (ground first) in `trig`. A contact that carries an input's `driving`
-/// effort (its own coordinate driven, or it the actuator) passes it through
-/// its equations to the bodies; its reaction is what is left, the effort
-/// being the actuator's, not the contact's (a frictionless contact's
-/// tangential part is then 0).
-fn reactions_into(
-    m: &Mechanism,
-    (q, trig): (&[f64], &[(f64, f64)]),
-    (jac, lambda, driving): (&DMatrix<f64>, &[f64], &[f64]),
-    (offsets, indeterminate): (&[usize], &[usize]),
-    out: &mut Vec<Reaction>,
-) {
-    out.extend(m.joints.iter().enumerate().map(|(k, joint)| {
-        let rows = offsets[k]..offsets[k] + Mechanism::joint_rows(&joint.kind);
-        let force_on = |b: BodyId| -> [f64; 3] {
-            let Some(col) = m.column(b) else { return [0.0; 3] };
-            let f = |d: usize| -rows.clone().map(|r| jac[(r, col + d)] * lambda[r]).sum::<f64>();
-            [f(0), f(1), f(2)]
-        };
-        let [i, j] = joint.bodies;
-        // On the second body, or minus the action on the first when the second is the ground.
-        let (b, sign) = if j != 0 { (j, 1.0) } else { (i, -1.0) };
-        let [fx, fy, mg] = force_on(b);
-        // About the joint's point, carried by the body; a contact's where it touches now.
-        let at = m.contact_point(k, b, q).unwrap_or(joint.at);
-        let arm = rotate_by(trig[b], m.local(b, at));
-        let moment = mg - cross(arm, [fx, fy]);
-        let determinate = !indeterminate.contains(&k);
-        if let JointKind::Gear { pitch: Some(pitch), .. } = &joint.kind {
-            let [tx, ty] = tooth_force(m, q, [i, j], pitch, sign * moment);
-            return Reaction { joint: k, on: j, by: i, fx: tx, fy: ty, moment: 0.0, ends: None, determinate };
-        }
-        let [fx, fy, moment] = [sign * fx, sign * fy, sign * moment];
-        // The actuator's force at the contact point: no moment about it.
-        let [ax, ay] = contact_effort(m, q, k, driving);
-        let [fx, fy] = [fx - ax, fy - ay];
-        let ends = match (&joint.kind, joint.length) {
-            (JointKind::Prismatic { axis }, Some(guide)) => {
-                // The moment about the guide's centre, on the body that carries it.
-                let carrier = if matches!(guide, Guide::Fixed(_)) { i } else { j };
-                let (centre, here) = (placed(m, (q, trig), carrier, joint.at), placed(m, (q, trig), b, joint.at));
-                let moment = moment + cross([here[0] - centre[0], here[1] - centre[1]], [fx, fy]);
-                let (normal, length) = (dot(perp(rotate_by(trig[i], *axis)), [fx, fy]), guide.length());
-                Some([normal / 2.0 - moment / length, normal / 2.0 + moment / length])
-            }
-            _ => None,
-        };
-        Reaction { joint: k, on: j, by: i, fx, fy, moment, ends, determinate }
-    }));
-}
-
-/// The force on the second body of joint k from the inputs' efforts that
-/// act at it, where it is a sliding contact: each effort along the
-/// direction in which it works on the contact's arc length.
-fn contact_effort(m: &Mechanism, q: &[f64], k: usize, driving: &[f64]) -> [f64; 2] {
-    let JointKind::Contact(c) = &m.joints[k].kind else { return [0.0; 2] };
-    let acting = |d: &Driver| d.actuator.or(if let Coordinate::Joint(j) = d.coordinate { Some(j) } else { None });
-    let effort: f64 = m.drivers.iter().zip(driving).filter(|(d, _)| acting(d) == Some(k)).map(|(_, f)| f).sum();
-    match m.contact_arc_direction(k, q) {
-        Some(t) if effort != 0.0 && !c.rolling => [effort * t[0], effort * t[1]],
-        _ => [0.0; 2],
-    }
-}
-
-/// Where body `b`'s point `p` (reference coordinates) is at q.
-fn placed(m: &Mechanism, (q, trig): (&[f64], &[(f64, f64)]), b: BodyId, p: [f64; 2]) -> [f64; 2] {
-    let Some(c) = m.column(b) else { return p };
-    let s = rotate_by(trig[b], m.local(b, p));
-    [q[c] + s[0], q[c + 1] + s[1]]
-}
-
-/// The tooth force on the second gear at the pitch point, from the mesh's
-/// couple on it: tangential M₂/r₂, radial |M₂/r₂|·tan α pushing the teeth apart
-/// (towards the gear's centre; outwards for the ring of an internal mesh).
-fn tooth_force(m: &Mechanism, q: &[f64], [i, j]: [BodyId; 2], pitch: &Pitch, couple: f64) -> [f64; 2] {
-    let zero = [0.0; 2];
-    let (c1, _) = point_motion(m, q, &vec![0.0; q.len()], (i, pitch.centers[0]));
-    let (c2, _) = point_motion(m, q, &vec![0.0; q.len()], (j, pitch.centers[1]));
-    let d = [c1[0] - c2[0], c1[1] - c2[1]];
-    let length = d[0].hypot(d[1]);
-    if length == 0.0 {
-        return zero;
-    }
-    // w: from the second gear's centre to the pitch point.
-    let away = pitch.internal && !pitch.second_is_ring;
-    let w = if away { [-d[0] / length, -d[1] / length] } else { [d[0] / length, d[1] / length] };
-    let t = perp(w);
-    let tangential = couple / pitch.radius;
-    let radial = tangential.abs() * pitch.pressure_angle.tan() * if pitch.second_is_ring { 1.0 } else { -1.0 };
-    [tangential * t[0] + radial * w[0], tangential * t[1] + radial * w[1]]
 }

@@ -18,13 +18,14 @@ mod actuators;
 mod contacts;
 mod friction;
 mod loads;
+mod reactions;
 mod summary;
 
-pub use actions::reactions;
 pub use contacts::{ContactState, Frame, contact_state};
 pub use loads::{
     Energy, Load, applied_forces, applied_forces_into, energy, point_acceleration, point_motion, potential,
 };
+pub use reactions::reactions;
 pub use summary::Summary;
 use summary::Tally;
 
