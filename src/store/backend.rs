@@ -14,18 +14,13 @@
 //! no query is translated at run time, and no value is copied through an
 //! intermediate row type.
 
+use super::migrations::{POSTGRES, SQLITE};
 use super::url::Backend;
 use super::{Options, StoreError};
-use sqlx::migrate::Migrator;
 use sqlx::postgres::{PgConnectOptions, PgPool, PgPoolOptions};
 use sqlx::sqlite::{SqliteConnectOptions, SqliteJournalMode, SqlitePool, SqlitePoolOptions, SqliteSynchronous};
 use std::str::FromStr;
 use std::time::{Duration, Instant};
-
-/// The SQLite schema, embedded in the binary.
-pub static SQLITE: Migrator = sqlx::migrate!("./migrations/sqlite");
-/// The PostgreSQL schema: the same tables and columns.
-pub static POSTGRES: Migrator = sqlx::migrate!("./migrations/postgres");
 
 /// Connections a store keeps open.
 const CONNECTIONS: u32 = 8;

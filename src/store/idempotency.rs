@@ -5,7 +5,7 @@ use super::backend::on_pool;
 use super::{Store, StoreError};
 
 /// The answer to a POST, kept under its key.
-#[derive(Clone, Debug, PartialEq, sqlx::FromRow)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Answer {
     /// SHA-256 of the request (method, path and query, content type, body).
     pub fingerprint: String,

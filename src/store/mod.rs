@@ -29,9 +29,11 @@ mod health;
 mod held;
 mod idempotency;
 mod list;
+mod migrations;
 mod packed;
 mod queue;
 mod retention;
+mod rows;
 mod url;
 mod wal;
 mod writer;
@@ -126,7 +128,7 @@ pub struct JobRow {
 }
 
 /// What a list of jobs shows of each, without its request and result.
-#[derive(Clone, Debug, sqlx::FromRow)]
+#[derive(Clone, Debug)]
 pub struct JobSummary {
     pub id: String,
     pub kind: String,
@@ -135,12 +137,10 @@ pub struct JobSummary {
     pub label: Option<String>,
     /// Bytes of its request and result together.
     pub bytes: i64,
-    #[sqlx(try_from = "String")]
     pub status: Status,
 }
 
-/// A job as the database returns it.
-#[derive(sqlx::FromRow)]
+/// A job as the database returns it (`rows.rs` reads it).
 pub(crate) struct Row {
     seq: i64,
     id: String,
@@ -151,7 +151,6 @@ pub(crate) struct Row {
     engine_us: i64,
     engine_version: String,
     label: Option<String>,
-    #[sqlx(try_from = "String")]
     status: Status,
     problem: Option<String>,
     result_zstd: Option<Vec<u8>>,
