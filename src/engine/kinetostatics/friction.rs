@@ -74,6 +74,9 @@ pub struct Unit {
     force: [f64; 2],
     couple: f64,
     measure: Measure,
+    /// Where it acts on the second body and on the first (a contact's
+    /// points, found once; else the joint's point).
+    at: [[f64; 2]; 2],
 }
 
 impl Unit {
@@ -89,10 +92,9 @@ impl Unit {
     /// a_k·f added to the generalized forces `qv`.
     pub fn add_generalized(&self, m: &Mechanism, c: &Configuration, f: f64, qv: &mut [f64]) {
         let [i, j] = m.joints[self.joint].bodies;
-        let at = |b: usize| m.contact_point(self.joint, b, &c.q).unwrap_or(m.joints[self.joint].at);
         let (force, couple) = ([f * self.force[0], f * self.force[1]], f * self.couple);
-        add_force(m, &c.trig, qv, j, at(j), force, couple);
-        add_force(m, &c.trig, qv, i, at(i), [-force[0], -force[1]], -couple);
+        add_force(m, &c.trig, qv, j, self.at[0], force, couple);
+        add_force(m, &c.trig, qv, i, self.at[1], [-force[0], -force[1]], -couple);
     }
 
     /// The friction of magnitude f added to the joint's reported reaction.
@@ -121,11 +123,12 @@ pub fn units(m: &Mechanism, c: &Configuration, out: &mut Vec<Unit>) {
     out.extend(m.joints.iter().enumerate().filter_map(|(k, joint)| {
         let f = joint.friction.filter(|f| f.mu > 0.0)?;
         let [i, j] = joint.bodies;
+        let mut at = [joint.at; 2];
         let (force, couple, measure) = match joint.kind {
             JointKind::Revolute => ([0.0; 2], -f.mu * f.radius * sign(pose(j).1 - pose(i).1), Measure::Resultant),
             JointKind::Prismatic { axis } | JointKind::PinSlot { axis } => {
                 let u = rotate(pose(i).0, axis);
-                let slide = sliding(u, [joint.at; 2], [i, j]);
+                let slide = sliding(u, at, [i, j]);
                 let measure = if joint.length.is_some() { Measure::Ends(perp(u)) } else { Measure::Across(perp(u)) };
                 ([-f.mu * slide * u[0], -f.mu * slide * u[1]], 0.0, measure)
             }
@@ -133,12 +136,12 @@ pub fn units(m: &Mechanism, c: &Configuration, out: &mut Vec<Unit>) {
             JointKind::Contact(ref contact) if contact.rolling => return None,
             JointKind::Contact(_) => {
                 let t = m.contact_tangent(k, &c.q)?;
-                let at = [m.contact_point(k, j, &c.q)?, m.contact_point(k, i, &c.q)?];
+                at = [m.contact_point(k, j, &c.q)?, m.contact_point(k, i, &c.q)?];
                 let slide = sliding(t, at, [i, j]);
                 ([-f.mu * slide * t[0], -f.mu * slide * t[1]], 0.0, Measure::Across(perp(t)))
             }
             JointKind::Gear { .. } => return None,
         };
-        (force != [0.0; 2] || couple != 0.0).then_some(Unit { joint: k, force, couple, measure })
+        (force != [0.0; 2] || couple != 0.0).then_some(Unit { joint: k, force, couple, measure, at })
     }));
 }

@@ -100,10 +100,10 @@ fn contact_effort(m: &Mechanism, q: &[f64], k: usize, driving: &[f64]) -> [f64; 
     let JointKind::Contact(c) = &m.joints[k].kind else { return [0.0; 2] };
     let acting = |d: &Driver| d.actuator.or(if let Coordinate::Joint(j) = d.coordinate { Some(j) } else { None });
     let effort: f64 = m.drivers.iter().zip(driving).filter(|(d, _)| acting(d) == Some(k)).map(|(_, f)| f).sum();
-    match m.contact_arc_direction(k, q) {
-        Some(t) if effort != 0.0 && !c.rolling => [effort * t[0], effort * t[1]],
-        _ => [0.0; 2],
+    if effort == 0.0 || c.rolling {
+        return [0.0; 2];
     }
+    m.contact_arc_direction(k, q).map_or([0.0; 2], |t| [effort * t[0], effort * t[1]])
 }
 
 /// Where body `b`'s point `p` (reference coordinates) is at q.
