@@ -73,7 +73,8 @@ pub fn section() -> String {
         "\n**Target** (issue 50: the cam's kinetostatics with friction ≤ 2 µs a position, set when the four-bar took \
          1.37 µs a position): {:.2} µs, {}; its friction costs {:.2} µs a position over the frictionless cam ({:.0} % \
          of it; issue 50 began at 3.06 µs, about twice the frictionless cam's, when each pass of the fixed point \
-         was a solve with every reaction). On this host the four-bar takes {:.2} µs: the cam with friction at the \
+         was a solve with every reaction; since 2026-11-29 the passes read only what presses the joints with \
+         friction, and every reaction is read once, from the last λ). On this host the four-bar takes {:.2} µs: the cam with friction at the \
          four-bar's 1.37 µs would take {:.2} µs.",
         per(t_cam),
         verdict(per(t_cam) <= 2.0),
