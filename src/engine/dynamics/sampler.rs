@@ -34,19 +34,24 @@ impl Sampler {
         Self { n, t_end, states: Vec::with_capacity(n), kept: Vec::new(), kept_bytes: 0, limit, overflowed: false }
     }
 
-    /// An accepted step; `last` where the run ends in it.
-    pub fn accept(&mut self, step: Step, last: bool) {
+    /// An accepted step; `last` where the run ends in it. The step back
+    /// where it was not kept (its storage can serve the next).
+    pub fn accept(&mut self, step: Step, last: bool) -> Option<Step> {
         if let Some(t_end) = self.t_end {
             self.emit(&step, t_end, last);
-        } else if !self.overflowed {
+            return Some(step);
+        }
+        if !self.overflowed {
             self.kept_bytes += bytes(&step);
             if self.kept_bytes > self.limit {
                 self.overflowed = true;
                 self.kept = Vec::new();
             } else {
                 self.kept.push(step);
+                return None;
             }
         }
+        Some(step)
     }
 
     /// The states, once the run has ended at `t_end`; empty where the steps

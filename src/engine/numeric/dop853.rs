@@ -6,7 +6,7 @@
 //! §II.10). The coefficients are those of Hairer's Fortran DOP853 (also
 //! SciPy's `dop853_coefficients`), written to the nearest double.
 
-use super::ode::{Explicit, Pair};
+use super::ode::{Explicit, Pair, sized};
 
 /// The DOP853 pair.
 pub struct Dp853;
@@ -40,16 +40,18 @@ impl Pair for Dp853 {
         }
         h.abs() * e5 / ((e5 + 0.01 * e3) * scale.len() as f64).sqrt()
     }
-    fn dense(k: &[Vec<f64>], h: f64, y0: &[f64], y1: &[f64]) -> Vec<Vec<f64>> {
+    fn dense(k: &[Vec<f64>], h: f64, y0: &[f64], y1: &[f64], r: &mut Vec<Vec<f64>>) {
         let n = y0.len();
-        let dy: Vec<f64> = (0..n).map(|i| y1[i] - y0[i]).collect();
-        let mut r = vec![
-            (0..n).map(|i| h * k[0][i] - dy[i]).collect(),
-            (0..n).map(|i| 2.0 * dy[i] - h * (k[12][i] + k[0][i])).collect(),
-        ];
-        r.insert(0, dy);
-        r.extend(D.iter().map(|d| (0..n).map(|i| h * (0..16).map(|j| d[j] * k[j][i]).sum::<f64>()).collect()));
-        r
+        sized(r, 3 + D.len(), n);
+        for i in 0..n {
+            let dy = y1[i] - y0[i];
+            r[0][i] = dy;
+            r[1][i] = h * k[0][i] - dy;
+            r[2][i] = 2.0 * dy - h * (k[12][i] + k[0][i]);
+            for (d, out) in D.iter().zip(&mut r[3..]) {
+                out[i] = h * (0..16).map(|j| d[j] * k[j][i]).sum::<f64>();
+            }
+        }
     }
 }
 

@@ -19,7 +19,7 @@
 //! §IV.2 (stiffness detection) and the codes DOPRI5 and DOP853.
 
 /// One accepted step from `t0` to `t1` with its interpolation data.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Default)]
 pub struct Step {
     pub t0: f64,
     pub t1: f64,
@@ -108,7 +108,10 @@ pub trait Stepper: Sized {
     /// Takes one accepted step (retrying with smaller steps as needed).
     fn step(&mut self, f: &mut impl Rhs, max_steps: usize) -> Result<Step, OdeError>;
     /// Replaces the state at the current time (a projection), keeping the step size.
-    fn project(&mut self, f: &mut impl Rhs, y: Vec<f64>);
+    fn project(&mut self, f: &mut impl Rhs, y: &[f64]);
+    /// Hands back a step the caller is done with, whose storage the next
+    /// step may take (none allocated a step then).
+    fn recycle(&mut self, _step: Step) {}
     /// Time reached.
     fn time(&self) -> f64;
     /// Accepted steps, rejected steps and evaluations of f.
@@ -140,8 +143,8 @@ pub trait Pair {
     /// scaled by `scale`; and each component's error estimate in `estimate`.
     fn error(k: &[Vec<f64>], h: f64, scale: &[f64], estimate: &mut [f64]) -> f64;
     /// The continuous extension's coefficients r₁…r_p of a step from y0 to
-    /// y1 (stages k, the extended ones already evaluated).
-    fn dense(k: &[Vec<f64>], h: f64, y0: &[f64], y1: &[f64]) -> Vec<Vec<f64>>;
+    /// y1 (stages k, the extended ones already evaluated), into `r`.
+    fn dense(k: &[Vec<f64>], h: f64, y0: &[f64], y1: &[f64], r: &mut Vec<Vec<f64>>);
 }
 
 /// Stepper state: current time, state, derivative (FSAL) and next step size.
@@ -176,6 +179,8 @@ pub struct Explicit<P: Pair> {
     within: usize,
     /// 15 steps held by stability without 6 free ones in a row: a stiff system.
     pub stiff: bool,
+    /// A step handed back ([`Stepper::recycle`]): the next one's storage.
+    spare: Option<Step>,
     pair: std::marker::PhantomData<P>,
 }
 
@@ -208,6 +213,7 @@ impl<P: Pair> Explicit<P> {
             beyond: 0,
             within: 0,
             stiff: false,
+            spare: None,
             pair: std::marker::PhantomData,
         };
         s.restart(f, t, y);
@@ -233,8 +239,8 @@ impl<P: Pair> Explicit<P> {
     }
 
     /// Replaces the state at the current time (a projection), keeping the step size.
-    pub fn project(&mut self, f: &mut impl Rhs, y: Vec<f64>) {
-        self.y = y;
+    pub fn project(&mut self, f: &mut impl Rhs, y: &[f64]) {
+        self.y.copy_from_slice(y);
         f(self.t, &self.y, &mut self.f);
         self.evaluations += 1;
     }
@@ -315,16 +321,17 @@ impl<P: Pair> Explicit<P> {
     fn accept(&mut self, f: &mut impl Rhs, h: f64) -> Step {
         let last = P::STAGES - 1;
         self.stages(f, h, P::STAGES..P::EXTENDED);
-        let step = Step {
-            t0: self.t,
-            t1: self.t + h,
-            rcont: P::dense(&self.k, h, &self.y, &self.ys),
-            y0: self.y.clone(),
-            y1: self.ys.clone(),
-            f0: self.k[0].clone(),
-            f1: self.k[last].clone(),
-            h,
+        let mut step = self.spare.take().unwrap_or_default();
+        P::dense(&self.k, h, &self.y, &self.ys, &mut step.rcont);
+        let copy = |to: &mut Vec<f64>, from: &[f64]| {
+            to.clear();
+            to.extend_from_slice(from);
         };
+        copy(&mut step.y0, &self.y);
+        copy(&mut step.y1, &self.ys);
+        copy(&mut step.f0, &self.k[0]);
+        copy(&mut step.f1, &self.k[last]);
+        (step.t0, step.t1, step.h) = (self.t, self.t + h, h);
         self.t += h;
         self.y.copy_from_slice(&step.y1);
         self.f.copy_from_slice(&step.f1);
@@ -340,8 +347,11 @@ impl<P: Pair> Stepper for Explicit<P> {
     fn step(&mut self, f: &mut impl Rhs, max_steps: usize) -> Result<Step, OdeError> {
         Explicit::step(self, f, max_steps)
     }
-    fn project(&mut self, f: &mut impl Rhs, y: Vec<f64>) {
+    fn project(&mut self, f: &mut impl Rhs, y: &[f64]) {
         Explicit::project(self, f, y)
+    }
+    fn recycle(&mut self, step: Step) {
+        self.spare = Some(step);
     }
     fn time(&self) -> f64 {
         self.t
@@ -378,14 +388,27 @@ impl Pair for Dp5 {
         }
         rms(estimate.iter().zip(scale).map(|(e, s)| e / s))
     }
-    fn dense(k: &[Vec<f64>], h: f64, y0: &[f64], y1: &[f64]) -> Vec<Vec<f64>> {
+    fn dense(k: &[Vec<f64>], h: f64, y0: &[f64], y1: &[f64], r: &mut Vec<Vec<f64>>) {
         let n = y0.len();
-        let ydiff: Vec<f64> = (0..n).map(|i| y1[i] - y0[i]).collect();
-        let bspl: Vec<f64> = (0..n).map(|i| h * k[0][i] - ydiff[i]).collect();
-        let r3: Vec<f64> = (0..n).map(|i| ydiff[i] - h * k[6][i] - bspl[i]).collect();
-        let r4: Vec<f64> = (0..n).map(|i| h * (0..7).map(|j| D[j] * k[j][i]).sum::<f64>()).collect();
-        vec![ydiff, bspl, r3, r4]
+        sized(r, 4, n);
+        for i in 0..n {
+            let ydiff = y1[i] - y0[i];
+            let bspl = h * k[0][i] - ydiff;
+            r[0][i] = ydiff;
+            r[1][i] = bspl;
+            r[2][i] = ydiff - h * k[6][i] - bspl;
+            r[3][i] = h * (0..7).map(|j| D[j] * k[j][i]).sum::<f64>();
+        }
     }
+}
+
+/// `r` as `count` vectors of n zeros, over the storage it had.
+pub(super) fn sized(r: &mut Vec<Vec<f64>>, count: usize, n: usize) {
+    r.resize_with(count, Vec::new);
+    r.iter_mut().for_each(|v| {
+        v.clear();
+        v.resize(n, 0.0);
+    });
 }
 
 /// Another attempt at (t, h) is allowed: fewer than `max_steps` attempts
@@ -452,5 +475,24 @@ mod tests {
         let (worst, s) = oscillator::<Dp5>(2.0, 6.6, 1e-11);
         assert!(worst < 1e-9, "largest error {worst}");
         assert!(s.accepted > 10 && s.accepted < 2000, "{} steps", s.accepted);
+    }
+
+    /// A step handed back lends its storage to the next: the steps and
+    /// their dense output are bit for bit those of steps made afresh.
+    #[test]
+    fn a_recycled_step_is_a_fresh_one() {
+        let mut f = |_t: f64, y: &[f64], dy: &mut [f64]| {
+            dy[0] = y[1];
+            dy[1] = -9.0 * y[0].sin();
+        };
+        let mut start = || Dopri5::new(&mut f, 0.0, vec![1.0, 0.0], 1e-6, vec![1e-8; 2], 1.0);
+        let (mut fresh, mut lent) = (start(), start());
+        for _ in 0..50 {
+            let (a, b) = (fresh.step(&mut f, 1000).expect("step"), lent.step(&mut f, 1000).expect("step"));
+            let mid = 0.5 * (a.t0 + a.t1);
+            assert_eq!((a.t1, &a.y1, &a.f0, a.at(mid)), (b.t1, &b.y1, &b.f0, b.at(mid)));
+            Stepper::recycle(&mut lent, b);
+        }
+        assert!(lent.spare.is_some());
     }
 }

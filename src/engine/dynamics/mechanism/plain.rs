@@ -149,7 +149,9 @@ impl Plain {
         let (n, r) = (z.n, z.r);
         let (jac, rows) = (self.sys.jacobian.as_slice(), self.sys.jacobian.nrows());
         self.w.clear();
-        self.w.extend((0..r * n).map(|k| jac[(k % n) * rows + k / n] * z.scale[k % n]));
+        for i in 0..r {
+            self.w.extend(z.scale.iter().enumerate().map(|(j, s)| jac[j * rows + i] * s));
+        }
         self.size.clear();
         self.size.extend(self.w.chunks_exact(n.max(1)).map(|row| {
             let top = row.iter().fold(0.0f64, |a, v| a.max(v.abs()));

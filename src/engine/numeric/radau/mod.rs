@@ -173,8 +173,8 @@ impl Stepper for Radau5 {
         }
     }
 
-    fn project(&mut self, f: &mut impl Rhs, y: Vec<f64>) {
-        self.y = y;
+    fn project(&mut self, f: &mut impl Rhs, y: &[f64]) {
+        self.y.copy_from_slice(y);
         f(self.t, &self.y, &mut self.f);
         self.evaluations += 1;
     }
