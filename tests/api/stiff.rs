@@ -46,6 +46,10 @@ async fn a_job_over_its_compute_budget_is_stopped_with_the_reason() {
     assert_eq!(r.json()["type"], "/problems/compute-budget", "{}", r.text);
     let message = r.json()["detail"].as_str().unwrap().to_string();
     assert!(message.contains("compute budget of 0.3 s"), "{message}");
+    // The simulated time reached, a measured value, to four significant figures.
+    let reached = message.split("ran out at t = ").nth(1).and_then(|r| r.split(" s ").next()).expect("t said");
+    let digits: String = reached.split('e').next().unwrap_or_default().chars().filter(char::is_ascii_digit).collect();
+    assert!(digits.trim_start_matches('0').len() <= 4, "{message}");
     let list = app.get("/v1/jobs").await.json();
     assert!(list["items"].as_array().unwrap().is_empty(), "{list}");
 }

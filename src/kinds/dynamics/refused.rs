@@ -15,7 +15,7 @@ pub(super) fn invalid(e: DynamicsError, dopri5: bool) -> ApiError {
         DynamicsError::Initial { .. } => "/machine/input",
         DynamicsError::Budget { seconds, t, steps } => {
             let hint = if dopri5 { "dynamics-budget-dop853" } else { "text-nothing" };
-            let said = Msg::new("dynamics-budget").num("seconds", seconds).num("t", t).count("steps", steps);
+            let said = Msg::new("dynamics-budget").num("seconds", seconds).fig("t", t).count("steps", steps);
             return ApiError::OverBudget(said.with("hint", Msg::new(hint)));
         }
         DynamicsError::Integration { .. } => "",
