@@ -271,8 +271,7 @@ fn unit_reactions(
     driving: &mut Vec<f64>,
     out: &mut Vec<Reaction>,
 ) {
-    driving.clear();
-    driving.extend(lambda[lambda.len() - m.drivers.len()..].iter().map(|l| -l));
+    driving_actions(m, lambda, driving);
     let efforts = (&c.jacobian, lambda, driving.as_slice());
     out.clear();
     out.extend(units.iter().map(|u| reaction_of(m, (&c.q, &c.trig), efforts, offsets, u.joint)));
@@ -403,6 +402,13 @@ fn solve_transposed(
     Ok(())
 }
 
+/// The inputs' driving actions, −λ over the drivers' rows (the last of
+/// Φ_q), into `driving`.
+fn driving_actions(m: &Mechanism, lambda: &[f64], driving: &mut Vec<f64>) {
+    driving.clear();
+    driving.extend(lambda[lambda.len() - m.drivers.len()..].iter().map(|l| -l));
+}
+
 /// The driving actions and, if asked, every reaction from λ (`s.lambda`).
 fn read_out(
     m: &Mechanism,
@@ -412,9 +418,7 @@ fn read_out(
     (driving, reactions): (&mut Vec<f64>, &mut Vec<Reaction>),
 ) {
     let lambda = &s.lambda;
-    let first_driver = lambda.len() - m.drivers.len();
-    driving.clear();
-    driving.extend(lambda[first_driver..].iter().map(|l| -l));
+    driving_actions(m, lambda, driving);
     reactions.clear();
     if let Some(indeterminate) = reactions_with {
         let (at, efforts) = ((c.q.as_slice(), c.trig.as_slice()), (&c.jacobian, lambda.as_slice(), driving.as_slice()));

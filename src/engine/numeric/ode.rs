@@ -109,8 +109,8 @@ pub trait Stepper: Sized {
     fn step(&mut self, f: &mut impl Rhs, max_steps: usize) -> Result<Step, OdeError>;
     /// Replaces the state at the current time (a projection), keeping the step size.
     fn project(&mut self, f: &mut impl Rhs, y: &[f64]);
-    /// Hands back a step the caller is done with, whose storage the next
-    /// step may take (none allocated a step then).
+    /// Hands back a step the caller is done with: the next step may reuse
+    /// its vectors (a stepper that does not simply drops it).
     fn recycle(&mut self, _step: Step) {}
     /// Time reached.
     fn time(&self) -> f64;
