@@ -224,20 +224,6 @@ impl Mechanism {
         self.contact_local(k, b, q).map(|l| l.r)
     }
 
-    /// The common unit tangent of contact joint k at q (ground frame): the
-    /// second curve's, or the first's where the second is a point.
-    pub fn contact_tangent(&self, k: usize, q: &[f64]) -> Option<[f64; 2]> {
-        let [i, j] = self.joints[k].bodies;
-        let (l, b) = match self.contact_local(k, j, q)? {
-            l if l.d1 != [0.0, 0.0] => (l, j),
-            _ => (self.contact_local(k, i, q)?, i),
-        };
-        let theta = self.column(b).map_or(0.0, |c| q[c + 2]);
-        let t = rotate(theta, l.d1);
-        let n = t[0].hypot(t[1]);
-        (n > 0.0).then(|| [t[0] / n, t[1] / n])
-    }
-
     /// The direction along which a force on contact joint k's second body,
     /// at the contact, works on the joint's coordinate (the arc length run
     /// on its measured curve): that curve's unit tangent at q (ground frame,

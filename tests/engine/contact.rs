@@ -62,7 +62,11 @@ fn contact_friction_adds_mu_n_at_the_contact_to_the_torque() {
         let n = m * (g + e * w * w * c);
         let torque = n * (e * s + mu * (r - e * c));
         let k = step.kinematics.as_ref().unwrap();
-        let state = contact_state(&mechanism, &k.q, &k.qd, &step.reactions[2]).unwrap();
+        let state = contact_state(&mechanism, (&k.q, &k.qd), None, &step.reactions[2]).unwrap();
+        // The bodies' (sin θ, cos θ) given (as a sweep has them) or found: the same state, bit for bit.
+        let mut trig = Vec::new();
+        mechanism.turns_into(&k.q, &mut trig);
+        assert_eq!(contact_state(&mechanism, (&k.q, &k.qd), Some(&trig), &step.reactions[2]), Some(state));
         let near = |a: f64, b: f64, scale: f64| (a - b).abs() < 1e-9 * scale;
         assert!(near(state.point[0], e * s, e) && near(state.point[1], r - e * c, e), "{state:?}");
         assert!(near(state.normal, n, m * g) && near(state.tangential, -mu * n, m * g), "{state:?}");
@@ -224,7 +228,7 @@ fn a_disk_rolls_down_an_incline_at_two_thirds_g_sin_alpha() {
         assert!((tangential + m * g * sa / 3.0).abs() < 1e-7 * m * g, "t = {t}: friction {tangential}");
         assert!((normal - m * g * ca).abs() < 1e-7 * m * g, "t = {t}: normal {normal}");
         let motion = detail.motion.as_ref().unwrap();
-        let state = contact_state(&problem.mechanism, &motion.q, &motion.qd, f).unwrap();
+        let state = contact_state(&problem.mechanism, (&motion.q, &motion.qd), None, f).unwrap();
         assert!((state.normal - m * g * ca).abs() < 1e-7 * m * g, "pressing: {state:?}");
         assert!((state.tangential + m * g * sa / 3.0).abs() < 1e-7 * m * g, "{state:?}");
         assert!(state.sliding_velocity.abs() < 1e-7 * a, "rolling, not sliding: {state:?}");
@@ -252,7 +256,7 @@ fn a_roller_follower_s_pressure_angle_is_that_of_the_line_of_centres() {
     let solution = solve(&mechanism, &[], &positions, outputs, &Deadline::none()).unwrap();
     for (theta, step) in angles.iter().zip(&solution.steps) {
         let k = step.kinematics.as_ref().unwrap();
-        let state = contact_state(&mechanism, &k.q, &k.qd, &step.reactions[2]).unwrap();
+        let state = contact_state(&mechanism, (&k.q, &k.qd), None, &step.reactions[2]).unwrap();
         let want = (e * theta.sin() / (r + rho)).asin().abs();
         let got = state.pressure_angle.unwrap();
         assert!((got - want).abs() < 1e-9, "θ = {theta}: {got} vs {want}");
@@ -293,7 +297,7 @@ fn a_cam_made_from_its_program_lifts_its_flat_follower_by_the_program() {
         let [s, _, s2, ..] = program.eval(*phi);
         let k = step.kinematics.as_ref().unwrap();
         assert!((k.q[4] - 0.1 - s).abs() < 1e-9 * h, "φ = {phi}: lift {} vs {s}", k.q[4] - 0.1);
-        let state = contact_state(&mechanism, &k.q, &k.qd, &step.reactions[2]).unwrap();
+        let state = contact_state(&mechanism, (&k.q, &k.qd), None, &step.reactions[2]).unwrap();
         let rho = state.curvature_radius[0].unwrap();
         assert!((rho - (base + s + s2)).abs() < 1e-9 * base, "φ = {phi}: ρ {rho} vs {}", base + s + s2);
     }
@@ -342,7 +346,7 @@ fn a_roller_larger_than_the_hollow_it_sits_in_overlaps_the_cam() {
         let qd = vec![0.0; q.len()];
         let reaction =
             Reaction { joint: 0, on: 1, by: 0, fx: 0.0, fy: 1.0, moment: 0.0, ends: None, determinate: true };
-        let state = contact_state(&m, &q, &qd, &reaction).unwrap();
+        let state = contact_state(&m, (&q, &qd), None, &reaction).unwrap();
         assert_eq!(state.overlap, overlaps, "{radius:?}: {state:?}");
     }
 }

@@ -332,7 +332,7 @@ fn sample(dae: &Equations, mobility: &Mobility, t: f64, y: &[f64]) -> Result<Mec
         Some(held.modes[grip] != Mode::Roll)
     };
     let contacts = states
-        .filter_map(|r| kinetostatics::contact_state(&dae.p.mechanism, q, qd, r))
+        .filter_map(|r| kinetostatics::contact_state(&dae.p.mechanism, (q, qd), None, r))
         .map(|c| ContactState { slipping: slipping(c.joint), ..c })
         .collect();
     let poses = q[..dae.p.mechanism.n_body_coordinates()].chunks_exact(3).map(|b| [b[0], b[1], b[2]]).collect();

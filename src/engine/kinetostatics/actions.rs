@@ -150,13 +150,15 @@ impl Actions<'_> {
                 let states = out.reactions.iter().filter(|r| r.determinate);
                 let jumped =
                     |k: usize| (0..2).any(|side| m.contact_column(k, side).is_some_and(|col| c.jumped.contains(&col)));
-                out.contacts.extend(states.filter_map(|r| super::contact_state(m, &c.q, &c.qd, r)).map(|s| {
-                    ContactState {
-                        jumped: jumped(s.joint),
-                        penetration: c.cuts.iter().find(|cut| cut.0 == s.joint).map(|cut| cut.1),
-                        ..s
-                    }
-                }));
+                out.contacts.extend(
+                    states.filter_map(|r| super::contact_state(m, (&c.q, &c.qd), Some(&c.trig), r)).map(|s| {
+                        ContactState {
+                            jumped: jumped(s.joint),
+                            penetration: c.cuts.iter().find(|cut| cut.0 == s.joint).map(|cut| cut.1),
+                            ..s
+                        }
+                    }),
+                );
             }
         } else {
             out.driving.clear();

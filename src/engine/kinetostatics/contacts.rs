@@ -12,9 +12,9 @@
 //! sliding velocity (v₂ − v₁)·t of the two material points at the contact.
 
 use super::Reaction;
-use super::loads::point_motion;
-use crate::engine::curves::{Curve, Domain};
-use crate::engine::model::{BodyId, JointKind, Mechanism, dot, perp, rotate};
+use super::loads::point_motion_by;
+use crate::engine::curves::{Curve, Domain, Local};
+use crate::engine::model::{BodyId, JointKind, Mechanism, dot, perp, rotate_by};
 
 /// A contact at one position.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -66,12 +66,14 @@ pub struct Frame {
 
 impl Frame {
     pub fn of(m: &Mechanism, k: usize, q: &[f64], qd: &[f64]) -> Option<Self> {
-        let JointKind::Contact(c) = &m.joints[k].kind else { return None };
-        let [i, j] = m.joints[k].bodies;
-        let t = m.contact_tangent(k, q)?;
-        let at = |b: BodyId| m.contact_point(k, b, q);
-        let ((point, v2), (_, v1)) = (point_motion(m, q, qd, (j, at(j)?)), point_motion(m, q, qd, (i, at(i)?)));
-        let n = normal_direction(m, q, (k, [i, j]), t, point, &c.curves);
+        Self::from(m, &Touch::of(m, k, q, None)?, q, qd)
+    }
+
+    fn from(m: &Mechanism, touch: &Touch, q: &[f64], qd: &[f64]) -> Option<Self> {
+        let t = touch.tangent()?;
+        let motion = |side: usize| touch.motion(m, side, q, qd);
+        let ((point, v2), (_, v1)) = (motion(1), motion(0));
+        let n = normal_direction(m, q, touch, t, point);
         Some(Self { point, t, n, velocities: [v1, v2] })
     }
 
@@ -87,14 +89,78 @@ impl Frame {
     }
 }
 
-/// The state of contact joint `r.joint` at (q, q̇) with its reaction `r`.
-pub fn contact_state(m: &Mechanism, q: &[f64], qd: &[f64], r: &Reaction) -> Option<ContactState> {
+/// Contact joint k's two curves at q, each evaluated once: `local[side]`
+/// the curve's point and derivatives in its body's reference coordinates,
+/// `trig[side]` the body's (sin θ, cos θ) ((0, 1) for the ground). A
+/// contact's state reads them ~8 times a position (each a sine and a
+/// cosine for a circle or a cam), the friction's unit 3 times.
+pub struct Touch<'a> {
+    curves: &'a [Curve; 2],
+    bodies: [BodyId; 2],
+    local: [Local; 2],
+    trig: [(f64, f64); 2],
+}
+
+impl<'a> Touch<'a> {
+    /// None for a joint that is not a contact. `trig`: every body's (sin θ,
+    /// cos θ) at q where known (ground first, [`Mechanism::turns_into`]).
+    pub fn of(m: &'a Mechanism, k: usize, q: &[f64], trig: Option<&[(f64, f64)]>) -> Option<Self> {
+        let JointKind::Contact(c) = &m.joints[k].kind else { return None };
+        let bodies = m.joints[k].bodies;
+        let side = |s: usize| c.curves[s].at(m.contact_parameter(k, s, q).unwrap_or(0.0));
+        let turn = |b: BodyId| match trig {
+            Some(trig) => trig[b],
+            None => m.column(b).map_or((0.0, 1.0), |col| q[col + 2].sin_cos()),
+        };
+        Some(Self { curves: &c.curves, bodies, local: [side(0), side(1)], trig: bodies.map(turn) })
+    }
+
+    /// The common unit tangent t (ground frame): the second curve's, or the
+    /// first's where the second is a point.
+    pub fn tangent(&self) -> Option<[f64; 2]> {
+        let side = if self.local[1].d1 != [0.0, 0.0] { 1 } else { 0 };
+        let t = self.along(side);
+        let n = t[0].hypot(t[1]);
+        (n > 0.0).then(|| [t[0] / n, t[1] / n])
+    }
+
+    /// Curve `side`'s direction of rising parameter (ground frame, not unit).
+    fn along(&self, side: usize) -> [f64; 2] {
+        rotate_by(self.trig[side], self.local[side].d1)
+    }
+
+    /// Where the curves touch as a point of body `side`, in its reference coordinates.
+    pub fn point(&self, side: usize) -> [f64; 2] {
+        self.local[side].r
+    }
+
+    /// (v₂ − v₁)·u, v the velocities of the material points at the contact.
+    pub fn sliding(&self, m: &Mechanism, u: [f64; 2], q: &[f64], qd: &[f64]) -> f64 {
+        let ((_, v2), (_, v1)) = (self.motion(m, 1, q, qd), self.motion(m, 0, q, qd));
+        dot(u, [v2[0] - v1[0], v2[1] - v1[1]])
+    }
+
+    /// The ground position and velocity of body `side`'s material point at the contact.
+    fn motion(&self, m: &Mechanism, side: usize, q: &[f64], qd: &[f64]) -> ([f64; 2], [f64; 2]) {
+        point_motion_by(m, q, qd, (self.bodies[side], self.local[side].r), self.trig[side])
+    }
+}
+
+/// The state of contact joint `r.joint` at (q, q̇) with its reaction `r`;
+/// `trig` as [`Touch::of`] takes it.
+pub fn contact_state(
+    m: &Mechanism,
+    (q, qd): (&[f64], &[f64]),
+    trig: Option<&[(f64, f64)]>,
+    r: &Reaction,
+) -> Option<ContactState> {
     let k = r.joint;
     let JointKind::Contact(c) = &m.joints[k].kind else { return None };
-    let frame = Frame::of(m, k, q, qd)?;
+    let touch = Touch::of(m, k, q, trig)?;
+    let frame = Frame::from(m, &touch, q, qd)?;
     let [normal, tangential] = frame.parts([r.fx, r.fy]);
     let radius = |side: usize| {
-        let kappa = c.curves[side].at(m.contact_parameter(k, side, q)?).curvature();
+        let kappa = touch.local[side].curvature();
         (kappa != 0.0).then(|| 1.0 / kappa)
     };
     Some(ContactState {
@@ -112,29 +178,25 @@ pub fn contact_state(m: &Mechanism, q: &[f64], qd: &[f64], r: &Reaction) -> Opti
             (Domain::Interval(a, b), Some(u)) => u < a - 1e-9 || u > b + 1e-9,
             _ => false,
         }),
-        overlap: overlap(m, k, q, frame.n),
+        overlap: overlap(&touch, c.particle, frame.n),
         jumped: false,
         penetration: None,
         slipping: None,
     })
 }
 
-/// Whether contact joint k's curves overlap around the contact: (k₂ −
-/// k₁)·n < 0 beyond rounding, k = κ·perp(t) each curve's curvature vector
-/// in the ground (none for a point, nor for a particle, which is held on
-/// its curve both ways).
-fn overlap(m: &Mechanism, k: usize, q: &[f64], n: [f64; 2]) -> bool {
-    let JointKind::Contact(c) = &m.joints[k].kind else { return false };
-    if c.particle || c.curves.iter().any(|curve| curve.domain() == Domain::None) {
+/// Whether the contact's curves overlap around it: (k₂ − k₁)·n < 0 beyond
+/// rounding, k = κ·perp(t) each curve's curvature vector in the ground
+/// (none for a point, nor for a particle, which is held on its curve both
+/// ways).
+fn overlap(touch: &Touch, particle: bool, n: [f64; 2]) -> bool {
+    if particle || touch.curves.iter().any(|curve| curve.domain() == Domain::None) {
         return false;
     }
     let bend = |side: usize| {
-        let b = m.joints[k].bodies[side];
-        let Some(u) = m.contact_parameter(k, side, q) else { return [0.0, 0.0] };
-        let l = c.curves[side].at(u);
-        let theta = m.column(b).map_or(0.0, |col| q[col + 2]);
+        let l = &touch.local[side];
         let speed = l.d1[0].hypot(l.d1[1]);
-        let t = rotate(theta, [l.d1[0] / speed, l.d1[1] / speed]);
+        let t = rotate_by(touch.trig[side], [l.d1[0] / speed, l.d1[1] / speed]);
         let (kappa, left) = (l.curvature(), perp(t));
         [kappa * left[0], kappa * left[1]]
     };
@@ -144,29 +206,18 @@ fn overlap(m: &Mechanism, k: usize, q: &[f64], n: [f64; 2]) -> bool {
 }
 
 /// n from the first body into the second (see the module's symbols).
-fn normal_direction(
-    m: &Mechanism,
-    q: &[f64],
-    (k, [i, j]): (usize, [BodyId; 2]),
-    t: [f64; 2],
-    point: [f64; 2],
-    curves: &[Curve; 2],
-) -> [f64; 2] {
+fn normal_direction(m: &Mechanism, q: &[f64], touch: &Touch, t: [f64; 2], point: [f64; 2]) -> [f64; 2] {
+    let (curves, j) = (touch.curves, touch.bodies[1]);
     let left = perp(t);
     // The tangent t is the second curve's unless it is a point; flip it into each curve's own direction.
-    let along = |side: usize, b: BodyId| {
-        let u = m.contact_parameter(k, side, q).unwrap_or(0.0);
-        let theta = m.column(b).map_or(0.0, |col| q[col + 2]);
-        let own = rotate(theta, curves[side].at(u).d1);
-        if dot(own, t) >= 0.0 { 1.0 } else { -1.0 }
-    };
+    let along = |side: usize| if dot(touch.along(side), t) >= 0.0 { 1.0 } else { -1.0 };
     let inside = |c: &Curve| if matches!(c, Curve::Circle { inside: true, .. }) { -1.0 } else { 1.0 };
     let sign = if let Some(o) = curves[0].orientation() {
         // Out of the first curve: −perp(t′) for a counter-clockwise t′.
-        -o * along(0, i) * inside(&curves[0])
+        -o * along(0) * inside(&curves[0])
     } else if let Some(o) = curves[1].orientation() {
         // Into the second curve: perp(t′) for a counter-clockwise t′.
-        o * along(1, j) * inside(&curves[1])
+        o * along(1) * inside(&curves[1])
     } else {
         let g = m.column(j).map_or(point, |col| [q[col], q[col + 1]]);
         if dot(left, [g[0] - point[0], g[1] - point[1]]) >= 0.0 { 1.0 } else { -1.0 }

@@ -33,6 +33,7 @@
 //! reported forces balance.
 
 use super::Reaction;
+use super::contacts::Touch;
 use super::loads::add_force;
 use crate::engine::kinematics::Configuration;
 use crate::engine::model::{JointKind, Mechanism, dot, perp, rotate, rotate_d};
@@ -135,9 +136,10 @@ pub fn units(m: &Mechanism, c: &Configuration, out: &mut Vec<Unit>) {
             // Rolling: the tangential force is the constraint's own, not friction.
             JointKind::Contact(ref contact) if contact.rolling => return None,
             JointKind::Contact(_) => {
-                let t = m.contact_tangent(k, &c.q)?;
-                at = [m.contact_point(k, j, &c.q)?, m.contact_point(k, i, &c.q)?];
-                let slide = sliding(t, at, [i, j]);
+                let touch = Touch::of(m, k, &c.q, Some(&c.trig))?;
+                let t = touch.tangent()?;
+                at = [touch.point(1), touch.point(0)];
+                let slide = sign(touch.sliding(m, t, &c.q, &c.qd));
                 ([-f.mu * slide * t[0], -f.mu * slide * t[1]], 0.0, Measure::Across(perp(t)))
             }
             JointKind::Gear { .. } => return None,

@@ -83,9 +83,21 @@ fn line(m: &Mechanism, q: &[f64], qd: &[f64], a: (BodyId, [f64; 2]), b: (BodyId,
 
 /// Position and velocity of a body point (reference coordinates `p`).
 pub fn point_motion(m: &Mechanism, q: &[f64], qd: &[f64], (b, p): (BodyId, [f64; 2])) -> ([f64; 2], [f64; 2]) {
+    let trig = m.column(b).map_or((0.0, 1.0), |c| q[c + 2].sin_cos());
+    point_motion_by(m, q, qd, (b, p), trig)
+}
+
+/// The same with the body's (sin θ, cos θ) known.
+pub fn point_motion_by(
+    m: &Mechanism,
+    q: &[f64],
+    qd: &[f64],
+    (b, p): (BodyId, [f64; 2]),
+    trig: (f64, f64),
+) -> ([f64; 2], [f64; 2]) {
     let Some(c) = m.column(b) else { return (p, [0.0, 0.0]) };
     let s = m.local(b, p);
-    let (a, ds) = (rotate(q[c + 2], s), rotate_d(q[c + 2], s));
+    let (a, ds) = (rotate_by(trig, s), rotate_by(trig, [-s[1], s[0]]));
     ([q[c] + a[0], q[c + 1] + a[1]], [qd[c] + ds[0] * qd[c + 2], qd[c + 1] + ds[1] * qd[c + 2]])
 }
 

@@ -7,7 +7,7 @@ use crate::engine::model::{Coordinate, Driver, Mechanism};
 use crate::i18n::Msg;
 use crate::kind::notes::Notes;
 use crate::kinds::mechanism::track::{PointState, states};
-use crate::kinds::mechanism::{ContactDto, Coords, EnergyDto, Name, ReactionDto, annotate, contact_warnings};
+use crate::kinds::mechanism::{ByName, ContactDto, Coords, EnergyDto, Name, ReactionDto, annotate, contact_warnings};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use utoipa::ToSchema;
@@ -75,7 +75,7 @@ pub struct StepDto {
     pub reduced_torque: Option<f64>,
     /// Quinn's energy-contribution coefficient T_body/T of each moving body (one input).
     #[schema(value_type = Option<BTreeMap<String, f64>>)]
-    pub energy_contribution: Option<BTreeMap<Name, f64>>,
+    pub energy_contribution: Option<ByName>,
     /// Condition number of Φ_q (joints and inputs). The exact 2-norm κ₂ (an
     /// SVD) where `outputs` has "condition", or where the estimate below
     /// exceeds 100 (so every near-singular position is measured exactly);
@@ -324,10 +324,7 @@ impl StepDto {
             reactions,
             reduced_inertia: s.reduced_inertia,
             reduced_torque: s.reduced_torque,
-            energy_contribution: s
-                .energy_shares
-                .as_ref()
-                .map(|v| names[1..].iter().cloned().zip(v.iter().copied()).collect()),
+            energy_contribution: s.energy_shares.as_ref().map(|v| ByName::new(&names[1..], v.iter().copied())),
             jacobian_condition: s.condition,
             scaled_condition: s.scaled_condition,
             singular: s.singular,

@@ -16,7 +16,7 @@ pub mod track;
 
 pub use contact::{CircleDto, CurveDto, LineDto, PolarDto, SplineDto};
 pub use dimensions::{Assembled, DimensionDto};
-pub use energy::EnergyDto;
+pub use energy::{ByName, EnergyDto};
 pub use inputs::{InputDto, Inputs, coordinate, machine_parts};
 pub use loads::{LoadDto, LoadType, MAX_LOADS, convert_loads};
 pub use points::{BodyPoint, Coords, PointRef};
