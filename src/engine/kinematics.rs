@@ -3,7 +3,9 @@
 //! Position: Newton–Raphson on Φ(q, φ) = 0 from a predicted q (continuation
 //! keeps the assembly branch). Velocity: Φ_q q̇ = ν (the input speeds).
 //! Acceleration: Φ_q q̈ = γ. With one input, g = dq/dφ (velocity
-//! coefficients) and h = d²q/dφ² give the predictor q + gΔφ + ½hΔφ².
+//! coefficients) and h = d²q/dφ² give the predictor q + gΔφ + ½hΔφ², to
+//! which a sweep adds a third-order term from h's change between its last
+//! two positions where that term is small (`sweep.rs`).
 //! A sweep works in one [`Workspace`] and refills one [`Configuration`]:
 //! after the first position nothing is allocated (`sweep.rs`). Where the
 //! mechanism is a crank and dyads, each position is placed in closed form
@@ -187,6 +189,16 @@ impl Workspace {
         self.qdd.clear();
         self.qdd.extend(self.sys.gamma.iter());
         solve(&self.sys.jacobian, &self.lu, &mut self.b, &mut self.qdd)
+    }
+
+    /// q one Newton step nearer Φ = 0 by the LU [`Workspace::motion`] left
+    /// at it (`sys` holds Φ there); q as it was where that LU cannot solve.
+    fn refine(&mut self, q: &mut [f64]) {
+        self.b.clear();
+        self.b.extend(self.sys.phi.iter().map(|v| -v));
+        if self.lu.solve(&mut self.b) {
+            q.iter_mut().zip(&self.b).for_each(|(v, d)| *v += d);
+        }
     }
 
     /// Φ_q's condition numbers, in SI units and scaled ([`scaled`]), each

@@ -59,7 +59,7 @@ warning-dynamics-near-singular = the motion passed close to singular positions (
 
 accuracy-kinetostatics = body coordinates; { $assembly }; velocities and accelerations from the constraint Jacobian; multipliers of Phi_q^T lambda = Q - M q'' for reactions and driving actions, checked against virtual power
 accuracy-assembly-closed-form = positions in closed form (a crank and dyads: circle-circle and circle-line intersections, on the branch drawn), confirmed by Newton-Raphson
-accuracy-assembly-newton = Newton-Raphson assembly with second-order continuation
+accuracy-assembly-newton = Newton-Raphson assembly with continuation of up to third order
 warning-redundant-constraints = { $count } redundant constraint(s): the reactions of joints { $joints } are not determined by equilibrium and are reported as null
 
 ## Cams

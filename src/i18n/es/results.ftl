@@ -62,7 +62,7 @@ warning-dynamics-near-singular = el movimiento pasó cerca de posiciones singula
 
 accuracy-kinetostatics = coordenadas de los sólidos; { $assembly }; velocidades y aceleraciones a partir del jacobiano de las restricciones; multiplicadores de Phi_q^T lambda = Q - M q'' para las reacciones y las acciones motoras, comprobados con la potencia virtual
 accuracy-assembly-closed-form = posiciones en forma cerrada (una manivela y díadas: intersecciones circunferencia-circunferencia y circunferencia-recta, en la rama dibujada), confirmadas por Newton-Raphson
-accuracy-assembly-newton = montaje por Newton-Raphson con continuación de segundo orden
+accuracy-assembly-newton = montaje por Newton-Raphson con continuación de hasta tercer orden
 warning-redundant-constraints = { $count ->
         [one] una restricción redundante
        *[other] { $count } restricciones redundantes
