@@ -7,7 +7,7 @@
 //! which a sweep adds a third-order term from h's change between its last
 //! two positions where that term is small (`sweep.rs`).
 //! A sweep works in one [`Workspace`] and refills one [`Configuration`]:
-//! after the first position nothing is allocated (`sweep.rs`). Where the
+//! after the first two positions nothing is allocated (`sweep.rs`). Where the
 //! mechanism is a crank and dyads, each position is placed in closed form
 //! first ([`Dyads`]) and Newton only confirms it.
 

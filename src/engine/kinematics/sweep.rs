@@ -32,7 +32,7 @@ pub fn sweep(
 /// [`sweep`], handing each position's configuration to `each` as soon as
 /// it is known (with its index) instead of keeping them all: what is done
 /// with a position stays in the cache, and the sweep allocates nothing
-/// after its first position. An error of `each` stops the sweep.
+/// after its first two positions. An error of `each` stops the sweep.
 pub fn sweep_each(
     m: &Mechanism,
     positions: &[Vec<[f64; 3]>],
@@ -48,7 +48,7 @@ pub fn sweep_each(
             e => unreachable(m, e),
         })?;
     }
-    let mut predictor = Predictor::default();
+    let (mut predictor, mut prediction) = (Predictor::default(), Vec::new());
     let mut failure: Option<EngineError> = None;
     let mut c = Configuration::default();
     let single = m.drivers.len() == 1;
@@ -65,7 +65,12 @@ pub fn sweep_each(
         }
         let predict = |q: &mut Vec<f64>| predictor.predict(&base, inputs[0][0], q);
         predict(&mut c.q);
-        let predicted = (predictor.from.is_some() && m.n_parameters() > 0).then(|| c.q.clone());
+        let predicted = if predictor.from.is_some() && m.n_parameters() > 0 {
+            prediction.clone_from(&c.q);
+            Some(prediction.as_slice())
+        } else {
+            None
+        };
         // Placed in closed form where the mechanism is a crank and dyads (on
         // the branch of the prediction); else, or where a dyad will not
         // close, Newton starts from the prediction.
@@ -92,11 +97,11 @@ pub fn sweep_each(
         let settled = if cuts.is_empty() {
             Settled::default()
         } else {
-            cuts.settle(m, &mut ws, (&mut c.q, predicted.as_deref()), (inputs, step), &mut newton)
+            cuts.settle(m, &mut ws, (&mut c.q, predicted), (inputs, step), &mut newton)
         };
         let (iterations, residual) = newton;
         c.jumped.clear();
-        if let Some(predicted) = &predicted {
+        if let Some(predicted) = predicted {
             c.jumped.extend(jumps(m.n_body_coordinates(), (&jump_scale, &periods), [&base, predicted, &c.q]));
         }
         if !settled.moved.is_empty() {
