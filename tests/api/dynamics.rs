@@ -288,3 +288,30 @@ async fn the_integrator_and_the_energy_hold_are_chosen_and_reported() {
     assert_eq!(r.json()["errors"][0]["pointer"], "/machine/conserve_energy", "{}", r.text);
     assert!(r.text.contains("/machine/loads/1 is a force whose magnitude varies"), "{}", r.text);
 }
+
+/// A torque that grows without bound, T = 1/(0.5 − t) on I* = 1: ω =
+/// 1 − ln(1 − 2t) runs away at t = 0.5 s (closed form), where no step can
+/// follow it. The 422 says where once, to four significant figures (trailing zeros dropped), and
+/// why, in the asker's language.
+#[tokio::test]
+async fn a_run_away_motion_is_refused_saying_when_once() {
+    let app = TestApp::new().await;
+    let body = json!({
+        "torques": [{"name": "m", "value": {"expr": "1/(0.5 - t)"}}],
+        "reduced_inertia": 1,
+        "initial": {"angle": 0, "speed": 1},
+        "duration": 2
+    });
+    let (en, es) = (
+        app.post("/v1/dynamics", &body).await,
+        crate::spanish::in_spanish(&app, "POST", "/v1/dynamics", Some(&body)).await,
+    );
+    let said = |r: &crate::helpers::Reply| {
+        assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+        r.json()["errors"][0]["message"].as_str().unwrap().to_owned()
+    };
+    let (en, es) = (said(&en), said(&es));
+    assert!(en.starts_with("the integration failed at t = 0.5 s: the step size fell below round-off"), "{en}");
+    assert!(es.starts_with("la integración falló en t = 0,5 s: el paso se hizo menor que el redondeo"), "{es}");
+    assert_eq!(en.matches("t = ").count(), 1, "{en}");
+}

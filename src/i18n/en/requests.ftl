@@ -160,9 +160,9 @@ dynamics-speed-constant = must be a constant: the input's speed at t = 0
 dynamics-inertia-not-positive = the reduced inertia is not positive at phi = { $phi } rad
 dynamics-integration = the integration failed at t = { $t } s: { $reason }
 dynamics-initial = the initial state cannot be assembled: { $reason }
-dynamics-step-too-small = the step size fell below round-off at t = { $t } s
+dynamics-step-too-small = the step size fell below round-off: the motion runs away there (a torque without bound, an inertia near zero)
 dynamics-too-many-steps = more than { $steps } steps
-dynamics-not-finite = the derivative is not finite at t = { $t } s
+dynamics-not-finite = the derivative is not finite
 dynamics-singular-motion = the equations of motion are singular here (a singular position)
 dynamics-start-singular = the start is a singular position of the inputs (a dead centre or toggle)
 dynamics-start-dof = the mechanism has { $dof } degree(s) of freedom but { $inputs } input(s) name its coordinates

@@ -9,9 +9,9 @@ warning-at-field = { $pointer }: { $said }
 
 ## A time integration that stopped
 
-warning-ode-step-too-small = the step size fell below round-off at t = { $t }
+warning-ode-step-too-small = the step size fell below round-off at t = { $t } s
 warning-ode-too-many-steps = more than { $steps } steps
-warning-ode-not-finite = the derivative is not finite at t = { $t }
+warning-ode-not-finite = the derivative is not finite at t = { $t } s
 
 ## Flywheel
 

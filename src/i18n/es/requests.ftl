@@ -174,9 +174,9 @@ dynamics-speed-constant = debe ser una constante: la velocidad de la entrada en 
 dynamics-inertia-not-positive = el momento de inercia reducido no es positivo en phi = { $phi } rad
 dynamics-integration = la integración falló en t = { $t } s: { $reason }
 dynamics-initial = el estado inicial no se puede montar: { $reason }
-dynamics-step-too-small = el paso se hizo menor que el redondeo en t = { $t } s
+dynamics-step-too-small = el paso se hizo menor que el redondeo: el movimiento se dispara ahí (un par sin límite, una inercia casi nula)
 dynamics-too-many-steps = más de { $steps } pasos
-dynamics-not-finite = la derivada no es finita en t = { $t } s
+dynamics-not-finite = la derivada no es finita
 dynamics-singular-motion = las ecuaciones del movimiento son singulares aquí (una posición singular)
 dynamics-start-singular = el inicio es una posición singular de las entradas (un punto muerto o de agarrotamiento)
 dynamics-start-dof = el mecanismo tiene { $dof } grado(s) de libertad, pero { $inputs } entrada(s) nombran sus coordenadas

@@ -9,9 +9,9 @@ warning-at-field = { $pointer }: { $said }
 
 ## Una integración en el tiempo que se detuvo
 
-warning-ode-step-too-small = el paso de integración bajó del error de redondeo en t = { $t }
+warning-ode-step-too-small = el paso de integración bajó del error de redondeo en t = { $t } s
 warning-ode-too-many-steps = más de { $steps } pasos
-warning-ode-not-finite = la derivada no es finita en t = { $t }
+warning-ode-not-finite = la derivada no es finita en t = { $t } s
 
 ## Volante
 

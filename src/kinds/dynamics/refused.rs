@@ -23,12 +23,13 @@ pub(super) fn invalid(e: DynamicsError, dopri5: bool) -> ApiError {
     ApiError::Invalid(vec![FieldError::said(pointer, msg(&e))])
 }
 
-/// A dynamics error as the catalogue says it, its reason too.
+/// A dynamics error as the catalogue says it, its reason too (the time of
+/// a failed integration said once, to four significant figures).
 fn msg(e: &DynamicsError) -> Msg {
     match e {
         DynamicsError::NonPositiveInertia { phi } => Msg::new("dynamics-inertia-not-positive").num("phi", *phi),
         DynamicsError::Integration { t, reason } => {
-            Msg::new("dynamics-integration").num("t", *t).with("reason", failure(reason))
+            Msg::new("dynamics-integration").fig("t", *t).with("reason", failure(reason))
         }
         // Answered as a spent budget, never as a field's error.
         DynamicsError::Budget { .. } => Msg::new("text-as-is").arg("why", e),
@@ -38,9 +39,9 @@ fn msg(e: &DynamicsError) -> Msg {
 
 fn failure(reason: &Failure) -> Msg {
     match reason {
-        Failure::Ode(OdeError::StepTooSmall { t }) => Msg::new("dynamics-step-too-small").num("t", *t),
+        Failure::Ode(OdeError::StepTooSmall { .. }) => Msg::new("dynamics-step-too-small"),
         Failure::Ode(OdeError::TooManySteps { steps }) => Msg::new("dynamics-too-many-steps").count("steps", *steps),
-        Failure::Ode(OdeError::NotFinite { t }) => Msg::new("dynamics-not-finite").num("t", *t),
+        Failure::Ode(OdeError::NotFinite { .. }) => Msg::new("dynamics-not-finite"),
         Failure::SingularMotion => Msg::new("dynamics-singular-motion"),
     }
 }

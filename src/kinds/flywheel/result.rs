@@ -227,9 +227,9 @@ fn condition(c: &fw::Condition) -> Msg {
 pub fn ode_msg(e: &crate::engine::numeric::ode::OdeError) -> Msg {
     use crate::engine::numeric::ode::OdeError;
     match *e {
-        OdeError::StepTooSmall { t } => Msg::new("warning-ode-step-too-small").num("t", t),
+        OdeError::StepTooSmall { t } => Msg::new("warning-ode-step-too-small").fig("t", t),
         OdeError::TooManySteps { steps } => Msg::new("warning-ode-too-many-steps").count("steps", steps),
-        OdeError::NotFinite { t } => Msg::new("warning-ode-not-finite").num("t", t),
+        OdeError::NotFinite { t } => Msg::new("warning-ode-not-finite").fig("t", t),
     }
 }
 
