@@ -164,7 +164,7 @@ pub fn sweep_each(
 /// (near a singular position h runs away, and the quadratic predictor
 /// stays on the branch). With it a fine sweep of a mechanism Newton places
 /// (a cam: 3600 positions) starts within Newton's tolerance and confirms
-/// it, one solve of Φ_q a position fewer.
+/// it: an evaluation of Φ and Φ_q and a factorisation a position fewer.
 #[derive(Default)]
 struct Predictor {
     g: Vec<f64>,

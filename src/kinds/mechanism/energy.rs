@@ -75,3 +75,22 @@ impl<'de> Deserialize<'de> for ByName {
         Ok(Self(BTreeMap::<Name, f64>::deserialize(deserializer)?.into_iter().collect()))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Written as the map it replaces writes it (in the names' order, the
+    /// last of a repeated name kept), and read back from it.
+    #[test]
+    fn by_name_is_written_and_read_as_a_map() {
+        let names: Vec<Name> = ["rocker", "crank", "coupler", "crank"].map(Name::new).into();
+        let values = [1.0, 2.0, 3.0, 4.0];
+        let map: BTreeMap<Name, f64> = names.iter().cloned().zip(values).collect();
+        let list = ByName::new(&names, values);
+        let written = serde_json::to_string(&list).unwrap();
+        assert_eq!(written, serde_json::to_string(&map).unwrap());
+        assert_eq!(written, r#"{"coupler":3.0,"crank":4.0,"rocker":1.0}"#);
+        assert_eq!(serde_json::from_str::<ByName>(&written).unwrap(), list);
+    }
+}
