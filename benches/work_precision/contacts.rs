@@ -71,16 +71,17 @@ pub fn section() -> String {
     let scaled = per(t_cam) * 1.37 / per(t_bar);
     let _ = writeln!(
         text,
-        "\n**Target** (issue 50: the cam's kinetostatics with friction ≤ 2 µs a position, set when the four-bar took \
-         1.37 µs a position): {:.2} µs on this host, where the four-bar takes {:.2} µs; at the four-bar's 1.37 µs \
-         the cam would take {scaled:.2} µs: {}. The four-bar is the host's gauge, and a conservative one: what \
-         both share got faster too (a step's energy shares, a sorted list instead of a map per position, 0–7 % of \
-         the four-bar's in paired runs). Its friction costs {:.2} µs a position over the frictionless cam ({:.0} % \
-         of it; issue 50 began at 3.06 µs, about twice the frictionless cam's, when each pass of the fixed point was a solve \
-         with every reaction; since 2026-11-29 the passes read only what presses the joints with friction, and \
-         every reaction is read once, from the last λ). Newton places the cam (no dyads): since 2026-11-29 each \
-         position is predicted to third order and starts within Newton's tolerance (the prediction confirmed, no \
-         Newton step after the second position), and its contact's curves are evaluated once a position.",
+        "\n**Target** (issue 50: the cam's kinetostatics with friction ≤ 2 µs a position, set when the four-bar \
+         took 1.37 µs a position): {:.2} µs on this host, where the four-bar takes {:.2} µs; at the four-bar's \
+         1.37 µs the cam would take {scaled:.2} µs: {}. The four-bar is the host's gauge, and a conservative one: \
+         what both share got faster too (a step's energy shares, a sorted list instead of a map per position, 0–7 \
+         % of the four-bar's in paired runs). Its friction costs {:.2} µs a position over the frictionless cam \
+         ({:.0} % of it; issue 50 began at 3.06 µs, about twice the frictionless cam's, when each pass of the \
+         fixed point was a solve with every reaction; since 2026-11-29 the passes read only what presses the \
+         joints with friction, and every reaction is read once, from the last λ). Newton places the cam (no \
+         dyads): since 2026-11-29 each position is predicted to third order and starts within Newton's tolerance \
+         (the prediction confirmed, no Newton step after the second position), and its contact's curves are \
+         evaluated once a position.",
         per(t_cam),
         per(t_bar),
         verdict(scaled <= 2.0),

@@ -291,8 +291,9 @@ async fn the_integrator_and_the_energy_hold_are_chosen_and_reported() {
 
 /// A torque that grows without bound, T = 1/(0.5 − t) on I* = 1: ω =
 /// 1 − ln(1 − 2t) runs away at t = 0.5 s (closed form), where no step can
-/// follow it. The 422 says where once, to four significant figures (trailing zeros dropped), and
-/// why, in the asker's language.
+/// follow it. The 422 says where once, to four significant figures (so
+/// within 5e-5 s of 0.5, its trailing zeros dropped), and why, in the
+/// asker's language.
 #[tokio::test]
 async fn a_run_away_motion_is_refused_saying_when_once() {
     let app = TestApp::new().await;

@@ -185,8 +185,9 @@ impl Predictor {
         q.iter_mut().enumerate().for_each(|(k, v)| *v += g[k] * d + 0.5 * h[k] * d * d);
         let Some((h0, at)) = self.before.as_ref().filter(|(_, at)| (from - at) * d > 0.0) else { return };
         let third = |k: usize| (h[k] - h0[k]) / (from - at) * d * d * d / 6.0;
-        let largest = |f: &dyn Fn(usize) -> f64| (0..h.len()).fold(0.0f64, |a, k| a.max(f(k).abs()));
-        if largest(&third) <= 0.1 * largest(&|k| 0.5 * h[k] * d * d) {
+        let (cubic, quadratic) =
+            (0..h.len()).fold((0.0f64, 0.0f64), |(c, s), k| (c.max(third(k).abs()), s.max((0.5 * h[k] * d * d).abs())));
+        if cubic <= 0.1 * quadratic {
             q.iter_mut().enumerate().for_each(|(k, v)| *v += third(k));
         }
     }

@@ -91,9 +91,9 @@ impl Frame {
 
 /// Contact joint k's two curves at q, each evaluated once: `local[side]`
 /// the curve's point and derivatives in its body's reference coordinates,
-/// `trig[side]` the body's (sin θ, cos θ) ((0, 1) for the ground). A
-/// contact's state reads them ~8 times a position (each a sine and a
-/// cosine for a circle or a cam), the friction's unit 3 times.
+/// `trig[side]` the body's (sin θ, cos θ) ((0, 1) for the ground): a
+/// contact's state needs them ~8 times a position and its friction's unit
+/// 3 times, each a sine and a cosine for a circle or a cam.
 pub struct Touch<'a> {
     curves: &'a [Curve; 2],
     bodies: [BodyId; 2],
