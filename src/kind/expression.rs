@@ -44,7 +44,9 @@ pub fn fault_msg(f: &Fault) -> Msg {
 /// expression could not read stands between two digits: what a Spanish
 /// sheet writes, to be said as such rather than as a stray comma.
 pub fn decimal_comma<'a>(src: &'a str, f: &Fault) -> Option<&'a str> {
-    if !matches!(f, Fault::AfterEnd(Tok::Op(',')) | Fault::Unexpected(Tok::Op(','))) {
+    // A comma after a whole expression (`2 + 0,5`), where a value was
+    // expected, or where a parenthesis was to close (`1/(0,5 - t)`).
+    if !matches!(f, Fault::AfterEnd(Tok::Op(',')) | Fault::Unexpected(Tok::Op(',')) | Fault::Expected(_)) {
         return None;
     }
     let b = src.as_bytes();

@@ -446,3 +446,29 @@ async fn units_and_counts_as_a_student_writes_them() {
     assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
     assert_eq!(r.json()["result"]["grubler"]["mobility"], 1);
 }
+
+/// A torque written as a Spanish sheet writes its numbers: the decimal
+/// comma is named as such wherever the reader stumbles on it (after a
+/// whole expression, or inside a parenthesis it kept from closing), at
+/// the expression's pointer.
+#[tokio::test]
+async fn a_decimal_comma_in_an_expression_is_named() {
+    let app = TestApp::new().await;
+    for expr in ["5 - 20*sin(phi)^2 + 0,5", "1/(0,5 + t)"] {
+        let body = json!({
+            "torques": [{"name": "m", "value": {"expr": expr}}],
+            "reduced_inertia": 1,
+            "initial": {"angle": 0, "speed": 1},
+            "duration": 1
+        });
+        let r = in_spanish(&app, "POST", "/v1/dynamics", Some(&body)).await;
+        assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+        let error = &r.json()["errors"][0];
+        assert_eq!(error["pointer"], "/torques/0/value/expr", "{expr}: {}", r.text);
+        assert!(
+            error["message"].as_str().unwrap().contains("'0,5' está escrito con coma decimal"),
+            "{expr}: {}",
+            r.text
+        );
+    }
+}
