@@ -10,7 +10,7 @@
 
 mod contact;
 
-use super::model::{BodyId, Coordinate, JointKind, Mechanism, dot, perp, rotate_by};
+use super::model::{BodyId, Coordinate, Driver, JointKind, Mechanism, dot, perp, rotate_by};
 use nalgebra::{DMatrix, DVector};
 
 /// Φ, Φ_q and γ at one state; [`evaluate_into`] refills one in place.
@@ -232,6 +232,18 @@ impl<J: Jacobian> Builder<'_, '_, J> {
         }
     }
 
+    /// Row f(q) − (φ − reference) of driver `d` at its input (φ, φ̇, φ̈).
+    fn driver(&mut self, row: usize, d: &Driver, input: [f64; 3]) {
+        let value = input[0] - d.reference;
+        match d.coordinate {
+            Coordinate::Joint(k) => self.joint_coordinate(row, k, value),
+            Coordinate::Point { body, at, direction } => self.projection(row, [0, body], at, direction, value),
+            Coordinate::Body(body) => self.angles(row, &[(body, 1.0)], value),
+        }
+        // Φ_d = f(q) − φ(t): Φ_q q̈ = γ_f + φ̈.
+        self.gamma[row] += input[2];
+    }
+
     /// Row a·θ_i + b·θ_j + c·θ_c − target.
     fn angles(&mut self, row: usize, terms: &[(BodyId, f64)], target: f64) {
         self.phi[row] = terms.iter().map(|&(b, k)| k * self.pose(b).1).sum::<f64>() - target;
@@ -329,16 +341,20 @@ fn build<J: Jacobian>(
         row += Mechanism::joint_rows(&joint.kind);
     }
     for (d, input) in m.drivers.iter().zip(s.inputs) {
-        let value = input[0] - d.reference;
-        match d.coordinate {
-            Coordinate::Joint(k) => b.joint_coordinate(row, k, value),
-            Coordinate::Point { body, at, direction } => b.projection(row, [0, body], at, direction, value),
-            Coordinate::Body(body) => b.angles(row, &[(body, 1.0)], value),
-        }
-        // Φ_d = f(q) − φ(t): Φ_q q̈ = γ_f + φ̈.
-        b.gamma[row] += input[2];
+        b.driver(row, d, *input);
         row += 1;
     }
+}
+
+/// Driver `k`'s Φ and its row of Φ_q alone at a state (the joints' rows
+/// not built): what the integrator asks of the input at each step's ends.
+pub fn evaluate_driver(m: &Mechanism, s: &State, k: usize) -> (f64, RowBlocks) {
+    let (mut phi, mut gamma, mut blocks) = ([0.0], [0.0], Blocks { rows: vec![RowBlocks::default()] });
+    let mut trig = Vec::new();
+    m.turns_into(s.q, &mut trig);
+    let mut b = Builder { m, s, trig: &trig, phi: &mut phi, gamma: &mut gamma, jacobian: &mut blocks };
+    b.driver(0, &m.drivers[k], s.inputs[k]);
+    (phi[0], blocks.rows[0])
 }
 
 /// The right-hand side ν of the velocity equation Φ_q q̇ = ν: the input speeds.

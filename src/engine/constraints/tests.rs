@@ -105,6 +105,24 @@ fn blocks_equal_the_dense_evaluation() {
     }
 }
 
+/// A driver's row alone is the same Φ and Φ_q row as in the whole
+/// evaluation, for every driver type (bit for bit).
+#[test]
+fn a_driver_alone_is_its_row_of_the_whole() {
+    for (name, m, q, qd) in cases() {
+        let inputs = vec![[0.3, 0.2, 0.1]; m.drivers.len()];
+        let state = State { q: &q, qd: Some(&qd), inputs: &inputs };
+        let (phi, _, blocks) = evaluate_blocks(&m, &state);
+        let first = phi.len() - m.drivers.len();
+        for k in 0..m.drivers.len() {
+            let (alone, row) = evaluate_driver(&m, &state, k);
+            assert_eq!(alone, phi[first + k], "{name} driver {k}");
+            let whole = blocks.rows[first + k];
+            assert_eq!((row.dot(&qd), row.len, row.singles), (whole.dot(&qd), whole.len, whole.singles), "{name} {k}");
+        }
+    }
+}
+
 /// γ = −(Φ_q q̇)_q q̇ (no input acceleration): against the central
 /// difference of Φ_q(q + s q̇)·q̇ in s (h = 1e-6).
 #[test]

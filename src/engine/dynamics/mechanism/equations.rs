@@ -14,7 +14,7 @@
 use super::MechanismProblem;
 use super::grip::{Grip, Grips, Mode, friction};
 use super::plain::{Plain, Reported, Sizes};
-use crate::engine::constraints::{State, System, evaluate, evaluate_blocks};
+use crate::engine::constraints::{State, System, evaluate, evaluate_blocks, evaluate_driver};
 use crate::engine::dynamics::range_space::RangeSpace;
 use crate::engine::dynamics::rows::Rows;
 use crate::engine::kinetostatics::{Frame, applied_forces, potential};
@@ -81,8 +81,7 @@ impl Equations<'_> {
     /// coordinates: Σ|∂φ/∂q_j|·e_j at q.
     pub fn input_error(&self, q: &[f64], e: &[f64]) -> f64 {
         let zeros = self.zeros();
-        let (_, _, jac) = evaluate_blocks(&self.p.mechanism, &State { q, qd: None, inputs: &zeros });
-        let row = &jac.rows[self.r];
+        let (_, row) = evaluate_driver(&self.p.mechanism, &State { q, qd: None, inputs: &zeros }, 0);
         let blocks: f64 = row.iter().map(|(c, d)| (0..3).map(|k| d[k].abs() * e[c + k]).sum::<f64>()).sum();
         blocks + row.single[..row.singles].iter().map(|&(c, d)| d.abs() * e[c]).sum::<f64>()
     }
@@ -90,8 +89,8 @@ impl Equations<'_> {
     /// φ and φ̇ of the first input.
     pub fn input(&self, q: &[f64], qd: Option<&[f64]>) -> (f64, f64) {
         let zeros = self.zeros();
-        let (phi, _, jac) = evaluate_blocks(&self.p.mechanism, &State { q, qd: None, inputs: &zeros });
-        (phi[self.r], qd.map_or(0.0, |v| jac.rows[self.r].dot(v)))
+        let (phi, row) = evaluate_driver(&self.p.mechanism, &State { q, qd: None, inputs: &zeros }, 0);
+        (phi, qd.map_or(0.0, |v| row.dot(v)))
     }
 
     fn forces(&self, t: f64, q: &[f64], qd: &[f64], [phi, omega]: [f64; 2]) -> Vec<f64> {
