@@ -80,39 +80,79 @@ fn kept(sine: f64) -> f64 {
     x * x * (3.0 - 2.0 * x)
 }
 
+/// Where two joint rows' blocks are on the same body: the pairs (k_a, k_b)
+/// of their block indices (found once: the blocks' pattern is the
+/// mechanism's, the same at every evaluation).
+#[derive(Clone, Copy, Debug, Default)]
+struct Shared {
+    len: usize,
+    at: [(usize, usize); 3],
+}
+
+impl Shared {
+    fn of(a: &RowBlocks, b: &RowBlocks) -> Self {
+        let mut shared = Self::default();
+        for (ka, ca) in a.col[..a.len].iter().enumerate() {
+            if let Some(kb) = b.col[..b.len].iter().position(|cb| cb == ca) {
+                shared.at[shared.len] = (ka, kb);
+                shared.len += 1;
+            }
+        }
+        shared
+    }
+
+    /// S_ab = J_a W J_bᵀ over the shared bodies.
+    fn product(&self, w: &[f64], a: &RowBlocks, b: &RowBlocks) -> f64 {
+        self.at[..self.len]
+            .iter()
+            .map(|&(ka, kb)| {
+                let (c, da, db) = (a.col[ka], &a.val[ka], &b.val[kb]);
+                debug_assert_eq!(c, b.col[kb], "the blocks' pattern changed");
+                da[0] * w[c] * db[0] + da[1] * w[c + 1] * db[1] + da[2] * w[c + 2] * db[2]
+            })
+            .sum()
+    }
+}
+
+/// S_aa = J_a W J_aᵀ.
+fn square(w: &[f64], a: &RowBlocks) -> f64 {
+    a.iter().map(|(c, d)| d[0] * w[c] * d[0] + d[1] * w[c + 1] * d[1] + d[2] * w[c + 2] * d[2]).sum()
+}
+
 /// S's LDLᵀ in one elimination order, with where S's entries go.
 struct Factored {
     ldl: Ldl,
-    /// Pairs (i, j, position) of joint rows sharing a body, i > j.
-    pairs: Vec<(usize, usize, usize)>,
-    /// Diagonal and lower values of S (elimination order).
+    /// Pairs (i, j, position, shared bodies) of joint rows sharing a body, i > j.
+    pairs: Vec<(usize, usize, usize, Shared)>,
+    /// Diagonal and lower values of S (elimination order; the fill's stay 0).
     diag: Vec<f64>,
     lower: Vec<f64>,
 }
 
 impl Factored {
-    /// For S's graph, the rows `last` eliminated after the others.
-    fn new(neighbours: &[Vec<usize>], last: &[usize]) -> Self {
+    /// For S's graph and the joint rows' blocks, the rows `last`
+    /// eliminated after the others.
+    fn new(neighbours: &[Vec<usize>], last: &[usize], rows: &[RowBlocks]) -> Self {
         let pattern = Pattern::new(neighbours, last);
-        let mut pairs: Vec<(usize, usize, usize)> = Vec::new();
+        let mut pairs: Vec<(usize, usize, usize, Shared)> = Vec::new();
         for (i, ns) in neighbours.iter().enumerate() {
             for &j in ns.iter().filter(|&&j| j < i) {
-                pairs.push((i, j, pattern.position(i, j).expect("S's entries are in L's pattern")));
+                let position = pattern.position(i, j).expect("S's entries are in L's pattern");
+                pairs.push((i, j, position, Shared::of(&rows[i], &rows[j])));
             }
         }
-        pairs.sort_unstable();
-        pairs.dedup();
+        pairs.sort_unstable_by_key(|&(i, j, ..)| (i, j));
+        pairs.dedup_by_key(|&mut (i, j, ..)| (i, j));
         Self { diag: vec![0.0; pattern.len()], lower: vec![0.0; pattern.entries()], pairs, ldl: Ldl::new(pattern) }
     }
 
-    /// Factors S of entries S_ij = `product(i, j)`; false where one is not finite.
-    fn factor(&mut self, product: impl Fn(usize, usize) -> f64) -> bool {
+    /// Factors S = J W Jᵀ of the joint rows `rows`; false where an entry is not finite.
+    fn factor(&mut self, w: &[f64], rows: &[RowBlocks]) -> bool {
         for (k, &i) in self.ldl.pattern.order.iter().enumerate() {
-            self.diag[k] = product(i, i);
+            self.diag[k] = square(w, &rows[i]);
         }
-        self.lower.fill(0.0);
-        for &(i, j, pos) in &self.pairs {
-            self.lower[pos] = product(i, j);
+        for &(i, j, position, shared) in &self.pairs {
+            self.lower[position] = shared.product(w, &rows[i], &rows[j]);
         }
         if !(self.diag.iter().all(|v| v.is_finite()) && self.lower.iter().all(|v| v.is_finite())) {
             return false;
@@ -171,7 +211,7 @@ impl RangeSpace {
         }
         Some(Self {
             w: mass.iter().map(|m| 1.0 / m).collect(),
-            base: Factored::new(&neighbours, &[]),
+            base: Factored::new(&neighbours, &[], &jac.rows[..r]),
             neighbours,
             late: Vec::new(),
             current: None,
@@ -179,22 +219,6 @@ impl RangeSpace {
             hold,
             refine: false,
         })
-    }
-
-    /// (J_a W J_bᵀ) of two rows.
-    fn product(w: &[f64], a: &RowBlocks, b: &RowBlocks) -> f64 {
-        let mut s = 0.0;
-        // Over the blocks' arrays (an iterator with a filter over them was a
-        // sixth of A02's evaluation at N = 40).
-        for (&ca, da) in a.col[..a.len].iter().zip(&a.val) {
-            for (&cb, db) in b.col[..b.len].iter().zip(&b.val) {
-                if cb == ca {
-                    let w = &w[ca..ca + 3];
-                    s += da[0] * w[0] * db[0] + da[1] * w[1] * db[1] + da[2] * w[2] * db[2];
-                }
-            }
-        }
-        s
     }
 
     /// Whether a combination is wholly held (its sine under the blend's low end).
@@ -215,7 +239,7 @@ impl RangeSpace {
     /// span orthogonal to all the other rows.
     pub fn factor(&mut self, jac: &Blocks) -> Option<usize> {
         let (w, rows) = (&self.w, &jac.rows);
-        if !self.base.factor(|i, j| Self::product(w, &rows[i], &rows[j])) {
+        if !self.base.factor(w, rows) {
             return None;
         }
         self.current = None;
@@ -231,10 +255,10 @@ impl RangeSpace {
                 if self.late.len() >= CACHED {
                     self.late.clear();
                 }
-                self.late.push((weak.clone(), Factored::new(&self.neighbours, &weak)));
+                self.late.push((weak.clone(), Factored::new(&self.neighbours, &weak, rows)));
                 self.late.len() - 1
             });
-            if !self.late[at].1.factor(|i, j| Self::product(w, &rows[i], &rows[j])) {
+            if !self.late[at].1.factor(w, rows) {
                 return None;
             }
             self.current = Some(at);
