@@ -4,6 +4,7 @@
 //! `mechanism` (PyPI), and a disk rolling in a circular track for 10 s at
 //! a tolerance of 1e-9.
 
+use crate::gauge::{REFERENCE, swept};
 use crate::http::library;
 use crate::kinematics::best;
 use crate::{run_peer, timed};
@@ -14,16 +15,6 @@ use mechdyn::kinds::kinetostatics::{Kinetostatics, KinetostaticsRequest};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 use std::hint::black_box;
-
-/// A library request swept over a turn in `steps` positions, every output.
-fn swept(id: &str, steps: usize) -> KinetostaticsRequest {
-    let mut body = library(id);
-    body["input"]["start"] = json!("0 deg");
-    body["input"]["end"] = json!("360 deg");
-    body["input"]["steps"] = json!(steps);
-    body["outputs"] = json!(["driving", "reactions", "kinematics", "reduced"]);
-    serde_json::from_value(body).expect("request")
-}
 
 fn cam_request(body: Value) -> CamRequest {
     serde_json::from_value(body).expect("request")
@@ -68,7 +59,7 @@ pub fn section() -> String {
         t_free / t_bar
     );
     let verdict = |met: bool| if met { "met" } else { "missed" };
-    let scaled = per(t_cam) * 1.37 / per(t_bar);
+    let scaled = per(t_cam) * REFERENCE / per(t_bar);
     let _ = writeln!(
         text,
         "\n**Target** (issue 50: the cam's kinetostatics with friction ≤ 2 µs a position, set when the four-bar \

@@ -8,6 +8,7 @@
 #[path = "../../tests/engine/elliptic.rs"]
 pub mod elliptic;
 
+use crate::gauge::Reading;
 use crate::{INTEGRATORS, Point, fixture, timed};
 use elliptic::{complete_k, sn};
 use serde_json::json;
@@ -60,29 +61,35 @@ pub fn points() -> Vec<Point> {
     points
 }
 
-/// The target line: the fastest run within IFToMM's accuracy.
+/// The target line: the run within IFToMM's accuracy with the fewest
+/// evaluations (a count, where one timing of each is noise), run again in
+/// turn with the host's gauge and read at its reference speed.
 pub fn target(points: &[Point]) -> String {
     let (accuracy, seconds) = TARGET;
-    let best = points.iter().filter(|p| p.error <= accuracy).min_by(|a, b| a.seconds.total_cmp(&b.seconds));
-    match best {
-        Some(p) => format!(
-            "\n**Target** (issue 50: A01 to {accuracy:.0e} in ≤ {seconds} s): {:.3} s by {} at tolerance {:.0e} (error \
-             {:.2e}): {}. What bounds it: {} evaluations of the equations of motion at {:.2} µs each, the step's \
-             projection and the samples included. The bob is a point mass (I_G = 0, M singular), so the sparse \
-             form does not apply: each evaluation solves the 5 × 5 augmented system by an LU kept from the last \
-             (`dynamics/mechanism/plain.rs`), where the general dense form, allocating and deciding the rows' rank \
-             by a QR at every evaluation, took 2.3× as long (0.54 against 0.23 s whole, `mechdyn solve`, \
-             farm-bench medians of 10 paired runs, on 2026-11-29).\n",
-            p.seconds,
-            p.series,
-            p.tolerance,
-            p.error,
-            if p.seconds <= seconds { "met" } else { "missed" },
-            p.evaluations,
-            1e6 * p.seconds / p.evaluations.max(1) as f64,
-        ),
-        None => {
-            format!("\n**Target** (A01 to {accuracy:.0e} in ≤ {seconds} s): no run reached {accuracy:.0e}: missed.\n")
-        }
-    }
+    let best = points.iter().filter(|p| p.error <= accuracy).min_by_key(|p| p.evaluations);
+    let Some(p) = best else {
+        return format!(
+            "\n**Target** (A01 to {accuracy:.0e} in ≤ {seconds} s): no run reached {accuracy:.0e}: missed.\n"
+        );
+    };
+    let energy = !p.series.contains("energy free");
+    let integrator = INTEGRATORS.into_iter().find(|i| p.series.contains(&format!(", {i}"))).unwrap_or("dopri5");
+    let reading = Reading::paired(5, || a01(p.tolerance, integrator, energy).seconds);
+    format!(
+        "\n**Target** (issue 50: A01 to {accuracy:.0e} in ≤ {seconds} s): {} by {} at tolerance {:.0e} (error \
+         {:.2e}): {}. What bounds it: {} evaluations of the equations of motion at {:.2} µs each here, the step's \
+         projection and the samples included. The bob is a point mass (I_G = 0, M singular), so the sparse form \
+         does not apply: each evaluation solves the 5 × 5 augmented system by an LU kept from the last \
+         (`dynamics/mechanism/plain.rs`), where the general dense form, allocating and deciding the rows' rank by a \
+         QR at every evaluation, took 2.3× as long (0.54 against 0.23 s whole, `mechdyn solve`, farm-bench medians \
+         of 10 paired runs, on 2026-11-29). Since 2026-11-29 the input's angle at each step's ends is read from its \
+         own row alone, not from all of Φ and Φ_q (−11 % of the whole, the same steps and result).\n",
+        reading.words(("s", 1.0)),
+        p.series,
+        p.tolerance,
+        p.error,
+        if reading.at_reference <= seconds { "met" } else { "missed" },
+        p.evaluations,
+        1e6 * reading.here / p.evaluations.max(1) as f64,
+    )
 }
