@@ -124,8 +124,9 @@ pub fn section() -> String {
          depends on its rounding (at N = 5 the same run spends 1 927 of 9 850 evaluations in the dense form). At N = \
          20 (10 s at 1e-9) it is made again with the dense form near the flat positions (20 471 of 26 200 \
          evaluations, 150 s) and ends wrong: the cranks stopped at a flat position, θ̇ = 8e-12 rad/s at 10 s \
-         where the energy gives about 1.2 rad/s (the engine's solution; the same before this change; found on \
-         2026-11-29, not mended).",
+         where the energy gives about 1.2 rad/s; its energy residual is 0.48 from 5.2 s, just after the passage at \
+         5.17 s, and the service's warning that the energy balance fails after a singular position says so (the \
+         same before this change; found on 2026-11-29, not mended).",
         reading.words(("s", 1.0)),
     );
     doc
