@@ -65,8 +65,8 @@ impl Reading {
         Self { here: median(&mut here), gauge: median(&mut gauges), at_reference: median(&mut ratios) }
     }
 
-    /// "… s on this host (median of k), where the four-bar took … µs a
-    /// position …: … s at that speed".
+    /// "… s on this host, where the four-bar took … µs a position …: … s at
+    /// that speed", in `unit` (its name, and its size in seconds' terms).
     pub fn words(&self, unit: (&str, f64)) -> String {
         let (name, scale) = unit;
         format!(
