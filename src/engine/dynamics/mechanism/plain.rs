@@ -19,7 +19,7 @@
 //! by the Gram matrix G = (RΦ_qS)(RΦ_qS)ᵀ (r × r, R the rows' scale): with
 //! λ_max ≤ B, B the largest row sum of |G| (Gershgorin), and λ_min ≥
 //! det G / λ_max^(r−1), every σ² = λ(G) ≥ (10τ)²·σ²_max once det G ≥
-//! (10τ)²·B^r (det G, the product of G's LDLᵀ pivots; ten times the margin the
+//! (10τ)²·B^r (det G from G's Cholesky factor; ten times the margin the
 //! general form keeps). Where the test fails — near a
 //! singular position, or a long row vector that the bound overstates —
 //! the general form decides, so the test chooses only how fast, never
@@ -148,20 +148,19 @@ impl Plain {
     fn independent(&mut self, z: &Sizes) -> bool {
         let (n, r) = (z.n, z.r);
         let (jac, rows) = (self.sys.jacobian.as_slice(), self.sys.jacobian.nrows());
-        self.w.resize(r * n, 0.0);
-        self.size.resize(r, 0.0);
-        for (i, (row, size)) in self.w.chunks_exact_mut(n.max(1)).zip(&mut self.size).enumerate() {
-            let mut top = 0.0f64;
-            for (j, (w, s)) in row.iter_mut().zip(z.scale).enumerate() {
-                *w = jac[j * rows + i] * s;
-                top = top.max(w.abs());
-            }
-            *size = if top > 0.0 && top.is_finite() { 1.0 / top } else { f64::NAN };
+        self.w.clear();
+        for i in 0..r {
+            self.w.extend(z.scale.iter().enumerate().map(|(j, s)| jac[j * rows + i] * s));
         }
+        self.size.clear();
+        self.size.extend(self.w.chunks_exact(n.max(1)).map(|row| {
+            let top = row.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+            if top > 0.0 && top.is_finite() { 1.0 / top } else { f64::NAN }
+        }));
         gram(&self.w, n, Some(&self.size), &mut self.gram);
         let bound =
             self.gram.chunks_exact(r.max(1)).map(|g| g.iter().map(|v| v.abs()).sum::<f64>()).fold(0.0, f64::max);
-        let Some(det) = ldl(&mut self.gram, r) else { return false };
+        let Some(det) = cholesky(&mut self.gram, r) else { return false };
         // Where B^r would overflow, the general form decides.
         let floor = (10.0 * TAU).powi(2) * bound.powi(r as i32);
         r == 0 || (floor.is_finite() && det >= floor)
@@ -211,13 +210,13 @@ impl Plain {
     fn least(&mut self, z: &Sizes) -> Option<()> {
         let (n, r) = (z.n, z.r);
         gram(&self.w, n, None, &mut self.gram);
-        ldl(&mut self.gram, r)?;
+        cholesky(&mut self.gram, r)?;
         let l = &self.gram;
         for i in 0..r {
-            self.x[i] -= (0..i).map(|k| l[i * r + k] * self.x[k]).sum::<f64>();
+            self.x[i] = (self.x[i] - (0..i).map(|k| l[i * r + k] * self.x[k]).sum::<f64>()) / l[i * r + i];
         }
         for i in (0..r).rev() {
-            self.x[i] = self.x[i] / l[i * r + i] - (i + 1..r).map(|k| l[k * r + i] * self.x[k]).sum::<f64>();
+            self.x[i] = (self.x[i] - (i + 1..r).map(|k| l[k * r + i] * self.x[k]).sum::<f64>()) / l[i * r + i];
         }
         self.dq.clear();
         self.dq.extend((0..n).map(|j| z.scale[j] * (0..r).map(|i| self.w[i * n + j] * self.x[i]).sum::<f64>()));
@@ -241,28 +240,27 @@ fn gram(w: &[f64], n: usize, rows: Option<&[f64]>, g: &mut Vec<f64>) {
     }
 }
 
-/// det G of a symmetric positive definite G (r × r, row-major), G
-/// overwritten on and below its diagonal by its factors G = L D Lᵀ (L
-/// unit lower triangular below the diagonal, D on it; no square roots,
-/// det G = Π D_j), its upper triangle by scratch; None where a pivot is
-/// not positive or not finite.
-fn ldl(g: &mut [f64], r: usize) -> Option<f64> {
+/// det G of a symmetric positive definite G (r × r, row-major, overwritten
+/// by its Cholesky factor L, G = L Lᵀ, on and below the diagonal); None where a pivot is not positive or not finite.
+fn cholesky(g: &mut [f64], r: usize) -> Option<f64> {
     let mut det = 1.0;
     for j in 0..r {
-        // L_jk·D_k into the upper triangle's column j (row k < j).
+        let mut d = g[j * r + j];
         for k in 0..j {
-            g[k * r + j] = g[j * r + k] * g[k * r + k];
+            d -= g[j * r + k] * g[j * r + k];
         }
-        let d = g[j * r + j] - (0..j).map(|k| g[j * r + k] * g[k * r + j]).sum::<f64>();
         if !(d > 0.0 && d.is_finite()) {
             return None;
         }
         det *= d;
-        g[j * r + j] = d;
-        let inverse = 1.0 / d;
+        let l = d.sqrt();
+        g[j * r + j] = l;
         for i in j + 1..r {
-            let v = g[i * r + j] - (0..j).map(|k| g[i * r + k] * g[k * r + j]).sum::<f64>();
-            g[i * r + j] = v * inverse;
+            let mut v = g[i * r + j];
+            for k in 0..j {
+                v -= g[i * r + k] * g[j * r + k];
+            }
+            g[i * r + j] = v / l;
         }
     }
     Some(det)
@@ -270,7 +268,7 @@ fn ldl(g: &mut [f64], r: usize) -> Option<f64> {
 
 #[cfg(test)]
 mod tests {
-    use super::{Plain, Sizes, ldl};
+    use super::{Plain, Sizes, cholesky};
     use crate::engine::Deadline;
     use crate::engine::constraints::{State, evaluate};
     use crate::engine::dynamics::mechanism::MechanismProblem;
@@ -279,30 +277,15 @@ mod tests {
     use crate::engine::samples::parallelogram_chain;
     use std::f64::consts::FRAC_PI_2;
 
-    /// det of a 3 × 3 SPD matrix against its cofactor expansion, its factors
-    /// multiplied back; a singular one refused.
+    /// det of a 3 × 3 SPD matrix against its cofactor expansion; a singular
+    /// one refused.
     #[test]
     fn the_determinant_is_the_cofactor_expansion_s() {
         let g = [4.0, 2.0, 0.6, 2.0, 5.0, 1.0, 0.6, 1.0, 3.0];
         let cofactors = 4.0 * (5.0 * 3.0 - 1.0) - 2.0 * (2.0 * 3.0 - 0.6) + 0.6 * (2.0 * 1.0 - 5.0 * 0.6);
-        let mut f = g;
-        let det = ldl(&mut f, 3).expect("positive definite");
+        let det = cholesky(&mut g.clone(), 3).expect("positive definite");
         assert!((det - cofactors).abs() <= 1e-12 * cofactors, "{det} vs {cofactors}");
-        // L D Lᵀ is G again, to 1e-15 of its entries.
-        let l = |i: usize, k: usize| {
-            if i == k {
-                1.0
-            } else if k < i {
-                f[i * 3 + k]
-            } else {
-                0.0
-            }
-        };
-        for (i, k) in (0..3).flat_map(|i| (0..3).map(move |k| (i, k))) {
-            let back: f64 = (0..3).map(|j| l(i, j) * f[j * 3 + j] * l(k, j)).sum();
-            assert!((back - g[i * 3 + k]).abs() <= 1e-15 * 5.0, "G[{i}][{k}] {back} vs {}", g[i * 3 + k]);
-        }
-        assert!(ldl(&mut [1.0, 2.0, 2.0, 4.0], 2).is_none(), "rank 1");
+        assert!(cholesky(&mut [1.0, 2.0, 2.0, 4.0], 2).is_none(), "rank 1");
     }
 
     /// A02's chain with N = 1 (two cranks and a coupler, 1 m and 1 kg bars).
