@@ -15,7 +15,7 @@ use serde_json::json;
 use std::hint::black_box;
 
 /// The four-bar's µs a position on 2026-11-27.
-pub const REFERENCE: f64 = 1.37;
+const REFERENCE: f64 = 1.37;
 
 /// A library request swept over a turn in `steps` positions, every output.
 pub fn swept(id: &str, steps: usize) -> KinetostaticsRequest {
