@@ -209,10 +209,8 @@ impl Workspace {
     fn conditions(&mut self, exact: bool) -> [f64; 2] {
         let a = &self.sys.jacobian;
         let scales = [self.rows.as_slice(), self.cols.as_slice()];
-        let estimates = (!exact && self.lu.is_regular()).then(|| {
-            let si = estimated_condition(a, &self.lu, [&mut self.x, &mut self.y]);
-            [si, scaled::estimated_condition(a, &self.lu, scales, [&mut self.xs, &mut self.y])]
-        });
+        let estimates = (!exact && self.lu.is_regular())
+            .then(|| scaled::estimated_conditions(a, &self.lu, scales, [&mut self.x, &mut self.xs, &mut self.y]));
         let [si, of_scaled] = estimates.unwrap_or([f64::INFINITY; 2]);
         [
             if si <= ESTIMATE_LIMIT { si } else { condition(a) },
