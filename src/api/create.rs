@@ -5,13 +5,12 @@ use super::AppState;
 use super::body::{Chunks, guarded};
 use super::job::job_chunks;
 use crate::kind::problem::ApiError;
-use crate::kind::{JobResult, json_len, too_large, write_json};
+use crate::kind::{JobResult, JsonBuffer, json_len, too_large, write_json};
 use crate::store::{JobRow, NewJob};
 use axum::body::Body;
 use axum::http::{StatusCode, header};
 use axum::response::{IntoResponse, Response};
 use bytes::Bytes;
-use std::io;
 use std::time::Instant;
 use tokio::sync::OwnedSemaphorePermit;
 
@@ -146,7 +145,7 @@ pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 
 /// The result as JSON bytes, or a 422 when it would exceed `limit` bytes.
 fn serialized<R: JobResult>(result: &R, limit: usize) -> Result<Bytes, ApiError> {
-    let mut out = Bounded { buf: Vec::new(), limit };
+    let mut out = JsonBuffer::new(limit);
     match write_json(&mut out, result) {
         Ok(()) => {
             // The buffer grew by doubling: give back the unused half before it is held in flight.
@@ -158,25 +157,6 @@ fn serialized<R: JobResult>(result: &R, limit: usize) -> Result<Bytes, ApiError>
             Err(too_large(json_len(result), limit, result.rows(), false))
         }
         Err(e) => Err(ApiError::Internal(format!("result: {e}"))),
-    }
-}
-
-/// A buffer that refuses to grow beyond `limit`.
-struct Bounded {
-    buf: Vec<u8>,
-    limit: usize,
-}
-
-impl io::Write for Bounded {
-    fn write(&mut self, data: &[u8]) -> io::Result<usize> {
-        if self.buf.len() + data.len() > self.limit {
-            return Err(io::Error::other("over the limit on a result"));
-        }
-        self.buf.extend_from_slice(data);
-        Ok(data.len())
-    }
-    fn flush(&mut self) -> io::Result<()> {
-        Ok(())
     }
 }
 

