@@ -8,7 +8,7 @@
 //! polynomial of degree ≤ 3 between nodes, so Simpson's rule is exact);
 //! expressions by adaptive Gauss–Kronrod quadrature.
 
-use super::expr::Expr;
+use super::expr::{Expr, Memo};
 use super::numeric::quadrature::{Integral, integrate};
 use std::sync::Arc;
 
@@ -17,6 +17,15 @@ use std::sync::Arc;
 pub enum Side {
     Left,
     Right,
+}
+
+/// What evaluations of functions at one set of points reuse
+/// ([`Function::add_frozen_many`]): a buffer of values, and the functions
+/// of φ alone already computed there.
+#[derive(Clone, Debug, Default)]
+pub struct Batch {
+    values: Vec<f64>,
+    memo: Memo,
 }
 
 /// Interpolation between the rows of a table.
@@ -243,12 +252,12 @@ impl Function {
     }
 
     /// [`Self::eval_frozen`] at every x of `xs`, added to `out` times `k`
-    /// (expressions evaluated a block of points at a time).
-    pub fn add_frozen_many(&self, k: f64, xs: &[f64], anchor: f64, out: &mut [f64], scratch: &mut Vec<f64>) {
+    /// (expressions evaluated a block of points at a time, through `batch`).
+    pub fn add_frozen_many(&self, k: f64, xs: &[f64], anchor: f64, out: &mut [f64], batch: &mut Batch) {
         let mut expr = |e: &Expr| {
-            scratch.resize(xs.len(), 0.0);
-            e.eval_many(xs, scratch);
-            out.iter_mut().zip(scratch.iter()).for_each(|(o, v)| *o += k * v);
+            batch.values.resize(xs.len(), 0.0);
+            e.eval_many(xs, &mut batch.values, &mut batch.memo);
+            out.iter_mut().zip(&batch.values).for_each(|(o, v)| *o += k * v);
         };
         match self {
             Self::Expr(e) => expr(e),
@@ -257,7 +266,7 @@ impl Function {
                     expr(&s.expr);
                 }
             }
-            Self::Sum(fs) => fs.iter().for_each(|f| f.add_frozen_many(k, xs, anchor, out, scratch)),
+            Self::Sum(fs) => fs.iter().for_each(|f| f.add_frozen_many(k, xs, anchor, out, batch)),
             _ => out.iter_mut().zip(xs).for_each(|(o, x)| *o += k * self.eval_frozen(*x, anchor)),
         }
     }

@@ -16,6 +16,7 @@ mod program;
 
 pub use fault::{Arity, FUNCTIONS, Fault, Tok};
 use node::Node;
+pub use program::Memo;
 use program::Program;
 
 /// Longest accepted expression, in characters.
@@ -97,10 +98,12 @@ impl Expr {
         }
     }
 
-    /// [`Self::eval`] at every x of `xs` for variable 0 (the others 0), into `out`.
-    pub fn eval_many(&self, xs: &[f64], out: &mut [f64]) {
+    /// [`Self::eval`] at every x of `xs` for variable 0 (the others 0), into
+    /// `out`; `memo` keeps the functions of the variable alone for the next
+    /// expression at the same points ([`Memo`]).
+    pub fn eval_many(&self, xs: &[f64], out: &mut [f64], memo: &mut Memo) {
         match &self.program {
-            Some(p) => p.eval_many(xs, out),
+            Some(p) => p.eval_many(xs, out, memo),
             None => xs.iter().zip(out).for_each(|(x, o)| *o = self.root.eval(&[*x])),
         }
     }

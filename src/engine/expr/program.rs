@@ -82,18 +82,24 @@ impl Program {
     /// The values at every x of `xs` for variable 0 (the others 0), into
     /// `out`: bit for bit [`Self::eval`]'s, but each operation runs over a
     /// block of points (the per-point dispatch is what a sampled cycle of a
-    /// thousand points spends most of its interpreting on).
-    pub fn eval_many(&self, xs: &[f64], out: &mut [f64]) {
+    /// thousand points spends most of its interpreting on), and a function
+    /// of the variable alone is read from `memo` where an expression before
+    /// this one at the same points computed it.
+    pub fn eval_many(&self, all: &[f64], out: &mut [f64], memo: &mut Memo) {
+        memo.at(all);
         let mut stack = [[0.0f64; LANES]; STACK];
-        for (xs, out) in xs.chunks(LANES).zip(out.chunks_mut(LANES)) {
+        for (block, (xs, out)) in all.chunks(LANES).zip(out.chunks_mut(LANES)).enumerate() {
             let len = xs.len();
             let mut top = 0;
-            for op in &self.ops {
+            for (k, op) in self.ops.iter().enumerate() {
                 match *op {
                     Op::Const(c) => stack[top][..len].fill(c),
                     Op::Var(0) => stack[top][..len].copy_from_slice(xs),
                     Op::Var(_) => stack[top][..len].fill(0.0),
                     Op::Neg => stack[top - 1][..len].iter_mut().for_each(|a| *a = -*a),
+                    Op::Call1(f) if k > 0 && self.ops[k - 1] == Op::Var(0) => {
+                        memo.apply(f, block * LANES, xs, &mut stack[top - 1][..len]);
+                    }
                     Op::Call1(f) => stack[top - 1][..len].iter_mut().for_each(|a| *a = f.apply(*a)),
                     Op::IfLess => {
                         top -= 3;
@@ -124,6 +130,49 @@ impl Program {
                 }
             }
             out.copy_from_slice(&stack[0][..len]);
+        }
+    }
+}
+
+/// f(x) at a batch's points for each function f met applied to the
+/// variable itself (`sin(phi)`), kept for the next batch at the same points:
+/// a cycle's M*, I* and I*' are evaluated on one grid, and their sines and
+/// cosines were half of a flywheel job's time (perf, P.103's slider).
+#[derive(Clone, Debug, Default)]
+pub struct Memo {
+    /// The points (compared bit for bit: sin(−0) is not sin(+0)).
+    xs: Vec<u64>,
+    /// f, its values at the points and how many of them, from the first, are known.
+    values: Vec<(Fn1, Vec<f64>, usize)>,
+}
+
+impl Memo {
+    /// Forgets what it holds unless it was for the points `xs`.
+    fn at(&mut self, xs: &[f64]) {
+        if !self.xs.iter().copied().eq(xs.iter().map(|x| x.to_bits())) {
+            self.xs.clear();
+            self.xs.extend(xs.iter().map(|x| x.to_bits()));
+            self.values.clear();
+        }
+    }
+
+    /// f at the points `xs`, the block of the batch's points from `from`,
+    /// into `out`: read where known, else computed (and kept, block after block).
+    fn apply(&mut self, f: Fn1, from: usize, xs: &[f64], out: &mut [f64]) {
+        let to = from + xs.len();
+        let k = self.values.iter().position(|(g, ..)| *g == f).unwrap_or_else(|| {
+            self.values.push((f, vec![0.0; self.xs.len()], 0));
+            self.values.len() - 1
+        });
+        let (_, values, known) = &mut self.values[k];
+        if *known >= to {
+            out.copy_from_slice(&values[from..to]);
+            return;
+        }
+        out.iter_mut().zip(xs).for_each(|(o, x)| *o = f.apply(*x));
+        if *known == from {
+            values[from..to].copy_from_slice(out);
+            *known = to;
         }
     }
 }
@@ -178,6 +227,9 @@ mod tests {
             "exp(-t)*sqrt(abs(phi)) + sign(phi - 1)*floor(3*t) + ln(2 + phi) - log10(5 + t)",
             "((((phi + 1)*(t + 2))*((phi - 3)*(t - 4)))*(((phi + 5)*(t + 6))*((phi - 7)*(t - 8))))",
         ];
+        // A batch over more than one block of points, t = 0, −0 among them.
+        let xs: Vec<f64> = (0..150).map(|k| 0.07 * k as f64 - 5.0).chain([-0.0, 0.0]).collect();
+        let mut memo = Memo::default();
         for source in sources {
             for root in [tree(source), tree(source).derivative(0).fold(), tree(source).derivative(1).fold()] {
                 let program = Program::new(&root).expect("shallow enough");
@@ -189,15 +241,29 @@ mod tests {
                         "{source} at {vars:?}: {a} vs {b}"
                     );
                 }
-                // A batch over more than one block of points, t = 0.
-                let xs: Vec<f64> = (0..150).map(|k| 0.07 * k as f64 - 5.0).collect();
-                let mut many = vec![0.0; xs.len()];
-                program.eval_many(&xs, &mut many);
-                for (x, a) in xs.iter().zip(&many) {
-                    let b = root.eval(&[*x, 0.0]);
-                    assert!(a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()), "{source} at {x}: {a} vs {b}");
+                // Twice: computing the functions of φ, then reading them from
+                // the memo, which the sources before this one filled too.
+                for _ in 0..2 {
+                    let mut many = vec![0.0; xs.len()];
+                    program.eval_many(&xs, &mut many, &mut memo);
+                    for (x, a) in xs.iter().zip(&many) {
+                        let b = root.eval(&[*x, 0.0]);
+                        let same = a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan());
+                        assert!(same, "{source} at {x}: {a} vs {b}");
+                    }
                 }
             }
+        }
+    }
+
+    /// The memo is for the points it was filled at, to the bit: sin(−0) is −0.
+    #[test]
+    fn the_memo_holds_for_its_own_points() {
+        let program = Program::new(&tree("sin(phi)")).expect("shallow");
+        let (mut memo, mut out) = (Memo::default(), [1.0]);
+        for x in [0.0, -0.0, 0.5, -0.0] {
+            program.eval_many(&[x], &mut out, &mut memo);
+            assert_eq!(out[0].to_bits(), x.sin().to_bits(), "at {x}");
         }
     }
 

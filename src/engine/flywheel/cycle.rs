@@ -2,7 +2,7 @@
 //! I*(φ) and its slope, split into smooth pieces at every breakpoint, with
 //! the work W(φ) = ∫₀^φ M* dφ integrated piece by piece.
 
-use crate::engine::function::{Function, Side};
+use crate::engine::function::{Batch, Function, Side};
 use crate::engine::numeric::quadrature::Integral;
 use crate::engine::{Deadline, EngineError, Phase, Progress};
 
@@ -97,29 +97,29 @@ impl<'a> Cycle<'a> {
         let mut pieces = Vec::with_capacity(self.pieces.len());
         let mut slopes = Vec::with_capacity(self.pieces.len());
         let (mut abs_work, mut max_abs_torque) = (0.0, 0.0f64);
-        let mut scratch = Vec::new();
+        let mut batch = Batch::default();
         for w in self.pieces.windows(2) {
             self.deadline.check(|| Progress::Flywheel(Phase::Sampling))?;
             let (a, b) = (w[0], w[1]);
             let n = ((SAMPLES_PER_PERIOD as f64 * (b - a) / self.period).ceil() as usize).max(8);
             let xs: Vec<f64> = (0..=n).map(|j| a + (b - a) * j as f64 / n as f64).collect();
             let anchor = 0.5 * (a + b);
-            let frozen = |f: &Function, scratch: &mut Vec<f64>| {
+            let frozen = |f: &Function, batch: &mut Batch| {
                 let mut out = vec![0.0; n + 1];
-                f.add_frozen_many(1.0, &xs, anchor, &mut out, scratch);
+                f.add_frozen_many(1.0, &xs, anchor, &mut out, batch);
                 out
             };
             let mut ys = vec![0.0; n + 1];
             for t in &self.terms {
-                t.f.add_frozen_many(t.ratio, &xs, anchor, &mut ys, &mut scratch);
+                t.f.add_frozen_many(t.ratio, &xs, anchor, &mut ys, &mut batch);
             }
             ys.iter_mut().for_each(|y| *y += self.balance);
             let side = |j: usize| if j == n { Side::Left } else { Side::Right };
             if let Some(j) = ys.iter().position(|m| !m.is_finite()) {
                 return Err(self.not_finite(xs[j], side(j)));
             }
-            let inertia = frozen(self.inertia, &mut scratch);
-            let ss = self.inertia_slope.as_ref().map_or_else(Vec::new, |f| frozen(f, &mut scratch));
+            let inertia = frozen(self.inertia, &mut batch);
+            let ss = self.inertia_slope.as_ref().map_or_else(Vec::new, |f| frozen(f, &mut batch));
             let finite = |j: usize| inertia[j].is_finite() && ss.get(j).is_none_or(|s| s.is_finite());
             if let Some(j) = (0..=n).find(|&j| !finite(j)) {
                 return Err(EngineError::NotFinite { function: self.inertia_label.into(), phi: xs[j] });
