@@ -133,8 +133,10 @@ pub fn section(dir: &str) -> String {
              peer's fastest run: the ratio is {verdict}. What bounds it: both evaluate M*, I* and I*' on the same \
              1024-point grid (the grid finds narrow lobes and sign changes hidden between samples); mechdyn runs \
              each compiled expression over 64 angles at a time (one dispatch per operation, not per point and \
-             operation: 106 → 70 µs per job in the engine bench), so that what is left is mostly the ~3 600 calls \
-             of libm's sin and cos (over half of the time, perf).",
+             operation: 106 → 70 µs per job in the engine bench), and the three share the sines and cosines of \
+             the grid's angles (`expr::Memo`: a job 72 → 61 µs on 2026-11-29, where the ~4 000 calls of libm's \
+             sin and cos had been half of its time); those left, a sine and a cosine an angle and the refinements' \
+             own, are still 4 of its every 10 cycles (perf).",
             ours.error.max(1e-16),
             ours.seconds * 1e3
         );
