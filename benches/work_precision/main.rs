@@ -20,6 +20,7 @@ mod flywheel;
 mod gauge;
 mod grading;
 mod http;
+mod http_targets;
 mod kinematics;
 mod kinetostatics;
 mod large;
@@ -232,7 +233,7 @@ fn main() {
         ("kinetostatics", kinetostatics::section),
         ("large", large::section),
         ("flywheel", || flywheel::section(&std::env::var(PLOTS).unwrap_or_else(|_| temp_dir()))),
-        ("http", http::section),
+        ("http", || http::section(http_targets::targets)),
         ("statements", statements::section),
     ];
     if let Some((_, section)) = alone.iter().find(|(name, _)| std::env::args().any(|a| a == *name)) {
