@@ -54,7 +54,8 @@ pub struct Configuration {
     pub lu: Lu,
     /// Condition number of Φ_q in SI units: κ₂ (exact), or below
     /// [`ESTIMATE_LIMIT`] an estimate of κ₁ when the sweep did not ask for
-    /// it exactly.
+    /// it exactly; NaN where the sweep asked for the scaled one alone
+    /// ([`Conditions::Scaled`]).
     pub condition: f64,
     /// The same of Φ_q scaled by the mechanism's size ([`scaled`]): what
     /// decides a singular position, the same at any scale of the drawing.
@@ -97,6 +98,20 @@ pub fn solve_linear(a: &DMatrix<f64>, b: &DVector<f64>) -> Option<DVector<f64>> 
 /// position whose κ₂ reaches the near-singular 1e4 is measured exactly for
 /// mechanisms of up to 33 bodies; regular positions (κ₂ ~ 10) are not.
 pub const ESTIMATE_LIMIT: f64 = 100.0;
+
+/// Which of Φ_q's condition numbers a sweep finds at each position.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Conditions {
+    /// Both, each estimated from Φ_q's LU and exact (an SVD) where its
+    /// estimate exceeds [`ESTIMATE_LIMIT`].
+    Estimated,
+    /// Both exact (an SVD each) at every position.
+    Exact,
+    /// The scaled one alone, as `Estimated` finds it: what decides a
+    /// singular position, for a caller that reads nothing else (a large
+    /// mechanism's SVD in SI units was half of the start of its dynamics).
+    Scaled,
+}
 
 /// κ₁ = ‖A‖₁·‖A⁻¹‖₁ of a square A from its LU, ‖A⁻¹‖₁ by Hager's estimator
 /// ([`Lu::inverse_norm1`]): a few solves with the factors instead of an
@@ -201,19 +216,29 @@ impl Workspace {
         }
     }
 
-    /// Φ_q's condition numbers, in SI units and scaled ([`scaled`]), each
-    /// κ₂ exactly when `exact` or where its estimate from Φ_q's LU exceeds
-    /// [`ESTIMATE_LIMIT`]; else the estimate.
+    /// Φ_q's condition numbers, in SI units and scaled ([`scaled`]), as
+    /// `which` asks: each κ₂ exactly when [`Conditions::Exact`] or where its
+    /// estimate from Φ_q's LU exceeds [`ESTIMATE_LIMIT`], else the estimate
+    /// (the SI one NaN when [`Conditions::Scaled`]).
     /// The r_i are those [`Workspace::assemble`] left for this Φ_q (where
     /// it converged: the last Φ_q it evaluated).
-    fn conditions(&mut self, exact: bool) -> [f64; 2] {
+    fn conditions(&mut self, which: Conditions) -> [f64; 2] {
         let a = &self.sys.jacobian;
         let scales = [self.rows.as_slice(), self.cols.as_slice()];
-        let estimates = (!exact && self.lu.is_regular())
-            .then(|| scaled::estimated_conditions(a, &self.lu, scales, [&mut self.x, &mut self.xs, &mut self.y]));
-        let [si, of_scaled] = estimates.unwrap_or([f64::INFINITY; 2]);
+        let estimated = which != Conditions::Exact && self.lu.is_regular();
+        let [si, of_scaled] = match which {
+            _ if !estimated => [f64::INFINITY; 2],
+            Conditions::Scaled => {
+                [f64::NAN, scaled::estimated_condition(a, &self.lu, scales, [&mut self.xs, &mut self.y])]
+            }
+            _ => scaled::estimated_conditions(a, &self.lu, scales, [&mut self.x, &mut self.xs, &mut self.y]),
+        };
         [
-            if si <= ESTIMATE_LIMIT { si } else { condition(a) },
+            match which {
+                Conditions::Scaled => f64::NAN,
+                _ if si <= ESTIMATE_LIMIT => si,
+                _ => condition(a),
+            },
             if of_scaled <= ESTIMATE_LIMIT { of_scaled } else { condition(&scaled::scaled(a, scales)) },
         ]
     }
@@ -262,6 +287,7 @@ fn unreachable(m: &Mechanism, e: EngineError) -> EngineError {
 mod tests {
     use super::*;
     use crate::engine::Deadline;
+    use std::f64::consts::FRAC_PI_2;
 
     /// Positions reach `each` in order, one at a time, and its error stops
     /// the sweep there: the slider-crank over 8 positions, stopped at the 4th.
@@ -269,15 +295,40 @@ mod tests {
     fn a_sweep_hands_over_each_position_and_stops_on_an_error() {
         let m = crate::engine::samples::offset_slider_crank();
         let positions: Vec<Vec<[f64; 3]>> = (0..8).map(|k| vec![[0.5 * k as f64, 1.0, 0.0]]).collect();
-        let all = sweep(&m, &positions, &Deadline::none(), false).unwrap();
+        let all = sweep(&m, &positions, &Deadline::none(), Conditions::Estimated).unwrap();
         let mut seen = Vec::new();
-        let stopped = sweep_each(&m, &positions, &Deadline::none(), false, |k, c| {
+        let stopped = sweep_each(&m, &positions, &Deadline::none(), Conditions::Estimated, |k, c| {
             seen.push((k, c.q.clone()));
             if k == 3 { Err(EngineError::Singular { step: k, input: 0.0 }) } else { Ok(()) }
         });
         assert!(matches!(stopped, Err(EngineError::Singular { step: 3, .. })));
         assert_eq!(seen.iter().map(|(k, _)| *k).collect::<Vec<_>>(), [0, 1, 2, 3]);
         assert!(seen.iter().all(|(k, q)| *q == all[*k].q), "the same configurations as the whole sweep");
+    }
+
+    /// Asked for the scaled condition alone, a sweep finds the same one and
+    /// the same singular positions, bit for bit, and no SI one: IFToMM
+    /// A02's chain (N = 3) upright, leaning, flat (every loop singular) and
+    /// past it, and at N = 40 upright (both estimates above the limit, so
+    /// that the SI one would take an SVD of its own).
+    #[test]
+    fn the_scaled_condition_alone_is_the_one_of_both() {
+        let lean = |t: f64| vec![[t, 1.0, 0.0]];
+        let cases = [(3, vec![lean(FRAC_PI_2), lean(0.6), lean(0.0), lean(-0.4)]), (40, vec![lean(FRAC_PI_2)])];
+        for (n, positions) in cases {
+            let m = crate::engine::samples::parallelogram_chain(n);
+            let both = sweep(&m, &positions, &Deadline::none(), Conditions::Estimated).unwrap();
+            let alone = sweep(&m, &positions, &Deadline::none(), Conditions::Scaled).unwrap();
+            for (b, a) in both.iter().zip(&alone) {
+                assert_eq!(
+                    (a.scaled_condition.to_bits(), a.singular, &a.q),
+                    (b.scaled_condition.to_bits(), b.singular, &b.q)
+                );
+                assert!(a.condition.is_nan() && !b.condition.is_nan(), "N = {n}: {} and {}", a.condition, b.condition);
+            }
+            assert_eq!(both.iter().filter(|c| c.singular).count(), usize::from(n == 3), "flat at N = 3 only");
+            assert!(n == 3 || both[0].condition > ESTIMATE_LIMIT, "N = 40: κ {}", both[0].condition);
+        }
     }
 
     /// A system holding NaN (a state gone bad) has no solution and returns at
@@ -298,8 +349,11 @@ mod tests {
     fn the_estimated_condition_bounds_the_1_norm_one() {
         let m = crate::engine::samples::offset_slider_crank();
         let positions: Vec<Vec<[f64; 3]>> = (0..36).map(|k| vec![[k as f64 * 0.17, 1.0, 0.0]]).collect();
-        let mut matrices: Vec<DMatrix<f64>> =
-            sweep(&m, &positions, &Deadline::none(), true).unwrap().into_iter().map(|c| c.jacobian).collect();
+        let mut matrices: Vec<DMatrix<f64>> = sweep(&m, &positions, &Deadline::none(), Conditions::Exact)
+            .unwrap()
+            .into_iter()
+            .map(|c| c.jacobian)
+            .collect();
         matrices.push(DMatrix::from_row_slice(2, 2, &[1.0, 1.0, 1.0, 1.0 + 1e-6]));
         matrices.push(DMatrix::from_fn(7, 7, |i, j| if i == j { 0.0 } else { ((3 * i + 5 * j) as f64).sin() }));
         let norm1 = |a: &DMatrix<f64>| a.column_iter().map(|c| c.abs().sum()).fold(0.0, f64::max);

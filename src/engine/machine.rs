@@ -12,7 +12,7 @@
 //! see the true functions, not an interpolation of a coarse grid.
 
 use super::function::{Curve, Function};
-use super::kinematics::{Workspace, sweep};
+use super::kinematics::{Conditions, Workspace, sweep};
 use super::kinetostatics::{Load, applied_forces};
 use super::model::Mechanism;
 use super::{Deadline, EngineError};
@@ -95,7 +95,7 @@ impl Machine {
         }
         let positions: Vec<Vec<[f64; 3]>> =
             (0..ANCHORS).map(|k| vec![[period * k as f64 / ANCHORS as f64, 1.0, 0.0]]).collect();
-        let anchors = sweep(&mechanism, &positions, &deadline, false)?
+        let anchors = sweep(&mechanism, &positions, &deadline, Conditions::Scaled)?
             .into_iter()
             .zip(&positions)
             .map(|(c, p)| Anchor { phi: p[0][0], q: c.q, g: c.qd, h: c.qdd })

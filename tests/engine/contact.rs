@@ -363,7 +363,13 @@ fn a_fine_cam_sweep_is_predicted_within_newtons_tolerance() {
     let (e, mechanism) = (0.02, eccentric_cam());
     let angles: Vec<f64> = (0..=3600).map(|k| 0.1 + std::f64::consts::TAU * f64::from(k) / 3600.0).collect();
     let positions: Vec<Vec<[f64; 3]>> = angles.iter().map(|&a| vec![[a, 10.0, 0.0]]).collect();
-    let configurations = mechdyn::engine::kinematics::sweep(&mechanism, &positions, &Deadline::none(), false).unwrap();
+    let configurations = mechdyn::engine::kinematics::sweep(
+        &mechanism,
+        &positions,
+        &Deadline::none(),
+        mechdyn::engine::kinematics::Conditions::Estimated,
+    )
+    .unwrap();
     let newton: Vec<usize> =
         (configurations.iter().enumerate()).filter(|(_, c)| c.iterations > 0).map(|(k, _)| k).collect();
     assert!(newton.iter().all(|&k| k < 2), "positions that took a Newton step: {newton:?}");

@@ -27,7 +27,7 @@ use super::range_space::RangeSpace;
 use super::{DynamicsError, DynamicsSolution, End, Failure, Integrator, Sample, Settings, Start, energy_residual, run};
 use crate::engine::Deadline;
 use crate::engine::constraints::{State, evaluate, evaluate_blocks, joint_offsets};
-use crate::engine::kinematics::sweep;
+use crate::engine::kinematics::{Conditions, sweep};
 use crate::engine::kinetostatics::{self, ContactState, Energy, Load, Motion, Reaction, potential, reactions};
 use crate::engine::mobility::{Mobility, mobility};
 use crate::engine::model::Mechanism;
@@ -139,7 +139,8 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
     let initial = |reason: Start| DynamicsError::Initial { reason };
     let inputs: Vec<[f64; 3]> = p.initial.iter().map(|[a, w]| [*a, *w, 0.0]).collect();
     let over = |t: f64, steps: usize| DynamicsError::Budget { seconds: p.deadline.seconds(), t, steps };
-    let start = sweep(m, &[inputs], &p.deadline, false)
+    // Only whether the start is singular is read: the scaled condition alone.
+    let start = sweep(m, &[inputs], &p.deadline, Conditions::Scaled)
         .map_err(|e| if p.deadline.expired() { over(0.0, 0) } else { initial(Start::Engine(e)) })?
         .remove(0);
     if start.singular {

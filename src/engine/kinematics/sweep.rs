@@ -4,7 +4,7 @@
 //! each position is handed over by reference before the next is solved.
 
 use super::cut::{Cuts, Settled};
-use super::{Configuration, Dyads, SINGULAR_CONDITION, Trig, Workspace, unreachable};
+use super::{Conditions, Configuration, Dyads, SINGULAR_CONDITION, Trig, Workspace, unreachable};
 use crate::engine::model::Mechanism;
 use crate::engine::{Deadline, EngineError, Progress};
 use nalgebra::DMatrix;
@@ -12,17 +12,18 @@ use nalgebra::DMatrix;
 /// The configurations along the given input positions, starting from the
 /// reference configuration and continuing from each position to the next.
 ///
-/// Each position's condition number is κ₂ exactly (an SVD) when `exact`
-/// or where the estimate from Φ_q's LU exceeds [`super::ESTIMATE_LIMIT`];
-/// else the estimate ([`super::estimated_condition`]).
+/// Each position's condition numbers are those `conditions` asks
+/// ([`Conditions`]): κ₂ exactly (an SVD) when exact or where the estimate
+/// from Φ_q's LU exceeds [`super::ESTIMATE_LIMIT`]; else the estimate
+/// ([`super::estimated_condition`]).
 pub fn sweep(
     m: &Mechanism,
     positions: &[Vec<[f64; 3]>],
     deadline: &Deadline,
-    exact: bool,
+    conditions: Conditions,
 ) -> Result<Vec<Configuration>, EngineError> {
     let mut out: Vec<Configuration> = Vec::with_capacity(positions.len());
-    sweep_each(m, positions, deadline, exact, |_, c| {
+    sweep_each(m, positions, deadline, conditions, |_, c| {
         out.push(c.clone());
         Ok(())
     })?;
@@ -37,7 +38,7 @@ pub fn sweep_each(
     m: &Mechanism,
     positions: &[Vec<[f64; 3]>],
     deadline: &Deadline,
-    exact: bool,
+    conditions: Conditions,
     mut each: impl FnMut(usize, &Configuration) -> Result<(), EngineError>,
 ) -> Result<(), EngineError> {
     let mut ws = Workspace { cols: m.column_lengths(), ..Workspace::default() };
@@ -114,7 +115,7 @@ pub fn sweep_each(
         // (γ is quadratic in q̇), and they are the next step's predictor.
         let unit = [[inputs[0][0], 1.0, 0.0]];
         let solved = ws.motion(m, &c.q, if single { &unit } else { inputs });
-        let [cond, scaled] = if solved { ws.conditions(exact) } else { [f64::INFINITY; 2] };
+        let [cond, scaled] = if solved { ws.conditions(conditions) } else { [f64::INFINITY; 2] };
         if !solved || scaled > SINGULAR_CONDITION {
             c.set_singular([cond, scaled], iterations, residual);
             each(step, &c)?;

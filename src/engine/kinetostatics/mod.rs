@@ -30,7 +30,7 @@ pub use summary::Summary;
 use summary::Tally;
 
 use super::constraints::joint_offsets;
-use super::kinematics::sweep_each;
+use super::kinematics::{Conditions, sweep_each};
 use super::mobility::{Mobility, mobility as mobility_at};
 use super::model::{BodyId, Mechanism};
 use super::{Deadline, EngineError};
@@ -171,7 +171,8 @@ pub fn solve_each(
     // the first regular one has been found to match the inputs (where it
     // does not, the sweep goes on unsolved: a position out of reach is the
     // clearer error, and is said first).
-    sweep_each(m, positions, deadline, outputs.condition, |k, c| {
+    let conditions = if outputs.condition { Conditions::Exact } else { Conditions::Estimated };
+    sweep_each(m, positions, deadline, conditions, |k, c| {
         (max_iterations, max_constraint_residual) =
             (max_iterations.max(c.iterations), max_constraint_residual.max(c.residual));
         closed_form &= c.placed;

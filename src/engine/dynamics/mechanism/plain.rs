@@ -273,7 +273,7 @@ mod tests {
     use crate::engine::constraints::{State, evaluate};
     use crate::engine::dynamics::mechanism::MechanismProblem;
     use crate::engine::dynamics::{End, KEPT_BYTES};
-    use crate::engine::kinematics::sweep;
+    use crate::engine::kinematics::{Conditions, sweep};
     use crate::engine::samples::parallelogram_chain;
     use std::f64::consts::FRAC_PI_2;
 
@@ -318,7 +318,8 @@ mod tests {
     fn the_cranks_accelerate_as_the_energy_says() {
         let (p, mass, scale) = chain();
         let z = Sizes { n: 9, r: 8, mass: &mass, scale: &scale };
-        let c = sweep(&p.mechanism, &[vec![[1.0, 2.0, 0.0]]], &Deadline::none(), false).unwrap().remove(0);
+        let c =
+            sweep(&p.mechanism, &[vec![[1.0, 2.0, 0.0]]], &Deadline::none(), Conditions::Estimated).unwrap().remove(0);
         let (mut plain, mut qdd) = (Plain::default(), vec![0.0; 9]);
         let power = plain.accelerations(&p, &z, 0.0, [&c.q, &c.qd], &mut qdd).expect("not singular");
         let want = -2.0 * 9.81 * 1.0f64.cos() / (2.0 / 3.0 + 1.0);
@@ -364,7 +365,8 @@ mod tests {
     fn the_projection_lands_on_the_constraints() {
         let (p, mass, scale) = chain();
         let z = Sizes { n: 9, r: 8, mass: &mass, scale: &scale };
-        let c = sweep(&p.mechanism, &[vec![[1.0, 2.0, 0.0]]], &Deadline::none(), false).unwrap().remove(0);
+        let c =
+            sweep(&p.mechanism, &[vec![[1.0, 2.0, 0.0]]], &Deadline::none(), Conditions::Estimated).unwrap().remove(0);
         let on: Vec<f64> = c.q.iter().chain(&c.qd).copied().collect();
         let mut y = on.clone();
         Plain::default().project(&p, &z, 1e-12, &mut y).expect("not singular");
