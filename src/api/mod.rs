@@ -90,7 +90,8 @@ pub const DEFAULT_BODY_LIMIT: usize = 1 << 20;
 flywheels (approximate and exact Wittenbauer methods), direct dynamics (reduced 1-DOF form or a mechanism of \
 any DOF), rigid rotors on two bearings, and the gear and equivalent-mass calculators of the course; every job \
 is stored and readable later.\n\nQuantities are SI numbers or `\"VALUE UNIT\"` strings \
-(`\"300 rpm\"`, `\"3200 ft*lbf\"`, `\"20 slug*ft^2\"`, `\"4 %\"`); results are SI. Errors are \
+(`\"300 rpm\"`, `\"3200 ft*lbf\"`, `\"20 slug*ft^2\"`, `\"4 %\"`); results are SI. A name of a list \
+(an `integrator`, a joint's `type`) is read in any case (`\"DOPRI5\"` as `dopri5`). Errors are \
 `application/problem+json` with a JSON pointer for every invalid field.\n\nLimits (the defaults; the \
 service's operator may configure each, see `MECHDYN_*` in the README): request body 1 MiB (413 beyond it); \
 expressions 2000 characters and 64 levels of nesting; tables 100000 rows; 1000 segments per function; \

@@ -202,3 +202,37 @@ async fn no_disk_when_the_existing_inertia_suffices() {
     assert!(r["disk"].is_null());
     assert!(r["warnings"][0].as_str().unwrap().contains("no disk"), "{}", r["warnings"]);
 }
+
+/// A name of the contract's lists written in another case is read as the
+/// name it matches, for a field and for an object's `type`: K1 with a
+/// joint "Revolute" gives the driving torque of the one written
+/// "revolute", bit for bit, and A01 asked of "DOPRI5" answers that
+/// `dopri5` integrated. A name that matches none in any case is refused as
+/// before, naming the list.
+#[tokio::test]
+async fn a_name_in_another_case_is_read_as_the_name() {
+    let app = TestApp::new().await;
+    let mut k1 = request("k1_offset_slider_crank");
+    k1["input"]["steps"] = json!(4);
+    let driving = |r: &crate::helpers::Reply| r.json()["result"]["steps"][1]["driving"].clone();
+    let as_written = app.post("/v1/kinetostatics", &k1).await;
+    k1["mechanism"]["joints"][0]["type"] = json!("Revolute");
+    let other_case = app.post("/v1/kinetostatics", &k1).await;
+    assert_eq!(
+        (as_written.status, other_case.status),
+        (StatusCode::CREATED, StatusCode::CREATED),
+        "{}",
+        other_case.text
+    );
+    assert!(driving(&as_written).is_number() && driving(&as_written) == driving(&other_case));
+
+    let a01 = with(with(request("a01_pendulum"), "duration", json!("2 s")), "integrator", json!("DOPRI5"));
+    let r = app.post("/v1/dynamics", &a01).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    assert_eq!(r.json()["result"]["accuracy"]["integrator"], "dopri5");
+    let r = app.post("/v1/dynamics", &with(a01, "integrator", json!("DOPRI"))).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let error = &r.json()["errors"][0];
+    assert_eq!(error["pointer"], "/integrator");
+    assert!(error["message"].as_str().unwrap().contains(r#""auto", "dopri5", "dop853", "radau5""#), "{error}");
+}

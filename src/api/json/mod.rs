@@ -1,6 +1,8 @@
 //! The request-body extractor: 415 for a wrong content type, 413 over the
 //! body limit, 400 for malformed JSON, 422 with a JSON pointer for every
-//! unknown field and for the first field of the wrong type.
+//! unknown field and for the first field of the wrong type. A name of the
+//! contract's lists written in another case (`"DOPRI5"`) is read as the
+//! name it matches.
 
 mod strict;
 pub(crate) mod words;
@@ -95,20 +97,70 @@ pub fn parse<T: DeserializeOwned>(raw: impl Into<Bytes>) -> Result<JsonBody<T>, 
     if raw.starts_with(BOM) {
         raw = raw.slice(BOM.len()..);
     }
-    let value: serde_json::Value =
+    let mut value: serde_json::Value =
         serde_json::from_slice(&raw).map_err(|e| ApiError::MalformedJson(words::malformed(&e, &raw)))?;
+    let mut fixes = 0;
+    loop {
+        let (result, unknown) = read::<T>(&value);
+        match result {
+            Ok(value) => return Ok(JsonBody { value, raw, unknown }),
+            Err(e) if fixes < MAX_CASE_FIXES && in_case(&mut value, &e) => fixes += 1,
+            Err(e) => {
+                let mut errors = unknown;
+                errors.push(type_error(&e));
+                return Err(ApiError::Invalid(errors));
+            }
+        }
+    }
+}
+
+/// The request in `value` and its unknown fields.
+fn read<T: DeserializeOwned>(value: &serde_json::Value) -> (Result<T, PathError>, Vec<FieldError>) {
     let mut unknown = Vec::new();
     let mut record =
         |path: serde_ignored::Path| unknown.push(FieldError::said(ignored_pointer(&path), Msg::new("field-unknown")));
-    let strict = strict::Strict(&value);
-    let result: Result<T, _> = serde_path_to_error::deserialize(serde_ignored::Deserializer::new(strict, &mut record));
-    match result {
-        Ok(value) => Ok(JsonBody { value, raw, unknown }),
-        Err(e) => {
-            let mut errors = unknown;
-            errors.push(type_error(&e));
-            Err(ApiError::Invalid(errors))
+    let strict = strict::Strict(value);
+    let result = serde_path_to_error::deserialize(serde_ignored::Deserializer::new(strict, &mut record));
+    (result, unknown)
+}
+
+type PathError = serde_path_to_error::Error<serde_json::Error>;
+
+/// Names of the contract's lists written in another case that one request
+/// may have read as the names they match (each is one more reading of it).
+const MAX_CASE_FIXES: usize = 16;
+
+/// Where `e` is a name unknown only by its letters' case (`"DOPRI5"` for
+/// `dopri5`, `"Revolute"` for `revolute`: one of the names listed matches
+/// it ignoring case), that text in `value` written as the name: true if
+/// it was. The text is at the error's pointer, or is the one member there
+/// holding it (an object named by its `type`).
+fn in_case(value: &mut serde_json::Value, e: &PathError) -> bool {
+    use serde_json::Value;
+    let message = e.inner().to_string();
+    let Some((got, expected)) = message.strip_prefix("unknown variant `").and_then(|m| m.split_once("`, expected "))
+    else {
+        return false;
+    };
+    let mut named = expected.split('`').skip(1).step_by(2).filter(|n| n.eq_ignore_ascii_case(got));
+    let (Some(name), None) = (named.next(), named.next()) else { return false };
+    let text = match value.pointer_mut(&pointer(e)) {
+        Some(v @ Value::String(_)) => Some(v),
+        Some(Value::Object(fields)) => {
+            let mut holding = fields.values_mut().filter(|v| v.as_str() == Some(got));
+            match (holding.next(), holding.next()) {
+                (Some(v), None) => Some(v),
+                _ => None,
+            }
         }
+        _ => None,
+    };
+    match text {
+        Some(v) if v.as_str() == Some(got) => {
+            *v = Value::String(name.to_string());
+            true
+        }
+        _ => false,
     }
 }
 
@@ -131,18 +183,22 @@ fn ignored_pointer(path: &serde_ignored::Path) -> String {
     }
 }
 
-/// A structural error (wrong type, missing field) with the pointer to its field.
-fn type_error(e: &serde_path_to_error::Error<serde_json::Error>) -> FieldError {
+/// The JSON pointer to where `e` happened.
+fn pointer(e: &PathError) -> String {
     use serde_path_to_error::Segment;
-    let mut pointer: String = e
-        .path()
+    e.path()
         .iter()
         .filter_map(|s| match s {
             Segment::Seq { index } => Some(format!("/{index}")),
             Segment::Map { key } => Some(format!("/{}", escape(key))),
             _ => None,
         })
-        .collect();
+        .collect()
+}
+
+/// A structural error (wrong type, missing field) with the pointer to its field.
+fn type_error(e: &PathError) -> FieldError {
+    let mut pointer = pointer(e);
     let message = e.inner().to_string();
     let message = message.split(" at line ").next().unwrap_or(&message).to_string();
     if let Some(field) = message.strip_prefix("missing field `").and_then(|m| m.strip_suffix('`')) {
