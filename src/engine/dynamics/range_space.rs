@@ -106,9 +106,8 @@ impl Shared {
         self.at[..self.len]
             .iter()
             .map(|&(ka, kb)| {
-                let (c, da, db) = (a.col[ka], &a.val[ka], &b.val[kb]);
-                debug_assert_eq!(c, b.col[kb], "the blocks' pattern changed");
-                da[0] * w[c] * db[0] + da[1] * w[c + 1] * db[1] + da[2] * w[c + 2] * db[2]
+                debug_assert_eq!(a.col[ka], b.col[kb], "the blocks' pattern changed");
+                weighted(w, a.col[ka], &a.val[ka], &b.val[kb])
             })
             .sum()
     }
@@ -116,7 +115,12 @@ impl Shared {
 
 /// S_aa = J_a W J_aᵀ.
 fn square(w: &[f64], a: &RowBlocks) -> f64 {
-    a.iter().map(|(c, d)| d[0] * w[c] * d[0] + d[1] * w[c + 1] * d[1] + d[2] * w[c + 2] * d[2]).sum()
+    a.iter().map(|(c, d)| weighted(w, c, d, d)).sum()
+}
+
+/// One body's share of J_a W J_bᵀ: its blocks `da`, `db` at column `c`.
+fn weighted(w: &[f64], c: usize, da: &[f64; 3], db: &[f64; 3]) -> f64 {
+    da[0] * w[c] * db[0] + da[1] * w[c + 1] * db[1] + da[2] * w[c + 2] * db[2]
 }
 
 /// S's LDLᵀ in one elimination order, with where S's entries go.
