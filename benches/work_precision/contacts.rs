@@ -62,10 +62,7 @@ pub fn section() -> String {
     let reading = Reading::paired(5, || best(15, || kinetostatics(&cam)));
     let _ = writeln!(
         text,
-        "\n**Target** (issue 50: the cam's kinetostatics with friction ≤ 2 µs a position): {}: {}. The four-bar \
-         is the host's gauge, and a conservative one: \
-         what both share got faster too (a step's energy shares, a sorted list instead of a map per position, 0–7 \
-         % of the four-bar's in paired runs). Its friction costs {:.2} µs a position over the frictionless cam \
+        "\n**Target** (issue 50: the cam's kinetostatics with friction ≤ 2 µs a position): {}: {}. Its friction costs {:.2} µs a position over the frictionless cam \
          ({:.0} % of it; issue 50 began at 3.06 µs, about twice the frictionless cam's, when each pass of the \
          fixed point was a solve with every reaction; since 2026-11-29 the passes read only what presses the \
          joints with friction, and every reaction is read once, from the last λ). Newton places the cam (no \

@@ -17,6 +17,7 @@
 
 mod contacts;
 mod flywheel;
+mod frozen;
 mod gauge;
 mod grading;
 mod http;
@@ -169,7 +170,7 @@ fn machine() -> String {
         .unwrap_or_else(|| "unknown CPU".into());
     let cores = std::thread::available_parallelism().map_or(0, |n| n.get());
     format!(
-        "{cpu}, {cores} cores available (a shared virtual machine whose speed is not its own: the same run varies by ±30 % from one hour to the next, and by up to 4.6× from one day to the next — the library four-bar's kinetostatics, in the cams' section, took 1.37 µs a position on 2026-11-27 and 6.25 µs on 2026-11-28; an absolute target is read against that figure, the four-bar run in turn with what it reads (the median ratio of the pairs, `gauge.rs`); a ratio to a peer in the same run is not affected); release build; the service's allocator (mimalloc); single-threaded engine"
+        "{cpu}, {cores} cores available (a shared virtual machine whose speed is not its own: the same run varies by ±30 % from one hour to the next, and by up to 4.6× from one day to the next — the library four-bar's kinetostatics, in the cams' section, took 1.37 µs a position on 2026-11-27 and 6.25 µs on 2026-11-28; an absolute target is read at that day's speed, against a fixed workload run in turn with what it reads and calibrated against that day's code (the median ratio of the pairs, `gauge.rs`); a ratio to a peer in the same run is not affected); release build; the service's allocator (mimalloc); single-threaded engine"
     )
 }
 
@@ -223,9 +224,10 @@ type Section = fn() -> String;
 
 fn main() {
     // `cargo bench --bench work_precision -- grading` (or contacts, large, flywheel, http, kinetostatics,
-    // kinematics, stiff, statements): that section alone, printed, docs/ left as they are (the flywheel's plot in the
+    // kinematics, stiff, statements, gauge): that section alone, printed, docs/ left as they are (the flywheel's plot in the
     // temporary folder).
-    let alone: [(&str, Section); 9] = [
+    let alone: [(&str, Section); 10] = [
+        ("gauge", gauge::section),
         ("contacts", contacts::section),
         ("kinematics", kinematics::section),
         ("stiff", stiff::section),

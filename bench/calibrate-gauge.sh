@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The gauge's speed on 2026-11-27 (benches/work_precision/gauge.rs's
+# REFERENCE): the fixed workload of benches/work_precision/frozen.rs run in
+# turn with the library four-bar's kinetostatics as the code of that day
+# (14e2c9d, the code issue 50's targets were set on) has it, which took
+# 1.37 µs a position then. Prints each pair and the median of
+# gauge × 1.37 / four-bar; the same read against K1 (1.07 µs that day) as
+# a check. Needs the repository's history; builds 14e2c9d in a temporary
+# worktree (about 5 minutes on two cores). Usage: bench/calibrate-gauge.sh [PAIRS]
+set -euo pipefail
+pairs=${1:-15}
+root=$(git rev-parse --show-toplevel)
+then_dir=$(mktemp -d)
+trap 'git -C "$root" worktree remove --force "$then_dir/tree" >/dev/null 2>&1 || true; rm -rf "$then_dir"' EXIT
+git -C "$root" worktree add --detach "$then_dir/tree" 14e2c9d >/dev/null
+cp "$root/bench/calibrate/then.rs" "$then_dir/tree/examples/calibrate_then.rs"
+(cd "$then_dir/tree" && CARGO_TARGET_DIR="$then_dir/target" cargo build --quiet --profile bench --example calibrate_then)
+(cd "$root" && cargo bench --quiet --bench work_precision --no-run)
+now() { (cd "$root" && cargo bench --quiet --bench work_precision -- gauge 2>/dev/null); }
+for _ in $(seq "$pairs"); do
+  echo "$("$then_dir/target/release/examples/calibrate_then") | $(now)"
+done | tee "$then_dir/pairs"
+ratios="$then_dir/ratios"
+awk '{ print $13 * 1.37 / $2, $13 * 1.07 / $7 }' "$then_dir/pairs" >"$ratios"
+median() { sort -g | awk '{ v[NR] = $1 } END { printf "%.4f", v[int((NR + 1) / 2)] }'; }
+echo "gauge at the speed of 2026-11-27: $(cut -d' ' -f1 "$ratios" | median) µs a position by the four-bar" \
+  "(median of $pairs pairs), $(cut -d' ' -f2 "$ratios" | median) by K1"
