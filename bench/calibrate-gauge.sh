@@ -6,19 +6,23 @@
 # 1.37 µs a position then. Prints each pair and the median of
 # gauge × 1.37 / four-bar; the same read against K1 (1.07 µs that day) as
 # a check. Needs the repository's history; builds 14e2c9d in a temporary
-# worktree (about 5 minutes on two cores). Usage: bench/calibrate-gauge.sh [PAIRS]
+# worktree (about 5 minutes on two cores the first time; its build is kept
+# in target/calibrate-then). Usage: bench/calibrate-gauge.sh [PAIRS]
 set -euo pipefail
 pairs=${1:-15}
 root=$(git rev-parse --show-toplevel)
 then_dir=$(mktemp -d)
-trap 'git -C "$root" worktree remove --force "$then_dir/tree" >/dev/null 2>&1 || true; rm -rf "$then_dir"' EXIT
-git -C "$root" worktree add --detach "$then_dir/tree" 14e2c9d >/dev/null
-cp "$root/bench/calibrate/then.rs" "$then_dir/tree/examples/calibrate_then.rs"
-(cd "$then_dir/tree" && CARGO_TARGET_DIR="$then_dir/target" cargo build --quiet --profile bench --example calibrate_then)
+then_target="$root/target/calibrate-then"
+tree="$then_target/tree"
+git -C "$root" worktree remove --force "$tree" >/dev/null 2>&1 || true
+trap 'git -C "$root" worktree remove --force "$tree" >/dev/null 2>&1 || true; rm -rf "$then_dir"' EXIT
+git -C "$root" worktree add --detach "$tree" 14e2c9d >/dev/null
+cp "$root/bench/calibrate/then.rs" "$tree/examples/calibrate_then.rs"
+(cd "$tree" && CARGO_TARGET_DIR="$then_target" cargo build --quiet --profile bench --example calibrate_then)
 (cd "$root" && cargo bench --quiet --bench work_precision --no-run)
 now() { (cd "$root" && cargo bench --quiet --bench work_precision -- gauge 2>/dev/null); }
 for _ in $(seq "$pairs"); do
-  echo "$("$then_dir/target/release/examples/calibrate_then") | $(now)"
+  echo "$("$then_target/release/examples/calibrate_then") | $(now)"
 done | tee "$then_dir/pairs"
 ratios="$then_dir/ratios"
 awk '{ print $13 * 1.37 / $2, $13 * 1.07 / $7 }' "$then_dir/pairs" >"$ratios"

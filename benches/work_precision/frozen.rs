@@ -1,8 +1,11 @@
 //! A fixed workload that measures the host's speed and nothing of this
 //! crate: at each of 3600 positions of a turn, a 9 × 9 matrix built from
 //! the sines and cosines of three angles (a three-body Φ_q's shape and
-//! size), its LU with partial pivoting, three solves with the factors and
-//! one small allocation — the kinds of work one kinetostatic position does.
+//! size), its LU with partial pivoting, three solves with the factors, and
+//! a record of the position kept in a growing list with a small allocation
+//! of its own (about 1 MB a pass, read back and freed at its end) — the
+//! kinds of work one kinetostatic position does, its memory's included,
+//! so that a host whose caches and memory are contended slows it too.
 //!
 //! Do not edit: its speed on 2026-11-27 was calibrated once
 //! (`bench/calibrate-gauge.sh`, against that day's code) and is read as
@@ -20,8 +23,7 @@ pub const POSITIONS: usize = 3600;
 /// can be left out.
 pub fn pass() -> f64 {
     let step = black_box(std::f64::consts::TAU / POSITIONS as f64);
-    let mut kept: Vec<Vec<f64>> = Vec::with_capacity(8);
-    let mut sum = 0.0;
+    let mut kept: Vec<([f64; 3 * N], Vec<f64>)> = Vec::new();
     for k in 0..POSITIONS {
         let mut a = matrix(k as f64 * step);
         let pivots = factor(&mut a);
@@ -29,13 +31,13 @@ pub fn pass() -> f64 {
         for _ in 0..3 {
             solve(&a, &pivots, &mut x);
         }
-        kept.push(x.to_vec());
-        if kept.len() == 8 {
-            sum += kept.iter().map(|v| v[0] + v[N - 1]).sum::<f64>();
-            kept.clear();
-        }
+        let mut record = [0.0; 3 * N];
+        record[..N].copy_from_slice(&x);
+        record[N..2 * N].copy_from_slice(&a[N - 1]);
+        record[2 * N..].copy_from_slice(&a[0]);
+        kept.push((record, x.to_vec()));
     }
-    sum
+    kept.iter().map(|(record, x)| record[0] + record[2 * N] + x[N - 1]).sum()
 }
 
 /// A diagonally dominant matrix whose entries turn with φ.

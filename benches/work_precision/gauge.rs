@@ -13,9 +13,9 @@
 //! for the hard cases after that day, most of it), so readings against it
 //! were kinder than the targets by that much. `frozen.rs` depends on
 //! nothing of the crate; REFERENCE was found by running it in turn with
-//! 14e2c9d's four-bar (`bench/calibrate-gauge.sh`: 0.434 µs by the median
-//! of 15 pairs, whose ratios spread ±5 %; read against 14e2c9d's K1, 1.07
-//! µs that day in another section, it would be 0.386).
+//! 14e2c9d's four-bar (`bench/calibrate-gauge.sh`: 0.467 µs, the median
+//! of 30 pairs in two runs, its quartiles 0.448 and 0.475; read against
+//! 14e2c9d's K1, 1.07 µs that day in another section, it would be 0.414).
 
 use crate::frozen;
 use crate::http::library;
@@ -27,8 +27,8 @@ use std::hint::black_box;
 
 /// `frozen.rs`'s µs a position at the speed of 2026-11-27 (at which the
 /// four-bar took 1.37 µs): its time × 1.37 / 14e2c9d's four-bar's, the
-/// median of 15 pairs on 2026-11-30.
-const REFERENCE: f64 = 0.434;
+/// median of 30 pairs on 2026-11-30.
+const REFERENCE: f64 = 0.467;
 
 /// µs a position of `frozen.rs` (best of 15 passes).
 pub fn frozen_per_position() -> f64 {

@@ -61,8 +61,8 @@ pub fn section() -> String {
          check): {:.3} ms ({:.2} µs per position); the driving torque and every reaction (`\"outputs\": \
          [\"driving\", \"reactions\"]`): {:.3} ms ({:.2} µs per position); the driving torque only (`\"outputs\": \
          [\"driving\"]`, by virtual power, no multipliers): {:.3} ms ({:.2} µs per position). All estimate Φ_q's \
-         condition number from its LU (Hager's 1-norm estimator: a solve each way, started from the last position's \
-         maximiser; κ₂ exactly only where the estimate passes 100, nowhere on K1); with the exact κ₂ at every \
+         two condition numbers, in SI units and scaled, from its LU (Hager's 1-norm estimator: a solve each way for \
+         each, started from the last position's maximiser; κ₂ exactly only where an estimate passes 100, nowhere on K1); with the exact κ₂ at every \
          position (`\"condition\"` added to the default outputs: an SVD each): {:.3} ms ({:.2} µs per position).\n",
         best * 1e3,
         per(best),
@@ -109,7 +109,14 @@ pub fn section() -> String {
                  reactions, whose joint and body names, of up to 23 bytes, are copied inline with no reference \
                  count) a fifth. Φ_q's row scales are found once a position (by Newton's check) and the clock read \
                  every 8th position: with the names' inline copies, 7 % off a position (the median ratio of 8 paired \
-                 runs, on 2026-11-29). Tried and no faster: a sparse refactorisation in the first pivot order \
+                 runs, on 2026-11-29). Against the code of the day the target was set (14e2c9d, run in turn with \
+                 this code on 2026-11-30 under the same allocator: 1.46 against 1.83 µs a position), K1 takes 1.25× \
+                 as long: since then every position also finds Φ_q's scaled condition number, which decides the \
+                 singular positions at any scale of the drawing (the hard cases' issue): about 0.2 µs a position of \
+                 the 0.37, its second estimate 0.14 (K1 run in turn without it: 1.70 against 1.83 µs) and its row \
+                 scales 0.07 (perf). Tried and no faster: the estimate's first solve from where its unit vector's \
+                 one entry lands (the forward pass with a start known only at run time is no longer unrolled: 1.07× \
+                 K1's time); a sparse refactorisation in the first pivot order \
                  (KLU's) at 9 × 9; the two condition estimates' solves made together (two right-hand sides a pass).",
                 met(per(reading.at_reference) <= 1.0),
                 reading.words(("µs a position", 1e6 / 3600.0)),
