@@ -4,8 +4,9 @@
 # turn with the library four-bar's kinetostatics as the code of that day
 # (14e2c9d, the code issue 50's targets were set on) has it, which took
 # 1.37 µs a position then. Prints each pair and the median of
-# gauge × 1.37 / four-bar; the same read against K1 (1.07 µs that day) as
-# a check. Needs the repository's history; builds 14e2c9d in a temporary
+# gauge × 1.37 / four-bar; the same read against the library cam with
+# friction (3.06 µs in the same section that day) and K1 (1.07 µs, in
+# another section) as checks. Needs the repository's history; builds 14e2c9d in a temporary
 # worktree (about 5 minutes on two cores the first time; its build is kept
 # in target/calibrate-then). Usage: bench/calibrate-gauge.sh [PAIRS]
 set -euo pipefail
@@ -25,7 +26,7 @@ for _ in $(seq "$pairs"); do
   echo "$("$then_target/release/examples/calibrate_then") | $(now)"
 done | tee "$then_dir/pairs"
 ratios="$then_dir/ratios"
-awk '{ print $13 * 1.37 / $2, $13 * 1.07 / $7 }' "$then_dir/pairs" >"$ratios"
+awk '{ print $18 * 1.37 / $2, $18 * 3.06 / $12, $18 * 1.07 / $7 }' "$then_dir/pairs" >"$ratios"
 median() { sort -g | awk '{ v[NR] = $1 } END { printf "%.4f", v[int((NR + 1) / 2)] }'; }
 echo "gauge at the speed of 2026-11-27: $(cut -d' ' -f1 "$ratios" | median) µs a position by the four-bar" \
-  "(median of $pairs pairs), $(cut -d' ' -f2 "$ratios" | median) by K1"
+  "(median of $pairs pairs), $(cut -d' ' -f2 "$ratios" | median) by the cam, $(cut -d' ' -f3 "$ratios" | median) by K1"
