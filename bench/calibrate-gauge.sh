@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
-# The gauge's speed on 2026-11-27 (benches/work_precision/gauge.rs's
-# REFERENCE): the fixed workload of benches/work_precision/frozen.rs run in
-# turn with the library four-bar's kinetostatics as the code of that day
-# (14e2c9d, the code issue 50's targets were set on) has it, which took
-# 1.37 µs a position then. Prints each pair and the median of
-# gauge × 1.37 / four-bar; the same read against the library cam with
-# friction (3.06 µs in the same section that day) and K1 (1.07 µs, in
-# another section) as checks. Needs the repository's history; builds 14e2c9d in a temporary
-# worktree (about 5 minutes on two cores the first time; its build is kept
-# in target/calibrate-then). Usage: bench/calibrate-gauge.sh [PAIRS]
+# The gauge's time at the speed of 2026-11-27 (REFERENCE in
+# benches/work_precision/gauge.rs): the fixed workload of
+# benches/work_precision/frozen.rs run in turn with the library four-bar's
+# kinetostatics as the code of that day has it (14e2c9d, the code issue
+# 50's targets were set on), which took 1.37 µs a position then. Prints
+# each pair and the median of gauge × 1.37 / four-bar; the same read
+# against the library cam with friction (3.06 µs that day, in the
+# four-bar's section) and K1 (1.07 µs, in another section) as checks.
+# Needs the repository's history (not a shallow clone); checks 14e2c9d out
+# in target/calibrate-then/tree and builds it there (about 5 minutes on two
+# cores the first time). Usage: bench/calibrate-gauge.sh [PAIRS]
 set -euo pipefail
 pairs=${1:-15}
 root=$(git rev-parse --show-toplevel)

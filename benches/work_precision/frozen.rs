@@ -7,10 +7,11 @@
 //! kinds of work one kinetostatic position does, its memory's included,
 //! so that a host whose caches and memory are contended slows it too.
 //!
-//! Do not edit: its speed on 2026-11-27 was calibrated once
-//! (`bench/calibrate-gauge.sh`, against that day's code) and is read as
-//! that day's speed in `gauge.rs`. It depends on nothing of the crate, so
-//! that where the engine gets faster the gauge does not.
+//! Do not edit: its time at the speed of 2026-11-27 was calibrated on
+//! 2026-11-30 against that day's code (`bench/calibrate-gauge.sh`) and is
+//! `gauge.rs`'s REFERENCE; a change needs the calibration run again. It
+//! depends on nothing of the crate, so that the engine's changes, faster
+//! or slower, do not move it.
 
 use std::hint::black_box;
 
