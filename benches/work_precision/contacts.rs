@@ -67,8 +67,9 @@ pub fn section() -> String {
          fixed point was a solve with every reaction; since 2026-11-29 the passes read only what presses the \
          joints with friction, and every reaction is read once, from the last λ). Newton places the cam (no \
          dyads): since 2026-11-29 each position is predicted to third order and starts within Newton's tolerance \
-         (the prediction confirmed, no Newton step after the second position), and its contact's curves are \
-         evaluated once a position.",
+         (the prediction confirmed, no Newton step after the second position), and its contact's state and \
+         friction read the curves' points and derivatives found once a position (`Touch`; Φ with Φ_q, and γ, \
+         evaluate the curves once each besides).",
         reading.words(("µs a position", 1e6 / steps as f64)),
         verdict(per(reading.at_reference) <= 2.0),
         per(t_cam - t_free),
