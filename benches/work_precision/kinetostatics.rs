@@ -115,8 +115,8 @@ pub fn section() -> String {
                  singular positions at any scale of the drawing (the hard cases' issue): about 0.2 µs a position of \
                  the 0.37, its second estimate 0.14 (K1 run in turn without it: 1.70 against 1.83 µs) and its row \
                  scales 0.07 (perf). Tried and no faster: the estimate's first solve from where its unit vector's \
-                 one entry lands (the forward pass with a start known only at run time is no longer unrolled: 1.07× \
-                 K1's time); a sparse refactorisation in the first pivot order \
+                 one entry lands (the forward pass with a start known only at run time is no longer unrolled: \
+                 1.05–1.10× K1's time, in two versions); a sparse refactorisation in the first pivot order \
                  (KLU's) at 9 × 9; the two condition estimates' solves made together (two right-hand sides a pass).",
                 met(per(reading.at_reference) <= 1.0),
                 reading.words(("µs a position", 1e6 / 3600.0)),
