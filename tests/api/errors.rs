@@ -81,6 +81,41 @@ async fn a_field_of_the_wrong_type_is_422_with_its_pointer() {
     assert_eq!(r.json()["errors"][0], json!({"pointer": "/mechanism", "message": "required field is missing"}));
 }
 
+/// Every structural error is listed, not only the first serde meets (the
+/// reader sets each aside and reads on): K1 with a joint's name left out,
+/// the input's joint given by its index, the steps in words and a joint
+/// that is a number, in the asker's language; what a stand-in lacks (a
+/// joint's own fields, where an object stands in for the number) is not the
+/// client's error, and a body wrong only once is still one error.
+#[tokio::test]
+async fn every_field_of_the_wrong_type_or_left_out_is_listed() {
+    let app = TestApp::new().await;
+    let mut k1 = request("k1_offset_slider_crank");
+    k1["mechanism"]["joints"][1].as_object_mut().unwrap().remove("name");
+    k1["input"]["joint"] = json!(0);
+    k1["input"]["steps"] = json!("muchos");
+    k1["mechanism"]["joints"][3] = json!(7);
+    k1["loads"][0]["colour"] = json!("red");
+    let r = crate::spanish::in_spanish(&app, "POST", "/v1/kinetostatics", Some(&k1)).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let errors = r.json()["errors"].as_array().unwrap().clone();
+    let at: Vec<&str> = errors.iter().map(|e| e["pointer"].as_str().unwrap()).collect();
+    assert_eq!(
+        at,
+        ["/loads/0/colour", "/input/joint", "/input/steps", "/mechanism/joints/1/name", "/mechanism/joints/3"],
+        "{}",
+        r.text
+    );
+    assert_eq!(errors[3]["message"], "falta un campo obligatorio");
+    assert!(errors[2]["message"].as_str().unwrap().contains("\"muchos\""), "{}", errors[2]);
+    assert_eq!(r.json()["detail"], "5 campos no válidos");
+    k1["mechanism"]["joints"][3] = request("k1_offset_slider_crank")["mechanism"]["joints"][3].clone();
+    k1["mechanism"]["joints"][1]["name"] = json!("A");
+    k1["loads"][0].as_object_mut().unwrap().remove("colour");
+    k1["input"]["steps"] = json!(4);
+    assert_eq!(app.pointers("/v1/kinetostatics", &k1).await, ["/input/joint"]);
+}
+
 #[tokio::test]
 async fn units_of_the_wrong_dimension_or_unknown_are_named() {
     let app = TestApp::new().await;

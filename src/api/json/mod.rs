@@ -1,9 +1,10 @@
 //! The request-body extractor: 415 for a wrong content type, 413 over the
 //! body limit, 400 for malformed JSON, 422 with a JSON pointer for every
-//! unknown field and for the first field of the wrong type. A name of the
-//! contract's lists written in another case (`"DOPRI5"`) is read as the
-//! name it matches.
+//! unknown field, every field of the wrong type and every required field
+//! left out (past the first, [`further`]). A name of the contract's lists
+//! written in another case (`"DOPRI5"`) is read as the name it matches.
 
+mod further;
 mod strict;
 pub(crate) mod words;
 
@@ -100,19 +101,43 @@ pub fn parse<T: DeserializeOwned>(raw: impl Into<Bytes>) -> Result<JsonBody<T>, 
     let mut value: serde_json::Value =
         serde_json::from_slice(&raw).map_err(|e| ApiError::MalformedJson(words::malformed(&e, &raw)))?;
     let mut fixes = 0;
+    let (mut errors, mut unknown, mut aside) = (Vec::new(), Vec::<FieldError>::new(), further::SetAside::default());
+    // Readings past the first error: as many as READ_BUDGET bytes allow, at most MAX_READS.
+    let mut reads = (READ_BUDGET / raw.len().max(1)).clamp(1, MAX_READS);
     loop {
-        let (result, unknown) = read::<T>(&value);
-        match result {
-            Ok(value) => return Ok(JsonBody { value, raw, unknown }),
-            Err(e) if fixes < MAX_CASE_FIXES && in_case(&mut value, &e) => fixes += 1,
-            Err(e) => {
-                let mut errors = unknown;
-                errors.push(type_error(&e));
-                return Err(ApiError::Invalid(errors));
+        let (result, found) = read::<T>(&value);
+        for field in found {
+            if !unknown.iter().any(|u| u.pointer == field.pointer) {
+                unknown.push(field);
             }
         }
+        let e = match result {
+            Ok(value) if errors.is_empty() => return Ok(JsonBody { value, raw, unknown }),
+            Ok(_) => break,
+            Err(e) if fixes < MAX_CASE_FIXES && in_case(&mut value, &e) => {
+                fixes += 1;
+                continue;
+            }
+            Err(e) => e,
+        };
+        let error = type_error(&e);
+        let at = error.pointer.clone().unwrap_or_default();
+        if !aside.covers(&at) {
+            errors.push(error);
+        }
+        reads -= 1;
+        if reads == 0 || !aside.next(&mut value, &at) {
+            break;
+        }
     }
+    unknown.extend(errors);
+    Err(ApiError::Invalid(unknown))
 }
+
+/// Bytes of request the readings past its first error may read in all,
+/// and the most readings: each is a whole reading of the request.
+const READ_BUDGET: usize = 4 << 20;
+const MAX_READS: usize = 32;
 
 /// The request in `value` and its unknown fields.
 fn read<T: DeserializeOwned>(value: &serde_json::Value) -> (Result<T, PathError>, Vec<FieldError>) {
