@@ -171,3 +171,32 @@ async fn a_decimal_comma_in_an_expression_is_named() {
     body["mechanism"]["joints"][2]["curves"][0]["polar"]["radius"]["expr"] = json!("max(0,5)*0.01 + 0.006*cos(3*psi)");
     assert_eq!(app.post("/v1/kinetostatics", &body).await.status, StatusCode::CREATED);
 }
+
+/// A mechanism's points as a statement gives them: K1's coordinates in cm
+/// and with a decimal comma (`"8 cm"`, `"0,02 m"`) answer K1's driving
+/// torque as its coordinates in m do, to rounding (8 × 0.01 is not 0.08 to
+/// the bit); a coordinate that is not a length is a 422 at its pointer,
+/// saying what a coordinate may be, in Spanish.
+#[tokio::test]
+async fn points_are_read_in_the_statement_s_units() {
+    let app = TestApp::new().await;
+    let mut k1 = request("k1_offset_slider_crank");
+    k1["input"]["steps"] = json!(6);
+    let in_m = app.result("/v1/kinetostatics", &k1).await;
+    k1["mechanism"]["points"]["A"] = json!(["8 cm", 0]);
+    k1["mechanism"]["points"]["B"] = json!(["379,33259094191533 mm", "0,02 m"]);
+    let in_units = app.result("/v1/kinetostatics", &k1).await;
+    for k in 0..6 {
+        let [a, b] = [&in_m, &in_units].map(|r| r["steps"][k]["driving"].as_f64().unwrap());
+        assert!((a - b).abs() <= 1e-9 * a.abs().max(1.0), "step {k}: {a} in m, {b} in units");
+    }
+    k1["mechanism"]["points"]["A"] = json!(["8 kg", 0]);
+    let r = crate::spanish::in_spanish(&app, "POST", "/v1/kinetostatics", Some(&k1)).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let error = &r.json()["errors"][0];
+    assert_eq!(error["pointer"], "/mechanism/points/A/0");
+    assert_eq!(
+        error["message"],
+        "se esperaba una longitud: un número en m, o con su unidad (\"8 cm\") y llegó el texto \"8 kg\""
+    );
+}

@@ -39,13 +39,14 @@ pub fn plain(message: &str) -> Msg {
 
 /// What the service's own readers expect (their visitors' `expecting`
 /// writes the catalogue's id, so that serde's message carries it here).
-const EXPECTING: [&str; 7] = [
+const EXPECTING: [&str; 8] = [
     "json-expect-quantity",
     "json-expect-function",
     "json-expect-program",
     "json-expect-inputs",
     "json-expect-track",
     "json-expect-point",
+    "json-expect-length",
     "json-expect-fewer",
 ];
 

@@ -19,7 +19,7 @@ pub use dimensions::{Assembled, DimensionDto};
 pub use energy::{ByName, EnergyDto};
 pub use inputs::{InputDto, Inputs, coordinate, machine_parts};
 pub use loads::{LoadDto, LoadType, MAX_LOADS, convert_loads};
-pub use points::{BodyPoint, Coords, PointRef};
+pub use points::{BodyPoint, Coords, DrawnCoords, PointRef};
 pub use reactions::{ContactDto, Name, ReactionDto, annotate, contact_warnings, names};
 
 use crate::engine::model::{Body, BodyId, Joint, JointKind, Mechanism, Pitch};
@@ -132,8 +132,10 @@ pub struct FrictionDto {
 /// example of KinetostaticsRequest).
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct MechanismDto {
-    /// Named points (m) in the drawn configuration: `{NAME: [x, y]}`.
-    #[schema(value_type = Option<BTreeMap<String, Coords>>)]
+    /// Named points in the drawn configuration: `{NAME: [x, y]}`, each
+    /// coordinate in m or a length with its unit (`"8 cm"`).
+    #[schema(value_type = Option<BTreeMap<String, DrawnCoords>>)]
+    #[serde(default, deserialize_with = "points::drawn")]
     pub points: Option<BTreeMap<String, [f64; 2]>>,
     #[schema(min_items = 1, max_items = 200)]
     pub bodies: Vec<BodyDto>,

@@ -2,8 +2,10 @@
 //! coordinates, a body's point, coordinates, as the document states them.
 
 use super::NAME_MAX_LENGTH;
-use serde::de::{self, Deserializer, SeqAccess, Visitor};
+use crate::units::{self, Dim};
+use serde::de::{self, Deserializer, SeqAccess, Unexpected, Visitor};
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 use std::fmt;
 use utoipa::openapi::RefOr;
 use utoipa::openapi::schema::{ArrayBuilder, ObjectBuilder, OneOfBuilder, Schema, Type};
@@ -79,6 +81,67 @@ impl PartialSchema for BodyPoint {
     }
 }
 impl ToSchema for BodyPoint {}
+
+/// A coordinate of a mechanism's `points`: a number (m), or a length with
+/// its unit as a statement writes it (`"8 cm"`, `"0,08 m"`), read in m.
+struct Length(f64);
+
+struct LengthVisitor;
+
+impl<'de> Visitor<'de> for LengthVisitor {
+    type Value = Length;
+
+    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str("json-expect-length")
+    }
+    fn visit_f64<E: de::Error>(self, v: f64) -> Result<Length, E> {
+        Ok(Length(v))
+    }
+    fn visit_i64<E: de::Error>(self, v: i64) -> Result<Length, E> {
+        Ok(Length(v as f64))
+    }
+    fn visit_u64<E: de::Error>(self, v: u64) -> Result<Length, E> {
+        Ok(Length(v as f64))
+    }
+    fn visit_str<E: de::Error>(self, v: &str) -> Result<Length, E> {
+        match units::parse_as(v, Dim::LENGTH) {
+            Ok(m) if m.is_finite() => Ok(Length(m)),
+            _ => Err(E::invalid_value(Unexpected::Str(v), &self)),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for Length {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(LengthVisitor)
+    }
+}
+
+/// A mechanism's `points`, each coordinate a number (m) or a length with
+/// its unit, read in m.
+pub fn drawn<'de, D: Deserializer<'de>>(d: D) -> Result<Option<BTreeMap<String, [f64; 2]>>, D::Error> {
+    let points: Option<BTreeMap<String, [Length; 2]>> = Option::deserialize(d)?;
+    Ok(points.map(|p| p.into_iter().map(|(name, [x, y])| (name, [x.0, y.0])).collect()))
+}
+
+/// `points`' coordinates `[x, y]` as the document states them: each a
+/// number in m, or a length with its unit.
+pub struct DrawnCoords;
+
+impl PartialSchema for DrawnCoords {
+    fn schema() -> RefOr<Schema> {
+        let length = OneOfBuilder::new()
+            .item(ObjectBuilder::new().schema_type(Type::Number))
+            .item(ObjectBuilder::new().schema_type(Type::String).description(Some("a length with its unit, \"8 cm\"")));
+        ArrayBuilder::new()
+            .items(length)
+            .min_items(Some(2))
+            .max_items(Some(2))
+            .description(Some("[x, y]: each in m, or a length with its unit (\"8 cm\", \"0,08 m\")"))
+            .into()
+    }
+}
+impl ToSchema for DrawnCoords {}
 
 /// Coordinates `[x, y]` in m, as the document states them.
 pub struct Coords;
