@@ -172,8 +172,9 @@ async fn a_decimal_comma_in_an_expression_is_named() {
     assert_eq!(app.post("/v1/kinetostatics", &body).await.status, StatusCode::CREATED);
 }
 
-/// A mechanism's points as a statement gives them: K1's coordinates in cm
-/// and with a decimal comma (`"8 cm"`, `"0,02 m"`) answer K1's driving
+/// A mechanism's points as a statement gives them: K1's coordinates, and a
+/// body's centre of mass, in cm and mm and with a decimal comma (`"8 cm"`,
+/// `"0,02 m"`) answer K1's driving
 /// torque as its coordinates in m do, to rounding (8 × 0.01 is not 0.08 to
 /// the bit); a coordinate that is not a length is a 422 at its pointer,
 /// saying what a coordinate may be, in Spanish.
@@ -185,6 +186,7 @@ async fn points_are_read_in_the_statement_s_units() {
     let in_m = app.result("/v1/kinetostatics", &k1).await;
     k1["mechanism"]["points"]["A"] = json!(["8 cm", 0]);
     k1["mechanism"]["points"]["B"] = json!(["379,33259094191533 mm", "0,02 m"]);
+    k1["mechanism"]["bodies"][1]["cg"] = json!(["16,97997772825746 cm", "6 mm"]);
     let in_units = app.result("/v1/kinetostatics", &k1).await;
     for k in 0..6 {
         let [a, b] = [&in_m, &in_units].map(|r| r["steps"][k]["driving"].as_f64().unwrap());

@@ -11,7 +11,8 @@ use utoipa::openapi::RefOr;
 use utoipa::openapi::schema::{ArrayBuilder, ObjectBuilder, OneOfBuilder, Schema, Type};
 use utoipa::{PartialSchema, ToSchema};
 
-/// A point: the name of a point of `points`, or coordinates [x, y] in m.
+/// A point: the name of a point of `points`, or coordinates [x, y], each
+/// in m or a length with its unit (as `points`' are read).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum PointRef {
@@ -31,7 +32,8 @@ impl<'de> Visitor<'de> for PointVisitor {
         Ok(PointRef::Name(v.to_string()))
     }
     fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<PointRef, A::Error> {
-        <[f64; 2]>::deserialize(de::value::SeqAccessDeserializer::new(seq)).map(PointRef::Coords)
+        <[Length; 2]>::deserialize(de::value::SeqAccessDeserializer::new(seq))
+            .map(|[x, y]| PointRef::Coords([x.0, y.0]))
     }
 }
 
@@ -50,7 +52,7 @@ impl PartialSchema for PointRef {
                     .max_length(Some(NAME_MAX_LENGTH))
                     .description(Some("name of a point")),
             )
-            .item(coords_schema())
+            .item(drawn_schema())
             .into()
     }
 }
@@ -69,14 +71,14 @@ impl PartialSchema for BodyPoint {
         let point = || {
             OneOfBuilder::new()
                 .item(ObjectBuilder::new().schema_type(Type::String).max_length(Some(NAME_MAX_LENGTH)))
-                .item(coords_schema())
+                .item(drawn_schema())
         };
         ArrayBuilder::new()
             .prefix_items([Schema::from(body.description(Some("a body's name"))), point().into()])
             .items(point())
             .min_items(Some(2))
             .max_items(Some(2))
-            .description(Some("[body, point]: a body's name, and one of its points (a name, or [x, y] in m)"))
+            .description(Some("[body, point]: a body's name, and one of its points (a name, or [x, y])"))
             .into()
     }
 }
@@ -130,15 +132,7 @@ pub struct DrawnCoords;
 
 impl PartialSchema for DrawnCoords {
     fn schema() -> RefOr<Schema> {
-        let length = OneOfBuilder::new()
-            .item(ObjectBuilder::new().schema_type(Type::Number))
-            .item(ObjectBuilder::new().schema_type(Type::String).description(Some("a length with its unit, \"8 cm\"")));
-        ArrayBuilder::new()
-            .items(length)
-            .min_items(Some(2))
-            .max_items(Some(2))
-            .description(Some("[x, y]: each in m, or a length with its unit (\"8 cm\", \"0,08 m\")"))
-            .into()
+        drawn_schema().into()
     }
 }
 impl ToSchema for DrawnCoords {}
@@ -152,6 +146,17 @@ impl PartialSchema for Coords {
     }
 }
 impl ToSchema for Coords {}
+
+fn drawn_schema() -> ArrayBuilder {
+    let length = OneOfBuilder::new()
+        .item(ObjectBuilder::new().schema_type(Type::Number))
+        .item(ObjectBuilder::new().schema_type(Type::String).description(Some("a length with its unit, \"8 cm\"")));
+    ArrayBuilder::new()
+        .items(length)
+        .min_items(Some(2))
+        .max_items(Some(2))
+        .description(Some("[x, y]: each in m, or a length with its unit (\"8 cm\", \"0,08 m\")"))
+}
 
 fn coords_schema() -> ArrayBuilder {
     ArrayBuilder::new()
