@@ -2,6 +2,7 @@
 //! coordinates, a body's point, coordinates, as the document states them.
 
 use super::NAME_MAX_LENGTH;
+use crate::kind::quantity::Quantity;
 use crate::units::{self, Dim};
 use serde::de::{self, Deserializer, SeqAccess, Unexpected, Visitor};
 use serde::{Deserialize, Serialize};
@@ -85,37 +86,19 @@ impl PartialSchema for BodyPoint {
 impl ToSchema for BodyPoint {}
 
 /// A coordinate of a mechanism's `points`: a number (m), or a length with
-/// its unit as a statement writes it (`"8 cm"`, `"0,08 m"`), read in m.
+/// its unit as a statement writes it (`"8 cm"`, `"0,08 m"`), read in m;
+/// read as a [`Quantity`], and its text as a length.
 struct Length(f64);
-
-struct LengthVisitor;
-
-impl<'de> Visitor<'de> for LengthVisitor {
-    type Value = Length;
-
-    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-        f.write_str("json-expect-length")
-    }
-    fn visit_f64<E: de::Error>(self, v: f64) -> Result<Length, E> {
-        Ok(Length(v))
-    }
-    fn visit_i64<E: de::Error>(self, v: i64) -> Result<Length, E> {
-        Ok(Length(v as f64))
-    }
-    fn visit_u64<E: de::Error>(self, v: u64) -> Result<Length, E> {
-        Ok(Length(v as f64))
-    }
-    fn visit_str<E: de::Error>(self, v: &str) -> Result<Length, E> {
-        match units::parse_as(v, Dim::LENGTH) {
-            Ok(m) if m.is_finite() => Ok(Length(m)),
-            _ => Err(E::invalid_value(Unexpected::Str(v), &self)),
-        }
-    }
-}
 
 impl<'de> Deserialize<'de> for Length {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        d.deserialize_any(LengthVisitor)
+        match Quantity::deserialize(d)? {
+            Quantity::Number(v) => Ok(Length(v)),
+            Quantity::Text(text) => match units::parse_as(&text, Dim::LENGTH) {
+                Ok(m) if m.is_finite() => Ok(Length(m)),
+                _ => Err(de::Error::invalid_value(Unexpected::Str(&text), &"json-expect-length")),
+            },
+        }
     }
 }
 
