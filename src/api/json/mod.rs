@@ -18,6 +18,7 @@ use bytes::{Bytes, BytesMut};
 use http_body::Body as _;
 use http_body_util::BodyExt;
 use serde::de::DeserializeOwned;
+use std::collections::HashSet;
 
 /// A JSON body: the typed request, the body as sent, and its unknown fields.
 pub struct JsonBody<T> {
@@ -106,10 +107,12 @@ pub fn parse<T: DeserializeOwned>(raw: impl Into<Bytes>) -> Result<JsonBody<T>, 
     let mut reads = (READ_BUDGET / raw.len().max(1)).clamp(1, MAX_READS);
     loop {
         let (result, found) = read::<T>(&value);
-        for field in found {
-            if !unknown.iter().any(|u| u.pointer == field.pointer) {
-                unknown.push(field);
-            }
+        if unknown.is_empty() {
+            unknown = found;
+        } else {
+            // A reading again meets the unknown fields before its error once more.
+            let known: HashSet<Option<String>> = unknown.iter().map(|u| u.pointer.clone()).collect();
+            unknown.extend(found.into_iter().filter(|f| !known.contains(&f.pointer)));
         }
         let e = match result {
             Ok(value) if errors.is_empty() => return Ok(JsonBody { value, raw, unknown }),
