@@ -34,7 +34,8 @@ pub fn turn(cam: &Cam, lifts: &[(f64, [f64; 4])]) -> Result<Vec<Sample>, CamErro
 /// `closed` form's radius for the least radius the follower can start
 /// from ([`least`](super::least)), kept where it passes the test; where it
 /// fails, or where there is no closed form, the first of 64 radii from it
-/// to the top of the range [`Cam::base_range`] that meets the test, then
+/// to the top of the range [`Cam::base_range`] that meets the test
+/// ([`first_meeting`]), then
 /// the root of the excess in the cell below it by Brent's method to 1e-12
 /// of the radius (the radius returned meets it); None where none does.
 /// The `deadline` is read before each radius is tried.
@@ -60,17 +61,8 @@ pub fn smallest_base(
         Least::Base(base) if over(base)? <= 0.0 => return Ok(Some(base)),
         Least::Base(base) | Least::Search(base) => base.max(lo),
     };
-    let grid = |k: usize| lo + (hi - lo) * k as f64 / 64.0;
-    // The first of the grid's radii that meets it (an oscillating arm's
-    // reach may fail again near the range's top: searched from below).
-    let mut first = None;
-    for k in 1..64 {
-        if over(grid(k))? <= 0.0 {
-            first = Some(k);
-            break;
-        }
-    }
-    let Some(meets) = first else { return Ok(None) };
+    let grid = |k: usize| lo + (hi - lo) * k as f64 / GRID as f64;
+    let Some(meets) = first_meeting(&|k| over(grid(k)))? else { return Ok(None) };
     let (mut a, b) = (grid(meets - 1), grid(meets));
     // Brent needs a finite excess at both ends: bisect a turn that cannot be made out of the cell's lower end.
     let mut at_a = over(a)?;
@@ -86,6 +78,39 @@ pub fn smallest_base(
         return Ok(Some(b));
     }
     refine(&over, b, a, deadline).map(Some)
+}
+
+/// Radii the range is divided in, and every how many of them the search
+/// looks first ([`first_meeting`]).
+const GRID: usize = 64;
+const COARSE: usize = 8;
+
+/// The first of the grid's radii 1..[`GRID`] whose `excess` meets the test
+/// (≤ 0), searched from below: an oscillating arm's reach may fail again
+/// near the range's top. The excess decreases with the radius wherever the
+/// cam can be made, so the radii that meet it are one stretch: every
+/// [`COARSE`]th radius and the last first, then the radii below the first
+/// of those that meets; where none does (a stretch narrower than the
+/// coarse step), every radius in turn.
+fn first_meeting(excess: &dyn Fn(usize) -> Result<f64, EngineError>) -> Result<Option<usize>, EngineError> {
+    let coarse: Vec<usize> = (COARSE..GRID).step_by(COARSE).chain([GRID - 1]).collect();
+    let mut top = None;
+    for &k in &coarse {
+        if excess(k)? <= 0.0 {
+            top = Some(k);
+            break;
+        }
+    }
+    let below = match top {
+        Some(k) => (k.saturating_sub(COARSE) + 1).max(1)..k,
+        None => 1..GRID,
+    };
+    for k in below.filter(|k| !coarse.contains(k)) {
+        if excess(k)? <= 0.0 {
+            return Ok(Some(k));
+        }
+    }
+    Ok(top)
 }
 
 /// The smallest radius that meets the test between `a` (fails) and `b`
@@ -124,4 +149,32 @@ fn refine(
         r += tolerance;
     }
     Ok(b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every stretch of meeting radii [from, to] in the grid: the first
+    /// found is the linear search's (the first k in 1..64 within it), or
+    /// none where none is; a stretch from 58 to the top costs 8 coarse
+    /// radii, then 57 and 58 (10, not the linear 58).
+    #[test]
+    fn the_first_meeting_radius_is_the_linear_searchs() {
+        for from in 1..GRID {
+            for to in from..GRID {
+                let calls = std::cell::Cell::new(0);
+                let excess = |k: usize| {
+                    calls.set(calls.get() + 1);
+                    Ok(if (from..=to).contains(&k) { -1.0 } else { 1.0 })
+                };
+                assert_eq!(first_meeting(&excess).unwrap(), Some(from), "[{from}, {to}]");
+                if (from, to) == (58, 63) {
+                    assert_eq!(calls.get(), 10);
+                }
+            }
+        }
+        assert_eq!(first_meeting(&|_| Ok(1.0)).unwrap(), None);
+        assert_eq!(first_meeting(&|_| Ok(f64::INFINITY)).unwrap(), None);
+    }
 }
