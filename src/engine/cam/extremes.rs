@@ -305,9 +305,9 @@ mod tests {
     /// A plateau is refined at its ends only, and a plateau all round is
     /// its own largest: on a dwell-rise-dwell-return program (the lift,
     /// 1024 angles scanned), the largest of s is h at every angle of the
-    /// upper dwell (the program's value there), found in fewer than 1024
-    /// + 2 × 60 evaluations (the scan and the dwell's two ends refined;
-    /// without the plateau rule each of the dwell's ~450 angles is: 10 019
+    /// upper dwell (the program's value there), found in fewer than the
+    /// scan's 1024 and 60 for each of the dwell's two ends refined (without
+    /// the plateau rule each of the dwell's ~450 angles is: 10 019
     /// evaluations); a constant's largest is itself.
     #[test]
     fn a_plateau_is_refined_at_its_ends_only() {
