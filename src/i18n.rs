@@ -16,6 +16,7 @@
 //! The course's own words (seed 000): par, reacción, volante, par motor,
 //! grado de irregularidad, energía cinética, leva, seguidor.
 
+pub mod names;
 mod stored;
 
 use fluent_bundle::concurrent::FluentBundle;

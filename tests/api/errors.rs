@@ -271,3 +271,43 @@ async fn a_name_in_another_case_is_read_as_the_name() {
     assert_eq!(error["pointer"], "/integrator");
     assert!(error["message"].as_str().unwrap().contains(r#""auto", "dopri5", "dop853", "radau5""#), "{error}");
 }
+
+/// The lab's first request written in Spanish words (i18n/names.rs): a cam
+/// with a follower "Rodillo" "de traslación", its laws "Cicloidal" and
+/// "reposo", sized for 30°, is answered as the same request in the
+/// contract's names, bit for bit (its summary); K1 with a joint
+/// "Revolución" gives the driving torque of "revolute". A word of another
+/// list ("reposo" as a follower) is refused as before, naming the list.
+#[tokio::test]
+async fn a_name_written_in_spanish_is_read_as_the_name() {
+    let app = TestApp::new().await;
+    let cam = |follower: &str, motion: &str, [rise, dwell]: [&str; 2]| {
+        json!({
+            "follower": {"type": follower, "motion": motion, "roller_radius": "10 mm", "offset": "5 mm"},
+            "program": [{"to": "90 deg", "law": rise, "lift": "20 mm"}, {"to": "180 deg", "law": dwell},
+                        {"to": "270 deg", "law": rise, "lift": 0}, {"to": "360 deg", "law": dwell}],
+            "size": {"max_pressure_angle": "30 deg"}, "speed": "100 rpm"
+        })
+    };
+    let english = app.post("/v1/cams", &cam("roller", "translating", ["cycloidal", "dwell"])).await;
+    let spanish = app.post("/v1/cams?lang=es", &cam("Rodillo", "de traslación", ["Cicloidal", "reposo"])).await;
+    assert_eq!((english.status, spanish.status), (StatusCode::CREATED, StatusCode::CREATED), "{}", spanish.text);
+    let summary = |r: &crate::helpers::Reply| r.json()["result"]["summary"].clone();
+    assert!(summary(&english)["base_radius"].is_number());
+    assert_eq!(summary(&english), summary(&spanish));
+
+    let mut k1 = request("k1_offset_slider_crank");
+    k1["input"]["steps"] = json!(4);
+    let driving = |r: &crate::helpers::Reply| r.json()["result"]["steps"][1]["driving"].clone();
+    let as_written = app.post("/v1/kinetostatics", &k1).await;
+    k1["mechanism"]["joints"][0]["type"] = json!("Revolución");
+    let spanish = app.post("/v1/kinetostatics", &k1).await;
+    assert_eq!(spanish.status, StatusCode::CREATED, "{}", spanish.text);
+    assert!(driving(&as_written).is_number() && driving(&as_written) == driving(&spanish));
+
+    let r = app.post("/v1/cams?lang=es", &cam("reposo", "translating", ["cycloidal", "dwell"])).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let error = &r.json()["errors"][0];
+    assert_eq!(error["pointer"], "/follower/type");
+    assert!(error["message"].as_str().unwrap().contains(r#""flat", "roller", "knife""#), "{error}");
+}

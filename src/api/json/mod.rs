@@ -8,7 +8,7 @@ mod further;
 mod strict;
 pub(crate) mod words;
 
-use crate::i18n::Msg;
+use crate::i18n::{Msg, names};
 pub use crate::kind::problem::escape;
 use crate::kind::problem::{ApiError, FieldError};
 use axum::body::Body;
@@ -117,7 +117,7 @@ pub fn parse<T: DeserializeOwned>(raw: impl Into<Bytes>) -> Result<JsonBody<T>, 
         let e = match result {
             Ok(value) if errors.is_empty() => return Ok(JsonBody { value, raw, unknown }),
             Ok(_) => break,
-            Err(e) if fixes < MAX_CASE_FIXES && in_case(&mut value, &e) => {
+            Err(e) if fixes < MAX_NAME_FIXES && as_listed(&mut value, &e) => {
                 fixes += 1;
                 continue;
             }
@@ -154,24 +154,25 @@ fn read<T: DeserializeOwned>(value: &serde_json::Value) -> (Result<T, PathError>
 
 type PathError = serde_path_to_error::Error<serde_json::Error>;
 
-/// Names of the contract's lists written in another case that one request
-/// may have read as the names they match (each is one more reading of it).
-const MAX_CASE_FIXES: usize = 16;
+/// Names of the contract's lists written otherwise that one request may
+/// have read as the names they match (each is one more reading of it).
+const MAX_NAME_FIXES: usize = 16;
 
-/// Where `e` is a name unknown only by its letters' case (`"DOPRI5"` for
-/// `dopri5`, `"Revolute"` for `revolute`: one of the names listed matches
-/// it ignoring case), that text in `value` written as the name: true if
-/// it was. The text is at the error's pointer, or is the one member there
-/// holding it (an object named by its `type`).
-fn in_case(value: &mut serde_json::Value, e: &PathError) -> bool {
+/// Where `e` is a name unknown only as it is written (`"DOPRI5"` for
+/// `dopri5`, `"Revolución"` for `revolute`, `"rodillo"` for `roller`: one
+/// of the names listed is what it writes, [`names::read`]), that text in
+/// `value` written as the name: true if it was. The text is at the error's
+/// pointer, or is the one member there holding it (an object named by its
+/// `type`).
+fn as_listed(value: &mut serde_json::Value, e: &PathError) -> bool {
     use serde_json::Value;
     let message = e.inner().to_string();
     let Some((got, expected)) = message.strip_prefix("unknown variant `").and_then(|m| m.split_once("`, expected "))
     else {
         return false;
     };
-    let mut named = expected.split('`').skip(1).step_by(2).filter(|n| n.eq_ignore_ascii_case(got));
-    let (Some(name), None) = (named.next(), named.next()) else { return false };
+    let listed: Vec<&str> = expected.split('`').skip(1).step_by(2).collect();
+    let Some(name) = names::read(got, &listed) else { return false };
     let text = match value.pointer_mut(&pointer(e)) {
         Some(v @ Value::String(_)) => Some(v),
         Some(Value::Object(fields)) => {

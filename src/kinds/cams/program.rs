@@ -2,7 +2,7 @@
 //! into the engine's [`Program`], every error at its pointer.
 
 use crate::engine::cam::{Law, Program, ProgramError, Segment};
-use crate::i18n::Msg;
+use crate::i18n::{Msg, names};
 use crate::kind::quantity::{Errors, Quantity};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
@@ -16,7 +16,8 @@ pub const MAX_SEGMENTS: usize = 100;
 pub struct CamSegmentDto {
     #[schema(value_type = Quantity)]
     pub to: Quantity,
-    /// dwell, harmonic, cycloidal, polynomial-345, polynomial-4567, modified-sine or modified-trapezoid.
+    /// dwell, harmonic, cycloidal, polynomial-345, polynomial-4567, modified-sine or modified-trapezoid
+    /// (in any case, or in Spanish: "cicloidal", "reposo", "armónico"…).
     pub law: String,
     /// m, or an angle for an oscillating follower (a dwell's may be left out: it holds).
     #[schema(value_type = Option<Quantity>)]
@@ -44,7 +45,8 @@ pub fn program(e: &mut Errors, list: &[CamSegmentDto], at: &str, lift: Dim) -> O
     for (k, s) in list.iter().enumerate() {
         let at = format!("{root}/{k}");
         let to = e.angle(&s.to, &format!("{at}/to"));
-        let law = match LAWS.iter().find(|(name, _)| *name == s.law) {
+        let named = names::read(&s.law, &LAWS.map(|(name, _)| name));
+        let law = match LAWS.iter().find(|(name, _)| Some(*name) == named) {
             Some(&(name, law)) => Some((name, law)),
             None => {
                 let msg = Msg::new("cam-unknown-law").arg("law", &s.law).arg("laws", LAWS.map(|(n, _)| n).join(", "));
