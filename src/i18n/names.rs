@@ -80,6 +80,7 @@ const SPANISH: &[(&str, &str)] = &[
     ("lineal", "linear"),
     ("escalon", "step"),
     ("plano", "planar"),
+    ("plana", "planar"),
     ("espacial", "spatial"),
     ("grados", "deg"),
     ("radianes", "rad"),

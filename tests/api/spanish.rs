@@ -213,7 +213,7 @@ async fn a_bad_mechanism_and_a_bad_cam_in_spanish() {
     mechanism["mechanism"]["joints"][3].as_object_mut().unwrap().remove("axis");
     let cam = json!({
         "follower": {"type": "roller"},
-        "program": [{"to": "90 deg", "law": "cicloidal", "lift": "20 mm"}, {"to": "360 deg", "law": "dwell"}],
+        "program": [{"to": "90 deg", "law": "parabólica", "lift": "20 mm"}, {"to": "360 deg", "law": "dwell"}],
         "size": {"max_pressure_angle": "90 deg"},
         "speed": "-300 rpm", "samples": 2
     });
@@ -239,7 +239,7 @@ async fn a_bad_mechanism_and_a_bad_cam_in_spanish() {
                 ("/follower", "un seguidor de rodillo necesita su radio \"roller_radius\""),
                 (
                     "/program/0/law",
-                    "ley desconocida 'cicloidal': una de dwell, harmonic, cycloidal, polynomial-345, polynomial-4567, modified-sine, modified-trapezoid",
+                    "ley desconocida 'parabólica': una de dwell, harmonic, cycloidal, polynomial-345, polynomial-4567, modified-sine, modified-trapezoid",
                 ),
                 ("/size/max_pressure_angle", "debe estar entre 0 y 85°"),
                 ("/speed", "debe ser mayor que 0 (el sentido lo da \"direction\")"),
@@ -340,11 +340,11 @@ async fn a_thousands_separator_is_named_as_such() {
 #[tokio::test]
 async fn the_readers_expectations_in_spanish() {
     let app = TestApp::new().await;
-    let counts = json!({"counts": {"space": "plano", "bodies": 4, "pairs": {"I": 4}}});
+    let counts = json!({"counts": {"space": "esférico", "bodies": 4, "pairs": {"I": 4}}});
     let said = field_messages(&app, "/v1/mobility", &counts, true).await;
     assert_eq!(
         said,
-        [("/counts/space".into(), "variante desconocida \"plano\", se esperaba \"planar\" o \"spatial\"".into())]
+        [("/counts/space".into(), "variante desconocida \"esférico\", se esperaba \"planar\" o \"spatial\"".into())]
     );
     let mut k1 = request("k1_offset_slider_crank");
     k1["mechanism"]["joints"][0]["at"] = json!({"x": 0});
