@@ -12,6 +12,11 @@
 const SPANISH: &[(&str, &str)] = &[
     // A cam's follower, its motion and sense (seed 012).
     ("rodillo", "roller"),
+    ("de-rodillo", "roller"),
+    ("de-cara-plana", "flat"),
+    ("pie-plano", "flat"),
+    ("de-pie-plano", "flat"),
+    ("de-cuchilla", "knife"),
     ("plano", "flat"),
     ("plana", "flat"),
     ("cara-plana", "flat"),
@@ -25,6 +30,8 @@ const SPANISH: &[(&str, &str)] = &[
     ("basculante", "oscillating"),
     ("antihorario", "ccw"),
     ("horario", "cw"),
+    ("sentido-antihorario", "ccw"),
+    ("sentido-horario", "cw"),
     // A cam's laws.
     ("reposo", "dwell"),
     ("detencion", "dwell"),

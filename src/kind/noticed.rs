@@ -56,6 +56,15 @@ pub fn bare_angle(value: f64, pointer: &str) {
     }
 }
 
+/// A bare number read as a length in metres that looks written in
+/// millimetres: `above` m or more (a size no such part has), in whole or
+/// half units (`25`, `12.5`).
+pub fn bare_length(value: f64, above: f64, pointer: &str) {
+    if value.abs() >= above && (2.0 * value).fract() == 0.0 {
+        notice(pointer, Msg::new("field-bare-length").num("value", value));
+    }
+}
+
 /// Whether what was noticed at `pointer` concerns an error at `other`: the
 /// error is in the object the noticed field belongs to (a dimension's
 /// `value` and its `angle`), or inside the field.

@@ -332,6 +332,18 @@ impl Errors {
         self.quantity(q, Dim::ANGLE, at)
     }
 
+    /// Notices a bare number (no unit) for a length where `above` m or
+    /// more is unlikely ([`super::noticed::bare_length`]): "25" for 25 mm.
+    pub fn notice_bare_length(&self, q: &Quantity, at: &str, above: f64) {
+        let bare = match q {
+            Quantity::Number(v) => Some(*v),
+            Quantity::Text(s) => units::number(s),
+        };
+        if let Some(v) = bare {
+            super::noticed::bare_length(v, above, at);
+        }
+    }
+
     /// A quantity that must be > 0.
     pub fn positive(&mut self, q: &Quantity, dim: Dim, at: &str) -> Option<f64> {
         let v = self.quantity(q, dim, at)?;

@@ -6,6 +6,7 @@ mod backup;
 mod balancer;
 mod balancing;
 mod browser;
+mod cam_statement;
 mod cams;
 mod capacity;
 mod cases;

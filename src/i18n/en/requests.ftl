@@ -189,7 +189,7 @@ cam-lift-closed = must return to its start over a turn: s(0) = { $start }, s(360
 cam-segments-count = must hold 1 to { $max } segments
 cam-unknown-law = unknown law '{ $law }': one of { $laws }
 cam-needs-lift = a segment that moves needs its "lift" at its end
-cam-after-previous = must be after the end of the segment before
+cam-after-previous = must be after the end of the segment before, { $end } rad ({ $degrees }°)
 cam-dwell = a dwell holds the lift of the segment before
 cam-full-turn = the last segment must end at 360°
 cam-closed = the last segment must end at lift 0

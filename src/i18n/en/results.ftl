@@ -67,7 +67,8 @@ warning-redundant-constraints = { $count } redundant constraint(s): the reaction
 accuracy-cam = the laws in closed form and their derivatives to the jerk; the pitch curve and profile from the follower's position in the cam's frame, their curvature from exact derivatives (a flat face's ρ = R_b + s + s″; an oscillating face's as the envelope of its lines); forces from the follower's equation along its axis (about its pivot, oscillating)
 warning-cam-velocity = velocity
 warning-cam-acceleration = acceleration
-warning-cam-fundamental-law = the fundamental law of cam design is broken at { $at }°: the { $what } jumps by { $jump } (per rad^{ $order })
+warning-cam-sense = the cam's sense of rotation ("direction") was not given: it turns counter-clockwise ("ccw"); with an offset or an oscillating follower the sense changes the pressure angle and the radius found
+warning-cam-fundamental-law = the fundamental law of cam design is broken at { $at }°: the { $what } jumps by { $jump } { $unit }/rad^{ $order }
 warning-cam-undercut = undercut: the profile folds on itself near { $at }° (radius of curvature { $rho } m): a larger base circle or a smaller roller
 warning-cam-undercut-flat = undercut: the profile folds on itself near { $at }° (radius of curvature { $rho } m): a larger base circle
 warning-cam-pressure-translating = the pressure angle reaches { $max }° at { $at }° (over { $limit }° for a translating follower): a larger base circle, or an offset

@@ -91,6 +91,7 @@ field-too-long = must be at most { $max } characters (has { $has })
 field-not-angle = '{ $text }' is neither an angle (e.g. "90 deg") nor a constant expression (e.g. "7*pi/4")
 field-angle-degrees = '{ $text }' is not an angle as written: degrees are written "{ $n }°" or "{ $n } deg"
 field-bare-angle = the bare number { $value } is read in radians ({ $degrees }°); for degrees write "{ $value }°"
+field-bare-length = the bare number { $value } is read in metres; for millimetres write "{ $value } mm"
 field-expression = '{ $text }' is an expression, not a quantity: write it as {"{"}"expr": "{ $text }"{"}"}
 field-expected = expected { $expected }, got { $got }
 field-between = must be between { $min } and { $max }

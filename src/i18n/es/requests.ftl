@@ -203,7 +203,7 @@ cam-lift-closed = debe volver a su valor inicial en una vuelta: s(0) = { $start 
 cam-segments-count = debe tener de 1 a { $max } tramos
 cam-unknown-law = ley desconocida '{ $law }': una de { $laws }
 cam-needs-lift = un tramo que se mueve necesita su elevación "lift" al final
-cam-after-previous = debe estar después del final del tramo anterior
+cam-after-previous = debe estar después del final del tramo anterior, { $end } rad ({ $degrees }°)
 cam-dwell = un reposo mantiene la elevación del tramo anterior
 cam-full-turn = el último tramo debe terminar en 360°
 cam-closed = el último tramo debe terminar con elevación 0

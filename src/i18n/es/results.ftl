@@ -73,7 +73,8 @@ warning-redundant-constraints = { $count ->
 accuracy-cam = las leyes en forma cerrada y sus derivadas hasta el tirón; la curva primitiva y el perfil a partir de la posición del seguidor en la referencia de la leva, su curvatura con derivadas exactas (la de una cara plana ρ = R_b + s + s″; la de una cara oscilante como envolvente de sus rectas); fuerzas de la ecuación del seguidor según su eje (respecto a su pivote, si oscila)
 warning-cam-velocity = velocidad
 warning-cam-acceleration = aceleración
-warning-cam-fundamental-law = la ley fundamental del diseño de levas no se cumple en { $at }°: la { $what } salta { $jump } (por rad^{ $order })
+warning-cam-sense = no se dio el sentido de giro de la leva ("direction"): gira en sentido antihorario ("ccw"); con un seguidor excéntrico u oscilante, el sentido cambia el ángulo de presión y el radio hallado
+warning-cam-fundamental-law = la ley fundamental del diseño de levas no se cumple en { $at }°: la { $what } salta { $jump } { $unit }/rad^{ $order }
 warning-cam-undercut = socavado: el perfil se pliega sobre sí mismo cerca de { $at }° (radio de curvatura { $rho } m): un círculo base mayor o un rodillo menor
 warning-cam-undercut-flat = socavado: el perfil se pliega sobre sí mismo cerca de { $at }° (radio de curvatura { $rho } m): un círculo base mayor
 warning-cam-pressure-translating = el ángulo de presión llega a { $max }° en { $at }° (más de { $limit }° para un seguidor de traslación): un círculo base mayor, o una excentricidad

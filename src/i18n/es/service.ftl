@@ -91,6 +91,7 @@ field-too-long = debe tener como mucho { $max } caracteres (tiene { $has })
 field-not-angle = '{ $text }' no es ni un ángulo (p. ej. "90 deg" o "90°") ni una expresión constante (p. ej. "7*pi/4")
 field-angle-degrees = '{ $text }' no es un ángulo tal como está escrito: los grados se escriben "{ $n }°" o "{ $n } deg"
 field-bare-angle = el número sin unidad { $value } se lee en radianes ({ $degrees }°); para grados escriba "{ $value }°"
+field-bare-length = el número sin unidad { $value } se lee en metros; para milímetros escriba "{ $value } mm"
 field-expression = '{ $text }' es una expresión, no una magnitud: escríbala como {"{"}"expr": "{ $text }"{"}"}
 field-expected = se esperaba { $expected } y llegó { $got }
 field-between = debe estar entre { $min } y { $max }

@@ -8,6 +8,10 @@ use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+/// A cam's length given as a bare number this large (m) or larger is
+/// noticed as likely meant in mm ("25" for a 25 mm lift).
+pub const BARE_MM: f64 = 1.0;
+
 /// Most segments of a program.
 pub const MAX_SEGMENTS: usize = 100;
 
@@ -55,7 +59,10 @@ pub fn program(e: &mut Errors, list: &[CamSegmentDto], at: &str, lift: Dim) -> O
         };
         let lift = match (&s.lift, law) {
             (Some(q), _) if lift == Dim::ANGLE => e.angle(q, &format!("{at}/lift")),
-            (Some(q), _) => e.quantity(q, lift, &format!("{at}/lift")),
+            (Some(q), _) => {
+                e.notice_bare_length(q, &format!("{at}/lift"), BARE_MM);
+                e.quantity(q, lift, &format!("{at}/lift"))
+            }
             (None, Some((_, Law::Dwell))) => Some(from),
             (None, Some(_)) => e.refuse(&at, Msg::new("cam-needs-lift")),
             (None, None) => None,
@@ -65,12 +72,18 @@ pub fn program(e: &mut Errors, list: &[CamSegmentDto], at: &str, lift: Dim) -> O
         names.push(name);
         (start, from) = (to, lift);
     }
+    let starts: Vec<f64> = segments.iter().map(|s| s.start).collect();
     match Program::new(segments) {
         Ok(p) => Some((p, names)),
         Err(err) => {
             let last = list.len() - 1;
             let (at, id) = match err {
-                ProgramError::Empty { segment, .. } => (format!("{root}/{segment}/to"), "cam-after-previous"),
+                ProgramError::Empty { segment, .. } => {
+                    // Where the segment before ends, in rad and degrees: a bare "120" read as 120 rad shows.
+                    let end = starts.get(segment).copied().unwrap_or(0.0);
+                    let msg = Msg::new("cam-after-previous").num("end", end).fig("degrees", end.to_degrees());
+                    return e.refuse(&format!("{root}/{segment}/to"), msg);
+                }
                 ProgramError::MovingDwell { segment, .. } => (format!("{root}/{segment}/lift"), "cam-dwell"),
                 ProgramError::NotATurn { .. } => (format!("/program/{last}/to"), "cam-full-turn"),
                 ProgramError::NotClosed { .. } => (format!("/program/{last}/lift"), "cam-closed"),

@@ -1,6 +1,6 @@
 //! The cam design request and its conversion, every error at its pointer.
 
-use super::program::{CamSegmentDto, program};
+use super::program::{BARE_MM, CamSegmentDto, program};
 use crate::engine::cam::Program;
 use crate::engine::cam::design::{Cam, Follower, Guide, Loads};
 use crate::engine::function::{Function, Side};
@@ -45,7 +45,8 @@ pub struct CamRequest {
     /// The cam's angular speed (constant), rad/s.
     #[schema(value_type = Quantity)]
     pub speed: Quantity,
-    /// The cam's sense of rotation; default ccw.
+    /// The cam's sense of rotation; default ccw, said in a warning where
+    /// the sense changes the answer (an offset or oscillating follower).
     pub direction: Option<CamSense>,
     pub dynamics: Option<CamDynamicsDto>,
     /// Angles evenly spaced over the turn (default 360).
@@ -189,11 +190,23 @@ pub struct Problem {
     pub speed: f64,
     pub loads: Option<(Loads, Option<Function>)>,
     pub samples: usize,
+    /// No `direction` was given where the sense changes the answer (an
+    /// offset or an oscillating follower): ccw was taken, and said so.
+    pub sense_assumed: bool,
 }
 
 impl CamRequest {
     pub fn to_problem(&self, limits: &Limits) -> Result<Problem, Vec<FieldError>> {
         let mut e = Errors::new(limits);
+        let f = &self.follower;
+        let lengths =
+            [(&f.roller_radius, "roller_radius"), (&f.offset, "offset"), (&f.pivot, "pivot"), (&f.arm, "arm")];
+        for (q, field) in lengths.into_iter().filter_map(|(q, field)| Some((q.as_ref()?, field))) {
+            e.notice_bare_length(q, &format!("/follower/{field}"), BARE_MM);
+        }
+        if let Some(q) = &self.base_radius {
+            e.notice_bare_length(q, "/base_radius", BARE_MM);
+        }
         let cam = self.cam(&mut e);
         let motion = self.motion(&mut e);
         let size = match (&self.base_radius, &self.size) {
@@ -231,7 +244,9 @@ impl CamRequest {
             Some(Some(l)) => Some(l),
             _ => None,
         };
-        Ok(Problem { cam, motion, size, speed, loads, samples })
+        let offset = matches!(cam.guide, Guide::Translating { offset } if offset != 0.0);
+        let sense_assumed = self.direction.is_none() && (offset || self.oscillating());
+        Ok(Problem { cam, motion, size, speed, loads, samples, sense_assumed })
     }
 
     fn cam(&self, e: &mut Errors) -> Option<Cam> {

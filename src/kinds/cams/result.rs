@@ -161,7 +161,11 @@ pub fn result(p: &Problem, cam: &Cam, turn: &[Sample], known: Option<Extremes>) 
         })
         .collect();
     let mut notes = Notes::default();
+    if p.sense_assumed {
+        notes.warn(Msg::new("warning-cam-sense"));
+    }
     let summary = summary(p, cam, known, &mut notes);
+    let lift_unit = summary.lift_unit.clone();
     let segments = match &p.motion {
         Motion::Program(program, names) => {
             // A jump of the jerk keeps the acceleration continuous: only
@@ -173,6 +177,7 @@ pub fn result(p: &Problem, cam: &Cam, turn: &[Sample], known: Option<Extremes>) 
                         .fig("at", b.theta.to_degrees())
                         .with("what", Msg::new(what))
                         .fig("jump", b.jump)
+                        .arg("unit", &lift_unit)
                         .count("order", b.derivative),
                 );
             }

@@ -1,0 +1,110 @@
+//! A cam exam question put to the service as a Spanish student first
+//! writes it (a first-touch trial, 2026-11-30): "leva de disco con
+//! seguidor de rodillo de 12 mm, de traslación, excentricidad 6 mm; subida
+//! cicloidal de 25 mm en 120°, reposo 60°, bajada armónica en 90°, reposo;
+//! radio base mínimo para un ángulo de presión de 30°". The words of the
+//! course are read, what the answer assumed is said, and a bare number is
+//! answered with how it was read.
+
+use crate::helpers::TestApp;
+use axum::http::StatusCode;
+use serde_json::{Value, json};
+use std::f64::consts::PI;
+
+/// The statement's cam in the student's words: `to` the first segment's
+/// end, `lift` its rise, and the sense of rotation if given.
+fn statement(to: &str, lift: &str, direction: Option<&str>) -> Value {
+    let mut body = json!({
+        "follower": {"type": "de rodillo", "motion": "traslación", "roller_radius": "12 mm", "offset": "6 mm"},
+        "program": [{"to": to, "law": "Cicloidal", "lift": lift}, {"to": "180°", "law": "reposo"},
+                    {"to": "270°", "law": "armónica", "lift": "0 mm"}, {"to": "360°", "law": "reposo"}],
+        "size": {"max_pressure_angle": "30°"}, "speed": "300 rpm"
+    });
+    if let Some(d) = direction {
+        body["direction"] = json!(d);
+    }
+    body
+}
+
+/// The least base radius of the statement's roller by a scan of the
+/// closed form at 360 000 angles, written here from the laws' formulas
+/// (cycloidal s = h(x − sin 2πx/2π), harmonic s = h(1 + cos πx)/2, x the
+/// share of the segment): R_b = √(d₀² + e²) − r_r, d₀ = max |s′ + σe|/tan
+/// 30° − s, σ = +1 counter-clockwise and −1 clockwise. The scan's step
+/// (1.7e-5 rad) leaves its maximum within ~1e-10 m of the true one.
+fn scanned_base(sigma: f64) -> f64 {
+    let (h, e, r, k) = (0.025, 0.006, 0.012, (PI / 6.0).tan());
+    let (rise, fall) = (2.0 * PI / 3.0, PI / 2.0);
+    let lift = |t: f64| -> [f64; 2] {
+        if t < rise {
+            let x = t / rise;
+            [h * (x - (2.0 * PI * x).sin() / (2.0 * PI)), h / rise * (1.0 - (2.0 * PI * x).cos())]
+        } else if (PI..PI + fall).contains(&t) {
+            let x = (t - PI) / fall;
+            [h * (1.0 + (PI * x).cos()) / 2.0, -h * PI / (2.0 * fall) * (PI * x).sin()]
+        } else {
+            [if t < PI { h } else { 0.0 }, 0.0]
+        }
+    };
+    let n = 360_000;
+    let d0 = (0..n)
+        .map(|i| {
+            let [s, s1] = lift(2.0 * PI * i as f64 / n as f64);
+            (s1 + sigma * e).abs() / k - s
+        })
+        .fold(f64::NEG_INFINITY, f64::max);
+    d0.hypot(e) - r
+}
+
+fn warnings(r: &Value) -> Vec<String> {
+    r["result"]["warnings"].as_array().unwrap().iter().map(|w| w.as_str().unwrap().to_string()).collect()
+}
+
+/// The statement as first written, without the sense of rotation: 201,
+/// sized as the scan sizes it counter-clockwise (1e-9 m), with a Spanish
+/// warning that the sense was taken and matters here; clockwise, as the
+/// scan sizes it with the offset's other sign, and no such warning.
+#[tokio::test]
+async fn the_statement_in_the_course_s_words_is_sized_and_says_the_sense_it_took() {
+    let app = TestApp::new().await;
+    for (direction, sigma) in [(None, 1.0), (Some("sentido horario"), -1.0)] {
+        let r = app.post("/v1/cams?lang=es", &statement("120°", "25 mm", direction)).await;
+        assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+        let r = r.json();
+        let base = r["result"]["summary"]["base_radius"].as_f64().unwrap();
+        assert!((base - scanned_base(sigma)).abs() < 1e-9, "{direction:?}: {base} against {}", scanned_base(sigma));
+        let said = warnings(&r).iter().any(|w| w.contains("no se dio el sentido de giro") && w.contains("antihorario"));
+        assert_eq!(said, direction.is_none(), "{direction:?}: {:?}", warnings(&r));
+    }
+}
+
+/// A lift written "25" is 25 m, as the contract reads a bare number (the
+/// radius found is a cam's for 25 m), and the answer says how it was read
+/// and how to write millimetres, at the field; "0" and "25 mm" say nothing.
+#[tokio::test]
+async fn a_bare_lift_is_answered_with_how_it_was_read() {
+    let app = TestApp::new().await;
+    let r = app.post("/v1/cams?lang=es", &statement("120°", "25", Some("horario"))).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let r = r.json();
+    assert!(r["result"]["summary"]["base_radius"].as_f64().unwrap() > 25.0, "{}", r["result"]["summary"]);
+    let noticed: Vec<String> = warnings(&r).into_iter().filter(|w| w.contains("se lee en metros")).collect();
+    assert_eq!(noticed.len(), 1, "{:?}", warnings(&r));
+    assert!(noticed[0].contains("/program/0/lift") && noticed[0].contains("\"25 mm\""), "{}", noticed[0]);
+    let r = app.post("/v1/cams?lang=es", &statement("120°", "25 mm", Some("horario"))).await.json();
+    assert!(warnings(&r).iter().all(|w| !w.contains("se lee en metros")), "{:?}", warnings(&r));
+}
+
+/// A segment's end written "120" is 120 rad: the next segment, at 180°, is
+/// refused for ending before it, and the refusal says where the one
+/// before ends in rad and in degrees (120 rad, 6875°).
+#[tokio::test]
+async fn an_end_before_the_previous_one_says_where_that_one_ends() {
+    let app = TestApp::new().await;
+    let r = app.post("/v1/cams?lang=es", &statement("120", "25 mm", Some("horario"))).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let errors = r.json()["errors"].as_array().unwrap().clone();
+    let at = errors.iter().find(|e| e["pointer"] == "/program/1/to").unwrap_or_else(|| panic!("{errors:?}"));
+    let message = at["message"].as_str().unwrap();
+    assert!(message.contains("120 rad") && message.contains("(6875°)"), "{message}");
+}
