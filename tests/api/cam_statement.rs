@@ -108,3 +108,21 @@ async fn an_end_before_the_previous_one_says_where_that_one_ends() {
     let message = at["message"].as_str().unwrap();
     assert!(message.contains("120 rad") && message.contains("(6875°)"), "{message}");
 }
+
+/// The lift's plot marks where each segment ends by its law's name in the
+/// asker's language: "fin de cicloidal", "fin de armónica" in Spanish,
+/// "cycloidal ends" in English (the catalogue's names, not the contract's).
+#[tokio::test]
+async fn the_plot_names_the_laws_in_the_asker_s_language() {
+    let app = TestApp::new().await;
+    let r = app.post("/v1/cams", &statement("120°", "25 mm", Some("horario"))).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let id = r.json()["id"].as_str().unwrap().to_string();
+    let es = app.get(&format!("/v1/jobs/{id}/plots/svaj.svg?lang=es")).await;
+    assert_eq!(es.status, StatusCode::OK, "{}", es.text);
+    for label in ["fin de cicloidal", "fin de reposo", "fin de armónica"] {
+        assert!(es.text.contains(label), "{label} in the Spanish plot");
+    }
+    assert!(!es.text.contains("cycloidal"), "no contract name left in the Spanish plot");
+    assert!(app.get(&format!("/v1/jobs/{id}/plots/svaj.svg")).await.text.contains("cycloidal ends"));
+}

@@ -367,6 +367,13 @@ plot-cam-torque = cam torque (N·m)
 plot-cam-svaj-title = SVAJ diagram
 plot-cam-over-peak = each over its peak
 plot-cam-law-ends = { $law } ends
+cam-law-dwell = dwell
+cam-law-harmonic = harmonic
+cam-law-cycloidal = cycloidal
+cam-law-polynomial-345 = polynomial 3-4-5
+cam-law-polynomial-4567 = polynomial 4-5-6-7
+cam-law-modified-sine = modified sine
+cam-law-modified-trapezoid = modified trapezoid
 plot-cam-profile-title = Cam profile (cam's frame, x: the follower's direction at θ = 0)
 plot-cam-profile-line = profile
 plot-cam-base = base circle R_b = { $value } mm

@@ -367,6 +367,13 @@ plot-cam-torque = par en la leva (N·m)
 plot-cam-svaj-title = Diagrama SVAJ
 plot-cam-over-peak = cada una sobre su máximo
 plot-cam-law-ends = fin de { $law }
+cam-law-dwell = reposo
+cam-law-harmonic = armónica
+cam-law-cycloidal = cicloidal
+cam-law-polynomial-345 = polinómica 3-4-5
+cam-law-polynomial-4567 = polinómica 4-5-6-7
+cam-law-modified-sine = seno modificado
+cam-law-modified-trapezoid = trapecio modificado
 plot-cam-profile-title = Perfil de la leva (ejes de la leva, x: la dirección del seguidor en θ = 0)
 plot-cam-profile-line = perfil
 plot-cam-base = circunferencia base R_b = { $value } mm
