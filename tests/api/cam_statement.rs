@@ -126,3 +126,41 @@ async fn the_plot_names_the_laws_in_the_asker_s_language() {
     assert!(!es.text.contains("cycloidal"), "no contract name left in the Spanish plot");
     assert!(app.get(&format!("/v1/jobs/{id}/plots/svaj.svg")).await.text.contains("cycloidal ends"));
 }
+
+/// The cam's CSV, as a lab sheet reads it: each column's header has its
+/// unit, and `?angles=deg` writes the angles in degrees — θ and the
+/// pressure angle, and an oscillating follower's lift — each the JSON
+/// sample's value × 180/π (1e-9 relative); lengths, and an oscillating
+/// follower's dψ/dθ (a pure number), stay as they are.
+#[tokio::test]
+async fn the_csv_says_its_units_and_gives_angles_in_degrees_on_request() {
+    let app = TestApp::new().await;
+    let mut swing = statement("120°", "20°", Some("horario"));
+    swing["follower"] =
+        json!({"type": "rodillo", "motion": "oscilante", "roller_radius": "10 mm", "pivot": "120 mm", "arm": "90 mm"});
+    swing["program"][2]["lift"] = json!(0);
+    for (body, lift) in [(statement("120°", "25 mm", Some("horario")), "lift_m"), (swing, "lift_deg")] {
+        let r = app.post("/v1/cams", &body).await;
+        assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+        let (id, samples) = (r.json()["id"].as_str().unwrap().to_string(), r.json()["result"]["samples"].clone());
+        let csv = app.get(&format!("/v1/jobs/{id}/result.csv?angles=deg")).await.text;
+        let mut lines = csv.lines();
+        let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+        assert_eq!(
+            &header[..3],
+            &["theta_deg", lift, if lift == "lift_m" { "velocity_m_s" } else { "velocity_rad_s" }]
+        );
+        assert!(header.contains(&"pressure_angle_deg") && header.contains(&"profile_x_m"), "{header:?}");
+        let row: Vec<f64> = lines.nth(10).unwrap().split(',').map(|c| c.parse().unwrap_or(f64::NAN)).collect();
+        let sample = &samples[10];
+        let near = |got: f64, want: f64| (got - want).abs() <= 1e-9 * want.abs().max(1e-12);
+        let degrees = |key: &str| sample[key].as_f64().unwrap().to_degrees();
+        assert!(near(row[0], degrees("theta")), "θ {} against {}", row[0], degrees("theta"));
+        let column = |name: &str| header.iter().position(|h| *h == name).unwrap();
+        assert!(near(row[column("pressure_angle_deg")], degrees("pressure_angle")));
+        let want_lift = if lift == "lift_m" { sample["lift"].as_f64().unwrap() } else { degrees("lift") };
+        assert!(near(row[1], want_lift), "{lift} {} against {want_lift}", row[1]);
+        let dlift = if lift == "lift_m" { "dlift_m" } else { "dlift" };
+        assert!(near(row[column(dlift)], sample["dlift"].as_f64().unwrap()), "{dlift}");
+    }
+}

@@ -111,30 +111,36 @@ impl Kind for Cams {
         Ok(result::result(&problem, &cam, &samples, known))
     }
 
-    /// The samples, one row each.
+    /// The samples, one row each, each column's header with its unit
+    /// (`theta_rad`, `lift_m`: an angle's column in degrees with
+    /// `?angles=deg`, an oscillating follower's lift among them; its
+    /// ds/dθ, d²s/dθ², d³s/dθ³ pure numbers, without a unit).
     fn table(result: &Value) -> Option<Table> {
         let rows = result["samples"].as_array()?;
+        let lift = if result["summary"]["lift_unit"] == "rad" { "rad" } else { "m" };
+        // ds/dθ… per rad: in m for a translating follower, pure numbers for an oscillating one.
+        let per_rad = if lift == "m" { "_m" } else { "" };
         let fields = [
-            "theta",
-            "lift",
-            "velocity",
-            "acceleration",
-            "jerk",
-            "dlift",
-            "d2lift",
-            "d3lift",
-            "pressure_angle",
-            "curvature_radius",
-            "pitch_curvature_radius",
-            "contact_force",
-            "cam_torque",
+            ("theta", "_rad".to_string()),
+            ("lift", format!("_{lift}")),
+            ("velocity", format!("_{lift}_s")),
+            ("acceleration", format!("_{lift}_s2")),
+            ("jerk", format!("_{lift}_s3")),
+            ("dlift", per_rad.to_string()),
+            ("d2lift", per_rad.to_string()),
+            ("d3lift", per_rad.to_string()),
+            ("pressure_angle", "_rad".to_string()),
+            ("curvature_radius", "_m".to_string()),
+            ("pitch_curvature_radius", "_m".to_string()),
+            ("contact_force", "_N".to_string()),
+            ("cam_torque", "_N_m".to_string()),
         ];
-        let mut header: Vec<String> = fields.iter().map(|f| (*f).to_string()).collect();
-        header.extend(["pitch_x", "pitch_y", "profile_x", "profile_y"].map(String::from));
+        let mut header: Vec<String> = fields.iter().map(|(f, unit)| format!("{f}{unit}")).collect();
+        header.extend(["pitch_x_m", "pitch_y_m", "profile_x_m", "profile_y_m"].map(String::from));
         let body = rows
             .iter()
             .map(|r| {
-                let mut row: Vec<String> = fields.iter().map(|f| cell(&r[*f])).collect();
+                let mut row: Vec<String> = fields.iter().map(|(f, _)| cell(&r[*f])).collect();
                 row.extend(
                     [&r["pitch_point"][0], &r["pitch_point"][1], &r["profile_point"][0], &r["profile_point"][1]]
                         .map(cell),
