@@ -129,9 +129,9 @@ async fn the_plot_names_the_laws_in_the_asker_s_language() {
 
 /// The cam's CSV, as a lab sheet reads it: each column's header has its
 /// unit, and `?angles=deg` writes the angles in degrees — θ and the
-/// pressure angle, and an oscillating follower's lift — each the JSON
-/// sample's value × 180/π (1e-9 relative); lengths, and an oscillating
-/// follower's dψ/dθ (a pure number), stay as they are.
+/// pressure angle, and an oscillating follower's lift and dψ/dθ (° a rad
+/// of the cam) — each the JSON sample's value × 180/π (1e-9 relative);
+/// lengths stay as they are.
 #[tokio::test]
 async fn the_csv_says_its_units_and_gives_angles_in_degrees_on_request() {
     let app = TestApp::new().await;
@@ -160,7 +160,10 @@ async fn the_csv_says_its_units_and_gives_angles_in_degrees_on_request() {
         assert!(near(row[column("pressure_angle_deg")], degrees("pressure_angle")));
         let want_lift = if lift == "lift_m" { sample["lift"].as_f64().unwrap() } else { degrees("lift") };
         assert!(near(row[1], want_lift), "{lift} {} against {want_lift}", row[1]);
-        let dlift = if lift == "lift_m" { "dlift_m" } else { "dlift" };
-        assert!(near(row[column(dlift)], sample["dlift"].as_f64().unwrap()), "{dlift}");
+        let (dlift, want) = match lift {
+            "lift_m" => ("dlift_m", sample["dlift"].as_f64().unwrap()),
+            _ => ("dlift_deg", degrees("dlift")),
+        };
+        assert!(near(row[column(dlift)], want), "{dlift}");
     }
 }

@@ -113,22 +113,22 @@ impl Kind for Cams {
 
     /// The samples, one row each, each column's header with its unit
     /// (`theta_rad`, `lift_m`: an angle's column in degrees with
-    /// `?angles=deg`, an oscillating follower's lift among them; its
-    /// ds/dθ, d²s/dθ², d³s/dθ³ pure numbers, without a unit).
+    /// `?angles=deg`, an oscillating follower's lift and its derivatives
+    /// by θ among them, as [`Kind::unit`] gives their units).
     fn table(result: &Value) -> Option<Table> {
         let rows = result["samples"].as_array()?;
         let lift = if result["summary"]["lift_unit"] == "rad" { "rad" } else { "m" };
-        // ds/dθ… per rad: in m for a translating follower, pure numbers for an oscillating one.
-        let per_rad = if lift == "m" { "_m" } else { "" };
+        // ds/dθ… per rad of the cam: in the lift's unit (as `unit` gives them).
+        let per_rad = format!("_{lift}");
         let fields = [
             ("theta", "_rad".to_string()),
             ("lift", format!("_{lift}")),
             ("velocity", format!("_{lift}_s")),
             ("acceleration", format!("_{lift}_s2")),
             ("jerk", format!("_{lift}_s3")),
-            ("dlift", per_rad.to_string()),
-            ("d2lift", per_rad.to_string()),
-            ("d3lift", per_rad.to_string()),
+            ("dlift", per_rad.clone()),
+            ("d2lift", per_rad.clone()),
+            ("d3lift", per_rad),
             ("pressure_angle", "_rad".to_string()),
             ("curvature_radius", "_m".to_string()),
             ("pitch_curvature_radius", "_m".to_string()),
