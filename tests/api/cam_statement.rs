@@ -111,7 +111,8 @@ async fn an_end_before_the_previous_one_says_where_that_one_ends() {
 
 /// The lift's plot marks where each segment ends by its law's name in the
 /// asker's language: "fin de cicloidal", "fin de armónica" in Spanish,
-/// "cycloidal ends" in English (the catalogue's names, not the contract's).
+/// "cycloidal ends" in English (the catalogue's names, not the contract's);
+/// the job's page links the profile's DXF.
 #[tokio::test]
 async fn the_plot_names_the_laws_in_the_asker_s_language() {
     let app = TestApp::new().await;
@@ -125,6 +126,11 @@ async fn the_plot_names_the_laws_in_the_asker_s_language() {
     }
     assert!(!es.text.contains("cycloidal"), "no contract name left in the Spanish plot");
     assert!(app.get(&format!("/v1/jobs/{id}/plots/svaj.svg")).await.text.contains("cycloidal ends"));
+    // The job's page links its profile's DXF, which is there.
+    let page = app.get(&format!("/jobs/{id}")).await.text;
+    let dxf = format!("/v1/jobs/{id}/profile.dxf");
+    assert!(page.contains(&format!("href=\"{dxf}\"")), "the page links {dxf}");
+    assert_eq!(app.get(&dxf).await.status, StatusCode::OK);
 }
 
 /// The cam's CSV, as a lab sheet reads it: each column's header has its

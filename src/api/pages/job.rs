@@ -83,6 +83,8 @@ async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Resu
         }
     }
     let named = kind.title();
+    // The kind's own files this result has (a cam's profile.dxf).
+    let files: Vec<&str> = kind.files().iter().map(|f| f.0).filter(|name| kind.file(&result, name).is_some()).collect();
     let summary = summary(&row, &result);
     let (values, long) = values(kind, &mut result);
     let (lang, id) = (i18n::current(), &row.id);
@@ -95,6 +97,7 @@ async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Resu
             li { a href=(format!("/v1/jobs/{id}/result.csv")) { (t("page-csv-table")) } }
             li { a href=(format!("/v1/jobs/{id}/values?format=csv")) { (t("page-every-value")) } }
             li { a href=(format!("/v1/jobs/{id}/plots")) { (t("page-plots-json")) } }
+            @for name in &files { li { a href=(format!("/v1/jobs/{id}/{name}")) { (name) } } }
         }
         h2 { (t("page-values")) }
         @if !long.is_empty() {
