@@ -26,6 +26,16 @@ fn statement(to: &str, lift: &str, direction: Option<&str>) -> Value {
     body
 }
 
+/// The statement's program under an oscillating roller (pivot 120 mm, arm
+/// 90 mm, roller 10 mm) swinging 20°.
+fn swing() -> Value {
+    let mut swing = statement("120°", "20°", Some("horario"));
+    swing["follower"] =
+        json!({"type": "rodillo", "motion": "oscilante", "roller_radius": "10 mm", "pivot": "120 mm", "arm": "90 mm"});
+    swing["program"][2]["lift"] = json!(0);
+    swing
+}
+
 /// The least base radius of the statement's roller by a scan of the
 /// closed form at 360 000 angles, written here from the laws' formulas
 /// (cycloidal s = h(x − sin 2πx/2π), harmonic s = h(1 + cos πx)/2, x the
@@ -141,11 +151,7 @@ async fn the_plot_names_the_laws_in_the_asker_s_language() {
 #[tokio::test]
 async fn the_csv_says_its_units_and_gives_angles_in_degrees_on_request() {
     let app = TestApp::new().await;
-    let mut swing = statement("120°", "20°", Some("horario"));
-    swing["follower"] =
-        json!({"type": "rodillo", "motion": "oscilante", "roller_radius": "10 mm", "pivot": "120 mm", "arm": "90 mm"});
-    swing["program"][2]["lift"] = json!(0);
-    for (body, lift) in [(statement("120°", "25 mm", Some("horario")), "lift_m"), (swing, "lift_deg")] {
+    for (body, lift) in [(statement("120°", "25 mm", Some("horario")), "lift_m"), (swing(), "lift_deg")] {
         let r = app.post("/v1/cams", &body).await;
         assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
         let (id, samples) = (r.json()["id"].as_str().unwrap().to_string(), r.json()["result"]["samples"].clone());
@@ -171,5 +177,20 @@ async fn the_csv_says_its_units_and_gives_angles_in_degrees_on_request() {
             _ => ("dlift_deg", degrees("dlift")),
         };
         assert!(near(row[column(dlift)], want), "{dlift}");
+    }
+}
+
+/// The profile plot says where the cam frame's x axis points: along a
+/// translating follower at θ = 0, towards an oscillating follower's pivot.
+#[tokio::test]
+async fn the_profile_plot_says_where_x_points_for_each_follower() {
+    let app = TestApp::new().await;
+    let translating = statement("120°", "25 mm", Some("horario"));
+    for (body, said) in [(translating, "x: la dirección del seguidor"), (swing(), "x: hacia el pivote del seguidor")] {
+        let r = app.post("/v1/cams", &body).await;
+        assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+        let id = r.json()["id"].as_str().unwrap().to_string();
+        let svg = app.get(&format!("/v1/jobs/{id}/plots/profile.svg?lang=es")).await.text;
+        assert!(svg.contains(said), "{said}");
     }
 }

@@ -375,6 +375,7 @@ cam-law-polynomial-4567 = polynomial 4-5-6-7
 cam-law-modified-sine = modified sine
 cam-law-modified-trapezoid = modified trapezoid
 plot-cam-profile-title = Cam profile (cam's frame, x: the follower's direction at θ = 0)
+plot-cam-profile-title-pivot = Cam profile (cam's frame, x: towards the follower's pivot)
 plot-cam-profile-line = profile
 plot-cam-base = base circle R_b = { $value } mm
 plot-cam-pitch = pitch curve

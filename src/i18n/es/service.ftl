@@ -375,6 +375,7 @@ cam-law-polynomial-4567 = polinómica 4-5-6-7
 cam-law-modified-sine = seno modificado
 cam-law-modified-trapezoid = trapecio modificado
 plot-cam-profile-title = Perfil de la leva (ejes de la leva, x: la dirección del seguidor en θ = 0)
+plot-cam-profile-title-pivot = Perfil de la leva (ejes de la leva, x: hacia el pivote del seguidor)
 plot-cam-profile-line = perfil
 plot-cam-base = circunferencia base R_b = { $value } mm
 plot-cam-pitch = curva primitiva

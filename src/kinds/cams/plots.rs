@@ -94,7 +94,10 @@ fn profile(job: &Job, rows: &[Value]) -> Chart {
     let circle = (0..=180)
         .map(|k| (std::f64::consts::TAU * f64::from(k) / 180.0).sin_cos())
         .map(|(s, c)| (1e3 * base * c, 1e3 * base * s));
-    let mut c = Chart::new(say("plot-cam-profile-title"), Axis::new("x", "mm"), Axis::new("y", "mm"))
+    // An oscillating follower's pivot is on the cam frame's x axis; a translating one moves along it at θ = 0.
+    let oscillating = job.result["summary"]["lift_unit"] == "rad";
+    let title = say(if oscillating { "plot-cam-profile-title-pivot" } else { "plot-cam-profile-title" });
+    let mut c = Chart::new(title, Axis::new("x", "mm"), Axis::new("y", "mm"))
         .line(say("plot-cam-profile-line"), closed("profile_point"), Pen::solid(0))
         .line(Msg::new("plot-cam-base").arg("value", sig(1e3 * base)).text(), circle.collect(), Pen::dashed(2));
     if rows[0].get("pitch_curvature_radius").is_some() {
