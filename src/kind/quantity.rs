@@ -35,6 +35,15 @@ impl Quantity {
             Self::Text(t) => t.clone(),
         }
     }
+
+    /// Its value where it was given without a unit: a number, or a text
+    /// with a number alone ("30", "25,5").
+    pub fn bare(&self) -> Option<f64> {
+        match self {
+            Self::Number(v) => Some(*v),
+            Self::Text(s) => units::number(s),
+        }
+    }
 }
 
 struct QuantityVisitor;
@@ -322,11 +331,7 @@ impl Errors {
             };
         }
         // A bare number, or a text with a number alone ("30"), read in radians.
-        let bare = match q {
-            Quantity::Number(v) => Some(*v),
-            Quantity::Text(s) => units::number(s),
-        };
-        if let Some(v) = bare {
+        if let Some(v) = q.bare() {
             super::noticed::bare_angle(v, at);
         }
         self.quantity(q, Dim::ANGLE, at)
@@ -335,11 +340,7 @@ impl Errors {
     /// Notices a bare number (no unit) for a length where `above` m or
     /// more is unlikely ([`super::noticed::bare_length`]): "25" for 25 mm.
     pub fn notice_bare_length(&self, q: &Quantity, at: &str, above: f64) {
-        let bare = match q {
-            Quantity::Number(v) => Some(*v),
-            Quantity::Text(s) => units::number(s),
-        };
-        if let Some(v) = bare {
+        if let Some(v) = q.bare() {
             super::noticed::bare_length(v, above, at);
         }
     }
