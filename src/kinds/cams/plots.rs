@@ -75,7 +75,7 @@ fn svaj(job: &Job, rows: &[Value]) -> Chart {
         if let (Some(to), Some(law)) = (num(s, "to"), s["law"].as_str()) {
             c.rules.push(Rule {
                 at: Level::X(to.to_degrees()),
-                label: Msg::new("plot-cam-law-ends").with("law", law_words(law)).text(),
+                label: Msg::new("plot-cam-law-ends").with("law", super::program::law_words(law)).text(),
                 pen: Pen::dashed(7),
             });
         }
@@ -121,20 +121,4 @@ fn profile(job: &Job, rows: &[Value]) -> Chart {
         );
     }
     c
-}
-
-/// A law's name as the asker's language says it (the contract's name where
-/// the catalogue has none).
-fn law_words(law: &str) -> Msg {
-    let id = match law {
-        "dwell" => "cam-law-dwell",
-        "harmonic" => "cam-law-harmonic",
-        "cycloidal" => "cam-law-cycloidal",
-        "polynomial-345" => "cam-law-polynomial-345",
-        "polynomial-4567" => "cam-law-polynomial-4567",
-        "modified-sine" => "cam-law-modified-sine",
-        "modified-trapezoid" => "cam-law-modified-trapezoid",
-        _ => return Msg::new("text-as-is").arg("why", law),
-    };
-    Msg::new(id)
 }

@@ -28,16 +28,25 @@ pub struct CamSegmentDto {
     pub lift: Option<Quantity>,
 }
 
-/// The wire name of each law.
-pub const LAWS: [(&str, Law); 7] = [
-    ("dwell", Law::Dwell),
-    ("harmonic", Law::Harmonic),
-    ("cycloidal", Law::Cycloidal),
-    ("polynomial-345", Law::Poly345),
-    ("polynomial-4567", Law::Poly4567),
-    ("modified-sine", Law::ModifiedSine),
-    ("modified-trapezoid", Law::ModifiedTrapezoid),
+/// Each law: its wire name, the engine's law, and the catalogue's words for it.
+pub const LAWS: [(&str, Law, &str); 7] = [
+    ("dwell", Law::Dwell, "cam-law-dwell"),
+    ("harmonic", Law::Harmonic, "cam-law-harmonic"),
+    ("cycloidal", Law::Cycloidal, "cam-law-cycloidal"),
+    ("polynomial-345", Law::Poly345, "cam-law-polynomial-345"),
+    ("polynomial-4567", Law::Poly4567, "cam-law-polynomial-4567"),
+    ("modified-sine", Law::ModifiedSine, "cam-law-modified-sine"),
+    ("modified-trapezoid", Law::ModifiedTrapezoid, "cam-law-modified-trapezoid"),
 ];
+
+/// The law of wire name `name` as the asker's language says it (the name
+/// itself where it is none of [`LAWS`]).
+pub fn law_words(name: &str) -> Msg {
+    match LAWS.iter().find(|l| l.0 == name) {
+        Some(&(_, _, words)) => Msg::new(words),
+        None => Msg::new("text-as-is").arg("why", name),
+    }
+}
 
 /// A program of segments at pointer `at` (`/program`), with each segment's law's name.
 pub fn program(e: &mut Errors, list: &[CamSegmentDto], at: &str, lift: Dim) -> Option<(Program, Vec<&'static str>)> {
@@ -49,11 +58,11 @@ pub fn program(e: &mut Errors, list: &[CamSegmentDto], at: &str, lift: Dim) -> O
     for (k, s) in list.iter().enumerate() {
         let at = format!("{root}/{k}");
         let to = e.angle(&s.to, &format!("{at}/to"));
-        let named = names::read(&s.law, &LAWS.map(|(name, _)| name));
-        let law = match LAWS.iter().find(|(name, _)| Some(*name) == named) {
-            Some(&(name, law)) => Some((name, law)),
+        let named = names::read(&s.law, &LAWS.map(|l| l.0));
+        let law = match LAWS.iter().find(|l| Some(l.0) == named) {
+            Some(&(name, law, _)) => Some((name, law)),
             None => {
-                let msg = Msg::new("cam-unknown-law").arg("law", &s.law).arg("laws", LAWS.map(|(n, _)| n).join(", "));
+                let msg = Msg::new("cam-unknown-law").arg("law", &s.law).arg("laws", LAWS.map(|l| l.0).join(", "));
                 e.refuse(&format!("{at}/law"), msg)
             }
         };
