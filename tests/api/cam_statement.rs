@@ -66,6 +66,13 @@ fn scanned_base(sigma: f64) -> f64 {
     d0.hypot(e) - r
 }
 
+/// The job `body` POSTed to `path` makes (its `201` asserted), as JSON.
+async fn created(app: &TestApp, path: &str, body: &Value) -> Value {
+    let r = app.post(path, body).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    r.json()
+}
+
 fn warnings(r: &Value) -> Vec<String> {
     r["result"]["warnings"].as_array().unwrap().iter().map(|w| w.as_str().unwrap().to_string()).collect()
 }
@@ -78,9 +85,7 @@ fn warnings(r: &Value) -> Vec<String> {
 async fn the_statement_in_the_course_s_words_is_sized_and_says_the_sense_it_took() {
     let app = TestApp::new().await;
     for (direction, sigma) in [(None, 1.0), (Some("sentido horario"), -1.0)] {
-        let r = app.post("/v1/cams?lang=es", &statement("120°", "25 mm", direction)).await;
-        assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
-        let r = r.json();
+        let r = created(&app, "/v1/cams?lang=es", &statement("120°", "25 mm", direction)).await;
         let base = r["result"]["summary"]["base_radius"].as_f64().unwrap();
         assert!((base - scanned_base(sigma)).abs() < 1e-9, "{direction:?}: {base} against {}", scanned_base(sigma));
         let said = warnings(&r).iter().any(|w| w.contains("no se dio el sentido de giro") && w.contains("antihorario"));
@@ -94,14 +99,12 @@ async fn the_statement_in_the_course_s_words_is_sized_and_says_the_sense_it_took
 #[tokio::test]
 async fn a_bare_lift_is_answered_with_how_it_was_read() {
     let app = TestApp::new().await;
-    let r = app.post("/v1/cams?lang=es", &statement("120°", "25", Some("horario"))).await;
-    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
-    let r = r.json();
+    let r = created(&app, "/v1/cams?lang=es", &statement("120°", "25", Some("horario"))).await;
     assert!(r["result"]["summary"]["base_radius"].as_f64().unwrap() > 25.0, "{}", r["result"]["summary"]);
     let noticed: Vec<String> = warnings(&r).into_iter().filter(|w| w.contains("se lee en metros")).collect();
     assert_eq!(noticed.len(), 1, "{:?}", warnings(&r));
     assert!(noticed[0].contains("/program/0/lift") && noticed[0].contains("\"25 mm\""), "{}", noticed[0]);
-    let r = app.post("/v1/cams?lang=es", &statement("120°", "25 mm", Some("horario"))).await.json();
+    let r = created(&app, "/v1/cams?lang=es", &statement("120°", "25 mm", Some("horario"))).await;
     assert!(warnings(&r).iter().all(|w| !w.contains("se lee en metros")), "{:?}", warnings(&r));
 }
 
@@ -126,9 +129,8 @@ async fn an_end_before_the_previous_one_says_where_that_one_ends() {
 #[tokio::test]
 async fn the_plot_names_the_laws_in_the_asker_s_language() {
     let app = TestApp::new().await;
-    let r = app.post("/v1/cams", &statement("120°", "25 mm", Some("horario"))).await;
-    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
-    let id = r.json()["id"].as_str().unwrap().to_string();
+    let job = created(&app, "/v1/cams", &statement("120°", "25 mm", Some("horario"))).await;
+    let id = job["id"].as_str().unwrap();
     let es = app.get(&format!("/v1/jobs/{id}/plots/svaj.svg?lang=es")).await;
     assert_eq!(es.status, StatusCode::OK, "{}", es.text);
     for label in ["fin de cicloidal", "fin de reposo", "fin de armónica"] {
@@ -152,9 +154,8 @@ async fn the_plot_names_the_laws_in_the_asker_s_language() {
 async fn the_csv_says_its_units_and_gives_angles_in_degrees_on_request() {
     let app = TestApp::new().await;
     for (body, lift) in [(statement("120°", "25 mm", Some("horario")), "lift_m"), (swing(), "lift_deg")] {
-        let r = app.post("/v1/cams", &body).await;
-        assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
-        let (id, samples) = (r.json()["id"].as_str().unwrap().to_string(), r.json()["result"]["samples"].clone());
+        let r = created(&app, "/v1/cams", &body).await;
+        let (id, samples) = (r["id"].as_str().unwrap(), &r["result"]["samples"]);
         let csv = app.get(&format!("/v1/jobs/{id}/result.csv?angles=deg")).await.text;
         let mut lines = csv.lines();
         let header: Vec<&str> = lines.next().unwrap().split(',').collect();
@@ -187,9 +188,7 @@ async fn the_profile_plot_says_where_x_points_for_each_follower() {
     let app = TestApp::new().await;
     let translating = statement("120°", "25 mm", Some("horario"));
     for (body, said) in [(translating, "x: la dirección del seguidor"), (swing(), "x: hacia el pivote del seguidor")] {
-        let r = app.post("/v1/cams", &body).await;
-        assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
-        let id = r.json()["id"].as_str().unwrap().to_string();
+        let id = created(&app, "/v1/cams", &body).await["id"].as_str().unwrap().to_string();
         let svg = app.get(&format!("/v1/jobs/{id}/plots/profile.svg?lang=es")).await.text;
         assert!(svg.contains(said), "{said}");
     }
