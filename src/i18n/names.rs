@@ -44,6 +44,13 @@ const SPANISH: &[(&str, &str)] = &[
     ("polinomico-4567", "polynomial-4567"),
     ("polinomica-4567", "polynomial-4567"),
     ("polinomial-4567", "polynomial-4567"),
+    // The laws as the plots' labels and the course write them ("polinómica 3-4-5").
+    ("polinomica-3-4-5", "polynomial-345"),
+    ("polinomico-3-4-5", "polynomial-345"),
+    ("polynomial-3-4-5", "polynomial-345"),
+    ("polinomica-4-5-6-7", "polynomial-4567"),
+    ("polinomico-4-5-6-7", "polynomial-4567"),
+    ("polynomial-4-5-6-7", "polynomial-4567"),
     ("seno-modificado", "modified-sine"),
     ("senoidal-modificada", "modified-sine"),
     ("trapecio-modificado", "modified-trapezoid"),
@@ -142,6 +149,7 @@ mod tests {
         assert_eq!(read("plano", &["planar", "spatial"]), Some("planar"));
         assert_eq!(read("Armónico", &["dwell", "harmonic"]), Some("harmonic"));
         assert_eq!(read("Polinómico 345", &["polynomial-345", "polynomial-4567"]), Some("polynomial-345"));
+        assert_eq!(read("polinómica 4-5-6-7", &["polynomial-345", "polynomial-4567"]), Some("polynomial-4567"));
         assert_eq!(read("pin_slot", &["revolute", "pin-slot"]), Some("pin-slot"));
         assert_eq!(read("rodillos", &FOLLOWERS), None);
         assert_eq!(read("reposo", &FOLLOWERS), None);
