@@ -76,6 +76,9 @@ pub trait AnyKind: Send + Sync {
     fn file(&self, _result: &Value, _name: &str) -> Option<Vec<u8>> {
         None
     }
+    fn has_file(&self, _result: &Value, _name: &str) -> bool {
+        false
+    }
 }
 
 /// A [`Kind`] in the registry.
@@ -140,6 +143,9 @@ impl<K: Kind> AnyKind for Registered<K> {
     }
     fn file(&self, result: &Value, name: &str) -> Option<Vec<u8>> {
         K::file(result, name)
+    }
+    fn has_file(&self, result: &Value, name: &str) -> bool {
+        K::has_file(result, name)
     }
 }
 

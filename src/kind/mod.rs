@@ -78,6 +78,12 @@ pub trait Kind: Send + Sync + 'static {
         None
     }
 
+    /// Whether [`Kind::file`] makes file `name` of a stored result; a kind
+    /// whose files are costly to make answers without making them.
+    fn has_file(result: &Value, name: &str) -> bool {
+        Self::file(result, name).is_some()
+    }
+
     /// The unit of the number at `pointer` (split into tokens) of `result`.
     /// Kinds whose units depend on the request (a force or a torque drives
     /// a mechanism) override this and fall back to [`unit_in`].

@@ -84,7 +84,7 @@ async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Resu
     }
     let named = kind.title();
     // The kind's own files this result has (a cam's profile.dxf).
-    let files: Vec<&str> = kind.files().iter().map(|f| f.0).filter(|name| kind.file(&result, name).is_some()).collect();
+    let files: Vec<&str> = kind.files().iter().map(|f| f.0).filter(|name| kind.has_file(&result, name)).collect();
     let summary = summary(&row, &result);
     let (values, long) = values(kind, &mut result);
     let (lang, id) = (i18n::current(), &row.id);

@@ -97,6 +97,10 @@ impl Kind for Cams {
         (name == "profile.dxf").then(|| dxf::profile(result)).flatten()
     }
 
+    fn has_file(result: &Value, name: &str) -> bool {
+        name == "profile.dxf" && dxf::has_profile(result)
+    }
+
     fn compute(request: &CamRequest, unknown: Vec<FieldError>, limits: &Limits) -> Result<CamResult, ApiError> {
         let deadline = limits.deadline();
         let problem = validated(unknown, request.to_problem(limits))?;
