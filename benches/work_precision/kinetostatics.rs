@@ -60,9 +60,10 @@ pub fn section() -> String {
          default outputs (every joint reaction, every body's motion, I*, M*, energy shares and the virtual-power \
          check): {:.3} ms ({:.2} µs per position); the driving torque and every reaction (`\"outputs\": \
          [\"driving\", \"reactions\"]`): {:.3} ms ({:.2} µs per position); the driving torque only (`\"outputs\": \
-         [\"driving\"]`, by virtual power, no multipliers): {:.3} ms ({:.2} µs per position). All estimate Φ_q's \
-         two condition numbers, in SI units and scaled, from its LU (Hager's 1-norm estimator: a solve each way for \
-         each, started from the last position's maximiser; κ₂ exactly only where an estimate passes 100, nowhere on K1); with the exact κ₂ at every \
+         [\"driving\"]`, by virtual power, no multipliers): {:.3} ms ({:.2} µs per position). All find Φ_q's \
+         two condition numbers κ₁, in SI units and scaled, from its LU (both norms of Φ_q⁻¹, formed from the factors: \
+         since 2026-11-30, where Hager's estimator had made a solve each way for each; κ₂ exactly only where κ₁ \
+         passes 100, nowhere on K1); with the exact κ₂ at every \
          position (`\"condition\"` added to the default outputs: an SVD each): {:.3} ms ({:.2} µs per position).\n",
         best * 1e3,
         per(best),
@@ -101,10 +102,10 @@ pub fn section() -> String {
                  refills one workspace — Φ, Φ_q, an in-place LU and the vectors — and one step (`solve_each`), so \
                  nothing is allocated per position in the engine; the slider-crank is a crank and an RRP dyad, so \
                  each position is placed in closed form and Newton only confirms it (one evaluation, no iteration); \
-                 one LU then serves q̇, q̈, the multipliers and the estimate, its solves multiplying by the pivots' \
+                 one LU then serves q̇, q̈, the multipliers and Φ_q⁻¹, its solves multiplying by the pivots' \
                  reciprocals; the reactions turn their arms with the sines and cosines Φ_q was built with. Where a \
                  position's time goes (timed by parts and by perf): the kinematic sweep (placing, Φ, Φ_q and γ, the \
-                 LU, q̇, q̈ and the estimate) a little over half, the LU and its five triangular solves a third of \
+                 LU, q̇, q̈ and the condition numbers) a little over half, the LU and its five triangular solves a third of \
                  all; the actions (Q, λ, the reactions, the summary) a quarter; the result's lists (a step's \
                  reactions, whose joint and body names, of up to 23 bytes, are copied inline with no reference \
                  count) a fifth. Φ_q's row scales are found once a position (by Newton's check) and the clock read \
@@ -117,7 +118,12 @@ pub fn section() -> String {
                  scales 0.07 (perf). Tried and no faster: the estimate's first solve from where its unit vector's \
                  one entry lands (the forward pass with a start known only at run time is no longer unrolled: \
                  1.05–1.10× K1's time, in two versions); a sparse refactorisation in the first pivot order \
-                 (KLU's) at 9 × 9; the two condition estimates' solves made together (two right-hand sides a pass).",
+                 (KLU's) at 9 × 9; the two condition estimates' solves made together (two right-hand sides a pass). \
+                 Since 2026-11-30 both condition numbers take ‖Φ_q⁻¹‖₁ from Φ_q⁻¹ formed from the LU (n³ \
+                 multiply-adds over whole rows, independent of each other) instead of Hager's estimator (four or more \
+                 triangular solves, each step waiting on the last): exact where the estimate was a lower bound, \
+                 and 0.97× K1's time, 0.96× the cam's (medians of 8 and 10 paired runs); formed on L's triangle \
+                 alone (2n³/3, as LAPACK's xGETRI, with rows' lengths known only at run time) it was no faster.",
                 met(per(reading.at_reference) <= 1.0),
                 reading.words(("µs a position", 1e6 / 3600.0)),
                 met(seconds / reactions >= 50.0),

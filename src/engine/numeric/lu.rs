@@ -63,21 +63,49 @@ impl Lu {
         self.regular && c.len() == n && by_size!(n, solve_transposed_in(&self.lu, &self.swaps, &self.inverse_pivots, c))
     }
 
-    /// ‖A⁻¹‖₁ by Hager's estimator (Higham, *Accuracy and Stability of
+    /// ‖A⁻¹‖₁: exact up to [`EXACT_UP_TO`] rows ([`Lu::inverse_norms1`]),
+    /// else by Hager's estimator (Higham, *Accuracy and Stability of
     /// Numerical Algorithms*, Alg. 15.1, as LAPACK's xGECON): ‖A⁻¹x‖₁ over
     /// unit vectors x, ascending until x is a local maximiser; a lower
     /// bound, in practice within a factor 3. `y` is scratch; `x` is the
-    /// start and ends as the maximiser found: a sweep hands it to the next
-    /// position, where it is usually a maximiser again (one solve each way
-    /// instead of two), else n⁻¹·(1, …, 1) starts.
+    /// estimator's start and ends as the maximiser found: a sweep hands it
+    /// to the next position, where it is usually a maximiser again (one
+    /// solve each way instead of two), else n⁻¹·(1, …, 1) starts.
     pub fn inverse_norm1(&self, x: &mut Vec<f64>, y: &mut Vec<f64>) -> f64 {
         self.scaled_inverse_norm1(x, y, [&[], &[]])
     }
 
     /// ‖(R A C)⁻¹‖₁ = ‖C⁻¹ A⁻¹ R⁻¹‖₁ for diagonal scalings R = diag(`rows`)
-    /// and C = diag(`cols`) (an empty slice: the identity), by the same
-    /// estimator over A's factors.
-    pub fn scaled_inverse_norm1(&self, x: &mut Vec<f64>, y: &mut Vec<f64>, [rows, cols]: [&[f64]; 2]) -> f64 {
+    /// and C = diag(`cols`) (an empty slice: the identity), as
+    /// [`Lu::inverse_norm1`] finds ‖A⁻¹‖₁.
+    pub fn scaled_inverse_norm1(&self, x: &mut Vec<f64>, y: &mut Vec<f64>, scales: [&[f64]; 2]) -> f64 {
+        if self.n <= EXACT_UP_TO {
+            return self.exact_norms1(scales)[1];
+        }
+        self.estimated_norm1(x, y, scales)
+    }
+
+    /// [‖A⁻¹‖₁, ‖(R A C)⁻¹‖₁] as [`Lu::inverse_norm1`] and
+    /// [`Lu::scaled_inverse_norm1`] find each (`x`, `xs` their
+    /// estimators' maximisers), from one A⁻¹ where it is formed.
+    pub fn inverse_norms1(&self, [x, xs, y]: [&mut Vec<f64>; 3], scales: [&[f64]; 2]) -> [f64; 2] {
+        if self.n <= EXACT_UP_TO {
+            return self.exact_norms1(scales);
+        }
+        [self.estimated_norm1(x, y, [&[], &[]]), self.estimated_norm1(xs, y, scales)]
+    }
+
+    /// The two norms of [`Lu::inverse_norms1`] from A⁻¹ formed from the
+    /// factors; infinite where A is singular or A⁻¹ not finite.
+    fn exact_norms1(&self, scales: [&[f64]; 2]) -> [f64; 2] {
+        let n = self.n;
+        let norms =
+            self.regular.then(|| by_size!(n, inverse_norms_in(&self.lu, &self.swaps, &self.inverse_pivots, scales)));
+        norms.flatten().unwrap_or([f64::INFINITY; 2])
+    }
+
+    /// Hager's estimate of ‖(R A C)⁻¹‖₁ (see [`Lu::inverse_norm1`]).
+    fn estimated_norm1(&self, x: &mut Vec<f64>, y: &mut Vec<f64>, [rows, cols]: [&[f64]; 2]) -> f64 {
         let n = self.n;
         if x.len() != n {
             x.clear();
@@ -111,6 +139,13 @@ impl Lu {
         estimate
     }
 }
+
+/// The largest matrix whose inverse's norms are found exactly: A⁻¹ costs
+/// n³ multiply-adds, each step over a whole row of it (independent sums),
+/// where the estimator's four or more triangular solves of n²/2 each wait
+/// on their last step; at n = 8 and 9 (a cam, a slider-crank) forming A⁻¹
+/// took less than the estimate (docs/BENCHMARKS.md).
+pub const EXACT_UP_TO: usize = 12;
 
 /// `f::<N>(args)` with N = n for the sizes of planar mechanisms of up to
 /// six moving bodies (three coordinates each) and the augmented matrices
@@ -213,6 +248,72 @@ fn solve_transposed_in<const N: usize>(n: usize, a: &[f64], swaps: &[usize], inv
     c.iter().all(|v| v.is_finite())
 }
 
+/// A row of A⁻¹ as [`inverse_norms_in`] forms it (the first n entries used).
+type Row = [f64; EXACT_UP_TO];
+
+/// [‖A⁻¹‖₁, ‖C⁻¹ A⁻¹ R⁻¹‖₁] (R = diag(r_j), C = diag(c_i); missing
+/// entries 1) from `factor_in`'s factors: A⁻¹ = U⁻¹ L⁻¹ P formed from P's
+/// rows with L and U solved for every column at once, a whole row at a
+/// time (n³ multiply-adds: on L's triangle alone, 2n³/3 as LAPACK's
+/// xGETRI, the rows' lengths known only at run time made it no faster at
+/// n = 8 and 9), then its column sums; None if an entry is not finite.
+fn inverse_norms_in<const N: usize>(
+    n: usize,
+    a: &[f64],
+    swaps: &[usize],
+    inverse: &[f64],
+    [rows, cols]: [&[f64]; 2],
+) -> Option<[f64; 2]> {
+    let n = if N > 0 { N } else { n };
+    let (a, swaps, inverse) = (&a[..n * n], &swaps[..n], &inverse[..n]);
+    let mut x = [[0.0; EXACT_UP_TO]; EXACT_UP_TO];
+    let x = &mut x[..n];
+    let mut order: [usize; EXACT_UP_TO] = std::array::from_fn(|i| i);
+    for (k, &p) in swaps.iter().enumerate() {
+        order.swap(k, p);
+    }
+    x.iter_mut().zip(&order).for_each(|(row, &j)| row[j] = 1.0);
+    // x_i −= m·x_j over a whole row; Φ_q's factors are mostly zeros (a
+    // joint's rows touch two bodies), their pattern the same at every position.
+    let update = |target: &mut Row, m: f64, source: &Row| {
+        if m != 0.0 {
+            target[..n].iter_mut().zip(&source[..n]).for_each(|(t, s)| *t -= m * s);
+        }
+    };
+    for j in 0..n {
+        let source = x[j];
+        for (i, target) in x.iter_mut().enumerate().skip(j + 1) {
+            update(target, a[j * n + i], &source);
+        }
+    }
+    for j in (0..n).rev() {
+        x[j][..n].iter_mut().for_each(|v| *v *= inverse[j]);
+        let source = x[j];
+        for (i, target) in x[..j].iter_mut().enumerate() {
+            update(target, a[j * n + i], &source);
+        }
+    }
+    // (C⁻¹ A⁻¹ R⁻¹)_ij = x_ij / (c_i r_j): column j's sums, plain and over c_i.
+    let (mut plain, mut scaled) = ([0.0f64; EXACT_UP_TO], [0.0f64; EXACT_UP_TO]);
+    for (i, row) in x.iter().enumerate() {
+        let over_c = 1.0 / cols.get(i).copied().unwrap_or(1.0);
+        for ((p, s), v) in plain[..n].iter_mut().zip(&mut scaled[..n]).zip(&row[..n]) {
+            *p += v.abs();
+            *s += v.abs() * over_c;
+        }
+    }
+    let r = |j: usize| rows.get(j).copied().unwrap_or(1.0);
+    let (mut largest, mut largest_scaled) = (0.0f64, 0.0f64);
+    for j in 0..n {
+        // NaN or ∞ in x makes its column's sum so.
+        if !(plain[j].is_finite() && scaled[j].is_finite()) {
+            return None;
+        }
+        (largest, largest_scaled) = (largest.max(plain[j]), largest_scaled.max(scaled[j] / r(j)));
+    }
+    Some([largest, largest_scaled])
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -242,6 +343,45 @@ mod tests {
                 assert!(gap <= 1e-13 * want.amax(), "{got:?} vs {want}");
             }
         }
+    }
+
+    /// Up to [`EXACT_UP_TO`] rows both norms of the inverse are its own, to
+    /// 1e-13 of nalgebra's inverse (sizes with n known, 3 to 12, and not,
+    /// 1, 2: every step exchanging rows); beyond, the estimate is a lower
+    /// bound within a factor 3. A singular matrix has infinite norms.
+    #[test]
+    fn the_inverse_s_norms_are_exact_up_to_twelve_rows() {
+        let zero_diagonal = |n: usize| {
+            DMatrix::from_fn(n, n, |i, j| if i == j { 0.0 } else { ((3 * i + 5 * j) as f64).sin() + 0.1 * i as f64 })
+        };
+        for n in 1..=EXACT_UP_TO + 2 {
+            let a = if n == 1 { DMatrix::from_element(1, 1, -2.5) } else { zero_diagonal(n) };
+            let rows: Vec<f64> = (0..n).map(|i| 1.0 + 0.5 * i as f64).collect();
+            let cols: Vec<f64> = (0..n).map(|j| if j % 3 == 2 { 1.0 } else { 0.02 }).collect();
+            let inverse = a.clone().try_inverse().expect("regular");
+            let scaled = DMatrix::from_fn(n, n, |i, j| inverse[(i, j)] / (cols[i] * rows[j]));
+            let norm1 = |m: &DMatrix<f64>| m.column_iter().map(|c| c.abs().sum()).fold(0.0, f64::max);
+            let want = [norm1(&inverse), norm1(&scaled)];
+            let mut lu = Lu::default();
+            assert!(lu.factor(&a));
+            let [mut x, mut xs, mut y] = [Vec::new(), Vec::new(), Vec::new()];
+            let got = lu.inverse_norms1([&mut x, &mut xs, &mut y], [&rows, &cols]);
+            for (got, want) in got.into_iter().zip(want) {
+                if n <= EXACT_UP_TO {
+                    assert!((got - want).abs() <= 1e-13 * want, "n = {n}: {got} vs {want}");
+                } else {
+                    assert!(got <= want * (1.0 + 1e-13) && got >= want / 3.0, "n = {n}: {got} vs {want}");
+                }
+            }
+            let alone = lu.scaled_inverse_norm1(&mut Vec::new(), &mut y, [&rows, &cols]);
+            assert_eq!(alone.to_bits(), got[1].to_bits(), "n = {n}: alone as together");
+        }
+        let mut lu = Lu::default();
+        lu.factor(&DMatrix::from_row_slice(3, 3, &[1.0, 2.0, 3.0, 1.0, 2.0, 3.0, 0.0, 1.0, 1.0]));
+        assert_eq!(
+            lu.inverse_norms1([&mut Vec::new(), &mut Vec::new(), &mut Vec::new()], [&[], &[]]),
+            [f64::INFINITY; 2]
+        );
     }
 
     /// A zero pivot (a repeated row) makes the factors singular and the

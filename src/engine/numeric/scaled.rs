@@ -37,16 +37,18 @@ pub fn scaled(a: &DMatrix<f64>, [rows, cols]: [&[f64]; 2]) -> DMatrix<f64> {
     })
 }
 
-/// κ₁(R A C) = ‖R A C‖₁ ‖(R A C)⁻¹‖₁ from A's LU (Hager's estimator, a
-/// lower bound, in practice within a factor 3; empty scales: κ₁(A)); `x`
-/// starts it and keeps its maximiser for the next position, `y` is scratch.
+/// κ₁(R A C) = ‖R A C‖₁ ‖(R A C)⁻¹‖₁ from A's LU ([`Lu::scaled_inverse_norm1`]:
+/// exact up to 12 rows, else Hager's estimator, a lower bound, in practice
+/// within a factor 3; empty scales: κ₁(A)); `x` starts the estimator and
+/// keeps its maximiser for the next position, `y` is scratch.
 pub fn estimated_condition(a: &DMatrix<f64>, lu: &Lu, scales: [&[f64]; 2], [x, y]: [&mut Vec<f64>; 2]) -> f64 {
     let [_, norm] = norms1(a, scales);
     times(norm, lu.scaled_inverse_norm1(x, y, scales))
 }
 
 /// κ₁(A) and κ₁(R A C) from A's LU, as [`estimated_condition`] finds each
-/// (`x` and `xs` their maximisers), the two norms in one pass over A.
+/// (`x` and `xs` their maximisers), the two norms in one pass over A and
+/// the two of the inverse from one A⁻¹ where it is formed.
 pub fn estimated_conditions(
     a: &DMatrix<f64>,
     lu: &Lu,
@@ -54,7 +56,8 @@ pub fn estimated_conditions(
     [x, xs, y]: [&mut Vec<f64>; 3],
 ) -> [f64; 2] {
     let [plain, scaled] = norms1(a, scales);
-    [times(plain, lu.inverse_norm1(x, y)), times(scaled, lu.scaled_inverse_norm1(xs, y, scales))]
+    let [inverse, of_scaled] = lu.inverse_norms1([x, xs, y], scales);
+    [times(plain, inverse), times(scaled, of_scaled)]
 }
 
 fn times(norm: f64, inverse_norm: f64) -> f64 {

@@ -79,9 +79,9 @@ pub struct StepDto {
     /// Condition number of Φ_q (joints and inputs). The exact 2-norm κ₂ (an
     /// SVD) where `outputs` has "condition", or where the estimate below
     /// exceeds 100 (so every near-singular position is measured exactly);
-    /// elsewhere the 1-norm κ₁ estimated from Φ_q's LU by Hager's method
-    /// (LAPACK's xGECON), a few solves instead of an SVD, within a factor
-    /// of the coordinates' number of κ₂.
+    /// elsewhere the 1-norm κ₁ from Φ_q's LU: exact (Φ_q⁻¹ formed) up to
+    /// 12 coordinates, estimated by Hager's method (LAPACK's xGECON) beyond;
+    /// within a factor of the coordinates' number of κ₂.
     pub jacobian_condition: f64,
     /// The same of Φ_q scaled by the mechanism's size (each length
     /// coordinate in units of the drawing's size L, each row divided by its
