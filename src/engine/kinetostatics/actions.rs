@@ -33,6 +33,17 @@ pub(super) struct Scratch {
     pub driving: Vec<f64>,
     /// What presses each joint with friction under the loads alone (λ₀).
     pub loads: Vec<Reaction>,
+    /// The fixed point's magnitudes.
+    pub magnitudes: Magnitudes,
+}
+
+/// The magnitudes f_k of the friction's fixed point, its next pass's and
+/// each a_k's size: kept from one position to the next.
+#[derive(Default)]
+pub(super) struct Magnitudes {
+    f: Vec<f64>,
+    next: Vec<f64>,
+    sizes: Vec<f64>,
 }
 
 /// One moving joint's friction per unit: a_k, y_k (Φ_qᵀ y_k = a_k) and the
@@ -233,33 +244,35 @@ fn with_friction(
     let mut loads = std::mem::take(&mut s.loads);
     unit_reactions(m, c, (&s.offsets, &units), &s.lambda0, &mut s.driving, &mut loads);
     let coupled = units.len() <= COUPLED_UNITS;
-    let f = if coupled {
-        linear(m, c, s, (&units, &mut per), &loads, (tol, deadline), at)
+    let mut magnitudes = std::mem::take(&mut s.magnitudes);
+    let passes = if coupled {
+        linear(m, c, s, (&units, &mut per), &loads, (tol, deadline, &mut magnitudes), at)
     } else {
-        iterated(m, c, s, (&units, &per), &loads, (tol, deadline), at)
+        iterated(m, c, s, (&units, &per), &loads, (tol, deadline, &mut magnitudes), at)
     };
     s.loads = loads;
-    let result = f.and_then(|(f, passes)| {
-        for (p, f) in per.iter().zip(&f) {
+    let f = &magnitudes.f;
+    let result = passes.and_then(|passes| {
+        for (p, f) in per.iter().zip(f) {
             s.qv.iter_mut().zip(&p.a).for_each(|(q, a)| *q += f * a);
             s.inertial.iter_mut().zip(&p.a).for_each(|(q, a)| *q -= f * a);
         }
         if coupled {
             // λ = λ₀ + Σ f_k y_k.
             s.lambda.clone_from(&s.lambda0);
-            for (p, f) in per.iter().zip(&f) {
+            for (p, f) in per.iter().zip(f) {
                 s.lambda.iter_mut().zip(&p.y).for_each(|(l, y)| *l += f * y);
             }
             read_out(m, c, s, Some(indeterminate), (&mut *out.0, &mut *out.1));
         } else {
             multipliers(m, c, s, Some(indeterminate), at, (&mut *out.0, &mut *out.1))?;
         }
-        for (unit, f) in units.iter().zip(&f) {
+        for (unit, f) in units.iter().zip(f) {
             unit.add_to(*f, &mut out.1[unit.joint]);
         }
         Ok(passes)
     });
-    (s.units, s.per_unit) = (units, per);
+    (s.units, s.per_unit, s.magnitudes) = (units, per, magnitudes);
     result
 }
 
@@ -288,14 +301,14 @@ fn linear(
     s: &mut Scratch,
     (units, per): (&[friction::Unit], &mut [PerUnit]),
     loads: &[Reaction],
-    (tol, deadline): (f64, &Deadline),
+    (tol, deadline, magnitudes): (f64, &Deadline, &mut Magnitudes),
     (step, input): (usize, f64),
-) -> Result<(Vec<f64>, usize), EngineError> {
+) -> Result<usize, EngineError> {
     for p in per.iter_mut() {
         solve_transposed(c, s.actuated.as_ref(), p.a.iter().copied(), &mut p.y, (step, input))?;
         unit_reactions(m, c, (&s.offsets, units), &p.y, &mut s.driving, &mut p.reactions);
     }
-    fixed_point(per, (tol, deadline), (step, input), |f, next| {
+    fixed_point(per, (tol, deadline, magnitudes), (step, input), |f, next| {
         for (k, unit) in units.iter().enumerate() {
             let mut r = loads[k];
             for (p, f) in per.iter().zip(f) {
@@ -317,11 +330,11 @@ fn iterated(
     s: &mut Scratch,
     (units, per): (&[friction::Unit], &[PerUnit]),
     loads: &[Reaction],
-    (tol, deadline): (f64, &Deadline),
+    (tol, deadline, magnitudes): (f64, &Deadline, &mut Magnitudes),
     at: (usize, f64),
-) -> Result<(Vec<f64>, usize), EngineError> {
+) -> Result<usize, EngineError> {
     let (mut b, mut reactions) = (Vec::new(), Vec::new());
-    fixed_point(per, (tol, deadline), at, |f, next| {
+    fixed_point(per, (tol, deadline, magnitudes), at, |f, next| {
         let solved = if f.iter().all(|f| *f == 0.0) {
             loads
         } else {
@@ -341,26 +354,32 @@ fn iterated(
 }
 
 /// f from 0 by `pass` (g(f) into its second argument) until no f_k·|a_k|∞
-/// changes by more than `tol`: f and the passes.
+/// changes by more than `tol`: f in `magnitudes.f`, and the passes.
 fn fixed_point(
     per: &[PerUnit],
-    (tol, deadline): (f64, &Deadline),
+    (tol, deadline, magnitudes): (f64, &Deadline, &mut Magnitudes),
     (step, input): (usize, f64),
     mut pass: impl FnMut(&[f64], &mut [f64]) -> Result<(), EngineError>,
-) -> Result<(Vec<f64>, usize), EngineError> {
-    let sizes: Vec<f64> = per.iter().map(|p| p.a.iter().fold(0.0f64, |a, v| a.max(v.abs()))).collect();
-    let (mut f, mut next) = (vec![0.0; per.len()], vec![0.0; per.len()]);
+) -> Result<usize, EngineError> {
+    let Magnitudes { f, next, sizes } = magnitudes;
+    sizes.clear();
+    sizes.extend(per.iter().map(|p| p.a.iter().fold(0.0f64, |a, v| a.max(v.abs()))));
+    for v in [&mut *f, &mut *next] {
+        v.clear();
+        v.resize(per.len(), 0.0);
+    }
     for passes in 1..=friction::MAX_ITERATIONS {
         // The clock read every 8th pass (most positions take one or two;
         // a read was 1.4 % of the library cam's position).
         if passes % 8 == 0 {
             deadline.check(|| Progress::Friction { step })?;
         }
-        pass(&f, &mut next)?;
-        let change = f.iter().zip(&next).zip(&sizes).map(|((a, b), s)| (a - b).abs() * s).fold(0.0, f64::max);
-        std::mem::swap(&mut f, &mut next);
+        pass(f, next)?;
+        let change =
+            f.iter().zip(next.iter()).zip(sizes.iter()).map(|((a, b), s)| (a - b).abs() * s).fold(0.0, f64::max);
+        std::mem::swap(f, next);
         if change <= tol {
-            return Ok((f, passes));
+            return Ok(passes);
         }
     }
     Err(EngineError::FrictionDiverged { step, input })

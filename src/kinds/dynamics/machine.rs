@@ -12,7 +12,7 @@ use crate::kinds::mechanism::motion::BodyPosition;
 use crate::kinds::mechanism::track::{PointState, TrackDto, Tracked, resolve, states};
 use crate::kinds::mechanism::{Assembled, MechanismDto, coordinate};
 use crate::kinds::mechanism::{
-    ContactDto, EnergyDto, InputDto, Inputs, LoadDto, ReactionDto, annotate, convert_loads, names,
+    ContactDto, EnergyDto, InputDto, Inputs, LoadDto, Names, ReactionDto, Reactions, convert_loads,
 };
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
@@ -182,7 +182,7 @@ pub struct InputState {
 }
 
 /// The mechanism at one sample (the same instants as `samples`).
-#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[derive(Clone, Debug, Serialize, ToSchema)]
 pub struct MachineSample {
     pub t: f64,
     /// Every input, in the order given.
@@ -190,7 +190,8 @@ pub struct MachineSample {
     /// Every moving body's position (the paths and drawings of the plots).
     pub bodies: Vec<BodyPosition>,
     /// Joint reactions (the force body `by` exerts on body `on`), when asked.
-    pub reactions: Vec<ReactionDto>,
+    #[schema(value_type = Vec<ReactionDto>)]
+    pub reactions: Reactions,
     /// Largest |Φ| of the joint constraints at the sample, m or rad.
     pub constraint_residual: f64,
     pub energy: EnergyDto,
@@ -203,7 +204,7 @@ pub struct MachineSample {
 }
 
 /// What the mechanism form adds to a dynamics result.
-#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[derive(Clone, Debug, Serialize, ToSchema)]
 pub struct MachineDynamics {
     /// Degrees of freedom at the start (one input each).
     pub dof: usize,
@@ -228,7 +229,8 @@ pub struct MachineDynamics {
 
 impl MachineDynamics {
     pub(super) fn new(s: &MechanismSolution, m: &Mechanism, report: Report) -> Self {
-        let (joint_names, body_names) = (&names(&report.joint_names), &names(&report.body_names));
+        let names = Names::new(&report.joint_names, &report.body_names);
+        let (joint_names, body_names) = (&names.joints, &names.bodies);
         let points =
             |motion: &Option<Motion>| motion.as_ref().map(|k| states(m, &report.tracked, [&k.q, &k.qd, &k.qdd]));
         let samples = s
@@ -252,16 +254,11 @@ impl MachineDynamics {
                     .zip(body_names.iter().skip(1))
                     .map(|(p, body)| BodyPosition { body: body.clone(), x: p[0], y: p[1], theta: p[2] })
                     .collect(),
-                reactions: {
-                    let mut list: Vec<ReactionDto> =
-                        d.reactions.iter().map(|r| ReactionDto::new(r, joint_names, body_names)).collect();
-                    annotate(&mut list, &d.contacts, m, joint_names);
-                    list
-                },
+                reactions: Reactions::new(&names, &d.reactions, &d.contacts, m),
                 contacts: (!d.contacts.is_empty())
                     .then(|| d.contacts.iter().map(|c| ContactDto::new(c, joint_names)).collect()),
                 constraint_residual: d.constraint_residual,
-                energy: EnergyDto::new(d.energy.clone(), body_names),
+                energy: EnergyDto::new(d.energy.clone(), body_names, &names.moving),
                 points: points(&d.motion),
             })
             .collect();

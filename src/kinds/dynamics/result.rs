@@ -94,7 +94,7 @@ pub struct DynamicsAccuracy {
 }
 
 /// Result of a dynamics job (SI units).
-#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[derive(Clone, Debug, Serialize, ToSchema)]
 pub struct DynamicsResult {
     pub samples: Vec<SampleDto>,
     pub events: Vec<EventDto>,

@@ -18,7 +18,7 @@ use crate::kind::plots::Plots;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::validated;
 use crate::kind::{Kind, Table, unit_in};
-use crate::kinds::mechanism::names;
+use crate::kinds::mechanism::Names;
 use serde_json::Value;
 
 /// Kinetostatics: `POST /v1/kinetostatics`.
@@ -147,13 +147,13 @@ fn compute(
     let deadline = limits.deadline();
     let problem = validated(unknown, request.to_problem(limits))?;
     let joint_names: Vec<String> = problem.mechanism.joints.iter().map(|j| j.name.clone()).collect();
-    let (joints, bodies) = (names(&joint_names), names(&problem.body_names));
+    let names = Names::new(&joint_names, &problem.body_names);
     // Each step written as the result says it as soon as it is solved: the
     // engine refills one step and keeps none.
     let solve_over = |positions: &[Vec<[f64; 3]>]| {
         let mut steps = Vec::with_capacity(positions.len());
         let totals = solve_each(&problem.mechanism, &problem.loads, positions, problem.outputs, &deadline, |s| {
-            steps.push(StepDto::new(s, &problem, &joints, &bodies));
+            steps.push(StepDto::new(s, &problem, &names));
             Ok(())
         })
         .map_err(|e| problem.written.explain(e))?;

@@ -2,14 +2,17 @@
 
 use super::request::Problem;
 use super::shaking::{CounterweightDto, ShakingDto, largest};
-use crate::engine::kinetostatics::{Motion, Reaction, Step, Totals, energy};
+use crate::engine::kinetostatics::{Motion, Step, Totals, energy};
 use crate::engine::model::{Coordinate, Driver, Mechanism};
 use crate::i18n::Msg;
 use crate::kind::notes::Notes;
 use crate::kinds::mechanism::track::{PointState, states};
-use crate::kinds::mechanism::{ByName, ContactDto, Coords, EnergyDto, Name, ReactionDto, annotate, contact_warnings};
+use crate::kinds::mechanism::{
+    ByName, ContactDto, Coords, EnergyDto, Name, Names, ReactionDto, Reactions, contact_warnings,
+};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
+use std::sync::Arc;
 use utoipa::ToSchema;
 
 /// A number for one input, a list (in input order) for several.
@@ -61,14 +64,15 @@ pub struct BodyMotion {
     pub inertia_moment: f64,
 }
 
-#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[derive(Clone, Debug, Serialize, ToSchema)]
 pub struct StepDto {
     #[schema(value_type = Scalars)]
     pub input: Scalars,
     /// Torque (N·m) or force (N) of each input on the second body of its joint.
     #[schema(value_type = Option<Scalars>)]
     pub driving: Option<Scalars>,
-    pub reactions: Option<Vec<ReactionDto>>,
+    #[schema(value_type = Option<Vec<ReactionDto>>)]
+    pub reactions: Option<Reactions>,
     /// I*(φ), one input only.
     pub reduced_inertia: Option<f64>,
     /// M*(φ) of every load, driver excluded.
@@ -195,7 +199,7 @@ impl InputInfo {
 }
 
 /// Result of a kinetostatics job (SI units).
-#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[derive(Clone, Debug, Serialize, ToSchema)]
 pub struct KinetostaticsResult {
     pub inputs: Vec<InputInfo>,
     /// Degrees of freedom from the rank of the constraint Jacobian.
@@ -308,14 +312,11 @@ impl KinetostaticsResult {
 }
 
 impl StepDto {
-    /// The engine's step with the joints' and bodies' names (as [`crate::kinds::mechanism::names`] makes them).
-    pub fn new(s: &Step, p: &Problem, joint_names: &[Name], names: &[Name]) -> Self {
-        let reaction = |r: &Reaction| ReactionDto::new(r, joint_names, names);
-        let mut reactions: Option<Vec<ReactionDto>> =
-            (p.outputs.reactions && !s.singular).then(|| s.reactions.iter().map(reaction).collect());
-        if let Some(r) = reactions.as_mut() {
-            annotate(r, &s.contacts, &p.mechanism, joint_names);
-        }
+    /// The engine's step with the joints' and bodies' names.
+    pub fn new(s: &Step, p: &Problem, n: &Arc<Names>) -> Self {
+        let (joint_names, names) = (&n.joints[..], &n.bodies[..]);
+        let reactions =
+            (p.outputs.reactions && !s.singular).then(|| Reactions::new(n, &s.reactions, &s.contacts, &p.mechanism));
         let contacts = (reactions.is_some() && !s.contacts.is_empty())
             .then(|| s.contacts.iter().map(|c| ContactDto::new(c, joint_names)).collect());
         StepDto {
@@ -324,7 +325,7 @@ impl StepDto {
             reactions,
             reduced_inertia: s.reduced_inertia,
             reduced_torque: s.reduced_torque,
-            energy_contribution: s.energy_shares.as_ref().map(|v| ByName::new(&names[1..], v.iter().copied())),
+            energy_contribution: s.energy_shares.as_ref().map(|v| ByName::ordered(&n.moving, &names[1..], v)),
             jacobian_condition: s.condition,
             scaled_condition: s.scaled_condition,
             singular: s.singular,
@@ -337,7 +338,7 @@ impl StepDto {
                 .kinematics
                 .as_ref()
                 .filter(|_| p.energy)
-                .map(|m| EnergyDto::new(energy(&p.mechanism, &p.loads, &m.q, &m.qd), names)),
+                .map(|m| EnergyDto::new(energy(&p.mechanism, &p.loads, &m.q, &m.qd), names, &n.moving)),
             points: s
                 .kinematics
                 .as_ref()

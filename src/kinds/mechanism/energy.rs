@@ -30,9 +30,10 @@ pub struct PotentialEnergy {
 }
 
 impl EnergyDto {
-    /// The energies of the engine's at (q, q̇), the moving bodies named by `names` (ground first).
-    pub fn new(e: Energy, names: &[Name]) -> Self {
-        let bodies = ByName::new(&names[1..], e.bodies);
+    /// The energies of the engine's at (q, q̇), the moving bodies named by
+    /// `names` (ground first) and written in `order` (of `names[1..]`).
+    pub fn new(e: Energy, names: &[Name], order: &NameOrder) -> Self {
+        let bodies = ByName::ordered(order, &names[1..], &e.bodies);
         EnergyDto {
             kinetic: KineticEnergy { total: e.kinetic, bodies },
             potential: PotentialEnergy { gravity: e.gravity, springs: e.springs },
@@ -49,18 +50,35 @@ pub struct ByName(Vec<(Name, f64)>);
 
 impl ByName {
     /// `values[i]` under `names[i]`; a name given twice keeps its last value, as a map would.
-    pub fn new(names: &[Name], values: impl IntoIterator<Item = f64>) -> Self {
-        let mut pairs: Vec<(Name, f64)> = names.iter().cloned().zip(values).collect();
-        // Stable: a name's values stay in their order, the last one kept.
-        pairs.sort_by(|a, b| a.0.cmp(&b.0));
-        pairs.dedup_by(|later, kept| {
-            let same = later.0 == kept.0;
+    pub fn new(names: &[Name], values: &[f64]) -> Self {
+        Self::ordered(&NameOrder::new(names), names, values)
+    }
+
+    /// As [`ByName::new`], in the `order` of these `names` found once (a
+    /// sweep writes the same names at every position).
+    pub fn ordered(order: &NameOrder, names: &[Name], values: &[f64]) -> Self {
+        Self(order.0.iter().map(|&i| (names[i].clone(), values[i])).collect())
+    }
+}
+
+/// The indices of a list of names in the order [`ByName`] writes them: by
+/// name, each name's last index.
+#[derive(Clone, Debug, Default)]
+pub struct NameOrder(Vec<usize>);
+
+impl NameOrder {
+    pub fn new(names: &[Name]) -> Self {
+        let mut order: Vec<usize> = (0..names.len()).collect();
+        // Stable: a name's indices stay in their order; the last one kept.
+        order.sort_by(|&a, &b| names[a].cmp(&names[b]));
+        order.dedup_by(|later, kept| {
+            let same = names[*later] == names[*kept];
             if same {
-                kept.1 = later.1;
+                *kept = *later;
             }
             same
         });
-        Self(pairs)
+        Self(order)
     }
 }
 
@@ -87,7 +105,7 @@ mod tests {
         let names: Vec<Name> = ["rocker", "crank", "coupler", "crank"].map(Name::new).into();
         let values = [1.0, 2.0, 3.0, 4.0];
         let map: BTreeMap<Name, f64> = names.iter().cloned().zip(values).collect();
-        let list = ByName::new(&names, values);
+        let list = ByName::new(&names, &values);
         let written = serde_json::to_string(&list).unwrap();
         assert_eq!(written, serde_json::to_string(&map).unwrap());
         assert_eq!(written, r#"{"coupler":3.0,"crank":4.0,"rocker":1.0}"#);

@@ -16,11 +16,11 @@ pub mod track;
 
 pub use contact::{CircleDto, CurveDto, LineDto, PolarDto, SplineDto};
 pub use dimensions::{Assembled, DimensionDto};
-pub use energy::{ByName, EnergyDto};
+pub use energy::{ByName, EnergyDto, NameOrder};
 pub use inputs::{InputDto, Inputs, coordinate, machine_parts};
 pub use loads::{LoadDto, LoadType, MAX_LOADS, convert_loads};
 pub use points::{BodyPoint, Coords, DrawnCoords, PointRef};
-pub use reactions::{ContactDto, Name, ReactionDto, annotate, contact_warnings, names};
+pub use reactions::{ContactDto, Name, Names, ReactionDto, Reactions, contact_warnings, names};
 
 use crate::engine::model::{Body, BodyId, Joint, JointKind, Mechanism, Pitch};
 use crate::i18n::Msg;

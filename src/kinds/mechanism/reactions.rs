@@ -1,10 +1,12 @@
 //! A joint reaction as the results say it, with its joint's and bodies'
 //! names, and a contact's state at a step.
 
+use super::NameOrder;
 use crate::engine::kinetostatics::{ContactState, Reaction};
 use crate::engine::model::{JointKind, Mechanism};
 use crate::i18n::Msg;
 use serde::{Deserialize, Serialize};
+use std::sync::Arc;
 use utoipa::ToSchema;
 
 /// A joint's or a body's name in a result, serialized as the string: one
@@ -18,38 +20,109 @@ pub fn names(list: &[String]) -> Vec<Name> {
     list.iter().map(|n| Name::from(n.as_str())).collect()
 }
 
+/// The joints' and the bodies' names (ground first) a job's reactions
+/// refer to, made once and shared by every step's [`Reactions`].
+#[derive(Debug, Default)]
+pub struct Names {
+    pub joints: Vec<Name>,
+    pub bodies: Vec<Name>,
+    /// The order the moving bodies' names (`bodies[1..]`) are written in.
+    pub moving: NameOrder,
+}
+
+impl Names {
+    pub fn new(joints: &[String], bodies: &[String]) -> Arc<Self> {
+        let bodies = names(bodies);
+        let moving = NameOrder::new(bodies.get(1..).unwrap_or_default());
+        Arc::new(Self { joints: names(joints), bodies, moving })
+    }
+}
+
 /// The force body `by` exerts on body `on` at the joint (ground frame) and the
 /// couple about the joint point, the joint's friction included (the force
 /// along a slide, the couple of a pin), so that every body's forces
 /// balance. Null when redundant constraints leave it undetermined.
-#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
-pub struct ReactionDto {
-    #[schema(value_type = String)]
-    pub joint: Name,
-    #[schema(value_type = String)]
-    pub on: Name,
-    #[schema(value_type = String)]
-    pub by: Name,
+#[derive(Clone, Debug, Serialize, ToSchema)]
+pub struct ReactionDto<'a> {
+    pub joint: &'a str,
+    pub on: &'a str,
+    pub by: &'a str,
     pub fx: Option<f64>,
     pub fy: Option<f64>,
     pub moment: Option<f64>,
     /// A prismatic joint with a `length`: the normal forces N₁, N₂ at the
     /// guide's ends (at − L/2 and at + L/2 along the axis), N, on `on`.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub ends: Option<[f64; 2]>,
     /// A contact: the normal force (N ≥ 0 when the bodies press on each other).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub normal: Option<f64>,
     /// A contact: the force along the common tangent (the friction, or the
     /// force rolling needs). A sliding contact that is an input, or an
     /// input's actuator, leaves out the driving effort: it is the
     /// actuator's (in `driving`), acting along the contact's arc length.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub tangential: Option<f64>,
     /// A rolling contact: |tangential|/normal, the least friction coefficient that rolls.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub mu_required: Option<f64>,
     pub determinate: bool,
+}
+
+/// A step's joint reactions, written as a list of [`ReactionDto`]: the
+/// engine's, each contact's with its normal and tangential parts, named
+/// only as they are written (a step of K1 copied and dropped twelve
+/// names).
+#[derive(Clone, Debug)]
+pub struct Reactions {
+    names: Arc<Names>,
+    list: Vec<(Reaction, Option<Parts>)>,
+}
+
+/// A contact's reaction along its normal and its tangent, and for a
+/// rolling one the least friction coefficient that rolls.
+#[derive(Clone, Copy, Debug)]
+struct Parts {
+    normal: f64,
+    tangential: f64,
+    mu_required: Option<f64>,
+}
+
+impl Reactions {
+    /// The engine's `reactions`, each contact's with its state's normal and
+    /// tangential forces (`contacts`); `m` tells a rolling contact.
+    pub fn new(names: &Arc<Names>, reactions: &[Reaction], contacts: &[ContactState], m: &Mechanism) -> Self {
+        let parts = |r: &Reaction| {
+            let c = contacts.iter().find(|c| c.joint == r.joint)?;
+            let rolling = matches!(&m.joints[c.joint].kind, JointKind::Contact(k) if k.rolling);
+            let mu_required = rolling.then(|| c.tangential.abs() / c.normal).filter(|v| v.is_finite());
+            Some(Parts { normal: c.normal, tangential: c.tangential, mu_required })
+        };
+        Self { names: Arc::clone(names), list: reactions.iter().map(|r| (*r, parts(r))).collect() }
+    }
+
+    fn dto<'a>(&'a self, (r, parts): &(Reaction, Option<Parts>)) -> ReactionDto<'a> {
+        let v = |x: f64| r.determinate.then_some(x);
+        ReactionDto {
+            joint: &self.names.joints[r.joint],
+            on: &self.names.bodies[r.on],
+            by: &self.names.bodies[r.by],
+            fx: v(r.fx),
+            fy: v(r.fy),
+            moment: v(r.moment),
+            ends: r.ends.filter(|_| r.determinate),
+            normal: parts.map(|p| p.normal),
+            tangential: parts.map(|p| p.tangential),
+            mu_required: parts.and_then(|p| p.mu_required),
+            determinate: r.determinate,
+        }
+    }
+}
+
+impl Serialize for Reactions {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_seq(self.list.iter().map(|row| self.dto(row)))
+    }
 }
 
 /// A contact joint at a step: where its curves touch and what passes there.
@@ -114,37 +187,6 @@ impl ContactDto {
             jumped: c.jumped,
             penetration: c.penetration,
             state: c.slipping.map(|s| if s { "slipping" } else { "rolling" }.into()),
-        }
-    }
-}
-
-/// The contacts' normal and tangential forces (and, rolling, the friction
-/// they need) in their reactions.
-pub fn annotate(reactions: &mut [ReactionDto], contacts: &[ContactState], m: &Mechanism, joint_names: &[Name]) {
-    for c in contacts {
-        let Some(r) = reactions.iter_mut().find(|r| r.joint == joint_names[c.joint]) else { continue };
-        let rolling = matches!(&m.joints[c.joint].kind, JointKind::Contact(k) if k.rolling);
-        (r.normal, r.tangential) = (Some(c.normal), Some(c.tangential));
-        r.mu_required = rolling.then(|| c.tangential.abs() / c.normal).filter(|v| v.is_finite());
-    }
-}
-
-impl ReactionDto {
-    /// The engine's reaction with its joint and body names.
-    pub fn new(r: &Reaction, joint_names: &[Name], body_names: &[Name]) -> Self {
-        let v = |x: f64| r.determinate.then_some(x);
-        Self {
-            joint: joint_names[r.joint].clone(),
-            on: body_names[r.on].clone(),
-            by: body_names[r.by].clone(),
-            fx: v(r.fx),
-            fy: v(r.fy),
-            moment: v(r.moment),
-            ends: r.ends.filter(|_| r.determinate),
-            normal: None,
-            tangential: None,
-            mu_required: None,
-            determinate: r.determinate,
         }
     }
 }
