@@ -275,3 +275,88 @@ pub fn contact_warnings<'a>(
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::engine::samples::eccentric_cam;
+    use serde_json::json;
+
+    /// Each reaction as the list writes it, against the JSON written out
+    /// from the fields' definitions: names from the job's, null forces and
+    /// no `ends` where it is not determinate, a contact's normal and
+    /// tangential parts, and μ required only where the contact rolls (and
+    /// |F_t|/N is finite). Values exact in binary.
+    #[test]
+    fn every_reaction_is_written_with_its_names_and_its_contact_s_parts() {
+        let mut m = eccentric_cam();
+        let names = Names::new(
+            &["O".into(), "guide".into(), "contact".into()],
+            &["ground".into(), "cam".into(), "follower".into()],
+        );
+        let reaction = |joint: usize, [on, by]: [usize; 2], ends: Option<[f64; 2]>, determinate: bool| Reaction {
+            joint,
+            on,
+            by,
+            fx: 1.5,
+            fy: -2.0,
+            moment: 0.25,
+            ends,
+            determinate,
+        };
+        let list = [
+            reaction(0, [1, 0], None, false),
+            reaction(1, [2, 0], Some([3.0, 4.0]), true),
+            reaction(2, [2, 1], Some([3.0, 4.0]), false),
+            reaction(2, [2, 1], None, true),
+        ];
+        let contact = ContactState {
+            joint: 2,
+            point: [0.0, 0.03],
+            normal: 8.0,
+            tangential: -2.0,
+            sliding_velocity: 0.5,
+            velocities: [[0.0; 2]; 2],
+            curvature_radius: [Some(0.05), None],
+            pressure_angle: Some(0.0),
+            off_end: false,
+            overlap: false,
+            jumped: false,
+            penetration: None,
+            slipping: None,
+        };
+        let forces = json!({"fx": 1.5, "fy": -2.0, "moment": 0.25});
+        let undetermined = json!({"fx": null, "fy": null, "moment": null});
+        let with = |names: [&str; 3], forces: &serde_json::Value, extra: serde_json::Value, determinate: bool| {
+            let mut v = json!({"joint": names[0], "on": names[1], "by": names[2], "determinate": determinate});
+            v.as_object_mut().unwrap().extend(forces.as_object().unwrap().clone());
+            v.as_object_mut().unwrap().extend(extra.as_object().unwrap().clone());
+            v
+        };
+        let sliding = serde_json::to_value(Reactions::new(&names, &list, &[contact], &m)).unwrap();
+        let parts = json!({"normal": 8.0, "tangential": -2.0});
+        let want = |contact_extra: serde_json::Value| {
+            json!([
+                with(["O", "cam", "ground"], &undetermined, json!({}), false),
+                with(["guide", "follower", "ground"], &forces, json!({"ends": [3.0, 4.0]}), true),
+                with(["contact", "follower", "cam"], &undetermined, contact_extra.clone(), false),
+                with(["contact", "follower", "cam"], &forces, contact_extra, true),
+            ])
+        };
+        assert_eq!(sliding, want(parts.clone()));
+        if let JointKind::Contact(c) = &mut m.joints[2].kind {
+            c.rolling = true;
+        }
+        let rolling = serde_json::to_value(Reactions::new(&names, &list, &[contact], &m)).unwrap();
+        assert_eq!(rolling, want(json!({"normal": 8.0, "tangential": -2.0, "mu_required": 0.25})), "|−2|/8");
+        let separate = ContactState { normal: 0.0, ..contact };
+        let no_mu = serde_json::to_value(Reactions::new(&names, &list, &[separate], &m)).unwrap();
+        assert_eq!(no_mu, want(json!({"normal": 0.0, "tangential": -2.0})), "|−2|/0 is not finite: no μ");
+        // The serialized text keeps the fields' order of the list's schema.
+        let text = serde_json::to_string(&Reactions::new(&names, &list[1..2], &[], &m)).unwrap();
+        assert_eq!(
+            text,
+            r#"[{"joint":"guide","on":"follower","by":"ground","fx":1.5,"fy":-2.0,"moment":0.25,"ends":[3.0,4.0],"determinate":true}]"#
+        );
+    }
+}
