@@ -18,6 +18,8 @@ mod actuators;
 mod contacts;
 mod friction;
 mod loads;
+mod magnitudes;
+mod multipliers;
 mod reactions;
 mod summary;
 
@@ -34,8 +36,9 @@ use super::kinematics::{Conditions, sweep_each};
 use super::mobility::{Mobility, mobility as mobility_at};
 use super::model::{BodyId, Mechanism};
 use super::{Deadline, EngineError};
-use actions::{Actions, Scratch};
+use actions::Actions;
 use actuators::Actuated;
+use multipliers::Scratch;
 
 /// What to compute at every position.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
