@@ -4,6 +4,7 @@
 
 use super::design::{Cam, CamError, Lift, Sample};
 use super::least::Least;
+use crate::engine::numeric::minimum::brent_min;
 use crate::engine::numeric::roots::brent;
 use crate::engine::{Deadline, EngineError, Progress};
 use std::f64::consts::TAU;
@@ -35,9 +36,10 @@ pub fn turn(cam: &Cam, lifts: &[(f64, [f64; 4])]) -> Result<Vec<Sample>, CamErro
 /// from ([`least`](super::least)), kept where it passes the test; where it
 /// fails, or where there is no closed form, the first of 64 radii from it
 /// to the top of the range [`Cam::base_range`] that meets the test
-/// ([`first_meeting`]), then
-/// the root of the excess in the cell below it by Brent's method to 1e-12
-/// of the radius (the radius returned meets it); None where none does.
+/// ([`first_meeting`]) — where none does, the radius of the least excess
+/// ([`least_measure`]) if that meets it — then the root of the excess in
+/// the cell below it by Brent's method to 1e-12 of the radius (the radius
+/// returned meets it); None where none does.
 /// The `deadline` is read before each radius is tried.
 pub fn smallest_base(
     cam: Cam,
@@ -58,14 +60,30 @@ pub fn smallest_base(
     let (lo, hi) = cam.base_range(scale);
     let lo = match closed(lo) {
         Least::Unmet => return Ok(None),
-        Least::Base(base) if over(base)? <= 0.0 => return Ok(Some(base)),
-        Least::Base(base) | Least::Search(base) => base.max(lo),
+        // Kept where it is the boundary: it meets the test and 1e-7 less does not. Else the search
+        // starts from the least radius: an oscillating follower's pressure angle falls and then rises
+        // with the radius (the rise's and the fall's bind in turn), so the closed form's radius is
+        // not a lower bound of those that meet it.
+        Least::Base(base) if over(base)? <= 0.0 && over(base * (1.0 - 1e-7))? > 0.0 => return Ok(Some(base)),
+        Least::Base(_) => lo,
+        Least::Search(base) => base.max(lo),
     };
     let grid = |k: usize| lo + (hi - lo) * k as f64 / GRID as f64;
-    let Some(meets) = first_meeting(&|k| over(grid(k)))? else { return Ok(None) };
-    let (mut a, b) = (grid(meets - 1), grid(meets));
+    let (mut a, b) = match first_meeting(&|k| over(grid(k)))? {
+        Some(meets) => (grid(meets - 1), grid(meets)),
+        // The radii that meet it may be a stretch narrower than the grid's cell (an oscillating
+        // follower's pressure angle near its least): where the least excess meets it, below there.
+        None => match least_measure(cam, lifts, |c| over(c.base).unwrap_or(f64::INFINITY), deadline)? {
+            Some([base, least]) if least <= 0.0 => (lo.max(base - (hi - lo) / GRID as f64), base),
+            _ => return Ok(None),
+        },
+    };
     // Brent needs a finite excess at both ends: bisect a turn that cannot be made out of the cell's lower end.
     let mut at_a = over(a)?;
+    if at_a <= 0.0 {
+        // The range's least radius (untried by the grid) meets it already.
+        return Ok(Some(a));
+    }
     while !at_a.is_finite() && b - a > 1e-12 * b {
         let mid = 0.5 * (a + b);
         match over(mid)? {
@@ -78,6 +96,43 @@ pub fn smallest_base(
         return Ok(Some(b));
     }
     refine(&over, b, a, deadline).map(Some)
+}
+
+/// Where no radius meets a test: the radius of the range
+/// [`Cam::base_range`] whose `measure` (such as the largest pressure angle)
+/// is least, and that least, [radius, measure]: the range's radii 0..=64,
+/// then Brent's method between the best one's neighbours to 1e-9 of the
+/// range. None where no turn at any of them can be made. The `deadline`
+/// is read before each radius.
+pub fn least_measure(
+    cam: Cam,
+    lifts: &[(f64, [f64; 4])],
+    measure: impl Fn(&Cam) -> f64,
+    deadline: &Deadline,
+) -> Result<Option<[f64; 2]>, EngineError> {
+    let scale = lifts.iter().map(|(_, l)| l[0].abs()).fold(1e-6, f64::max);
+    let (lo, hi) = cam.base_range(scale);
+    let failed = std::cell::Cell::new(None);
+    let at = |base: f64| {
+        if let Err(e) = deadline.check(|| Progress::CamSize { tried: 0 }) {
+            failed.set(Some(e));
+            return f64::INFINITY;
+        }
+        let cam = Cam { base, ..cam };
+        if turn(&cam, lifts).is_ok() { measure(&cam) } else { f64::INFINITY }
+    };
+    let grid = |k: usize| lo + (hi - lo) * k as f64 / GRID as f64;
+    let values: Vec<f64> = (0..=GRID).map(|k| at(grid(k))).collect();
+    let best = (0..=GRID).filter(|&k| values[k].is_finite()).min_by(|&a, &b| values[a].total_cmp(&values[b]));
+    let found = best.map(|k| {
+        let bracket = [grid(k.saturating_sub(1)), grid((k + 1).min(GRID))];
+        let (base, value) = brent_min(at, bracket, grid(k), values[k], 1e-9 * (hi - lo).max(f64::MIN_POSITIVE));
+        [base, value]
+    });
+    match failed.take() {
+        Some(e) => Err(e),
+        None => Ok(found),
+    }
 }
 
 /// Radii the range is divided in, and every how many of them the search

@@ -20,7 +20,7 @@ use crate::engine::Deadline;
 use crate::engine::cam::design::{Cam, CamError, Guide};
 use crate::engine::cam::extremes::{self, Extremes, scan};
 use crate::engine::cam::least::least_base;
-use crate::engine::cam::sizing::{lifts, smallest_base, turn};
+use crate::engine::cam::sizing::{least_measure, lifts, smallest_base, turn};
 use crate::i18n::Msg;
 use crate::kind::limits::Limits;
 use crate::kind::plots::Plots;
@@ -181,14 +181,34 @@ fn sized(
         over_angle.max(under_rho).max(undercut)
     };
     let closed = |lo: f64| least_base(&p.cam, &lift, &breaks, angle, rho, lo);
-    let base = smallest_base(p.cam, lifts, closed, excess, deadline)
-        .map_err(|e| engine_failure(e, "/size"))?
-        .ok_or_else(|| {
-            // A translating follower is tried up to 100 times its lift; an oscillating one wherever its arm reaches.
-            let id = if matches!(p.cam.guide, Guide::Oscillating { .. }) { "cam-no-base-arm" } else { "cam-no-base" };
-            ApiError::Invalid(vec![FieldError::said("/size", Msg::new(id))])
-        })?;
+    let base = smallest_base(p.cam, lifts, closed, excess, deadline).map_err(|e| engine_failure(e, "/size"))?;
+    let Some(base) = base else {
+        let least_angle = |cam: &Cam| extremes::of(cam, &lift, &grid).max_pressure_angle.value;
+        let best = match angle {
+            Some(asked) => least_measure(p.cam, lifts, least_angle, deadline)
+                .map_err(|e| engine_failure(e, "/size"))?
+                .filter(|[_, least]| *least > asked),
+            None => None,
+        };
+        return Err(unmet(p.cam.guide, best));
+    };
     Ok((base, last.get().filter(|(tested, _)| *tested == base).map(|(_, e)| e)))
+}
+
+/// No base radius meets the size: a translating follower is tried up to
+/// 100 times its lift, an oscillating one wherever its arm reaches. Where
+/// the pressure angle asked is under the least any radius gives, that
+/// least ([radius, angle]), rounded up to 0.01° so that asking for it is
+/// met, and the radius that gives it.
+fn unmet(guide: Guide, best: Option<[f64; 2]>) -> ApiError {
+    let arm = if matches!(guide, Guide::Oscillating { .. }) { "-arm" } else { "" };
+    let msg = match best {
+        Some([base, angle]) => Msg::new(if arm.is_empty() { "cam-no-base-best" } else { "cam-no-base-arm-best" })
+            .num("angle", (angle.to_degrees() * 100.0).ceil() / 100.0)
+            .num("base", (base * 1e4).round() / 10.0),
+        None => Msg::new(if arm.is_empty() { "cam-no-base" } else { "cam-no-base-arm" }),
+    };
+    ApiError::Invalid(vec![FieldError::said("/size", msg)])
 }
 
 /// A cam that cannot be made, at its field.
