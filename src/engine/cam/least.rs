@@ -13,11 +13,13 @@
 //!   √(d₀² + e²), R_b = R_p − r_r.
 //! - A translating flat face: φ = 0, and its radius of curvature R_b + s +
 //!   s″ ≥ ρ_a wherever R_b ≥ ρ_a − s − s″: R_b = max(ρ_a − s − s″).
-//! - An oscillating roller: with u = ∂P/∂s/L, tan φ = (L(1 + s′) − a cos ψ)
-//!   /(a sin ψ); with c = L(1 + s′)/a, γ = atan k, m = √(1 + k²) and α =
-//!   acos(c/m), |φ| ≤ φ_a holds for ψ in [|α − γ|, min(α + γ, 2π − α −
-//!   γ)] (none where |c| > m), so ψ₀ = ψ − s ≥ max(|α − γ| − s) and R_p² =
-//!   a² + L² − 2aL cos ψ₀ grows with ψ₀.
+//! - An oscillating roller: with u = ∂P/∂s/L, tan φ = (L(1 + σs′) − a cos ψ)
+//!   /(a sin ψ), σ = +1 counter-clockwise and −1 clockwise (the arm turns
+//!   with the cam or against it); with c = L(1 + σs′)/a, γ = atan k,
+//!   m = √(1 + k²) and α = acos(c/m), |φ| ≤ φ_a holds for ψ in
+//!   [|α − γ|, min(α + γ, 2π − α − γ)] (none where |c| > m), so
+//!   ψ₀ = ψ − s ≥ max(|α − γ| − s) and R_p² = a² + L² − 2aL cos ψ₀ grows
+//!   with ψ₀.
 //! - An oscillating flat face, or a roller's radius of curvature: no such
 //!   bound (the pitch curve's curvature is not monotone in one quantity at
 //!   an angle): [`Least::Search`], the caller's search over radii.
@@ -86,7 +88,7 @@ pub fn least_base(cam: &Cam, lift: Lift, breaks: &[f64], angle: Option<f64>, rho
             Least::Base((d0.hypot(e) - r).max(lo))
         }
         (Follower::Roller(r), Guide::Oscillating { pivot, arm }, Some(phi)) => {
-            oscillating(lift, &most, phi, [pivot, arm, r], lo)
+            oscillating(lift, &most, phi, [pivot, arm, r, side], lo)
         }
         _ => Least::Search(lo),
     }
@@ -94,12 +96,12 @@ pub fn least_base(cam: &Cam, lift: Lift, breaks: &[f64], angle: Option<f64>, rho
 
 /// An oscillating roller's least base radius for |φ| ≤ `phi` ([module](self)):
 /// pivot a, arm L, roller r_r.
-fn oscillating(lift: Lift, most: Most, phi: f64, [a, l, r]: [f64; 3], lo: f64) -> Least {
+fn oscillating(lift: Lift, most: Most, phi: f64, [a, l, r, side]: [f64; 4], lo: f64) -> Least {
     let (gamma, m) = (phi.tan().atan(), phi.tan().hypot(1.0));
     // ψ's interval at θ, [from, to], or None where no ψ meets the angle.
     let window = |t: f64| {
         let [s, s1, ..] = lift(t);
-        let q = l * (1.0 + s1) / (a * m);
+        let q = l * (1.0 + side * s1) / (a * m);
         if q.is_nan() || q.abs() > 1.0 {
             return None;
         }
@@ -161,6 +163,50 @@ mod tests {
             let (at, below) = (drawn(&flat, base, &lift, &breaks).1, drawn(&flat, base - 1e-9, &lift, &breaks).1);
             assert!((at - rho).abs() < 1e-12 && at >= rho, "ρ {at} at {base} for {rho}");
             assert!(below < rho);
+        }
+    }
+
+    /// The trial's swing (pivot 120 mm, arm 90 mm, roller 10 mm; a
+    /// cycloidal rise of 20° over 120°, a dwell of 60°, a harmonic fall
+    /// over 90°): its rise and fall differ, so each sense has its own
+    /// radius, each the least that meets 24° and 30° (the closed form had
+    /// taken the counter-clockwise radius for both: 55.4 mm for 24°, where
+    /// 53.7 mm meets it clockwise).
+    #[test]
+    fn an_oscillating_roller_is_sized_for_its_own_sense() {
+        let seg = |law, start: f64, span: f64, from, to| crate::engine::cam::Segment {
+            law,
+            start: start.to_radians(),
+            span: span.to_radians(),
+            from,
+            to,
+        };
+        let h = 20f64.to_radians();
+        let p = crate::engine::cam::Program::new(vec![
+            seg(crate::engine::cam::Law::Cycloidal, 0.0, 120.0, 0.0, h),
+            seg(crate::engine::cam::Law::Dwell, 120.0, 60.0, h, h),
+            seg(crate::engine::cam::Law::Harmonic, 180.0, 90.0, h, 0.0),
+            seg(crate::engine::cam::Law::Dwell, 270.0, 90.0, 0.0, 0.0),
+        ])
+        .expect("a turn");
+        let (lift, breaks) = (|t: f64| p.lift(t), p.starts());
+        for phi in [24f64.to_radians(), 30f64.to_radians()] {
+            let radii = [false, true].map(|clockwise| {
+                let cam = Cam {
+                    follower: Follower::Roller(0.01),
+                    guide: Guide::Oscillating { pivot: 0.12, arm: 0.09 },
+                    base: 0.0,
+                    clockwise,
+                };
+                let found = least_base(&cam, &lift, &breaks, Some(phi), None, 0.02);
+                let Least::Base(base) = found else { panic!("{found:?}") };
+                let (at, below) =
+                    (drawn(&cam, base, &lift, &breaks).0, drawn(&cam, base * (1.0 - 1e-7), &lift, &breaks).0);
+                assert!((at - phi).abs() < 1e-9 * phi && at <= phi, "{cam:?}: {} at {base}", at.to_degrees());
+                assert!(below > phi, "{cam:?}: {} below {base}", below.to_degrees());
+                base
+            });
+            assert!((radii[0] - radii[1]).abs() > 1e-3, "{radii:?}");
         }
     }
 

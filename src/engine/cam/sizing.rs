@@ -60,13 +60,8 @@ pub fn smallest_base(
     let (lo, hi) = cam.base_range(scale);
     let lo = match closed(lo) {
         Least::Unmet => return Ok(None),
-        // Kept where it is the boundary: it meets the test and 1e-7 less does not. Else the search
-        // starts from the least radius: an oscillating follower's pressure angle falls and then rises
-        // with the radius (the rise's and the fall's bind in turn), so the closed form's radius is
-        // not a lower bound of those that meet it.
-        Least::Base(base) if over(base)? <= 0.0 && over(base * (1.0 - 1e-7))? > 0.0 => return Ok(Some(base)),
-        Least::Base(_) => lo,
-        Least::Search(base) => base.max(lo),
+        Least::Base(base) if over(base)? <= 0.0 => return Ok(Some(base)),
+        Least::Base(base) | Least::Search(base) => base.max(lo),
     };
     let grid = |k: usize| lo + (hi - lo) * k as f64 / GRID as f64;
     let (mut a, b) = match first_meeting(&|k| over(grid(k)))? {
@@ -74,7 +69,7 @@ pub fn smallest_base(
         // The radii that meet it may be a stretch narrower than the grid's cell (an oscillating
         // follower's pressure angle near its least): where the least excess meets it, below there.
         None => match least_measure(cam, lifts, |c| over(c.base).unwrap_or(f64::INFINITY), deadline)? {
-            Some([base, least]) if least <= 0.0 => (lo.max(base - (hi - lo) / GRID as f64), base),
+            Some([base, least]) if least <= 0.0 && base > lo => (lo.max(base - (hi - lo) / GRID as f64), base),
             _ => return Ok(None),
         },
     };
