@@ -67,9 +67,13 @@ pub fn smallest_base(
     let (mut a, b) = match first_meeting(&|k| over(grid(k)))? {
         Some(meets) => (grid(meets - 1), grid(meets)),
         // The radii that meet it may be a stretch narrower than the grid's cell (an oscillating
-        // follower's pressure angle near its least): where the least excess meets it, below there.
+        // follower's pressure angle near its least): where the least excess meets it, between
+        // there and the grid's radius below it (which does not, or is the range's least).
         None => match least_measure(cam, lifts, |c| over(c.base).unwrap_or(f64::INFINITY), deadline)? {
-            Some([base, least]) if least <= 0.0 && base > lo => (lo.max(base - (hi - lo) / GRID as f64), base),
+            Some([base, least]) if least <= 0.0 && base > lo => {
+                let below = ((base - lo) / (hi - lo) * GRID as f64).floor() as usize;
+                (grid(below.min(GRID - 1)), base)
+            }
             _ => return Ok(None),
         },
     };
@@ -226,5 +230,21 @@ mod tests {
         }
         assert_eq!(first_meeting(&|_| Ok(1.0)).unwrap(), None);
         assert_eq!(first_meeting(&|_| Ok(f64::INFINITY)).unwrap(), None);
+    }
+
+    /// A test met only within 0.1 mm of 0.5 m, a stretch far narrower than
+    /// the grid's 31 mm cell (the peer's roller, up to 100 times its 20 mm
+    /// lift): the least radius that meets it, 0.4999 m to 1e-12 of it; a
+    /// dip that never meets it, none.
+    #[test]
+    fn a_stretch_narrower_than_the_grid_s_cell_is_found() {
+        let p = super::super::sample::rise_dwell_fall();
+        let lifts = lifts(&|t| p.lift(t), 256, &Deadline::none()).unwrap();
+        let cam = super::super::sample::roller();
+        let search = |_: f64| Least::Search(0.0);
+        let narrow = |depth: f64| move |c: &Cam| (c.base - 0.5).abs() - depth;
+        let found = smallest_base(cam, &lifts, search, narrow(1e-4), &Deadline::none()).unwrap();
+        assert!(found.is_some_and(|r| (r - 0.4999).abs() <= 1e-12 * 0.5), "{found:?}");
+        assert_eq!(smallest_base(cam, &lifts, search, narrow(-1e-4), &Deadline::none()).unwrap(), None);
     }
 }

@@ -201,12 +201,12 @@ fn sized(
 /// least ([radius, angle]), rounded up to 0.01° so that asking for it is
 /// met, and the radius that gives it.
 fn unmet(guide: Guide, best: Option<[f64; 2]>) -> ApiError {
-    let arm = if matches!(guide, Guide::Oscillating { .. }) { "-arm" } else { "" };
+    let oscillating = matches!(guide, Guide::Oscillating { .. });
     let msg = match best {
-        Some([base, angle]) => Msg::new(if arm.is_empty() { "cam-no-base-best" } else { "cam-no-base-arm-best" })
+        Some([base, angle]) => Msg::new(if oscillating { "cam-no-base-arm-best" } else { "cam-no-base-best" })
             .num("angle", (angle.to_degrees() * 100.0).ceil() / 100.0)
             .num("base", (base * 1e4).round() / 10.0),
-        None => Msg::new(if arm.is_empty() { "cam-no-base" } else { "cam-no-base-arm" }),
+        None => Msg::new(if oscillating { "cam-no-base-arm" } else { "cam-no-base" }),
     };
     ApiError::Invalid(vec![FieldError::said("/size", msg)])
 }
