@@ -69,7 +69,7 @@ pub fn smallest_base(
         // The radii that meet it may be a stretch narrower than the grid's cell (an oscillating
         // follower's pressure angle near its least): where the least excess meets it, between
         // there and the grid's radius below it (which does not, or is the range's least).
-        None => match least_measure(cam, lifts, |c| over(c.base).unwrap_or(f64::INFINITY), deadline)? {
+        None => match least_measure(cam, lifts, &excess, deadline)? {
             Some([base, least]) if least <= 0.0 && base > lo => {
                 let below = ((base - lo) / (hi - lo) * GRID as f64).floor() as usize;
                 (grid(below.min(GRID - 1)), base)
