@@ -114,6 +114,13 @@ pub struct MechanismSolution {
     /// The rolling contacts with friction (joints) that slip from the
     /// start: μN does not cover the force rolling needs there.
     pub slipping_from_start: Vec<usize>,
+    /// DOP853 or Radau IIA was asked and met a singular position at this
+    /// time, s, where its steps leave the mechanism's branch (IFToMM A02's
+    /// parallelograms folded into antiparallelograms at their first flat
+    /// position: DOP853 at 1e-9 then ran to the budget); the run was made
+    /// again from the start with Dormand–Prince, which holds the fold (the
+    /// steps and evaluations are its run's).
+    pub integrator_replaced_at: Option<f64>,
 }
 
 /// Integrates the mechanism from its initial state.
@@ -125,16 +132,56 @@ pub fn solve(p: &MechanismProblem) -> Result<MechanismSolution, DynamicsError> {
 /// dense form throughout otherwise: a cross-check of the two). The sparse
 /// form holds the folds at singular positions itself; where its steps fail
 /// there (the step size underflows) the run is made again with the dense
-/// form near them, as before the hold.
+/// form near them, as before the hold. Where DOP853 or Radau IIA was asked
+/// and meets a fold, the run is made again with Dormand–Prince
+/// ([`Equations::fold_stops`], [`MechanismSolution::integrator_replaced_at`]).
 pub fn solve_in(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution, DynamicsError> {
+    match held_or_dense(p, sparse) {
+        Err(Short::Fold(t)) => {
+            let again = MechanismProblem { integrator: Some(Integrator::Dopri5), ..p.clone() };
+            let mut s = held_or_dense(&again, sparse).map_err(Short::error)?;
+            s.integrator_replaced_at = Some(t);
+            Ok(s)
+        }
+        other => other.map_err(Short::error),
+    }
+}
+
+/// [`attempt`] holding the folds in the sparse form, else in the dense form.
+fn held_or_dense(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution, Short> {
     match attempt(p, sparse, true) {
-        Err(DynamicsError::Integration { .. }) if sparse && !p.deadline.expired() => attempt(p, sparse, false),
+        Err(Short::Failed(DynamicsError::Integration { .. })) if sparse && !p.deadline.expired() => {
+            attempt(p, sparse, false)
+        }
         other => other,
     }
 }
 
+/// Why one run stopped short.
+enum Short {
+    Failed(DynamicsError),
+    /// The integrator asked met a fold at this time, s ([`Equations::fold_stops`]).
+    Fold(f64),
+}
+
+impl From<DynamicsError> for Short {
+    fn from(e: DynamicsError) -> Self {
+        Self::Failed(e)
+    }
+}
+
+impl Short {
+    /// The error to report; a fold is never one (Dormand–Prince goes on through it).
+    fn error(self) -> DynamicsError {
+        match self {
+            Self::Failed(e) => e,
+            Self::Fold(t) => DynamicsError::Integration { t, reason: Failure::SingularMotion },
+        }
+    }
+}
+
 /// One run, the sparse form holding folds if `hold`.
-fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSolution, DynamicsError> {
+fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSolution, Short> {
     let m = &p.mechanism;
     let initial = |reason: Start| DynamicsError::Initial { reason };
     let inputs: Vec<[f64; 3]> = p.initial.iter().map(|[a, w]| [*a, *w, 0.0]).collect();
@@ -144,11 +191,11 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         .map_err(|e| if p.deadline.expired() { over(0.0, 0) } else { initial(Start::Engine(e)) })?
         .remove(0);
     if start.singular {
-        return Err(initial(Start::SingularInputs));
+        return Err(initial(Start::SingularInputs).into());
     }
     let mobility = mobility(m, &start.q);
     if mobility.dof != m.drivers.len() {
-        return Err(initial(Start::Dof { dof: mobility.dof, inputs: m.drivers.len() }));
+        return Err(initial(Start::Dof { dof: mobility.dof, inputs: m.drivers.len() }).into());
     }
     let n = m.n_coordinates();
     let mass = masses(m);
@@ -174,6 +221,7 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         plain: (sparse.is_none() && grips.is_empty() && mobility.redundant_constraints == 0).then(Default::default),
         sparse: sparse.map(RefCell::new),
         held_at: RefCell::new(Vec::new()),
+        fold_stops: p.integrator.is_some_and(|i| i != Integrator::Dopri5),
         dense: Default::default(),
         energy: energy.filter(|_| grips.is_empty()),
         energy_held: Default::default(),
@@ -184,14 +232,18 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         grips,
     };
     if dae.motion(0.0, &start.q, &start.qd, false).is_none() {
-        return Err(initial(Start::MovesNoMass));
+        return Err(initial(Start::MovesNoMass).into());
     }
     let settings = settings(p, &start.qd, &lengths);
     let mut y0 = start.q.clone();
     y0.extend(&start.qd);
     y0.push(0.0);
     dae.settle(&y0);
-    let run = run(&dae, y0, &settings)?;
+    let run = run(&dae, y0, &settings);
+    if let Some(&t) = dae.held_at.borrow().first().filter(|_| dae.fold_stops) {
+        return Err(Short::Fold(t));
+    }
+    let run = run?;
     let states = &run.states;
     let t0 = states.first().map_or(0.0, |(_, y)| dae.kinetic(&y[n..2 * n]));
     // W: −ΔV where the loads have a potential and nothing dissipates (no
@@ -204,7 +256,7 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
     let mut peak = 0.0f64;
     for (t, y) in states {
         if p.deadline.expired() {
-            return Err(over(run.t_end, run.attempted));
+            return Err(over(run.t_end, run.attempted).into());
         }
         *dae.held.borrow_mut() = dae.grips_at(*t);
         let detail = sample(&dae, &mobility, *t, y)?;
@@ -246,6 +298,7 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         dense_evaluations,
         energy_conserved,
         energy_held_steps,
+        integrator_replaced_at: None,
         slipping_from_start: (dae.grips.iter().zip(&dae.start.modes))
             .filter(|(_, mode)| **mode != Mode::Roll)
             .map(|(g, _)| g.joint)

@@ -53,7 +53,9 @@ impl Integrator {
     /// docs/BENCHMARKS.md): DOP853 from 1e-5 down. A mechanism's dy/dt jumps
     /// where its rows are held or dropped (singular positions, changes of
     /// rank), where a high order gains nothing and its 12 stages cost more
-    /// at every rejected step: Dormand–Prince unless asked.
+    /// at every rejected step: Dormand–Prince unless asked. (Asked, DOP853
+    /// and Radau IIA leave a mechanism's branch at a fold: there the run is
+    /// made again with Dormand–Prince, [`mechanism::solve_in`].)
     pub fn auto(tolerance: f64, smooth: bool) -> Self {
         if smooth && tolerance <= AUTO_DOP853 { Self::Dop853 } else { Self::Dopri5 }
     }

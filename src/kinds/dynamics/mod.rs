@@ -93,7 +93,11 @@ pub struct DynamicsRequest {
 /// `machine` Dormand–Prince (its accelerations jump near singular
 /// positions, where a high order gains nothing); either, finding its steps
 /// held by stability (15 steps beyond its stability interval), hands the
-/// run to `radau5` from the start (`accuracy.stiff_at` says when). See
+/// run to `radau5` from the start (`accuracy.stiff_at` says when). A
+/// `machine` asked to run with `dop853` or `radau5` that meets a singular
+/// position (a parallelogram lying flat) is run again with `dopri5`, whose
+/// steps the fold's hold keeps on the mechanism's branch
+/// (`accuracy.integrator_replaced_at` and a warning say when). See
 /// docs/BENCHMARKS.md.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
 #[serde(rename_all = "lowercase")]
@@ -161,6 +165,7 @@ impl Kind for Dynamics {
         ("/accuracy/energy_residual", "1"),
         ("/accuracy/estimated_error", "rad"),
         ("/accuracy/function_evaluations", "1"),
+        ("/accuracy/integrator_replaced_at", "s"),
         ("/accuracy/steps", "1"),
         ("/end/angle", "rad"),
         ("/end/speed", "rad/s"),
@@ -269,7 +274,11 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
             result.accuracy.constraint_drift = Some(s.drift);
             result.accuracy.energy_conserved = Some(s.energy_conserved);
             result.accuracy.energy_held_steps = Some(s.energy_held_steps);
+            result.accuracy.integrator_replaced_at = s.integrator_replaced_at;
             result.accuracy.method = result.notes.say("/accuracy/method", result::machine_method(&s));
+            if let Some(said) = result::replaced(&s, p.integrator) {
+                result.notes.warn(said);
+            }
             if let Some(said) = result::singular(&s, p.tolerance) {
                 result.notes.warn(said);
             }

@@ -2,7 +2,7 @@
 
 use super::{IntegratorChoice, MachineDynamics};
 use crate::engine::dynamics::mechanism::MechanismSolution;
-use crate::engine::dynamics::{DynamicsSolution, EventKind, KEPT_BYTES, MAX_TURN_EVENTS, Stopped};
+use crate::engine::dynamics::{DynamicsSolution, EventKind, Integrator, KEPT_BYTES, MAX_TURN_EVENTS, Stopped};
 use crate::engine::model::Mechanism;
 use crate::engine::variants::round_sig;
 use crate::i18n::Msg;
@@ -78,6 +78,14 @@ pub struct DynamicsAccuracy {
     /// ending at an angle was made twice for its samples: see `method`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stiff_at: Option<f64>,
+    /// Mechanism form: the integrator asked (`dop853` or `radau5`) met a
+    /// singular position at this time, s, where its steps leave the
+    /// mechanism's branch (it may fold into another assembly); the run was
+    /// made again from the start with `dopri5`, the pair whose steps the
+    /// fold's hold keeps on the branch, and `integrator`, `steps` and
+    /// `function_evaluations` are that run's (a warning says so too).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub integrator_replaced_at: Option<f64>,
     /// Mechanism form: whether the energy T + V was held to its initial
     /// value throughout the run (see `machine.conserve_energy`; skipped near
     /// turning points, as `energy_held_steps` says): false where the loads
@@ -191,6 +199,7 @@ impl From<DynamicsSolution> for DynamicsResult {
                 constraint_drift: None,
                 integrator: s.integrator.into(),
                 stiff_at: s.stiff_at,
+                integrator_replaced_at: None,
                 energy_conserved: None,
                 energy_held_steps: None,
                 method: notes.say("/accuracy/method", method(&s)),
@@ -226,6 +235,13 @@ fn stopped(s: &Stopped) -> Msg {
 /// An instant of the motion, to the microsecond.
 pub(super) fn at_time(t: f64) -> Msg {
     Msg::new("warning-at-time").num("t", (t * 1e6).round() / 1e6)
+}
+
+/// The warning that the integrator asked met a singular position and the
+/// run was made again with Dormand–Prince.
+pub(super) fn replaced(s: &MechanismSolution, asked: Option<Integrator>) -> Option<Msg> {
+    let (t, asked) = (s.integrator_replaced_at?, asked?);
+    Some(Msg::new("warning-dynamics-integrator-replaced").arg("asked", asked.name()).with("t", at_time(t)))
 }
 
 /// The warning of the singular positions a mechanism passed at close range:

@@ -56,6 +56,10 @@ pub(super) struct Equations<'a> {
     pub plain: Option<RefCell<Plain>>,
     /// Times of the evaluations that held a fold.
     pub held_at: RefCell<Vec<f64>>,
+    /// The integrator stops at the first fold held (every evaluation after
+    /// it NaN, so that its steps fail): it is not Dormand–Prince, the one
+    /// pair whose steps the hold keeps on the mechanism's branch.
+    pub fold_stops: bool,
     /// Evaluations in the dense form.
     pub dense: Cell<usize>,
     /// The energy E = T + V to hold after every step (loads with a potential V only).

@@ -10,6 +10,9 @@ use crate::engine::kinetostatics::Frame;
 /// The ODE the integrator sees: y = (q, q̇, W).
 impl Model for Equations<'_> {
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+        if self.fold_stops && !self.held_at.borrow().is_empty() {
+            return dy.fill(f64::NAN);
+        }
         let n = self.n;
         let (q, qd) = (&y[..n], &y[n..2 * n]);
         if let Some(power) = self.plain(t, q, qd, &mut dy[n..2 * n]) {
