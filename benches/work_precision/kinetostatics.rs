@@ -123,7 +123,12 @@ pub fn section() -> String {
                  multiply-adds over whole rows, independent of each other) instead of Hager's estimator (four or more \
                  triangular solves, each step waiting on the last): exact where the estimate was a lower bound, \
                  and 0.97× K1's time, 0.96× the cam's (medians of 8 and 10 paired runs); formed on L's triangle \
-                 alone (2n³/3, as LAPACK's xGETRI, with rows' lengths known only at run time) it was no faster.",
+                 alone (2n³/3, as LAPACK's xGETRI, with rows' lengths known only at run time) it was no faster. \
+                 Tried on 2026-11-30 and no faster: Φ_q⁻¹ by Gauss–Jordan in place of the LU and the inverse formed \
+                 from it (n³ multiply-adds in all where they take 5n³/3, less the zeros both skip), every solve then \
+                 a product with it (0.997× K1's time, median of 10 paired runs); and the whole build for AVX2 and FMA \
+                 (`-C target-cpu=x86-64-v3`: 1.03× K1's time, 8 paired runs; the position's work a chain of short \
+                 dependent steps, not wide arithmetic).",
                 met(per(reading.at_reference) <= 1.0),
                 reading.words(("µs a position", 1e6 / 3600.0)),
                 met(seconds / reactions >= 50.0),

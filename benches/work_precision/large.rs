@@ -121,8 +121,12 @@ pub fn section() -> String {
          multiplied by 1/D, and one forward pass for J W Q − γ where nothing is held, faster by rounding only — and \
          that rounding moved the hold's outcome: at N = 10 (10 s at 1e-9) the hold's steps then failed and the \
          run made again with the dense form took 46 s instead of 0.1 s. Whether the hold carries a run through \
-         depends on its rounding (at N = 5 the same run spends 1 927 of 9 850 evaluations in the dense form). At N = \
-         20 (10 s at 1e-9) it is made again with the dense form near the flat positions (20 471 of 26 200 \
+         depends on its rounding (at N = 5 the same run spends 1 927 of 9 850 evaluations in the dense form). \
+         A higher order would take fewer evaluations, but neither DOP853 nor Radau IIA passes the flat positions: \
+         at 1e-9 DOP853 folded the chain of 2 into antiparallelograms at its first and ran to the budget, and \
+         brought the chain of 1 out 14 rad/s off (2026-11-30); asked for, either is now replaced by \
+         Dormand–Prince at the first fold it meets (`accuracy.integrator_replaced_at`). At N = 20 (10 s at \
+         1e-9) it is made again with the dense form near the flat positions (20 471 of 26 200 \
          evaluations, 150 s) and ends wrong: the cranks stopped at a flat position, θ̇ = 8e-12 rad/s at 10 s \
          where the energy gives about 1.2 rad/s; its energy residual is 0.48 from 5.2 s, just after the passage at \
          5.17 s, and the service's warning that the energy balance fails after a singular position says so (the \
