@@ -110,29 +110,43 @@ pub fn malformed(e: &serde_json::Error, raw: &[u8]) -> Msg {
         .map(|l| l.chars().take(column.saturating_sub(1)).collect())
         .unwrap_or_default();
     let hint = match near.trim_start() {
-        _ if decimal_comma(&before, &near) => "json-hint-decimal-comma",
-        n if ["NaN", "Infinity", "-Infinity", "inf", "nan"].iter().any(|w| n.starts_with(w)) => "json-hint-nan",
-        n if n.starts_with('\'') => "json-hint-quotes",
-        _ if cause == "trailing comma" => "text-nothing",
-        n if n.starts_with('}') || n.starts_with(']') => "json-hint-comma",
-        _ => "text-nothing",
+        _ if let Some(written) = decimal_comma(&before, &near) => {
+            let dot = written.replace(',', ".");
+            Msg::new("json-hint-decimal-comma").arg("dot", dot).arg("comma", written)
+        }
+        n if ["NaN", "Infinity", "-Infinity", "inf", "nan"].iter().any(|w| n.starts_with(w)) => {
+            Msg::new("json-hint-nan")
+        }
+        n if n.starts_with('\'') => Msg::new("json-hint-quotes"),
+        _ if cause == "trailing comma" => Msg::new("text-nothing"),
+        n if n.starts_with('}') || n.starts_with(']') => Msg::new("json-hint-comma"),
+        _ => Msg::new("text-nothing"),
     };
     let at = match near.is_empty() {
         true => Msg::new("json-at"),
         false => Msg::new("json-at-near").arg("near", near),
     };
     let at = at.count("line", line).count("column", column);
-    Msg::new("json-syntax").with("cause", syntax(cause)).with("at", at).with("hint", Msg::new(hint))
+    Msg::new("json-syntax").with("cause", syntax(cause)).with("at", at).with("hint", hint)
 }
 
 /// A decimal comma inside a JSON number (`"mu": 0,1`): a digit, a comma
-/// and a digit where the parse stopped.
-fn decimal_comma(before: &str, near: &str) -> bool {
-    let b = before.trim_end();
-    let digit_then_comma = b.strip_suffix(',').is_some_and(|r| r.ends_with(|c: char| c.is_ascii_digit()));
-    let b = before.trim_end_matches(|c: char| c.is_ascii_digit());
-    let comma_then_digits = b.ends_with(',') && b[..b.len() - 1].trim_end().ends_with(|c: char| c.is_ascii_digit());
-    (digit_then_comma && near.starts_with(|c: char| c.is_ascii_digit())) || comma_then_digits
+/// and a digit where the parse stopped; the number as written (`0,1`, its
+/// sign and every digit either side), so that the hint shows the asker's
+/// own number written with a point (a fixed `0.5` read as the value to
+/// write sent a student's 0,05 ten times too large).
+fn decimal_comma(before: &str, near: &str) -> Option<String> {
+    let digit = |c: char| c.is_ascii_digit();
+    // Digits of the fraction the parse had already passed (`0,4|5`), then the comma.
+    let whole = before.trim_end_matches(digit);
+    let passed = &before[whole.len()..];
+    let whole = if passed.is_empty() { whole.trim_end() } else { whole };
+    let whole = whole.strip_suffix(',')?.trim_end();
+    let integer = &whole[whole.trim_end_matches(digit).len()..];
+    let sign = if whole[..whole.len() - integer.len()].ends_with('-') { "-" } else { "" };
+    let rest = if passed.is_empty() { near.trim_start() } else { near };
+    let fraction: String = passed.chars().chain(rest.chars().take_while(|c| digit(*c))).collect();
+    (!integer.is_empty() && !fraction.is_empty()).then(|| format!("{sign}{integer},{fraction}"))
 }
 
 /// serde_json's syntax error, as the catalogue words it.
@@ -165,6 +179,28 @@ fn syntax(cause: &str) -> Msg {
 mod tests {
     use super::*;
     use crate::i18n::Lang;
+
+    /// The number a decimal comma split, as written, wherever the parse
+    /// stopped in it; none where the comma parts two numbers or a key.
+    #[test]
+    fn a_decimal_comma_is_shown_with_the_asker_s_own_number() {
+        let cases = [
+            (r#"{"irregularity": 0,"#, "05}", Some("0,05")),
+            (r#"{"irregularity": 0, "#, "05}", Some("0,05")),
+            (r#"{"e": -12,"#, "375, ", Some("-12,375")),
+            (r#"{"e": 1,2"#, "5}", Some("1,25")),
+            (r#"{"e": 1, "#, "\"f\": 2}", None),
+            (r#"{"e": "a","#, "2}", None),
+        ];
+        for (before, near, want) in cases {
+            assert_eq!(decimal_comma(before, near).as_deref(), want, "{before}|{near}");
+        }
+        let raw = br#"{"irregularity": 0,05}"#;
+        let e = serde_json::from_slice::<serde_json::Value>(raw).unwrap_err();
+        let said = malformed(&e, raw).render(Lang::Es);
+        assert!(said.contains("escriba 0.05, o el texto \"0,05\""), "{said}");
+        assert!(malformed(&e, raw).render(Lang::En).contains("write 0.05, or the text \"0,05\""));
+    }
 
     #[test]
     fn serde_jargon_becomes_plain_words() {
