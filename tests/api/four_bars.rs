@@ -179,11 +179,12 @@ async fn an_integrator_that_leaves_the_branch_at_a_fold_is_replaced_by_dormand_p
         let flat = (1..=24).map(|k| time(PI / 2.0, k as f64 * PI));
         assert!(flat.clone().any(|f| (f - t).abs() < 1e-3), "{integrator}: {t} is not at a flat position");
         let said = result["warnings"][0].as_str().unwrap();
+        assert!(said.starts_with(&format!("the integrator asked, \"{integrator}\", met")), "{said}");
         assert!(said.contains("made again from the start with Dormand-Prince"), "{said}");
     }
     let r = app.post("/v1/dynamics?lang=es", &asked("dop853")).await;
     let said = r.json()["result"]["warnings"][0].as_str().unwrap().to_string();
-    assert!(said.starts_with("el integrador pedido, DOP853") && said.contains("se repitió"), "{said}");
+    assert!(said.starts_with("el integrador pedido, \"dop853\", llegó") && said.contains("se repitió"), "{said}");
 }
 
 /// A hard case of the same family: IFToMM A02's chain of 10 (its published

@@ -53,7 +53,7 @@ warning-dynamics-contact-opens = the contact '{ $name }' opens at { $t }: its no
 warning-dynamics-unexpected-guard = the run stopped where the model changes nothing (a guard crossed where the model has none)
 warning-dynamics-turns-unlisted = the first { $listed } turns are listed as events; { $more } more were crossed after them and are not listed
 warning-dynamics-branch-left = the energy balance fails from { $t } (residual { $residual }, over { $bound }), after the motion passed close to a singular position at { $at }: the mechanism may have left its branch there (folded into another assembly), and its motion from then on is not reliable; see machine.near_singular and samples[].energy_residual
-warning-dynamics-integrator-replaced = the integrator asked, { $asked }, met a singular position at { $t }, where its steps leave the mechanism's branch (it could fold into another assembly): the run was made again from the start with Dormand-Prince 5(4), which holds it on its branch; see accuracy.integrator_replaced_at
+warning-dynamics-integrator-replaced = the integrator asked, "{ $asked }", met a singular position at { $t }, where its steps leave the mechanism's branch (it could fold into another assembly): the run was made again from the start with Dormand-Prince 5(4) ("dopri5"), which holds it on its branch; see accuracy.integrator_replaced_at
 warning-dynamics-near-singular = the motion passed close to singular positions (the joint Jacobian nearly lost rank) { $count } time(s), the first at { $first }: the mechanism was kept on its branch; see machine.near_singular
 
 ## Kinetostatics

@@ -53,7 +53,7 @@ warning-dynamics-contact-opens = el contacto '{ $name }' se abre en { $t }: su f
 warning-dynamics-unexpected-guard = la integración se detuvo donde el modelo no cambia nada (una condición cruzó donde el modelo no tiene ninguna)
 warning-dynamics-turns-unlisted = las primeras { $listed } vueltas se listan como eventos; después se cruzaron { $more } más, que no se listan
 warning-dynamics-branch-left = el balance de energía falla desde { $t } (residuo { $residual }, mayor que { $bound }), después de que el movimiento pasara cerca de una posición singular en { $at }: el mecanismo puede haber cambiado allí de rama (plegado en otro modo de montaje), y su movimiento a partir de entonces no es fiable; vea machine.near_singular y samples[].energy_residual
-warning-dynamics-integrator-replaced = el integrador pedido, { $asked }, llegó a una posición singular en { $t }, donde sus pasos sacan al mecanismo de su rama (podría plegarse en otro modo de montaje): se repitió la integración desde el principio con Dormand-Prince 5(4), que lo mantiene en su rama; vea accuracy.integrator_replaced_at
+warning-dynamics-integrator-replaced = el integrador pedido, "{ $asked }", llegó a una posición singular en { $t }, donde sus pasos sacan al mecanismo de su rama (podría plegarse en otro modo de montaje): se repitió la integración desde el principio con Dormand-Prince 5(4) ("dopri5"), que lo mantiene en su rama; vea accuracy.integrator_replaced_at
 warning-dynamics-near-singular = el movimiento pasó cerca de posiciones singulares (el jacobiano de los pares casi perdió rango) { $count ->
         [one] una vez
        *[other] { $count } veces

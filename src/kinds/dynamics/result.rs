@@ -239,9 +239,15 @@ pub(super) fn at_time(t: f64) -> Msg {
 
 /// The warning that the integrator asked met a singular position and the
 /// run was made again with Dormand–Prince.
+/// The pair is named as the request names it (`dop853`), in any language.
 pub(super) fn replaced(s: &MechanismSolution, asked: Option<Integrator>) -> Option<Msg> {
-    let (t, asked) = (s.integrator_replaced_at?, asked?);
-    Some(Msg::new("warning-dynamics-integrator-replaced").arg("asked", asked.name()).with("t", at_time(t)))
+    let t = s.integrator_replaced_at?;
+    let asked = match asked? {
+        Integrator::Dopri5 => "dopri5",
+        Integrator::Dop853 => "dop853",
+        Integrator::Radau5 => "radau5",
+    };
+    Some(Msg::new("warning-dynamics-integrator-replaced").arg("asked", asked).with("t", at_time(t)))
 }
 
 /// The warning of the singular positions a mechanism passed at close range:
