@@ -131,6 +131,8 @@ const UNITS: &[(&str, f64, Dim)] = &[
     ("kW", 1e3, Dim::POWER),
     ("MW", 1e6, Dim::POWER),
     ("hp", 550.0 * FT * LBF, Dim::POWER),
+    // The metric horsepower (caballo de vapor) of Spanish statements: 75 kgf·m/s.
+    ("CV", 75.0 * G0, Dim::POWER),
     ("%", 0.01, Dim::NONE),
 ];
 
@@ -285,7 +287,8 @@ mod tests {
 
     /// Every unit of the table against its definition (NIST SP 811 / SI brochure):
     /// in = 2.54 cm, ft = 12 in, lb = 0.45359237 kg, lbf = lb·9.80665 m/s²,
-    /// slug = lbf·s²/ft, hp = 550 ft·lbf/s, cal = 4.184 J (thermochemical), rpm = rev/min.
+    /// slug = lbf·s²/ft, hp = 550 ft·lbf/s, CV = 75 kgf·m/s (DIN 66036's PS),
+    /// cal = 4.184 J (thermochemical), rpm = rev/min.
     #[test]
     fn every_unit_matches_its_definition() {
         let expect: &[(&str, f64, Dim)] = &[
@@ -325,6 +328,7 @@ mod tests {
             ("kW", 1000.0, Dim::POWER),
             ("MW", 1e6, Dim::POWER),
             ("hp", 745.699_871_582_270_2, Dim::POWER),
+            ("CV", 735.498_75, Dim::POWER),
             ("%", 0.01, Dim::NONE),
         ];
         assert_eq!(expect.len(), UNITS.len(), "every table unit has a test row");

@@ -109,7 +109,8 @@ impl Errors {
                     || super::expression::fault_msg(&e.fault),
                     |n| Msg::new("expr-decimal-comma").arg("number", n),
                 );
-                let msg = Msg::new("function-parse").with("why", why).arg("position", e.position);
+                // The engine's index counts from 0; a person counts the first character as 1.
+                let msg = Msg::new("function-parse").with("why", why).arg("position", e.position + 1);
                 self.refuse(at, msg)
             }
         }

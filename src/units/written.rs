@@ -77,14 +77,14 @@ pub fn number_length(t: &str) -> usize {
     i
 }
 
-/// The known unit that an unknown `name` probably means, written as the
-/// service reads it: a power without `^` (`m2` → `m^2`), two units run
-/// together (`kgm` → `kg*m`, `Nmm` → `N*mm`), a plural (`lbs` → `lb`), one
-/// letter off (`rmp` → `rpm`), or a Spanish word (`seg` → `s`, `grados` → `deg`).
 /// A unit as a person writes it, in the table's notation: superscript
 /// powers (`m²`, `s⁻¹`) with a caret, `×` and a dot between names
-/// (`kg.m`) as `*`, and a space between names (`kg m^2`) as a product.
+/// (`kg.m`) as `*`, a space between names (`kg m^2`) as a product, and a
+/// unit abbreviated a letter at a time (`r.p.m.`) as its letters.
 pub fn normalized(text: &str) -> String {
+    if let Some(letters) = abbreviated(text.trim()) {
+        return letters;
+    }
     let t =
         text.trim().replace('²', "^2").replace('³', "^3").replace("⁻¹", "^-1").replace("⁻²", "^-2").replace('×', "*");
     let chars: Vec<char> = t.chars().collect();
@@ -107,12 +107,37 @@ pub fn normalized(text: &str) -> String {
     out
 }
 
+/// A unit abbreviated a letter at a time, each followed by a point
+/// (`r.p.m.`): its letters (`rpm`). A point between names with none after
+/// the last (`kg.m`, `N.m`) is a product instead.
+fn abbreviated(text: &str) -> Option<String> {
+    let chars: Vec<char> = text.chars().collect();
+    let pairs = chars.chunks(2);
+    let dotted = chars.len() >= 4
+        && chars.len().is_multiple_of(2)
+        && pairs.clone().all(|p| p[0].is_ascii_alphabetic() && p.get(1) == Some(&'.'));
+    dotted.then(|| chars.iter().step_by(2).collect())
+}
+
+/// The known unit that an unknown `name` probably means, written as the
+/// service reads it: a power without `^` (`m2` → `m^2`), two units run
+/// together (`kgm` → `kg*m`, `Nmm` → `N*mm`), a plural (`lbs` → `lb`), one
+/// letter off (`rmp` → `rpm`), or a Spanish word (`seg` → `s`, `grados` →
+/// `deg`, `vueltas` → `rev`).
 pub fn suggestion(name: &str) -> Option<String> {
     let name = name.trim();
     if name.is_empty() {
         return None;
     }
-    let words = [("seg", "s"), ("segundo", "s"), ("segundos", "s"), ("grado", "deg"), ("grados", "deg")];
+    let words = [
+        ("seg", "s"),
+        ("segundo", "s"),
+        ("segundos", "s"),
+        ("grado", "deg"),
+        ("grados", "deg"),
+        ("vuelta", "rev"),
+        ("vueltas", "rev"),
+    ];
     if let Some((_, unit)) = words.iter().find(|(w, _)| w.eq_ignore_ascii_case(name)) {
         return Some((*unit).to_string());
     }
@@ -208,11 +233,17 @@ mod tests {
             ("N × m", "N*m"),
             ("s⁻¹", "s^-1"),
             ("rad / s", "rad/s"),
+            ("r.p.m.", "rpm"),
+            ("R.P.M.", "RPM"),
+            ("N.m", "N*m"),
         ] {
             assert_eq!(normalized(written), as_table, "{written}");
         }
         for written in ["kg·m²", "kg*m²", "kg m^2", "kg.m2", "kg m2"] {
             assert_eq!(crate::units::parse_unit(written), crate::units::parse_unit("kg*m^2"), "{written}");
+        }
+        for written in ["r.p.m.", "R.P.M.", "rpm"] {
+            assert_eq!(crate::units::parse_unit(written), crate::units::parse_unit("rev/min"), "{written}");
         }
     }
 
@@ -228,6 +259,7 @@ mod tests {
             ("degs", "deg"),
             ("seg", "s"),
             ("Grados", "deg"),
+            ("vueltas", "rev"),
             ("lbfft", "lbf*ft"),
         ] {
             assert_eq!(suggestion(name).as_deref(), Some(meant), "{name}");

@@ -427,8 +427,9 @@ async fn a_csv_row_is_named_as_a_csv_row() {
     );
 }
 
-/// Units as a student writes them (`kg·m²`, `kg m^2`, `kg.m2`) are the
-/// table's; a count of pairs needs no `space` (the course's are planar).
+/// Units as a student writes them (`kg·m²`, `kg m^2`, `kg.m2`, `r.p.m.`,
+/// `CV`) are the table's; a count of pairs needs no `space` (the course's
+/// are planar).
 #[tokio::test]
 async fn units_and_counts_as_a_student_writes_them() {
     let app = TestApp::new().await;
@@ -445,6 +446,26 @@ async fn units_and_counts_as_a_student_writes_them() {
     let r = app.post("/v1/mobility", &json!({"counts": {"bodies": 5, "pairs": {"I": 5, "II": 1}}})).await;
     assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
     assert_eq!(r.json()["result"]["grubler"]["mobility"], 1);
+    // A speed in r.p.m. is the one in rpm; a power in CV (caballos de
+    // vapor, 735,49875 W) the one in W; "vueltas" are named as rev.
+    let flywheel = |speed: &str, power: &str| {
+        let mut f = request("p103_slider");
+        f["mean_speed"] = json!(speed);
+        f["constants"] = json!({"P": power});
+        f["torques"][0]["value"]["segments"][0]["expr"] = json!("-(P/735.49875)*500*sin(phi)");
+        f
+    };
+    let clean = app.result("/v1/flywheel", &flywheel("60 rpm", "1 CV")).await;
+    for (speed, power) in [("60 r.p.m.", "1 CV"), ("60 R.P.M.", "1 cv")] {
+        let r = app.result("/v1/flywheel", &flywheel(speed, power)).await;
+        assert_eq!(r["inertia_exact"], clean["inertia_exact"], "{speed}, {power}");
+    }
+    let watts = app.result("/v1/flywheel", &flywheel("60 rpm", "735,49875 W")).await["inertia_exact"].as_f64().unwrap();
+    let cv = clean["inertia_exact"].as_f64().unwrap();
+    assert!((cv - watts).abs() <= 1e-12 * watts, "1 CV = 75 kgf·m/s = 735,49875 W: {cv} vs {watts}");
+    let said = field_messages(&app, "/v1/flywheel", &flywheel("60 vueltas/min", "1 CV"), true).await;
+    assert_eq!(said.len(), 1, "{said:?}");
+    assert!(said[0].0 == "/mean_speed" && said[0].1.contains("'vueltas'; ¿quería decir rev?"), "{said:?}");
 }
 
 /// A torque written as a Spanish sheet writes its numbers: the decimal

@@ -208,13 +208,25 @@ async fn a_checks_and_a_parts_errors_in_spanish() {
     assert_eq!(message, "'rpm' es una unidad de rad/s; la parte en /inertia_exact está en kg*m^2");
 }
 
-/// A student's expression in Spanish notation (`sen` for sin) is refused
-/// at its field, the language's functions named, in Spanish too.
+/// A student's expression with a function the language does not have
+/// (`seno`) is refused at its field, the language's functions named and
+/// the place counted from 1 (the 11th character), in Spanish too; `sen`,
+/// the sine in Spanish notation, is read as `sin`, to the same result.
 #[tokio::test]
 async fn an_expression_refused_in_spanish() {
     let app = TestApp::new().await;
     let mut body = request("p113_pulley");
-    body["torques"][0]["value"]["segments"][0]["expr"] = json!("-5000*0.2*sen(phi)");
+    let expr = |body: &mut Value, e: &str| body["torques"][0]["value"]["segments"][0]["expr"] = json!(e);
+    assert_eq!(body["torques"][0]["value"]["segments"][0]["expr"], "-5000*0.2*cos(phi)");
+    let cosine = app.result("/v1/flywheel", &body).await["inertia_exact"].as_f64().unwrap();
+    expr(&mut body, "-5000*0.2*sin(phi + pi/2)");
+    let sine = app.result("/v1/flywheel", &body).await;
+    expr(&mut body, "-5000*0.2*sen(phi + pi/2)");
+    let sen = app.result("/v1/flywheel", &body).await;
+    assert_eq!(sen["inertia_exact"], sine["inertia_exact"], "the same expression, bit for bit");
+    // sin(φ + π/2) = cos φ: the same flywheel to the rounding of φ + π/2.
+    assert!((sen["inertia_exact"].as_f64().unwrap() - cosine).abs() <= 1e-9 * cosine, "{sen} vs {cosine}");
+    expr(&mut body, "-5000*0.2*seno(phi)");
     let es = in_spanish(&app, "POST", "/v1/flywheel", Some(&body)).await;
     let en = app.post("/v1/flywheel", &body).await;
     assert_eq!((en.status, es.status), (StatusCode::UNPROCESSABLE_ENTITY, StatusCode::UNPROCESSABLE_ENTITY));
@@ -225,8 +237,8 @@ async fn an_expression_refused_in_spanish() {
     assert_eq!(
         es["message"],
         format!(
-            "la expresión no se puede leer: función desconocida 'sen' (las conocidas: {functions}) (en el carácter 10)"
+            "la expresión no se puede leer: función desconocida 'seno' (las conocidas: {functions}) (en el carácter 11)"
         )
     );
-    assert!(en["message"].as_str().unwrap().contains("unknown function 'sen' (known: sin cos"), "{en}");
+    assert!(en["message"].as_str().unwrap().contains("unknown function 'seno' (known: sin cos"), "{en}");
 }

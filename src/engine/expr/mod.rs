@@ -3,7 +3,8 @@
 //! Grammar and precedence follow the API contract: `^` binds tighter than unary
 //! minus and is right-associative (`-x^2` = −(x²), `2^3^2` = 2⁹), then `* /`,
 //! then `+ -`. Functions: `sin cos tan asin acos atan atan2 sqrt exp ln log10
-//! abs min max sign floor`; constants `pi`, `e`; numbers with optional
+//! abs min max sign floor` (and `sen`, the sine in Spanish notation);
+//! constants `pi`, `e`; numbers with optional
 //! exponent (`1.5e-3`). Variables are named by the caller (`phi`, `t`, `omega`).
 //!
 //! Limits keep hostile input cheap: at most [`MAX_LENGTH`] characters and
@@ -203,6 +204,17 @@ mod tests {
         assert_eq!(value("1 + 2 * 3", 0.0), 7.0);
         assert_eq!(value("2 * -x", 3.0), -6.0);
         assert_eq!(value("x - -x", 3.0), 6.0);
+    }
+
+    /// `sen` is the sine, bit for bit, and reserved as `sin` is.
+    #[test]
+    fn the_spanish_sine_is_the_sine() {
+        for x in [0.3, 2.0, -7.5] {
+            assert_eq!(value("3*sen(x)^2", x).to_bits(), value("3*sin(x)^2", x).to_bits());
+        }
+        let d = Expr::compile("sen(x)", &["x"]).unwrap().derivative(0);
+        assert_eq!(d.eval(&[0.4]), 0.4f64.cos(), "d/dx sen x = cos x");
+        assert!(is_reserved("sen"));
     }
 
     #[test]

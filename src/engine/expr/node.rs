@@ -29,7 +29,8 @@ pub enum Fn2 {
 impl Fn1 {
     pub(crate) fn from_name(name: &str) -> Option<Self> {
         Some(match name {
-            "sin" => Self::Sin,
+            // `sen`: the sine as Spanish statements write it.
+            "sin" | "sen" => Self::Sin,
             "cos" => Self::Cos,
             "tan" => Self::Tan,
             "asin" => Self::Asin,
