@@ -142,13 +142,31 @@ pub fn parse<T: DeserializeOwned>(raw: impl Into<Bytes>) -> Result<JsonBody<T>, 
 const READ_BUDGET: usize = 4 << 20;
 const MAX_READS: usize = 32;
 
-/// The request in `value` and its unknown fields.
+/// The request in `value` and its unknown fields, each with the fields
+/// its object has (where it was read as a struct: not inside a list of
+/// objects named by their `type`, which serde reads through a copy).
 fn read<T: DeserializeOwned>(value: &serde_json::Value) -> (Result<T, PathError>, Vec<FieldError>) {
     let mut unknown = Vec::new();
-    let mut record =
-        |path: serde_ignored::Path| unknown.push(FieldError::said(ignored_pointer(&path), Msg::new("field-unknown")));
-    let strict = strict::Strict(value);
-    let result = serde_path_to_error::deserialize(serde_ignored::Deserializer::new(strict, &mut record));
+    let mut record = |path: serde_ignored::Path| unknown.push(ignored_pointer(&path));
+    let (result, structs) = strict::fields_read(value, |value| {
+        let strict = strict::Strict(value);
+        serde_path_to_error::deserialize(serde_ignored::Deserializer::new(strict, &mut record))
+    });
+    let neighbours = |at: &str| {
+        let parent = value.pointer(at.rsplit_once('/').map_or("", |(parent, _)| parent))?;
+        let address = parent as *const serde_json::Value as usize;
+        structs.iter().find(|(a, _)| *a == address).map(|(_, fields)| fields.join(", "))
+    };
+    let unknown = unknown
+        .into_iter()
+        .map(|at| {
+            let said = match neighbours(&at) {
+                Some(known) => Msg::new("field-unknown-known").arg("known", known),
+                None => Msg::new("field-unknown"),
+            };
+            FieldError::said(at, said)
+        })
+        .collect();
     (result, unknown)
 }
 

@@ -16,6 +16,21 @@ type Error = serde_json::Error;
 /// A JSON value read strictly.
 pub struct Strict<'de>(pub &'de Value);
 
+thread_local! {
+    /// Each object read as a struct (its address in the value read) and the
+    /// struct's fields: what an unknown field's neighbours are called.
+    static FIELDS: std::cell::RefCell<Vec<(usize, &'static [&'static str])>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// The fields of the struct each object of `value` was read as, over
+/// `read` (which reads `value` with [`Strict`] on this thread): an object
+/// is known by its address in `value`.
+pub fn fields_read<T>(value: &Value, read: impl FnOnce(&Value) -> T) -> (T, Vec<(usize, &'static [&'static str])>) {
+    FIELDS.with_borrow_mut(Vec::clear);
+    let out = read(value);
+    (out, FIELDS.with_borrow_mut(std::mem::take))
+}
+
 /// The elements of an array, each read strictly.
 struct Seq<'de>(std::slice::Iter<'de, Value>);
 
@@ -84,11 +99,14 @@ impl<'de> Deserializer<'de> for Strict<'de> {
     fn deserialize_struct<V: Visitor<'de>>(
         self,
         _: &'static str,
-        _: &'static [&'static str],
+        fields: &'static [&'static str],
         visitor: V,
     ) -> Result<V::Value, Error> {
         match self.0 {
-            Value::Object(m) => visitor.visit_map(Members::new(m)),
+            Value::Object(m) => {
+                FIELDS.with_borrow_mut(|known| known.push((self.0 as *const Value as usize, fields)));
+                visitor.visit_map(Members::new(m))
+            }
             other => Err(de::Error::invalid_type(unexpected(other), &"an object")),
         }
     }

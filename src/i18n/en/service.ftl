@@ -84,6 +84,7 @@ unit-none = 1 (dimensionless)
 ## A field of a request
 
 field-unknown = unknown field
+field-unknown-known = unknown field (the fields here: { $known })
 field-missing = required field is missing
 field-finite = must be finite
 field-positive = must be greater than 0

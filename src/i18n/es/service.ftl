@@ -84,6 +84,7 @@ unit-none = 1 (adimensional)
 ## Un campo de la petición
 
 field-unknown = campo desconocido
+field-unknown-known = campo desconocido (los campos de aquí: { $known })
 field-missing = falta un campo obligatorio
 field-finite = debe ser finito
 field-positive = debe ser mayor que 0
