@@ -472,6 +472,15 @@ async fn units_and_counts_as_a_student_writes_them() {
     let watts = app.result("/v1/flywheel", &flywheel("60 rpm", "735,49875 W")).await["inertia_exact"].as_f64().unwrap();
     let cv = clean["inertia_exact"].as_f64().unwrap();
     assert!((cv - watts).abs() <= 1e-12 * watts, "1 CV = 75 kgf·m/s = 735,49875 W: {cv} vs {watts}");
+    // A ratio as a fraction ("1/4"), as a statement gives a gear's.
+    let geared = |ratio: Value| {
+        let mut f = request("p103_slider");
+        f["flywheel"] = json!({"ratio": ratio});
+        f
+    };
+    let quarter = app.result("/v1/flywheel", &geared(json!(0.25))).await["flywheel_inertia"].clone();
+    assert_eq!(app.result("/v1/flywheel", &geared(json!("1/4"))).await["flywheel_inertia"], quarter);
+    assert_ne!(app.result("/v1/flywheel", &geared(json!(1))).await["flywheel_inertia"], quarter, "the ratio counts");
     let said = field_messages(&app, "/v1/flywheel", &flywheel("60 vueltas/min", "1 CV"), true).await;
     assert_eq!(said.len(), 1, "{said:?}");
     assert!(said[0].0 == "/mean_speed" && said[0].1.contains("'vueltas'; ¿quería decir rev?"), "{said:?}");

@@ -130,12 +130,11 @@ impl<'de> Deserializer<'de> for Strict<'de> {
     }
 
     /// A plain number, or a text a person wrote it as (`"0,1"`, `"0.1"`:
-    /// a decimal comma wherever a number is text); other texts as serde says.
+    /// a decimal comma wherever a number is text; a ratio as a fraction,
+    /// `"1/4"`); other texts as serde says.
     fn deserialize_f64<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, Error> {
         match self.0 {
-            Value::String(s) if crate::units::number(s).is_some_and(f64::is_finite) => {
-                visitor.visit_f64(crate::units::number(s).unwrap_or_default())
-            }
+            Value::String(s) if let Some(v) = written_number(s) => visitor.visit_f64(v),
             _ => self.deserialize_any(visitor),
         }
     }
@@ -221,10 +220,32 @@ impl<'de> de::VariantAccess<'de> for Variant<'de> {
     }
 }
 
+/// A finite number written as text (`"0,1"`), or a fraction of two (`"1/4"`, `"2,5 / 3"`).
+fn written_number(s: &str) -> Option<f64> {
+    let number = |s: &str| crate::units::number(s.trim()).filter(|v| v.is_finite());
+    let value = match s.split_once('/') {
+        Some((p, q)) => number(p)? / number(q)?,
+        None => number(s)?,
+    };
+    value.is_finite().then_some(value)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use serde::Deserialize;
+
+    /// Numbers as text a person writes: a decimal comma, a fraction; not a
+    /// fraction by zero, nor a word.
+    #[test]
+    fn numbers_as_written() {
+        assert_eq!(written_number("0,25"), Some(0.25));
+        assert_eq!(written_number("1/4"), Some(0.25));
+        assert_eq!(written_number(" 2,5 / 5 "), Some(0.5));
+        for bad in ["1/0", "a/4", "1/4/2", "mucho", ""] {
+            assert_eq!(written_number(bad), None, "{bad}");
+        }
+    }
 
     #[derive(Debug, Deserialize)]
     #[allow(dead_code)]
