@@ -344,3 +344,40 @@ async fn a_students_slips_are_answered_so_they_can_be_put_right() {
     assert_eq!(r.status, StatusCode::BAD_REQUEST, "{}", r.text);
     assert!(r.json()["detail"].as_str().unwrap().contains("una coma decimal parte un número de JSON"), "{}", r.text);
 }
+
+/// A sketch drawn in millimetres as bare numbers (read in metres) beside
+/// dimensions in mm: the figure is met as always, and a warning says the
+/// sketch is about 1000 times the dimensions' size, how bare numbers are
+/// read, and what that does to a centre of mass sketched so (a trial's
+/// came out 10 m from its body, with reactions of 78 MN and no word of
+/// why). Dimensions in metres where millimetres were meant are said the
+/// other way; a sketch a few times off its dimensions is not remarked on.
+#[tokio::test]
+async fn a_sketch_a_thousand_times_its_dimensions_is_said_to_be() {
+    let app = TestApp::new().await;
+    let figure = slider_crank();
+    let warnings = |scale: f64, [crank, rod]: [&str; 2]| {
+        let mut r = figure.request.clone();
+        let sketch: BTreeMap<&str, [f64; 2]> =
+            figure.exact.iter().map(|(n, p)| (*n, [p[0] * scale, p[1] * scale])).collect();
+        r["mechanism"]["points"] = json!(sketch);
+        r["mechanism"]["dimensions"][2]["value"] = json!(crank);
+        r["mechanism"]["dimensions"][4]["value"] = json!(rod);
+        let app = &app;
+        async move {
+            let r = app.post("/v1/kinetostatics", &r).await;
+            assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+            r.json()["result"]["warnings"].to_string()
+        }
+    };
+    let millimetres = warnings(1000.0, ["100 mm", "350 mm"]).await;
+    assert!(millimetres.contains("about 1000 times as far apart as the dimensions place them"), "{millimetres}");
+    assert!(millimetres.contains("for millimetres write \\\"40 mm\\\""), "{millimetres}");
+    assert!(
+        !warnings(3.0, ["100 mm", "350 mm"]).await.contains("times as far apart"),
+        "a rough sketch 3 times too large"
+    );
+    // Every length in m where mm were meant: the sketch is the smaller.
+    let metres = warnings(1.0, ["100 m", "350 m"]).await;
+    assert!(metres.contains("times closer together than the dimensions place them"), "{metres}");
+}

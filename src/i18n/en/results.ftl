@@ -24,6 +24,8 @@ warning-flywheel-no-disk = no disk: the flywheel inertia needed is { $inertia } 
 
 ## A mechanism
 
+warning-sketch-larger = the sketch's points are about { $ratio } times as far apart as the dimensions place them: numbers without a unit, in `points` and in a body's `cg`, are read in metres (for millimetres write "40 mm"), and a centre of mass sketched so lies that much farther from its body
+warning-sketch-smaller = the sketch's points are about { $ratio } times closer together than the dimensions place them: check the dimensions' units ("100 mm", not "100 m")
 warning-dimensions-free = the dimensions leave some points free to move: they stay as near the sketch as the others allow
 warning-span = { $from } to { $to }
 warning-at-time = t = { $t } s

@@ -24,6 +24,8 @@ warning-flywheel-no-disk = sin disco: la inercia de volante necesaria es { $iner
 
 ## Un mecanismo
 
+warning-sketch-larger = los puntos del croquis están unas { $ratio } veces más separados de lo que los colocan las dimensiones: los números sin unidad, en `points` y en el `cg` de un cuerpo, se leen en metros (para milímetros escriba "40 mm"), y un centro de masas dibujado así queda otro tanto más lejos de su cuerpo
+warning-sketch-smaller = los puntos del croquis están unas { $ratio } veces más juntos de lo que los colocan las dimensiones: revise las unidades de las dimensiones ("100 mm", no "100 m")
 warning-dimensions-free = las dimensiones dejan libres algunos puntos: quedan tan cerca del croquis como permiten los demás
 warning-span = { $from } a { $to }
 warning-at-time = t = { $t } s

@@ -89,6 +89,7 @@ impl MechanismDto {
         if solved.underdetermined {
             warnings.push(crate::i18n::Msg::new("warning-dimensions-free"));
         }
+        warnings.extend(scale_gap(&points, &solved.points));
         let assembled: BTreeMap<String, [f64; 2]> = names.into_iter().cloned().zip(solved.points).collect();
         let dto = self.clone().carried(&sketch, &assembled);
         Some((Cow::Owned(MechanismDto { points: Some(assembled), dimensions: None, ..dto }), warnings))
@@ -142,6 +143,27 @@ fn read(e: &mut Errors, d: &DimensionDto, names: &[&String], at: &str) -> Option
     let p = index(e, name, &format!("{at}/{}", if is_x { "x" } else { "y" }));
     let v = e.quantity(given, Dim::LENGTH, &value);
     Some(if is_x { Dimension::X(p?, v?) } else { Dimension::Y(p?, v?) })
+}
+
+/// How many times the sketch's extent (its points' bounding box) is the
+/// dimensions' where one is ten or more times the other: a sketch drawn in
+/// millimetres as bare numbers (read in metres) beside dimensions in mm
+/// gave a trial's centres of mass, sketched too, 10 m from their bodies
+/// and reactions of 78 MN, with no word of why.
+fn scale_gap(sketch: &[[f64; 2]], assembled: &[[f64; 2]]) -> Option<Msg> {
+    let extent = |points: &[[f64; 2]]| {
+        let (lo, hi) = points.iter().fold(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]), |(lo, hi), p| {
+            ([lo[0].min(p[0]), lo[1].min(p[1])], [hi[0].max(p[0]), hi[1].max(p[1])])
+        });
+        (hi[0] - lo[0]).hypot(hi[1] - lo[1])
+    };
+    let ratio = extent(sketch) / extent(assembled);
+    let round = |r: f64| crate::engine::variants::round_sig(r, 2);
+    match ratio {
+        r if r.is_finite() && r >= 10.0 => Some(Msg::new("warning-sketch-larger").num("ratio", round(r))),
+        r if r > 0.0 && r <= 0.1 => Some(Msg::new("warning-sketch-smaller").num("ratio", round(1.0 / r))),
+        _ => None,
+    }
 }
 
 /// The unit the statement writes its lengths in (the first length given
