@@ -45,8 +45,12 @@ pub fn fault_msg(f: &Fault) -> Msg {
 /// sheet writes, to be said as such rather than as a stray comma.
 pub fn decimal_comma<'a>(src: &'a str, f: &Fault) -> Option<&'a str> {
     // A comma after a whole expression (`2 + 0,5`), where a value was
-    // expected, or where a parenthesis was to close (`1/(0,5 - t)`).
-    if !matches!(f, Fault::AfterEnd(Tok::Op(',')) | Fault::Unexpected(Tok::Op(',')) | Fault::Expected(_)) {
+    // expected, where a parenthesis was to close (`1/(0,5 - t)`), or one
+    // that made a function of one argument take two (`cos(phi - 0,35)`).
+    let split_argument = matches!(f, Fault::Arity { takes: Arity::One, .. });
+    if !split_argument
+        && !matches!(f, Fault::AfterEnd(Tok::Op(',')) | Fault::Unexpected(Tok::Op(',')) | Fault::Expected(_))
+    {
         return None;
     }
     let b = src.as_bytes();

@@ -27,6 +27,7 @@ use problem::{ApiError, FieldError};
 use serde::Serialize;
 use serde::de::DeserializeOwned;
 use serde_json::Value;
+use std::collections::HashSet;
 use std::io;
 use utoipa::ToSchema;
 
@@ -129,11 +130,18 @@ pub fn compute<K: Kind>(
 
 /// A refusal's errors and, each at its field, what the reading noticed
 /// about the fields they concern (a bare 360 read as radians beside "the
-/// sweep is too long").
+/// sweep is too long"), and the same slip noticed elsewhere (a cam
+/// program's bare 120, 180 and 300 beside its 360: a trial put right only
+/// the field named, and was refused again for the next).
 fn beside(mut errors: Vec<FieldError>, noticed: Vec<(String, Msg)>) -> Vec<FieldError> {
     let concerns = |p: &str| errors.iter().any(|e| e.pointer.as_deref().is_some_and(|q| noticed::related(p, q)));
-    let kept: Vec<FieldError> =
-        noticed.into_iter().filter(|(p, _)| concerns(p)).map(|(p, msg)| FieldError::said(p, msg)).collect();
+    let slips: HashSet<String> =
+        noticed.iter().filter(|(p, _)| concerns(p)).map(|(_, msg)| msg.id().to_string()).collect();
+    let kept: Vec<FieldError> = noticed
+        .into_iter()
+        .filter(|(_, msg)| slips.contains(msg.id()))
+        .map(|(p, msg)| FieldError::said(p, msg))
+        .collect();
     errors.extend(kept);
     errors
 }

@@ -371,7 +371,7 @@ async fn the_readers_expectations_in_spanish() {
 /// refused with the way to write them; a bare 360 where degrees look meant
 /// is read in radians, as the contract says, and the result says how to
 /// write degrees, at the field; beside a refusal of the same field the
-/// same words explain it.
+/// same words explain it, and every other field read so is said with it.
 #[tokio::test]
 async fn degrees_are_answered_with_the_way_to_write_them() {
     let app = TestApp::new().await;
@@ -410,6 +410,25 @@ async fn degrees_are_answered_with_the_way_to_write_them() {
     let said: Vec<&str> =
         errors.as_array().unwrap().iter().filter(|e| at(e)).filter_map(|e| e["message"].as_str()).collect();
     assert!(said.iter().any(|m| m.contains("for degrees write \"30°\"")), "{errors}");
+    // A program's stretches ended at bare 60, 150, 210, 300 and 360: the one
+    // refused and every other read so are said together, each at its field.
+    let mut bare = crate::helpers::template_request("cam-design");
+    for (k, to) in [60, 150, 210, 300, 360].into_iter().enumerate() {
+        bare["program"][k]["to"] = json!(to);
+    }
+    let r = app.post("/v1/cams", &bare).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let errors = r.json()["errors"].clone();
+    for (k, to) in [60, 150, 210, 300, 360].into_iter().enumerate() {
+        let pointer = format!("/program/{k}/to");
+        let hint = format!("for degrees write \"{to}°\"");
+        let said = errors
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|e| e["pointer"] == pointer && e["message"].as_str().unwrap().contains(&hint));
+        assert!(said, "{pointer}: {errors}");
+    }
 }
 
 /// A CSV's mistakes are named by the sheet's row and column, not as query
@@ -488,12 +507,12 @@ async fn units_and_counts_as_a_student_writes_them() {
 
 /// A torque written as a Spanish sheet writes its numbers: the decimal
 /// comma is named as such wherever the reader stumbles on it (after a
-/// whole expression, or inside a parenthesis it kept from closing), at
-/// the expression's pointer.
+/// whole expression, inside a parenthesis it kept from closing, or in a
+/// function's argument it split in two), at the expression's pointer.
 #[tokio::test]
 async fn a_decimal_comma_in_an_expression_is_named() {
     let app = TestApp::new().await;
-    for expr in ["5 - 20*sin(phi)^2 + 0,5", "1/(0,5 + t)"] {
+    for expr in ["5 - 20*sin(phi)^2 + 0,5", "1/(0,5 + t)", "cos(phi - 0,5)"] {
         let body = json!({
             "torques": [{"name": "m", "value": {"expr": expr}}],
             "reduced_inertia": 1,
