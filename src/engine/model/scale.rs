@@ -8,6 +8,7 @@
 //! drawn at any scale (`numeric::scaled`).
 
 use super::{Coordinate, Domain, JointKind, Mechanism};
+use crate::engine::numeric::plane::diagonal;
 
 impl Mechanism {
     /// L: the diagonal of the box round the bodies' centres of mass and the
@@ -15,14 +16,7 @@ impl Mechanism {
     /// has no size of its own).
     pub fn size(&self) -> f64 {
         let points = self.bodies.iter().map(|b| b.cg).chain(self.joints.iter().map(|j| j.at));
-        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-        for p in points {
-            for k in 0..2 {
-                lo[k] = lo[k].min(p[k]);
-                hi[k] = hi[k].max(p[k]);
-            }
-        }
-        let l = (hi[0] - lo[0]).hypot(hi[1] - lo[1]);
+        let l = diagonal(points);
         if l.is_finite() && l > 0.0 { l } else { 1.0 }
     }
 

@@ -3,6 +3,7 @@
 //! ([`crate::engine::sketch`]).
 
 use super::MechanismDto;
+use crate::engine::numeric::plane::diagonal;
 use crate::engine::sketch::{Dimension, solve};
 use crate::i18n::Msg;
 use crate::kind::quantity::{Errors, Quantity};
@@ -151,13 +152,7 @@ fn read(e: &mut Errors, d: &DimensionDto, names: &[&String], at: &str) -> Option
 /// gave a trial's centres of mass, sketched too, 10 m from their bodies
 /// and reactions of 78 MN, with no word of why.
 fn scale_gap(sketch: &[[f64; 2]], assembled: &[[f64; 2]]) -> Option<Msg> {
-    let extent = |points: &[[f64; 2]]| {
-        let (lo, hi) = points.iter().fold(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]), |(lo, hi), p| {
-            ([lo[0].min(p[0]), lo[1].min(p[1])], [hi[0].max(p[0]), hi[1].max(p[1])])
-        });
-        (hi[0] - lo[0]).hypot(hi[1] - lo[1])
-    };
-    let ratio = extent(sketch) / extent(assembled);
+    let ratio = diagonal(sketch.iter().copied()) / diagonal(assembled.iter().copied());
     let round = |r: f64| crate::engine::variants::round_sig(r, 2);
     match ratio {
         r if r.is_finite() && r >= 10.0 => Some(Msg::new("warning-sketch-larger").num("ratio", round(r))),
