@@ -134,7 +134,7 @@ pub fn solve(p: &MechanismProblem) -> Result<MechanismSolution, DynamicsError> {
 /// there (the step size underflows) the run is made again with the dense
 /// form near them, as before the hold. Where DOP853 or Radau IIA was asked
 /// and meets a fold, the run is made again with Dormand–Prince
-/// ([`Equations::fold_stops`], [`MechanismSolution::integrator_replaced_at`]).
+/// ([`Equations::stopped_at_fold`], [`MechanismSolution::integrator_replaced_at`]).
 pub fn solve_in(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution, DynamicsError> {
     match held_or_dense(p, sparse) {
         Err(Short::Fold(t)) => {
@@ -160,7 +160,7 @@ fn held_or_dense(p: &MechanismProblem, sparse: bool) -> Result<MechanismSolution
 /// Why one run stopped short.
 enum Short {
     Failed(DynamicsError),
-    /// The integrator asked met a fold at this time, s ([`Equations::fold_stops`]).
+    /// The integrator asked met a fold at this time, s ([`Equations::stopped_at_fold`]).
     Fold(f64),
 }
 
@@ -221,7 +221,6 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
         plain: (sparse.is_none() && grips.is_empty() && mobility.redundant_constraints == 0).then(Default::default),
         sparse: sparse.map(RefCell::new),
         held_at: RefCell::new(Vec::new()),
-        fold_stops: p.integrator.is_some_and(|i| i != Integrator::Dopri5),
         dense: Default::default(),
         energy: energy.filter(|_| grips.is_empty()),
         energy_held: Default::default(),
@@ -240,7 +239,7 @@ fn attempt(p: &MechanismProblem, sparse: bool, hold: bool) -> Result<MechanismSo
     y0.push(0.0);
     dae.settle(&y0);
     let run = run(&dae, y0, &settings);
-    if let Some(&t) = dae.held_at.borrow().first().filter(|_| dae.fold_stops) {
+    if let Some(t) = dae.stopped_at_fold() {
         return Err(Short::Fold(t));
     }
     let run = run?;

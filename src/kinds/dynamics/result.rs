@@ -242,12 +242,8 @@ pub(super) fn at_time(t: f64) -> Msg {
 /// The pair is named as the request names it (`dop853`), in any language.
 pub(super) fn replaced(s: &MechanismSolution, asked: Option<Integrator>) -> Option<Msg> {
     let t = s.integrator_replaced_at?;
-    let asked = match asked? {
-        Integrator::Dopri5 => "dopri5",
-        Integrator::Dop853 => "dop853",
-        Integrator::Radau5 => "radau5",
-    };
-    Some(Msg::new("warning-dynamics-integrator-replaced").arg("asked", asked).with("t", at_time(t)))
+    let asked = serde_json::to_value(IntegratorChoice::from(asked?)).ok()?;
+    Some(Msg::new("warning-dynamics-integrator-replaced").arg("asked", asked.as_str()?).with("t", at_time(t)))
 }
 
 /// The warning of the singular positions a mechanism passed at close range:

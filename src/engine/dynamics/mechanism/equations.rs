@@ -15,6 +15,7 @@ use super::MechanismProblem;
 use super::grip::{Grip, Grips, Mode, friction};
 use super::plain::{Plain, Reported, Sizes};
 use crate::engine::constraints::{State, System, evaluate, evaluate_blocks, evaluate_driver};
+use crate::engine::dynamics::Integrator;
 use crate::engine::dynamics::range_space::RangeSpace;
 use crate::engine::dynamics::rows::Rows;
 use crate::engine::kinetostatics::{Frame, applied_forces, potential};
@@ -56,10 +57,6 @@ pub(super) struct Equations<'a> {
     pub plain: Option<RefCell<Plain>>,
     /// Times of the evaluations that held a fold.
     pub held_at: RefCell<Vec<f64>>,
-    /// The integrator stops at the first fold held (every evaluation after
-    /// it NaN, so that its steps fail): it is not Dormand–Prince, the one
-    /// pair whose steps the hold keeps on the mechanism's branch.
-    pub fold_stops: bool,
     /// Evaluations in the dense form.
     pub dense: Cell<usize>,
     /// The energy E = T + V to hold after every step (loads with a potential V only).
@@ -77,6 +74,15 @@ pub(super) struct Equations<'a> {
 }
 
 impl Equations<'_> {
+    /// The time of the first fold held, where the pair asked is not
+    /// Dormand–Prince, the one pair whose steps the hold keeps on the
+    /// mechanism's branch: the run stops there (every evaluation after it
+    /// NaN, so that its steps fail) and is made again with it.
+    pub fn stopped_at_fold(&self) -> Option<f64> {
+        let stops = self.p.integrator.is_some_and(|i| i != Integrator::Dopri5);
+        stops.then(|| self.held_at.borrow().first().copied()).flatten()
+    }
+
     fn zeros(&self) -> Vec<[f64; 3]> {
         vec![[0.0; 3]; self.p.mechanism.drivers.len()]
     }

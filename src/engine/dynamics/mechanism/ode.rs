@@ -10,7 +10,7 @@ use crate::engine::kinetostatics::Frame;
 /// The ODE the integrator sees: y = (q, q̇, W).
 impl Model for Equations<'_> {
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-        if self.fold_stops && !self.held_at.borrow().is_empty() {
+        if self.stopped_at_fold().is_some() {
             return dy.fill(f64::NAN);
         }
         let n = self.n;
