@@ -108,15 +108,17 @@ pub fn normalized(text: &str) -> String {
 }
 
 /// A unit abbreviated a letter at a time, each followed by a point
-/// (`r.p.m.`): its letters (`rpm`). A point between names with none after
-/// the last (`kg.m`, `N.m`) is a product instead.
+/// (`r.p.m.`), or all but the last where three letters or more make a
+/// unit of the table (`r.p.m`): its letters (`rpm`). Otherwise a point
+/// between names is a product (`kg.m`, `N.m`; `m.s` is not `ms`).
 fn abbreviated(text: &str) -> Option<String> {
     let chars: Vec<char> = text.chars().collect();
-    let pairs = chars.chunks(2);
-    let dotted = chars.len() >= 4
-        && chars.len().is_multiple_of(2)
-        && pairs.clone().all(|p| p[0].is_ascii_alphabetic() && p.get(1) == Some(&'.'));
-    dotted.then(|| chars.iter().step_by(2).collect())
+    let last_dotted = chars.last() == Some(&'.');
+    let dotted =
+        chars.len() >= 3 && chars.chunks(2).all(|p| p[0].is_ascii_alphabetic() && p.get(1).is_none_or(|c| *c == '.'));
+    let letters: String = chars.iter().step_by(2).collect();
+    let known = letters.len() >= 3 && super::table_unit(&letters).is_some();
+    (dotted && (last_dotted || known)).then_some(letters)
 }
 
 /// The known unit that an unknown `name` probably means, written as the
@@ -235,14 +237,16 @@ mod tests {
             ("rad / s", "rad/s"),
             ("r.p.m.", "rpm"),
             ("R.P.M.", "RPM"),
+            ("r.p.m", "rpm"),
             ("N.m", "N*m"),
+            ("m.s", "m*s"),
         ] {
             assert_eq!(normalized(written), as_table, "{written}");
         }
         for written in ["kg·m²", "kg*m²", "kg m^2", "kg.m2", "kg m2"] {
             assert_eq!(crate::units::parse_unit(written), crate::units::parse_unit("kg*m^2"), "{written}");
         }
-        for written in ["r.p.m.", "R.P.M.", "rpm"] {
+        for written in ["r.p.m.", "R.P.M.", "r.p.m", "rpm"] {
             assert_eq!(crate::units::parse_unit(written), crate::units::parse_unit("rev/min"), "{written}");
         }
     }
