@@ -183,7 +183,7 @@ json-expect-inputs = an input object or a list of them
 json-expect-track = a point's name or an object {"{"}"name", "body", "at"{"}"}
 json-expect-point = a point's name or coordinates [x, y]
 json-expect-length = a length: a number in m, or with its unit ("8 cm")
-json-expect-fewer = fewer items (a decimal comma splits a JSON number in two: write 0.45, or the text "0,45")
+json-expect-fewer = fewer items (a decimal comma splits a JSON number in two: 0,45 is written 0.45, or as the text "0,45")
 
 ## Pages
 

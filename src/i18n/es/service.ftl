@@ -183,7 +183,7 @@ json-expect-inputs = un objeto de entrada o una lista de ellos
 json-expect-track = el nombre de un punto o un objeto {"{"}"name", "body", "at"{"}"}
 json-expect-point = el nombre de un punto o sus coordenadas [x, y]
 json-expect-length = una longitud: un número en m, o con su unidad ("8 cm")
-json-expect-fewer = menos elementos (una coma decimal parte en dos un número de JSON: escriba 0.45, o el texto "0,45")
+json-expect-fewer = menos elementos (una coma decimal parte en dos un número de JSON: 0,45 se escribe 0.45, o como el texto "0,45")
 
 ## Páginas
 
