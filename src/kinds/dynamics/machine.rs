@@ -2,7 +2,7 @@
 //! joints are free, integrated in its own coordinates (any number of DOF).
 
 use super::Initial;
-use crate::engine::dynamics::mechanism::MechanismSolution;
+use crate::engine::dynamics::mechanism::{MechanismSample, MechanismSolution};
 use crate::engine::kinetostatics::Load;
 use crate::engine::kinetostatics::Motion;
 use crate::engine::model::{Driver, JointKind, Mechanism};
@@ -17,6 +17,7 @@ use crate::kinds::mechanism::{
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
+use std::sync::Arc;
 use utoipa::ToSchema;
 
 /// A mechanism with free input joints, and its loads.
@@ -230,38 +231,8 @@ pub struct MachineDynamics {
 impl MachineDynamics {
     pub(super) fn new(s: &MechanismSolution, m: &Mechanism, report: Report) -> Self {
         let names = Names::new(&report.joint_names, &report.body_names);
-        let (joint_names, body_names) = (&names.joints, &names.bodies);
-        let points =
-            |motion: &Option<Motion>| motion.as_ref().map(|k| states(m, &report.tracked, [&k.q, &k.qd, &k.qdd]));
-        let samples = s
-            .details
-            .iter()
-            .zip(&s.solution.samples)
-            .map(|(d, x)| MachineSample {
-                t: x.t,
-                inputs: d
-                    .inputs
-                    .iter()
-                    .map(|[angle, speed, acceleration]| InputState {
-                        angle: *angle,
-                        speed: *speed,
-                        acceleration: *acceleration,
-                    })
-                    .collect(),
-                bodies: d
-                    .poses
-                    .iter()
-                    .zip(body_names.iter().skip(1))
-                    .map(|(p, body)| BodyPosition { body: body.clone(), x: p[0], y: p[1], theta: p[2] })
-                    .collect(),
-                reactions: Reactions::new(&names, &d.reactions, &d.contacts, m),
-                contacts: (!d.contacts.is_empty())
-                    .then(|| d.contacts.iter().map(|c| ContactDto::new(c, joint_names)).collect()),
-                constraint_residual: d.constraint_residual,
-                energy: EnergyDto::new(d.energy.clone(), body_names, &names.moving),
-                points: points(&d.motion),
-            })
-            .collect();
+        let samples =
+            s.details.iter().zip(&s.solution.samples).map(|(d, x)| sample(x.t, d, (&names, m, &report))).collect();
         Self {
             dof: s.mobility.dof,
             redundant_constraints: s.mobility.redundant_constraints,
@@ -270,5 +241,39 @@ impl MachineDynamics {
             input_units: m.drivers.iter().map(|d| if m.is_length(d.coordinate) { "m" } else { "rad" }.into()).collect(),
             samples,
         }
+    }
+}
+
+/// The mechanism at time `t`, as a result says it.
+pub(super) fn sample(
+    t: f64,
+    d: &MechanismSample,
+    (names, m, report): (&Arc<Names>, &Mechanism, &Report),
+) -> MachineSample {
+    let (joint_names, body_names) = (&names.joints, &names.bodies);
+    let points = |motion: &Option<Motion>| motion.as_ref().map(|k| states(m, &report.tracked, [&k.q, &k.qd, &k.qdd]));
+    MachineSample {
+        t,
+        inputs: d
+            .inputs
+            .iter()
+            .map(|[angle, speed, acceleration]| InputState {
+                angle: *angle,
+                speed: *speed,
+                acceleration: *acceleration,
+            })
+            .collect(),
+        bodies: d
+            .poses
+            .iter()
+            .zip(body_names.iter().skip(1))
+            .map(|(p, body)| BodyPosition { body: body.clone(), x: p[0], y: p[1], theta: p[2] })
+            .collect(),
+        reactions: Reactions::new(names, &d.reactions, &d.contacts, m),
+        contacts: (!d.contacts.is_empty())
+            .then(|| d.contacts.iter().map(|c| ContactDto::new(c, joint_names)).collect()),
+        constraint_residual: d.constraint_residual,
+        energy: EnergyDto::new(d.energy.clone(), body_names, &names.moving),
+        points: points(&d.motion),
     }
 }

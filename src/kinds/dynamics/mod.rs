@@ -6,6 +6,7 @@ mod plots;
 mod refused;
 mod request;
 mod result;
+mod size;
 
 use crate::engine::dynamics::mechanism;
 use crate::engine::dynamics::{Integrator, solve};
@@ -259,7 +260,9 @@ impl Kind for Dynamics {
 /// Validates and solves a request within `limits`, stopping the integration
 /// when the compute budget runs out.
 fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits) -> Result<DynamicsResult, ApiError> {
-    match validated(unknown, request.to_problem(limits))? {
+    let problem = validated(unknown, request.to_problem(limits))?;
+    size::refuse_if_it_cannot_fit(&problem, limits.result_bytes)?;
+    match problem {
         Problem::Reduced(p) => {
             let dopri5 = p.integrator.unwrap_or_else(|| Integrator::auto(p.tolerance, true)) == Integrator::Dopri5;
             Ok(request.in_its_words(DynamicsResult::from(solve(&p).map_err(|e| invalid(e, dopri5))?)))

@@ -176,5 +176,5 @@ fn refuse_if_too_large(first: KinetostaticsResult, steps: usize, limit: usize) -
         return Ok(());
     }
     let rows = crate::kind::JobResult::rows(&first).map(|r| crate::kind::Rows { count: steps, ..r });
-    Err(crate::kind::too_large(estimate, limit, rows, true))
+    Err(crate::kind::too_large(estimate, limit, rows, crate::kind::SizeBy::About))
 }
