@@ -126,6 +126,21 @@ pub struct Cli {
     /// Address of the operator's listener (/healthz, /readyz, /metrics, with connections of their own, reachable while the service's are all taken); `off` for none. The default is used only if it can be bound.
     #[arg(long, env = "MECHDYN_OPERATOR_ADDR", default_value = DEFAULT_OPERATOR_ADDR, global = true)]
     pub operator_addr: String,
+    /// Compute jobs on the service's own threads instead of worker processes: a job is then stopped only where the engine reads its deadline, and a crash in one ends the service (for measurements and debugging).
+    #[arg(long, env = "MECHDYN_IN_PROCESS", global = true)]
+    pub in_process: bool,
+    /// Most memory a job's worker process may take, bytes (the operating system's limit on its data; a job past it is answered 422). Default: half the machine's memory (or its container's) shared among the workers, at least 256 MiB.
+    #[arg(long, env = "MECHDYN_JOB_MEMORY_BYTES", value_parser = clap::value_parser!(u64).range(1..), global = true)]
+    pub job_memory_bytes: Option<u64>,
+    /// Jobs computing at once for requests without the token (a spreadsheet's GET of a template's value), of a service with one; beyond them such a request waits, then is answered 503.
+    #[arg(long, env = "MECHDYN_ANONYMOUS_JOBS", default_value_t = Capacity::default().anonymous_jobs, value_parser = at_least_one, global = true)]
+    pub anonymous_jobs: usize,
+    /// The compute budget of a job for a request without the token, seconds (at most --job-seconds).
+    #[arg(long, env = "MECHDYN_ANONYMOUS_JOB_SECONDS", default_value_t = Capacity::default().anonymous_seconds.as_secs_f64(), value_parser = positive_seconds, global = true)]
+    pub anonymous_job_seconds: f64,
+    /// Stored jobs readable without the token (a public demonstration): the job list, each job, its parts, CSV, plots and page. Without it, a service with a token keeps them to the token's holders.
+    #[arg(long, env = "MECHDYN_PUBLIC_JOBS", global = true)]
+    pub public_jobs: bool,
     /// Seconds between the retention's sweeps (the first runs at start).
     #[arg(long, env = "MECHDYN_RETENTION_INTERVAL_SECONDS", default_value_t = 60.0, value_parser = positive_seconds, global = true)]
     pub retention_interval_seconds: f64,
@@ -163,7 +178,19 @@ impl Cli {
             memory: self.answer_memory_bytes,
             queue_wait: Duration::from_secs_f64(self.queue_seconds),
             bodies: self.body_memory_bytes,
+            anonymous_jobs: self.anonymous_jobs,
+            anonymous_seconds: Duration::from_secs_f64(self.anonymous_job_seconds),
             ..Capacity::default()
+        })
+    }
+
+    /// The limit on a job's worker: as given, or half the memory of the
+    /// machine (or of its container) shared among the workers of every
+    /// share, at least 256 MiB; None where the memory cannot be read.
+    pub fn job_memory(&self) -> Option<u64> {
+        self.job_memory_bytes.or_else(|| {
+            let workers = (self.jobs + self.anonymous_jobs) as u64;
+            machine_memory().map(|total| (total / 2 / workers.max(1)).max(256 << 20))
         })
     }
 
@@ -211,6 +238,17 @@ impl Cli {
     }
 }
 
+/// The memory the service may use: the machine's (`MemTotal`), or its
+/// container's where that is less (cgroup v2's `memory.max`).
+pub fn machine_memory() -> Option<u64> {
+    let meminfo = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let kib = meminfo.lines().find_map(|l| l.strip_prefix("MemTotal:"))?.trim().trim_end_matches("kB").trim();
+    let total = kib.parse::<u64>().ok()?.saturating_mul(1024);
+    let container =
+        std::fs::read_to_string("/sys/fs/cgroup/memory.max").ok().and_then(|t| t.trim().parse::<u64>().ok());
+    Some(container.map_or(total, |c| c.min(total)))
+}
+
 fn positive_days(s: &str) -> Result<f64, String> {
     match s.parse::<f64>() {
         Ok(v) if v > 0.0 && v <= 1e6 => Ok(v),
@@ -247,6 +285,16 @@ pub enum Command {
     Healthcheck,
     /// Print the OpenAPI document.
     Openapi,
+    /// Compute jobs for the service that started this process, read from standard input (not run by hand).
+    #[command(hide = true)]
+    Worker {
+        /// The service's process id: the worker ends if it is not its parent.
+        #[arg(long)]
+        parent: Option<u32>,
+        /// The worker's priority (nice), 0 to 19.
+        #[arg(long, default_value_t = 0, value_parser = clap::value_parser!(i32).range(0..=19))]
+        nice: i32,
+    },
     /// Write a consistent copy of the SQLite database (--database) to FILE
     /// while the service runs (SQLite's VACUUM INTO), and check it.
     Backup {

@@ -28,6 +28,13 @@ fn main() -> ExitCode {
             _ => ExitCode::SUCCESS,
         },
         Some(Command::Backup { file }) => backup(&cli.database, file),
+        Some(Command::Worker { parent, nice }) => {
+            let options = api::workers::serve::Options { parent: *parent, memory: cli.job_memory_bytes, nice: *nice };
+            match api::workers::serve::run(kinds, &options) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) => fail(&format!("worker: {e}")),
+            }
+        }
         Some(Command::Solve { kind, file, value, unit }) => {
             offline(file, |raw| mechdyn::offline::solve(&kinds, kind, raw, value.as_deref(), unit.as_ref()))
         }
@@ -77,10 +84,17 @@ async fn run(cli: &Cli, kinds: mechdyn::api::kind::Registry) -> Result<(), Strin
         .map_err(|e| format!("database {shown}: {}", e.to_string().replace(&cli.database, &shown)))?;
     let deferred = api::deferred::Deferred::new(cli.deferred());
     let admission = api::Admission::new(capacity);
-    let state = AppState { limits: cli.limits(), admission, deferred, ..AppState::new(store, kinds) };
+    let mut state = AppState { limits: cli.limits(), admission, deferred, ..AppState::new(store, kinds) };
+    if !cli.in_process {
+        state = state.with_workers(workers(cli)?);
+    }
+    if let Some(pool) = &state.workers {
+        pool.warm(api::workers::Share::Holder, cli.jobs)?;
+    }
     let settings = api::Settings {
         body_limit: cli.max_body_bytes,
         api_token: cli.api_token.clone().filter(|t| !t.is_empty()),
+        public_jobs: cli.public_jobs,
         cors_origins: cli.cors_origins.iter().map(|o| o.trim().to_string()).filter(|o| !o.is_empty()).collect(),
         pace: cli.pace(),
     };
@@ -118,6 +132,17 @@ async fn run(cli: &Cli, kinds: mechdyn::api::kind::Registry) -> Result<(), Strin
     }
     tracing::info!("stopped");
     Ok(())
+}
+
+/// The worker processes' settings: this very binary (the running one,
+/// whatever has replaced its file since), each under the limit on a job's
+/// memory; the token holders' workers started now.
+fn workers(cli: &Cli) -> Result<api::workers::Settings, String> {
+    let program = std::path::PathBuf::from("/proc/self/exe");
+    let program = if program.exists() { program } else { std::env::current_exe().map_err(|e| e.to_string())? };
+    let memory = cli.job_memory();
+    tracing::info!(workers = cli.jobs, memory, "jobs compute in worker processes");
+    Ok(api::workers::Settings { program, memory })
 }
 
 /// The operator's listener (its connections and bounds), bound at

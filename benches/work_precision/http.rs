@@ -22,14 +22,26 @@ pub struct Service {
 }
 
 impl Service {
-    /// Resident memory now and at its peak (VmRSS, VmHWM), MiB.
+    /// Resident memory now and at its peak (VmRSS, VmHWM), MiB: the
+    /// service's and its worker processes' (those alive now) summed.
     pub fn memory(&self) -> (f64, f64) {
-        let status = std::fs::read_to_string(format!("/proc/{}/status", self.child.id())).unwrap_or_default();
-        let mib = |key: &str| {
-            let kib = status.lines().find_map(|l| l.strip_prefix(key))?.split_whitespace().next()?.parse::<f64>();
-            kib.ok().map(|k| k / 1024.0)
-        };
-        (mib("VmRSS:").unwrap_or(f64::NAN), mib("VmHWM:").unwrap_or(f64::NAN))
+        let pid = self.child.id();
+        let children = std::fs::read_to_string(format!("/proc/{pid}/task/{pid}/children")).unwrap_or_default();
+        let pids = std::iter::once(pid.to_string()).chain(children.split_whitespace().map(String::from));
+        let mut total = (0.0, 0.0);
+        for (k, pid) in pids.enumerate() {
+            let status = std::fs::read_to_string(format!("/proc/{pid}/status")).unwrap_or_default();
+            let mib = |key: &str| {
+                let kib = status.lines().find_map(|l| l.strip_prefix(key))?.split_whitespace().next()?.parse::<f64>();
+                kib.ok().map(|k| k / 1024.0)
+            };
+            let (now, peak) = (mib("VmRSS:"), mib("VmHWM:"));
+            if k == 0 && now.is_none() {
+                return (f64::NAN, f64::NAN);
+            }
+            total = (total.0 + now.unwrap_or(0.0), total.1 + peak.unwrap_or(0.0));
+        }
+        total
     }
 
     /// What the service logged so far (at `warn` and above).

@@ -22,6 +22,7 @@ mod gauge;
 mod grading;
 mod http;
 mod http_targets;
+mod isolation;
 mod kinematics;
 mod kinetostatics;
 mod large;
@@ -224,9 +225,9 @@ type Section = fn() -> String;
 
 fn main() {
     // `cargo bench --bench work_precision -- grading` (or contacts, large, flywheel, http, kinetostatics,
-    // kinematics, stiff, statements, gauge): that section alone, printed, docs/ left as they are (the flywheel's plot in the
+    // kinematics, stiff, statements, gauge, isolation): that section alone, printed, docs/ left as they are (the flywheel's plot in the
     // temporary folder).
-    let alone: [(&str, Section); 10] = [
+    let alone: [(&str, Section); 11] = [
         ("gauge", gauge::section),
         ("contacts", contacts::section),
         ("kinematics", kinematics::section),
@@ -236,6 +237,7 @@ fn main() {
         ("large", large::section),
         ("flywheel", || flywheel::section(&std::env::var(PLOTS).unwrap_or_else(|_| temp_dir()))),
         ("http", || http::section(http_targets::targets)),
+        ("isolation", isolation::section),
         ("statements", statements::section),
     ];
     if let Some((_, section)) = alone.iter().find(|(name, _)| std::env::args().any(|a| a == *name)) {
@@ -355,8 +357,18 @@ fn fresh(name: &str, plots: &str) -> String {
 fn write_docs() {
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/docs");
     let _ = std::fs::create_dir_all(dir);
-    let names =
-        ["large", "stiff", "kinetostatics", "kinematics", "statements", "contacts", "flywheel", "http", "grading"];
+    let names = [
+        "large",
+        "stiff",
+        "kinetostatics",
+        "kinematics",
+        "statements",
+        "contacts",
+        "flywheel",
+        "http",
+        "isolation",
+        "grading",
+    ];
     let sections: Vec<String> = names.iter().map(|name| fresh(name, dir)).collect();
     let (mut doc, mut points) = dynamics_section();
     let (text, slider_crank) = slider_crank::section();

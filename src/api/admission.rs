@@ -33,13 +33,24 @@
 //!   stays free of computing: reads and health checks are answered even
 //!   while jobs that were expected short run long.
 //!
+//! - **Anonymous** (`anonymous_jobs`, default 1): where the service has a
+//!   token, a computation for a request without it (a spreadsheet's GET of
+//!   a template's value for new parameters) takes one of these instead of
+//!   a slot and a compute permit, within a budget of its own
+//!   (`anonymous_seconds`, default 2 s), on workers of its own at a lower
+//!   priority ([`super::workers::Share`]): it never waits for, nor holds, a
+//!   token holder's place. With none free, at most [`ANONYMOUS_WAITING`]
+//!   such requests wait for each, each at most that budget; the others are
+//!   answered 503 at once.
+//!
 //! `Retry-After` is the time the jobs ahead would take at the recent mean
 //! time per job (an exponential average), at least 1 s.
 
+use crate::kind::Limits;
 use crate::kind::problem::ApiError;
 use std::collections::HashMap;
 use std::future::Future;
-use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 use tokio::sync::{OwnedSemaphorePermit, Semaphore};
@@ -61,6 +72,10 @@ pub struct Capacity {
     pub inline: usize,
     /// Bytes of request bodies being read at once.
     pub bodies: usize,
+    /// Computations at once for requests without the token (of a service with one).
+    pub anonymous_jobs: usize,
+    /// The compute budget of each of those.
+    pub anonymous_seconds: Duration,
 }
 
 impl Capacity {
@@ -74,6 +89,10 @@ tokio::task_local! {
     /// Set while a POST that holds its slot is answered.
     static HOLDING: ();
 }
+
+/// Requests without the token that wait for each place of their share;
+/// beyond them such a request is answered 503 at once.
+pub const ANONYMOUS_WAITING: usize = 4;
 
 /// Mean compute time of a kind's recent jobs under which its next job
 /// computes on the async worker, µs.
@@ -90,6 +109,8 @@ impl Default for Capacity {
             wait: Duration::from_secs(10),
             queue_wait: Duration::from_secs(30),
             bodies: 64 << 20,
+            anonymous_jobs: 1,
+            anonymous_seconds: Duration::from_secs(2),
         }
     }
 }
@@ -106,6 +127,8 @@ pub struct Admission {
     inline: Arc<Semaphore>,
     /// Exponential mean of the compute time of each kind's jobs, µs.
     kind_us: Arc<Mutex<HashMap<&'static str, u64>>>,
+    anonymous: Arc<Semaphore>,
+    anonymous_waiting: Arc<AtomicUsize>,
 }
 
 impl Default for Admission {
@@ -123,6 +146,8 @@ impl Admission {
             bodies: Arc::new(Semaphore::new(capacity.bodies.clamp(1, Semaphore::MAX_PERMITS))),
             compute: Arc::new(Semaphore::new(jobs)),
             memory: Arc::new(Semaphore::new(capacity.memory.clamp(1, Semaphore::MAX_PERMITS))),
+            anonymous: Arc::new(Semaphore::new(capacity.anonymous_jobs)),
+            anonymous_waiting: Arc::default(),
             capacity,
             mean_job_us: Arc::new(AtomicU64::new(10_000)),
             inline: Arc::new(Semaphore::new(inline)),
@@ -160,6 +185,42 @@ impl Admission {
             Ok(Ok(permit)) => Ok(permit),
             Ok(Err(_)) => Err(self.saturated("the service is stopping")),
             Err(_) => Err(self.saturated("the jobs ahead in the queue did not finish in time")),
+        }
+    }
+
+    /// The right to compute for a request without the token, once one
+    /// computing ahead of it has finished: at most [`ANONYMOUS_WAITING`]
+    /// such requests wait for each place, each at most its budget.
+    pub async fn anonymous(&self) -> Result<OwnedSemaphorePermit, ApiError> {
+        let wait = self.capacity.anonymous_seconds;
+        let taken = || ApiError::Saturated {
+            reason: "the share of computation without the token is taken".into(),
+            retry_after: wait.as_secs_f64().ceil().max(1.0) as u64,
+        };
+        if let Ok(permit) = self.anonymous.clone().try_acquire_owned() {
+            return Ok(permit);
+        }
+        let most = self.capacity.anonymous_jobs.saturating_mul(ANONYMOUS_WAITING);
+        if self.anonymous_waiting.fetch_add(1, Ordering::Relaxed) >= most {
+            self.anonymous_waiting.fetch_sub(1, Ordering::Relaxed);
+            return Err(taken());
+        }
+        let waited = tokio::time::timeout(wait, self.anonymous.clone().acquire_owned()).await;
+        self.anonymous_waiting.fetch_sub(1, Ordering::Relaxed);
+        match waited {
+            Ok(Ok(permit)) => Ok(permit),
+            _ => Err(taken()),
+        }
+    }
+
+    /// The limits a job of `share` computes within: a request without the
+    /// token has its own budget, when that is the shorter.
+    pub fn limits(&self, share: super::workers::Share, limits: &Limits) -> Limits {
+        match share {
+            super::workers::Share::Holder => limits.clone(),
+            super::workers::Share::Anonymous => {
+                Limits { budget: limits.budget.min(self.capacity.anonymous_seconds), ..limits.clone() }
+            }
         }
     }
 

@@ -4,8 +4,9 @@
 use super::AppState;
 use super::body::{Chunks, guarded};
 use super::job::job_chunks;
+use super::workers::Share;
 use crate::kind::problem::ApiError;
-use crate::kind::{JobResult, JsonBuffer, json_len, too_large, write_json};
+use crate::kind::{JobResult, Limits, serialized};
 use crate::store::{JobRow, NewJob};
 use axum::body::Body;
 use axum::http::{StatusCode, header};
@@ -14,22 +15,39 @@ use bytes::Bytes;
 use std::time::Instant;
 use tokio::sync::OwnedSemaphorePermit;
 
-/// Runs `compute` once a compute slot is free (off the async workers unless
-/// its kind's jobs are short: [`super::admission`]), serialises its result
-/// within the limit, stores the job, and answers 201 with the job and its
-/// `Location`; the same bytes are stored and sent.
-pub async fn create<R, F>(
-    state: &AppState,
-    kind: &'static str,
-    request: Bytes,
-    compute: F,
-) -> Result<Response, ApiError>
+/// Computes `work` once a compute slot is free ([`compute_and_store`]),
+/// stores the job, and answers 201 with the job and its `Location`; the
+/// same bytes are stored and sent.
+pub async fn create<R, F>(state: &AppState, work: Work<F>, request: Bytes) -> Result<Response, ApiError>
 where
     R: JobResult + Send + 'static,
-    F: FnOnce() -> Result<R, ApiError> + Send + 'static,
+    F: FnOnce(&Limits) -> Result<R, ApiError> + Send + 'static,
 {
-    let (row, reserved) = compute_and_store(state, kind, request, Destination::POSTED, compute).await?;
+    let (row, reserved) = compute_and_store(state, work, request, Destination::POSTED).await?;
     Ok(created(&row, reserved))
+}
+
+/// What a job computes: a kind's request, which a worker process computes
+/// from the request's bytes alone ([`super::workers`]), or work of the
+/// service's own (a check's grading of a stored result); and `here`, the
+/// same computed on this process's threads within the limits it is given
+/// (a service computing in-process, or the service's own work).
+pub struct Work<F> {
+    kind: &'static str,
+    by_worker: bool,
+    here: F,
+}
+
+impl<F> Work<F> {
+    /// The job of a request of the kind `kind`.
+    pub fn kind(kind: &'static str, here: F) -> Self {
+        Self { kind, by_worker: true, here }
+    }
+
+    /// Work of the service's own, stored as a job of `kind`.
+    pub fn own(kind: &'static str, here: F) -> Self {
+        Self { kind, by_worker: false, here }
+    }
 }
 
 /// The 201 of a stored job: the job, its `Location`, its memory held until sent.
@@ -71,39 +89,49 @@ impl Destination {
     pub const POSTED: Self = Self::New { key: None };
 }
 
-/// The job of `compute`, stored at `to`: the row, with the memory of its
-/// answer still reserved.
+/// The job of `work`, stored at `to`: the row, with the memory of its
+/// answer still reserved. A request without the token, of a service that
+/// has one, computes in the share of its own ([`Share::Anonymous`]).
 pub async fn compute_and_store<R, F>(
     state: &AppState,
-    kind: &'static str,
+    work: Work<F>,
     request: Bytes,
     to: Destination,
-    compute: F,
 ) -> Result<(JobRow, OwnedSemaphorePermit), ApiError>
 where
     R: JobResult + Send + 'static,
-    F: FnOnce() -> Result<R, ApiError> + Send + 'static,
+    F: FnOnce(&Limits) -> Result<R, ApiError> + Send + 'static,
 {
-    let _slot = state.admission.slot()?;
-    let computing = state.admission.compute().await?;
-    let limit = state.limits.result_bytes;
+    let (kind, share) = (work.kind, if may_store() { Share::Holder } else { Share::Anonymous });
+    let (_slot, computing) = match share {
+        Share::Holder => (state.admission.slot()?, state.admission.compute().await?),
+        Share::Anonymous => (None, state.admission.anonymous().await?),
+    };
+    let limits = state.admission.limits(share, &state.limits);
     // The largest result is reserved before computing, so that no job is
     // computed only to be refused for want of memory; the spare is given back.
-    let reserved = state.admission.memory(limit.saturating_add(request.len())).await?;
+    let reserved = state.admission.memory(limits.result_bytes.saturating_add(request.len())).await?;
     // The compute slot, the memory and the watchdog's entry go with the
     // computation: a client that leaves does not free them while it runs.
     let listed = state.watchdog.start(kind);
-    let run = move || {
-        let start = Instant::now();
-        let r = compute();
-        let elapsed = start.elapsed();
-        let result = r.and_then(|r| serialized(&r, limit));
-        drop((computing, listed));
-        (result, elapsed, reserved)
-    };
-    let (result, elapsed, mut reserved) = match state.admission.inline(kind) {
-        Some(_inline) => run(),
-        None => tokio::task::spawn_blocking(run).await.map_err(|e| ApiError::Internal(format!("engine task: {e}")))?,
+    let held = (computing, listed, reserved);
+    let (result, elapsed, mut reserved) = match (&state.workers, work.by_worker) {
+        (Some(pool), true) => {
+            let (pool, sent) = (pool.clone(), request.clone());
+            let start = Instant::now();
+            let run = async move {
+                let r = pool.run(kind, &sent, &limits, share).await;
+                let (computing, listed, reserved) = held;
+                drop((computing, listed));
+                (r, reserved)
+            };
+            let (r, reserved) = tokio::spawn(run).await.map_err(|e| ApiError::Internal(format!("job task: {e}")))?;
+            match r {
+                Ok((result, elapsed)) => (Ok(result), elapsed, reserved),
+                Err(e) => (Err(e), start.elapsed(), reserved),
+            }
+        }
+        _ => here(state, kind, work.here, limits, held).await?,
     };
     state.admission.record(kind, elapsed);
     let result = result.inspect_err(|_| state.metrics.job(kind, false, elapsed))?;
@@ -132,6 +160,39 @@ where
     Ok((stored?, reserved))
 }
 
+/// What a computation holds while it runs: its compute slot, its entry in
+/// the watchdog's list and its answer's memory.
+type Held = (OwnedSemaphorePermit, super::watchdog::Computing, OwnedSemaphorePermit);
+
+/// `compute` run on this process's threads (on the async worker that read
+/// the request where its kind's jobs are short, [`super::admission`]), its
+/// result serialised within the limit on a result.
+async fn here<R, F>(
+    state: &AppState,
+    kind: &'static str,
+    compute: F,
+    limits: Limits,
+    held: Held,
+) -> Result<(Result<Bytes, ApiError>, std::time::Duration, OwnedSemaphorePermit), ApiError>
+where
+    R: JobResult + Send + 'static,
+    F: FnOnce(&Limits) -> Result<R, ApiError> + Send + 'static,
+{
+    let run = move || {
+        let start = Instant::now();
+        let r = compute(&limits);
+        let elapsed = start.elapsed();
+        let result = r.and_then(|r| serialized(&r, limits.result_bytes));
+        let (computing, listed, reserved) = held;
+        drop((computing, listed));
+        (result, elapsed, reserved)
+    };
+    match state.admission.inline(kind) {
+        Some(_inline) => Ok(run()),
+        None => tokio::task::spawn_blocking(run).await.map_err(|e| ApiError::Internal(format!("engine task: {e}"))),
+    }
+}
+
 /// A new job of `kind` (a fresh id, made now), with the request's label
 /// unless it is keyed (a template's job, shared between requests).
 fn new_job(kind: &str, (request, result): (Bytes, Bytes), engine_us: i64, key: Option<String>) -> NewJob {
@@ -142,23 +203,6 @@ fn new_job(kind: &str, (request, result): (Bytes, Bytes), engine_us: i64, key: O
 
 /// The version of mechdyn that computes the jobs.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");
-
-/// The result as JSON bytes, or a 422 when it would exceed `limit` bytes.
-fn serialized<R: JobResult>(result: &R, limit: usize) -> Result<Bytes, ApiError> {
-    let mut out = JsonBuffer::new(limit);
-    match write_json(&mut out, result) {
-        Ok(()) => {
-            // The buffer grew by doubling: give back the unused half before it is held in flight.
-            out.buf.shrink_to_fit();
-            Ok(out.buf.into())
-        }
-        Err(e) if e.is_io() => {
-            drop(out);
-            Err(too_large(json_len(result), limit, result.rows(), false))
-        }
-        Err(e) => Err(ApiError::Internal(format!("result: {e}"))),
-    }
-}
 
 pub fn now_rfc3339() -> String {
     rfc3339(time::OffsetDateTime::now_utc())

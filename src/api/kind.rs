@@ -5,13 +5,13 @@
 //! document's examples, plots and pages) is written once over [`Kind`] and reaches every kind through
 //! the registry ([`KINDS`]), never through a `match` on a kind's name.
 
-use super::create::Destination;
+use super::create::{Destination, Work};
 use super::json::JsonBody;
 use super::{AppState, job};
 use crate::kind::limits::Limits;
 use crate::kind::plots;
 use crate::kind::problem::{ApiError, PostErrors};
-use crate::kind::{Kind, Register, Table, compute, json_bytes};
+use crate::kind::{Kind, Register, Table, compute, json_bytes, serialized};
 use crate::store::JobRow;
 use axum::extract::State;
 use axum::http::HeaderMap;
@@ -38,9 +38,9 @@ pub async fn post<K: Kind>(
     if super::deferred::wanted(&headers) {
         return super::deferred::accept(&state, K::NAME, raw, unknown).await;
     }
-    let limits = state.limits.clone();
     let request = raw.clone();
-    super::create::create(&state, K::NAME, raw, move || compute::<K>(&value, unknown, &request, &limits)).await
+    let work = Work::kind(K::NAME, move |limits: &Limits| compute::<K>(&value, unknown, &request, limits));
+    super::create::create(&state, work, raw).await
 }
 
 /// A job computed and stored, with the memory of its answer reserved.
@@ -59,6 +59,13 @@ pub trait AnyKind: Send + Sync {
     /// JSON, the same bytes the service stores (`kinds`: the service's, for
     /// a kind that computes another's request).
     fn solve(&self, raw: String, limits: &Limits, kinds: &Registry) -> Result<Vec<u8>, ApiError>;
+    /// Reads and computes a request as the POST would, within `limits` (its
+    /// budget from now), and writes its result's JSON within the limit on a
+    /// result: what a worker process runs ([`super::workers::serve`]). A kind
+    /// that is not computed by a worker (`check`) has none.
+    fn run(&self, _raw: Bytes, _limits: &Limits) -> Result<Bytes, ApiError> {
+        Err(ApiError::Internal(format!("a job of kind '{}' is not computed by a worker", self.name())))
+    }
     /// Computes the job of `request` (JSON text, as it will be stored) and
     /// stores it at `to`: the row, with its answer's memory reserved.
     fn job<'a>(&'a self, state: &'a AppState, request: Bytes, to: Destination) -> StoredJob<'a>;
@@ -108,13 +115,17 @@ impl<K: Kind> AnyKind for Registered<K> {
         let result = compute::<K>(&body.value, body.unknown, &body.raw, limits)?;
         json_bytes(&result).map_err(|e| ApiError::Internal(format!("result: {e}")))
     }
+    fn run(&self, raw: Bytes, limits: &Limits) -> Result<Bytes, ApiError> {
+        let body = super::json::parse::<K::Request>(raw)?;
+        let result = compute::<K>(&body.value, body.unknown, &body.raw, limits)?;
+        serialized(&result, limits.result_bytes)
+    }
     fn job<'a>(&'a self, state: &'a AppState, request: Bytes, to: Destination) -> StoredJob<'a> {
         Box::pin(async move {
             let body = super::json::parse::<K::Request>(request.clone())?;
             let raw = request.clone();
-            let limits = state.limits.clone();
-            let compute = move || compute::<K>(&body.value, body.unknown, &raw, &limits);
-            super::create::compute_and_store(state, K::NAME, request, to, compute).await
+            let compute = move |limits: &Limits| compute::<K>(&body.value, body.unknown, &raw, limits);
+            super::create::compute_and_store(state, Work::kind(K::NAME, compute), request, to).await
         })
     }
     fn request_schema(&self) -> String {

@@ -18,6 +18,9 @@
 //! - `mechdyn_jobs_overrun_total{kind}`, `mechdyn_jobs_overrunning`: jobs
 //!   that computed well past their compute budget (an escape from it, a
 //!   bug: [`super::watchdog`]), and how many are past it now;
+//! - `mechdyn_workers_stopped_total{reason}`: worker processes stopped with
+//!   their job: killed at its `budget`, out of its `memory`, or ended by a
+//!   `crash` ([`super::workers`]);
 //! - `mechdyn_connections{listener}`, `mechdyn_connections_refused_total{listener}`,
 //!   `mechdyn_connections_closed_total{listener, reason}`: connections open
 //!   now, those answered 503 at the cap, those closed by a bound (`header`,
@@ -28,6 +31,7 @@
 
 use super::AppState;
 use super::admission::Admission;
+use super::workers::{Pool, Stop};
 use crate::store::Waiting;
 use axum::extract::{MatchedPath, Request, State};
 use axum::http::{StatusCode, header};
@@ -55,6 +59,7 @@ struct Inner {
     deferred: IntGaugeVec,
     overrun: IntCounterVec,
     overrunning: IntGauge,
+    stopped: IntCounterVec,
     connections: IntGaugeVec,
     refused: IntCounterVec,
     closed: IntCounterVec,
@@ -127,6 +132,17 @@ impl Metrics {
         let overrunning = IntGauge::new("mechdyn_jobs_overrunning", "Jobs computing past their budget's margin now")?;
         registry.register(Box::new(overrun.clone()))?;
         registry.register(Box::new(overrunning.clone()))?;
+        let stopped = IntCounterVec::new(
+            Opts::new(
+                "mechdyn_workers_stopped_total",
+                "Worker processes stopped with their job: killed at its budget, out of its memory, or crashed",
+            ),
+            &["reason"],
+        )?;
+        registry.register(Box::new(stopped.clone()))?;
+        for stop in Stop::ALL {
+            stopped.with_label_values(&[stop.as_str()]);
+        }
         let connections = IntGaugeVec::new(
             Opts::new("mechdyn_connections", "Connections open now, on the service's listener or the operator's"),
             &["listener"],
@@ -160,6 +176,7 @@ impl Metrics {
             deferred,
             overrun,
             overrunning,
+            stopped,
             connections,
             refused,
             closed,
@@ -225,7 +242,17 @@ impl Metrics {
 
     /// Every metric in the text format, the gauges read from `admission`
     /// and `waiting` (None: the database did not answer, the last values stay) now.
-    fn text(&self, admission: &Admission, waiting: Option<Waiting>) -> Result<String, prometheus::Error> {
+    fn text(
+        &self,
+        admission: &Admission,
+        waiting: Option<Waiting>,
+        workers: Option<&Pool>,
+    ) -> Result<String, prometheus::Error> {
+        for stop in Stop::ALL {
+            let counter = self.0.stopped.with_label_values(&[stop.as_str()]);
+            let now = workers.map_or(0, |w| w.stopped(stop));
+            counter.inc_by(now.saturating_sub(counter.get()));
+        }
         if let Some(w) = waiting {
             self.0.deferred.with_label_values(&["queued"]).set(w.queued);
             self.0.deferred.with_label_values(&["running"]).set(w.running);
@@ -258,7 +285,7 @@ status, jobs by kind and status, the engine's time per job, jobs computing and w
         content_type = "text/plain; version=0.0.4")))]
 pub async fn metrics(State(state): State<AppState>) -> Response {
     let waiting = tokio::time::timeout(Duration::from_secs(1), state.store.waiting()).await.ok().and_then(Result::ok);
-    match state.metrics.text(&state.admission, waiting) {
+    match state.metrics.text(&state.admission, waiting, state.workers.as_ref()) {
         Ok(text) => ([(header::CONTENT_TYPE, prometheus::TEXT_FORMAT)], text).into_response(),
         Err(e) => crate::kind::problem::ApiError::Internal(format!("metrics: {e}")).into_response(),
     }

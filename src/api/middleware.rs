@@ -6,13 +6,14 @@
 //! ([`super::body::drain_unread`]), the answer's language
 //! ([`super::language`]), panics caught and answered 500
 //! problem+json without internals, a query parameter given twice refused,
-//! the optional bearer token every POST and DELETE must carry (and whether
-//! a GET carries it: [`super::create::may_store`]), admission control (a
+//! the optional token every POST and DELETE must carry, and every read of
+//! stored jobs where they are its holders' ([`super::access`]), admission control (a
 //! POST's body read whole at the client's pace, then a slot, 503 when none
 //! is free), a POST's `?label=` ([`super::label`]), its `Idempotency-Key`
 //! ([`super::idempotency`]), and the body limit.
 
 use super::AppState;
+use super::access::{Access, Refused};
 use super::admission::Admission;
 use super::body::{drain_unread, guarded};
 use super::idempotency::{InFlight, idempotent};
@@ -28,7 +29,6 @@ use axum::response::{IntoResponse, Response};
 use axum::{Extension, body::Body};
 use http_body::Body as _;
 use std::any::Any;
-use std::sync::Arc;
 use tower_http::catch_panic::CatchPanicLayer;
 use tower_http::cors::{AllowOrigin, CorsLayer};
 use tower_http::request_id::{MakeRequestUuid, PropagateRequestIdLayer, SetRequestIdLayer};
@@ -46,6 +46,8 @@ pub struct Settings {
     /// When set, every POST and DELETE needs `Authorization: Bearer <token>` (401 without),
     /// and a GET stores a new job only with it ([`super::create::may_store`]).
     pub api_token: Option<String>,
+    /// With a token: stored jobs readable without it (`--public-jobs`).
+    pub public_jobs: bool,
     /// Origins allowed by CORS (`*` for any); none: no CORS headers.
     pub cors_origins: Vec<String>,
     /// The pace a request's body must keep ([`super::pace`]).
@@ -54,7 +56,13 @@ pub struct Settings {
 
 impl Default for Settings {
     fn default() -> Self {
-        Self { body_limit: super::DEFAULT_BODY_LIMIT, api_token: None, cors_origins: Vec::new(), pace: Pace::default() }
+        Self {
+            body_limit: super::DEFAULT_BODY_LIMIT,
+            api_token: None,
+            public_jobs: false,
+            cors_origins: Vec::new(),
+            pace: Pace::default(),
+        }
     }
 }
 
@@ -67,7 +75,7 @@ impl Settings {
 
 /// `routes` with the service's middleware.
 pub fn layered(routes: Router, s: &Settings, state: AppState) -> Router {
-    let token: Option<Arc<str>> = s.api_token.as_deref().map(Arc::from);
+    let access = state.access.clone();
     let (admission, limit, flight, pace) = (state.admission.clone(), s.body_limit, InFlight::default(), s.pace);
     let metrics = state.metrics.clone();
     let routes = routes
@@ -76,7 +84,7 @@ pub fn layered(routes: Router, s: &Settings, state: AppState) -> Router {
         .layer(from_fn(move |req, next| idempotent(state.clone(), flight.clone(), limit, req, next)))
         .layer(from_fn(super::label::labelled))
         .layer(from_fn(move |req, next| admit(admission.clone(), (limit, pace), req, next)))
-        .layer(from_fn(move |req, next| require_token(token.clone(), req, next)))
+        .layer(from_fn(move |req, next| require_token(access.clone(), req, next)))
         .layer(from_fn(single_parameters))
         .layer(CatchPanicLayer::custom(panic_response))
         .layer(from_fn(drain_unread))
@@ -88,6 +96,7 @@ pub fn layered(routes: Router, s: &Settings, state: AppState) -> Router {
     };
     let request_id = HeaderName::from_static(REQUEST_ID);
     routes
+        .layer(from_fn(security_headers))
         .layer(from_fn(move |req, next| super::metrics::track(metrics.clone(), req, next)))
         .layer(PropagateRequestIdLayer::new(request_id.clone()))
         .layer(
@@ -98,6 +107,34 @@ pub fn layered(routes: Router, s: &Settings, state: AppState) -> Router {
                 .on_failure(DefaultOnFailure::new().level(Level::WARN)),
         )
         .layer(SetRequestIdLayer::new(request_id, MakeRequestUuid))
+}
+
+/// An SVG opened by itself: no script, nothing from elsewhere, its own styles.
+const SVG_POLICY: &str = "default-src 'none'; style-src 'unsafe-inline'; img-src data:; frame-ancestors 'self'";
+
+/// Another HTML page (the interactive documentation, Swagger UI): its own
+/// scripts, styles and the document, nothing from elsewhere. The service's
+/// own pages set a stricter one, with no script at all.
+const HTML_POLICY: &str = "default-src 'self'; img-src 'self' data:; style-src 'self' 'unsafe-inline'; \
+script-src 'self'; connect-src 'self'; form-action 'self'; base-uri 'none'; frame-ancestors 'none'";
+
+/// Every answer says that its content type is what it is (`nosniff`: a
+/// browser never runs a CSV or a plain text as a script); an SVG or HTML
+/// answer without a Content-Security-Policy of its own gets one.
+async fn security_headers(req: Request, next: Next) -> Response {
+    let mut response = next.run(req).await;
+    let h = response.headers_mut();
+    h.entry(header::X_CONTENT_TYPE_OPTIONS).or_insert(HeaderValue::from_static("nosniff"));
+    let kind = h.get(header::CONTENT_TYPE).and_then(|v| v.to_str().ok()).unwrap_or("");
+    let policy = match kind {
+        k if k.starts_with("image/svg+xml") => Some(SVG_POLICY),
+        k if k.starts_with("text/html") => Some(HTML_POLICY),
+        _ => None,
+    };
+    if let Some(policy) = policy {
+        h.entry(header::CONTENT_SECURITY_POLICY).or_insert(HeaderValue::from_static(policy));
+    }
+    response
 }
 
 fn span(req: &Request) -> tracing::Span {
@@ -142,20 +179,19 @@ fn cors(origins: &[String]) -> Option<CorsLayer> {
     )
 }
 
-/// A request that would change what the service stores needs the token;
-/// any other is answered with whether it carries it ([`super::create::may_store`]).
-async fn require_token(token: Option<Arc<str>>, req: Request, next: Next) -> Response {
-    let carried = token.is_none_or(|t| bearer_matches(req.headers().get(header::AUTHORIZATION), &t));
-    if !carried && changes(req.method()) {
-        return ApiError::Unauthorized.into_response();
+/// A write needs the token, and so does a read of stored jobs where they
+/// are its holders' ([`super::access`]); any other request is answered with
+/// what it may do held for its task. A page of stored jobs refused is the
+/// sign-in form, to come back to it.
+async fn require_token(access: Access, req: Request, next: Next) -> Response {
+    match access.allow(req.method(), req.uri().path(), req.headers()) {
+        Ok(allowed) => super::access::within(allowed, next.run(req)).await,
+        Err(Refused::Write) => ApiError::Unauthorized.into_response(),
+        Err(Refused::Read) if super::pages::is_page(req.uri().path()) => {
+            super::pages::signin::refused(req.uri().path_and_query().map_or("/", |p| p.as_str()))
+        }
+        Err(Refused::Read) => ApiError::PrivateJobs.into_response(),
     }
-    super::create::MAY_STORE.scope(carried, next.run(req)).await
-}
-
-/// Whether a request of this method changes what the service stores (a
-/// POST creates a job, a DELETE removes one): those need the API token.
-fn changes(method: &Method) -> bool {
-    !matches!(*method, Method::GET | Method::HEAD | Method::OPTIONS)
 }
 
 /// A POST's body is read whole first, within the body limit (413) and at
@@ -200,38 +236,4 @@ async fn single_parameters(req: Request, next: Next) -> Response {
     let error = |name: &str| FieldError::parameter_said(name, Msg::new("query-twice"));
     let refused = ApiError::BadQuery(twice.into_iter().map(error).collect());
     if super::pages::is_page(req.uri().path()) { super::pages::error(refused) } else { refused.into_response() }
-}
-
-/// `Authorization: Bearer <token>`, compared in time independent of where it differs.
-/// The scheme's name is case-insensitive and may be followed by several
-/// spaces (RFC 9110, 11.1 and 11.4).
-fn bearer_matches(value: Option<&HeaderValue>, token: &str) -> bool {
-    let Some((scheme, given)) = value.and_then(|v| v.to_str().ok()).and_then(|v| v.split_once(' ')) else {
-        return false;
-    };
-    if !scheme.eq_ignore_ascii_case("bearer") {
-        return false;
-    }
-    let given = given.trim_start_matches(' ');
-    given.len() == token.len() && given.bytes().zip(token.bytes()).fold(0u8, |acc, (a, b)| acc | (a ^ b)) == 0
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn only_the_exact_bearer_token_matches() {
-        let v = |s: &str| HeaderValue::from_str(s).unwrap();
-        assert!(bearer_matches(Some(&v("Bearer s3cret")), "s3cret"));
-        assert!(!bearer_matches(Some(&v("Bearer s3creT")), "s3cret"));
-        assert!(!bearer_matches(Some(&v("Bearer s3cret2")), "s3cret"));
-        assert!(!bearer_matches(Some(&v("Basic s3cret")), "s3cret"));
-        // The scheme in any case, and more than one space after it (RFC 9110).
-        assert!(bearer_matches(Some(&v("bearer s3cret")), "s3cret"));
-        assert!(bearer_matches(Some(&v("BEARER  s3cret")), "s3cret"));
-        assert!(!bearer_matches(Some(&v("Bearers3cret")), "s3cret"));
-        assert!(!bearer_matches(Some(&v("Bearer")), "s3cret"));
-        assert!(!bearer_matches(None, "s3cret"));
-    }
 }

@@ -4,6 +4,7 @@
 //! an engine problem collecting every error with its JSON pointer, run the
 //! engine off the async workers, store the job ([`create::create`]).
 
+pub mod access;
 pub mod admission;
 pub mod body;
 pub mod check;
@@ -33,6 +34,7 @@ pub mod service;
 pub mod tables;
 pub mod templates;
 pub mod watchdog;
+pub mod workers;
 
 use crate::kind::Limits;
 use crate::kind::problem::{ApiError, FieldError, Problem};
@@ -65,14 +67,27 @@ pub struct AppState {
     pub answers: templates::Answers,
     /// The jobs computing now, watched for escapes from their budget.
     pub watchdog: watchdog::Watchdog,
+    /// The worker processes that compute the kinds' jobs; None: they
+    /// compute on the service's own threads, stopped only by the engine's
+    /// own reading of the deadline (`--in-process`).
+    pub workers: Option<workers::Pool>,
+    /// The token, and whether stored jobs are its holders' (set by [`router`] from its settings).
+    pub access: access::Access,
 }
 
 impl AppState {
-    /// The state of a service of `kinds` on `store`, with the default limits and capacity.
+    /// The state of a service of `kinds` on `store`, with the default
+    /// limits and capacity, computing in-process ([`Self::with_workers`]).
     pub fn new(store: Store, kinds: kind::Registry) -> Self {
         let (limits, admission) = (Limits::default(), Admission::default());
         let (metrics, deferred, answers, watchdog) = Default::default();
-        Self { kinds, store, limits, admission, metrics, deferred, answers, watchdog }
+        let access = access::Access::default();
+        Self { kinds, store, limits, admission, metrics, deferred, answers, watchdog, workers: None, access }
+    }
+
+    /// This state with its jobs computed by the worker processes of `settings`.
+    pub fn with_workers(self, settings: workers::Settings) -> Self {
+        Self { workers: Some(workers::Pool::new(settings)), ..self }
     }
 }
 
@@ -159,6 +174,8 @@ fn routes(kinds: &kind::Registry) -> OpenApiRouter<AppState> {
         .routes(utoipa_axum::routes!(pages::job::job))
         .routes(utoipa_axum::routes!(pages::form::template))
         .routes(utoipa_axum::routes!(pages::favicon))
+        .routes(utoipa_axum::routes!(pages::signin::form, pages::signin::sign_in))
+        .routes(utoipa_axum::routes!(pages::signin::sign_out))
         .routes(utoipa_axum::routes!(files::file))
 }
 
@@ -219,6 +236,7 @@ pub fn operator_router(state: AppState) -> Router {
 }
 
 pub fn router(state: AppState, settings: &Settings) -> Router {
+    let state = AppState { access: access::Access::new(settings.api_token.as_deref(), settings.public_jobs), ..state };
     let (routes, _) = routes(&state.kinds).split_for_parts();
     let kinds = state.kinds.clone();
     let document = move || async move { ([(header::CONTENT_TYPE, "application/json")], kinds.document().1.clone()) };

@@ -57,6 +57,11 @@ impl Limits {
         Self { started: Some(self.started.unwrap_or_else(Instant::now)), ..self.clone() }
     }
 
+    /// The last step or sample any job may have (a drawing's `?step=` at most).
+    pub fn last_step(&self) -> usize {
+        self.steps.max(self.samples).saturating_sub(1)
+    }
+
     /// The job's budget from its start: every conversion and engine loop reads it.
     pub fn deadline(&self) -> Deadline {
         Deadline::from(self.started.unwrap_or_else(Instant::now), self.budget)

@@ -179,18 +179,33 @@ pub trait JobResult: Serialize {
     }
 }
 
-/// The 422 of a result of `bytes` (estimated before computing, or measured)
-/// over `limit`, saying how many rows would fit.
-pub fn too_large(bytes: usize, limit: usize, rows: Option<Rows>, estimated: bool) -> ApiError {
-    let id = if estimated { "size-would-be-about" } else { "size-would-be" };
+/// How the size of a result too large is known.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SizeBy {
+    /// Written out.
+    Measured,
+    /// Estimated before computing, from rows computed.
+    About,
+    /// A least size before computing (every number as short as it can be):
+    /// the rows that would fit are then at most those said.
+    AtLeast,
+}
+
+/// The 422 of a result of `bytes` over `limit`, saying how many rows would fit.
+pub fn too_large(bytes: usize, limit: usize, rows: Option<Rows>, sized: SizeBy) -> ApiError {
+    let id = match sized {
+        SizeBy::Measured => "size-would-be",
+        SizeBy::About => "size-would-be-about",
+        SizeBy::AtLeast => "size-would-be-at-least",
+    };
     let size = Msg::new(id).with("size", human(bytes)).count("bytes", bytes).with("limit", human(limit));
     let error = match rows {
         Some(Rows { field, count, also }) if count > 0 => {
             let per_row = bytes as f64 / count as f64;
             let fit = ((limit as f64 * 0.95) / per_row).floor() as usize;
             let name = field.rsplit('/').next().unwrap_or("rows").to_string();
-            let advice =
-                Msg::new("size-advice").with("each", human(per_row as usize)).arg("name", name).count("fit", fit);
+            let advice = if sized == SizeBy::AtLeast { "size-advice-at-most" } else { "size-advice" };
+            let advice = Msg::new(advice).with("each", human(per_row as usize)).arg("name", name).count("fit", fit);
             let said =
                 Msg::new("size-too-large").with("size", size).with("advice", advice.with("also", Msg::new(also)));
             FieldError::said(field, said)
@@ -198,6 +213,23 @@ pub fn too_large(bytes: usize, limit: usize, rows: Option<Rows>, estimated: bool
         _ => FieldError::said("", size),
     };
     ApiError::ResultTooLarge { limit, errors: vec![error] }
+}
+
+/// The result as JSON bytes, or a 422 when it would exceed `limit` bytes.
+pub fn serialized<R: JobResult + ?Sized>(result: &R, limit: usize) -> Result<bytes::Bytes, ApiError> {
+    let mut out = JsonBuffer::new(limit);
+    match write_json(&mut out, result) {
+        Ok(()) => {
+            // The buffer grew by doubling: give back the unused half before it is held in flight.
+            out.buf.shrink_to_fit();
+            Ok(out.buf.into())
+        }
+        Err(e) if e.is_io() => {
+            drop(out);
+            Err(too_large(json_len(result), limit, result.rows(), SizeBy::Measured))
+        }
+        Err(e) => Err(ApiError::Internal(format!("result: {e}"))),
+    }
 }
 
 /// Bytes for people: 16 MiB, 140.2 MB (140,2 MB in Spanish).

@@ -160,6 +160,11 @@ pub enum ApiError {
     MethodNotAllowed,
     /// The job ran out of its compute budget and was stopped.
     OverBudget(Msg),
+    /// The job's computation passed the limit on a job's memory (bytes).
+    JobMemory(u64),
+    /// The job's computation crashed (a panic, an abort, a stack overflow):
+    /// its worker ended without an answer (logged).
+    ComputeFailed,
     /// The result would exceed the limit on a result; `errors` say what would fit.
     ResultTooLarge {
         limit: usize,
@@ -175,6 +180,8 @@ pub enum ApiError {
     /// The database cannot be used at the moment (logged).
     Unavailable(String),
     Unauthorized,
+    /// A read of stored jobs without the token, of a service that keeps them to its holders.
+    PrivateJobs,
     /// A request's body fell behind the pace a client must keep ([`super::pace`]).
     RequestTimeout(Msg),
     /// An HTTP/1.0 POST with no `Content-Length`.
@@ -214,6 +221,8 @@ impl ApiError {
                 (StatusCode::METHOD_NOT_ALLOWED, "method-not-allowed", "problem-method-not-allowed")
             }
             Self::OverBudget(_) => (StatusCode::UNPROCESSABLE_ENTITY, "compute-budget", "problem-compute-budget"),
+            Self::JobMemory(_) => (StatusCode::UNPROCESSABLE_ENTITY, "job-memory", "problem-job-memory"),
+            Self::ComputeFailed => (StatusCode::INTERNAL_SERVER_ERROR, "compute-failed", "problem-compute-failed"),
             Self::ResultTooLarge { .. } => {
                 (StatusCode::UNPROCESSABLE_ENTITY, "result-too-large", "problem-result-too-large")
             }
@@ -222,7 +231,9 @@ impl ApiError {
             Self::Unavailable(_) => {
                 (StatusCode::SERVICE_UNAVAILABLE, "database-unavailable", "problem-database-unavailable")
             }
-            Self::Unauthorized => (StatusCode::UNAUTHORIZED, "unauthorized", "problem-unauthorized"),
+            Self::Unauthorized | Self::PrivateJobs => {
+                (StatusCode::UNAUTHORIZED, "unauthorized", "problem-unauthorized")
+            }
             Self::RequestTimeout(_) => (StatusCode::REQUEST_TIMEOUT, "request-timeout", "problem-request-timeout"),
             Self::LengthRequired => (StatusCode::LENGTH_REQUIRED, "length-required", "problem-length-required"),
             Self::Internal(_) => (StatusCode::INTERNAL_SERVER_ERROR, "internal", "problem-internal"),
@@ -312,7 +323,7 @@ impl IntoResponse for ApiError {
         let mut response = (status, [(header::CONTENT_TYPE, "application/problem+json")], body).into_response();
         let headers = response.headers_mut();
         match self {
-            Self::Unauthorized => {
+            Self::Unauthorized | Self::PrivateJobs => {
                 headers.insert(header::WWW_AUTHENTICATE, header::HeaderValue::from_static("Bearer"));
             }
             Self::Saturated { retry_after, .. } => {

@@ -128,7 +128,7 @@ async fn a_body_still_arriving_holds_no_slot_and_is_cut_off_behind_the_pace() {
     let pace = Pace { rate: 1000, grace: Duration::from_millis(100) };
     let dir = tempfile::tempdir().unwrap();
     let store = Store::open(&format!("sqlite://{}/jobs.db", dir.path().display())).await.unwrap();
-    let state = AppState { admission, ..AppState::new(store, mechdyn::registry()) };
+    let state = AppState { admission, ..crate::helpers::state(store) };
     let app = TestApp::serving(router(state, &Settings { pace, ..Settings::default() }), dir);
     let (mut sender, slow) = http_body_util::channel::Channel::<bytes::Bytes>::new(1);
     let body = request("p113_pulley").to_string();

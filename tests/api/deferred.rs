@@ -37,7 +37,7 @@ pub async fn ended(app: &TestApp, location: &str) -> Value {
 async fn app_with(settings: Settings) -> (TestApp, AppState) {
     let dir = tempfile::tempdir().unwrap();
     let store = Store::open(&format!("sqlite://{}/jobs.db", dir.path().display())).await.unwrap();
-    let state = AppState { deferred: Deferred::new(settings), ..AppState::new(store, mechdyn::registry()) };
+    let state = AppState { deferred: Deferred::new(settings), ..crate::helpers::state(store) };
     (TestApp::serving(router(state.clone(), &mechdyn::api::Settings::default()), dir), state)
 }
 

@@ -96,7 +96,7 @@ pub async fn stored_before_201(url: &str) {
     let store = Store::open(url).await.unwrap();
     // Room for all 96 at once (the default queue would answer some 503).
     let admission = Admission::new(Capacity { queue: 96, ..Capacity::default() });
-    let app = router(AppState { admission, ..AppState::new(store.clone(), mechdyn::registry()) }, &Settings::default());
+    let app = router(AppState { admission, ..crate::helpers::state(store.clone()) }, &Settings::default());
     let other = Store::open(url).await.unwrap();
     let body = request("p113_pulley").to_string();
     let mut tasks = JoinSet::new();

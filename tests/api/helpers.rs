@@ -8,6 +8,17 @@ use mechdyn::store::Store;
 use serde_json::Value;
 use tower::ServiceExt;
 
+/// How the tests' services compute: in worker processes of the binary
+/// under test, as the service does.
+pub fn workers() -> mechdyn::api::workers::Settings {
+    mechdyn::api::workers::Settings { program: env!("CARGO_BIN_EXE_mechdyn").into(), memory: None }
+}
+
+/// A service's state on `store`, its jobs computed by worker processes.
+pub fn state(store: Store) -> AppState {
+    AppState::new(store, mechdyn::registry()).with_workers(workers())
+}
+
 pub struct TestApp {
     pub app: axum::Router,
     pub url: String,
@@ -42,17 +53,13 @@ impl TestApp {
         let dir = tempfile::tempdir().unwrap();
         let url = format!("sqlite://{}/sub/jobs.db", dir.path().display());
         let store = Store::open(&url).await.unwrap();
-        Self { app: router(AppState::new(store, mechdyn::registry()), settings), url, _dir: dir }
+        Self { app: router(state(store), settings), url, _dir: dir }
     }
 
     /// A fresh app on the database at `url` (a test's PostgreSQL database).
     pub async fn on(url: &str, settings: &Settings) -> Self {
         let store = Store::open(url).await.unwrap();
-        Self {
-            app: router(AppState::new(store, mechdyn::registry()), settings),
-            url: url.into(),
-            _dir: tempfile::tempdir().unwrap(),
-        }
+        Self { app: router(state(store), settings), url: url.into(), _dir: tempfile::tempdir().unwrap() }
     }
 
     /// A router built by the test (its own state and settings), its
@@ -64,7 +71,7 @@ impl TestApp {
     /// The same database opened again, as after a restart.
     pub async fn restart(self) -> Self {
         let store = Store::open(&self.url).await.unwrap();
-        Self { app: router(AppState::new(store, mechdyn::registry()), &Settings::default()), ..self }
+        Self { app: router(state(store), &Settings::default()), ..self }
     }
 
     /// A fresh app whose jobs have this compute budget (and room for
@@ -81,7 +88,7 @@ impl TestApp {
     /// The same database served again with the state `change` makes of the default.
     pub async fn reopened(self, change: impl FnOnce(AppState) -> AppState) -> Self {
         let store = Store::open(&self.url).await.unwrap();
-        Self { app: router(change(AppState::new(store, mechdyn::registry())), &Settings::default()), ..self }
+        Self { app: router(change(state(store)), &Settings::default()), ..self }
     }
 
     pub async fn send(&self, req: Request<Body>) -> Reply {
@@ -113,6 +120,12 @@ impl TestApp {
 
     pub async fn get(&self, path: &str) -> Reply {
         self.send(Request::get(path).body(Body::empty()).unwrap()).await
+    }
+
+    /// A GET carrying the API token `token` as a bearer.
+    pub async fn get_as(&self, path: &str, token: &str) -> Reply {
+        let req = Request::get(path).header("authorization", format!("Bearer {token}"));
+        self.send(req.body(Body::empty()).unwrap()).await
     }
 
     /// POSTs a request that must be answered 201; returns the job's result.

@@ -245,14 +245,6 @@ fn timed(port: u16, path: &str, body: &str) -> (u16, String, f64) {
     (status, text, started.elapsed().as_secs_f64())
 }
 
-/// The CPU seconds the process `pid` has used (Linux's /proc, in ticks of 1/100 s).
-fn cpu_seconds(pid: u32) -> Option<f64> {
-    let stat = std::fs::read_to_string(format!("/proc/{pid}/stat")).ok()?;
-    let fields: Vec<&str> = stat.rsplit_once(')')?.1.split_whitespace().collect();
-    let ticks: f64 = fields.get(11)?.parse::<f64>().ok()? + fields.get(12)?.parse::<f64>().ok()?;
-    Some(ticks / 100.0)
-}
-
 /// A gauge or counter's value in the /metrics text (summed over its labels).
 pub fn metric(port: u16, name: &str) -> f64 {
     let (_, text) = http(port, "GET", "/metrics", "").unwrap();
@@ -264,7 +256,7 @@ pub fn metric(port: u16, name: &str) -> f64 {
 
 /// With a budget of 1 s, every kind's documented example and every hostile
 /// request answers 201 or 422 within the budget and [`MARGIN`]; afterwards
-/// no job computes, the process is idle (under 0.3 s of CPU in a second),
+/// no job computes, the service and its workers are idle (under 0.3 s of CPU in a second),
 /// and the watchdog saw no job past its budget.
 #[test]
 fn every_hostile_request_and_every_example_answers_within_its_budget() {
@@ -280,10 +272,10 @@ fn every_hostile_request_and_every_example_answers_within_its_budget() {
         assert!(took <= 1.0 + MARGIN, "{name}: answered after {took:.1} s with a budget of 1 s");
     }
     assert_eq!(metric(port, "mechdyn_jobs_computing"), 0.0);
-    let before = cpu_seconds(child.id()).unwrap();
+    let before = crate::isolation::tree_cpu_seconds(child.id());
     std::thread::sleep(Duration::from_secs(1));
-    let spent = cpu_seconds(child.id()).unwrap() - before;
-    assert!(spent < 0.3, "the process spent {spent} s of CPU in a second after its answers");
+    let spent = crate::isolation::tree_cpu_seconds(child.id()) - before;
+    assert!(spent < 0.3, "the service and its workers spent {spent} s of CPU in a second after their answers");
     let (_, text) = http(port, "GET", "/metrics", "").unwrap();
     assert!(
         text.contains(r#"mechdyn_jobs_overrun_total{kind="dynamics"} 0"#),

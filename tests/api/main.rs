@@ -1,6 +1,7 @@
 //! Integration tests through the real router and a real SQLite file.
 
 mod andrews;
+mod anonymous;
 mod attack;
 mod backup;
 mod balancer;
@@ -40,6 +41,7 @@ mod hard_contacts;
 mod helpers;
 mod hostile;
 mod inputs;
+mod isolation;
 mod jobs;
 mod kinetostatics;
 mod libreoffice;
@@ -54,8 +56,10 @@ mod peers;
 mod pg_server;
 mod plots;
 mod postgres;
+mod private;
 mod prometheus;
 mod protocol;
+mod ranges;
 mod readme;
 mod robot_arm;
 mod rotor;

@@ -6,7 +6,7 @@ use crate::helpers::{TestApp, request};
 use axum::body::Body;
 use axum::http::{Request, StatusCode};
 use mechdyn::api::retention::{self, Policy};
-use mechdyn::api::{AppState, Settings, router};
+use mechdyn::api::{Settings, router};
 use mechdyn::store::Store;
 use std::time::Duration;
 
@@ -17,7 +17,7 @@ use std::time::Duration;
 async fn readiness_follows_the_database_and_liveness_does_not() {
     let dir = tempfile::tempdir().unwrap();
     let store = Store::open(&format!("sqlite://{}/jobs.db", dir.path().display())).await.unwrap();
-    let app = TestApp::serving(router(AppState::new(store.clone(), mechdyn::registry()), &Settings::default()), dir);
+    let app = TestApp::serving(router(crate::helpers::state(store.clone()), &Settings::default()), dir);
     let ready = app.get("/readyz").await;
     assert_eq!(ready.status, StatusCode::OK, "{}", ready.text);
     assert_eq!((ready.json()["status"].as_str(), ready.json()["database"].as_str()), (Some("ready"), Some("sqlite")));
@@ -65,12 +65,12 @@ pub async fn a_deleted_job_is_gone_on(app: TestApp) {
     };
     let refused = app.send(delete(None)).await;
     assert_eq!((refused.status, refused.content_type.as_str()), (StatusCode::UNAUTHORIZED, "application/problem+json"));
-    assert_eq!(app.get(&path).await.status, StatusCode::OK, "a refused DELETE deletes nothing");
+    assert_eq!(app.get_as(&path, "t0ken").await.status, StatusCode::OK, "a refused DELETE deletes nothing");
     let deleted = app.send(delete(Some("Bearer t0ken"))).await;
     assert_eq!((deleted.status, deleted.text.as_str()), (StatusCode::NO_CONTENT, ""));
-    assert_eq!(app.get(&path).await.status, StatusCode::NOT_FOUND);
-    assert_eq!(app.get(&format!("{path}/result.csv")).await.status, StatusCode::NOT_FOUND);
-    assert_eq!(app.get("/v1/jobs").await.json()["items"], serde_json::json!([]));
+    assert_eq!(app.get_as(&path, "t0ken").await.status, StatusCode::NOT_FOUND);
+    assert_eq!(app.get_as(&format!("{path}/result.csv"), "t0ken").await.status, StatusCode::NOT_FOUND);
+    assert_eq!(app.get_as("/v1/jobs", "t0ken").await.json()["items"], serde_json::json!([]));
     let again = app.send(delete(Some("Bearer t0ken"))).await;
     assert_eq!((again.status, again.json()["type"].as_str()), (StatusCode::NOT_FOUND, Some("/problems/not-found")));
     let retried = app.send(post()).await;
@@ -92,7 +92,7 @@ async fn the_retention_deletes_by_count_and_by_age() {
 /// The test's body, on the database at `url`.
 pub async fn the_retention_deletes_on(url: &str) {
     let store = Store::open(url).await.unwrap();
-    let state = AppState::new(store, mechdyn::registry());
+    let state = crate::helpers::state(store);
     // The database is at `url` (SQLite's folder kept by the caller, or a PostgreSQL server).
     let app = TestApp::serving(router(state.clone(), &Settings::default()), tempfile::tempdir().unwrap());
     let mut ids = Vec::new();

@@ -33,7 +33,7 @@ impl std::io::Write for Log {
 #[tokio::test]
 async fn a_panicking_handler_is_answered_500_without_internals() {
     let mut app = TestApp::new().await;
-    let state = mechdyn::api::AppState::new(mechdyn::store::Store::open(&app.url).await.unwrap(), mechdyn::registry());
+    let state = crate::helpers::state(mechdyn::store::Store::open(&app.url).await.unwrap());
     app.app = layered(axum::Router::new().route("/boom", get(boom)), &Settings::default(), state);
     // A first panic registers the span's and the events' callsites here,
     // before this test's subscriber exists: setting it then asks each of
@@ -73,7 +73,7 @@ async fn every_answer_has_a_request_id() {
 
 /// With a token configured, a POST without it (or with another) is 401
 /// problem+json with `WWW-Authenticate: Bearer` and stores nothing; with it,
-/// 201. Reads stay open.
+/// 201. Stored jobs are read with it (`private.rs`: and only with it).
 #[tokio::test]
 async fn the_api_token_guards_every_post() {
     let settings = Settings { api_token: Some("s3cret-token".into()), ..Settings::default() };
@@ -93,12 +93,12 @@ async fn the_api_token_guards_every_post() {
         assert_eq!(r.headers["www-authenticate"], "Bearer");
         assert_eq!(r.json()["type"], "/problems/unauthorized");
     }
-    let list = app.get("/v1/jobs").await;
+    let list = app.get_as("/v1/jobs", "s3cret-token").await;
     assert_eq!(list.status, StatusCode::OK);
     assert!(list.json()["items"].as_array().unwrap().is_empty());
     let r = app.send(post(Some("Bearer s3cret-token"))).await;
     assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
-    assert_eq!(app.get(r.location.as_deref().unwrap()).await.status, StatusCode::OK);
+    assert_eq!(app.get_as(r.location.as_deref().unwrap(), "s3cret-token").await.status, StatusCode::OK);
 }
 
 /// CORS: a configured origin gets its preflight allowed and the headers a
@@ -134,12 +134,13 @@ async fn cors_allows_only_the_configured_origins() {
 /// With an API token, a GET never stores a new job without it: a template's
 /// value or variants for new parameters are computed and answered, nothing
 /// stored; its job or page for new parameters is a 401 (it would name a
-/// stored job). With the token the job is stored, and then read without it.
-/// (Before, 22 such GETs without the token stored 69 jobs.)
+/// stored job). With the token the job is stored; its value is then read
+/// without it, the job itself only with it (stored jobs are the token's
+/// holders'). (Before, 22 such GETs without the token stored 69 jobs.)
 #[tokio::test]
 async fn a_get_stores_a_new_job_only_with_the_token() {
     let app = TestApp::with_settings(&crate::operations::with_token()).await;
-    let jobs = || async { app.get("/v1/jobs?limit=100").await.json()["items"].as_array().unwrap().len() };
+    let jobs = || async { app.get_as("/v1/jobs?limit=100", "t0ken").await.json()["items"].as_array().unwrap().len() };
     let value = "/v1/templates/p103-slider-flywheel/result/inertia_exact?F=1100";
     let anonymous = app.get(value).await;
     assert_eq!(anonymous.status, StatusCode::OK, "{}", anonymous.text);
@@ -155,8 +156,11 @@ async fn a_get_stores_a_new_job_only_with_the_token() {
     let with_token = app.send(req).await;
     assert_eq!(with_token.text, anonymous.text, "the same value stored or not");
     assert_eq!(jobs().await, 1, "the GET with the token stored its job");
-    let stored = app.get("/v1/templates/p103-slider-flywheel/job?F=1100").await;
-    assert_eq!(stored.status, StatusCode::OK, "a stored job is read without the token: {}", stored.text);
+    assert_eq!(app.get(value).await.text, anonymous.text, "its value read again without the token");
+    let job = "/v1/templates/p103-slider-flywheel/job?F=1100";
+    assert_eq!(app.get(job).await.status, StatusCode::UNAUTHORIZED, "a stored job is the token holders'");
+    let stored = app.get_as(job, "t0ken").await;
+    assert_eq!(stored.status, StatusCode::OK, "a stored job is read with the token: {}", stored.text);
 }
 
 /// SQLite: text that no row holds, as every database answers it.
@@ -173,13 +177,13 @@ async fn text_that_no_row_holds_is_not_found_or_refused() {
 /// settings [`crate::operations::with_token`].
 pub async fn text_that_no_row_holds_on(app: TestApp) {
     for path in ["/v1/jobs/%00", "/v1/jobs/a%00b/result/x", "/v1/templates/%00", "/v1/templates/x%00/result/y"] {
-        let r = app.get(path).await;
+        let r = app.get_as(path, "t0ken").await;
         assert_eq!(r.status, StatusCode::NOT_FOUND, "{path}: {}", r.text);
     }
     let delete = Request::delete("/v1/jobs/%00").header("authorization", "Bearer t0ken").body(Body::empty()).unwrap();
     assert_eq!(app.send(delete).await.status, StatusCode::NOT_FOUND);
     for label in ["%00", "ana%09", "%E2%80%AEfdp.exe", "x%E2%81%A6y"] {
-        let r = app.get(&format!("/v1/jobs?label={label}")).await;
+        let r = app.get_as(&format!("/v1/jobs?label={label}"), "t0ken").await;
         assert_eq!(r.status, StatusCode::BAD_REQUEST, "?label={label}: {}", r.text);
         let req = Request::post(format!("/v1/flywheel?label={label}")).header("content-type", "application/json");
         let req = req.header("authorization", "Bearer t0ken");

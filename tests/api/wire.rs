@@ -43,6 +43,16 @@ pub fn exchange(
     Ok((status, body))
 }
 
+/// A GET's answer head: its status line and headers, as sent.
+pub fn exchange_head(port: u16, method: &str, path: &str) -> std::io::Result<String> {
+    let mut s = TcpStream::connect(("127.0.0.1", port))?;
+    s.set_read_timeout(Some(Duration::from_secs(10)))?;
+    s.write_all(format!("{method} {path} HTTP/1.1\r\nHost: localhost\r\nConnection: close\r\n\r\n").as_bytes())?;
+    let mut raw = String::new();
+    s.read_to_string(&mut raw)?;
+    Ok(raw.split_once("\r\n\r\n").map_or(raw.clone(), |(head, _)| head.to_string()))
+}
+
 /// A loopback port free now, below Linux's ephemeral range (32768–60999):
 /// a port the kernel hands out for port 0 is also one it may give an
 /// outgoing connection's local end, and the tests that stop a process and

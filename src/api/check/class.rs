@@ -45,7 +45,7 @@ pub fn options(q: &HashMap<String, String>) -> Result<(ToleranceDto, bool), ApiE
             v.trim()
                 .parse::<u32>()
                 .ok()
-                .filter(|n| (1..=15).contains(n))
+                .filter(|n| super::SIGFIGS.contains(n))
                 .ok_or_else(|| bad("sigfigs", Msg::new("check-sigfigs")))
         })
         .transpose()?;
@@ -277,10 +277,10 @@ async fn graded(
 /// `error` (a row that cannot be graded says why; the others are graded).
 #[utoipa::path(post, path = "/v1/templates/{id}/grade", operation_id = "post_template_grade", tag = "grading",
     params(("id" = String, Path, description = "Template id"),
-        ("relative" = Option<f64>, Query, description = "Relative tolerance (default 0.01)"),
-        ("absolute" = Option<f64>, Query, description = "Absolute tolerance, SI (default 0)"),
-        ("sigfigs" = Option<u32>, Query, description = "Significant figures (PrairieLearn's rule), replacing `relative`"),
-        ("zero_level" = Option<f64>, Query, description = "Below it (SI) an expected value is compared absolutely (default 1e-12)"),
+        ("relative" = Option<f64>, Query, minimum = 0, description = "Relative tolerance (default 0.01)"),
+        ("absolute" = Option<f64>, Query, minimum = 0, description = "Absolute tolerance, SI (default 0)"),
+        ("sigfigs" = Option<u32>, Query, minimum = 1, maximum = 15, description = "Significant figures (PrairieLearn's rule), 1 to 15, replacing `relative`"),
+        ("zero_level" = Option<f64>, Query, minimum = 0, description = "Below it (SI) an expected value is compared absolutely (default 1e-12)"),
         ("reveal" = Option<bool>, Query, description = "Whether the feedback shows expected values (default true)"),
         ("decimal" = Option<crate::api::tables::DecimalMark>, Query, description = "`point` (default) or `comma`: the CSV's numbers with a decimal comma, its columns separated by `;`")),
     request_body(description = "CSV: `student`, parameter columns or `variant`, answer columns named by pointer",

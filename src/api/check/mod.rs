@@ -25,6 +25,9 @@ use std::collections::BTreeMap;
 use std::sync::OnceLock;
 use utoipa::ToSchema;
 
+/// The significant figures a tolerance may ask (the schema's and the query's bounds).
+pub const SIGFIGS: std::ops::RangeInclusive<u32> = 1..=15;
+
 /// Most answers in one check.
 pub const MAX_ANSWERS: usize = 1000;
 
@@ -254,7 +257,7 @@ fn tolerance_errors(t: Option<&ToleranceDto>, here: &str) -> Vec<FieldError> {
             errors.push(FieldError::said(format!("{here}/{name}"), Msg::new("field-finite-not-negative")));
         }
     }
-    if t.sigfigs.is_some_and(|n| !(1..=15).contains(&n)) {
+    if t.sigfigs.is_some_and(|n| !SIGFIGS.contains(&n)) {
         errors.push(FieldError::said(format!("{here}/sigfigs"), Msg::new("check-sigfigs")));
     }
     errors

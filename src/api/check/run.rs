@@ -69,12 +69,12 @@ pub async fn check_job(
     // The reference's memory stays reserved until the check is stored.
     let (kind, (reference, _reserved)) = reference(state, &r).await?;
     let (result, id) = (reference.result.clone(), reference.id.clone());
-    create::compute_and_store(state, CHECK.name(), raw, to, move || {
+    let grading = move |_: &Limits| {
         let result: Value =
             serde_json::from_slice(&result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
         grade(&r, kind, &result, Some(id))
-    })
-    .await
+    };
+    create::compute_and_store(state, create::Work::own(CHECK.name(), grading), raw, to).await
 }
 
 /// The reference job of a check: stored, or computed and stored.

@@ -31,7 +31,9 @@ const ROWS: usize = 4;
 /// A job's page.
 #[utoipa::path(get, path = "/jobs/{id}", operation_id = "page_job", tag = "pages",
     params(("id" = String, Path, description = "Job id"),
-        ("step" = Option<usize>, Query, description = "The step or sample the drawing of a mechanism shows")),
+        ("step" = Option<usize>, Query, minimum = 0, maximum = 99999, description = "The step or sample the drawing \
+            of a mechanism shows, from 0 to the job's last (a 400 beyond it); at most the limit on steps or samples \
+            less one (by default 99999)")),
     responses((status = 200, description = "The job's page", content_type = "text/html", body = String),
         (status = 400, description = "A step beyond the job's or an unknown query parameter", content_type = "text/html", body = String),
         (status = 404, description = "No job with this id", content_type = "text/html", body = String),
@@ -64,7 +66,7 @@ enum Rendered {
 }
 
 async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Result<Rendered, ApiError> {
-    let step = plots::step(q)?;
+    let step = plots::step(q, state.limits.last_step())?;
     let (row, mut result, _reserved) = match result_tree(state, id).await {
         Err(ApiError::NotDone { status, .. }) => {
             let (row, _reserved) = read::load(state, id, read::READ_MEMORY_FACTOR).await?;
@@ -168,10 +170,12 @@ pub fn kind_title(state: &AppState, name: &str) -> String {
     state.kinds.find(name).map_or_else(|| name.to_string(), |k| k.title())
 }
 
-/// The number of steps (kinetostatics) or samples (dynamics) a drawing can show.
+/// The number of steps (kinetostatics) or samples (dynamics) a drawing, or
+/// the plots' cursor, can show.
 fn steps(result: &Value) -> usize {
     let machine = result.pointer("/machine/samples").and_then(Value::as_array);
-    machine.or_else(|| result.get("steps").and_then(Value::as_array)).map_or(0, Vec::len)
+    let listed = |name: &str| result.get(name).and_then(Value::as_array);
+    machine.or_else(|| listed("steps")).or_else(|| listed("samples")).map_or(0, Vec::len)
 }
 
 /// `x` in its shortest exact form, a whole number without `.0`.

@@ -7,6 +7,7 @@
 pub mod form;
 pub mod job;
 mod layout;
+pub mod signin;
 
 use super::AppState;
 use super::templates::builtin;
@@ -24,7 +25,7 @@ pub use layout::error;
 
 /// Whether `path` is a page's, whose errors are answered as pages too.
 pub fn is_page(path: &str) -> bool {
-    path == "/" || path.starts_with("/jobs/") || path.starts_with("/templates/")
+    path == "/" || path.starts_with("/jobs/") || path.starts_with("/templates/") || path == "/signin"
 }
 
 /// How many recent jobs the home page lists.
@@ -35,10 +36,16 @@ const RECENT: i64 = 25;
     responses((status = 200, description = "The home page", content_type = "text/html", body = String),
         (status = 503, description = "The database is unavailable", content_type = "text/html", body = String)))]
 pub async fn home(State(state): State<AppState>) -> Response {
-    let jobs = match state.store.recent(RECENT).await {
-        Ok(jobs) => jobs,
-        Err(e) => return layout::error(e.into()),
+    // The recent jobs only to whom may read them (`api::access`).
+    let readable = crate::api::access::jobs_readable();
+    let jobs = match readable {
+        true => match state.store.recent(RECENT).await {
+            Ok(jobs) => jobs,
+            Err(e) => return layout::error(e.into()),
+        },
+        false => Vec::new(),
     };
+    let signed_in = state.access.has_token() && crate::api::create::may_store();
     let mut templates = builtin().to_vec();
     if let Ok(stored) = state.store.templates().await {
         templates.extend(stored.iter().filter_map(|b| serde_json::from_str(b).ok()));
@@ -58,7 +65,10 @@ pub async fn home(State(state): State<AppState>) -> Response {
             } } }
         } }
         h2 { (t("page-recent")) }
-        @if jobs.is_empty() {
+        @if signed_in { (signin::sign_out_button()) }
+        @if !readable {
+            (signin::section("/", false))
+        } @else if jobs.is_empty() {
             p { (t("page-no-job")) " " a href="/docs/" { (t("page-nav-docs")) } }
         } @else {
             div.scroll { table {

@@ -87,9 +87,10 @@ pub fn segment(text: &str) -> String {
     params(
         ("id" = String, Path, description = "Job id"),
         ("name" = String, Path, description = "The plot's name, as `GET /v1/jobs/{id}/plots` lists it: `torque`, `speed`, `mechanism`"),
-        ("step" = Option<usize>, Query, description = "The drawing of a mechanism (`mechanism`): the step \
-            (kinetostatics) or sample (dynamics) it shows, from 0 (the default); on the plots against the input \
-            or the time, that step's cursor"),
+        ("step" = Option<usize>, Query, minimum = 0, maximum = 99999, description = "The drawing of a mechanism \
+            (`mechanism`): the step (kinetostatics) or sample (dynamics) it shows, from 0 (the default) to the job's \
+            last (a 400 beyond it); on the plots against the input or the time, that step's cursor (none beyond the \
+            job's). At most the limit on steps or samples less one (by default 99999)"),
     ),
     responses(
         (status = 200, description = "The plot", content_type = "image/svg+xml", body = String),
@@ -106,7 +107,7 @@ pub async fn plot(
     q: Result<Query<HashMap<String, String>>, QueryRejection>,
 ) -> Result<Response, ApiError> {
     let q = query(q, &["step"])?;
-    let options = Options { step: step(&q)? };
+    let options = Options { step: step(&q, state.limits.last_step())? };
     let Some(name) = file.strip_suffix(".svg") else {
         let known = listed(&state, &id).await?.0.into_iter().map(|p| format!("{}.svg", p.name)).collect();
         return Err(ApiError::NoPlot { id, name: file, known });
@@ -144,13 +145,14 @@ pub async fn listed(state: &AppState, id: &str) -> Result<(Vec<Listed>, crate::s
     Ok((plots.unwrap_or_default(), row))
 }
 
-/// `?step=`, when given, a whole number (a blank one too is a 400: the
-/// document says integer, and the page's form requires the field).
-pub fn step(q: &HashMap<String, String>) -> Result<Option<usize>, ApiError> {
+/// `?step=`, when given, a whole number from 0 to `last` (a blank one too
+/// is a 400: the document says integer, and the page's form requires the
+/// field); whether the job has that step is its reader's to say.
+pub fn step(q: &HashMap<String, String>, last: usize) -> Result<Option<usize>, ApiError> {
     q.get("step")
         .map(|s| {
-            s.trim().parse::<usize>().map_err(|_| {
-                let why = crate::i18n::Msg::new("query-whole-number").arg("text", s);
+            s.trim().parse::<usize>().ok().filter(|&n| n <= last).ok_or_else(|| {
+                let why = crate::i18n::Msg::new("query-step").arg("text", s).arg("last", last);
                 ApiError::BadQuery(vec![FieldError::parameter_said("step", why)])
             })
         })

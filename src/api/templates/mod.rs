@@ -284,7 +284,7 @@ pub async fn table(
 /// same template and seed give the same parameters everywhere and forever.
 #[utoipa::path(get, path = "/v1/templates/{id}/variants", operation_id = "get_template_variants", tag = "grading",
     params(("id" = String, Path, description = "Template id"),
-        ("seed" = Option<u64>, Query, description = "The first variant, 0 to 2^63 − 1 (default 1)", maximum = 9223372036854775807_u64),
+        ("seed" = Option<u64>, Query, description = "The first variant, 0 to 2^63 − 1 (default 1); the last, seed + count − 1, at most 2^63 − 1 too", maximum = 9223372036854775807_u64),
         ("count" = Option<u64>, Query, description = "How many, 1 to 1000 (default 10)", minimum = 1, maximum = 1000),
         ("values" = Option<String>, Query, description = "Comma-separated pointers of the reference values to answer, e.g. `inertia_exact`"),
         ("format" = Option<super::tables::Format>, Query, description = "`json` (default) or `csv`; the same as `Accept: text/csv`"),

@@ -30,6 +30,8 @@ problem-unauthorized = Missing or wrong bearer token
 problem-request-timeout = The request's body did not arrive in time
 problem-length-required = The body's length is required
 problem-internal = Internal server error
+problem-job-memory = The job ran out of its memory
+problem-compute-failed = The job's computation failed
 
 ## Problem documents: details
 
@@ -69,8 +71,11 @@ detail-saturated = the service is saturated ({ $reason }); retry after { $second
 detail-storage-full = { $what }: the service's storage is full; reads still work, and writes resume once space returns
 detail-unavailable = the database is unavailable; retry later
 detail-unauthorized = this service stores and deletes jobs only for a request with "Authorization: Bearer <token>": every POST and DELETE, and a GET of a template's job or page that would store a new job
+detail-private-jobs = this service keeps its stored jobs to the holders of its token: send "Authorization: Bearer <token>", or sign in once at /signin in a browser; a template's values (GET /v1/templates/{"{"}id{"}"}/result/…) and variants need no token
 detail-length-required = an HTTP/1.0 POST needs a Content-Length header: its body's end cannot be told otherwise
 detail-internal = internal error; the x-request-id header of this answer finds it in the service's log
+detail-job-memory = the job needed more than the { $mib } MiB of memory a job may use; ask for fewer steps, samples or bodies
+detail-compute-failed = the job's computation stopped without an answer: a fault of the service, which the x-request-id header of this answer finds in its log; no other job was affected
 
 ## Quantities and units
 
@@ -199,6 +204,13 @@ page-col-kind = kind
 page-col-problem = problem
 page-recent = Recent jobs
 page-no-job = No job yet: open a template, or POST a request:
+page-signin-title = Sign in
+page-signin-intro = The jobs stored on this service are kept to the holders of its token. Give the token once: this browser then keeps a cookie that stands for it (30 days, or until you sign out). A template's form and values need no token.
+page-signin-token = Token
+page-signin-button = Sign in
+page-signin-wrong = That is not this service's token.
+page-signed-in = Signed in.
+page-signout-button = Sign out
 page-col-job = job
 page-col-label = label
 page-col-created = created (UTC)
@@ -497,14 +509,17 @@ unit-target = '{ $target }': { $why }
 unit-part-in = '{ $target }' is a unit of { $found }; the part at { $pointer } is in { $unit }
 unit-part-in-of = '{ $target }' is a unit of { $found }; the part at { $pointer } is in { $unit }, a unit of { $expected }
 query-whole-number = '{ $text }': must be a whole number from 0
+query-step = '{ $text }': must be a whole number from 0 to { $last }
 parameter-pointer-missing = points at { $pointer }, not in the request
 
 ## A result too large
 
 size-would-be = the result would be { $size } ({ $bytes } bytes), over the limit of { $limit } on a result (MECHDYN_MAX_RESULT_BYTES)
 size-would-be-about = the result would be about { $size } ({ $bytes } bytes), over the limit of { $limit } on a result (MECHDYN_MAX_RESULT_BYTES)
+size-would-be-at-least = the result would be at least { $size } ({ $bytes } bytes), over the limit of { $limit } on a result (MECHDYN_MAX_RESULT_BYTES)
 size-too-large = { $size }; { $advice }
 size-advice = at { $each } each, { $name } ≤ { $fit } would fit{ $also }
+size-advice-at-most = at { $each } or more each, no more than { $fit } { $name } could fit{ $also }
 size-also-events = { " " }(events: one per turn, fewer with a shorter run)
 size-also-table = { " " }(0 for no table)
 size-also-outputs = ; or ask for fewer "outputs" (every body's kinematics is the largest)
@@ -538,4 +553,5 @@ progress-friction = the joints' friction was being iterated at position { $step 
 progress-approach = the mechanism had moved { $step } of { $of } steps from its drawing towards the first position
 progress-cam-lift = the lift had been evaluated at { $angle } of { $of } angles
 progress-reading = while the request was being read: its sketch assembled, its contacts placed, its inputs laid out
+progress-stopped = it did not stop by itself, and was stopped from outside
 detail-request-timeout = the request's body did not arrive in time: { $read } bytes in { $seconds } s; this service needs a body to keep arriving at { $rate } bytes/s once { $grace } s have passed

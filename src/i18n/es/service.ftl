@@ -30,6 +30,8 @@ problem-unauthorized = Falta el token de portador o es incorrecto
 problem-request-timeout = El cuerpo de la petición no llegó a tiempo
 problem-length-required = Se necesita la longitud del cuerpo
 problem-internal = Error interno del servidor
+problem-job-memory = El trabajo agotó su memoria
+problem-compute-failed = Falló el cálculo del trabajo
 
 ## Documentos de problema: detalles
 
@@ -69,8 +71,11 @@ detail-saturated = el servicio está saturado ({ $reason }); reinténtelo dentro
 detail-storage-full = { $what }: el almacenamiento del servicio está lleno; las lecturas siguen funcionando y las escrituras se reanudan cuando vuelve a haber espacio
 detail-unavailable = la base de datos no está disponible; reinténtelo más tarde
 detail-unauthorized = este servicio guarda y borra trabajos solo para una petición con "Authorization: Bearer <token>": cada POST y DELETE, y un GET del trabajo o la página de una plantilla que guardaría un trabajo nuevo
+detail-private-jobs = este servicio reserva sus trabajos guardados a quienes tienen su token: envíe "Authorization: Bearer <token>", o inicie sesión una vez en /signin desde un navegador; los valores de una plantilla (GET /v1/templates/{"{"}id{"}"}/result/…) y sus variantes no necesitan token
 detail-length-required = un POST de HTTP/1.0 necesita la cabecera Content-Length: de otro modo no se sabe dónde acaba su cuerpo
 detail-internal = error interno; la cabecera x-request-id de esta respuesta lo encuentra en el registro del servicio
+detail-job-memory = el trabajo necesitaba más de los { $mib } MiB de memoria que puede usar un trabajo; pida menos pasos, muestras o sólidos
+detail-compute-failed = el cálculo del trabajo se detuvo sin respuesta: un fallo del servicio, que la cabecera x-request-id de esta respuesta encuentra en su registro; ningún otro trabajo se vio afectado
 
 ## Magnitudes y unidades
 
@@ -199,6 +204,13 @@ page-col-kind = tipo
 page-col-problem = problema
 page-recent = Trabajos recientes
 page-no-job = Aún no hay trabajos: abra una plantilla o envíe una petición POST:
+page-signin-title = Iniciar sesión
+page-signin-intro = Los trabajos guardados en este servicio son de quienes tienen su token. Escríbalo una vez: este navegador guarda entonces una cookie que lo representa (30 días, o hasta que cierre la sesión). El formulario y los valores de una plantilla no necesitan token.
+page-signin-token = Token
+page-signin-button = Entrar
+page-signin-wrong = Ese no es el token de este servicio.
+page-signed-in = Sesión iniciada.
+page-signout-button = Cerrar sesión
 page-col-job = trabajo
 page-col-label = etiqueta
 page-col-created = creado (UTC)
@@ -497,14 +509,17 @@ unit-target = '{ $target }': { $why }
 unit-part-in = '{ $target }' es una unidad de { $found }; la parte en { $pointer } está en { $unit }
 unit-part-in-of = '{ $target }' es una unidad de { $found }; la parte en { $pointer } está en { $unit }, una unidad de { $expected }
 query-whole-number = '{ $text }': debe ser un número entero desde 0
+query-step = '{ $text }': debe ser un número entero de 0 a { $last }
 parameter-pointer-missing = apunta a { $pointer }, que no está en la petición
 
 ## Un resultado demasiado grande
 
 size-would-be = el resultado ocuparía { $size } ({ $bytes } bytes), más del límite de { $limit } de un resultado (MECHDYN_MAX_RESULT_BYTES)
 size-would-be-about = el resultado ocuparía unos { $size } ({ $bytes } bytes), más del límite de { $limit } de un resultado (MECHDYN_MAX_RESULT_BYTES)
+size-would-be-at-least = el resultado ocuparía al menos { $size } ({ $bytes } bytes), más del límite de { $limit } de un resultado (MECHDYN_MAX_RESULT_BYTES)
 size-too-large = { $size }; { $advice }
 size-advice = a { $each } cada una, con { $name } ≤ { $fit } cabría{ $also }
+size-advice-at-most = a { $each } o más cada una, no cabrían más de { $fit } { $name }{ $also }
 size-also-events = { " " }(eventos: uno por vuelta, menos con una integración más corta)
 size-also-table = { " " }(0 para no dar tabla)
 size-also-outputs = ; o pida menos "outputs" (la cinemática de cada sólido es la mayor)
@@ -538,4 +553,5 @@ progress-friction = se iteraba el rozamiento de los pares en la posición { $ste
 progress-approach = el mecanismo había recorrido { $step } de { $of } pasos desde su dibujo hacia la primera posición
 progress-cam-lift = se había evaluado la alzada en { $angle } de { $of } ángulos
 progress-reading = mientras se leía la petición: al montar su croquis, situar sus contactos o preparar sus entradas
+progress-stopped = no se detuvo por sí mismo, y se detuvo desde fuera
 detail-request-timeout = el cuerpo de la petición no llegó a tiempo: { $read } bytes en { $seconds } s; este servicio necesita que el cuerpo siga llegando a { $rate } bytes/s pasados { $grace } s

@@ -35,8 +35,11 @@ impl ApiError {
             Self::StorageFull(what) => Msg::new("detail-storage-full").arg("what", what),
             Self::Unavailable(_) => Msg::new("detail-unavailable"),
             Self::Unauthorized => Msg::new("detail-unauthorized"),
+            Self::PrivateJobs => Msg::new("detail-private-jobs"),
             Self::LengthRequired => Msg::new("detail-length-required"),
             Self::Internal(_) => Msg::new("detail-internal"),
+            Self::JobMemory(limit) => Msg::new("detail-job-memory").num("mib", (*limit as f64 / 1048576.0).round()),
+            Self::ComputeFailed => Msg::new("detail-compute-failed"),
         }
     }
 }
