@@ -39,7 +39,7 @@ pub struct Cli {
     /// Largest accepted request body, bytes.
     #[arg(long, env = "MECHDYN_MAX_BODY_BYTES", default_value_t = crate::api::DEFAULT_BODY_LIMIT, global = true)]
     pub max_body_bytes: usize,
-    /// When set, every POST must carry `Authorization: Bearer <token>` (401 without it).
+    /// When set, every POST and DELETE must carry `Authorization: Bearer <token>` (401 without it), and so must every read of stored jobs unless --public-jobs (a browser signs in once at /signin).
     #[arg(long, env = "MECHDYN_API_TOKEN", hide_env_values = true, global = true)]
     pub api_token: Option<String>,
     /// Origins allowed to call the API from a browser (CORS), comma-separated; `*` for any.
@@ -69,7 +69,7 @@ pub struct Cli {
     /// Largest result of a job as JSON, bytes (a request whose result would be larger is answered 422 saying what fits).
     #[arg(long, env = "MECHDYN_MAX_RESULT_BYTES", default_value_t = Limits::default().result_bytes, value_parser = at_least_one, global = true)]
     pub max_result_bytes: usize,
-    /// Jobs computing at once (default: the number of cores).
+    /// Jobs computing at once, each in a worker process of its own (default: the number of cores).
     #[arg(long, env = "MECHDYN_JOBS", default_value_t = Capacity::default().jobs, value_parser = at_least_one, global = true)]
     pub jobs: usize,
     /// Jobs waiting to compute; beyond them a POST is answered 503 with Retry-After.
@@ -127,7 +127,7 @@ pub struct Cli {
     #[arg(long, env = "MECHDYN_OPERATOR_ADDR", default_value = DEFAULT_OPERATOR_ADDR, global = true)]
     pub operator_addr: String,
     /// Compute jobs on the service's own threads instead of worker processes: a job is then stopped only where the engine reads its deadline, and a crash in one ends the service (for measurements and debugging).
-    #[arg(long, env = "MECHDYN_IN_PROCESS", global = true)]
+    #[arg(long, env = "MECHDYN_IN_PROCESS", global = true, value_parser = clap::builder::BoolishValueParser::new())]
     pub in_process: bool,
     /// Most memory a job's worker process may take, bytes (the operating system's limit on its data; a job past it is answered 422). Default: half the machine's memory (or its container's) shared among the workers, at least 256 MiB.
     #[arg(long, env = "MECHDYN_JOB_MEMORY_BYTES", value_parser = clap::value_parser!(u64).range(1..), global = true)]
@@ -139,7 +139,7 @@ pub struct Cli {
     #[arg(long, env = "MECHDYN_ANONYMOUS_JOB_SECONDS", default_value_t = Capacity::default().anonymous_seconds.as_secs_f64(), value_parser = positive_seconds, global = true)]
     pub anonymous_job_seconds: f64,
     /// Stored jobs readable without the token (a public demonstration): the job list, each job, its parts, CSV, plots and page. Without it, a service with a token keeps them to the token's holders.
-    #[arg(long, env = "MECHDYN_PUBLIC_JOBS", global = true)]
+    #[arg(long, env = "MECHDYN_PUBLIC_JOBS", global = true, value_parser = clap::builder::BoolishValueParser::new())]
     pub public_jobs: bool,
     /// Seconds between the retention's sweeps (the first runs at start).
     #[arg(long, env = "MECHDYN_RETENTION_INTERVAL_SECONDS", default_value_t = 60.0, value_parser = positive_seconds, global = true)]

@@ -118,20 +118,25 @@ where
     let (result, elapsed, mut reserved) = match (&state.workers, work.by_worker) {
         (Some(pool), true) => {
             let (pool, sent) = (pool.clone(), request.clone());
-            let start = Instant::now();
-            let run = async move {
-                let r = pool.run(kind, &sent, &limits, share).await;
-                let (computing, listed, reserved) = held;
-                drop((computing, listed));
-                (r, reserved)
+            let by_worker = move || {
+                let start = Instant::now();
+                match pool.run(kind, &sent, &limits, share) {
+                    Ok((result, elapsed)) => (Ok(result), elapsed),
+                    Err(e) => (Err(e), start.elapsed()),
+                }
             };
-            let (r, reserved) = tokio::spawn(run).await.map_err(|e| ApiError::Internal(format!("job task: {e}")))?;
-            match r {
-                Ok((result, elapsed)) => (Ok(result), elapsed, reserved),
-                Err(e) => (Err(e), start.elapsed(), reserved),
-            }
+            computed(state, kind, held, by_worker).await?
         }
-        _ => here(state, kind, work.here, limits, held).await?,
+        _ => {
+            let compute = work.here;
+            let here = move || {
+                let start = Instant::now();
+                let r = compute(&limits);
+                let elapsed = start.elapsed();
+                (r.and_then(|r| serialized(&r, limits.result_bytes)), elapsed)
+            };
+            computed(state, kind, held, here).await?
+        }
     };
     state.admission.record(kind, elapsed);
     let result = result.inspect_err(|_| state.metrics.job(kind, false, elapsed))?;
@@ -164,25 +169,21 @@ where
 /// the watchdog's list and its answer's memory.
 type Held = (OwnedSemaphorePermit, super::watchdog::Computing, OwnedSemaphorePermit);
 
-/// `compute` run on this process's threads (on the async worker that read
-/// the request where its kind's jobs are short, [`super::admission`]), its
-/// result serialised within the limit on a result.
-async fn here<R, F>(
-    state: &AppState,
-    kind: &'static str,
-    compute: F,
-    limits: Limits,
-    held: Held,
-) -> Result<(Result<Bytes, ApiError>, std::time::Duration, OwnedSemaphorePermit), ApiError>
+/// What a computation gives: its result's JSON or its error, its compute
+/// time, and its answer's memory, still reserved.
+type Computed = (Result<Bytes, ApiError>, std::time::Duration, OwnedSemaphorePermit);
+
+/// `compute` run — on a worker process, or on this process's own threads —
+/// from a thread that waits for it: the async worker that read the request
+/// where its kind's jobs are short ([`super::admission`]), else the blocking
+/// pool, where a client that leaves stops nothing. What it holds is let go
+/// when it ends.
+async fn computed<F>(state: &AppState, kind: &'static str, held: Held, compute: F) -> Result<Computed, ApiError>
 where
-    R: JobResult + Send + 'static,
-    F: FnOnce(&Limits) -> Result<R, ApiError> + Send + 'static,
+    F: FnOnce() -> (Result<Bytes, ApiError>, std::time::Duration) + Send + 'static,
 {
     let run = move || {
-        let start = Instant::now();
-        let r = compute(&limits);
-        let elapsed = start.elapsed();
-        let result = r.and_then(|r| serialized(&r, limits.result_bytes));
+        let (result, elapsed) = compute();
         let (computing, listed, reserved) = held;
         drop((computing, listed));
         (result, elapsed, reserved)

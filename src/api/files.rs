@@ -21,6 +21,7 @@ use axum::response::{IntoResponse, Response};
             body = crate::kind::problem::Problem, content_type = "application/problem+json"),
         (status = 503, description = "Too many large answers are being sent, or the database is unavailable",
             body = crate::kind::problem::Problem, content_type = "application/problem+json"),
+        crate::kind::problem::PrivateErrors,
     ))]
 pub async fn file(
     State(state): State<AppState>,

@@ -9,7 +9,7 @@ use super::kind;
 use super::read::{self, READ_MEMORY_FACTOR, load};
 use super::tables::{self, AngleUnit, Angles, Decimal, DecimalMark};
 use crate::i18n::Msg;
-use crate::kind::problem::{ApiError, FieldError, Problem, ReadErrors};
+use crate::kind::problem::{ApiError, FieldError, PrivateErrors, Problem, ReadErrors};
 use crate::store::Filter;
 use axum::body::Body;
 use axum::extract::rejection::QueryRejection;
@@ -43,6 +43,7 @@ fn json_answer(body: Chunks, reserved: OwnedSemaphorePermit) -> Response {
             content((Job = "application/json"), (String = "text/csv"))),
         (status = 400, description = "An invalid query parameter", body = Problem, content_type = "application/problem+json"),
         ReadErrors,
+        PrivateErrors,
     ))]
 pub async fn get(
     State(state): State<AppState>,
@@ -125,6 +126,7 @@ pub struct ListParams {
         (status = 503, description = "Too many large answers are being sent, or the database is unavailable: retry after `Retry-After` seconds",
             body = Problem, content_type = "application/problem+json",
             headers(("Retry-After" = u64, description = "Seconds to wait before retrying"))),
+        PrivateErrors,
     ))]
 pub async fn list(
     State(state): State<AppState>,
@@ -205,6 +207,7 @@ fn list_params(
         (status = 200, description = "CSV table", body = String, content_type = "text/csv"),
         (status = 400, description = "An invalid query parameter", body = Problem, content_type = "application/problem+json"),
         ReadErrors,
+        PrivateErrors,
     ))]
 pub async fn csv(
     State(state): State<AppState>,

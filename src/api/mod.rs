@@ -112,14 +112,17 @@ service's operator may configure each, see `MECHDYN_*` in the README): request b
 expressions 2000 characters and 64 levels of nesting; tables 100000 rows; 1000 segments per function; \
 100000 result samples; 100000 steps per kinetostatics job (422 at the field beyond them); a result of \
 16 MiB (422 `/problems/result-too-large`, saying which `steps` or `samples` would fit); a job's compute \
-budget 20 s (a job over it is stopped and answered 422 `/problems/compute-budget`). Fixed: 100 torques; \
-200 bodies and joints and 500 loads per mechanism.\n\nUnder load: as many jobs compute at once as the \
+budget 20 s (a job over it is stopped and answered 422 `/problems/compute-budget`: jobs compute in worker \
+processes, and one that has not answered half a second past its budget is killed); a job's memory (422 \
+`/problems/job-memory` beyond it); a crash inside a computation is that job's 500 `/problems/compute-failed` \
+alone. Fixed: 100 torques; 200 bodies and joints and 500 loads per mechanism.\n\nUnder load: as many jobs compute at once as the \
 service has cores, 64 more wait; beyond that a POST is answered 503 `/problems/saturated` with \
 `Retry-After`. A full disk is a 507 `/problems/storage-full` (reads go on). When the service has an API \
-token (`MECHDYN_API_TOKEN`), every POST and DELETE needs `Authorization: Bearer <token>` (401 without it), and a \
-GET stores a new job only with it (a template's value or variants are computed without storing; its job or form for \
-new parameters is a 401); every \
-answer carries an `x-request-id` header.\n\nOn any POST: `?label=TEXT` (1 to 200 characters, no control characters or bidirectional overrides) stores a label \
+token (`MECHDYN_API_TOKEN`), every POST and DELETE needs `Authorization: Bearer <token>` (401 without it), and so \
+does every read of stored jobs (the list, a job, its parts, CSV, plots, files and page; a browser signs in once at \
+`/signin`) unless the service keeps them public (`MECHDYN_PUBLIC_JOBS`); a template's value, variants and form stay \
+public, computed without storing within a share of their own (one at a time, 2 s each by default; beyond it 503 \
+with `Retry-After`); every answer carries an `x-request-id` header, and `X-Content-Type-Options: nosniff`.\n\nOn any POST: `?label=TEXT` (1 to 200 characters, no control characters or bidirectional overrides) stores a label \
 with the job it creates (`GET /v1/jobs?label=TEXT` lists them); an `Idempotency-Key` header (1 to 255 visible \
 characters) makes a retry safe: the same key with the same request answers the first successful answer again \
 (with `Idempotent-Replayed: true`), nothing computed or stored twice; the same key with another request is a \

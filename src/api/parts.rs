@@ -7,7 +7,7 @@ use super::body::guarded;
 use super::kind;
 use super::read::{query, result_tree, wants};
 use super::tables::{self, AngleUnit, Angles, Decimal, DecimalMark, Format, Values};
-use crate::kind::problem::{ApiError, FieldError, Problem, ReadErrors};
+use crate::kind::problem::{ApiError, FieldError, PrivateErrors, Problem, ReadErrors};
 use crate::store::JobRow;
 use axum::body::Body;
 use axum::extract::rejection::QueryRejection;
@@ -41,6 +41,7 @@ use std::collections::HashMap;
                 "detail": "invalid query parameters",
                 "errors": [{"parameter": "unit", "message": "'rpm' is a unit of rad/s; the part at /inertia_exact is in kg*m^2"}]})),
         ReadErrors,
+        PrivateErrors,
     ))]
 pub async fn part(
     State(state): State<AppState>,
@@ -130,6 +131,7 @@ pub fn text_of(value: &Value, json: bool, decimal: Decimal) -> (&'static str, St
             content((Values = "application/json"), (String = "text/csv", example = "pointer,value,unit\n/inertia_exact,353.5214273220119,kg*m^2\n"))),
         (status = 400, description = "An invalid query parameter", body = Problem, content_type = "application/problem+json"),
         ReadErrors,
+        PrivateErrors,
     ))]
 pub async fn values(
     State(state): State<AppState>,
@@ -157,6 +159,7 @@ pub async fn values(
             content((String = "text/csv", example = "pointer,value,unit\n/inertia_exact,353.5214273220119,kg*m^2\n"))),
         (status = 400, description = "An invalid query parameter", body = Problem, content_type = "application/problem+json"),
         ReadErrors,
+        PrivateErrors,
     ))]
 pub async fn values_csv(
     State(state): State<AppState>,

@@ -5,7 +5,7 @@
 mod responses;
 mod said;
 
-pub use responses::{PostErrors, ReadErrors};
+pub use responses::{PostErrors, PrivateErrors, ReadErrors};
 
 use crate::i18n::{self, Lang, Msg};
 use axum::http::{StatusCode, header};

@@ -285,3 +285,60 @@ fn chromium_plays_a_mechanisms_motion_where_the_result_puts_it() {
     }
     assert_ne!(frames[0]["screenshot_sha256"], frames[1]["screenshot_sha256"], "the two frames differ");
 }
+
+/// Private jobs in a real browser (issue 70): with a token, a job's page
+/// without it is the sign-in form (401); the token typed into it once
+/// signs the browser in — its cookie HttpOnly, unseen by the page's script
+/// — and the browser lands on the job's page with its plots, whose SVGs it
+/// then opens; the page is kept in a screenshot (`private/`).
+#[test]
+fn chromium_signs_in_once_and_reads_the_private_jobs() {
+    if !std::path::Path::new(CHROMIUM).exists() {
+        assert!(std::env::var_os("MECHDYN_REQUIRE_CHROMIUM").is_none(), "Chromium is required");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let port = free_port();
+    let db = format!("sqlite://{}/private.db", dir.path().display());
+    let mut service = crate::crash::start_with(&db, port, &[("MECHDYN_API_TOKEN", "cl4ss-t0ken")]);
+    let (status, text) = crate::wire::http_with(
+        port,
+        "POST",
+        "/v1/kinetostatics",
+        "Authorization: Bearer cl4ss-t0ken\r\n",
+        &request("k1_offset_slider_crank").to_string(),
+    )
+    .unwrap();
+    assert_eq!(status, 201, "{text}");
+    let id = serde_json::from_str::<Value>(&text).unwrap()["id"].as_str().unwrap().to_string();
+    let page = format!("/jobs/{id}?step=3");
+    let svg = format!("/v1/jobs/{id}/plots/mechanism.svg?step=3");
+    let out = concat!(env!("CARGO_MANIFEST_DIR"), "/target/screenshots/private");
+    let plan = json!({
+        "base": format!("http://127.0.0.1:{port}"), "out": out,
+        "pages": [{"name": "refused", "path": page, "selectors": ["form input[name=token]"]}],
+        "forms": [{"name": "signed-in", "path": page, "fill": {"token": "cl4ss-t0ken"},
+            "submit": "form[action='/signin'] button[type=submit]", "selectors": ["figure img"],
+            "evaluate": ["document.cookie"]}],
+        "svgs": [svg],
+    });
+    let plan_file = dir.path().join("plan.json");
+    std::fs::write(&plan_file, plan.to_string()).unwrap();
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/clients/browser.py");
+    let run = Command::new("python3").arg(script).arg(&plan_file).output().unwrap();
+    let _ = service.kill();
+    let _ = service.wait();
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    let report: Value = serde_json::from_slice(&run.stdout).unwrap();
+    let refused = &report["pages"]["refused"];
+    assert_eq!(refused["status"], 401, "{refused}");
+    assert_eq!(refused["counts"]["form input[name=token]"], 1, "the sign-in form: {refused}");
+    let signed = &report["forms"]["signed-in"];
+    assert!(signed.get("error").is_none(), "{signed}");
+    assert_eq!(signed["status"], 200, "{signed}");
+    assert_eq!(signed["url"], format!("http://127.0.0.1:{port}{page}"), "back on the page asked");
+    assert!(signed["counts"]["figure img"].as_u64().unwrap() >= 4, "the job's plots: {signed}");
+    assert_eq!(signed["evaluated"]["document.cookie"], "", "the cookie is HttpOnly");
+    let plot = &report["svgs"][&svg];
+    assert_eq!((plot["status"].as_u64(), plot["root"].as_str()), (Some(200), Some("svg")), "{plot}");
+}

@@ -316,3 +316,31 @@ async fn a_run_away_motion_is_refused_saying_when_once() {
     assert!(es.starts_with("la integración falló en t = 0,5 s: el paso se hizo menor que el redondeo"), "{es}");
     assert_eq!(en.matches("t = ").count(), 1, "{en}");
 }
+
+/// A run whose result cannot fit is refused before it is computed (issue
+/// 70): 100 000 samples of a slider-crank's start-up, under a budget of
+/// 50 ms that the run would spend many times over, are answered
+/// `/problems/result-too-large` at `/samples` (not the budget's 422: no
+/// integration began), its least size per sample said; and that least size
+/// is one: a run of 201 samples takes more per sample than it says.
+#[tokio::test]
+async fn a_run_that_cannot_fit_is_refused_before_it_is_computed() {
+    let budget = std::time::Duration::from_millis(50);
+    let app = TestApp::with_limits(mechdyn::kind::Limits { budget, ..Default::default() }).await;
+    let mut run = request("slider_crank_startup");
+    run["samples"] = json!(100_000);
+    let r = app.post("/v1/dynamics", &run).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let problem = r.json();
+    assert_eq!(problem["type"], "/problems/result-too-large", "{}", r.text);
+    assert_eq!(problem["errors"][0]["pointer"], "/samples");
+    let message = problem["errors"][0]["message"].as_str().unwrap();
+    // "… at least 81.3 MB (81300000 bytes) …": the least bytes of 100 000 samples.
+    let least: f64 = message.split(" (").nth(1).unwrap().split(' ').next().unwrap().parse().unwrap();
+    run["samples"] = json!(201);
+    let app = TestApp::new().await;
+    let done = app.post("/v1/dynamics", &run).await;
+    assert_eq!(done.status, StatusCode::CREATED, "{}", done.text);
+    let bytes = done.json()["result"].to_string().len() as f64;
+    assert!(bytes / 201.0 > least / 100_000.0, "{bytes} bytes for 201 samples, said at least {least} for 100 000");
+}

@@ -194,3 +194,26 @@ fn tables_as_a_sheet_pastes_them_are_answered_within_their_budget_in_every_kind(
     child.kill().unwrap();
     child.wait().unwrap();
 }
+
+/// A worker killed while it waits for a job (by an operator's tool, the
+/// kernel's out-of-memory killer) costs no job: the next is given to a new
+/// worker and computed.
+#[test]
+fn an_idle_worker_that_ended_costs_no_job() {
+    let (_dir, mut child, port) = service(&[]);
+    let pid = child.id();
+    let workers = std::fs::read_to_string(format!("/proc/{pid}/task/{pid}/children")).unwrap();
+    let workers: Vec<&str> = workers.split_whitespace().collect();
+    assert!(!workers.is_empty(), "the service started its workers");
+    for worker in &workers {
+        let killed = std::process::Command::new("kill").args(["-9", worker]).status().unwrap();
+        assert!(killed.success());
+    }
+    std::thread::sleep(Duration::from_millis(200));
+    for k in 0..3 {
+        let (status, text, _) = timed(port, "/v1/flywheel", &flywheel(&format!("-{}*sin(phi)", 500 + k)));
+        assert_eq!(status, 201, "{text}");
+    }
+    child.kill().unwrap();
+    child.wait().unwrap();
+}

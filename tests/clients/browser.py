@@ -9,9 +9,13 @@ standard library only.  The script judges nothing: it prints facts as one JSON o
 on a phone) and saves screenshots and PDFs; the assertions live in the Rust test.
 
 Usage: python3 browser.py PLAN.json   PLAN: {"base", "out", "pages": [{"path", "name",
-"selectors"}], "forms": [{"path", "name", "fill", "submit", "selectors"?}], "svgs": [PATH],
+"selectors", "evaluate"?}], "forms": [{"path", "name", "fill", "submit", "selectors"?,
+"evaluate"?}], "svgs": [PATH],
 "motions": [{"path", "name", "times": [s], "probes": [[[x, y]] per time]}],
 "language"?: an Accept-Language every request of the run sends}
+"evaluate": expressions whose values the page's or the submitted form's report gives.
+The browser keeps its cookies from one item of the plan to the next (pages, then forms,
+then SVGs).
 A motion is an animated SVG (SMIL) opened alone at 820 x 520 CSS px: its animations paused
 at each time, it reports which frames (g[data-step]) are visible, the element under each
 probe (CSS px) with the frame it belongs to, and a screenshot's digest.
@@ -253,17 +257,18 @@ def arg_text(arg):
                                                                or arg.get("description") or arg.get("type"))
 
 
-def common(b, selectors):
+def common(b, selectors, expressions=()):
     return {"url": b.evaluate("location.href"), "title": b.evaluate("document.title"),
             "lang": b.evaluate("document.documentElement.lang"),
             "text": b.evaluate("document.body ? document.body.innerText : ''"),
-            "counts": {s: b.evaluate(f"document.querySelectorAll({json.dumps(s)}).length") for s in selectors}}
+            "counts": {s: b.evaluate(f"document.querySelectorAll({json.dumps(s)}).length") for s in selectors},
+            "evaluated": {e: b.evaluate(e) for e in expressions}}
 
 
 def page_report(b, base, out, page):
     name = page["name"]
     b.goto(base + page["path"])
-    r = common(b, page.get("selectors", []))
+    r = common(b, page.get("selectors", []), page.get("evaluate", []))
     r["broken_images"] = b.evaluate(BROKEN_IMAGES)
     r["screenshot"] = os.path.join(out, f"{name}.png")
     b.shoot(r["screenshot"], 1280, 800, 1, False)
@@ -302,7 +307,7 @@ def form_report(b, base, out, form):
         invalid = b.evaluate("Array.from(document.querySelectorAll('[name]:invalid'), "
                              "e => `${e.name}: ${e.validationMessage}`)")
         raise PageError(f"{e}; fields the browser holds invalid: {invalid}") from None
-    r = {**common(b, form.get("selectors", [])), "filled": filled, "missing_fields": missing,
+    r = {**common(b, form.get("selectors", []), form.get("evaluate", [])), "filled": filled, "missing_fields": missing,
          "screenshot": os.path.join(out, f"{form['name']}.png")}
     b.shoot(r["screenshot"], 1280, 800, 1, False)
     return {**b.facts(), **r}

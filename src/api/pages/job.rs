@@ -36,6 +36,7 @@ const ROWS: usize = 4;
             less one (by default 99999)")),
     responses((status = 200, description = "The job's page", content_type = "text/html", body = String),
         (status = 400, description = "A step beyond the job's or an unknown query parameter", content_type = "text/html", body = String),
+        (status = 401, description = "The service keeps its jobs to its token's holders and this browser has not signed in: the sign-in form, which comes back here", content_type = "text/html", body = String),
         (status = 404, description = "No job with this id", content_type = "text/html", body = String),
         (status = 503, description = "Saturated or the database unavailable", content_type = "text/html", body = String)))]
 pub async fn job(

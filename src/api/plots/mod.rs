@@ -19,7 +19,7 @@ use super::read::{query, result_tree};
 pub use crate::kind::chart::{Chart, Listed};
 use crate::kind::plots::{Job, Options};
 
-use crate::kind::problem::{ApiError, FieldError, ReadErrors};
+use crate::kind::problem::{ApiError, FieldError, PrivateErrors, ReadErrors};
 use axum::Json;
 use axum::extract::rejection::QueryRejection;
 use axum::extract::{Path, Query, State};
@@ -60,7 +60,7 @@ pub struct PlotList {
 /// its result can draw.
 #[utoipa::path(get, path = "/v1/jobs/{id}/plots", operation_id = "list_job_plots", tag = "jobs",
     params(("id" = String, Path, description = "Job id")),
-    responses((status = 200, description = "The job's plots", body = PlotList), ReadErrors))]
+    responses((status = 200, description = "The job's plots", body = PlotList), ReadErrors, PrivateErrors))]
 pub async fn list(State(state): State<AppState>, Path(id): Path<String>) -> Result<Json<PlotList>, ApiError> {
     let (listed, _) = listed(&state, &id).await?;
     let plots =
@@ -100,6 +100,7 @@ pub fn segment(text: &str) -> String {
             body = crate::kind::problem::Problem, content_type = "application/problem+json"),
         (status = 503, description = "Too many large answers are being sent, or the database is unavailable",
             body = crate::kind::problem::Problem, content_type = "application/problem+json"),
+        PrivateErrors,
     ))]
 pub async fn plot(
     State(state): State<AppState>,

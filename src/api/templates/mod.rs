@@ -127,6 +127,7 @@ pub async fn get(State(state): State<AppState>, Path(id): Path<String>) -> Resul
             the request does not carry the token (it would store a new job)", body = Problem, content_type = "application/problem+json"),
         (status = 422, description = "These parameters do not give a valid problem", body = Problem, content_type = "application/problem+json"),
         ReadErrors,
+        crate::kind::problem::PrivateErrors,
     ))]
 pub async fn job(
     State(state): State<AppState>,

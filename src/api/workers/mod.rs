@@ -22,9 +22,19 @@
 //! their own, run at a lower priority, so that they never hold a token
 //! holder's. How many compute at once is admission control's
 //! ([`super::admission`]); the pool only keeps the workers.
+//!
+//! The exchange with a worker blocks its thread ([`process`]): it runs where
+//! the service ran a computation in-process — on the async worker that read
+//! the request where its kind's jobs are short, on the blocking pool
+//! otherwise — so that a light job costs the service one write and one read
+//! of a pipe and no hand-over between tasks. Each wakeup of a thread costs
+//! some 30 µs on a virtual machine (a pipe's round trip between two
+//! processes took 68 µs here, `perf bench sched pipe`), and awaiting the
+//! worker's answer on the runtime's own I/O took four of them a job.
 
 #[cfg(debug_assertions)]
 mod faults;
+mod process;
 pub mod serve;
 pub mod wire;
 
@@ -32,13 +42,11 @@ use crate::i18n::Msg;
 use crate::kind::Limits;
 use crate::kind::problem::ApiError;
 use bytes::Bytes;
+use process::{Answer, Worker};
 use std::path::PathBuf;
-use std::process::Stdio;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
-use std::time::Duration;
-use tokio::io::{AsyncBufReadExt, AsyncReadExt, AsyncWriteExt, BufReader};
-use tokio::process::{Child, ChildStdin, ChildStdout, Command};
+use std::time::{Duration, Instant};
 
 /// How long past its budget a job's worker is given to answer before it is killed.
 pub const GRACE: Duration = Duration::from_millis(500);
@@ -46,10 +54,6 @@ pub const GRACE: Duration = Duration::from_millis(500);
 /// The priority (`nice`) of the workers of requests without the token: the
 /// token holders' jobs take the cores first.
 pub const ANONYMOUS_NICE: i32 = 10;
-
-/// What a worker writes on its standard error when an allocation fails
-/// (Rust's handler of a failed allocation, before it aborts).
-const OUT_OF_MEMORY: &str = "memory allocation of";
 
 /// Whose job a worker computes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -123,28 +127,42 @@ impl Pool {
     }
 
     /// The job of `kind` for `request`, computed by a worker of `share`
-    /// within `limits`: its result, or the error it ended with.
-    pub async fn run(&self, kind: &str, request: &[u8], limits: &Limits, share: Share) -> Result<Computed, ApiError> {
-        let mut worker = self.take(share)?;
+    /// within `limits`: its result, or the error it ended with. Blocking:
+    /// its caller's thread waits, at most the budget and [`GRACE`].
+    pub fn run(&self, kind: &str, request: &[u8], limits: &Limits, share: Share) -> Result<Computed, ApiError> {
         let job = wire::Job::new(kind, limits);
-        let bound = limits.budget.saturating_add(GRACE);
-        match tokio::time::timeout(bound, worker.exchange(&job, request, limits.result_bytes)).await {
-            Ok(Ok((wire::Reply::Done { micros }, result))) => {
+        let deadline = Instant::now() + limits.budget.saturating_add(GRACE);
+        let mut worker = self.sent(share, &job, request)?;
+        match worker.reply(limits.result_bytes, deadline) {
+            Ok(Answer::Reply(wire::Reply::Done { micros }, result)) => {
                 self.give_back(worker, share);
                 Ok((result.into(), Duration::from_micros(micros)))
             }
-            Ok(Ok((wire::Reply::Failed(failure), _))) => {
+            Ok(Answer::Reply(wire::Reply::Failed(failure), _)) => {
                 self.give_back(worker, share);
                 Err(failure.into())
             }
-            Ok(Err(e)) => Err(self.ended(worker, kind, &e).await),
-            Err(_) => {
-                worker.kill().await;
+            Ok(Answer::Late) => {
+                worker.kill();
                 self.count(Stop::Budget);
                 tracing::warn!(kind, budget = limits.budget.as_secs_f64(), "a job's worker was killed at its budget");
                 Err(over_budget(limits.budget))
             }
+            Err(e) => Err(self.ended(worker, kind, &e)),
         }
+    }
+
+    /// A worker of `share` that took `job`: an idle one, or a new one where
+    /// the idle one had ended meanwhile (its input closed to the job).
+    fn sent(&self, share: Share, job: &wire::Job, request: &[u8]) -> Result<Worker, ApiError> {
+        let mut worker = self.take(share)?;
+        if let Err(e) = worker.send(job, request) {
+            tracing::warn!(error = %e, "an idle worker had ended: a new one takes its job");
+            worker.kill();
+            worker = self.spawn(share).map_err(|e| ApiError::Internal(format!("cannot start a worker: {e}")))?;
+            worker.send(job, request).map_err(|e| ApiError::Internal(format!("a new worker: {e}")))?;
+        }
+        Ok(worker)
     }
 
     fn take(&self, share: Share) -> Result<Worker, ApiError> {
@@ -167,9 +185,8 @@ impl Pool {
     }
 
     /// A worker that stopped answering (`e`) before its budget: why, as its job's error.
-    async fn ended(&self, mut worker: Worker, kind: &str, e: &std::io::Error) -> ApiError {
-        let status = worker.finish().await;
-        let said = std::mem::take(&mut *worker.said.lock().unwrap_or_else(|e| e.into_inner()));
+    fn ended(&self, mut worker: Worker, kind: &str, e: &std::io::Error) -> ApiError {
+        let (status, said) = worker.finish();
         if said.out_of_memory {
             self.count(Stop::Memory);
             tracing::warn!(kind, limit = self.0.settings.memory, "a job's worker ran out of its memory");
@@ -183,23 +200,14 @@ impl Pool {
 
     fn spawn(&self, share: Share) -> std::io::Result<Worker> {
         let settings = &self.0.settings;
-        let mut command = Command::new(&settings.program);
-        command.arg("worker").arg("--parent").arg(std::process::id().to_string());
+        let mut args = vec!["--parent".to_string(), std::process::id().to_string()];
         if let Some(bytes) = settings.memory {
-            command.arg("--job-memory-bytes").arg(bytes.to_string());
+            args.extend(["--job-memory-bytes".into(), bytes.to_string()]);
         }
         if share == Share::Anonymous {
-            command.arg("--nice").arg(ANONYMOUS_NICE.to_string());
+            args.extend(["--nice".into(), ANONYMOUS_NICE.to_string()]);
         }
-        command.stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped()).kill_on_drop(true);
-        let mut child = command.spawn()?;
-        let (Some(stdin), Some(stdout), Some(stderr)) = (child.stdin.take(), child.stdout.take(), child.stderr.take())
-        else {
-            return Err(std::io::Error::other("a worker without its pipes"));
-        };
-        let said = Arc::new(Mutex::new(Said::default()));
-        let listening = tokio::spawn(listen(stderr, child.id(), said.clone()));
-        Ok(Worker { child, stdin, stdout: BufReader::new(stdout), said, listening })
+        Worker::spawn(&settings.program, &args)
     }
 }
 
@@ -207,86 +215,4 @@ impl Pool {
 pub fn over_budget(budget: Duration) -> ApiError {
     let stopped = Msg::new("progress-stopped");
     ApiError::OverBudget(Msg::new("detail-over-budget").num("seconds", budget.as_secs_f64()).with("progress", stopped))
-}
-
-/// What a worker wrote on its standard error: whether an allocation
-/// failed, and its last lines (a panic's message and backtrace).
-#[derive(Default)]
-struct Said {
-    out_of_memory: bool,
-    last: std::collections::VecDeque<String>,
-}
-
-/// Lines of a worker's standard error kept for the log, and characters of each.
-const LAST_LINES: usize = 40;
-const LINE_CHARS: usize = 400;
-
-/// A worker's standard error read line by line (each in the service's log
-/// at `debug`), its last lines kept, a failed allocation noted.
-async fn listen(stderr: tokio::process::ChildStderr, pid: Option<u32>, said: Arc<Mutex<Said>>) {
-    let mut lines = BufReader::new(stderr).lines();
-    while let Ok(Some(mut line)) = lines.next_line().await {
-        tracing::debug!(worker = pid, "{line}");
-        line.truncate(line.floor_char_boundary(LINE_CHARS));
-        let mut said = said.lock().unwrap_or_else(|e| e.into_inner());
-        said.out_of_memory |= line.starts_with(OUT_OF_MEMORY);
-        if said.last.len() == LAST_LINES {
-            said.last.pop_front();
-        }
-        said.last.push_back(line);
-    }
-}
-
-/// One worker process and its pipes.
-struct Worker {
-    child: Child,
-    stdin: ChildStdin,
-    stdout: BufReader<ChildStdout>,
-    /// What its standard error said.
-    said: Arc<Mutex<Said>>,
-    /// The task reading its standard error.
-    listening: tokio::task::JoinHandle<()>,
-}
-
-impl Worker {
-    /// Sends a job and reads the reply (a result of at most `max` bytes).
-    async fn exchange(
-        &mut self,
-        job: &wire::Job,
-        request: &[u8],
-        max: usize,
-    ) -> std::io::Result<(wire::Reply, Vec<u8>)> {
-        self.stdin.write_all(&wire::head(job, request.len())?).await?;
-        self.stdin.write_all(request).await?;
-        self.stdin.flush().await?;
-        let header = self.part(wire::MAX_PART).await?;
-        let reply: wire::Reply = serde_json::from_slice(&header).map_err(std::io::Error::other)?;
-        let body = self.part(max).await?;
-        Ok((reply, body))
-    }
-
-    async fn part(&mut self, max: usize) -> std::io::Result<Vec<u8>> {
-        let mut prefix = [0u8; 4];
-        self.stdout.read_exact(&mut prefix).await?;
-        let n = wire::length(prefix)?;
-        if n > max {
-            return Err(std::io::Error::other(format!("a reply of {n} bytes, over the {max} allowed")));
-        }
-        let mut buf = vec![0u8; n];
-        self.stdout.read_exact(&mut buf).await?;
-        Ok(buf)
-    }
-
-    /// Kills the worker and waits for it.
-    async fn kill(mut self) {
-        let _ = self.child.start_kill();
-        let _ = self.finish().await;
-    }
-
-    /// Waits for the worker to end, and for what it wrote on its standard error.
-    async fn finish(&mut self) -> std::io::Result<std::process::ExitStatus> {
-        let status = tokio::time::timeout(Duration::from_secs(5), self.child.wait()).await;
-        let _ = tokio::time::timeout(Duration::from_secs(1), &mut self.listening).await;
-        status.unwrap_or_else(|_| Err(std::io::Error::other("the worker did not end")))
-    }
 }

@@ -63,7 +63,7 @@ pub fn run(kinds: Registry, options: &Options) -> Result<(), String> {
 
 /// Each job read, computed and answered, until the input ends.
 fn serve(kinds: &Registry) -> io::Result<()> {
-    let (mut input, mut output) = (io::stdin().lock(), io::stdout().lock());
+    let (mut input, mut output) = (io::stdin().lock(), wire::Unbuffered(io::stdout()));
     while let Some((header, body)) = wire::read(&mut input)? {
         let job: wire::Job = serde_json::from_slice(&header).map_err(io::Error::other)?;
         #[cfg(debug_assertions)]

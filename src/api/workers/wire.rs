@@ -11,7 +11,7 @@ use crate::i18n::Msg;
 use crate::kind::Limits;
 use crate::kind::problem::{ApiError, FieldError};
 use serde::{Deserialize, Serialize};
-use std::io::{self, Read, Write};
+use std::io::{self, IoSlice, Read, Write};
 use std::time::Duration;
 
 /// The largest part of a frame: a request body, or a result with room to spare.
@@ -157,11 +157,41 @@ pub fn length(prefix: [u8; 4]) -> io::Result<usize> {
     if n > MAX_PART { Err(io::Error::other("a part over 1 GiB")) } else { Ok(n) }
 }
 
-/// Writes a frame (blocking: the worker's side).
+/// Writes a frame (blocking: the worker's side), its parts gathered in one
+/// write where the pipe takes them: a reply written in pieces woke the
+/// service once a piece, and on a virtual machine a wakeup costs some 30 µs.
 pub fn write<T: Serialize>(out: &mut impl Write, header: &T, body: &[u8]) -> io::Result<()> {
-    out.write_all(&head(header, body.len())?)?;
-    out.write_all(body)?;
+    let head = head(header, body.len())?;
+    let mut parts = [IoSlice::new(&head), IoSlice::new(body)];
+    let mut parts = &mut parts[..];
+    while !parts.is_empty() {
+        match out.write_vectored(parts) {
+            Ok(0) => return Err(io::ErrorKind::WriteZero.into()),
+            Ok(n) => IoSlice::advance_slices(&mut parts, n),
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => {}
+            Err(e) => return Err(e),
+        }
+    }
     out.flush()
+}
+
+/// A descriptor written with the system's own calls, unbuffered (standard
+/// output's own writer flushes at every newline byte, which a frame's
+/// lengths may hold).
+pub struct Unbuffered<F>(pub F);
+
+impl<F: std::os::fd::AsFd> Write for Unbuffered<F> {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        Ok(rustix::io::write(&self.0, buf)?)
+    }
+
+    fn write_vectored(&mut self, bufs: &[IoSlice<'_>]) -> io::Result<usize> {
+        Ok(rustix::io::writev(&self.0, bufs)?)
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        Ok(())
+    }
 }
 
 /// Reads a frame (blocking: the worker's side); None at the end of input

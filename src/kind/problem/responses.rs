@@ -47,8 +47,9 @@ pub enum PostErrors {
     UnsupportedMediaType(Problem),
     /// Not a valid problem (an invalid field, a mechanism that cannot be assembled, a cycle
     /// not in steady state, ...; `errors` has a JSON pointer for every invalid field), a result
-    /// larger than the limit on a result (type `/problems/result-too-large`, saying what fits), or a
-    /// job stopped at its compute budget (type `/problems/compute-budget`)
+    /// larger than the limit on a result (type `/problems/result-too-large`, saying what fits), a
+    /// job stopped at its compute budget (type `/problems/compute-budget`), or one past the memory a
+    /// job may take (type `/problems/job-memory`)
     #[response(status = 422, content_type = "application/problem+json", example = json!({
         "type": "/problems/invalid-request", "title": "The request is not a valid problem", "status": 422,
         "detail": "2 invalid fields",
@@ -58,6 +59,13 @@ pub enum PostErrors {
         ]
     }))]
     Invalid(Problem),
+    /// The job's computation crashed (a panic, an abort, a stack overflow in its worker process):
+    /// that job alone; the `x-request-id` header finds it in the service's log
+    #[response(status = 500, content_type = "application/problem+json", example = json!({
+        "type": "/problems/compute-failed", "title": "The job's computation failed", "status": 500,
+        "detail": "the job's computation stopped without an answer: a fault of the service, which the x-request-id header of this answer finds in its log; no other job was affected"
+    }))]
+    ComputeFailed(Problem),
     /// The service is saturated (every job slot and queue place taken, or too many large
     /// answers being sent) or its database is unavailable: retry after `Retry-After` seconds
     #[response(status = 503, content_type = "application/problem+json",
@@ -104,4 +112,18 @@ pub enum ReadErrors {
             "detail": "the service is saturated (too many large answers are being sent); retry after 1 s"
         }))]
     Saturated(Problem),
+}
+
+/// The error answer of a read of stored jobs where the service keeps them
+/// to its token's holders, for the OpenAPI document.
+#[derive(utoipa::IntoResponses)]
+#[allow(dead_code)]
+pub enum PrivateErrors {
+    /// The service has an API token and keeps its stored jobs to its holders: this read does not
+    /// carry it (`Authorization: Bearer <token>`, or a browser's sign-in cookie)
+    #[response(status = 401, content_type = "application/problem+json", example = json!({
+        "type": "/problems/unauthorized", "title": "Missing or wrong bearer token", "status": 401,
+        "detail": "this service keeps its stored jobs to the holders of its token: send \"Authorization: Bearer <token>\", or sign in once at /signin in a browser; a template's values (GET /v1/templates/{id}/result/…) and variants need no token"
+    }))]
+    PrivateJobs(Problem),
 }
