@@ -26,7 +26,13 @@ impl Service {
     /// service's and its worker processes' (those alive now) summed.
     pub fn memory(&self) -> (f64, f64) {
         let pid = self.child.id();
-        let children = std::fs::read_to_string(format!("/proc/{pid}/task/{pid}/children")).unwrap_or_default();
+        // Its workers are children of whichever of its threads started them.
+        let tasks: Vec<_> =
+            std::fs::read_dir(format!("/proc/{pid}/task")).map(|d| d.flatten().collect()).unwrap_or_default();
+        let children: String = tasks
+            .iter()
+            .map(|t| std::fs::read_to_string(t.path().join("children")).unwrap_or_default() + " ")
+            .collect();
         let pids = std::iter::once(pid.to_string()).chain(children.split_whitespace().map(String::from));
         let mut total = (0.0, 0.0);
         for (k, pid) in pids.enumerate() {

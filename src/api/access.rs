@@ -1,10 +1,13 @@
 //! Who may do what, where the service has an API token (`--api-token`).
 //!
 //! - **The token** is carried as `Authorization: Bearer <token>`, or, by a
-//!   browser that signed in once (`/signin`), as the cookie
-//!   [`COOKIE`]: a digest of the token (SHA-256 of [`SALT`] and the token),
-//!   `HttpOnly` (no script reads it) and `SameSite=Strict` (no other site's
-//!   page sends it), so the token itself is never stored in the browser.
+//!   browser that signed in once (`/signin`), as the cookie [`COOKIE`]:
+//!   the time of the sign-in and its signature by the token (HMAC-SHA-256
+//!   of [`SALT`] and that time), `HttpOnly` (no script reads it) and
+//!   `SameSite=Strict` (no other site's page sends it). The token itself is
+//!   never stored in the browser; every replica with the same token reads
+//!   the cookie; it is refused past [`COOKIE_SECONDS`] whatever the browser
+//!   keeps, and all of them at once when the token changes.
 //! - **Writes** (every POST and DELETE but the sign-in's) need it.
 //! - **Stored jobs are the holders'**: the job list, a job, its parts, CSV,
 //!   plots, files and page answer 401 without it, unless the service was
@@ -18,14 +21,15 @@
 //! [`jobs_readable`] (the home page lists the recent jobs) read it.
 
 use axum::http::{HeaderMap, HeaderValue, Method, header};
-use sha2::{Digest, Sha256};
+use hmac::{Hmac, KeyInit, Mac};
+use sha2::Sha256;
 use std::sync::Arc;
 
 /// The sign-in cookie's name.
 pub const COOKIE: &str = "mechdyn_session";
 
-/// What the token's digest in the cookie is salted with: the cookie is
-/// worth nothing elsewhere the same token may be used.
+/// What a sign-in's signature is salted with: the cookie is worth nothing
+/// elsewhere the same token may be used.
 const SALT: &str = "mechdyn sign-in cookie v1\0";
 
 /// How long a sign-in lasts, seconds (30 days).
@@ -41,12 +45,20 @@ pub struct Access {
 tokio::task_local! {
     /// Whether the request being answered may read stored jobs.
     static READABLE: bool;
+    /// Whether it carries the token, where the service has one.
+    static SIGNED: Option<bool>;
 }
 
 /// Whether the request being answered may read stored jobs (outside a
 /// request — the command line, a deferred job — it may).
 pub fn jobs_readable() -> bool {
     READABLE.try_with(|r| *r).unwrap_or(true)
+}
+
+/// Whether the request being answered carries the token (a page offers to
+/// sign in, or out); None where the service has none.
+pub fn signed_in() -> Option<bool> {
+    SIGNED.try_with(|s| *s).unwrap_or(None)
 }
 
 /// What a request may do, by what it carries.
@@ -56,6 +68,8 @@ pub struct Allowed {
     pub carried: bool,
     /// It may read stored jobs.
     pub jobs: bool,
+    /// The service has a token.
+    pub token: bool,
 }
 
 /// Why a request is refused, if it is.
@@ -89,14 +103,14 @@ impl Access {
         if !jobs && is_private(path) {
             return Err(Refused::Read);
         }
-        Ok(Allowed { carried, jobs })
+        Ok(Allowed { carried, jobs, token: self.has_token() })
     }
 
     /// Whether `headers` carry the token, as a bearer or as the sign-in cookie.
     pub fn carries(&self, headers: &HeaderMap) -> bool {
         let Some(token) = &self.token else { return true };
         bearer_matches(headers.get(header::AUTHORIZATION), token)
-            || cookie(headers).is_some_and(|c| same(c.as_bytes(), digest(token).as_bytes()))
+            || cookie(headers).is_some_and(|c| signed_recently(token, &c, now()))
     }
 
     /// Whether `given` is the token (a sign-in form's field).
@@ -104,12 +118,12 @@ impl Access {
         self.token.as_deref().is_some_and(|t| same(given.trim().as_bytes(), t.as_bytes()))
     }
 
-    /// The `Set-Cookie` of a sign-in (`secure`: the request came over HTTPS).
+    /// The `Set-Cookie` of a sign-in now (`secure`: the request came over HTTPS).
     pub fn sign_in_cookie(&self, secure: bool) -> Option<HeaderValue> {
         let token = self.token.as_deref()?;
         let secure = if secure { "; Secure" } else { "" };
-        let text =
-            format!("{COOKIE}={}; Path=/; Max-Age={COOKIE_SECONDS}; HttpOnly; SameSite=Strict{secure}", digest(token));
+        let value = signed(token, now());
+        let text = format!("{COOKIE}={value}; Path=/; Max-Age={COOKIE_SECONDS}; HttpOnly; SameSite=Strict{secure}");
         HeaderValue::from_str(&text).ok()
     }
 }
@@ -121,7 +135,9 @@ pub fn sign_out_cookie() -> HeaderValue {
 
 /// Runs `answer` with what its request may do held for its task.
 pub async fn within<F: std::future::Future>(allowed: Allowed, answer: F) -> F::Output {
-    READABLE.scope(allowed.jobs, super::create::MAY_STORE.scope(allowed.carried, answer)).await
+    let signed = allowed.token.then_some(allowed.carried);
+    let answer = super::create::MAY_STORE.scope(allowed.carried, SIGNED.scope(signed, answer));
+    READABLE.scope(allowed.jobs, answer).await
 }
 
 /// The routes of stored jobs: the list and everything under a job, the
@@ -139,10 +155,31 @@ pub fn over_https(headers: &HeaderMap) -> bool {
     headers.get("x-forwarded-proto").and_then(|v| v.to_str().ok()).is_some_and(|p| p.eq_ignore_ascii_case("https"))
 }
 
-/// The token's digest, as the cookie carries it: hexadecimal SHA-256.
-fn digest(token: &str) -> String {
-    let hash = Sha256::new().chain_update(SALT).chain_update(token).finalize();
-    hash.iter().map(|b| format!("{b:02x}")).collect()
+/// Seconds since 1970, now.
+fn now() -> u64 {
+    std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs())
+}
+
+/// A sign-in at `at` (seconds since 1970) as the cookie carries it:
+/// `at.signature`, the signature HMAC-SHA-256 by the token, in hexadecimal.
+fn signed(token: &str, at: u64) -> String {
+    format!("{at}.{}", signature(token, at))
+}
+
+fn signature(token: &str, at: u64) -> String {
+    let mut mac = <Hmac<Sha256> as KeyInit>::new_from_slice(token.as_bytes()).expect("HMAC takes a key of any length");
+    mac.update(SALT.as_bytes());
+    mac.update(at.to_string().as_bytes());
+    mac.finalize().into_bytes().iter().map(|b| format!("{b:02x}")).collect()
+}
+
+/// Whether `cookie` is a sign-in by `token` at most [`COOKIE_SECONDS`]
+/// before `now` (and not more than a minute after it: replicas' clocks).
+fn signed_recently(token: &str, cookie: &str, now: u64) -> bool {
+    let Some((at, given)) = cookie.split_once('.') else { return false };
+    let Ok(at) = at.parse::<u64>() else { return false };
+    let fresh = at <= now.saturating_add(60) && now.saturating_sub(at) <= COOKIE_SECONDS;
+    fresh && same(given.as_bytes(), signature(token, at).as_bytes())
 }
 
 /// The sign-in cookie's value among a request's cookies.
@@ -187,10 +224,11 @@ mod tests {
         assert!(!bearer_matches(None, "s3cret"));
     }
 
-    /// The cookie a sign-in sets carries the token's salted digest, not the
-    /// token, and is read back among other cookies; another value is not.
+    /// The cookie a sign-in sets carries its time and its signature by the
+    /// token, not the token, and is read back among other cookies; another
+    /// value is not, nor one signed by another token, nor one of 31 days ago.
     #[test]
-    fn the_sign_in_cookie_carries_a_digest_of_the_token() {
+    fn the_sign_in_cookie_is_signed_by_the_token_and_expires() {
         let access = Access::new(Some("s3cret"), false);
         let set = access.sign_in_cookie(false).unwrap();
         let set = set.to_str().unwrap();
@@ -201,6 +239,11 @@ mod tests {
         assert!(access.carries(&headers));
         headers.insert(header::COOKIE, HeaderValue::from_static("mechdyn_session=s3cret"));
         assert!(!access.carries(&headers));
+        let day = 86_400;
+        assert!(signed_recently("s3cret", &signed("s3cret", now() - 29 * day), now()));
+        assert!(!signed_recently("s3cret", &signed("s3cret", now() - 31 * day), now()));
+        assert!(!signed_recently("s3cret", &signed("other", now()), now()), "another token's");
+        assert!(!signed_recently("s3cret", &signed("s3cret", now() + day), now()), "from the future");
         assert!(Access::new(Some(""), false).carries(&HeaderMap::new()), "an empty token is none");
     }
 
@@ -212,7 +255,7 @@ mod tests {
         let none = HeaderMap::new();
         let private = Access::new(Some("t"), false);
         assert_eq!(private.allow(&post, "/v1/flywheel", &none), Err(Refused::Write));
-        assert_eq!(private.allow(&post, "/signin", &none), Ok(Allowed { carried: false, jobs: false }));
+        assert_eq!(private.allow(&post, "/signin", &none), Ok(Allowed { carried: false, jobs: false, token: true }));
         for path in ["/v1/jobs", "/v1/jobs/x/result/a", "/jobs/x", "/v1/templates/p103/job", "/v1/jobs/"] {
             assert_eq!(private.allow(&get, path, &none), Err(Refused::Read), "{path}");
         }
@@ -220,6 +263,6 @@ mod tests {
             assert!(private.allow(&get, path, &none).is_ok(), "{path}");
         }
         let public = Access::new(Some("t"), true);
-        assert_eq!(public.allow(&get, "/jobs/x", &none), Ok(Allowed { carried: false, jobs: true }));
+        assert_eq!(public.allow(&get, "/jobs/x", &none), Ok(Allowed { carried: false, jobs: true, token: true }));
     }
 }

@@ -40,12 +40,13 @@
 //!   (`anonymous_seconds`, default 2 s), on workers of its own at a lower
 //!   priority ([`super::workers::Share`]): it never waits for, nor holds, a
 //!   token holder's place. With none free, at most [`ANONYMOUS_WAITING`]
-//!   such requests wait for each, each at most that budget; the others are
-//!   answered 503 at once.
+//!   such requests wait for each, each as long as those ahead may take; the
+//!   others are answered 503 at once.
 //!
 //! `Retry-After` is the time the jobs ahead would take at the recent mean
 //! time per job (an exponential average), at least 1 s.
 
+use crate::i18n::Msg;
 use crate::kind::Limits;
 use crate::kind::problem::ApiError;
 use std::collections::HashMap;
@@ -176,26 +177,26 @@ impl Admission {
         if HOLDING.try_with(|()| ()).is_ok() {
             return Ok(None);
         }
-        self.enter().map(Some).ok_or_else(|| self.saturated("every job slot and queue place is taken"))
+        self.enter().map(Some).ok_or_else(|| self.saturated("saturated-slots"))
     }
 
     /// The right to compute, once a job ahead has finished (waiting at most `queue_wait`).
     pub async fn compute(&self) -> Result<OwnedSemaphorePermit, ApiError> {
         match tokio::time::timeout(self.capacity.queue_wait, self.compute.clone().acquire_owned()).await {
             Ok(Ok(permit)) => Ok(permit),
-            Ok(Err(_)) => Err(self.saturated("the service is stopping")),
-            Err(_) => Err(self.saturated("the jobs ahead in the queue did not finish in time")),
+            Ok(Err(_)) => Err(self.saturated("saturated-stopping")),
+            Err(_) => Err(self.saturated("saturated-queue")),
         }
     }
 
-    /// The right to compute for a request without the token, once one
-    /// computing ahead of it has finished: at most [`ANONYMOUS_WAITING`]
-    /// such requests wait for each place, each at most its budget.
+    /// The right to compute for a request without the token, once those
+    /// ahead of it have: at most [`ANONYMOUS_WAITING`] such requests wait for
+    /// each place, each as long as those ahead may take (their budgets).
     pub async fn anonymous(&self) -> Result<OwnedSemaphorePermit, ApiError> {
-        let wait = self.capacity.anonymous_seconds;
+        let budget = self.capacity.anonymous_seconds;
         let taken = || ApiError::Saturated {
-            reason: "the share of computation without the token is taken".into(),
-            retry_after: wait.as_secs_f64().ceil().max(1.0) as u64,
+            reason: Msg::new("saturated-anonymous"),
+            retry_after: budget.as_secs_f64().ceil().max(1.0) as u64,
         };
         if let Ok(permit) = self.anonymous.clone().try_acquire_owned() {
             return Ok(permit);
@@ -205,6 +206,8 @@ impl Admission {
             self.anonymous_waiting.fetch_sub(1, Ordering::Relaxed);
             return Err(taken());
         }
+        // Those ahead each take their budget at most, and the grace past it.
+        let wait = budget.saturating_add(super::workers::GRACE).saturating_mul(ANONYMOUS_WAITING as u32);
         let waited = tokio::time::timeout(wait, self.anonymous.clone().acquire_owned()).await;
         self.anonymous_waiting.fetch_sub(1, Ordering::Relaxed);
         match waited {
@@ -227,14 +230,14 @@ impl Admission {
     /// Reserves `bytes` of answer memory (at most the whole budget), waiting
     /// up to `wait` for answers being sent to release theirs.
     pub async fn memory(&self, bytes: usize) -> Result<OwnedSemaphorePermit, ApiError> {
-        let why = "too many large answers are being sent";
+        let why = "saturated-memory";
         self.reserve(&self.memory, bytes, self.capacity.memory, why).await
     }
 
     /// Reserves `bytes` for a request body being read (at most the whole
     /// budget), waiting up to `wait` for bodies being read to finish.
     pub async fn body(&self, bytes: usize) -> Result<OwnedSemaphorePermit, ApiError> {
-        self.reserve(&self.bodies, bytes, self.capacity.bodies, "too many request bodies are being received").await
+        self.reserve(&self.bodies, bytes, self.capacity.bodies, "saturated-bodies").await
     }
 
     /// `bytes` of `budget` (a semaphore of `total` bytes), waiting up to `wait`.
@@ -243,7 +246,7 @@ impl Admission {
         budget: &Arc<Semaphore>,
         bytes: usize,
         total: usize,
-        why: &str,
+        why: &'static str,
     ) -> Result<OwnedSemaphorePermit, ApiError> {
         let n = u32::try_from(bytes.clamp(1, total.max(1))).unwrap_or(u32::MAX);
         match tokio::time::timeout(self.capacity.wait, budget.clone().acquire_many_owned(n)).await {
@@ -287,8 +290,13 @@ impl Admission {
     }
 
     /// The 503 of a saturated service.
-    pub fn saturated(&self, why: &str) -> ApiError {
-        ApiError::Saturated { reason: why.into(), retry_after: self.retry_after() }
+    pub fn saturated(&self, why: &'static str) -> ApiError {
+        self.saturated_because(Msg::new(why))
+    }
+
+    /// The 503 of a saturated service, saying why.
+    pub fn saturated_because(&self, why: Msg) -> ApiError {
+        ApiError::Saturated { reason: why, retry_after: self.retry_after() }
     }
 }
 

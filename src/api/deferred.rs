@@ -100,7 +100,7 @@ pub async fn accept(
     if waiting >= state.deferred.settings.max_queued {
         return Err(state
             .admission
-            .saturated(&format!("{waiting} deferred jobs are waiting, the most this service keeps")));
+            .saturated_because(crate::i18n::Msg::new("saturated-deferred").arg("waiting", waiting)));
     }
     let job = Queued {
         id: uuid::Uuid::new_v4().to_string(),

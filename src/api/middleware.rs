@@ -217,7 +217,7 @@ async fn admit(admission: Admission, (limit, pace): (usize, Pace), req: Request,
         Err(e) => return e.into_response(),
     };
     let Some(slot) = admission.enter() else {
-        return admission.saturated("every job slot and queue place is taken").into_response();
+        return admission.saturated("saturated-slots").into_response();
     };
     Admission::holding(next.run(Request::from_parts(parts, Body::from(bytes)))).await.map(|b| guarded(b, slot))
 }

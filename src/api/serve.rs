@@ -157,7 +157,7 @@ pub fn open_files() -> Option<u64> {
 /// The 503 of a connection beyond the cap, made once: a problem document.
 fn full_answer(max: usize) -> Bytes {
     let problem = crate::kind::problem::ApiError::Saturated {
-        reason: format!("the service holds its most connections ({max}); retry in a second"),
+        reason: crate::i18n::Msg::new("saturated-connections").arg("max", max),
         retry_after: 1,
     }
     .problem();

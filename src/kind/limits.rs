@@ -10,8 +10,9 @@ use std::time::{Duration, Instant};
 /// once per level, on the blocking pool's 2 MiB thread stacks.
 pub const MAX_EXPRESSION_DEPTH: usize = 256;
 
-/// Limits on one request.
-#[derive(Clone, Debug, PartialEq)]
+/// Limits on one request (sent with each job to the worker that computes
+/// it, its start left out: the budget counts from the worker's start).
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Limits {
     /// Wall-clock compute budget of a job.
     pub budget: Duration,
@@ -31,6 +32,7 @@ pub struct Limits {
     pub result_bytes: usize,
     /// When the job's computation began (its budget counts from then); None
     /// until [`Limits::started`].
+    #[serde(skip)]
     pub started: Option<Instant>,
 }
 

@@ -172,7 +172,7 @@ pub enum ApiError {
     },
     /// Too many jobs computing or waiting, or too many large answers in flight.
     Saturated {
-        reason: String,
+        reason: Msg,
         retry_after: u64,
     },
     /// The database's storage is full: `.0` says what was not done (nothing was stored).

@@ -19,9 +19,10 @@ fn costly(k: usize) -> String {
 /// Four clients loop on [`costly`] without the token while a token holder
 /// POSTs light jobs one after the other: each of those is answered in under
 /// a second (on two cores shared with the clients), none is refused; each
-/// anonymous request is answered within its wait for the share and its
-/// budget (2 s each), the grace (0.5 s) and a margin, as a 422 of its
-/// budget or a 503 for want of the share; after them, a sheet's value is answered without the token.
+/// anonymous request is answered within its wait for the share (the
+/// budgets of the four that may be ahead of it), its own budget (2 s), the
+/// grace (0.5 s) and a margin, as a 422 of its budget or a 503 for want of
+/// the share; after them, a sheet's value is answered without the token.
 #[test]
 fn loops_without_the_token_do_not_delay_a_token_holders_jobs() {
     let dir = tempfile::tempdir().unwrap();
@@ -61,9 +62,9 @@ fn loops_without_the_token_do_not_delay_a_token_holders_jobs() {
     let saturated = anonymous.iter().filter(|((s, t), _)| *s == 503 && t.contains("without the token")).count();
     assert!(budget >= 2, "the share computed some: {anonymous:?}");
     assert_eq!(budget + saturated, anonymous.len(), "each is its budget's 422 or the share's 503: {anonymous:?}");
-    // A wait for the share (at most its budget), the budget, the grace, a margin.
+    // A wait for the share (at most the budgets and graces of the four ahead), the budget, the grace, a margin.
     for ((status, _), took) in &anonymous {
-        assert!(*took < 2.0 + 2.0 + 0.5 + 1.5, "a request without the token answered after {took:.2} s ({status})");
+        assert!(*took < 4.0 * 2.5 + 2.5 + 1.5, "a request without the token answered after {took:.2} s ({status})");
     }
     let (status, value) =
         http(port, "GET", "/v1/templates/p103-slider-flywheel/result/inertia_exact?F=1111", "").unwrap();
@@ -73,9 +74,9 @@ fn loops_without_the_token_do_not_delay_a_token_holders_jobs() {
     child.wait().unwrap();
 }
 
-/// Without the token, one request computes, four wait for it (each at
-/// most the share's budget, 1 s here), and a sixth is answered 503 at once,
-/// saying when to come back.
+/// Without the token, one request computes, four wait for it (for as long
+/// as those ahead may take, 1 s each here), and a sixth is answered 503 at
+/// once, saying when to come back; the four are computed in turn.
 #[test]
 fn the_share_taken_is_a_503_with_retry_after() {
     let dir = tempfile::tempdir().unwrap();
@@ -93,8 +94,7 @@ fn the_share_taken_is_a_503_with_retry_after() {
     assert!(head.to_ascii_lowercase().contains("retry-after: 1"), "{head}");
     assert!(took < 0.5, "the sixth waited {took:.2} s");
     let answers: Vec<(u16, String)> = ahead.into_iter().map(|a| a.join().unwrap()).collect();
-    assert!(answers.iter().any(|(s, _)| *s == 422), "{answers:?}");
-    assert!(answers.iter().all(|(s, _)| [422, 503].contains(s)), "{answers:?}");
+    assert!(answers.iter().all(|(s, _)| *s == 422), "each computed for its budget: {answers:?}");
     child.kill().unwrap();
     child.wait().unwrap();
 }

@@ -43,6 +43,20 @@ fn served() -> Option<(tempfile::TempDir, u16, std::process::Child)> {
     Some((dir, port, service))
 }
 
+/// tests/clients/browser.py run on `plan` (written in `dir`).
+fn run_plan(dir: &std::path::Path, plan: &Value) -> std::process::Output {
+    let plan_file = dir.join("plan.json");
+    std::fs::write(&plan_file, plan.to_string()).unwrap();
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/clients/browser.py");
+    Command::new("python3").arg(script).arg(&plan_file).output().unwrap()
+}
+
+/// What the browser saw, once it ran.
+fn report_of(run: &std::process::Output) -> Value {
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    serde_json::from_slice(&run.stdout).unwrap()
+}
+
 #[test]
 fn chromium_loads_every_page_submits_the_form_and_opens_every_plot() {
     let Some((dir, port, mut service)) = served() else { return };
@@ -67,15 +81,11 @@ fn chromium_loads_every_page_submits_the_form_and_opens_every_plot() {
             "fill": {"F": "1200", "eps": "3 %"}, "submit": "button[type=submit]", "selectors": ["figure img"]}],
         "svgs": svgs,
     });
-    let plan_file = dir.path().join("plan.json");
-    std::fs::write(&plan_file, plan.to_string()).unwrap();
-    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/clients/browser.py");
-    let run = Command::new("python3").arg(script).arg(&plan_file).output().unwrap();
+    let run = run_plan(dir.path(), &plan);
     let (_, same) = http(port, "GET", "/v1/templates/p103-slider-flywheel/job?F=1200&eps=3%20%25", "").unwrap();
     let _ = service.kill();
     let _ = service.wait();
-    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
-    let report: Value = serde_json::from_slice(&run.stdout).unwrap();
+    let report = report_of(&run);
     let base = format!("http://127.0.0.1:{port}/");
     let clean = |what: &str, r: &Value| {
         assert!(r.get("error").is_none(), "{what}: {}", r["error"]);
@@ -170,10 +180,7 @@ fn chromium_in_spanish_reads_and_fills_the_pages_with_decimal_commas() {
         ],
         "svgs": svgs,
     });
-    let plan_file = dir.path().join("plan.json");
-    std::fs::write(&plan_file, plan.to_string()).unwrap();
-    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/clients/browser.py");
-    let run = Command::new("python3").arg(script).arg(&plan_file).output().unwrap();
+    let run = run_plan(dir.path(), &plan);
     let job_of = |path: &str| {
         let (_, text) = http(port, "GET", path, "").unwrap();
         serde_json::from_str::<Value>(&text).unwrap()["id"].as_str().unwrap().to_string()
@@ -182,8 +189,7 @@ fn chromium_in_spanish_reads_and_fills_the_pages_with_decimal_commas() {
     let punch = job_of("/v1/templates/punch-press-us/job?theta=20%20deg");
     let _ = service.kill();
     let _ = service.wait();
-    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
-    let report: Value = serde_json::from_slice(&run.stdout).unwrap();
+    let report = report_of(&run);
     let spanish = |what: &str, r: &Value| {
         assert!(r.get("error").is_none(), "{what}: {}", r["error"]);
         assert_eq!(r["status"], 200, "{what}: {r}");
@@ -267,14 +273,10 @@ fn chromium_plays_a_mechanisms_motion_where_the_result_puts_it() {
         "motions": [{"name": "motion-k1", "path": path, "times": shown.map(time),
                      "probes": shown.map(|k| json!([on_screen(k)]))}],
     });
-    let plan_file = dir.path().join("plan.json");
-    std::fs::write(&plan_file, plan.to_string()).unwrap();
-    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/clients/browser.py");
-    let run = Command::new("python3").arg(script).arg(&plan_file).output().unwrap();
+    let run = run_plan(dir.path(), &plan);
     let _ = service.kill();
     let _ = service.wait();
-    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
-    let report: Value = serde_json::from_slice(&run.stdout).unwrap();
+    let report = report_of(&run);
     let r = &report["motions"]["motion-k1"];
     assert!(r.get("error").is_none(), "{}", r["error"]);
     assert_eq!(r["console"], json!([]), "no console message");
@@ -322,14 +324,10 @@ fn chromium_signs_in_once_and_reads_the_private_jobs() {
             "evaluate": ["document.cookie"]}],
         "svgs": [svg],
     });
-    let plan_file = dir.path().join("plan.json");
-    std::fs::write(&plan_file, plan.to_string()).unwrap();
-    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/clients/browser.py");
-    let run = Command::new("python3").arg(script).arg(&plan_file).output().unwrap();
+    let run = run_plan(dir.path(), &plan);
     let _ = service.kill();
     let _ = service.wait();
-    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
-    let report: Value = serde_json::from_slice(&run.stdout).unwrap();
+    let report = report_of(&run);
     let refused = &report["pages"]["refused"];
     assert_eq!(refused["status"], 401, "{refused}");
     assert_eq!(refused["counts"]["form input[name=token]"], 1, "the sign-in form: {refused}");

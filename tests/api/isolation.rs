@@ -43,6 +43,15 @@ fn problem_type(text: &str) -> String {
     serde_json::from_str::<Value>(text).map(|p| p["type"].as_str().unwrap_or("").to_string()).unwrap_or_default()
 }
 
+/// The process ids of the children of `pid` (its workers), whichever of
+/// its threads started them (from Linux's /proc).
+pub fn children(pid: u32) -> Vec<String> {
+    let tasks =
+        std::fs::read_dir(format!("/proc/{pid}/task")).map(|d| d.flatten().collect()).unwrap_or_else(|_| Vec::new());
+    let of = |task: &std::fs::DirEntry| std::fs::read_to_string(task.path().join("children")).unwrap_or_default();
+    tasks.iter().flat_map(|t| of(t).split_whitespace().map(String::from).collect::<Vec<_>>()).collect()
+}
+
 /// The CPU seconds of the process `pid` and its children (its workers),
 /// from Linux's /proc (ticks of 1/100 s).
 pub fn tree_cpu_seconds(pid: u32) -> f64 {
@@ -51,8 +60,7 @@ pub fn tree_cpu_seconds(pid: u32) -> f64 {
         let fields: Vec<&str> = stat.rsplit_once(')')?.1.split_whitespace().collect();
         Some((fields.get(11)?.parse::<f64>().ok()? + fields.get(12)?.parse::<f64>().ok()?) / 100.0)
     };
-    let children = std::fs::read_to_string(format!("/proc/{pid}/task/{pid}/children")).unwrap_or_default();
-    own(&pid.to_string()).unwrap_or(0.0) + children.split_whitespace().filter_map(own).sum::<f64>()
+    own(&pid.to_string()).unwrap_or(0.0) + children(pid).iter().filter_map(|c| own(c)).sum::<f64>()
 }
 
 /// After its answers, the service and its workers spend under 0.3 s of CPU in a second.
@@ -202,8 +210,7 @@ fn tables_as_a_sheet_pastes_them_are_answered_within_their_budget_in_every_kind(
 fn an_idle_worker_that_ended_costs_no_job() {
     let (_dir, mut child, port) = service(&[]);
     let pid = child.id();
-    let workers = std::fs::read_to_string(format!("/proc/{pid}/task/{pid}/children")).unwrap();
-    let workers: Vec<&str> = workers.split_whitespace().collect();
+    let workers = children(pid);
     assert!(!workers.is_empty(), "the service started its workers");
     for worker in &workers {
         let killed = std::process::Command::new("kill").args(["-9", worker]).status().unwrap();
@@ -214,6 +221,47 @@ fn an_idle_worker_that_ended_costs_no_job() {
         let (status, text, _) = timed(port, "/v1/flywheel", &flywheel(&format!("-{}*sin(phi)", 500 + k)));
         assert_eq!(status, 201, "{text}");
     }
+    child.kill().unwrap();
+    child.wait().unwrap();
+}
+
+/// The service's children: each one's pid, state (`S`, `R`, `Z` for one
+/// ended and not reaped) and priority (nice), from /proc.
+fn workers_of(pid: u32) -> Vec<(String, String, i32)> {
+    let stat = |child: &String| -> Option<(String, String, i32)> {
+        let text = std::fs::read_to_string(format!("/proc/{child}/stat")).ok()?;
+        let fields: Vec<&str> = text.rsplit_once(')')?.1.split_whitespace().collect();
+        Some((child.to_string(), fields.first()?.to_string(), fields.get(16)?.parse().ok()?))
+    };
+    children(pid).iter().filter_map(stat).collect()
+}
+
+/// A worker started from a thread of the blocking pool outlives that
+/// thread: the share without the token starts its worker for its first job
+/// (a kind never seen runs on the blocking pool), and 12 s later — the
+/// pool's threads end after 10 s idle — that worker waits for the next job,
+/// at its lower priority, and serves it. Before, its parent-death signal
+/// killed it with the thread that started it, and it stayed a zombie until
+/// a job found it gone.
+#[test]
+fn a_worker_outlives_the_thread_that_started_it() {
+    let (_dir, mut child, port) = service(&[("MECHDYN_API_TOKEN", "t0ken")]);
+    let value = |f: u32| {
+        let path = format!("/v1/templates/p103-slider-flywheel/result/inertia_exact?F={f}");
+        let (status, text) = http(port, "GET", &path, "").unwrap();
+        assert_eq!(status, 200, "{text}");
+    };
+    value(1101);
+    let anonymous: Vec<String> =
+        workers_of(child.id()).into_iter().filter(|(_, _, nice)| *nice == 10).map(|(pid, ..)| pid).collect();
+    assert_eq!(anonymous.len(), 1, "{:?}", workers_of(child.id()));
+    std::thread::sleep(Duration::from_secs(12));
+    let now = workers_of(child.id());
+    let worker = now.iter().find(|(pid, ..)| *pid == anonymous[0]).unwrap_or_else(|| panic!("{now:?}"));
+    assert_ne!(worker.1, "Z", "the worker ended with the thread that started it: {now:?}");
+    value(1102);
+    let after = workers_of(child.id());
+    assert!(after.iter().any(|(pid, state, _)| *pid == anonymous[0] && state != "Z"), "{after:?}");
     child.kill().unwrap();
     child.wait().unwrap();
 }

@@ -132,6 +132,9 @@ async fn a_browser_signs_in_once_with_a_cookie_that_is_not_the_token() {
     let page = format!("/jobs/{k1}?step=3");
     let refused = app.get(&page).await;
     assert!(refused.text.contains(r#"name="next" value="/jobs/"#), "the form comes back to the page: {}", refused.text);
+    let form = app.get("/templates/p103-slider-flywheel?F=1150").await;
+    assert_eq!(form.status, StatusCode::UNAUTHORIZED, "a job of new values would be stored");
+    assert!(form.text.contains(r#"name="next" value="/templates/p103-slider-flywheel?F=1150""#), "{}", form.text);
     let wrong = sign_in(&app, "token=guess&next=%2Fjobs%2Fx").await;
     assert_eq!(wrong.status, StatusCode::UNAUTHORIZED);
     assert!(!wrong.headers.contains_key("set-cookie"));

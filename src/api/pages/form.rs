@@ -26,7 +26,7 @@ use std::collections::HashMap;
     responses((status = 200, description = "The form", content_type = "text/html", body = String),
         (status = 303, description = "The job of these parameters: `Location` is its page", headers(("Location" = String, description = "/jobs/{id}"))),
         (status = 400, description = "A value the template refuses: the form again, the message at its field", content_type = "text/html", body = String),
-        (status = 401, description = "The service has an API token, these parameters' job is not stored yet, and the request does not carry the token", content_type = "text/html", body = String),
+        (status = 401, description = "The service has an API token, these parameters' job is not stored yet, and the request does not carry the token: the sign-in form, which comes back to these values", content_type = "text/html", body = String),
         (status = 404, description = "No template with this id", content_type = "text/html", body = String),
         (status = 422, description = "These parameters give no valid problem: the form again with why", content_type = "text/html", body = String),
         (status = 503, description = "Saturated or the database unavailable", content_type = "text/html", body = String)))]
@@ -68,6 +68,12 @@ pub async fn template(
             | ApiError::OverBudget(_)
             | ApiError::ResultTooLarge { .. }),
         ) => layout::answer(e.status(), form(&t, &given, Some(&e), &super::job::kind_title(&state, &t.kind))),
+        // A new job would be stored, and the browser has not signed in: the
+        // sign-in form, which comes back to these values.
+        Err(ApiError::Unauthorized) => {
+            let query = serde_urlencoded::to_string(&given).unwrap_or_default();
+            super::signin::refused(&format!("/templates/{}?{query}", crate::api::plots::segment(&t.id)))
+        }
         Err(e) => layout::error(e),
     }
 }

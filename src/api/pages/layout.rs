@@ -16,6 +16,8 @@ body { margin: 0; font: 16px/1.5 system-ui, -apple-system, "Segoe UI", Roboto, "
 header { border-bottom: 1px solid var(--line); background: var(--bg); }
 nav { max-width: 70rem; margin: 0 auto; padding: .6rem 1rem; display: flex; flex-wrap: wrap; gap: .4rem 1.2rem; align-items: baseline; }
 nav .brand { font-weight: 700; color: var(--ink); text-decoration: none; font-size: 1.1rem; }
+nav form.nav { margin: 0 0 0 auto; }
+nav button.link { font: inherit; background: none; border: 0; padding: 0; color: var(--link); text-decoration: underline; cursor: pointer; }
 main { max-width: 70rem; margin: 0 auto; padding: 1rem; }
 h1 { font-size: 1.5rem; margin: .4rem 0 .2rem; overflow-wrap: anywhere; }
 h2 { font-size: 1.2rem; margin: 1.6rem 0 .5rem; border-bottom: 1px solid var(--line); padding-bottom: .2rem; }
@@ -81,6 +83,13 @@ pub fn page(title: &str, body: Markup) -> Markup {
                     a href="/" { (tr(lang, "page-nav-home")) }
                     a href="/docs/" { (tr(lang, "page-nav-docs")) }
                     a href="/openapi.json" { (tr(lang, "page-nav-openapi")) }
+                    @match crate::api::access::signed_in() {
+                        Some(false) => a href="/signin" { (tr(lang, "page-signin-title")) },
+                        Some(true) => form.nav method="post" action="/signout" {
+                            button.link type="submit" { (tr(lang, "page-signout-button")) }
+                        },
+                        None => {},
+                    }
                 } }
                 main { (body) }
                 footer { (Msg::new("page-footer").arg("version", env!("CARGO_PKG_VERSION")).render(lang)) }

@@ -45,7 +45,6 @@ pub async fn home(State(state): State<AppState>) -> Response {
         },
         false => Vec::new(),
     };
-    let signed_in = state.access.has_token() && crate::api::create::may_store();
     let mut templates = builtin().to_vec();
     if let Ok(stored) = state.store.templates().await {
         templates.extend(stored.iter().filter_map(|b| serde_json::from_str(b).ok()));
@@ -65,7 +64,6 @@ pub async fn home(State(state): State<AppState>) -> Response {
             } } }
         } }
         h2 { (t("page-recent")) }
-        @if signed_in { (signin::sign_out_button()) }
         @if !readable {
             (signin::section("/", false))
         } @else if jobs.is_empty() {

@@ -82,16 +82,6 @@ pub fn section(next: &str, wrong: bool) -> Markup {
     }
 }
 
-/// The sign-out button.
-pub fn sign_out_button() -> Markup {
-    html! {
-        form.inline method="post" action="/signout" {
-            span.meta { (tr(i18n::current(), "page-signed-in")) }
-            button type="submit" { (tr(i18n::current(), "page-signout-button")) }
-        }
-    }
-}
-
 fn page(next: &str, wrong: bool) -> Markup {
     let title = tr(i18n::current(), "page-signin-title");
     layout::page(&title, html! { h1 { (title) } (section(next, wrong)) })

@@ -8,9 +8,10 @@ use super::wire;
 use std::collections::VecDeque;
 use std::io::{self, BufRead, BufReader, Read};
 use std::os::fd::AsFd;
+use std::os::unix::process::CommandExt;
 use std::path::Path;
 use std::process::{Child, ChildStdin, ChildStdout, Command, ExitStatus, Stdio};
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, Mutex, OnceLock, mpsc};
 use std::time::Instant;
 
 /// What a worker writes on its standard error when an allocation fails
@@ -50,13 +51,11 @@ pub enum Answer {
 impl Worker {
     /// `program worker` with `args`, its three pipes open.
     pub fn spawn(program: &Path, args: &[String]) -> io::Result<Self> {
-        let mut child = Command::new(program)
-            .arg("worker")
-            .args(args)
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()?;
+        let mut command = Command::new(program);
+        // Named so in `ps` (the program may be /proc/self/exe).
+        command.arg0("mechdyn").arg("worker").args(args);
+        command.stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped());
+        let mut child = spawned(command)?;
         let (Some(stdin), Some(stdout), Some(stderr)) = (child.stdin.take(), child.stdout.take(), child.stderr.take())
         else {
             let _ = child.kill();
@@ -116,6 +115,28 @@ impl Drop for Worker {
             let _ = self.child.wait();
         }
     }
+}
+
+/// `command` started by a thread that lasts as long as the process: a
+/// worker's parent-death signal fires when the *thread* that started it ends
+/// (prctl(2)), and a blocking pool's threads end after some seconds idle —
+/// a worker started from one was killed with it, and left unreaped.
+fn spawned(command: Command) -> io::Result<Child> {
+    type Order = (Command, mpsc::Sender<io::Result<Child>>);
+    static SPAWNER: OnceLock<Option<mpsc::Sender<Order>>> = OnceLock::new();
+    let spawner = SPAWNER.get_or_init(|| {
+        let (orders, taken) = mpsc::channel::<Order>();
+        let serve = move || {
+            for (mut command, answer) in taken {
+                let _ = answer.send(command.spawn());
+            }
+        };
+        std::thread::Builder::new().name("worker-spawner".into()).spawn(serve).ok().map(|_| orders)
+    });
+    let gone = || io::Error::other("the thread that starts workers could not be started");
+    let (answer, answered) = mpsc::channel();
+    spawner.as_ref().ok_or_else(gone)?.send((command, answer)).map_err(|_| gone())?;
+    answered.recv().map_err(|_| gone())?
 }
 
 /// A part of a frame: its length's prefix, then its bytes (at most `max`).

@@ -70,7 +70,7 @@ fn serve(kinds: &Registry) -> io::Result<()> {
         super::faults::inject(&body);
         let started = Instant::now();
         let computed = match kinds.find(&job.kind) {
-            Some(kind) => kind.run(Bytes::from(body), &job.limits()),
+            Some(kind) => kind.run(Bytes::from(body), &job.limits),
             None => Err(crate::kind::problem::ApiError::Internal(format!("no kind '{}'", job.kind))),
         };
         let micros = u64::try_from(started.elapsed().as_micros()).unwrap_or(u64::MAX);

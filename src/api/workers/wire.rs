@@ -12,7 +12,6 @@ use crate::kind::Limits;
 use crate::kind::problem::{ApiError, FieldError};
 use serde::{Deserialize, Serialize};
 use std::io::{self, IoSlice, Read, Write};
-use std::time::Duration;
 
 /// The largest part of a frame: a request body, or a result with room to spare.
 pub const MAX_PART: usize = 1 << 30;
@@ -21,44 +20,12 @@ pub const MAX_PART: usize = 1 << 30;
 #[derive(Debug, Serialize, Deserialize)]
 pub struct Job {
     pub kind: String,
-    pub budget_seconds: f64,
-    pub steps: usize,
-    pub samples: usize,
-    pub table_rows: usize,
-    pub segments: usize,
-    pub expression_length: usize,
-    pub expression_depth: usize,
-    pub result_bytes: usize,
+    pub limits: Limits,
 }
 
 impl Job {
     pub fn new(kind: &str, limits: &Limits) -> Self {
-        Self {
-            kind: kind.into(),
-            budget_seconds: limits.budget.as_secs_f64(),
-            steps: limits.steps,
-            samples: limits.samples,
-            table_rows: limits.table_rows,
-            segments: limits.segments,
-            expression_length: limits.expression_length,
-            expression_depth: limits.expression_depth,
-            result_bytes: limits.result_bytes,
-        }
-    }
-
-    /// The limits as the job was sent them (its budget not started).
-    pub fn limits(&self) -> Limits {
-        Limits {
-            budget: Duration::try_from_secs_f64(self.budget_seconds).unwrap_or(Duration::ZERO),
-            steps: self.steps,
-            samples: self.samples,
-            table_rows: self.table_rows,
-            segments: self.segments,
-            expression_length: self.expression_length,
-            expression_depth: self.expression_depth,
-            result_bytes: self.result_bytes,
-            started: None,
-        }
+        Self { kind: kind.into(), limits: Limits { started: None, ..limits.clone() } }
     }
 }
 
@@ -223,6 +190,7 @@ fn part(input: &mut impl Read, n: usize) -> io::Result<Vec<u8>> {
 mod tests {
     use super::*;
     use crate::i18n::Lang;
+    use std::time::Duration;
 
     /// A refusal crosses the pipe whole: its fields, their pointers and
     /// their catalogue messages, said again in Spanish on the other side.
@@ -249,7 +217,7 @@ mod tests {
         write(&mut pipe, &Job::new("flywheel", &limits), b"{}").unwrap();
         let (header, body) = read(&mut pipe.as_slice()).unwrap().unwrap();
         let job: Job = serde_json::from_slice(&header).unwrap();
-        assert_eq!((job.kind.as_str(), job.limits(), body.as_slice()), ("flywheel", limits, &b"{}"[..]));
+        assert_eq!((job.kind.as_str(), job.limits, body.as_slice()), ("flywheel", limits, &b"{}"[..]));
         assert!(read(&mut &b""[..]).unwrap().is_none());
         assert!(read(&mut &b"\x05\0"[..]).is_err(), "a frame cut short");
     }

@@ -30,7 +30,7 @@ impl ApiError {
             Self::MethodNotAllowed => Msg::new("detail-method-not-allowed"),
             Self::ResultTooLarge { limit, .. } => Msg::new("detail-result-too-large").arg("limit", limit),
             Self::Saturated { reason, retry_after } => {
-                Msg::new("detail-saturated").arg("reason", reason).arg("seconds", retry_after)
+                Msg::new("detail-saturated").with("reason", reason.clone()).arg("seconds", retry_after)
             }
             Self::StorageFull(what) => Msg::new("detail-storage-full").arg("what", what),
             Self::Unavailable(_) => Msg::new("detail-unavailable"),
