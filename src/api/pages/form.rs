@@ -1,7 +1,9 @@
 //! A template's form: each parameter with its unit, range and description,
 //! at its default. Submitting it (a GET with the parameters, the same
 //! names `GET /v1/templates/{id}/job` takes) finds or computes the job and
-//! redirects to its page; a value the template refuses shows the form again
+//! redirects to its page — or, for a browser without the token of a service
+//! that has one, shows the page of the job computed and stored nowhere
+//! ([`super::unstored`]); a value the template refuses shows the form again
 //! with the message under its field.
 
 use super::{IdPath, layout, query_of};
@@ -26,7 +28,7 @@ use std::collections::HashMap;
     responses((status = 200, description = "The form", content_type = "text/html", body = String),
         (status = 303, description = "The job of these parameters: `Location` is its page", headers(("Location" = String, description = "/jobs/{id}"))),
         (status = 400, description = "A value the template refuses: the form again, the message at its field", content_type = "text/html", body = String),
-        (status = 401, description = "The service has an API token, these parameters' job is not stored yet, and the request does not carry the token: the sign-in form, which comes back to these values", content_type = "text/html", body = String),
+        (status = 200, description = "Without the token, of a service that has one: the job of these values, computed within the share of requests without it and stored nowhere, its values and plots in the page", content_type = "text/html", body = String),
         (status = 404, description = "No template with this id", content_type = "text/html", body = String),
         (status = 422, description = "These parameters give no valid problem: the form again with why", content_type = "text/html", body = String),
         (status = 503, description = "Saturated or the database unavailable", content_type = "text/html", body = String)))]
@@ -55,7 +57,17 @@ pub async fn template(
     };
     let asked: HashMap<String, String> =
         given.iter().filter(|(k, v)| !unchanged(k, v)).map(|(k, v)| (k.clone(), v.clone())).collect();
-    match templates::job_for(&state, &t, &asked, templates::Want::Job).await {
+    // A browser without the token, of a service that has one, stores no job:
+    // the job of these values is computed within the anonymous share and its
+    // page shown at once, unless it is stored and the browser may read it.
+    let want = if crate::api::create::may_store() { templates::Want::Job } else { templates::Want::Values };
+    match templates::job_for(&state, &t, &asked, want).await {
+        Ok((row, _)) if row.seq == 0 || !crate::api::access::jobs_readable() => {
+            match super::unstored::page(&state, row).await {
+                Ok(page) => layout::answer(StatusCode::OK, page),
+                Err(e) => layout::error(e),
+            }
+        }
         Ok((row, _)) => {
             // The language asked in the query goes with the redirect (a browser keeps it in its cookie too).
             let lang =
@@ -68,12 +80,6 @@ pub async fn template(
             | ApiError::OverBudget(_)
             | ApiError::ResultTooLarge { .. }),
         ) => layout::answer(e.status(), form(&t, &given, Some(&e), &super::job::kind_title(&state, &t.kind))),
-        // A new job would be stored, and the browser has not signed in: the
-        // sign-in form, which comes back to these values.
-        Err(ApiError::Unauthorized) => {
-            let query = serde_urlencoded::to_string(&given).unwrap_or_default();
-            super::signin::refused(&format!("/templates/{}?{query}", crate::api::plots::segment(&t.id)))
-        }
         Err(e) => layout::error(e),
     }
 }

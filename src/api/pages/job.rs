@@ -68,7 +68,7 @@ enum Rendered {
 
 async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Result<Rendered, ApiError> {
     let step = plots::step(q, state.limits.last_step())?;
-    let (row, mut result, _reserved) = match result_tree(state, id).await {
+    let (row, result, _reserved) = match result_tree(state, id).await {
         Err(ApiError::NotDone { status, .. }) => {
             let (row, _reserved) = read::load(state, id, read::READ_MEMORY_FACTOR).await?;
             let page = not_done(&row, &kind_title(state, &row.kind));
@@ -76,31 +76,53 @@ async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Resu
         }
         read => read?,
     };
-    let request = serde_json::from_slice::<Value>(&row.request).unwrap_or_default();
-    let kind = state.kinds.find(&row.kind).ok_or_else(|| ApiError::Internal(format!("job of kind {}", row.kind)))?;
-    let listed = kind.plots(&crate::kind::plots::Job { request: &request, result: &result });
     if let Some(s) = step {
         let count = steps(&result);
         if s >= count {
             return Err(crate::kind::plots::no_step(s, count));
         }
     }
+    page(state, &row, result, step, Pictures::Linked).map(Rendered::Done)
+}
+
+/// How a page shows its plots: linked to the job's (stored), or drawn into
+/// the page (a job not stored: `data:` pictures, by the plots' names).
+pub enum Pictures<'a> {
+    Linked,
+    Inline(&'a [(String, String)]),
+}
+
+/// The page of a done job (`row`, its `result`), its mechanism drawn at
+/// `step`; of a job not stored, without links to it.
+pub fn page(
+    state: &AppState,
+    row: &JobRow,
+    mut result: Value,
+    step: Option<usize>,
+    pictures: Pictures,
+) -> Result<Markup, ApiError> {
+    let request = serde_json::from_slice::<Value>(&row.request).unwrap_or_default();
+    let kind = state.kinds.find(&row.kind).ok_or_else(|| ApiError::Internal(format!("job of kind {}", row.kind)))?;
+    let listed = kind.plots(&crate::kind::plots::Job { request: &request, result: &result });
+    let stored = matches!(pictures, Pictures::Linked);
     let named = kind.title();
     // The kind's own files this result has (a cam's profile.dxf).
     let files: Vec<&str> = kind.files().iter().map(|f| f.0).filter(|name| kind.has_file(&result, name)).collect();
-    let summary = summary(&row, &result);
+    let summary = summary(row, &result);
     let (values, long) = values(kind, &mut result);
     let (lang, id) = (i18n::current(), &row.id);
     let t = |key| tr(lang, key);
     let body = html! {
-        h1 { (title(&row, &named)) }
-        (meta(&row))
-        ul.links.noprint {
+        h1 { (title(row, &named)) }
+        (meta(row))
+        @if stored { ul.links.noprint {
             li { a href=(format!("/v1/jobs/{id}")) { "JSON" } }
             li { a href=(format!("/v1/jobs/{id}/result.csv")) { (t("page-csv-table")) } }
             li { a href=(format!("/v1/jobs/{id}/values?format=csv")) { (t("page-every-value")) } }
             li { a href=(format!("/v1/jobs/{id}/plots")) { (t("page-plots-json")) } }
             @for name in &files { li { a href=(format!("/v1/jobs/{id}/{name}")) { (name) } } }
+        } } @else {
+            p.meta { (t("page-not-stored")) " " a href="/signin" { (t("page-signin-title")) } }
         }
         h2 { (t("page-values")) }
         @if !long.is_empty() {
@@ -109,12 +131,15 @@ async fn render(state: &AppState, id: &str, q: &HashMap<String, String>) -> Resu
                     @if k > 0 { ", " } code { (pointer) } " (" (Msg::new("page-rows").arg("n", n).render(lang)) ")"
                 } }
         }
-        (value_table(id, &values))
+        (value_table(stored.then_some(id.as_str()), &values))
         (summary)
-        (plot_figures(id, &listed, step))
-        (request_sent(&row))
+        @match pictures {
+            Pictures::Linked => (plot_figures(id, &listed, step)),
+            Pictures::Inline(drawn) => (drawn_figures(&listed, drawn)),
+        }
+        (request_sent(row))
     };
-    Ok(Rendered::Done(layout::page(&title(&row, &named), body)))
+    Ok(layout::page(&title(row, &named), body))
 }
 
 /// The page of a deferred job not done: where it is, or why it failed.
@@ -255,6 +280,20 @@ fn plot_figures(id: &str, listed: &[Listed], step: Option<usize>) -> Markup {
     }
 }
 
+/// The plots drawn into the page (`drawn`: each one's name and `data:` URI).
+fn drawn_figures(listed: &[Listed], drawn: &[(String, String)]) -> Markup {
+    let uri = |p: &Listed| drawn.iter().find(|(name, _)| *name == p.name).map(|(_, uri)| uri.as_str());
+    html! {
+        @if !drawn.is_empty() {
+            h2 { (tr(i18n::current(), "page-plots")) }
+            div.plots { @for p in listed { @if let Some(src) = uri(p) { figure {
+                img src=(src) alt=(p.title) width="820" height="520";
+                figcaption { (p.title) }
+            } } } }
+        }
+    }
+}
+
 /// The result's scalars (accuracy and warnings shown above), and its long
 /// arrays (pointer and length) left to the CSV: pruned from `result` in
 /// place (a copy would double the memory its read reserved).
@@ -284,16 +323,21 @@ fn prune(v: &mut Value, at: String, long: &mut Vec<(String, usize)>) {
 }
 
 /// The values, each number to four significant figures (in the page's
-/// language) linked to its full value ([`crate::api::parts`]).
-fn value_table(id: &str, values: &[Scalar]) -> Markup {
+/// language) linked to its full value ([`crate::api::parts`]) where the job
+/// `id` is stored.
+fn value_table(id: Option<&str>, values: &[Scalar]) -> Markup {
     let t = |key| tr(i18n::current(), key);
     html! { div.scroll { table {
         thead { tr { th { (t("page-col-quantity")) } th { (t("page-col-value")) } th { (t("page-col-unit")) } } }
         tbody { @for s in values { tr {
             td.ptr { @for (k, part) in s.pointer.trim_start_matches('/').split('/').enumerate() { @if k > 0 { "/" wbr; } (part) } }
-            @if s.value.is_number() {
-                td.num { a href=(format!("/v1/jobs/{id}/result{}", s.pointer)) title=(t("page-full-value")) { (text(&s.value)) } }
-            } @else { td { (text(&s.value)) } }
+            @match (s.value.is_number(), id) {
+                (true, Some(id)) => td.num {
+                    a href=(format!("/v1/jobs/{id}/result{}", s.pointer)) title=(t("page-full-value")) { (text(&s.value)) }
+                },
+                (true, None) => td.num { (text(&s.value)) },
+                _ => td { (text(&s.value)) },
+            }
             td { (s.unit.as_deref().filter(|u| *u != "1").unwrap_or("")) }
         } } }
     } } }

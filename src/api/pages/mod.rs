@@ -8,6 +8,7 @@ pub mod form;
 pub mod job;
 mod layout;
 pub mod signin;
+mod unstored;
 
 use super::AppState;
 use super::templates::builtin;

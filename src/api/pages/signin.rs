@@ -13,34 +13,49 @@ use axum::http::{HeaderMap, StatusCode, header};
 use axum::response::{IntoResponse, Response};
 use bytes::Bytes;
 use maud::{Markup, html};
+use serde::Deserialize;
 use std::collections::HashMap;
+use utoipa::ToSchema;
 
 /// The sign-in form.
 #[utoipa::path(get, path = "/signin", operation_id = "page_signin", tag = "pages",
     params(("next" = Option<String>, Query, description = "The page to go to once signed in (a path of this service; `/` by default)")),
-    responses((status = 200, description = "The form", content_type = "text/html", body = String)))]
+    responses((status = 200, description = "The form", content_type = "text/html", body = String),
+        (status = 400, description = "A query parameter given twice", content_type = "text/html", body = String)))]
 pub async fn form(q: Result<Query<HashMap<String, String>>, QueryRejection>) -> Response {
     let next = q.ok().and_then(|Query(q)| q.get("next").cloned()).unwrap_or_default();
     layout::answer(StatusCode::OK, page(&next, false))
 }
 
+/// The sign-in form's fields.
+#[derive(Deserialize, ToSchema)]
+pub struct SignIn {
+    /// The service's token (`--api-token`).
+    token: String,
+    /// The page to go on to: a path of this service (`/` by default, and for anything else).
+    #[serde(default)]
+    next: String,
+}
+
 /// Signs in: the token from the form, the cookie set, on to `next`.
 #[utoipa::path(post, path = "/signin", operation_id = "signin", tag = "pages",
-    request_body(content = String, content_type = "application/x-www-form-urlencoded",
-        description = "`token=<the service's token>&next=<a path of this service>`"),
+    request_body(content = SignIn, content_type = "application/x-www-form-urlencoded"),
     responses(
-        (status = 303, description = "Signed in: the cookie set (HttpOnly, SameSite=Strict), `Location` the page asked",
+        (status = 303, description = "Signed in (or the service has no token): the cookie set (HttpOnly, SameSite=Strict), `Location` the page asked",
             headers(("Location" = String), ("Set-Cookie" = String))),
+        (status = 400, description = "No `token` field: the form again", content_type = "text/html", body = String),
         (status = 401, description = "Not the service's token: the form again", content_type = "text/html", body = String)))]
 pub async fn sign_in(State(state): State<AppState>, headers: HeaderMap, body: Bytes) -> Response {
-    let fields: HashMap<String, String> = serde_urlencoded::from_bytes(&body).unwrap_or_default();
-    let next = fields.get("next").map_or("", String::as_str);
+    let Ok(SignIn { token, next }) = serde_urlencoded::from_bytes::<SignIn>(&body) else {
+        return layout::answer(StatusCode::BAD_REQUEST, page("", true));
+    };
     if !state.access.has_token() {
-        return to(next);
+        return to(&next);
     }
-    if !fields.get("token").is_some_and(|t| state.access.is_token(t)) {
-        return layout::answer(StatusCode::UNAUTHORIZED, page(next, true));
+    if !state.access.is_token(&token) {
+        return layout::answer(StatusCode::UNAUTHORIZED, page(&next, true));
     }
+    let next = next.as_str();
     let mut response = to(next);
     if let Some(cookie) = state.access.sign_in_cookie(over_https(&headers)) {
         response.headers_mut().insert(header::SET_COOKIE, cookie);

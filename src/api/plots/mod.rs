@@ -11,10 +11,11 @@
 //! irregularity, I the flywheel's constant inertia, T₀ the kinetic energy at
 //! φ = 0.
 
-mod animate;
+pub mod animate;
 pub mod svg;
 
 use super::AppState;
+use super::kind::AnyKind;
 use super::read::{query, result_tree};
 pub use crate::kind::chart::{Chart, Listed};
 use crate::kind::plots::{Job, Options};
@@ -122,20 +123,25 @@ pub async fn render(state: &AppState, id: &str, name: &str, options: Options) ->
     let (row, result, _reserved) = result_tree(state, id).await?;
     let request = serde_json::from_slice::<Value>(&row.request).unwrap_or_default();
     let job = Job { request: &request, result: &result };
-    let kind = state.kinds.find(&row.kind);
-    let chart = match kind {
-        Some(k) => k.plot(&job, name, &options)?,
-        None => None,
-    };
-    let Some(chart) = chart else {
-        let known = kind.map(|k| k.plots(&job)).unwrap_or_default().into_iter().map(|p| p.name).collect();
-        return Err(ApiError::NoPlot { id: id.into(), name: name.into(), known });
-    };
+    let chart = chart(state.kinds.find(&row.kind), &job, (id, name), &options)?;
     let lang = crate::i18n::current();
     tokio::task::spawn_blocking(move || crate::i18n::within_sync(lang, || animate::render(&chart)))
         .await
         .map_err(|e| ApiError::Internal(format!("plot: {e}")))?
         .map_err(ApiError::Internal)
+}
+
+/// The chart of plot `name` of `job` (of `kind`, its id `id`), or the 404
+/// naming the plots it has.
+pub fn chart(kind: Option<&dyn AnyKind>, job: &Job, (id, name): (&str, &str), o: &Options) -> Result<Chart, ApiError> {
+    let chart = match kind {
+        Some(k) => k.plot(job, name, o)?,
+        None => None,
+    };
+    chart.ok_or_else(|| {
+        let known = kind.map(|k| k.plots(job)).unwrap_or_default().into_iter().map(|p| p.name).collect();
+        ApiError::NoPlot { id: id.into(), name: name.into(), known }
+    })
 }
 
 /// The plots a stored job has, and the job's row.
