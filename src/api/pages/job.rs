@@ -114,7 +114,7 @@ pub fn page(
     let t = |key| tr(lang, key);
     let body = html! {
         h1 { (title(row, &named)) }
-        (meta(row))
+        (meta(row, stored))
         @if stored { ul.links.noprint {
             li { a href=(format!("/v1/jobs/{id}")) { "JSON" } }
             li { a href=(format!("/v1/jobs/{id}/result.csv")) { (t("page-csv-table")) } }
@@ -148,7 +148,7 @@ fn not_done(row: &JobRow, named: &str) -> Markup {
     let lang = i18n::current();
     let body = html! {
         h1 { (title(row, named)) }
-        (meta(row))
+        (meta(row, true))
         @match &problem {
             Some(p) => {
                 h2 { (Msg::new("page-failed").arg("title", &p.title).render(lang)) }
@@ -163,11 +163,12 @@ fn not_done(row: &JobRow, named: &str) -> Markup {
     layout::page(&title(row, named), body)
 }
 
-/// What a job is: its id, when, its label, the engine's version.
-fn meta(row: &JobRow) -> Markup {
+/// The job's id (where it is `stored`), when it was computed, its label, the engine.
+fn meta(row: &JobRow, stored: bool) -> Markup {
     let t = |key| tr(i18n::current(), key);
     html! {
-        p.meta { (t("page-job")) " " span.id { (row.id) } " · " (t("page-created")) " " (when(&row.created_at)) " UTC"
+        p.meta { @if stored { (t("page-job")) " " span.id { (row.id) } " · " }
+            (t("page-created")) " " (when(&row.created_at)) " UTC"
             @if let Some(l) = &row.label { " · " (t("page-label")) " " strong { (plots::svg::clean(l)) } }
             " · " (t("page-engine")) " " (row.engine_version) }
     }
