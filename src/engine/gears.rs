@@ -9,7 +9,13 @@
 //! e_T = R_T·[e_A/R_A + 2(inv φ_A − inv φ_T)],   R_A cos φ_A = R_T cos φ_T,
 //! ```
 //!
-//! with e_A = πm/2 at the pitch circle.
+//! with e_A = πm/2 at the pitch circle. An internal gear's (a ring's) tooth
+//! is the space of the external gear of the same z and m, so on that circle
+//! it is the circular pitch less e_T:
+//!
+//! ```text
+//! e_T,ring = 2π·R_T/z − e_T = 2R_T·(π/(2z) − inv φ_A + inv φ_T).
+//! ```
 
 use std::f64::consts::PI;
 
@@ -68,7 +74,8 @@ impl Gear {
         }
         let phi_t = cos_t.acos();
         let e_a = PI * self.module / 2.0;
-        let thickness = radius * (e_a / r.pitch + 2.0 * (involute(self.pressure_angle) - involute(phi_t)));
+        let external = radius * (e_a / r.pitch + 2.0 * (involute(self.pressure_angle) - involute(phi_t)));
+        let thickness = if self.internal { 2.0 * PI * radius / self.teeth - external } else { external };
         Some(Thickness { radius, pressure_angle: phi_t, thickness })
     }
 }
@@ -91,5 +98,34 @@ mod tests {
         let t = g.thickness_at(g.radii().pitch).unwrap();
         assert!((t.thickness - PI * 0.002).abs() < 1e-15);
         assert!(g.thickness_at(0.9 * g.radii().base).is_none());
+        let ring = Gear { internal: true, ..g };
+        assert!((ring.thickness_at(g.radii().pitch).unwrap().thickness - PI * 0.002).abs() < 1e-15);
+    }
+
+    /// A ring's tooth is thinnest at its tip (inside the pitch circle) and
+    /// thickens toward its root, where an external tooth does the reverse;
+    /// the two add up to the circular pitch on every circle (identity).
+    #[test]
+    fn a_rings_tooth_is_the_external_gears_space() {
+        let g = Gear {
+            module: 0.002,
+            teeth: 72.0,
+            pressure_angle: 20f64.to_radians(),
+            addendum: 1.0,
+            dedendum: 1.25,
+            internal: false,
+        };
+        let ring = Gear { internal: true, ..g };
+        let (tip, root) = (ring.radii().tip, ring.radii().root);
+        let at = |gear: &Gear, r: f64| gear.thickness_at(r).unwrap().thickness;
+        assert!(
+            at(&ring, tip) < at(&ring, root),
+            "ring: {} at the tip, {} at the root",
+            at(&ring, tip),
+            at(&ring, root)
+        );
+        for r in [tip, 0.072, root] {
+            assert!((at(&ring, r) + at(&g, r) - 2.0 * PI * r / 72.0).abs() < 1e-15);
+        }
     }
 }

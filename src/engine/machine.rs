@@ -16,6 +16,7 @@ use super::kinematics::{Conditions, Workspace, sweep};
 use super::kinetostatics::{Load, applied_forces};
 use super::model::Mechanism;
 use super::{Deadline, EngineError};
+use std::f64::consts::PI;
 use std::sync::{Arc, Mutex};
 
 /// Anchor configurations per period.
@@ -95,11 +96,22 @@ impl Machine {
         }
         let positions: Vec<Vec<[f64; 3]>> =
             (0..ANCHORS).map(|k| vec![[period * k as f64 / ANCHORS as f64, 1.0, 0.0]]).collect();
-        let anchors = sweep(&mechanism, &positions, &deadline, Conditions::Scaled)?
+        let configurations = sweep(&mechanism, &positions, &deadline, Conditions::Scaled)?;
+        let passed: Vec<bool> = configurations.iter().map(|c| !c.singular).collect();
+        let anchors: Vec<Anchor> = configurations
             .into_iter()
             .zip(&positions)
             .map(|(c, p)| Anchor { phi: p[0][0], q: c.q, g: c.qd, h: c.qdd })
             .collect();
+        // A position it cannot pass (Φ_q singular there, or a point running
+        // out to infinity between two anchors and back from the other side):
+        // I* and M* are not finite there.
+        let mut impassable: Vec<f64> = anchors.iter().zip(&passed).filter(|(_, p)| !**p).map(|(a, _)| a.phi).collect();
+        impassable.extend(jumps(&anchors, &passed, mechanism.n_body_coordinates()));
+        impassable.sort_by(f64::total_cmp);
+        if let Some(&input) = impassable.first() {
+            return Err(EngineError::SingularCycle { input, count: impassable.len() });
+        }
         Ok(Self { mechanism, loads, speed, period, anchors, last: Mutex::new(None), deadline })
     }
 
@@ -186,6 +198,39 @@ impl Machine {
         let torque = g.iter().zip(qv.iter()).map(|(a, b)| a * b).sum();
         Some([inertia, slope, torque])
     }
+}
+
+/// The inputs halfway between two anchors where a body coordinate jumps: its step
+/// to the next anchor off the trapezoid rule's, q_{k+1} − q_k ≈ (g_k +
+/// g_{k+1})·Δφ/2, by more than half the larger of the two (a smooth motion
+/// is off by ~Δφ²·q‴/(12 q′) of it, 1e-4 here) and by more than a millionth
+/// of its largest step and a billionth of the mechanism's size (rounding, a
+/// coordinate that does not move); angles modulo 2π. A point running out to
+/// infinity between two anchors comes back from the other side (y = d·tan φ:
+/// both slopes huge and positive, the step negative). Pairs with a singular
+/// anchor (not `passed`, its slopes unknown) are left to it.
+fn jumps(anchors: &[Anchor], passed: &[bool], coordinates: usize) -> Vec<f64> {
+    let wrapped = |c: usize, d: f64| if c % 3 == 2 { (d + PI).rem_euclid(2.0 * PI) - PI } else { d };
+    let step = |k: usize, c: usize| wrapped(c, anchors[k + 1].q[c] - anchors[k].q[c]);
+    let pairs = anchors.len().saturating_sub(1);
+    let largest: Vec<f64> =
+        (0..coordinates).map(|c| (0..pairs).map(|k| step(k, c).abs()).fold(0.0, f64::max)).collect();
+    // The mechanism's size: its farthest centre of mass from the origin.
+    let size =
+        anchors.iter().flat_map(|a| (0..coordinates).filter(|c| c % 3 != 2).map(|c| a.q[c].abs())).fold(0.0, f64::max);
+    (0..pairs)
+        .filter(|&k| passed[k] && passed[k + 1])
+        .filter(|&k| {
+            let (a, b) = (&anchors[k], &anchors[k + 1]);
+            (0..coordinates).any(|c| {
+                let (taken, trapezoid) = (step(k, c), (a.g[c] + b.g[c]) * (b.phi - a.phi) / 2.0);
+                let off = (taken - trapezoid).abs();
+                let floor = 1e-6 * largest[c].max(if c % 3 == 2 { 1e-3 } else { 1e-3 * size });
+                off > 0.5 * taken.abs().max(trapezoid.abs()) && off > floor
+            })
+        })
+        .map(|k| (anchors[k].phi + anchors[k + 1].phi) / 2.0)
+        .collect()
 }
 
 #[cfg(test)]

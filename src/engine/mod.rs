@@ -67,6 +67,13 @@ pub enum EngineError {
         "the mechanism is at a singular position at step {step} (input {input}): the constraint Jacobian loses rank"
     )]
     Singular { step: usize, input: f64 },
+    /// A machine's cycle passes positions it cannot pass (singular, or where
+    /// its configuration jumps): its reduced inertia and torque are not finite there.
+    #[error(
+        "the machine cannot pass {count} position(s) of its cycle, the first at input {input}: the constraint \
+         Jacobian loses rank there or a point runs out to infinity, so I* and M* are not finite over the cycle"
+    )]
+    SingularCycle { input: f64, count: usize },
     /// The inputs do not match the degrees of freedom (a body left free, or inputs that conflict).
     #[error(
         "the mechanism has {dof} degree(s) of freedom but {inputs} input(s): give one input per degree of \

@@ -357,6 +357,7 @@ pub fn engine_error(e: crate::engine::EngineError, fallback: &str) -> FieldError
         E::NotSteady { .. }
         | E::NewtonDiverged { .. }
         | E::Singular { .. }
+        | E::SingularCycle { .. }
         | E::FrictionDiverged { .. }
         | E::DofMismatch { .. }
         | E::Unactuated { .. }

@@ -25,6 +25,9 @@ pub fn engine_msg(e: &EngineError) -> Msg {
             .num("residual", round_sig(*residual, 2)),
         EngineError::Locked { grubler } => Msg::new("mechanism-locked").arg("grubler", grubler),
         EngineError::Singular { step, input } => Msg::new("mechanism-singular").arg("step", step).num("input", *input),
+        EngineError::SingularCycle { input, count } => {
+            Msg::new("mechanism-singular-cycle").num("input", *input).count("count", *count)
+        }
         EngineError::DofMismatch { dof, inputs } => {
             Msg::new("mechanism-dof").count("dof", *dof).count("inputs", *inputs)
         }

@@ -37,6 +37,7 @@ mod guide;
 mod haproxy;
 mod hard_accuracy;
 mod hard_cases;
+mod hard_cases_3;
 mod hard_contacts;
 mod helpers;
 mod hostile;

@@ -21,6 +21,10 @@ mechanism-not-steady = the cycle is not in steady state: the net work of the tor
 mechanism-newton = the mechanism cannot be assembled at input { $input } (step { $step }): the loop through { $joint } does not close (Newton-Raphson stopped { $residual } short; e.g. a non-Grashof crank asked for a full turn)
 mechanism-locked = the mechanism is locked: its joints leave it no degree of freedom (0 by the rank of the joint Jacobian; Grübler's count 3(N - 1) - 2 P_I - P_II = { $grubler }), so no input can move it; remove a joint or make one a slider
 mechanism-singular = the mechanism is at a singular position at step { $step } (input { $input }): the constraint Jacobian loses rank
+mechanism-singular-cycle = the machine cannot pass { $count } { $count ->
+    [one] position
+   *[other] positions
+    } of its cycle, the first at input { $input }: the mechanism is singular there, or a point runs out to infinity (a slot on the wrong body makes y = d·tan φ), so its reduced inertia I* and torque M* are not finite over the cycle and no flywheel can be sized for it
 mechanism-dof = the mechanism has { $dof } degree(s) of freedom but { $inputs } input(s): give one input per degree of freedom (a body with too few joints moves freely; too many inputs conflict)
 mechanism-friction = joint friction does not settle at input { $input } (step { $step }): the friction coefficients are too large for the mechanism to be driven there (self-locking)
 mechanism-unactuated = the actuator(s) { $actuators } cannot drive the inputs at input { $input } (step { $step }): moving the inputs does not move them (their effort would be carried by the joints); choose an actuator the input's motion moves

@@ -21,6 +21,10 @@ mechanism-not-steady = el ciclo no es estacionario: el trabajo neto de los pares
 mechanism-newton = el mecanismo no se puede montar en la entrada { $input } (paso { $step }): el lazo que pasa por { $joint } no cierra (Newton-Raphson se detuvo a { $residual } de cerrarlo; p. ej. una manivela que no cumple Grashof a la que se pide una vuelta completa)
 mechanism-locked = el mecanismo está bloqueado: sus pares cinemáticos no le dejan ningún grado de libertad (0 por el rango del jacobiano de los pares; el recuento de Grübler 3(N - 1) - 2 P_I - P_II = { $grubler }), así que ninguna entrada puede moverlo; quite un par cinemático o convierta uno en deslizadera
 mechanism-singular = el mecanismo está en una posición singular en el paso { $step } (entrada { $input }): el jacobiano de las restricciones pierde rango
+mechanism-singular-cycle = la máquina no puede pasar { $count } { $count ->
+    [one] posición
+   *[other] posiciones
+    } de su ciclo, la primera en la entrada { $input }: el mecanismo es singular ahí, o un punto se va al infinito (una ranura en el cuerpo equivocado da y = d·tg φ), así que su inercia reducida I* y su par reducido M* no son finitos en el ciclo y no puede dimensionarse un volante para ella
 mechanism-dof =
     el mecanismo tiene { $dof ->
         [one] 1 grado de libertad

@@ -52,7 +52,8 @@ pub struct GearResult {
     pub thickness_radius: f64,
     /// Pressure angle of the involute at `thickness_radius`.
     pub thickness_pressure_angle: f64,
-    /// e_T = R_T[e_A/R_A + 2(inv φ_A − inv φ_T)].
+    /// The tooth's arc on the circle of `thickness_radius`: e_T = R_T[e_A/R_A + 2(inv φ_A − inv φ_T)];
+    /// a ring's tooth is the space between those teeth, 2πR_T/z − e_T.
     pub thickness: f64,
     #[serde(flatten)]
     pub notes: Notes,

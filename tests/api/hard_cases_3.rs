@@ -1,0 +1,81 @@
+//! The hard cases, round three (issue 71): requests once answered with a
+//! confident wrong number, or refused though valid, each checked against
+//! an independent reference (a closed form evaluated in mpmath at 30
+//! digits, or a second method), with other numbers than the issue's.
+
+use crate::helpers::TestApp;
+use serde_json::json;
+
+/// A ring's (internal gear's) tooth at its tip circle is
+/// 2R(π/(2z) − inv α + inv α_R): thin there, thick toward its root. Before,
+/// the service gave the external gear's tooth there, the ring's space.
+/// m = 2.5 mm, z = 84, α = 20°: at the tip (R = 102.5 mm) 2.232351 mm, at
+/// the root (R = 108.125 mm) 6.625936 mm (mpmath, 30 digits).
+#[tokio::test]
+async fn a_rings_tooth_is_thin_at_its_tip_and_thick_at_its_root() {
+    let app = TestApp::new().await;
+    for (radius, expected) in [(None, 2.232_350_621_150_456e-3), (Some("108.125 mm"), 6.625_936_411_015_134e-3)] {
+        let mut body = json!({"module": "2.5 mm", "teeth": 84, "internal": true});
+        if let Some(r) = radius {
+            body["radius"] = json!(r);
+        }
+        let r = app.post("/v1/gears/geometry", &body).await;
+        let e = r.json()["result"]["thickness"].as_f64().unwrap_or_else(|| panic!("{}", r.text));
+        assert!((e - expected).abs() < 1e-12, "{radius:?}: {e} against {expected}");
+    }
+}
+
+/// A pin-in-slot mechanism with the slot on the crank and the pin on a
+/// slider (the two bodies of a Scotch yoke swapped): y = d·tan φ, infinite
+/// where the crank lies along the slider's line. As a flywheel's machine it
+/// is refused, naming where (d = 0.12 m; the line at 90° puts the pole on a
+/// grid position, at 93.7° between two); the Scotch yoke itself is answered.
+/// Before, 201 with a balance torque of 1e32 N·m and no warning.
+#[tokio::test]
+async fn a_flywheel_for_a_machine_that_cannot_pass_a_position_is_refused() {
+    let app = TestApp::new().await;
+    let machine = |slot: [&str; 2], line_deg: f64| {
+        let axis = [line_deg.to_radians().cos(), line_deg.to_radians().sin()];
+        json!({
+            "mean_speed": "200 rpm", "irregularity": 0.05,
+            "machine": {
+                "mechanism": {
+                    "points": {"O": [0, 0], "A": [0.12, 0]},
+                    "bodies": [
+                        {"name": "crank", "mass": 1.5, "inertia": 0.02, "cg": "O"},
+                        {"name": "slider", "mass": 4, "inertia": 0.1, "cg": "A"}
+                    ],
+                    "joints": [
+                        {"name": "O", "type": "revolute", "bodies": ["ground", "crank"], "at": "O"},
+                        {"name": "line", "type": "prismatic", "bodies": ["ground", "slider"], "at": "A", "axis": axis},
+                        {"name": "pin", "type": "pin_slot", "bodies": slot, "at": "A", "axis": [1, 0]}
+                    ]
+                },
+                "input": {"joint": "O"},
+                "loads": [{"type": "force", "body": "slider", "at": "A", "direction": axis, "magnitude": "-80 N"}]
+            },
+            "torques": [{"name": "motor", "balance": true}]
+        })
+    };
+    for line in [90.0f64, 93.7] {
+        let r = app.post("/v1/flywheel", &machine(["crank", "slider"], line)).await;
+        assert_eq!(r.status, 422, "line at {line}°: {}", r.text);
+        let e = &r.json()["errors"][0];
+        assert_eq!(e["pointer"], "/machine", "{}", r.text);
+        let said = e["message"].as_str().unwrap();
+        let first: f64 = said.split("the first at input ").nth(1).unwrap().split(':').next().unwrap().parse().unwrap();
+        // The pole: the crank along the line (tolerance: half the 1° grid).
+        assert!((first.to_degrees() - line).abs() <= 0.5 + 1e-9, "{said}");
+    }
+    // The slot on the slider, the pin on the crank: a Scotch yoke, y = d·sin φ,
+    // passable; its axis written as cos 90° (6e-17) too. M* = −F·d·cos φ, so
+    // ΔE = 2F·d and I ≈ ΔE/(ε ω²) (closed form), to 1e-9.
+    let omega = 200.0 * std::f64::consts::PI / 30.0;
+    let expected = 2.0 * 80.0 * 0.12 / (0.05 * omega * omega);
+    for line in [90.0, 90.0 + 1e-15] {
+        let yoke = app.post("/v1/flywheel", &machine(["slider", "crank"], line)).await;
+        assert_eq!(yoke.status, 201, "{}", yoke.text);
+        let inertia = yoke.json()["result"]["inertia_approximate"].as_f64().unwrap();
+        assert!((inertia - expected).abs() <= 1e-9 * expected, "{inertia} against {expected}");
+    }
+}
