@@ -79,3 +79,33 @@ async fn a_flywheel_for_a_machine_that_cannot_pass_a_position_is_refused() {
         assert!((inertia - expected).abs() <= 1e-9 * expected, "{inertia} against {expected}");
     }
 }
+
+/// A roller of R = 50 mm on the four-lobed cam ρ = 0.06 + 0.007·cos 4ψ,
+/// whose hollows are concave with a radius of 47.6 mm: the roller bridges
+/// each hollow, its centre at every step on the outer envelope — where it
+/// clears the whole cam (the reference of `hard_contacts`, from the curves'
+/// formulas, to 1e-9 m) — and the jumps are said. Before, a 45 mm roller on
+/// such a cam was carried by the tangency to the cam's far side for half
+/// the turn (its centre at −y), with only a negative normal force said.
+#[tokio::test]
+async fn a_roller_wider_than_a_hollow_stays_on_the_outer_envelope() {
+    use crate::hard_contacts::{follower_steps, maximum, polar_cam};
+    use std::f64::consts::FRAC_PI_2;
+    let app = TestApp::new().await;
+    let (a, b, r) = (0.06, 0.007, 0.05);
+    let roller = json!({"circle": {"center": "F", "radius": r}});
+    let result = app.result("/v1/kinetostatics", &polar_cam(a, b, 4, roller, [0.0, a + b + r])).await;
+    let rho = |psi: f64| a + b * (4.0 * psi).cos();
+    for (theta, y, contact) in follower_steps(&result) {
+        let clear = |psi: f64| {
+            let (s, c) = (psi + FRAC_PI_2 + theta).sin_cos();
+            let (x, py) = (rho(psi) * c, rho(psi) * s);
+            if x.abs() <= r { py + (r * r - x * x).sqrt() } else { f64::NEG_INFINITY }
+        };
+        let centre = maximum(clear);
+        assert!((y - centre).abs() < 1e-9, "θ = {:.1}°: roller at {y}, envelope at {centre}", theta.to_degrees());
+        assert!(contact["penetration"].is_null(), "{contact}");
+    }
+    let warnings = result["warnings"].to_string();
+    assert!(warnings.contains("jumped") && !warnings.contains("negative"), "{warnings}");
+}

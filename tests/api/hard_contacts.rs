@@ -20,7 +20,7 @@ use serde_json::{Value, json};
 use std::f64::consts::{FRAC_PI_2, TAU};
 
 /// max over ψ of f by a scan of 7200 angles and golden section round the best.
-fn maximum(f: impl Fn(f64) -> f64) -> f64 {
+pub fn maximum(f: impl Fn(f64) -> f64) -> f64 {
     let n = 7200;
     let h = TAU / n as f64;
     let best = (0..n).map(|k| k as f64 * h).max_by(|a, b| f(*a).total_cmp(&f(*b))).unwrap();
@@ -37,7 +37,7 @@ fn maximum(f: impl Fn(f64) -> f64) -> f64 {
 /// polar cam ρ = a + b·cos(nψ) about O, drawn from +y, its follower's
 /// contact curve `follower` touching the cam's top at (0, a + b), no
 /// friction, 72 steps of 5°.
-fn polar_cam(a: f64, b: f64, n: u32, follower: Value, touch: [f64; 2]) -> Value {
+pub fn polar_cam(a: f64, b: f64, n: u32, follower: Value, touch: [f64; 2]) -> Value {
     let mut body = template_request("cam-flat-follower");
     let m = &mut body["mechanism"];
     m["points"]["F"] = json!(touch);
@@ -50,7 +50,7 @@ fn polar_cam(a: f64, b: f64, n: u32, follower: Value, touch: [f64; 2]) -> Value 
 }
 
 /// Each step's (θ, the follower's y, its contact).
-fn follower_steps(result: &Value) -> Vec<(f64, f64, Value)> {
+pub fn follower_steps(result: &Value) -> Vec<(f64, f64, Value)> {
     let steps = result["steps"].as_array().unwrap();
     let y =
         |s: &Value| s["kinematics"].as_array().unwrap().iter().find(|b| b["body"] == "follower").unwrap()["y"].as_f64();

@@ -31,12 +31,16 @@
 use super::Workspace;
 use crate::engine::curves::{Curve, Domain};
 use crate::engine::model::{BodyId, JointKind, Mechanism, dot, perp, rotate};
-use std::f64::consts::TAU;
+use std::f64::consts::{PI, TAU};
 
 /// Samples of a profile (a whole period, or an open curve end to end).
 const SAMPLES: usize = 1024;
 /// New contacts tried per position before the least cut one is kept.
 const ROUNDS: usize = 4;
+/// A q this far from the continuation's prediction ([`strayed`]) is checked
+/// against the prediction's own contact: a smooth step strays ~Δφ²·q″/2,
+/// under 1 % of the mechanism at the steps a sweep takes.
+const STRAYED: f64 = 0.05;
 
 /// The contacts to check, set up once per sweep.
 pub(super) struct Cuts {
@@ -90,8 +94,12 @@ impl Cuts {
     /// point and assembled again, up to [`ROUNDS`] times, from Newton's q
     /// and then from the continuation's `predicted` q (where the tool has
     /// not yet been carried across a fold: the flank it is to rest on cuts
-    /// into it there). The least cut q is kept, Newton's (iterations, |Φ|∞)
-    /// there in `assembled` and Φ_q there in `ws`.
+    /// into it there). Newton's q clear of every cut but far from the
+    /// prediction (a roller that bridged a hollow and was carried by the
+    /// tangency to the cam's far side: clear there, yet no follower moves
+    /// so) is tried against the prediction's own contact too. Kept: of the
+    /// q clear of every cut, the nearest the prediction; else the least cut
+    /// — Newton's (iterations, |Φ|∞) there in `assembled` and Φ_q there in `ws`.
     pub fn settle(
         &self,
         m: &Mechanism,
@@ -102,32 +110,43 @@ impl Cuts {
     ) -> Settled {
         let mut out = Settled::default();
         let depth = |q: &[f64]| self.worst(m, q).map_or(0.0, |w| w.2);
+        let away = |x: &[f64]| predicted.map_or(0.0, |p| strayed(m, x, p));
         let first = depth(q);
-        if first <= self.tolerance {
+        if first <= self.tolerance && away(q) <= STRAYED {
             return out;
         }
-        // The least cut q so far: its depth, q, Newton's figures, the watches moved to reach it.
-        let mut best = (first, q.clone(), *assembled, Vec::new());
-        for start in std::iter::once(&q[..]).chain(predicted) {
+        // The best q so far: its depth, distance from the prediction, q, Newton's figures, the watches moved.
+        let mut best = (first, away(q), q.clone(), *assembled, Vec::new());
+        let starts = (first > self.tolerance).then_some(&q[..]).into_iter().chain(predicted);
+        for (k, start) in starts.enumerate() {
             let (mut x, mut path) = (start.to_vec(), Vec::new());
-            for _ in 0..ROUNDS {
-                let Some((w, u, d)) = self.worst(m, &x).filter(|&(w, ..)| !self.watches[w].rolling) else { break };
-                if d <= self.tolerance {
-                    break;
+            for round in 0..=ROUNDS {
+                match self.worst(m, &x).filter(|&(w, ..)| !self.watches[w].rolling) {
+                    Some((w, u, d)) if d > self.tolerance && round < ROUNDS => {
+                        self.watches[w].move_to(m, &mut x, u);
+                        path.push(w);
+                    }
+                    // The prediction clear of every cut: each contact moved to
+                    // the profile's point nearest its tool (the prediction's
+                    // curve parameters can be far off where the contact
+                    // sped along the profile) and assembled from there.
+                    _ if round == 0 && (k > 0 || first <= self.tolerance) => {
+                        for (k, w) in self.watches.iter().enumerate().filter(|(_, w)| !w.rolling) {
+                            let u = w.nearest(m, &x);
+                            w.move_to(m, &mut x, u);
+                            path.push(k);
+                        }
+                    }
+                    _ => break,
                 }
-                self.watches[w].move_to(m, &mut x, u);
                 let Ok(newton) = ws.assemble(m, &mut x, inputs, step) else { break };
-                path.push(w);
-                let now = depth(&x);
-                if now < best.0 {
-                    best = (now, x.clone(), newton, path.clone());
+                let found = (depth(&x), away(&x), x.clone(), newton, path.clone());
+                if better((found.0, found.1), (best.0, best.1), self.tolerance) {
+                    best = found;
                 }
-            }
-            if best.0 <= self.tolerance {
-                break;
             }
         }
-        let (_, kept, newton, moved) = best;
+        let (_, _, kept, newton, moved) = best;
         // Φ and Φ_q at the q kept (Newton, converged there, stops at once).
         q.clone_from(&kept);
         let _ = ws.assemble(m, q, inputs, step);
@@ -147,6 +166,29 @@ impl Cuts {
         (self.watches.iter().enumerate())
             .filter_map(|(k, w)| w.depth(m, q).map(|(u, d)| (k, u, d)))
             .max_by(|a, b| a.2.total_cmp(&b.2))
+    }
+}
+
+/// How far q strayed from the prediction p: the largest move of a body's
+/// centre over the mechanism's size, or of its angle in radians.
+fn strayed(m: &Mechanism, q: &[f64], p: &[f64]) -> f64 {
+    let size = m.size().max(f64::MIN_POSITIVE);
+    (0..m.n_body_coordinates())
+        .map(|c| {
+            let d = q[c] - p[c];
+            if c % 3 == 2 { (d + PI).rem_euclid(TAU) - PI } else { d / size }.abs()
+        })
+        .fold(0.0, f64::max)
+}
+
+/// Whether (depth, strayed) `a` is better than `b`: clear of every cut
+/// (within `tolerance`) before cut, then the nearer the prediction; both
+/// cut, the shallower.
+fn better(a: (f64, f64), b: (f64, f64), tolerance: f64) -> bool {
+    match (a.0 <= tolerance, b.0 <= tolerance) {
+        (true, true) => a.1 < b.1,
+        (clear, other) if clear != other => clear,
+        _ => a.0 < b.0,
     }
 }
 
@@ -307,6 +349,14 @@ impl Watch {
             return Some((self.samples[k].0, r + least));
         }
         worst
+    }
+
+    /// The profile's parameter nearest the tool at q (largest δ, refined).
+    fn nearest(&self, m: &Mechanism, q: &[f64]) -> f64 {
+        let (at_sample, along) = self.depth_fn(m, q);
+        let (k, best) = (self.samples.iter().map(|(_, s)| at_sample(*s)).enumerate())
+            .fold((0, f64::NEG_INFINITY), |a, (k, d)| if d > a.1 { (k, d) } else { a });
+        self.refine(k, &along, best).0
     }
 
     /// Newton on δ′(u) = 0 from sample k, kept between its neighbours'
