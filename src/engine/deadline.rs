@@ -103,6 +103,11 @@ impl Deadline {
         self.budget.map_or(f64::INFINITY, |b| b.as_secs_f64())
     }
 
+    /// Seconds since the budget's start.
+    pub fn elapsed(&self) -> f64 {
+        self.start.elapsed().as_secs_f64()
+    }
+
     pub fn expired(&self) -> bool {
         self.budget.is_some_and(|b| self.start.elapsed() > b)
     }

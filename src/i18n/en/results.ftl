@@ -129,3 +129,9 @@ warning-equivalent-not-unique = the points do not determine the masses; the smal
 accuracy-balancing-static = static balancing in one plane: the correction C₁ = −U cancels the static unbalance U = Σ m·r·e^(iθ); the couple is left; closed form
 accuracy-balancing-dynamic = dynamic balancing in two planes: C₁ + C₂ = −U and (z₂ − z₁)·C₂ = −D(z₁), D(z₁) = Σ m·r·(z − z₁)·e^(iθ); closed form
 warning-balancing-couple-left = one correction plane removes the static unbalance only: a dynamic unbalance of { $couple } kg·m² is left (give two planes to remove it)
+accuracy-global-made = a bound of the global error: 1.5 times the largest difference of the angle over the samples from the same run at a tolerance a hundred times tighter (global_error), or the summed local error estimates where larger
+accuracy-global-none = the summed local error estimates, which ignore how errors grow along the motion (a chaotic or long run can be far more off): no run at a tolerance a hundred times tighter was made, as { $why }
+accuracy-global-to-angle = the run ends at an angle, at another instant each time
+accuracy-global-floor = the tolerance is already near the limit of double precision
+accuracy-global-budget = the run took over a quarter of the compute budget (raise --job-seconds, or shorten the run)
+accuracy-global-failed = the tighter run failed or stopped elsewhere

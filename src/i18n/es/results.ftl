@@ -141,3 +141,9 @@ warning-equivalent-not-unique = los puntos no determinan las masas; se da el con
 accuracy-balancing-static = equilibrado estático en un plano: la corrección C₁ = −U anula el desequilibrio estático U = Σ m·r·e^(iθ); el par queda; forma cerrada
 accuracy-balancing-dynamic = equilibrado dinámico en dos planos: C₁ + C₂ = −U y (z₂ − z₁)·C₂ = −D(z₁), D(z₁) = Σ m·r·(z − z₁)·e^(iθ); forma cerrada
 warning-balancing-couple-left = un solo plano de corrección elimina solo el desequilibrio estático: queda un desequilibrio dinámico de { $couple } kg·m² (da dos planos para eliminarlo)
+accuracy-global-made = una cota del error global: 1,5 veces la mayor diferencia del ángulo en las muestras respecto al mismo cálculo con una tolerancia cien veces menor (global_error), o la suma de los errores locales estimados si es mayor
+accuracy-global-none = la suma de los errores locales estimados, que no tiene en cuenta cómo crecen los errores a lo largo del movimiento (un movimiento caótico o largo puede estar mucho más lejos): no se hizo el cálculo con una tolerancia cien veces menor, porque { $why }
+accuracy-global-to-angle = el cálculo termina en un ángulo, en otro instante cada vez
+accuracy-global-floor = la tolerancia ya está cerca del límite de la doble precisión
+accuracy-global-budget = el cálculo llevó más de la cuarta parte del presupuesto de cálculo (suba --job-seconds o acorte el movimiento)
+accuracy-global-failed = el cálculo más estricto falló o se detuvo en otro punto

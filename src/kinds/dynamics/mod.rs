@@ -1,6 +1,7 @@
 //! `POST /v1/dynamics`: the motion of a machine under given actions, in
 //! reduced form (1 DOF) or as a mechanism (any DOF, see [`machine`]).
 
+mod global;
 mod machine;
 mod plots;
 mod refused;
@@ -8,8 +9,8 @@ mod request;
 mod result;
 mod size;
 
-use crate::engine::dynamics::mechanism;
-use crate::engine::dynamics::{Integrator, solve};
+use crate::engine::dynamics::mechanism::{self, MechanismProblem};
+use crate::engine::dynamics::{Integrator, ReducedProblem, solve};
 use crate::i18n::Msg;
 use crate::kind::constants::Constants;
 use crate::kind::limits::Limits;
@@ -257,6 +258,19 @@ impl Kind for Dynamics {
     }
 }
 
+/// The global error found (or why not) in `result`'s accuracy: the bound
+/// `estimated_error` and how it was found.
+fn said_global(result: &mut DynamicsResult, global: &global::Global) {
+    let a = &mut result.accuracy;
+    a.estimated_error = global::bound(a.estimated_error, global);
+    a.global_error = global.as_ref().ok().copied();
+    let msg = match global {
+        Ok(_) => Msg::new("accuracy-global-made"),
+        Err(why) => Msg::new("accuracy-global-none").with("why", Msg::new(why)),
+    };
+    a.error_estimate = result.notes.say("/accuracy/error_estimate", msg);
+}
+
 /// Validates and solves a request within `limits`, stopping the integration
 /// when the compute budget runs out.
 fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits) -> Result<DynamicsResult, ApiError> {
@@ -265,12 +279,27 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
     match problem {
         Problem::Reduced(p) => {
             let dopri5 = p.integrator.unwrap_or_else(|| Integrator::auto(p.tolerance, true)) == Integrator::Dopri5;
-            Ok(request.in_its_words(DynamicsResult::from(solve(&p).map_err(|e| invalid(e, dopri5))?)))
+            let s = solve(&p).map_err(|e| invalid(e, dopri5))?;
+            let run = (p.tolerance, p.end, p.deadline.elapsed(), p.deadline.seconds());
+            let again =
+                |tolerance| solve(&ReducedProblem { tolerance, deadline: global::deadline(&p.deadline), ..p.clone() });
+            let global = global::estimate(&s, run, again);
+            let mut result = DynamicsResult::from(s);
+            said_global(&mut result, &global);
+            Ok(request.in_its_words(result))
         }
         Problem::Machine(p, report) => {
             let dopri5 = p.integrator.unwrap_or_else(|| Integrator::auto(p.tolerance, false)) == Integrator::Dopri5;
             let s = mechanism::solve(&p).map_err(|e| invalid(e, dopri5))?;
+            let run = (p.tolerance, p.end, p.deadline.elapsed(), p.deadline.seconds());
+            let again = |tolerance| {
+                let deadline = global::deadline(&p.deadline);
+                let tight = MechanismProblem { tolerance, reactions: false, motion: false, deadline, ..p.clone() };
+                mechanism::solve(&tight).map(|s| s.solution)
+            };
+            let global = global::estimate(&s.solution, run, again);
             let mut result = request.in_its_words(DynamicsResult::from(s.solution.clone()));
+            said_global(&mut result, &global);
             for (dto, event) in result.events.iter_mut().zip(&s.solution.events) {
                 dto.joint = event.joint.map(|k| p.mechanism.joints[k].name.clone());
             }
