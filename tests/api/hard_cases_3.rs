@@ -196,3 +196,41 @@ async fn a_chaotic_runs_error_estimate_bounds_its_error() {
         );
     }
 }
+
+/// A pendulum (a point mass on a 0.5 m bar) from hanging, at 3 rad/s,
+/// only swings (it rises to 1 − cos θ = ω²l/(2g)·… well below the top:
+/// 3²·0.5/(2·9.81) = 0.23, θ = 40°): it lists no turn, however often it
+/// crosses 0; at 10 rad/s it goes over the top (10²·0.5/(2·9.81) = 2.5 >
+/// 2) and lists one turn per whole revolution made, floor(φ_end/2π).
+/// Before, every crossing of its start angle was a "turn".
+#[tokio::test]
+async fn a_swing_is_no_turn() {
+    let app = TestApp::new().await;
+    let run = |speed: f64| {
+        json!({
+            "machine": {
+                "mechanism": {
+                    "points": {"O": [0, 0], "A": [0, -0.5]},
+                    "bodies": [{"name": "bob", "mass": 1, "inertia": 0, "cg": "A"}],
+                    "joints": [{"name": "O", "type": "revolute", "bodies": ["ground", "bob"], "at": "O"}],
+                    "gravity": [0, -9.81]
+                },
+                "input": {"body": "bob", "start": 0, "speed": speed}
+            },
+            "duration": "6 s", "samples": 61, "tolerance": 1e-9
+        })
+    };
+    let turns = |r: &serde_json::Value| r["events"].as_array().unwrap().iter().filter(|e| e["kind"] == "turn").count();
+    let swing = app.result("/v1/dynamics", &run(3.0)).await;
+    let crossings = swing["samples"]
+        .as_array()
+        .unwrap()
+        .windows(2)
+        .filter(|w| w[0]["angle"].as_f64().unwrap() * w[1]["angle"].as_f64().unwrap() < 0.0);
+    assert!(crossings.count() >= 8, "it swings across 0 again and again");
+    assert_eq!(turns(&swing), 0, "{}", swing["events"]);
+    let over = app.result("/v1/dynamics", &run(10.0)).await;
+    let end = over["samples"].as_array().unwrap().last().unwrap()["angle"].as_f64().unwrap();
+    assert!(end > 4.0 * std::f64::consts::TAU, "{end}");
+    assert_eq!(turns(&over) as f64, (end / std::f64::consts::TAU).floor(), "{}", over["events"]);
+}

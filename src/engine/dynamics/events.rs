@@ -58,12 +58,19 @@ pub const MAX_TURN_EVENTS: usize = 100_000;
 pub(super) struct Turns {
     pub listed: usize,
     pub unlisted: u64,
+    /// The lowest and highest multiples k of 2π the angle has reached (from
+    /// the start's; empty, lo > hi, where the start is on none).
+    pub reached: Option<(f64, f64)>,
 }
 
-/// Multiples of 2π crossed during the step, in either direction, listed
-/// while the run has listed fewer than [`MAX_TURN_EVENTS`]; the others
-/// counted in `unlisted` (a rotor at 2·10⁶ rad/s crosses millions in a step).
+/// Multiples of 2π crossed during the step for the first time, in either
+/// direction — a whole turn more than the angle had made — listed while the
+/// run has listed fewer than [`MAX_TURN_EVENTS`]; the others counted in
+/// `unlisted` (a rotor at 2·10⁶ rad/s crosses millions in a step). A swing
+/// back and forth across a multiple is no turn: a rocker lists none.
 pub(super) fn turns(model: &impl Model, step: &Step, (a, b): (f64, f64), events: &mut Vec<Event>, tally: &mut Turns) {
+    // The first step starts at the start's angle: the multiples it is on.
+    let (lo, hi) = *tally.reached.get_or_insert(((a / (2.0 * PI)).ceil(), (a / (2.0 * PI)).floor()));
     let (ka, kb) = ((a / (2.0 * PI)).floor(), (b / (2.0 * PI)).floor());
     if !(ka.is_finite() && kb.is_finite()) || ka == kb {
         return;
@@ -74,8 +81,13 @@ pub(super) fn turns(model: &impl Model, step: &Step, (a, b): (f64, f64), events:
         false if 2.0 * PI * ka == a => (ka - 1.0, -1.0),
         false => (ka, -1.0),
     };
+    // Only the multiples beyond those reached: up from hi + 1, down from lo − 1.
+    let first = if dir > 0.0 { first.max(hi + 1.0) } else { first.min(lo - 1.0) };
     // Up: first ..= kb; down: first down to kb + 1.
     let count = if dir > 0.0 { kb - first + 1.0 } else { first - kb }.max(0.0);
+    if count > 0.0 {
+        tally.reached = Some(if dir > 0.0 { (lo, kb) } else { (kb + 1.0, hi) });
+    }
     let shown = count.min(MAX_TURN_EVENTS.saturating_sub(tally.listed) as f64);
     tally.listed += shown as usize;
     tally.unlisted += (count - shown) as u64;

@@ -28,7 +28,7 @@ pub struct SampleDto {
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct EventDto {
-    /// "turn" (a multiple of 2π crossed, either direction), "slip" (a
+    /// "turn" (a multiple of 2π first crossed, either direction: a whole turn; a swing back across one is none), "slip" (a
     /// rolling contact with friction starts to slip, or its slip turns
     /// back), "roll" (a slipping contact rolls again), "separation" (a
     /// contact's normal force fell to 0, or was below 0 at the start: the
