@@ -131,10 +131,10 @@ impl Cuts {
                     // curve parameters can be far off where the contact
                     // sped along the profile) and assembled from there.
                     _ if round == 0 && (k > 0 || first <= self.tolerance) => {
-                        for (k, w) in self.watches.iter().enumerate().filter(|(_, w)| !w.rolling) {
+                        for (j, w) in self.watches.iter().enumerate().filter(|(_, w)| !w.rolling) {
                             let u = w.nearest(m, &x);
                             w.move_to(m, &mut x, u);
-                            path.push(k);
+                            path.push(j);
                         }
                     }
                     _ => break,
