@@ -89,20 +89,14 @@ async fn a_flywheel_for_a_machine_that_cannot_pass_a_position_is_refused() {
 /// the turn (its centre at −y), with only a negative normal force said.
 #[tokio::test]
 async fn a_roller_wider_than_a_hollow_stays_on_the_outer_envelope() {
-    use crate::hard_contacts::{follower_steps, maximum, polar_cam};
-    use std::f64::consts::FRAC_PI_2;
+    use crate::hard_contacts::{follower_steps, polar_cam, roller_centre};
     let app = TestApp::new().await;
     let (a, b, r) = (0.06, 0.007, 0.05);
     let roller = json!({"circle": {"center": "F", "radius": r}});
     let result = app.result("/v1/kinetostatics", &polar_cam(a, b, 4, roller, [0.0, a + b + r])).await;
     let rho = |psi: f64| a + b * (4.0 * psi).cos();
     for (theta, y, contact) in follower_steps(&result) {
-        let clear = |psi: f64| {
-            let (s, c) = (psi + FRAC_PI_2 + theta).sin_cos();
-            let (x, py) = (rho(psi) * c, rho(psi) * s);
-            if x.abs() <= r { py + (r * r - x * x).sqrt() } else { f64::NEG_INFINITY }
-        };
-        let centre = maximum(clear);
+        let centre = roller_centre(rho, r, theta);
         assert!((y - centre).abs() < 1e-9, "θ = {:.1}°: roller at {y}, envelope at {centre}", theta.to_degrees());
         assert!(contact["penetration"].is_null(), "{contact}");
     }
@@ -198,10 +192,10 @@ async fn a_chaotic_runs_error_estimate_bounds_its_error() {
 }
 
 /// A pendulum (a point mass on a 0.5 m bar) from hanging, at 3 rad/s,
-/// only swings (it rises to 1 − cos θ = ω²l/(2g)·… well below the top:
-/// 3²·0.5/(2·9.81) = 0.23, θ = 40°): it lists no turn, however often it
-/// crosses 0; at 10 rad/s it goes over the top (10²·0.5/(2·9.81) = 2.5 >
-/// 2) and lists one turn per whole revolution made, floor(φ_end/2π).
+/// only swings (energy: 1 − cos θ_max = lω²/(2g) = 0.5·3²/(2·9.81) = 0.23,
+/// θ_max = 40°): it lists no turn, however often it crosses 0; at 10 rad/s
+/// it goes over the top (0.5·10²/(2·9.81) = 2.55 > 2) and lists one turn
+/// per whole revolution made, floor(φ_end/2π).
 /// Before, every crossing of its start angle was a "turn".
 #[tokio::test]
 async fn a_swing_is_no_turn() {

@@ -49,6 +49,17 @@ pub fn polar_cam(a: f64, b: f64, n: u32, follower: Value, touch: [f64; 2]) -> Va
     body
 }
 
+/// The height of a roller's centre of radius r on a guide through the
+/// cam's centre, the cam ρ(ψ) (drawn from +y) turned by θ: the lowest place
+/// where it clears every point of the profile (the module's second reference).
+pub fn roller_centre(rho: impl Fn(f64) -> f64, r: f64, theta: f64) -> f64 {
+    maximum(|psi: f64| {
+        let (s, c) = (psi + FRAC_PI_2 + theta).sin_cos();
+        let (x, py) = (rho(psi) * c, rho(psi) * s);
+        if x.abs() <= r { py + (r * r - x * x).sqrt() } else { f64::NEG_INFINITY }
+    })
+}
+
 /// Each step's (θ, the follower's y, its contact).
 pub fn follower_steps(result: &Value) -> Vec<(f64, f64, Value)> {
     let steps = result["steps"].as_array().unwrap();
@@ -96,12 +107,7 @@ async fn a_roller_bridges_a_hollow_narrower_than_itself() {
     let result = app.result("/v1/kinetostatics", &polar_cam(0.05, 0.01, 3, roller, [0.0, 0.06 + r])).await;
     let rho = |psi: f64| 0.05 + 0.01 * (3.0 * psi).cos();
     for (theta, y, contact) in follower_steps(&result) {
-        let clear = |psi: f64| {
-            let (s, c) = (psi + FRAC_PI_2 + theta).sin_cos();
-            let (x, py) = (rho(psi) * c, rho(psi) * s);
-            if x.abs() <= r { py + (r * r - x * x).sqrt() } else { f64::NEG_INFINITY }
-        };
-        let centre = maximum(clear);
+        let centre = roller_centre(rho, r, theta);
         assert!((y - centre).abs() < 1e-9, "θ = {:.1}°: roller at {y}, clear at {centre}", theta.to_degrees());
         assert!(contact["penetration"].is_null(), "{contact}");
     }
