@@ -80,12 +80,14 @@ pub enum EngineError {
          freedom (a body with too few joints moves freely; too many inputs conflict)"
     )]
     DofMismatch { dof: usize, inputs: usize },
-    /// The friction iteration did not settle (friction too large for the mechanism to move).
+    /// No finite effort drives the mechanism at this position with the
+    /// given friction (self-locking); it would with every coefficient
+    /// scaled below `limit` (in 0..1).
     #[error(
-        "joint friction does not settle at input {input} (step {step}): the friction coefficients are too large \
-         for the mechanism to be driven there (self-locking)"
+        "no finite effort drives the mechanism at input {input} (step {step}) with this friction (self-locking); \
+         it would move with friction coefficients below {limit} of the given ones"
     )]
-    FrictionDiverged { step: usize, input: f64 },
+    FrictionDiverged { step: usize, input: f64, limit: f64 },
     /// The actuators' efforts do no work on the inputs' motion here: they cannot drive them.
     #[error(
         "the actuator(s) {actuators} cannot drive the inputs at input {input} (step {step}): moving the inputs \

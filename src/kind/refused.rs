@@ -31,8 +31,8 @@ pub fn engine_msg(e: &EngineError) -> Msg {
         EngineError::DofMismatch { dof, inputs } => {
             Msg::new("mechanism-dof").count("dof", *dof).count("inputs", *inputs)
         }
-        EngineError::FrictionDiverged { step, input } => {
-            Msg::new("mechanism-friction").num("input", *input).arg("step", step)
+        EngineError::FrictionDiverged { step, input, limit } => {
+            Msg::new("mechanism-friction").num("input", *input).arg("step", step).written("percent", percent(*limit))
         }
         EngineError::Unactuated { step, input, actuators } => {
             Msg::new("mechanism-unactuated").arg("actuators", actuators).num("input", *input).arg("step", step)
@@ -41,6 +41,12 @@ pub fn engine_msg(e: &EngineError) -> Msg {
         // Answered as a spent budget, never as a field's error.
         EngineError::BudgetExceeded { seconds, progress } => budget_msg(*seconds, progress),
     }
+}
+
+/// A fraction as a percentage to one decimal (`96.0`; `Msg::written`
+/// gives it the language's decimal mark).
+pub fn percent(fraction: f64) -> String {
+    format!("{:.1}", 100.0 * fraction)
 }
 
 /// A spent compute budget: its seconds, and how far the engine had got.

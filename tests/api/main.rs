@@ -69,6 +69,7 @@ mod security;
 mod seed_book;
 mod seed_exams;
 mod seed_templates;
+mod self_locking;
 mod shaking;
 mod sketches;
 mod slipping;

@@ -2,6 +2,7 @@
 //! them (a solve per moving joint with friction), then a fixed point over
 //! scalars ([`friction`]'s symbols).
 
+use super::locking::{self, Pressing};
 use super::multipliers::{Magnitudes, PerUnit, Scratch, driving_actions, multipliers, read_out, solve_transposed};
 use super::reactions::reaction_of;
 use super::{Reaction, friction};
@@ -42,13 +43,27 @@ pub(super) fn with_friction(
     }
     let mut loads = std::mem::take(&mut s.loads);
     unit_reactions(m, c, (&s.offsets, &units), &s.lambda0, &mut s.driving, &mut loads);
-    let coupled = units.len() <= COUPLED_UNITS;
+    let mut coupled = units.len() <= COUPLED_UNITS;
     let mut magnitudes = std::mem::take(&mut s.magnitudes);
     let passes = if coupled {
         linear(m, c, s, (&units, &mut per), &loads, (tol, deadline, &mut magnitudes), at)
     } else {
         iterated(m, c, s, (&units, &per), &loads, (tol, deadline, &mut magnitudes), at)
     };
+    let passes = passes.and_then(|settled| match settled {
+        Ok(passes) => Ok(passes),
+        Err(passes) => {
+            if !coupled {
+                unit_solves(m, c, s, (&units, &mut per), at)?;
+                coupled = true;
+            }
+            let pressing = Pressing { units: &units, loads: &loads, per: &per, sizes: &magnitudes.sizes };
+            match locking::continued(&pressing, &mut magnitudes.f, (tol, deadline, at.0))? {
+                Ok(iterations) => Ok(passes + iterations),
+                Err(limit) => Err(EngineError::FrictionDiverged { step: at.0, input: at.1, limit }),
+            }
+        }
+    });
     s.loads = loads;
     let f = &magnitudes.f;
     let result = passes.and_then(|passes| {
@@ -91,6 +106,21 @@ fn unit_reactions(
     out.extend(units.iter().map(|u| reaction_of(m, (&c.q, &c.trig), efforts, offsets, u.joint)));
 }
 
+/// y_k of every unit (Φ_qᵀ y_k = a_k) and what it presses the joints with.
+fn unit_solves(
+    m: &Mechanism,
+    c: &Configuration,
+    s: &mut Scratch,
+    (units, per): (&[friction::Unit], &mut [PerUnit]),
+    at: (usize, f64),
+) -> Result<(), EngineError> {
+    for p in per.iter_mut() {
+        solve_transposed(c, s.actuated.as_ref(), p.a.iter().copied(), &mut p.y, at)?;
+        unit_reactions(m, c, (&s.offsets, units), &p.y, &mut s.driving, &mut p.reactions);
+    }
+    Ok(())
+}
+
 /// The magnitudes with λ linear in them: y_k and what it presses the joints
 /// with solved once per joint, then f_k = g_k(R_k(λ₀) + Σ_j f_j R_k(y_j))
 /// over scalars.
@@ -101,22 +131,12 @@ fn linear(
     (units, per): (&[friction::Unit], &mut [PerUnit]),
     loads: &[Reaction],
     (tol, deadline, magnitudes): (f64, &Deadline, &mut Magnitudes),
-    (step, input): (usize, f64),
-) -> Result<usize, EngineError> {
-    for p in per.iter_mut() {
-        solve_transposed(c, s.actuated.as_ref(), p.a.iter().copied(), &mut p.y, (step, input))?;
-        unit_reactions(m, c, (&s.offsets, units), &p.y, &mut s.driving, &mut p.reactions);
-    }
-    fixed_point(per, (tol, deadline, magnitudes), (step, input), |f, next| {
-        for (k, unit) in units.iter().enumerate() {
-            let mut r = loads[k];
-            for (p, f) in per.iter().zip(f) {
-                let y = &p.reactions[k];
-                (r.fx, r.fy, r.moment) = (r.fx + f * y.fx, r.fy + f * y.fy, r.moment + f * y.moment);
-                r.ends = r.ends.zip(y.ends).map(|([a, b], [c, d])| [a + f * c, b + f * d]);
-            }
-            next[k] = unit.magnitude(&r);
-        }
+    at: (usize, f64),
+) -> Result<Settled, EngineError> {
+    unit_solves(m, c, s, (units, per), at)?;
+    let pressing = Pressing { units, loads, per, sizes: &[] };
+    fixed_point(per, (tol, deadline, magnitudes), at.0, |f, next| {
+        units.iter().enumerate().for_each(|(k, unit)| next[k] = unit.magnitude(&pressing.on(k, f, 1.0)));
         Ok(())
     })
 }
@@ -131,9 +151,9 @@ fn iterated(
     loads: &[Reaction],
     (tol, deadline, magnitudes): (f64, &Deadline, &mut Magnitudes),
     at: (usize, f64),
-) -> Result<usize, EngineError> {
+) -> Result<Settled, EngineError> {
     let (mut b, mut reactions) = (Vec::new(), Vec::new());
-    fixed_point(per, (tol, deadline, magnitudes), at, |f, next| {
+    fixed_point(per, (tol, deadline, magnitudes), at.0, |f, next| {
         let solved = if f.iter().all(|f| *f == 0.0) {
             loads
         } else {
@@ -152,14 +172,22 @@ fn iterated(
     })
 }
 
+/// Ok(passes) where the fixed point settled, Err(passes) where it does not
+/// contract fast enough to.
+type Settled = Result<usize, usize>;
+
+/// A pass that shrinks the change by less than this hands the magnitudes
+/// to [`locking`] (the passes to 1e-13 would be too many, or diverge).
+const SLOW: f64 = 0.5;
+
 /// f from 0 by `pass` (g(f) into its second argument) until no f_k·|a_k|∞
 /// changes by more than `tol`: f in `magnitudes.f`, and the passes.
 fn fixed_point(
     per: &[PerUnit],
     (tol, deadline, magnitudes): (f64, &Deadline, &mut Magnitudes),
-    (step, input): (usize, f64),
+    step: usize,
     mut pass: impl FnMut(&[f64], &mut [f64]) -> Result<(), EngineError>,
-) -> Result<usize, EngineError> {
+) -> Result<Settled, EngineError> {
     let Magnitudes { f, next, sizes } = magnitudes;
     sizes.clear();
     sizes.extend(per.iter().map(|p| p.a.iter().fold(0.0f64, |a, v| a.max(v.abs()))));
@@ -167,6 +195,7 @@ fn fixed_point(
         v.clear();
         v.resize(per.len(), 0.0);
     }
+    let mut last = f64::INFINITY;
     for passes in 1..=friction::MAX_ITERATIONS {
         // The clock read every 8th pass (most positions take one or two;
         // a read was 1.4 % of the library cam's position).
@@ -178,8 +207,13 @@ fn fixed_point(
             f.iter().zip(next.iter()).zip(sizes.iter()).map(|((a, b), s)| (a - b).abs() * s).fold(0.0, f64::max);
         std::mem::swap(f, next);
         if change <= tol {
-            return Ok(passes);
+            return Ok(Ok(passes));
         }
+        // A NaN change (a diverging pass) is slow too.
+        if passes >= 3 && (change >= SLOW * last || change.is_nan()) {
+            return Ok(Err(passes));
+        }
+        last = change;
     }
-    Err(EngineError::FrictionDiverged { step, input })
+    Ok(Err(friction::MAX_ITERATIONS))
 }

@@ -18,6 +18,7 @@ mod actuators;
 mod contacts;
 mod friction;
 mod loads;
+mod locking;
 mod magnitudes;
 mod multipliers;
 mod reactions;

@@ -26,7 +26,7 @@ mechanism-singular-cycle = the machine cannot pass { $count } { $count ->
    *[other] positions
     } of its cycle, the first at input { $input }: the mechanism is singular there, or a point runs out to infinity (a slot on the wrong body makes y = d·tan φ), so its reduced inertia I* and torque M* are not finite over the cycle and no flywheel can be sized for it
 mechanism-dof = the mechanism has { $dof } degree(s) of freedom but { $inputs } input(s): give one input per degree of freedom (a body with too few joints moves freely; too many inputs conflict)
-mechanism-friction = joint friction does not settle at input { $input } (step { $step }): the friction coefficients are too large for the mechanism to be driven there (self-locking)
+mechanism-friction = no finite effort drives the mechanism at input { $input } (step { $step }) with this friction (self-locking): it would move only with friction coefficients below { $percent } % of those given
 mechanism-unactuated = the actuator(s) { $actuators } cannot drive the inputs at input { $input } (step { $step }): moving the inputs does not move them (their effort would be carried by the joints); choose an actuator the input's motion moves
 mechanism-not-finite-result = the computation produced a non-finite number; the input is numerically degenerate
 
@@ -133,8 +133,8 @@ kinetostatics-loop-crank = a non-Grashof crank, say, cannot make a full turn
 kinetostatics-loop-slider = a slider driven to or through a dead centre, say, where the linkage's position is no function of the slider's: start and end short of it, or drive the crank; or a follower past where its curve holds it
 kinetostatics-singular = the mechanism is at a singular position
 kinetostatics-dead-centre = a dead centre or toggle the input cannot pass (the constraint Jacobian loses rank)
-kinetostatics-friction = joint friction does not settle
-kinetostatics-self-locking = the friction coefficients are too large for the mechanism to be driven there (self-locking)
+kinetostatics-friction = the joints' friction locks the mechanism
+kinetostatics-self-locking = no finite effort drives it there with this friction (self-locking): it would move only with friction coefficients below { $percent } % of those given
 kinetostatics-unactuated = the actuators cannot drive the inputs
 kinetostatics-unactuated-why = moving the inputs does not move { $actuators } there, so its effort would be carried by the joints; name in "actuators" a joint the input's motion moves
 

@@ -33,7 +33,7 @@ mechanism-dof =
         [one] 1 entrada
        *[other] { $inputs } entradas
     }: dé una entrada por grado de libertad (un cuerpo con pocos pares cinemáticos se mueve libremente; demasiadas entradas entran en conflicto)
-mechanism-friction = el rozamiento en los pares cinemáticos no converge en la entrada { $input } (paso { $step }): los coeficientes de rozamiento son demasiado grandes para poder accionar el mecanismo ahí (autobloqueo)
+mechanism-friction = ningún esfuerzo finito acciona el mecanismo en la entrada { $input } (paso { $step }) con este rozamiento (autobloqueo): solo se movería con coeficientes de rozamiento por debajo del { $percent } % de los dados
 mechanism-unactuated = los actuadores { $actuators } no pueden accionar las entradas en la entrada { $input } (paso { $step }): mover las entradas no los mueve (su esfuerzo lo soportarían los pares cinemáticos); elija un actuador que el movimiento de la entrada mueva
 mechanism-not-finite-result = el cálculo produjo un número no finito; los datos son numéricamente degenerados
 
@@ -147,8 +147,8 @@ kinetostatics-loop-crank = una manivela que no cumple Grashof, por ejemplo, no p
 kinetostatics-loop-slider = una deslizadera llevada hasta un punto muerto o más allá, por ejemplo, donde la posición del mecanismo no es función de la suya: empiece y acabe antes, o accione la manivela; o un seguidor más allá de donde su curva lo sostiene
 kinetostatics-singular = el mecanismo está en una posición singular
 kinetostatics-dead-centre = un punto muerto que la entrada no puede pasar (el jacobiano de las restricciones pierde rango)
-kinetostatics-friction = el rozamiento en los pares cinemáticos no converge
-kinetostatics-self-locking = los coeficientes de rozamiento son demasiado grandes para poder accionar el mecanismo ahí (autobloqueo)
+kinetostatics-friction = el rozamiento en los pares cinemáticos bloquea el mecanismo
+kinetostatics-self-locking = ningún esfuerzo finito lo acciona ahí con este rozamiento (autobloqueo): solo se movería con coeficientes de rozamiento por debajo del { $percent } % de los dados
 kinetostatics-unactuated = los actuadores no pueden accionar las entradas
 kinetostatics-unactuated-why = mover las entradas no mueve { $actuators } ahí, así que su esfuerzo lo soportarían los pares cinemáticos; nombre en "actuators" un par cinemático que el movimiento de la entrada mueva
 

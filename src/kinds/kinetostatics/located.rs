@@ -8,7 +8,7 @@ use crate::engine::variants::round_sig;
 use crate::i18n::Msg;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::quantity::Quantity;
-use crate::kind::refused::engine_msg;
+use crate::kind::refused::{engine_msg, percent};
 use crate::kinds::mechanism::InputDto;
 use crate::units::{self, Dim};
 
@@ -65,9 +65,12 @@ impl Written {
             EngineError::Singular { step, input } => {
                 (*step, *input, "kinetostatics-singular", Msg::new("kinetostatics-dead-centre"))
             }
-            EngineError::FrictionDiverged { step, input } => {
-                (*step, *input, "kinetostatics-friction", Msg::new("kinetostatics-self-locking"))
-            }
+            EngineError::FrictionDiverged { step, input, limit } => (
+                *step,
+                *input,
+                "kinetostatics-friction",
+                Msg::new("kinetostatics-self-locking").written("percent", percent(*limit)),
+            ),
             EngineError::Unactuated { step, input, actuators } => (
                 *step,
                 *input,
