@@ -228,3 +228,48 @@ async fn a_swing_is_no_turn() {
     assert!(end > 4.0 * std::f64::consts::TAU, "{end}");
     assert_eq!(turns(&over) as f64, (end / std::f64::consts::TAU).floor(), "{}", over["events"]);
 }
+
+/// A roller cam sized by its radius of curvature alone, far above its
+/// lift: a 2 mm cycloidal rise over 120°, a dwell, the cycloidal fall over
+/// 120°, a dwell, a 12 mm roller on the cam's centre line, the profile's
+/// radius at least 180 mm. Its least base radius, 181.028322331448 mm, is
+/// a bisection over the base radius of the least of ρ = (r² + r′²)^{3/2}
+/// /(r² + 2r′² − r·r″) − r_r along the pitch curve r = R_b + r_r + s(θ)
+/// (mpmath, 30 digits, the least over θ by golden section; 1e-9
+/// relative). A program that only dwells needs the radius asked (a
+/// circle's), 40 mm; sized by a pressure angle alone it has no least
+/// radius but 0, and says so. Before, the first two were refused (the
+/// search stopped at 100 times the lift, with a hint to raise a pressure
+/// angle never asked for) and the third answered 8e-16 m.
+#[tokio::test]
+async fn a_cam_sized_by_its_curvature_is_sized_past_a_hundred_lifts() {
+    let app = TestApp::new().await;
+    let cam = |program: serde_json::Value, size: serde_json::Value| {
+        json!({"follower": {"type": "roller", "motion": "translating", "roller_radius": "12 mm"},
+            "program": program, "size": size, "speed": 10})
+    };
+    let rise = json!([{"to": "120 deg", "law": "cycloidal", "lift": "2 mm"}, {"to": "180 deg", "law": "dwell"},
+        {"to": "300 deg", "law": "cycloidal", "lift": 0}, {"to": "360 deg", "law": "dwell"}]);
+    let dwell = json!([{"to": "360 deg", "law": "dwell"}]);
+    let curvature = json!({"min_curvature_radius": "180 mm"});
+    for (program, size, expected) in
+        [(rise, curvature, 0.181_028_322_331_448_48), (dwell.clone(), json!({"min_curvature_radius": "40 mm"}), 0.04)]
+    {
+        let r = app.post("/v1/cams", &cam(program, size)).await;
+        let base = r.json()["result"]["summary"]["base_radius"].as_f64().unwrap_or_else(|| panic!("{}", r.text));
+        assert!((base - expected).abs() <= 1e-9 * expected, "{base} against {expected}");
+    }
+    let r = app.post("/v1/cams", &cam(dwell, json!({"max_pressure_angle": "30 deg"}))).await;
+    assert_eq!(r.status, axum::http::StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert!(r.text.contains("/size") && r.text.contains("every base radius meets it"), "{}", r.text);
+    // An oscillating arm that no radius of curvature of 500 mm fits: the
+    // hint loosens what was asked, not a pressure angle never asked for.
+    let mut arm = cam(
+        json!([{"to": "120 deg", "law": "cycloidal", "lift": "20 deg"}, {"to": "240 deg", "law": "cycloidal", "lift": 0}, {"to": "360 deg", "law": "dwell"}]),
+        json!({"min_curvature_radius": "500 mm"}),
+    );
+    arm["follower"] =
+        json!({"type": "roller", "motion": "oscillating", "roller_radius": "10 mm", "pivot": "120 mm", "arm": "90 mm"});
+    let r = app.post("/v1/cams", &arm).await;
+    assert!(r.text.contains("a smaller radius of curvature") && !r.text.contains("pressure angle"), "{}", r.text);
+}

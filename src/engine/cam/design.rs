@@ -252,7 +252,8 @@ impl Cam {
     }
 
     /// The base radii the follower can start from, as (lo, hi): any up to
-    /// 100 times the largest lift `scale` (m) for a translating follower;
+    /// 100 times the largest lift `scale` (m) for a translating follower
+    /// (the search's first range: it goes on above, `sizing::beyond`);
     /// where the arm reaches for an oscillating one.
     pub(super) fn base_range(&self, scale: f64) -> (f64, f64) {
         let r = match self.follower {

@@ -2,7 +2,7 @@
 //! lift evaluated once at the samples' angles, the cam's geometry at each,
 //! the job's budget read as they go.
 
-use super::design::{Cam, CamError, Lift, Sample};
+use super::design::{Cam, CamError, Guide, Lift, Sample};
 use super::least::Least;
 use crate::engine::numeric::minimum::brent_min;
 use crate::engine::numeric::roots::brent;
@@ -36,10 +36,12 @@ pub fn turn(cam: &Cam, lifts: &[(f64, [f64; 4])]) -> Result<Vec<Sample>, CamErro
 /// from ([`least`](super::least)), kept where it passes the test; where it
 /// fails, or where there is no closed form, the first of 64 radii from it
 /// to the top of the range [`Cam::base_range`] that meets the test
-/// ([`first_meeting`]) — where none does, the radius of the least excess
-/// ([`least_measure`]) if that meets it — then the root of the excess in
-/// the cell below it by Brent's method to 1e-12 of the radius (the radius
-/// returned meets it); None where none does.
+/// ([`first_meeting`]) — where none does, for a translating follower the
+/// first of the radii doubling above the range that does ([`beyond`]),
+/// else the radius of the least excess ([`least_measure`]) if that meets
+/// it — then the root of the excess in the cell below it by Brent's method
+/// to 1e-12 of the radius (the radius returned meets it); None where none
+/// does.
 /// The `deadline` is read before each radius is tried.
 pub fn smallest_base(
     cam: Cam,
@@ -64,8 +66,12 @@ pub fn smallest_base(
         Least::Base(base) | Least::Search(base) => base.max(lo),
     };
     let grid = |k: usize| lo + (hi - lo) * k as f64 / GRID as f64;
-    let (mut a, b) = match first_meeting(&|k| over(grid(k)))? {
-        Some(meets) => (grid(meets - 1), grid(meets)),
+    let first = match first_meeting(&|k| over(grid(k)))? {
+        Some(meets) => Some((grid(meets - 1), grid(meets))),
+        None => beyond(&cam, &over, (grid(GRID - 1), hi))?,
+    };
+    let (mut a, b) = match first {
+        Some(cell) => cell,
         // The radii that meet it may be a stretch narrower than the grid's cell (an oscillating
         // follower's pressure angle near its least): where the least excess meets it, between
         // there and the grid's radius below it (which does not, or is the range's least).
@@ -95,6 +101,32 @@ pub fn smallest_base(
         return Ok(Some(b));
     }
     refine(&over, b, a, deadline).map(Some)
+}
+
+/// Most doublings of the range's top tried by [`beyond`].
+const DOUBLINGS: usize = 40;
+
+/// A translating follower's radii past the grid, its `top` and then
+/// doubling: a radius of curvature asked far above the lift (a profile's
+/// radius of curvature grows as R_b + s + s″ with the base radius), or a
+/// program that never rises. The first that meets the test and the one
+/// below it (which does not), or None (an oscillating follower's range is
+/// its arm's reach).
+fn beyond(
+    cam: &Cam,
+    over: &dyn Fn(f64) -> Result<f64, EngineError>,
+    (mut below, mut top): (f64, f64),
+) -> Result<Option<(f64, f64)>, EngineError> {
+    if !matches!(cam.guide, Guide::Translating { .. }) {
+        return Ok(None);
+    }
+    for _ in 0..=DOUBLINGS {
+        if over(top)? <= 0.0 {
+            return Ok(Some((below, top)));
+        }
+        (below, top) = (top, 2.0 * top);
+    }
+    Ok(None)
 }
 
 /// Where no radius meets a test: the radius of the range

@@ -177,9 +177,18 @@ dynamics-start-no-mass = the equations of motion are singular at the start: some
 cam-base-or-size = give "base_radius" or "size", not both
 cam-base-required = give the cam's "base_radius", or "size" to find the smallest
 cam-size = give "max_pressure_angle" and/or "min_curvature_radius"
-cam-no-base = no base radius up to 100 times the lift meets it: ask for a larger pressure angle or a smaller radius of curvature
-cam-no-base-arm = no base radius the arm can start its follower from meets it: ask for a larger pressure angle or a smaller radius of curvature, or move the pivot or lengthen the arm
-cam-no-base-best = no base radius up to 100 times the lift meets it: the least largest pressure angle any of them gives is { $angle }°, at a base radius of { $base } mm; ask for at least that, or move the follower's offset
+cam-size-any = every base radius meets it, down to 0 (a cam with no body): a program that never rises has no pressure angle to keep down; give the base radius (base_radius) instead, or size it by a least radius of curvature (min_curvature_radius)
+cam-no-base = no base radius meets it: ask for { $asked ->
+        [angle] a larger pressure angle
+        [rho] a smaller radius of curvature
+       *[both] a larger pressure angle or a smaller radius of curvature
+    }
+cam-no-base-arm = no base radius the arm can start its follower from meets it: ask for { $asked ->
+        [angle] a larger pressure angle
+        [rho] a smaller radius of curvature
+       *[both] a larger pressure angle or a smaller radius of curvature
+    }, or move the pivot or lengthen the arm
+cam-no-base-best = no base radius meets it: the least largest pressure angle any of them gives is { $angle }°, at a base radius of { $base } mm; ask for at least that, or move the follower's offset
 cam-no-base-arm-best = no base radius the arm can start its follower from meets it: the least largest pressure angle any of them gives is { $angle }°, at a base radius of { $base } mm; ask for at least that, or move the pivot or lengthen the arm
 cam-speed = must be greater than 0 (the sense is "direction")
 cam-roller-radius = a roller follower needs its "roller_radius"

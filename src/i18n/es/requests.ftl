@@ -191,9 +191,18 @@ dynamics-start-no-mass = las ecuaciones del movimiento son singulares al inicio:
 cam-base-or-size = dé "base_radius" o "size", no ambos
 cam-base-required = dé el radio del círculo base "base_radius" de la leva, o "size" para hallar el menor
 cam-size = dé "max_pressure_angle" y/o "min_curvature_radius"
-cam-no-base = ningún radio del círculo base de hasta 100 veces la elevación lo cumple: pida un ángulo de presión mayor o un radio de curvatura menor
-cam-no-base-arm = ningún radio del círculo base desde el que el brazo pueda arrancar el seguidor lo cumple: pida un ángulo de presión mayor o un radio de curvatura menor, o mueva el pivote o alargue el brazo
-cam-no-base-best = ningún radio del círculo base de hasta 100 veces la elevación lo cumple: el menor ángulo de presión máximo que da alguno es { $angle }°, con un radio base de { $base } mm; pida al menos ese, o cambie la excentricidad del seguidor
+cam-size-any = cualquier radio base lo cumple, hasta 0 (una leva sin cuerpo): un programa que nunca sube no tiene ángulo de presión que limitar; dé el radio base (base_radius), o dimensiónela por un radio de curvatura mínimo (min_curvature_radius)
+cam-no-base = ningún radio del círculo base lo cumple: pida { $asked ->
+        [angle] un ángulo de presión mayor
+        [rho] un radio de curvatura menor
+       *[both] un ángulo de presión mayor o un radio de curvatura menor
+    }
+cam-no-base-arm = ningún radio del círculo base desde el que el brazo pueda arrancar el seguidor lo cumple: pida { $asked ->
+        [angle] un ángulo de presión mayor
+        [rho] un radio de curvatura menor
+       *[both] un ángulo de presión mayor o un radio de curvatura menor
+    }, o mueva el pivote o alargue el brazo
+cam-no-base-best = ningún radio del círculo base lo cumple: el menor ángulo de presión máximo que da alguno es { $angle }°, con un radio base de { $base } mm; pida al menos ese, o cambie la excentricidad del seguidor
 cam-no-base-arm-best = ningún radio del círculo base desde el que el brazo pueda arrancar el seguidor lo cumple: el menor ángulo de presión máximo que da alguno es { $angle }°, con un radio base de { $base } mm; pida al menos ese, o mueva el pivote o alargue el brazo
 cam-speed = debe ser mayor que 0 (el sentido lo da "direction")
 cam-roller-radius = un seguidor de rodillo necesita su radio "roller_radius"

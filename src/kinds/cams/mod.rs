@@ -17,7 +17,7 @@ pub use request::{CamFollowerDto, CamFollowerMotion, CamFollowerType, CamProgram
 pub use result::CamResult;
 
 use crate::engine::Deadline;
-use crate::engine::cam::design::{Cam, CamError, Guide};
+use crate::engine::cam::design::{Cam, CamError, Follower, Guide};
 use crate::engine::cam::extremes::{self, Extremes, scan};
 use crate::engine::cam::least::least_base;
 use crate::engine::cam::sizing::{least_measure, lifts, smallest_base, turn};
@@ -190,23 +190,54 @@ fn sized(
                 .filter(|[_, least]| *least > asked),
             None => None,
         };
-        return Err(unmet(p.cam.guide, best));
+        return Err(unmet(p.cam.guide, [angle, rho], best));
     };
+    if base <= NO_BODY * sizes(p, lifts) {
+        return Err(ApiError::Invalid(vec![FieldError::said("/size", Msg::new("cam-size-any"))]));
+    }
     Ok((base, last.get().filter(|(tested, _)| *tested == base).map(|(_, e)| e)))
 }
 
+/// A base radius this fraction of the cam's other lengths ([`sizes`]) is
+/// none: every radius meets the size (a program that never rises sized by
+/// a pressure angle), and a cam of radius 0 has no body.
+const NO_BODY: f64 = 1e-9;
+
+/// The largest of the cam's lengths but its base radius: its lift, roller,
+/// offset, pivot and arm (m).
+fn sizes(p: &Problem, lifts: &[(f64, [f64; 4])]) -> f64 {
+    let roller = match p.cam.follower {
+        Follower::Roller(r) => r,
+        Follower::Flat => 0.0,
+    };
+    let guide = match p.cam.guide {
+        // A translating follower's lift is a length (an oscillating one's an angle).
+        Guide::Translating { offset } => lifts.iter().map(|(_, l)| l[0].abs()).fold(offset.abs(), f64::max),
+        Guide::Oscillating { pivot, arm } => pivot.max(arm),
+    };
+    roller.max(guide)
+}
+
 /// No base radius meets the size: a translating follower is tried up to
-/// 100 times its lift, an oscillating one wherever its arm reaches. Where
+/// 2⁴⁰ × 100 times its lift, an oscillating one wherever its arm reaches. Where
 /// the pressure angle asked is under the least any radius gives, that
 /// least ([radius, angle]), rounded up to 0.01° so that asking for it is
-/// met, and the radius that gives it.
-fn unmet(guide: Guide, best: Option<[f64; 2]>) -> ApiError {
+/// met, and the radius that gives it; else what to loosen of what was
+/// `asked` ([largest pressure angle, least radius of curvature]).
+fn unmet(guide: Guide, asked: [Option<f64>; 2], best: Option<[f64; 2]>) -> ApiError {
     let oscillating = matches!(guide, Guide::Oscillating { .. });
     let msg = match best {
         Some([base, angle]) => Msg::new(if oscillating { "cam-no-base-arm-best" } else { "cam-no-base-best" })
             .num("angle", (angle.to_degrees() * 100.0).ceil() / 100.0)
             .num("base", (base * 1e4).round() / 10.0),
-        None => Msg::new(if oscillating { "cam-no-base-arm" } else { "cam-no-base" }),
+        None => Msg::new(if oscillating { "cam-no-base-arm" } else { "cam-no-base" }).arg(
+            "asked",
+            match asked {
+                [Some(_), None] => "angle",
+                [None, Some(_)] => "rho",
+                _ => "both",
+            },
+        ),
     };
     ApiError::Invalid(vec![FieldError::said("/size", msg)])
 }
