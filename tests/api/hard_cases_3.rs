@@ -273,3 +273,28 @@ async fn a_cam_sized_by_its_curvature_is_sized_past_a_hundred_lifts() {
     let r = app.post("/v1/cams", &arm).await;
     assert!(r.text.contains("a smaller radius of curvature") && !r.text.contains("pressure angle"), "{}", r.text);
 }
+
+/// Two correction planes 1 µm apart on a rotor 0.5 m long (masses of 2 kg
+/// at 30 mm, 0° in z = 0 and 1 kg at 30 mm, 180° in z = 0.5 m; planes of
+/// radius 0.1 m at z = 0.25 m and 0.25 m + 1 µm) need corrections that
+/// grow as 1/(z₂ − z₁): m₂R₂ = |D(z₁)|/(z₂ − z₁), D(z₁) = Σ m r (z − z₁)
+/// e^{iθ} = 0.06·(−0.25) + 0.03·(−1)(0.25) = −0.0225 kg·m², so m₂ =
+/// 0.0225/(1e-6·0.1) = 225 000 kg (closed form; 1e-6 relative, the gap
+/// being 1e-6 m written in a float). Answered, with a warning that says
+/// why; planes 0.4 m apart are answered without it. Before, no word.
+#[tokio::test]
+async fn correction_planes_a_hair_apart_are_said() {
+    let app = TestApp::new().await;
+    let body = |z2: f64| {
+        json!({"masses": [{"mass": 2, "radius": 0.03, "angle": 0, "plane": 0},
+                          {"mass": 1, "radius": 0.03, "angle": "180 deg", "plane": 0.5}],
+               "planes": [{"z": 0.25, "radius": 0.1}, {"z": z2, "radius": 0.1}]})
+    };
+    let r = app.post("/v1/balancing", &body(0.25 + 1e-6)).await.json()["result"].clone();
+    let mass = r["corrections"][1]["mass"].as_f64().unwrap();
+    assert!((mass - 225_000.0).abs() < 1e-6 * 225_000.0 + 0.5, "{mass}");
+    let warnings = r["warnings"].to_string();
+    assert!(warnings.contains("only 1.000e-6 m apart") && warnings.contains("225000 kg"), "{warnings}");
+    let r = app.post("/v1/balancing", &body(0.65)).await.json()["result"].clone();
+    assert_eq!(r["warnings"], json!([]), "{r}");
+}

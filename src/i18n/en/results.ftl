@@ -128,6 +128,7 @@ warning-equivalent-not-unique = the points do not determine the masses; the smal
 ## Balancing
 accuracy-balancing-static = static balancing in one plane: the correction C₁ = −U cancels the static unbalance U = Σ m·r·e^(iθ); the couple is left; closed form
 accuracy-balancing-dynamic = dynamic balancing in two planes: C₁ + C₂ = −U and (z₂ − z₁)·C₂ = −D(z₁), D(z₁) = Σ m·r·(z − z₁)·e^(iθ); closed form
+warning-balancing-planes-close = the correction planes are only { $gap } m apart, 1/{ $ratio } of the rotor's length of { $span } m (its masses, bearings and planes): the two corrections grow as 1/(z₂ − z₁), here to { $mass } kg; place the planes farther apart
 warning-balancing-couple-left = one correction plane removes the static unbalance only: a dynamic unbalance of { $couple } kg·m² is left (give two planes to remove it)
 accuracy-global-made = a bound of the global error: 1.5 times the largest difference of the angle over the samples from the same run at a tolerance a hundred times tighter (global_error), or the summed local error estimates where larger
 accuracy-global-none = the summed local error estimates, which ignore how errors grow along the motion (a chaotic or long run can be far more off): no run at a tolerance a hundred times tighter was made, as { $why }

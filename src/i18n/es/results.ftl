@@ -140,6 +140,7 @@ warning-equivalent-not-unique = los puntos no determinan las masas; se da el con
 ## Equilibrado
 accuracy-balancing-static = equilibrado estático en un plano: la corrección C₁ = −U anula el desequilibrio estático U = Σ m·r·e^(iθ); el par queda; forma cerrada
 accuracy-balancing-dynamic = equilibrado dinámico en dos planos: C₁ + C₂ = −U y (z₂ − z₁)·C₂ = −D(z₁), D(z₁) = Σ m·r·(z − z₁)·e^(iθ); forma cerrada
+warning-balancing-planes-close = los planos de corrección distan solo { $gap } m, 1/{ $ratio } de la longitud del rotor de { $span } m (sus masas, cojinetes y planos): las dos correcciones crecen como 1/(z₂ − z₁), aquí hasta { $mass } kg; separe más los planos
 warning-balancing-couple-left = un solo plano de corrección elimina solo el desequilibrio estático: queda un desequilibrio dinámico de { $couple } kg·m² (da dos planos para eliminarlo)
 accuracy-global-made = una cota del error global: 1,5 veces la mayor diferencia del ángulo en las muestras respecto al mismo cálculo con una tolerancia cien veces menor (global_error), o la suma de los errores locales estimados si es mayor
 accuracy-global-none = la suma de los errores locales estimados, que no tiene en cuenta cómo crecen los errores a lo largo del movimiento (un movimiento caótico o largo puede estar mucho más lejos): no se hizo el cálculo con una tolerancia cien veces menor, porque { $why }

@@ -71,7 +71,14 @@ struct Read {
     before: Unbalance,
     planes: Vec<Plane>,
     reactions: Option<(f64, [f64; 2])>,
+    /// The rotor's length along z: its masses (or its bearings and G), the
+    /// bearings asked and the planes.
+    span: f64,
 }
+
+/// Two planes closer than this fraction of the rotor's length are said:
+/// their corrections grow as 1/(z₂ − z₁).
+const CLOSE_PLANES: f64 = 0.01;
 
 fn result(r: &Read) -> BalancingResult {
     let (corrections, after) = balancing::balance(r.before, &r.planes);
@@ -86,6 +93,19 @@ fn result(r: &Read) -> BalancingResult {
     let left = polar(after.about(z1)).0;
     if r.planes.len() == 1 && left > 1e-12 * (polar(r.before.d0).0 + z1.abs() * u.0) {
         notes.warn(Msg::new("warning-balancing-couple-left").num("couple", left));
+    }
+    if let [p1, p2] = r.planes[..] {
+        let gap = p2.z - p1.z;
+        if gap < CLOSE_PLANES * r.span {
+            let most = corrections.iter().map(|c| c.mass).fold(0.0, f64::max);
+            notes.warn(
+                Msg::new("warning-balancing-planes-close")
+                    .fig("gap", gap)
+                    .fig("span", r.span)
+                    .fig("ratio", r.span / gap)
+                    .fig("mass", most),
+            );
+        }
     }
     let reactions = r.reactions.map(|(speed, bearings)| BearingForcesDto {
         speed,
@@ -115,7 +135,11 @@ impl BalancingRequest {
         let planes = self.planes(&mut e);
         let reactions = self.reactions(&mut e, body.as_ref());
         match (body, planes, e.list.is_empty()) {
-            (Some(body), Some(planes), true) => Ok(Read { before: body.unbalance(), planes, reactions }),
+            (Some(body), Some(planes), true) => {
+                let along = body.along().chain(planes.iter().map(|p| p.z)).chain(reactions.iter().flat_map(|r| r.1));
+                let (lo, hi) = along.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), z| (lo.min(z), hi.max(z)));
+                Ok(Read { before: body.unbalance(), planes, reactions, span: hi - lo })
+            }
             _ => Err(e.list),
         }
     }
@@ -195,6 +219,14 @@ enum Body {
 }
 
 impl Body {
+    /// Where the body is along z: its masses' planes, or a rotor's bearings and G.
+    fn along(&self) -> Box<dyn Iterator<Item = f64> + '_> {
+        match self {
+            Body::Masses(masses) => Box::new(masses.iter().map(|m| m.z)),
+            Body::Rotor(r) => Box::new(r.bearings.into_iter().chain([r.cg.x])),
+        }
+    }
+
     /// U and D(0). A rotor's axis is its x'; the balancing planes' (x, y)
     /// are its (y', z'): U = m(y_G, z_G), D(0) = ∫x'(y', z') dm =
     /// (P_x'y' + m x_G y_G, P_x'z' + m x_G z_G), P the products of inertia about G.
