@@ -23,30 +23,37 @@ pub struct Equivalent {
 /// link of mass `mass` and inertia `inertia` about G.
 pub fn equivalent_masses(mass: f64, inertia: f64, points: &[[f64; 2]]) -> Equivalent {
     let n = points.len();
-    // Rows: mass, first moments in x and y, second moment (inertia about G).
+    // Rows: mass, first moments in x and y, second moment (inertia about
+    // G), each over its size in L (the farthest point from G): every row
+    // of order 1, so that the rank is that of the drawing.
+    let length = points.iter().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max).max(f64::MIN_POSITIVE);
     let a = DMatrix::from_fn(4, n, |r, c| {
-        let p = points[c];
-        [1.0, p[0], p[1], p[0] * p[0] + p[1] * p[1]][r]
+        let [x, y] = points[c].map(|v| v / length);
+        [1.0, x, y, x * x + y * y][r]
     });
-    let b = DVector::from_column_slice(&[mass, 0.0, 0.0, inertia]);
+    let b = DVector::from_column_slice(&[mass, 0.0, 0.0, inertia / (length * length)]);
     // The API passes finite values only; a decomposition that fails leaves no masses.
     let Some(svd) = svd(a.clone(), true, true) else {
         return Equivalent { masses: vec![0.0; n], residual: f64::INFINITY, unique: false };
     };
-    let tol = 1e-12 * svd.singular_values.max().max(f64::MIN_POSITIVE);
+    let tol = DRAWN * svd.singular_values.max().max(f64::MIN_POSITIVE);
     let rank = svd.singular_values.iter().filter(|s| **s > tol).count();
     let x = svd.solve(&b, tol).unwrap_or_else(|_| DVector::zeros(n));
     let r = &a * &x - &b;
-    // Each condition against its own natural size: m, m·L and max(I_G, m·L²),
-    // L the farthest point from G (a link with I_G = 0 is measured by m·L²,
+    // Each condition against its own natural size: m, m·L and max(I_G, m·L²)
+    // (over L², as the rows are; a link with I_G = 0 is measured by m·L²,
     // not by I_G).
-    let length = points.iter().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max);
     let m = mass.abs();
-    let scale = [m, m * length, m * length, inertia.abs().max(m * length * length)];
+    let scale = [m, m, m, (inertia.abs() / (length * length)).max(m)];
     let relative = |k: usize| if r[k] == 0.0 { 0.0 } else { r[k].abs() / scale[k] };
     let residual = (0..4).map(relative).fold(0.0, f64::max);
     Equivalent { masses: x.iter().copied().collect(), residual, unique: rank == n }
 }
+
+/// Points within this fraction of the link's size of a line (or of each
+/// other) are on it: the drawing's precision, not the masses' (1 nm off a
+/// bar's line once made its three masses "no set matches").
+const DRAWN: f64 = 1e-8;
 
 #[cfg(test)]
 mod tests {

@@ -298,3 +298,24 @@ async fn correction_planes_a_hair_apart_are_said() {
     let r = app.post("/v1/balancing", &body(0.65)).await.json()["result"].clone();
     assert_eq!(r["warnings"], json!([]), "{r}");
 }
+
+/// A bar's three masses with its end drawn 1 nm off its line: m = 2.4 kg,
+/// I_G = 0.05 kg·m², A 0.25 m and B 0.3 m from G (l = 0.55 m): m_A =
+/// I_G/(l·r_A) = 0.363636…, m_B = I_G/(l·r_B) = 0.303030…, m_G = m −
+/// I_G/(r_A·r_B) = 1.733333… kg (the notes' closed form; 1e-8, the
+/// drawing's 1 nm in 0.3 m). Before, "no set of masses matches": the nm
+/// made the first moment in y a condition of its own.
+#[tokio::test]
+async fn masses_drawn_a_nanometre_off_the_bars_line_are_on_it() {
+    let app = TestApp::new().await;
+    let body = json!({"mass": 2.4, "inertia": 0.05, "cg": [0.25, 0],
+        "points": {"A": [0, 0], "B": [0.55, 1e-9], "G": [0.25, 0]}});
+    let r = app.post("/v1/equivalent-masses", &body).await;
+    let m = r.json()["result"].clone();
+    for (point, expected) in [("A", 0.05 / (0.55 * 0.25)), ("B", 0.05 / (0.55 * 0.3)), ("G", 2.4 - 0.05 / (0.25 * 0.3))]
+    {
+        let got = m["masses"][point].as_f64().unwrap_or_else(|| panic!("{}", r.text));
+        assert!((got - expected).abs() < 1e-8 * expected, "m_{point} = {got} against {expected}");
+    }
+    assert_eq!((m["complete"].as_bool(), m["unique"].as_bool()), (Some(true), Some(true)), "{m}");
+}
