@@ -66,6 +66,10 @@ pub enum TrainError {
     TorquesSingular,
     #[error("the train's numbers overflow (teeth, ratios or speeds too large to compute with)")]
     Degenerate,
+    /// No member can turn: the meshes lock the train (an odd loop of
+    /// external meshes, three wheels meshing in a ring, say).
+    #[error("the train cannot move: its meshes lock every member (an odd loop of external meshes, say)")]
+    Locked,
 }
 
 impl Train {
@@ -101,6 +105,9 @@ impl Train {
         let scale = svd.singular_values.max().max(1.0);
         let rank = svd.singular_values.iter().filter(|s| **s > 1e-10 * scale).count();
         let dof = n - rank;
+        if dof == 0 {
+            return Err(TrainError::Locked);
+        }
         let speeds = self.speeds(&a, dof, given_speeds)?;
         let mut torques = vec![0.0; self.members];
         for (m, t) in given_torques {

@@ -319,3 +319,26 @@ async fn masses_drawn_a_nanometre_off_the_bars_line_are_on_it() {
     }
     assert_eq!((m["complete"].as_bool(), m["unique"].as_bool()), (Some(true), Some(true)), "{m}");
 }
+
+/// Three wheels on the frame meshing in a ring (20, 30 and 40 teeth, each
+/// mesh external) lock: ω₁z₁ = −ω₂z₂, ω₂z₂ = −ω₃z₃ and ω₃z₃ = −ω₁z₁ give
+/// ω₁z₁ = −ω₁z₁, so every ω is 0 (the mesh matrix has full rank 3: 0
+/// degrees of freedom). Refused at /meshes as locked; before, the speed
+/// given was blamed ("give exactly 0 speed(s)"). Two of its meshes turn.
+#[tokio::test]
+async fn a_locked_gear_triangle_is_blamed_on_its_meshes() {
+    let app = TestApp::new().await;
+    let mut body = json!({"members": ["1", "2", "3"],
+        "meshes": [{"a": "1", "teeth_a": 20, "b": "2", "teeth_b": 30}, {"a": "2", "teeth_a": 30, "b": "3", "teeth_b": 40},
+                   {"a": "3", "teeth_a": 40, "b": "1", "teeth_b": 20}],
+        "speeds": [{"member": "1", "speed": "100 rpm"}]});
+    let r = app.post("/v1/gears/train", &body).await;
+    assert_eq!(r.status, axum::http::StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert_eq!(r.json()["errors"][0]["pointer"], "/meshes", "{}", r.text);
+    assert!(r.text.contains("cannot move"), "{}", r.text);
+    body["meshes"].as_array_mut().unwrap().pop();
+    let r = app.post("/v1/gears/train", &body).await.json()["result"].clone();
+    let w3 = r["members"][2]["speed"].as_f64().unwrap();
+    // ω₃ = ω₁·z₁/z₃ (two external meshes), 100 rpm · 20/40 = 50 rpm.
+    assert!((w3 - 50.0 * std::f64::consts::PI / 30.0).abs() < 1e-12, "{r}");
+}

@@ -243,6 +243,7 @@ train-meshes-count = give 1 to { $max } meshes
 train-teeth = must be a number of teeth from 1 to 100000
 train-mesh-wheels = a mesh needs two different wheels on members other than its carrier
 train-frame-torque = the frame's torque is not an unknown of the train
+train-locked = the train cannot move: its meshes lock every member (0 degrees of freedom); an odd loop of external meshes, such as three wheels meshing in a ring, turns each wheel both ways at once
 train-speeds = the train has { $dof } degree(s) of freedom: give exactly { $dof } speed(s) that fix it (given { $given })
 train-inconsistent = the given speeds cannot all hold: the meshes contradict them (residual { $residual } rad/s)
 train-torques = the train has { $dof } degree(s) of freedom: ask for exactly { $dof } unknown torque(s) (asked { $asked })

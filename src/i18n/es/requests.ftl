@@ -257,6 +257,7 @@ train-meshes-count = dé de 1 a { $max } engranes
 train-teeth = debe ser un número de dientes de 1 a 100000
 train-mesh-wheels = un engrane necesita dos ruedas distintas en elementos que no sean su portasatélites
 train-frame-torque = el par sobre el bastidor no es una incógnita del tren
+train-locked = el tren no puede moverse: sus engranes bloquean todos los miembros (0 grados de libertad); un lazo impar de engranes exteriores, como tres ruedas que engranan en anillo, hace girar cada rueda en los dos sentidos a la vez
 train-speeds =
     el tren tiene { $dof ->
         [one] 1 grado de libertad: dé exactamente 1 velocidad que lo fije

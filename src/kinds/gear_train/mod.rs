@@ -138,7 +138,7 @@ fn compute(request: &TrainRequest, unknown: Vec<FieldError>) -> Result<TrainResu
         let at = match e {
             TrainError::Speeds { .. } | TrainError::Inconsistent { .. } => "/speeds",
             TrainError::Torques { .. } | TrainError::TorquesSingular => "/unknown_torques",
-            TrainError::Degenerate => "/meshes",
+            TrainError::Degenerate | TrainError::Locked => "/meshes",
         };
         ApiError::Invalid(vec![FieldError::said(at, msg(&e))])
     })?;
@@ -167,6 +167,7 @@ fn msg(e: &TrainError) -> Msg {
         TrainError::Torques { dof, asked } => Msg::new("train-torques").count("dof", dof).count("asked", asked),
         TrainError::TorquesSingular => Msg::new("train-torques-singular"),
         TrainError::Degenerate => Msg::new("train-degenerate"),
+        TrainError::Locked => Msg::new("train-locked"),
     }
 }
 
