@@ -342,3 +342,23 @@ async fn a_locked_gear_triangle_is_blamed_on_its_meshes() {
     // ω₃ = ω₁·z₁/z₃ (two external meshes), 100 rpm · 20/40 = 50 rpm.
     assert!((w3 - 50.0 * std::f64::consts::PI / 30.0).abs() < 1e-12, "{r}");
 }
+
+/// A rotor whose frame turns backwards (−30 rad/s from 0) never reaches
+/// +90° counted along its turning; it is at that position first after
+/// three quarters of a turn, at −270° (t = 3π/2 / 30 s), and the refusal
+/// says to write that; written so, its instant is t = (3π/2)/30 s (closed
+/// form, 1e-12). Before, "never reaches" alone.
+#[tokio::test]
+async fn a_rotor_turning_backwards_is_told_where_it_reaches_an_angle() {
+    let app = TestApp::new().await;
+    let rotor = |angle: &str| {
+        json!({"mass": 2, "inertia": {"xx": 0.01, "yy": 0.02, "zz": 0.02}, "cg": [0.1, 0, 0], "bearings": [0, 0.3],
+            "frame": {"speed": -30}, "angles": [angle]})
+    };
+    let r = app.post("/v1/rotor", &rotor("90 deg")).await;
+    assert_eq!(r.status, axum::http::StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert!(r.text.contains("/angles/0") && r.text.contains("-270°"), "{}", r.text);
+    let r = app.post("/v1/rotor", &rotor("-270 deg")).await;
+    let t = r.json()["result"]["states"][0]["t"].as_f64().unwrap_or_else(|| panic!("{}", r.text));
+    assert!((t - 1.5 * std::f64::consts::PI / 30.0).abs() < 1e-12, "{t}");
+}

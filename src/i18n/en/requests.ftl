@@ -224,6 +224,7 @@ rotor-principal = principal moments [{ $first }, { $second }, { $third }] are no
 rotor-angles-or-times = give at most one of "angles" and "times"
 rotor-instants = give 1 to { $max } values
 rotor-never = the frame never reaches this angle
+rotor-never-alias = the frame never reaches this angle (angles count its turns from the start, in the sense it turns); it is at this position first at { $degrees }° ({ $radians } rad): write that
 
 ## A gear: its module, teeth, pressure angle and proportions
 

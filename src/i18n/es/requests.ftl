@@ -238,6 +238,7 @@ rotor-principal = los momentos principales de inercia [{ $first }; { $second }; 
 rotor-angles-or-times = dé como mucho uno de "angles" y "times"
 rotor-instants = dé de 1 a { $max } valores
 rotor-never = el bastidor nunca alcanza este ángulo
+rotor-never-alias = el bastidor nunca alcanza este ángulo (los ángulos cuentan sus vueltas desde el inicio, en el sentido en que gira); pasa primero por esta posición en { $degrees }° ({ $radians } rad): escriba ese
 
 ## Un engranaje: su módulo, su número de dientes, su ángulo de presión y sus proporciones
 

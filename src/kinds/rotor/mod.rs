@@ -297,11 +297,25 @@ impl RotorRequest {
             let t = if field == "times" {
                 e.quantity(q, Dim::TIME, &at)
             } else {
-                e.angle(q, &at).and_then(|phi| time_at(r, phi).or_else(|| e.refuse(&at, Msg::new("rotor-never"))))
+                e.angle(q, &at).and_then(|phi| time_at(r, phi).or_else(|| e.refuse(&at, never(r, phi))))
             };
             out.extend(t);
         }
         out
+    }
+}
+
+/// An angle the frame never reaches, and where it is at that position
+/// first: φ + 2πk, k within 64 turns (a frame turning backwards reaches
+/// 90° as −270°).
+fn never(r: &Rotor, phi: f64) -> Msg {
+    let first = (-64..=64)
+        .map(|k| phi + std::f64::consts::TAU * f64::from(k))
+        .filter_map(|alias| time_at(r, alias).map(|t| (t, alias)))
+        .min_by(|a, b| a.0.total_cmp(&b.0));
+    match first {
+        Some((_, alias)) => Msg::new("rotor-never-alias").fig("degrees", alias.to_degrees()).fig("radians", alias),
+        None => Msg::new("rotor-never"),
     }
 }
 
