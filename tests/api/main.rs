@@ -50,6 +50,7 @@ mod limits;
 mod million;
 mod mobility;
 mod offline;
+mod one_meaning;
 mod operations;
 mod pages;
 mod parts;

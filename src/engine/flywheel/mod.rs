@@ -132,8 +132,15 @@ pub struct FlywheelSolution {
     pub areas: Vec<Area>,
     pub cumulative: Vec<f64>,
     pub energy_fluctuation: f64,
+    /// ΔE/(ε ω_a²): the total inertia on the reference shaft, I* neglected.
     pub inertia_approximate: f64,
+    /// The total exactly (Wittenbauer): the constant I with which I + I*(φ)
+    /// runs at ε, plus I*'s least (the machine's inertia at every angle).
     pub inertia_exact: f64,
+    /// min I*(φ) over the cycle (kg·m²).
+    pub least_reduced_inertia: f64,
+    /// What the flywheel adds, on its own shaft: the totals less the
+    /// existing inertia and I*'s least, over k².
     pub flywheel_inertia: Pair,
     pub omega_max: f64,
     pub omega_min: f64,

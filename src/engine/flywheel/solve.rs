@@ -8,8 +8,33 @@ use super::{
     Accuracy, Condition, Disk, DiskSize, DiskSpec, FlywheelProblem, FlywheelSolution, Load, Pair, SamplePoint,
 };
 use crate::engine::function::Side;
+use crate::engine::numeric::minimum::brent_min;
 use crate::engine::{EngineError, Phase, Progress};
 use std::f64::consts::PI;
+
+/// How closely I*'s least is found (relative to the cycle's period, in φ).
+const LEAST_TOLERANCE: f64 = 1e-10;
+
+/// min I*(φ) over the cycle: at a piece's ends, or where I*′ turns from
+/// negative to positive between two samples (refined there by Brent's
+/// method); I*(0) where I* is constant (no slopes sampled).
+pub(crate) fn least_inertia(cycle: &Cycle, samples: &Samples) -> f64 {
+    let at = |phi: f64, side: Side| cycle.inertia_at(phi, side);
+    let mut least = f64::INFINITY;
+    for ((angles, _), slopes) in samples.pieces.iter().zip(&samples.slopes) {
+        let (Some(&first), Some(&last)) = (angles.first(), angles.last()) else { continue };
+        least = least.min(at(first, Side::Right)).min(at(last, Side::Left));
+        for (k, pair) in slopes.windows(2).enumerate() {
+            if pair[0] < 0.0 && pair[1] >= 0.0 {
+                let (a, b) = (angles[k], angles[k + 1]);
+                let mid = 0.5 * (a + b);
+                let f = |phi: f64| at(phi.clamp(a, b), Side::Right);
+                least = least.min(brent_min(f, [a, b], mid, f(mid), LEAST_TOLERANCE * (b - a).max(1e-300)).1);
+            }
+        }
+    }
+    if least.is_finite() { least } else { at(0.0, Side::Right) }
+}
 
 /// Net cycle work tolerated without a balance torque, relative to the largest area.
 pub const NET_WORK_TOLERANCE: f64 = 1e-6;
@@ -65,8 +90,11 @@ fn phases(
     if !(inertia_approximate.is_finite() && ex.inertia.is_finite()) {
         return Err(EngineError::NotFiniteResult);
     }
+    // I*'s least: the machine's inertia there at every angle (a pulley's), part of the total as
+    // `existing_inertia` is, and taken off the total as it is for what the flywheel adds.
+    let least = least_inertia(&cycle, &samples);
     let flywheel = |i: f64| (i - p.existing_inertia) / (p.flywheel_ratio * p.flywheel_ratio);
-    let flywheel_inertia = Pair { approximate: flywheel(inertia_approximate), exact: flywheel(ex.inertia) };
+    let flywheel_inertia = Pair { approximate: flywheel(inertia_approximate - least), exact: flywheel(ex.inertia) };
     let speed = SpeedLaw { cycle: &cycle, ex: &ex, omega_a };
     let omega_at_start = speed.omega(0.0, 0.0, Side::Right);
     next(Phase::TimeCheck)?;
@@ -91,7 +119,8 @@ fn phases(
         cumulative: lobes.cumulative.clone(),
         energy_fluctuation: lobes.energy_fluctuation,
         inertia_approximate,
-        inertia_exact: ex.inertia,
+        inertia_exact: ex.inertia + least,
+        least_reduced_inertia: least,
         flywheel_inertia,
         omega_max: if ex.degenerate { omega_a } else { omega_a * (1.0 + half) },
         omega_min: if ex.degenerate { omega_a } else { omega_a * (1.0 - half) },
@@ -257,6 +286,7 @@ fn ensure_finite(s: &FlywheelSolution) -> Result<(), EngineError> {
         s.energy_fluctuation,
         s.inertia_approximate,
         s.inertia_exact,
+        s.least_reduced_inertia,
         s.flywheel_inertia.approximate,
         s.flywheel_inertia.exact,
         s.omega_max,

@@ -60,6 +60,7 @@ impl Kind for Flywheel {
         ("/flywheel_inertia/*", "kg*m^2"),
         ("/inertia_approximate", "kg*m^2"),
         ("/inertia_exact", "kg*m^2"),
+        ("/least_reduced_inertia", "kg*m^2"),
         ("/item_work/*/work", "J"),
         ("/kinetic_energy_at_start", "J"),
         ("/mean_power", "W"),

@@ -168,7 +168,9 @@ fn speed(r: &Value, title: String) -> Chart {
 fn wittenbauer(r: &Value, title: String) -> Option<Chart> {
     let s = rows(r, "samples");
     let curve = xy(s, |x| num(x, "reduced_inertia"), |x| num(x, "work"));
-    let (inertia, t0) = (num(r, "inertia_exact")?, num(r, "kinetic_energy_at_start")?);
+    // Wittenbauer's I, added to I*(φ): the total less I*'s least.
+    let inertia = num(r, "inertia_exact")? - num(r, "least_reduced_inertia").unwrap_or(0.0);
+    let t0 = num(r, "kinetic_energy_at_start")?;
     let (max, min) = (num(r, "omega_max")?, num(r, "omega_min")?);
     let (x0, x1) = curve.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.0), b.max(p.0)));
     let pad = ((x1 - x0) * 0.15).max(x0.abs().max(1e-3) * 0.02);

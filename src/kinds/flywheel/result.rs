@@ -101,11 +101,18 @@ pub struct FlywheelResult {
     pub cumulative: Vec<f64>,
     /// ΔE = S_max − S_min, J.
     pub energy_fluctuation: f64,
-    /// ΔE/(ε ω_a²), I* neglected: total inertia on the reference shaft.
+    /// ΔE/(ε ω_a²), I* neglected: the total inertia on the reference shaft, kg·m².
     pub inertia_approximate: f64,
-    /// Constant inertia I with which (I + I*(φ)) runs at exactly ε and ω_a (Wittenbauer).
+    /// The total inertia on the reference shaft, exactly (Wittenbauer): the
+    /// constant inertia I with which I + I*(φ) runs at exactly ε and ω_a, plus
+    /// `least_reduced_inertia` (the machine's inertia there at every angle, a
+    /// pulley's), kg·m². The same whether a pulley is a body of the `machine`
+    /// or `existing_inertia`.
     pub inertia_exact: f64,
-    /// Inertia of the flywheel on its own shaft: (inertia − existing_inertia)/ratio².
+    /// min I*(φ) over the cycle (of `reduced_inertia` and the `machine`), kg·m².
+    pub least_reduced_inertia: f64,
+    /// What the flywheel adds, on its own shaft: each total less
+    /// `existing_inertia` and `least_reduced_inertia`, over ratio², kg·m².
     pub flywheel_inertia: InertiaPair,
     pub omega_max: f64,
     pub omega_min: f64,
@@ -163,6 +170,7 @@ impl FlywheelResult {
             energy_fluctuation: s.energy_fluctuation,
             inertia_approximate: s.inertia_approximate,
             inertia_exact: s.inertia_exact,
+            least_reduced_inertia: s.least_reduced_inertia,
             flywheel_inertia: InertiaPair {
                 approximate: s.flywheel_inertia.approximate,
                 exact: s.flywheel_inertia.exact,
