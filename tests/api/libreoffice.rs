@@ -89,7 +89,8 @@ async fn libreoffice_calc_fetches_answers_with_webservice() {
 /// digit; without `decimal=comma`, VALOR cannot read the answer (why the
 /// parameter exists). The closed-form scaling of case F1 checks I_approx.
 /// An error (ε = 3) reaches its cell as the service's Spanish reason with
-/// `lang=es&errors=text`, where Calc shows only #¡VALOR! for a 4xx.
+/// `lang=es&errors=text`, where Calc shows only #¡VALOR! for a 4xx; and
+/// through the README's SI.ERROR(VALOR(x); x), not as Err:502.
 #[tokio::test]
 async fn a_spanish_calc_reads_decimal_commas() {
     let spanish = std::path::Path::new("/usr/lib/libreoffice/program/resource/es").exists();
@@ -117,9 +118,11 @@ async fn a_spanish_calc_reads_decimal_commas() {
     assert_ne!(cells["B9_error"], 0, "VALOR of a decimal point in es-ES is an error: {cells}");
     let kept = cells["B17"].as_f64().unwrap();
     assert!((kept - 0.025).abs() < 1e-6, "ε = 0,025 reached the service with every digit: {kept}");
-    let reason = app.get(&format!("{base}?F=1200,5&eps=3&lang=es&errors=text")).await.text;
+    let reason = app.get(&format!("{base}?F=1200,5&eps=3&decimal=comma&lang=es&errors=text")).await.text;
     assert!(reason.starts_with("eps: 3 está por encima del valor máximo"), "{reason}");
     assert_eq!(cells["B18"].as_str().unwrap(), reason, "the cell shows the reason in Spanish, not #¡VALOR!");
+    // The README's recipe, SI.ERROR(VALOR(x); x): the number where there is one, else the reason.
+    assert_eq!(cells["B19"].as_str().unwrap(), reason, "SI.ERROR gives the reason, not Err:502");
 }
 
 /// The example sheets a lab opens (examples/p103-flywheel.fods and its
@@ -139,6 +142,9 @@ async fn the_example_sheets_call_what_the_service_has() {
                 text.split("table:formula=\"").skip(1).filter_map(|f| f.split('"').next()).collect();
             let commas = formulas.iter().filter(|f| f.contains("decimal=comma")).count();
             assert_eq!(commas, formulas.len() - 1, "{file}: every call asks for decimal commas but B9's");
+            // A parameter is concatenated with every digit (TEXT(B3;"0,00") sent ε = 0,025 as 0,03).
+            let rounded = formulas.iter().filter(|f| f.contains("TEXT(")).count();
+            assert!(rounded <= 1, "{file}: {rounded} formulas round a parameter with TEXT (B9 shows why not)");
         }
         calls_exist(&app, &text).await;
     }
@@ -155,7 +161,9 @@ async fn calls_exist(app: &TestApp, text: &str) {
         let names: Vec<&str> =
             query.split('&').filter_map(|p| p.split_once('=').map(|(n, _)| n.trim_matches('"'))).collect();
         let t = app.get(&format!("/v1/templates/{id}")).await.json();
-        for name in names.iter().filter(|n| **n != "unit") {
+        // The query's own names (a unit, the decimal mark, the language, errors as text) are no parameters.
+        let own = ["unit", "decimal", "lang", "errors"];
+        for name in names.iter().filter(|n| !own.contains(n)) {
             assert!(t["parameters"].get(*name).is_some(), "{call}: no parameter {name}");
         }
         let answer = app.get(&format!("/v1/templates/{id}/result/{pointer}")).await;

@@ -106,7 +106,11 @@ def spanish_sheet(cell):
     cell("B17").FormulaLocal = f'=VALOR(SERVICIOWEB({url}check/irregularity?F="&B2&"&eps="&C17&"&decimal=comma"))'
     # An error reaches the cell as its reason, in Spanish (errors=text), not as #¡VALOR!.
     cell("A18").String = "ε = 3: el motivo"
-    cell("B18").FormulaLocal = f'=SERVICIOWEB({url}inertia_exact?F="&B2&"&eps=3&lang=es&errors=text")'
+    cell("B18").FormulaLocal = f'=SERVICIOWEB({url}inertia_exact?F="&B2&"&eps=3&decimal=comma&lang=es&errors=text")'
+    # The README's recipe: the number where there is one, else the reason (not Err:502).
+    refused = f'SERVICIOWEB({url}inertia_exact?F="&B2&"&eps="&C19&"&decimal=comma&lang=es&errors=text")'
+    cell("A19").String, cell("C19").Value = "ε = 3 con SI.ERROR", 3
+    cell("B19").FormulaLocal = f'=SI.ERROR(VALOR({refused});{refused})'
 
 
 # Calc's interface language comes from the environment at its first start
@@ -150,7 +154,8 @@ try:
     if SPANISH:
         out["B17"] = cell("B17").Value
         out["B18"] = cell("B18").String
-        out["errors"].update({name: cell(name).getError() for name in ["B17", "B18"]})
+        out["B19"] = cell("B19").String
+        out["errors"].update({name: cell(name).getError() for name in ["B17", "B18", "B19"]})
     if len(ARGS) > 2:
         target = uno.systemPathToFileUrl(os.path.abspath(ARGS[2]))
         doc.storeToURL(target, (prop("FilterName", "OpenDocument Spreadsheet Flat XML"),))
