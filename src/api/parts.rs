@@ -103,15 +103,27 @@ pub fn value_at(
 
 /// A part as its answer's type and text: a scalar alone as text (numbers in
 /// shortest round-trip form), an object or array (or any, when `json`) as JSON.
+/// With a decimal comma (a sheet in a Spanish locale), an array of scalars
+/// is text too, its items separated by `; ` (JSON has no decimal comma).
 pub fn text_of(value: &Value, json: bool, decimal: Decimal) -> (&'static str, String) {
-    if json || value.is_object() || value.is_array() {
-        return ("application/json", value.to_string());
+    let scalars = |v: &Vec<Value>| v.iter().all(|x| !x.is_object() && !x.is_array());
+    match value {
+        Value::Array(items) if !json && decimal == Decimal::Comma && scalars(items) => {
+            let texts: Vec<String> = items.iter().map(|x| scalar(x, decimal)).collect();
+            ("text/plain; charset=utf-8", texts.join("; "))
+        }
+        _ if json || value.is_object() || value.is_array() => ("application/json", value.to_string()),
+        _ => ("text/plain; charset=utf-8", scalar(value, decimal)),
     }
+}
+
+/// A scalar's text: a number in shortest round-trip form, with `decimal`'s mark.
+fn scalar(value: &Value, decimal: Decimal) -> String {
     let text = match value.as_f64() {
         Some(x) if !value.is_i64() && !value.is_u64() => tables::number_text(x),
         _ => crate::kind::cell(value),
     };
-    ("text/plain; charset=utf-8", decimal.written(text))
+    decimal.written(text)
 }
 
 /// Every scalar of a job's result with its unit.

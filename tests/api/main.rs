@@ -17,6 +17,7 @@ mod connections;
 mod constants;
 mod contact;
 mod container;
+mod course_answers;
 mod crash;
 mod decimal;
 mod deferred;

@@ -12,8 +12,9 @@ use serde_json::Value;
 use sha2::{Digest, Sha256};
 use std::collections::{BTreeMap, HashMap};
 
-/// The template's request with `given` parameters set (the others at their
-/// defaults); unknown names and bad values are a 400 naming each.
+/// The template's request with `given` parameters set (the others, and
+/// those given empty, at their defaults); unknown names and bad values are
+/// a 400 naming each.
 pub fn request_for(t: &Template, given: &HashMap<String, String>, ignore: &[&str]) -> Result<Value, ApiError> {
     let mut request = t.request.clone();
     let mut errors = Vec::new();
@@ -26,6 +27,10 @@ pub fn request_for(t: &Template, given: &HashMap<String, String>, ignore: &[&str
             errors.push(FieldError::parameter_said(name, msg.arg("known", known.join(", "))));
             continue;
         };
+        // An empty value (a sheet's empty cell sent as `F=`) is the default.
+        if text.trim().is_empty() {
+            continue;
+        }
         match value_for(p, text) {
             Ok(v) => match request.pointer_mut(&p.pointer) {
                 Some(slot) => *slot = integral(p, slot, text).unwrap_or(v),

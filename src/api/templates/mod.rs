@@ -95,7 +95,8 @@ pub async fn stored_job(
     kind.job(state, bytes.into(), to).await
 }
 
-/// Lists the templates: the built-in ones (the course's problems), then those clients stored.
+/// Lists the templates: the built-in ones (the course's problems), then those clients stored;
+/// titles and descriptions in Spanish for a Spanish asker (`?lang=es`, `Accept-Language: es`).
 #[utoipa::path(get, path = "/v1/templates", operation_id = "list_templates", tag = "templates",
     responses((status = 200, description = "Every template", body = TemplateList)))]
 pub async fn list(State(state): State<AppState>) -> Result<axum::Json<TemplateList>, ApiError> {
@@ -103,15 +104,17 @@ pub async fn list(State(state): State<AppState>) -> Result<axum::Json<TemplateLi
     for body in state.store.templates().await? {
         items.extend(serde_json::from_str::<Template>(&body).ok());
     }
-    Ok(axum::Json(TemplateList { items }))
+    let lang = crate::i18n::current();
+    Ok(axum::Json(TemplateList { items: items.into_iter().map(|t| t.in_language(lang)).collect() }))
 }
 
-/// Reads a template: its kind, request, and parameters with their units and ranges.
+/// Reads a template: its kind, request, and parameters with their units and ranges (its title
+/// and descriptions in Spanish for a Spanish asker).
 #[utoipa::path(get, path = "/v1/templates/{id}", operation_id = "get_template", tag = "templates",
     params(("id" = String, Path, description = "Template id, e.g. `p103-slider-flywheel`")),
     responses((status = 200, description = "The template", body = Template), ReadErrors))]
 pub async fn get(State(state): State<AppState>, Path(id): Path<String>) -> Result<axum::Json<Template>, ApiError> {
-    Ok(axum::Json(find(&state, &id).await?))
+    Ok(axum::Json(find(&state, &id).await?.in_language(crate::i18n::current())))
 }
 
 /// The job a template gives for its parameters (`?NAME=VALUE&...`, the

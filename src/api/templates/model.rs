@@ -100,6 +100,24 @@ impl Template {
         es.or(self.source.as_deref())
     }
 
+    /// The template as a reader in `lang` reads it: its title, source and
+    /// parameters' descriptions in that language where it has them (the
+    /// `es` object stays beside them).
+    pub fn in_language(mut self, lang: Lang) -> Self {
+        if lang == Lang::Es {
+            self.title = Some(self.title_in(lang));
+            self.source = self.source_in(lang).map(String::from);
+            let names: Vec<String> = self.parameters.keys().cloned().collect();
+            for name in names {
+                let text = self.description_in(&name, lang).map(String::from);
+                if let Some(p) = self.parameters.get_mut(&name) {
+                    p.description = text;
+                }
+            }
+        }
+        self
+    }
+
     /// Parameter `name`'s description in `lang`.
     pub fn description_in(&self, name: &str, lang: Lang) -> Option<&str> {
         let es = self.es.as_ref().filter(|_| lang == Lang::Es).and_then(|e| e.parameters.get(name));

@@ -53,7 +53,8 @@ pub enum DiskSize {
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DiskSpec {
-    pub density: f64,
+    /// ρ (kg/m³): needed for the thickness (and to size by it), not for M = 2I/R².
+    pub density: Option<f64>,
     pub size: DiskSize,
 }
 
@@ -95,7 +96,8 @@ pub struct Pair {
 pub struct Disk {
     pub mass: f64,
     pub radius: f64,
-    pub thickness: f64,
+    /// None without a density.
+    pub thickness: Option<f64>,
     pub rim_speed: f64,
 }
 

@@ -241,14 +241,16 @@ fn size_disk(spec: DiskSpec, inertia: f64, omega: f64, warnings: &mut Vec<Condit
         warnings.push(Condition::NoDisk { inertia });
         return None;
     }
-    let rho = spec.density;
-    let radius = match spec.size {
-        DiskSize::RimSpeed(v) => v / omega,
-        DiskSize::Radius(r) => r,
-        DiskSize::Thickness(e) => (2.0 * inertia / (rho * PI * e)).powf(0.25),
+    let radius = match (spec.size, spec.density) {
+        (DiskSize::RimSpeed(v), _) => v / omega,
+        (DiskSize::Radius(r), _) => r,
+        (DiskSize::Thickness(e), Some(rho)) => (2.0 * inertia / (rho * PI * e)).powf(0.25),
+        // The request asks a density with a thickness.
+        (DiskSize::Thickness(_), None) => return None,
     };
     let mass = 2.0 * inertia / (radius * radius);
-    Some(Disk { mass, radius, thickness: mass / (rho * PI * radius * radius), rim_speed: radius * omega })
+    let thickness = spec.density.map(|rho| mass / (rho * PI * radius * radius));
+    Some(Disk { mass, radius, thickness, rim_speed: radius * omega })
 }
 
 /// The sampled table (angle, M*, I*, W, ω) and its quadrature error.
@@ -298,7 +300,7 @@ fn ensure_finite(s: &FlywheelSolution) -> Result<(), EngineError> {
     ];
     let lists = s.cumulative.iter().chain(&s.crossings).chain(&s.item_work);
     let rows = s.samples.iter().flat_map(|r| [r.reduced_torque, r.reduced_inertia, r.work, r.speed]);
-    let disk = s.disk.iter().flat_map(|d| [d.mass, d.radius, d.thickness, d.rim_speed]);
+    let disk = s.disk.iter().flat_map(|d| [d.mass, d.radius, d.thickness.unwrap_or(0.0), d.rim_speed]);
     if scalars.iter().chain(lists).copied().chain(rows).chain(disk).all(f64::is_finite) {
         Ok(())
     } else {

@@ -441,6 +441,7 @@ flywheel-speeds = give exactly one of: mean_speed + irregularity, mean_speed + m
 flywheel-torques-count = must hold 1 to { $max } items (or give a machine)
 flywheel-one-balance = at most one item may have "balance": true
 flywheel-value-or-balance = give either "value" or "balance": true
+flywheel-disk-density = a disk sized by its thickness needs its density
 flywheel-disk = give exactly one of rim_speed, radius or thickness
 
 ## A check's request, a class's CSV, a study

@@ -441,6 +441,7 @@ flywheel-speeds = dé exactamente una de estas parejas: mean_speed + irregularit
 flywheel-torques-count = debe tener de 1 a { $max } elementos (o dé una máquina)
 flywheel-one-balance = como mucho un elemento puede tener "balance": true
 flywheel-value-or-balance = dé "value" o bien "balance": true
+flywheel-disk-density = un disco dimensionado por su espesor necesita su densidad
 flywheel-disk = dé exactamente uno de rim_speed, radius o thickness
 
 ## La petición de una corrección, el CSV de una clase, un estudio

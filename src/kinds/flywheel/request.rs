@@ -108,12 +108,18 @@ pub struct FlywheelDto {
     pub disk: Option<DiskDto>,
 }
 
-/// A solid disk: `density` and exactly one of `rim_speed`, `radius`, `thickness`.
+/// A solid disk holding `flywheel_inertia.exact` (I = ½MR²): exactly one
+/// of `rim_speed`, `radius`, `thickness`, and its `density` (needed with a
+/// thickness; without one, a disk sized by its radius or rim speed has its
+/// mass M = 2I/R² and no thickness).
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct DiskDto {
-    #[schema(value_type = Quantity)]
-    pub density: Quantity,
-    /// R·k·ω_a, at the mean speed of the flywheel's shaft.
+    /// ρ, e.g. `"7800 kg/m^3"`.
+    #[serde(default)]
+    #[schema(value_type = Option<Quantity>)]
+    pub density: Option<Quantity>,
+    /// The rim's speed R·k·ω_a, k the flywheel shaft's `ratio` and ω_a the
+    /// reference shaft's mean speed.
     #[schema(value_type = Option<Quantity>)]
     pub rim_speed: Option<Quantity>,
     #[schema(value_type = Option<Quantity>)]
@@ -301,7 +307,11 @@ fn torque(e: &mut Errors, t: &TorqueDto, i: usize, period: f64) -> Option<Torque
 }
 
 fn disk(e: &mut Errors, d: &DiskDto) -> Option<DiskSpec> {
-    let density = e.positive(&d.density, Dim::DENSITY, "/flywheel/disk/density");
+    let density = match &d.density {
+        Some(q) => Some(Some(e.positive(q, Dim::DENSITY, "/flywheel/disk/density")?)),
+        None if d.thickness.is_some() => e.refuse("/flywheel/disk/density", Msg::new("flywheel-disk-density")),
+        None => Some(None),
+    };
     let size = match (&d.rim_speed, &d.radius, &d.thickness) {
         (Some(v), None, None) => e.positive(v, Dim::SPEED, "/flywheel/disk/rim_speed").map(DiskSize::RimSpeed),
         (None, Some(r), None) => e.positive(r, Dim::LENGTH, "/flywheel/disk/radius").map(DiskSize::Radius),

@@ -44,9 +44,9 @@ pub struct DiskOut {
     pub mass: f64,
     /// m
     pub radius: f64,
-    /// m
-    pub thickness: f64,
-    /// m/s, at the mean speed of the flywheel's shaft.
+    /// m; null without a `density`.
+    pub thickness: Option<f64>,
+    /// m/s, R·k·ω_a: the rim's mean speed (k the flywheel shaft's `ratio`).
     pub rim_speed: f64,
 }
 

@@ -1,0 +1,76 @@
+//! The course's answers as a teaching assistant meets them (issue 72): a
+//! sheet's empty cell, a part that is a list read with a decimal comma, a
+//! disk sized without a density. Each reference is the service's own
+//! answer to the same problem written the plain way, or a closed form.
+
+use crate::helpers::TestApp;
+use axum::http::StatusCode;
+use serde_json::json;
+
+const TEMPLATE: &str = "/v1/templates/p103-slider-flywheel";
+
+/// A sheet's empty cell sent as `F=` is the parameter's default, not an
+/// error: the same job as no `F` at all. An unknown name stays an error
+/// even empty.
+#[tokio::test]
+async fn an_empty_parameter_is_its_default() {
+    let app = TestApp::new().await;
+    let plain = app.get(&format!("{TEMPLATE}/job?eps=0.03")).await;
+    let empty = app.get(&format!("{TEMPLATE}/job?F=&eps=0.03")).await;
+    assert_eq!(empty.status, StatusCode::OK, "{}", empty.text);
+    assert_eq!(plain.json()["id"], empty.json()["id"], "one job");
+    let typo = app.get(&format!("{TEMPLATE}/job?G=&eps=0.03")).await;
+    assert_eq!(typo.status, StatusCode::BAD_REQUEST, "{}", typo.text);
+}
+
+/// A list part read with `decimal=comma` is text a Spanish sheet can
+/// split: its numbers with a comma, separated by `; `, each the JSON
+/// answer's number to every digit.
+#[tokio::test]
+async fn a_list_part_is_written_with_a_decimal_comma() {
+    let app = TestApp::new().await;
+    let json = app.get(&format!("{TEMPLATE}/result/crossings")).await.json();
+    let r = app.get(&format!("{TEMPLATE}/result/crossings?decimal=comma")).await;
+    assert_eq!(r.status, StatusCode::OK, "{}", r.text);
+    assert!(r.content_type.starts_with("text/plain"), "{}", r.content_type);
+    let read: Vec<f64> = r.text.split("; ").map(|x| x.replace(',', ".").parse().unwrap()).collect();
+    let expected: Vec<f64> = json.as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+    assert!(expected.len() == 2 && read == expected, "{} against {json}", r.text);
+}
+
+/// A disk sized by its radius needs no density: its mass is M = 2I/R²
+/// (I = ½MR², I the flywheel's exact inertia) and its thickness, which
+/// would need ρ, is null; by its thickness the density is asked for.
+#[tokio::test]
+async fn a_disk_sized_by_its_radius_needs_no_density() {
+    let app = TestApp::new().await;
+    let mut job = app.get(&format!("{TEMPLATE}/job")).await.json()["request"].clone();
+    job["flywheel"] = json!({"disk": {"radius": "0.5 m"}});
+    let r = app.post("/v1/flywheel", &job).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let result = r.json()["result"].clone();
+    let (mass, inertia) =
+        (result["disk"]["mass"].as_f64().unwrap(), result["flywheel_inertia"]["exact"].as_f64().unwrap());
+    assert!((mass - 2.0 * inertia / 0.25).abs() <= 1e-12 * mass, "{mass} against 2I/R²");
+    assert_eq!(result["disk"]["thickness"], json!(null));
+    job["flywheel"] = json!({"disk": {"thickness": "0.1 m"}});
+    let r = app.post("/v1/flywheel", &job).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    assert_eq!(r.json()["errors"][0]["pointer"], "/flywheel/disk/density", "{}", r.text);
+}
+
+/// A template read in Spanish has its Spanish title and descriptions where
+/// the English ones were (its `es` object beside them); in English, the
+/// English ones.
+#[tokio::test]
+async fn a_template_read_in_spanish_is_titled_in_spanish() {
+    let app = TestApp::new().await;
+    let english = app.get(TEMPLATE).await.json();
+    let spanish = app.get(&format!("{TEMPLATE}?lang=es")).await.json();
+    assert_eq!(spanish["title"], english["es"]["title"], "{spanish}");
+    assert_eq!(spanish["parameters"]["F"]["description"], english["es"]["parameters"]["F"]);
+    assert!(english["title"].as_str().unwrap().starts_with("P.103: flywheel"), "{english}");
+    let listed = app.get("/v1/templates?lang=es").await.json();
+    let p103 = listed["items"].as_array().unwrap().iter().find(|t| t["id"] == "p103-slider-flywheel").unwrap();
+    assert_eq!(p103["title"], english["es"]["title"]);
+}
