@@ -141,7 +141,11 @@ impl<K: Kind> AnyKind for Registered<K> {
         K::table(result)
     }
     fn unit(&self, result: &Value, pointer: &[&str]) -> Option<String> {
-        K::unit(result, pointer)
+        // A template's statement quantity has the unit of the field it comes from.
+        match statement_source(result, pointer) {
+            Some(from) => K::unit(result, &from.iter().map(String::as_str).collect::<Vec<_>>()),
+            None => K::unit(result, pointer),
+        }
     }
     fn plots(&self, job: &plots::Job) -> Vec<crate::kind::chart::Listed> {
         (K::PLOTS.list)(job)
@@ -294,5 +298,21 @@ impl Registry {
     /// The OpenAPI document's text, as served and as `cargo run -- openapi` prints it.
     pub fn openapi_json(&self) -> &str {
         std::str::from_utf8(&self.document().1).unwrap_or_default()
+    }
+}
+
+/// The key of a template's statement quantities in its job's result
+/// (`templates/statement.rs`), and of where each comes from beside them.
+pub const STATEMENT: &str = "statement";
+pub const STATEMENT_FROM: &str = "statement_from";
+
+/// The pointer (as tokens) whose unit `/statement/NAME` has, if it is one.
+fn statement_source(result: &Value, pointer: &[&str]) -> Option<Vec<String>> {
+    match pointer {
+        [STATEMENT, name] => {
+            let of = result[STATEMENT_FROM][*name].as_str()?;
+            Some(of.split('/').skip(1).map(|t| t.replace("~1", "/").replace("~0", "~")).collect())
+        }
+        _ => None,
     }
 }

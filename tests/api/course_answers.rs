@@ -74,3 +74,41 @@ async fn a_template_read_in_spanish_is_titled_in_spanish() {
     let p103 = listed["items"].as_array().unwrap().iter().find(|t| t["id"] == "p103-slider-flywheel").unwrap();
     assert_eq!(p103["title"], english["es"]["title"]);
 }
+
+/// A printed magnitude graded as printed: every built-in template's
+/// statement quantity that carries the solution's printed number (March
+/// 2010's C_r = 35.8099 N·m, January 2012's work 509.117 J, May 2014's
+/// M_r = 38.197 N·m) passes `/v1/check` at the default 1 %, given bare and
+/// with its unit; the signed field it comes from still says "opposite
+/// sign". The quantity is read as a value too, in another unit (1 N·m =
+/// 1e-3 kN·m).
+#[tokio::test]
+async fn a_printed_magnitude_is_graded_as_printed() {
+    let app = TestApp::new().await;
+    let list = app.get("/v1/templates").await.json();
+    let mut graded = 0;
+    for t in list["items"].as_array().unwrap() {
+        let Some(statement) = t["statement"].as_object() else { continue };
+        for (name, s) in statement {
+            let Some(printed) = s["printed"].as_f64() else { continue };
+            let (id, pointer) = (t["id"].as_str().unwrap(), format!("/statement/{name}"));
+            let unit = if name.ends_with("torque") { "N*m" } else { "J" };
+            let answers = json!({&pointer: printed, s["of"].as_str().unwrap(): printed});
+            let r = app.post("/v1/check", &json!({"template": id, "answers": answers})).await;
+            assert_eq!(r.status, StatusCode::CREATED, "{id}: {}", r.text);
+            let items = r.json()["result"]["items"].clone();
+            let item = |p: &str| items.as_array().unwrap().iter().find(|i| i["pointer"] == p).unwrap().clone();
+            assert_eq!(item(&pointer)["pass"], true, "{id} {name}: {}", item(&pointer));
+            assert_eq!(item(s["of"].as_str().unwrap())["pass"], false, "{id}: the signed field is the opposite");
+            let with_unit = json!({"template": id, "answers": {&pointer: format!("{printed} {unit}")}});
+            let r = app.post("/v1/check", &with_unit).await.json();
+            assert_eq!(r["result"]["score"], 1.0, "{id} {name} with its unit: {r}");
+            graded += 1;
+        }
+    }
+    assert!(graded >= 3, "{graded} printed magnitudes");
+    let base = "/v1/templates/exam-2010-march/result/statement/resisting_torque";
+    let newtons: f64 = app.get(base).await.text.parse().unwrap();
+    let kilo: f64 = app.get(&format!("{base}?unit=kN*m")).await.text.parse().unwrap();
+    assert!((newtons - 35.8099).abs() < 1e-4 && (kilo - newtons / 1000.0).abs() < 1e-15, "{newtons} {kilo}");
+}

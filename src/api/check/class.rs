@@ -228,8 +228,9 @@ async fn graded(
         Some(found) => found.clone(),
         None => {
             let (job, _reserved) = job_for(state, t, &given, Want::Job).await?;
-            let result: Value =
+            let mut result: Value =
                 serde_json::from_slice(&job.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
+            crate::api::templates::statement::add(&t.statement, &mut result);
             if seen.bytes + job.result.len() > REFERENCE_BYTES {
                 *seen = References::default();
             }

@@ -67,18 +67,25 @@ pub async fn check_job(
         return Err(ApiError::Invalid(unknown));
     }
     // The reference's memory stays reserved until the check is stored.
-    let (kind, (reference, _reserved)) = reference(state, &r).await?;
+    let (kind, (reference, _reserved), template) = reference(state, &r).await?;
     let (result, id) = (reference.result.clone(), reference.id.clone());
     let grading = move |_: &Limits| {
-        let result: Value =
+        let mut result: Value =
             serde_json::from_slice(&result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
+        if let Some(t) = &template {
+            templates::statement::add(&t.statement, &mut result);
+        }
         grade(&r, kind, &result, Some(id))
     };
     create::compute_and_store(state, create::Work::own(CHECK.name(), grading), raw, to).await
 }
 
-/// The reference job of a check: stored, or computed and stored.
-async fn reference(state: &AppState, r: &CheckRequest) -> Result<(&'static dyn AnyKind, Held), ApiError> {
+/// The reference job of a check: stored, or computed and stored; and its
+/// template, when it has one (its statement's quantities are graded too).
+async fn reference(
+    state: &AppState,
+    r: &CheckRequest,
+) -> Result<(&'static dyn AnyKind, Held, Option<Template>), ApiError> {
     if let Some(id) = &r.job {
         let (row, reserved) = read::load(state, id, read::READ_MEMORY_FACTOR).await.map_err(|e| match e {
             ApiError::NotFound(_) => {
@@ -87,7 +94,7 @@ async fn reference(state: &AppState, r: &CheckRequest) -> Result<(&'static dyn A
             e => e,
         })?;
         read::done(&row).map_err(|e| ApiError::Invalid(vec![FieldError::said("/job", e.msg())]))?;
-        return Ok((gradable(&state.kinds, &row.kind, "/job")?, (row, reserved)));
+        return Ok((gradable(&state.kinds, &row.kind, "/job")?, (row, reserved), None));
     }
     if let Some(id) = &r.template {
         let t = templates::find(state, id).await.map_err(|e| no_template(e, id))?;
@@ -96,12 +103,12 @@ async fn reference(state: &AppState, r: &CheckRequest) -> Result<(&'static dyn A
             templates::drawable(&t).map_err(|why| ApiError::Invalid(vec![FieldError::said("/variant", why)]))?;
         }
         let row = templates::job_for(state, &t, &given(&t, r), templates::Want::Job).await.map_err(under_parameters)?;
-        return Ok((kind, row));
+        return Ok((kind, row, Some(t)));
     }
     let (kind, request) = kind_request(&state.kinds, r)?;
     let row =
         templates::stored_job(state, kind, request, templates::Want::Job).await.map_err(|e| e.under("/request"))?;
-    Ok((kind, row))
+    Ok((kind, row, None))
 }
 
 /// The kind of a reference: any but `check`.

@@ -8,6 +8,7 @@ mod answers;
 mod apply;
 mod derived;
 mod model;
+pub mod statement;
 pub mod table;
 pub mod variants;
 
@@ -201,6 +202,7 @@ pub async fn result(
     let mut result =
         serde_json::from_slice(&row.result).map_err(|e| ApiError::Internal(format!("stored result: {e}")))?;
     crate::kind::notes::localise(&mut result);
+    statement::add(&t.statement, &mut result);
     let (mime, text) = parts::text(&state.kinds, &row, &result, &pointer, &q, &headers)?;
     let body = bytes::Bytes::from(text);
     // Kept only of a stored job (an unstored row has no sequence number):

@@ -10,6 +10,8 @@ use serde_json::Value;
 use std::collections::BTreeMap;
 use utoipa::ToSchema;
 
+pub use super::statement::Stated;
+
 /// Query names a parameter may not take (they mean something else in a template's URL).
 pub const RESERVED: &[&str] =
     &["unit", "values", "angles", "label", "format", "seed", "count", "decimal", "lang", "errors"];
@@ -63,6 +65,12 @@ pub struct Template {
     /// in SI), e.g. a bar's inertia `"m*1^2/12"` as its mass m changes.
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub derived: BTreeMap<String, String>,
+    /// The statement's quantities, by name: where the statement prints a
+    /// magnitude (a resisting torque C_r), the field it comes from and its
+    /// sign, so that `/statement/NAME` of the template's job is that number
+    /// as printed (see [`Stated`]).
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub statement: BTreeMap<String, Stated>,
     /// Shipped with the service (true) or created by a client.
     #[serde(default)]
     pub builtin: bool,
@@ -141,6 +149,9 @@ pub struct NewTemplate {
     /// Fields of `request` that follow the parameters (see Template).
     #[serde(default)]
     pub derived: BTreeMap<String, String>,
+    /// The statement's quantities (see Template).
+    #[serde(default)]
+    pub statement: BTreeMap<String, Stated>,
     #[schema(max_length = 200)]
     pub title: Option<String>,
     /// A slug (lower-case letters, digits, `-`), unique: the template's id.
@@ -241,6 +252,7 @@ pub fn checked(
     }
     let names: Vec<&str> = t.parameters.keys().map(String::as_str).collect();
     errors.extend(super::derived::errors(&t.derived, &names, &t.request));
+    errors.extend(super::statement::errors(&t.statement));
     for name in t.es.iter().flat_map(|es| es.parameters.keys()).filter(|n| !t.parameters.contains_key(*n)) {
         let at = format!("/es/parameters/{}", crate::kind::problem::escape(name));
         errors.push(FieldError::said(at, Msg::new("template-no-parameter").arg("name", name)));
@@ -257,6 +269,7 @@ pub fn checked(
         request: t.request,
         parameters: t.parameters,
         derived: t.derived,
+        statement: t.statement,
         builtin: false,
         es: t.es,
     })

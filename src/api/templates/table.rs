@@ -262,6 +262,7 @@ pub async fn run(
             Ok((row, _reserved)) => {
                 let mut result: Value = serde_json::from_slice(&row.result).unwrap_or_default();
                 crate::kind::notes::localise(&mut result);
+                super::statement::add(&t.statement, &mut result);
                 let found: Vec<Option<&Value>> = pointers.iter().map(|p| at(&result, &tokens(p))).collect();
                 let error = absent(&result, pointers, &found);
                 // A job answered unstored (seq 0: `NewJob::unstored`) has no id to name.
