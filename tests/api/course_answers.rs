@@ -112,3 +112,48 @@ async fn a_printed_magnitude_is_graded_as_printed() {
     let kilo: f64 = app.get(&format!("{base}?unit=kN*m")).await.text.parse().unwrap();
     assert!((newtons - 35.8099).abs() < 1e-4 && (kilo - newtons / 1000.0).abs() < 1e-15, "{newtons} {kilo}");
 }
+
+/// P.63 (the notes' Scotch yoke, by the energy theorem): (I_0 + mR² +
+/// MR² sin²φ)·φ̈ + MR² sin φ cos φ·φ̇² = M_m − F_f·R·sin φ from rest at φ
+/// = 0, integrated here by classical Runge–Kutta at h = 1e-4 s (its error
+/// ~1e-13), against the template's mechanism (its four bodies and joints,
+/// solved by the engine's DAE) at every sample to 1e-8 relative; at
+/// M_m = 3 N·m too (a parameter).
+#[tokio::test]
+async fn p63_scotch_yoke_follows_the_notes_equation() {
+    let app = TestApp::new().await;
+    let (r, i0, m, big_m, ff) = (0.1, 0.05, 0.5, 2.0, 10.0);
+    for mm in [2.0, 3.0] {
+        let rate = |[phi, w]: [f64; 2]| {
+            let (s, c) = phi.sin_cos();
+            let inertia = i0 + m * r * r + big_m * r * r * s * s;
+            [w, (mm - ff * r * s - big_m * r * r * s * c * w * w) / inertia]
+        };
+        let job = app.get(&format!("/v1/templates/p63-scotch-yoke/job?Mm={mm}")).await.json();
+        let (mut y, mut t, h) = ([0.0f64, 0.0], 0.0, 1e-4);
+        for sample in job["result"]["samples"].as_array().unwrap() {
+            let until = sample["t"].as_f64().unwrap();
+            while t < until - 1e-12 {
+                let k1 = rate(y);
+                let k2 = rate([y[0] + h / 2.0 * k1[0], y[1] + h / 2.0 * k1[1]]);
+                let k3 = rate([y[0] + h / 2.0 * k2[0], y[1] + h / 2.0 * k2[1]]);
+                let k4 = rate([y[0] + h * k3[0], y[1] + h * k3[1]]);
+                for k in 0..2 {
+                    y[k] += h / 6.0 * (k1[k] + 2.0 * k2[k] + 2.0 * k3[k] + k4[k]);
+                }
+                t += h;
+            }
+            let (angle, speed) = (sample["angle"].as_f64().unwrap(), sample["speed"].as_f64().unwrap());
+            assert!(
+                (angle - y[0]).abs() <= 1e-8 * y[0].abs().max(1.0),
+                "M_m = {mm}, t = {until}: φ {angle} against {}",
+                y[0]
+            );
+            assert!(
+                (speed - y[1]).abs() <= 1e-8 * y[1].abs().max(1.0),
+                "M_m = {mm}, t = {until}: φ̇ {speed} against {}",
+                y[1]
+            );
+        }
+    }
+}

@@ -6,7 +6,7 @@ use crate::helpers::{TestApp, case, request};
 use axum::http::StatusCode;
 use serde_json::{Value, json};
 
-const BUILTIN: [&str; 27] = [
+const BUILTIN: [&str; 28] = [
     "p103-slider-flywheel",
     "p103-class",
     "p107-two-stroke-engine",
@@ -30,6 +30,7 @@ const BUILTIN: [&str; 27] = [
     "p113-pulley-flywheel",
     "grubler-count",
     "tooth-thickness",
+    "p63-scotch-yoke",
     "differential-train",
     "rotor-disk-angle",
     "rotor-disk-accelerating",

@@ -209,6 +209,7 @@ pub const LIBRARY_FILES: &[(&str, &str)] = &[
     ("p113-pulley-flywheel.json", include_str!("../../../library/p113-pulley-flywheel.json")),
     ("grubler-count.json", include_str!("../../../library/grubler-count.json")),
     ("tooth-thickness.json", include_str!("../../../library/tooth-thickness.json")),
+    ("p63-scotch-yoke.json", include_str!("../../../library/p63-scotch-yoke.json")),
     ("differential-train.json", include_str!("../../../library/differential-train.json")),
     ("rotor-disk-angle.json", include_str!("../../../library/rotor-disk-angle.json")),
     ("rotor-disk-accelerating.json", include_str!("../../../library/rotor-disk-accelerating.json")),
