@@ -157,3 +157,29 @@ async fn p63_scotch_yoke_follows_the_notes_equation() {
         }
     }
 }
+
+/// P.115's I*(φ) of the slotted-lever shaper: with r = 0.1 m, d = 0.3 m,
+/// the ram's pin at h = 0.6 m, θ = atan(r sin φ/(d + r cos φ)), θ′ =
+/// r(r + d cos φ)/s², s² = r² + d² + 2dr cos φ, x = h tan θ:
+/// I* = I_G2 + I_G4·θ′² + m6·h²θ′²/cos⁴θ (the notes' energy equation
+/// differentiated here; at φ = π, 2 + 30/4 + 50·0.36/4 = 14 kg·m²), at
+/// every step to 1e-10 relative, at the statement's masses and at m6 = 80.
+#[tokio::test]
+async fn p115_reduced_inertia_is_the_notes_energy_equation() {
+    let app = TestApp::new().await;
+    let (r, d, h) = (0.1f64, 0.3f64, 0.6f64);
+    for m6 in [50.0, 80.0] {
+        let job = app.get(&format!("/v1/templates/p115-shaper/job?m6={m6}")).await.json();
+        let steps = job["result"]["steps"].as_array().unwrap_or_else(|| panic!("{job}")).clone();
+        assert_eq!(steps.len(), 36);
+        for step in steps {
+            let phi = -step["input"].as_f64().unwrap();
+            let s2 = r * r + d * d + 2.0 * d * r * phi.cos();
+            let theta = (r * phi.sin()).atan2(d + r * phi.cos());
+            let rate = r * (r + d * phi.cos()) / s2;
+            let expected = 2.0 + 30.0 * rate * rate + m6 * h * h * rate * rate / theta.cos().powi(4);
+            let got = step["reduced_inertia"].as_f64().unwrap();
+            assert!((got - expected).abs() <= 1e-10 * expected, "m6 = {m6}, φ = {phi}: {got} against {expected}");
+        }
+    }
+}

@@ -6,7 +6,7 @@ use crate::helpers::{TestApp, case, request};
 use axum::http::StatusCode;
 use serde_json::{Value, json};
 
-const BUILTIN: [&str; 28] = [
+const BUILTIN: [&str; 29] = [
     "p103-slider-flywheel",
     "p103-class",
     "p107-two-stroke-engine",
@@ -31,6 +31,7 @@ const BUILTIN: [&str; 28] = [
     "grubler-count",
     "tooth-thickness",
     "p63-scotch-yoke",
+    "p115-shaper",
     "differential-train",
     "rotor-disk-angle",
     "rotor-disk-accelerating",

@@ -210,6 +210,7 @@ pub const LIBRARY_FILES: &[(&str, &str)] = &[
     ("grubler-count.json", include_str!("../../../library/grubler-count.json")),
     ("tooth-thickness.json", include_str!("../../../library/tooth-thickness.json")),
     ("p63-scotch-yoke.json", include_str!("../../../library/p63-scotch-yoke.json")),
+    ("p115-shaper.json", include_str!("../../../library/p115-shaper.json")),
     ("differential-train.json", include_str!("../../../library/differential-train.json")),
     ("rotor-disk-angle.json", include_str!("../../../library/rotor-disk-angle.json")),
     ("rotor-disk-accelerating.json", include_str!("../../../library/rotor-disk-accelerating.json")),
