@@ -75,38 +75,47 @@ async fn a_template_read_in_spanish_is_titled_in_spanish() {
     assert_eq!(p103["title"], english["es"]["title"]);
 }
 
-/// A printed magnitude graded as printed: every built-in template's
-/// statement quantity that carries the solution's printed number (March
-/// 2010's C_r = 35.8099 N·m, January 2012's work 509.117 J, May 2014's
-/// M_r = 38.197 N·m) passes `/v1/check` at the default 1 %, given bare and
-/// with its unit; the signed field it comes from still says "opposite
-/// sign". The quantity is read as a value too, in another unit (1 N·m =
-/// 1e-3 kN·m).
+/// Every printed number of every exam template graded as printed: each
+/// statement quantity that carries the solution's printed number passes
+/// `/v1/check` at the default 1 %, given bare and as "VALUE UNIT" in the
+/// unit the check names — among them the magnitudes printed positive
+/// (March 2010's C_r = 35.8099 N·m, January 2012's work 509.117 J, May
+/// 2014's M_r = 38.197 N·m, P.113's areas in the seed's sense), whose
+/// signed field says "opposite sign"; and each print the template says is
+/// wrong (May 2014's crossings, inertia and disk) fails. The quantity is
+/// read as a value too, in another unit (1 N·m = 1e-3 kN·m).
 #[tokio::test]
-async fn a_printed_magnitude_is_graded_as_printed() {
+async fn every_printed_number_is_graded_as_printed() {
     let app = TestApp::new().await;
     let list = app.get("/v1/templates").await.json();
-    let mut graded = 0;
+    let (mut right, mut wrong) = (0, 0);
     for t in list["items"].as_array().unwrap() {
         let Some(statement) = t["statement"].as_object() else { continue };
         for (name, s) in statement {
             let Some(printed) = s["printed"].as_f64() else { continue };
-            let (id, pointer) = (t["id"].as_str().unwrap(), format!("/statement/{name}"));
-            let unit = if name.ends_with("torque") { "N*m" } else { "J" };
-            let answers = json!({&pointer: printed, s["of"].as_str().unwrap(): printed});
-            let r = app.post("/v1/check", &json!({"template": id, "answers": answers})).await;
+            let (id, pointer, of) =
+                (t["id"].as_str().unwrap(), format!("/statement/{name}"), s["of"].as_str().unwrap());
+            let r = app.post("/v1/check", &json!({"template": id, "answers": {&pointer: printed, of: printed}})).await;
             assert_eq!(r.status, StatusCode::CREATED, "{id}: {}", r.text);
             let items = r.json()["result"]["items"].clone();
             let item = |p: &str| items.as_array().unwrap().iter().find(|i| i["pointer"] == p).unwrap().clone();
-            assert_eq!(item(&pointer)["pass"], true, "{id} {name}: {}", item(&pointer));
-            assert_eq!(item(s["of"].as_str().unwrap())["pass"], false, "{id}: the signed field is the opposite");
+            let passes = s.get("wrong").is_none();
+            assert_eq!(item(&pointer)["pass"], passes, "{id} {name}: {}", item(&pointer));
+            if s["sign"] == -1 {
+                assert_eq!(item(of)["pass"], false, "{id} {name}: the signed field is the opposite");
+            }
+            if !passes {
+                wrong += 1;
+                continue;
+            }
+            let unit = item(&pointer)["unit"].as_str().unwrap_or_else(|| panic!("{id} {name}: no unit")).to_string();
             let with_unit = json!({"template": id, "answers": {&pointer: format!("{printed} {unit}")}});
             let r = app.post("/v1/check", &with_unit).await.json();
-            assert_eq!(r["result"]["score"], 1.0, "{id} {name} with its unit: {r}");
-            graded += 1;
+            assert_eq!(r["result"]["score"], 1.0, "{id} {name} in {unit}: {r}");
+            right += 1;
         }
     }
-    assert!(graded >= 3, "{graded} printed magnitudes");
+    assert!(right >= 35 && wrong >= 4, "{right} printed numbers right, {wrong} wrong");
     let base = "/v1/templates/exam-2010-march/result/statement/resisting_torque";
     let newtons: f64 = app.get(base).await.text.parse().unwrap();
     let kilo: f64 = app.get(&format!("{base}?unit=kN*m")).await.text.parse().unwrap();
@@ -182,4 +191,37 @@ async fn p115_reduced_inertia_is_the_notes_energy_equation() {
             assert!((got - expected).abs() <= 1e-10 * expected, "m6 = {m6}, φ = {phi}: {got} against {expected}");
         }
     }
+}
+
+/// The statement's quantities read in Spanish carry their Spanish
+/// descriptions (March 2010's C_r: "el par resistente").
+#[tokio::test]
+async fn the_statements_quantities_are_described_in_spanish() {
+    let app = TestApp::new().await;
+    let t = app.get("/v1/templates/exam-2010-march?lang=es").await.json();
+    let said = t["statement"]["resisting_torque"]["description"].as_str().unwrap();
+    assert!(said.starts_with("C_r, el par resistente"), "{said}");
+}
+
+/// A client's template names its statement's quantities too: stored and
+/// read back as a value (−balance_torque of P.103's request: its motor
+/// torque is 500/π N·m, the closed form of the template's test); a sign
+/// other than ±1 or a pointer without its `/` is refused at its field.
+#[tokio::test]
+async fn a_clients_template_names_its_statements_quantities() {
+    let app = TestApp::new().await;
+    let request = app.get(&format!("{TEMPLATE}/job")).await.json()["request"].clone();
+    let body = |stated: serde_json::Value| {
+        json!({"kind": "flywheel", "name": "my-p103", "request": request, "parameters": {},
+            "statement": {"motor": stated}})
+    };
+    let r = app.post("/v1/templates", &body(json!({"of": "balance_torque", "sign": 2}))).await;
+    assert_eq!(r.status, StatusCode::UNPROCESSABLE_ENTITY, "{}", r.text);
+    let errors = r.json()["errors"].clone();
+    let pointers: Vec<&str> = errors.as_array().unwrap().iter().map(|e| e["pointer"].as_str().unwrap()).collect();
+    assert_eq!(pointers, ["/statement/motor/of", "/statement/motor/sign"]);
+    let r = app.post("/v1/templates", &body(json!({"of": "/balance_torque", "sign": -1}))).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let value: f64 = app.get("/v1/templates/my-p103/result/statement/motor").await.text.parse().unwrap();
+    assert!((value + 500.0 / std::f64::consts::PI).abs() < 1e-9, "{value}");
 }

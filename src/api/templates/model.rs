@@ -93,6 +93,9 @@ pub struct InSpanish {
     /// A description per parameter, by its name.
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub parameters: BTreeMap<String, String>,
+    /// A description per statement quantity, by its name.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub statement: BTreeMap<String, String>,
 }
 
 impl Template {
@@ -120,6 +123,12 @@ impl Template {
                 let text = self.description_in(&name, lang).map(String::from);
                 if let Some(p) = self.parameters.get_mut(&name) {
                     p.description = text;
+                }
+            }
+            let spanish = self.es.as_ref().map(|es| es.statement.clone()).unwrap_or_default();
+            for (name, text) in spanish {
+                if let Some(s) = self.statement.get_mut(&name) {
+                    s.description = Some(text);
                 }
             }
         }
@@ -258,6 +267,10 @@ pub fn checked(
     for name in t.es.iter().flat_map(|es| es.parameters.keys()).filter(|n| !t.parameters.contains_key(*n)) {
         let at = format!("/es/parameters/{}", crate::kind::problem::escape(name));
         errors.push(FieldError::said(at, Msg::new("template-no-parameter").arg("name", name)));
+    }
+    for name in t.es.iter().flat_map(|es| es.statement.keys()).filter(|n| !t.statement.contains_key(*n)) {
+        let at = format!("/es/statement/{}", crate::kind::problem::escape(name));
+        errors.push(FieldError::said(at, Msg::new("template-no-statement").arg("name", name)));
     }
     if !errors.is_empty() {
         return Err(ApiError::Invalid(errors));

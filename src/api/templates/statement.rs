@@ -33,6 +33,10 @@ pub struct Stated {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     #[schema(max_length = 2000)]
     pub description: Option<String>,
+    /// Why the printed number is wrong, where it is (it then fails a check).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[schema(max_length = 2000)]
+    pub wrong: Option<String>,
 }
 
 /// Most quantities of one template.

@@ -496,6 +496,7 @@ template-parameter-reserved = '{ $name }' is reserved in a template's URL ({ $re
 template-pointer-scalar = must point at a number or a text of the request
 template-pointer-missing = { $pointer } is not in the request
 template-min-above-max = min { $min } is above max { $max }
+template-no-statement = the template has no statement quantity { $name }
 template-statement-too-many = at most { $max } quantities of the statement
 template-statement-pointer = "of" is a JSON pointer into the result, such as "/balance_torque"
 template-statement-sign = "sign" is 1 or -1

@@ -496,6 +496,7 @@ template-parameter-reserved = '{ $name }' está reservado en la URL de una plant
 template-pointer-scalar = debe apuntar a un número o a un texto de la petición
 template-pointer-missing = { $pointer } no está en la petición
 template-min-above-max = min { $min } está por encima de max { $max }
+template-no-statement = la plantilla no tiene la magnitud del enunciado { $name }
 template-statement-too-many = como mucho { $max } magnitudes del enunciado
 template-statement-pointer = "of" es un puntero JSON al resultado, como "/balance_torque"
 template-statement-sign = "sign" es 1 o -1
