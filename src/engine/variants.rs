@@ -15,6 +15,16 @@
 //!
 //!    A parameter with neither (`min` and `max` alone only bound what a
 //!    user may ask) keeps its default, and still takes its draw.
+//!
+//! A template may ask for its variants without repetition (`distinct`):
+//! every combination of its parameters' values is a number in 0 … M − 1
+//! (M the product of the counts; the first parameter by name the fastest
+//! digit), and variant `v` is combination π(v mod M), π a fixed shuffle of
+//! 0 … M − 1 — so any M consecutive variants are all different. π: a
+//! four-round Feistel network on h + h bits (2^2h ≥ M, h ≥ 1), round k
+//! mixing the right half as SplitMix64 seeded with R + 2^32·k, its first
+//! output's low h bits XORed into the left half; a result ≥ M is shuffled
+//! again until it is below M (cycle-walking).
 
 /// SplitMix64: a 64-bit state advanced by the golden gamma, then mixed.
 #[derive(Clone, Debug)]
@@ -89,6 +99,54 @@ pub fn variant(seed: u64, ranges: &[Range]) -> Vec<Draw> {
     ranges.iter().map(|r| draw(*r, g.next_u64())).collect()
 }
 
+/// Variant `seed` without repetition ([the module's notes](self)): one
+/// draw per range, the combination π(seed mod M); [`variant`]'s where a
+/// range is no grid or list (M ≥ 2^62: too many to shuffle).
+pub fn distinct(seed: u64, ranges: &[Range]) -> Vec<Draw> {
+    let counts: Vec<u64> = ranges
+        .iter()
+        .map(|r| match *r {
+            Range::Choices(n) => n as u64,
+            Range::Grid { count, .. } => count,
+        })
+        .collect();
+    let total = counts.iter().try_fold(1u64, |m, &n| m.checked_mul(n).filter(|m| *m < 1 << 62));
+    let Some(total) = total.filter(|m| *m > 0) else { return variant(seed, ranges) };
+    let mut rest = shuffled(seed % total, total);
+    ranges
+        .iter()
+        .zip(&counts)
+        .map(|(r, &n)| {
+            let i = rest % n;
+            rest /= n;
+            match *r {
+                Range::Choices(_) => Draw::Choice(i as usize),
+                Range::Grid { min, step, .. } => Draw::Value(round_sig(min + i as f64 * step, 12)),
+            }
+        })
+        .collect()
+}
+
+/// π(i) of 0 … m − 1: the Feistel network, walked until below m.
+fn shuffled(i: u64, m: u64) -> u64 {
+    let bits = 64 - (m - 1).leading_zeros().min(63);
+    let h = bits.div_ceil(2).max(1);
+    let mask = (1u64 << h) - 1;
+    let feistel = |x: u64| {
+        let (mut left, mut right) = (x >> h, x & mask);
+        for k in 0..4u64 {
+            let f = SplitMix64::new(right + (k << 32)).next_u64() & mask;
+            (left, right) = (right, left ^ f);
+        }
+        (left << h) | right
+    };
+    let mut y = feistel(i);
+    while y >= m {
+        y = feistel(y);
+    }
+    y
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -101,6 +159,33 @@ mod tests {
         let mut g = SplitMix64::new(1_234_567);
         let first: Vec<u64> = (0..3).map(|_| g.next_u64()).collect();
         assert_eq!(first, [6_457_827_717_110_365_317, 3_203_168_211_198_807_973, 9_817_491_932_198_370_423]);
+    }
+
+    /// The shuffle is a permutation of 0 … M − 1 (every index once), for
+    /// the p103-class grid (M = 11·7·4·9 = 2772) and small and odd M; its
+    /// draws stay on the grid, and any M consecutive variants differ.
+    #[test]
+    fn distinct_variants_are_a_shuffle_of_every_combination() {
+        for m in [1u64, 2, 3, 7, 64, 65, 2772] {
+            let mut seen = vec![false; m as usize];
+            for i in 0..m {
+                let j = shuffled(i, m) as usize;
+                assert!(!seen[j], "M = {m}: {j} twice");
+                seen[j] = true;
+            }
+        }
+        let ranges = [
+            Range::grid(300.0, 800.0, 50.0).unwrap(),
+            Range::grid(2.0, 8.0, 1.0).unwrap(),
+            Range::Choices(4),
+            Range::grid(40.0, 120.0, 10.0).unwrap(),
+        ];
+        let from = 1_000_000_007u64;
+        let drawn: std::collections::HashSet<String> =
+            (from..from + 2772).map(|v| format!("{:?}", distinct(v, &ranges))).collect();
+        assert_eq!(drawn.len(), 2772, "2772 consecutive variants, every combination once");
+        let Draw::Value(f) = distinct(5, &ranges)[0] else { panic!("a grid gives values") };
+        assert!((300.0..=800.0).contains(&f) && f % 50.0 == 0.0, "{f}");
     }
 
     #[test]

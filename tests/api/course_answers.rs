@@ -225,3 +225,31 @@ async fn a_clients_template_names_its_statements_quantities() {
     let value: f64 = app.get("/v1/templates/my-p103/result/statement/motor").await.text.parse().unwrap();
     assert!((value + 500.0 / std::f64::consts::PI).abs() < 1e-9, "{value}");
 }
+
+/// A template that asks for `distinct` variants draws them without
+/// repetition: p103-class's problem and ranges stored as a client's
+/// template with `"distinct": true` gives 40 different questions of its
+/// 11·7·4·9 = 2 772 (seeds 1 to 40, and 40 from a seed near 2^63), each on
+/// its parameters' grids. p103-class itself keeps the draws it has always
+/// had (the contract: the same on every version), where 30 students got
+/// 28 distinct questions.
+#[tokio::test]
+async fn a_distinct_template_gives_a_class_distinct_variants() {
+    let app = TestApp::new().await;
+    let class = app.get("/v1/templates/p103-class").await.json();
+    let body = json!({"kind": "flywheel", "name": "p103-distinct", "request": class["request"],
+        "parameters": class["parameters"], "distinct": true});
+    let r = app.post("/v1/templates", &body).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    for seed in [1u64, 9_223_372_036_854_775_000] {
+        let list = app.get(&format!("/v1/templates/p103-distinct/variants?seed={seed}&count=40")).await.json();
+        let drawn: Vec<String> =
+            list["variants"].as_array().unwrap().iter().map(|v| v["parameters"].to_string()).collect();
+        let distinct: std::collections::HashSet<&String> = drawn.iter().collect();
+        assert_eq!((drawn.len(), distinct.len()), (40, 40), "seed {seed}: {drawn:?}");
+        for v in list["variants"].as_array().unwrap() {
+            let f = v["parameters"]["F"].as_f64().unwrap();
+            assert!((300.0..=800.0).contains(&f) && f % 50.0 == 0.0, "{v}");
+        }
+    }
+}

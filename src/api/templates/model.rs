@@ -71,6 +71,13 @@ pub struct Template {
     /// as printed (see [`Stated`]).
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub statement: BTreeMap<String, Stated>,
+    /// Variants drawn without repetition: variant v is the (v mod M)-th of
+    /// a fixed shuffle of the M combinations of the parameters' values, so
+    /// any M consecutive variants differ (the generator is written down in
+    /// the service's `engine/variants.rs`). Default false: each parameter
+    /// drawn on its own, as before.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub distinct: bool,
     /// Shipped with the service (true) or created by a client.
     #[serde(default)]
     pub builtin: bool,
@@ -161,6 +168,9 @@ pub struct NewTemplate {
     /// The statement's quantities (see Template).
     #[serde(default)]
     pub statement: BTreeMap<String, Stated>,
+    /// Variants without repetition (see Template).
+    #[serde(default)]
+    pub distinct: bool,
     #[schema(max_length = 200)]
     pub title: Option<String>,
     /// A slug (lower-case letters, digits, `-`), unique: the template's id.
@@ -285,6 +295,7 @@ pub fn checked(
         parameters: t.parameters,
         derived: t.derived,
         statement: t.statement,
+        distinct: t.distinct,
         builtin: false,
         es: t.es,
     })

@@ -6,14 +6,13 @@
 //! A template job's values then hold `/statement/NAME`, read, tabled and
 //! graded as any other value, in the unit of the field it comes from.
 
+use crate::api::kind::{STATEMENT as KEY, STATEMENT_FROM as FROM};
 use crate::i18n::Msg;
 use crate::kind::problem::FieldError;
 use serde::{Deserialize, Serialize};
 use serde_json::{Map, Value};
 use std::collections::BTreeMap;
 use utoipa::ToSchema;
-
-use crate::api::kind::{STATEMENT as KEY, STATEMENT_FROM as FROM};
 
 /// One of a statement's quantities: `sign` × the result's number at `of`.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]

@@ -7,7 +7,7 @@ use super::model::{Parameter, Template};
 use super::table::{bad, run};
 use crate::api::AppState;
 use crate::api::tables::{Csv, Decimal};
-use crate::engine::variants::{Draw, Range, variant};
+use crate::engine::variants::{Draw, Range, distinct, variant};
 use crate::i18n::Msg;
 use crate::kind::cell;
 use crate::kind::problem::ApiError;
@@ -63,11 +63,13 @@ pub fn drawable(t: &Template) -> Result<(), Msg> {
 }
 
 /// The parameters of variant `seed` of `t`: one draw per parameter in name
-/// order (those without a range draw too, and keep their default).
+/// order (those without a range draw too, and keep their default), or the
+/// combination of the shuffle where `t` asks for `distinct` variants.
 pub fn draw(t: &Template, seed: u64) -> BTreeMap<String, Value> {
     let ranges: Vec<Option<Range>> = t.parameters.values().map(range).collect();
     // A parameter without a range draws from a one-choice list, so that each takes its draw.
-    let drawn = variant(seed, &ranges.iter().map(|r| r.unwrap_or(Range::Choices(1))).collect::<Vec<_>>());
+    let all: Vec<Range> = ranges.iter().map(|r| r.unwrap_or(Range::Choices(1))).collect();
+    let drawn = if t.distinct { distinct(seed, &all) } else { variant(seed, &all) };
     t.parameters
         .iter()
         .zip(ranges.iter().zip(drawn))
