@@ -6,7 +6,7 @@ WORKDIR /src
 COPY Cargo.toml Cargo.lock ./
 # The dependencies in a layer of their own, built against an empty crate (and
 # empty benchmarks: cargo reads the manifest's [[bench]] files): a change under
-# src/ or benches/ rebuilds mechdyn alone (README, "Container").
+# src/ or benches/ rebuilds mechdyn alone (docs/operators.md, "Container").
 RUN mkdir src benches && echo 'fn main() {}' > src/main.rs && touch src/lib.rs \
     && awk '/^\[\[bench\]\]/ { b = 1 } b && $1 == "name" { gsub(/"/, "", $3); print $3; b = 0 }' Cargo.toml \
         | while read -r name; do echo 'fn main() {}' > "benches/$name.rs"; done \

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """A template's seeded variants, computed from the generator's description
-alone (README, "Variants"), with no mechdyn code: the proof that a variant
+alone (docs/grading.md, "Variants"), with no mechdyn code: the proof that a variant
 is named by its number on any machine.
 
     python3 variant.py TEMPLATE.json SEED [COUNT]   # JSON lines: {"variant", "parameters"}

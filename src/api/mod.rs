@@ -108,7 +108,7 @@ is stored and readable later.\n\nQuantities are SI numbers or `\"VALUE UNIT\"` s
 (`\"300 rpm\"`, `\"3200 ft*lbf\"`, `\"20 slug*ft^2\"`, `\"4 %\"`); results are SI. A name of a list \
 (an `integrator`, a joint's `type`) is read in any case (`\"DOPRI5\"` as `dopri5`). Errors are \
 `application/problem+json` with a JSON pointer for every invalid field.\n\nLimits (the defaults; the \
-service's operator may configure each, see `MECHDYN_*` in the README): request body 1 MiB (413 beyond it); \
+service's operator may configure each, see `MECHDYN_*` in docs/operators.md): request body 1 MiB (413 beyond it); \
 expressions 2000 characters and 64 levels of nesting; tables 100000 rows; 1000 segments per function; \
 100000 result samples; 100000 steps per kinetostatics job (422 at the field beyond them); a result of \
 16 MiB (422 `/problems/result-too-large`, saying which `steps` or `samples` would fit); a job's compute \

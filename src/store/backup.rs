@@ -5,7 +5,7 @@
 //! (WAL mode: readers and the writer do not wait for each other). The copy
 //! is then opened and checked (`PRAGMA integrity_check`) and its jobs
 //! counted. A PostgreSQL database is copied by its server's tools
-//! (`pg_dump`; README, "Operate it").
+//! (`pg_dump`; docs/operators.md).
 
 use super::url::{Backend, check_scheme};
 use sqlx::sqlite::SqliteConnectOptions;
@@ -28,7 +28,7 @@ pub async fn backup(url: &str, file: &Path) -> Result<Copied, String> {
     match check_scheme(url).map_err(|e| e.to_string())? {
         Backend::Postgres => {
             return Err("a PostgreSQL database is copied by its server's tools: pg_dump --format=custom \
-                        (README, \"Operate it\"); `mechdyn backup` copies a SQLite file"
+                        (docs/operators.md); `mechdyn backup` copies a SQLite file"
                 .into());
         }
         Backend::Sqlite => {}

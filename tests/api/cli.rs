@@ -51,7 +51,7 @@ fn solve_kinetostatics_prints_the_result() {
     assert!((t - -228.491215292969).abs() < 1e-6, "{t}");
 }
 
-/// Every calculator is solvable offline: the README's mechanism-dynamics
+/// Every calculator is solvable offline: docs/grading.md's mechanism-dynamics
 /// example reaches 4π (its `until_angle`), to the printed digits of the API.
 #[test]
 fn solve_knows_every_job_kind() {

@@ -131,7 +131,7 @@ async fn actions_may_depend_on_speed_and_time() {
     close(&end["angle"], 8.0 / 3.0, 1e-9, "φ(2) = t³/3");
 }
 
-/// D1's scotch yoke as a `machine` with its crank free (the README's
+/// D1's scotch yoke as a `machine` with its crank free (docs/course.md's
 /// example): 15 N·m on the crank, 200 sin φ N along +x on the yoke, from
 /// rest, with `end` replacing the fixture's end condition.
 fn d1_machine(end: Value) -> Value {

@@ -68,7 +68,7 @@ fn a_client_generated_from_the_document_reads_every_answer_typed_and_openapi_cor
         .arg(&cases_file)
         .output()
         .unwrap();
-    // The README's script, as a grader runs it: P.103's answers of the README's curl example, whose
+    // docs/grading.md's script, as a grader runs it: P.103's answers of its curl example, whose
     // score it prints as 0.5 (260 slug·ft² = 352.51 kg·m² within 1 % of I_exact = 353.52, case F1;
     // 353.5 not within 1 % of I_approx = 348.99).
     let example = Command::new(&python)

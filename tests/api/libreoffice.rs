@@ -90,7 +90,7 @@ async fn libreoffice_calc_fetches_answers_with_webservice() {
 /// parameter exists). The closed-form scaling of case F1 checks I_approx.
 /// An error (ε = 3) reaches its cell as the service's Spanish reason with
 /// `lang=es&errors=text`, where Calc shows only #¡VALOR! for a 4xx; and
-/// through the README's SI.ERROR(VALOR(x); x), not as Err:502.
+/// through docs/lab.md's SI.ERROR(VALOR(x); x), not as Err:502.
 #[tokio::test]
 async fn a_spanish_calc_reads_decimal_commas() {
     let spanish = std::path::Path::new("/usr/lib/libreoffice/program/resource/es").exists();
@@ -121,7 +121,7 @@ async fn a_spanish_calc_reads_decimal_commas() {
     let reason = app.get(&format!("{base}?F=1200,5&eps=3&decimal=comma&lang=es&errors=text")).await.text;
     assert!(reason.starts_with("eps: 3 está por encima del valor máximo"), "{reason}");
     assert_eq!(cells["B18"].as_str().unwrap(), reason, "the cell shows the reason in Spanish, not #¡VALOR!");
-    // The README's recipe, SI.ERROR(VALOR(x); x): the number where there is one, else the reason.
+    // docs/lab.md's recipe, SI.ERROR(VALOR(x); x): the number where there is one, else the reason.
     assert_eq!(cells["B19"].as_str().unwrap(), reason, "SI.ERROR gives the reason, not Err:502");
 }
 

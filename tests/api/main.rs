@@ -22,6 +22,7 @@ mod crash;
 mod decimal;
 mod deferred;
 mod dimensions;
+mod docs;
 mod dynamics;
 mod energy;
 mod errors;

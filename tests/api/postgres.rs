@@ -258,7 +258,7 @@ fn any_replica_runs_a_queued_job_and_only_one_does() {
     assert_eq!(workers.iter().map(|w| w.metric(done)).sum::<f64>(), 12.0, "each job computed once");
 }
 
-/// The README's PostgreSQL backup, with Debian's client: `pg_dump
+/// docs/operators.md's PostgreSQL backup, with Debian's client: `pg_dump
 /// --format=custom` of the database while a replica serves it, restored by
 /// `pg_restore` into a new database; a replica on the restored database
 /// answers every job as the first does, byte for byte.

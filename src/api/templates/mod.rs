@@ -286,7 +286,7 @@ pub async fn table(
 ///
 /// Variant `v` is the single draw with seed `v` (the generator: SplitMix64
 /// seeded with `v`, one draw per parameter in name order, mapped onto the
-/// parameter's `choices` or `min`/`max`/`step` grid; see the README), so the
+/// parameter's `choices` or `min`/`max`/`step` grid; see docs/grading.md), so the
 /// same template and seed give the same parameters everywhere and forever.
 #[utoipa::path(get, path = "/v1/templates/{id}/variants", operation_id = "get_template_variants", tag = "grading",
     params(("id" = String, Path, description = "Template id"),
