@@ -3,7 +3,7 @@
 //! disk sized without a density. Each reference is the service's own
 //! answer to the same problem written the plain way, or a closed form.
 
-use crate::helpers::TestApp;
+use crate::helpers::{TestApp, close};
 use axum::http::StatusCode;
 use serde_json::json;
 
@@ -252,4 +252,35 @@ async fn a_distinct_template_gives_a_class_distinct_variants() {
             assert!((300.0..=800.0).contains(&f) && f % 50.0 == 0.0, "{v}");
         }
     }
+}
+
+/// March 2012's C_m* (printed 69.923 N·m): the motor's mean torque on the
+/// reference shaft balances the load's work over the cycle, closed form
+/// F·R·(1 − sin π/4)/2π for the load −F·R·cos φ on π/4 < φ < π/2; at F =
+/// 12 000 N (not the statement's) to 1e-9, with the load's mean the
+/// opposite. Over a period of 720° an item's mean torque is its work over
+/// 4π (a −10 N·m load on half a turn: −2.5 N·m, the motor +2.5).
+#[tokio::test]
+async fn an_items_mean_torque_is_its_work_over_the_period() {
+    let app = TestApp::new().await;
+    let (f, r) = (12_000.0_f64, 0.15);
+    let expected = f * r * (1.0 - std::f64::consts::FRAC_PI_4.sin()) / std::f64::consts::TAU;
+    let got = |path: &str| {
+        let app = &app;
+        let path = path.to_string();
+        async move { app.get(&path).await.text.parse::<f64>().unwrap() }
+    };
+    let base = "/v1/templates/exam-2012-march/result";
+    let motor = got(&format!("{base}/statement/motor_reduced_torque?F=12000")).await;
+    assert!((motor - expected).abs() < 1e-9 * expected, "C_m* {motor}, closed form {expected}");
+    let load = got(&format!("{base}/item_work/0/mean_torque?F=12000")).await;
+    assert!((load + expected).abs() < 1e-9 * expected, "the load's mean {load}");
+    // Over 720°: a load of −10 N·m on 0 < φ < π does −10π J, a mean of −2.5 N·m; the motor +2.5.
+    let four_stroke = json!({"mean_speed": "60 rpm", "irregularity": 0.05, "period": "720 deg", "samples": 0,
+        "torques": [{"name": "load", "value": {"segments": [{"from": 0, "to": "pi", "expr": "-10"}]}},
+                    {"name": "motor", "balance": true}]});
+    let result = app.result("/v1/flywheel", &four_stroke).await;
+    close(&result["item_work"][0]["mean_torque"], -2.5, 1e-12, "the load's mean over 4π");
+    close(&result["item_work"][1]["mean_torque"], 2.5, 1e-12, "the motor's, the balance torque");
+    close(&result["balance_torque"], 2.5, 1e-12, "balance torque");
 }

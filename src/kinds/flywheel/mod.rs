@@ -61,6 +61,7 @@ impl Kind for Flywheel {
         ("/inertia_approximate", "kg*m^2"),
         ("/inertia_exact", "kg*m^2"),
         ("/least_reduced_inertia", "kg*m^2"),
+        ("/item_work/*/mean_torque", "N*m"),
         ("/item_work/*/work", "J"),
         ("/kinetic_energy_at_start", "J"),
         ("/mean_power", "W"),
@@ -107,7 +108,7 @@ fn compute(request: &FlywheelRequest, unknown: Vec<FieldError>, limits: &Limits)
             false => e,
         })?;
     let solution = solve(&p).map_err(|e| engine_failure(e, "/torques"))?;
-    let mut result = FlywheelResult::new(solution, p.torques.iter().map(|t| t.name.clone()));
+    let mut result = FlywheelResult::new(solution, p.torques.iter().map(|t| t.name.clone()), p.period);
     // Where a machine's dimensions put its points: the sketch solved again
     // (microseconds) rather than carried through the engine's problem.
     if let Some(m) = request.machine.as_ref().filter(|m| m.mechanism.dimensions.is_some())

@@ -68,6 +68,10 @@ pub struct ItemWork {
     pub name: String,
     /// J
     pub work: f64,
+    /// The item's mean torque on the reference shaft, work over the period
+    /// (C* = W/λ, N·m): a constant motor's reduced torque (the balance
+    /// torque) or a load's mean.
+    pub mean_torque: f64,
 }
 
 /// One row of the sampled cycle (also the rows of the CSV export).
@@ -157,13 +161,18 @@ impl crate::kind::JobResult for FlywheelResult {
 }
 
 impl FlywheelResult {
-    pub fn new(s: fw::FlywheelSolution, names: impl Iterator<Item = String>) -> Self {
+    /// The wire form of `s`, its torque items named by `names`, over a
+    /// period of `period` rad.
+    pub fn new(s: fw::FlywheelSolution, names: impl Iterator<Item = String>, period: f64) -> Self {
         let mut notes = Notes::default();
         notes.extend(s.warnings.iter().map(condition));
         Self {
             balance_torque: s.balance_torque,
             mean_power: s.mean_power,
-            item_work: names.zip(&s.item_work).map(|(name, &work)| ItemWork { name, work }).collect(),
+            item_work: names
+                .zip(&s.item_work)
+                .map(|(name, &work)| ItemWork { name, work, mean_torque: work / period })
+                .collect(),
             crossings: s.crossings,
             areas: s.areas.iter().map(|a| AreaDto { from: a.from, to: a.to, work: a.work }).collect(),
             cumulative: s.cumulative,
