@@ -21,7 +21,7 @@ const GUIDES: [&str; 6] =
 
 /// Commands run elsewhere: (how the command begins, the file that runs it,
 /// what that file holds to show it does).
-const ELSEWHERE: [(&str, &str, &str); 13] = [
+const ELSEWHERE: [(&str, &str, &str); 12] = [
     // This test's service is that binary with its defaults (a fresh database, a free port).
     ("cargo run --release", "tests/api/crash.rs", "CARGO_BIN_EXE_mechdyn"),
     ("cargo test", ".ci/run", "cargo test"),
@@ -35,8 +35,7 @@ const ELSEWHERE: [(&str, &str, &str); 13] = [
     ("MECHDYN_DB_PASSWORD=", ".ci/run", "docker-compose -f deploy/compose.yaml config"),
     ("pg_dump", "tests/api/postgres.rs", "server.client(\"pg_dump\")"),
     ("pg_restore", "tests/api/postgres.rs", "pg_restore"),
-    ("pip install openapi-python-client", ".ci/run", "openapi-python-client"),
-    ("openapi-python-client generate", "tests/api/generated.rs", "openapi-python-client.yaml"),
+    ("pip install ./clients/python", "tests/api/python_client.rs", "\"pip\", \"install\""),
 ];
 
 /// A command of a page: where it is, its text (continued lines joined), the

@@ -53,6 +53,7 @@ fn a_client_generated_from_the_document_reads_every_answer_typed_and_openapi_cor
     let out = Command::new(generator)
         .args(["generate", "--url", &format!("{base}/openapi.json"), "--meta", "none"])
         .args(["--config", &format!("{ROOT}/openapi/openapi-python-client.yaml")])
+        .args(["--custom-template-path", &format!("{ROOT}/clients/python/templates")])
         .arg("--output-path")
         .arg(dir.path().join("mechdyn_client"))
         .output()
@@ -68,22 +69,10 @@ fn a_client_generated_from_the_document_reads_every_answer_typed_and_openapi_cor
         .arg(&cases_file)
         .output()
         .unwrap();
-    // docs/grading.md's script, as a grader runs it: P.103's answers of its curl example, whose
-    // score it prints as 0.5 (260 slug·ft² = 352.51 kg·m² within 1 % of I_exact = 353.52, case F1;
-    // 353.5 not within 1 % of I_approx = 348.99).
-    let example = Command::new(&python)
-        .arg(format!("{ROOT}/examples/grading/typed_client.py"))
-        .args([&base, "s001", "260 slug*ft^2", "353.5"])
-        .env("PYTHONPATH", dir.path())
-        .output()
-        .unwrap();
     child.kill().unwrap();
     child.wait().unwrap();
     let said = format!("{}{}", String::from_utf8_lossy(&run.stdout), String::from_utf8_lossy(&run.stderr));
     assert!(run.status.success(), "{said}");
     assert!(said.contains("openapi-core validated"), "{said}");
     eprintln!("{}", said.trim());
-    let printed = format!("{}{}", String::from_utf8_lossy(&example.stdout), String::from_utf8_lossy(&example.stderr));
-    assert!(example.status.success() && printed.contains("s001: score 0.5 (1 of 2)"), "{printed}");
-    assert!(printed.contains("1 check(s) labelled s001"), "{printed}");
 }

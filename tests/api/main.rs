@@ -63,6 +63,7 @@ mod postgres;
 mod private;
 mod prometheus;
 mod protocol;
+mod python_client;
 mod ranges;
 mod readme;
 mod robot_arm;

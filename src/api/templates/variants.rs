@@ -31,10 +31,12 @@ pub struct Variant {
     pub parameters: BTreeMap<String, Value>,
     /// The values asked for (`values=`), by pointer as given.
     pub values: BTreeMap<String, Value>,
-    /// The reference job, when values were asked for.
+    /// The reference job, when values were asked for (null otherwise).
+    #[schema(required = true)]
     pub job: Option<String>,
     /// Why its job failed, or which values its result does not have (with
     /// the job's warnings); null when every value is there.
+    #[schema(required = true)]
     pub error: Option<String>,
 }
 

@@ -1,0 +1,294 @@
+from http import HTTPStatus
+from typing import Any, cast
+from urllib.parse import quote
+
+import httpx
+
+from ...client import AuthenticatedClient, Client
+from ...types import Response, UNSET
+from ... import errors
+
+from ...models.angle_unit import AngleUnit
+from ...models.decimal_mark import DecimalMark
+from ...models.format_ import Format
+from ...models.problem import Problem
+from ...models.values import Values
+from ...types import UNSET, Unset
+from typing import cast
+
+
+
+def _get_kwargs(
+    id: str,
+    *,
+    format_: Format | Unset = UNSET,
+    angles: AngleUnit | Unset = UNSET,
+    decimal: DecimalMark | Unset = UNSET,
+
+) -> dict[str, Any]:
+    
+
+    
+
+    params: dict[str, Any] = {}
+
+    json_format_: str | Unset = UNSET
+    if not isinstance(format_, Unset):
+        json_format_ = format_.value
+
+    params["format"] = json_format_
+
+    json_angles: str | Unset = UNSET
+    if not isinstance(angles, Unset):
+        json_angles = angles.value
+
+    params["angles"] = json_angles
+
+    json_decimal: str | Unset = UNSET
+    if not isinstance(decimal, Unset):
+        json_decimal = decimal.value
+
+    params["decimal"] = json_decimal
+
+
+    params = {k: v for k, v in params.items() if v is not UNSET and v is not None}
+
+
+    _kwargs: dict[str, Any] = {
+        "method": "get",
+        "url": "/v1/jobs/{id}/values".format(id=quote(str(id), safe=""),),
+        "params": params,
+    }
+
+
+    return _kwargs
+
+
+
+def _parse_response(*, client: AuthenticatedClient | Client, response: httpx.Response) -> Problem | Values | None:
+    if response.status_code == 200:
+        response_200 = Values.from_dict(response.json())
+
+
+
+        return response_200
+
+    if response.status_code == 400:
+        response_400 = Problem.from_dict(response.json())
+
+
+
+        return response_400
+
+    if response.status_code == 401:
+        response_401 = Problem.from_dict(response.json())
+
+
+
+        return response_401
+
+    if response.status_code == 404:
+        response_404 = Problem.from_dict(response.json())
+
+
+
+        return response_404
+
+    if response.status_code == 409:
+        response_409 = Problem.from_dict(response.json())
+
+
+
+        return response_409
+
+    if response.status_code == 503:
+        response_503 = Problem.from_dict(response.json())
+
+
+
+        return response_503
+
+    if client.raise_on_unexpected_status:
+        raise errors.UnexpectedStatus(response.status_code, response.content)
+    else:
+        return None
+
+
+def _build_response(*, client: AuthenticatedClient | Client, response: httpx.Response) -> Response[Problem | Values]:
+    return Response(
+        status_code=HTTPStatus(response.status_code),
+        content=response.content,
+        headers=response.headers,
+        parsed=_parse_response(client=client, response=response),
+    )
+
+
+def sync_detailed(
+    id: str,
+    *,
+    client: AuthenticatedClient | Client,
+    format_: Format | Unset = UNSET,
+    angles: AngleUnit | Unset = UNSET,
+    decimal: DecimalMark | Unset = UNSET,
+
+) -> Response[Problem | Values]:
+    """ Every scalar of a job's result with its unit.
+
+     JSON `{"values": [{"pointer", "value", "unit"}]}`, or CSV
+    `pointer,value,unit` with `Accept: text/csv` (or `?format=csv`);
+    `?angles=deg` gives angles in degrees.
+
+    Args:
+        id (str):
+        format_ (Format | Unset): `?format=` of the values.
+        angles (AngleUnit | Unset): How angles are written, `?angles=` (the OpenAPI document's
+            enum).
+        decimal (DecimalMark | Unset): `?decimal=` of a text answer (the OpenAPI document's enum).
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[Problem | Values]
+     """
+
+
+    kwargs = _get_kwargs(
+        id=id,
+format_=format_,
+angles=angles,
+decimal=decimal,
+
+    )
+
+    response = client.get_httpx_client().request(
+        **kwargs,
+    )
+
+    return _build_response(client=client, response=response)
+
+def sync(
+    id: str,
+    *,
+    client: AuthenticatedClient | Client,
+    format_: Format | Unset = UNSET,
+    angles: AngleUnit | Unset = UNSET,
+    decimal: DecimalMark | Unset = UNSET,
+
+) -> Problem | Values | None:
+    """ Every scalar of a job's result with its unit.
+
+     JSON `{"values": [{"pointer", "value", "unit"}]}`, or CSV
+    `pointer,value,unit` with `Accept: text/csv` (or `?format=csv`);
+    `?angles=deg` gives angles in degrees.
+
+    Args:
+        id (str):
+        format_ (Format | Unset): `?format=` of the values.
+        angles (AngleUnit | Unset): How angles are written, `?angles=` (the OpenAPI document's
+            enum).
+        decimal (DecimalMark | Unset): `?decimal=` of a text answer (the OpenAPI document's enum).
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Problem | Values
+     """
+
+
+    return sync_detailed(
+        id=id,
+client=client,
+format_=format_,
+angles=angles,
+decimal=decimal,
+
+    ).parsed
+
+async def asyncio_detailed(
+    id: str,
+    *,
+    client: AuthenticatedClient | Client,
+    format_: Format | Unset = UNSET,
+    angles: AngleUnit | Unset = UNSET,
+    decimal: DecimalMark | Unset = UNSET,
+
+) -> Response[Problem | Values]:
+    """ Every scalar of a job's result with its unit.
+
+     JSON `{"values": [{"pointer", "value", "unit"}]}`, or CSV
+    `pointer,value,unit` with `Accept: text/csv` (or `?format=csv`);
+    `?angles=deg` gives angles in degrees.
+
+    Args:
+        id (str):
+        format_ (Format | Unset): `?format=` of the values.
+        angles (AngleUnit | Unset): How angles are written, `?angles=` (the OpenAPI document's
+            enum).
+        decimal (DecimalMark | Unset): `?decimal=` of a text answer (the OpenAPI document's enum).
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[Problem | Values]
+     """
+
+
+    kwargs = _get_kwargs(
+        id=id,
+format_=format_,
+angles=angles,
+decimal=decimal,
+
+    )
+
+    response = await client.get_async_httpx_client().request(
+        **kwargs
+    )
+
+    return _build_response(client=client, response=response)
+
+async def asyncio(
+    id: str,
+    *,
+    client: AuthenticatedClient | Client,
+    format_: Format | Unset = UNSET,
+    angles: AngleUnit | Unset = UNSET,
+    decimal: DecimalMark | Unset = UNSET,
+
+) -> Problem | Values | None:
+    """ Every scalar of a job's result with its unit.
+
+     JSON `{"values": [{"pointer", "value", "unit"}]}`, or CSV
+    `pointer,value,unit` with `Accept: text/csv` (or `?format=csv`);
+    `?angles=deg` gives angles in degrees.
+
+    Args:
+        id (str):
+        format_ (Format | Unset): `?format=` of the values.
+        angles (AngleUnit | Unset): How angles are written, `?angles=` (the OpenAPI document's
+            enum).
+        decimal (DecimalMark | Unset): `?decimal=` of a text answer (the OpenAPI document's enum).
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Problem | Values
+     """
+
+
+    return (await asyncio_detailed(
+        id=id,
+client=client,
+format_=format_,
+angles=angles,
+decimal=decimal,
+
+    )).parsed

@@ -1,0 +1,7 @@
+from enum import StrEnum
+
+class JobCamsKind(StrEnum):
+    CAMS = "cams"
+
+    def __str__(self) -> str:
+        return str(self.value)

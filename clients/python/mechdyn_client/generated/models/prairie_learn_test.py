@@ -1,0 +1,116 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any, TypeVar, BinaryIO, TextIO, TYPE_CHECKING, Generator
+
+from attrs import define as _attrs_define
+from attrs import field as _attrs_field
+
+from ..types import UNSET, Unset
+
+
+
+
+
+
+
+T = TypeVar("T", bound="PrairieLearnTest")
+
+
+
+@_attrs_define
+class PrairieLearnTest:
+    """ 
+        Attributes:
+            description (str):
+            max_points (float):
+            message (str): The answer's feedback.
+            name (str): The answer's pointer into the result.
+            output (str):
+            points (float):
+     """
+
+    description: str
+    max_points: float
+    message: str
+    name: str
+    output: str
+    points: float
+    additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
+
+
+
+
+
+    def to_dict(self) -> dict[str, Any]:
+        description = self.description
+
+        max_points = self.max_points
+
+        message = self.message
+
+        name = self.name
+
+        output = self.output
+
+        points = self.points
+
+
+        field_dict: dict[str, Any] = {}
+        field_dict.update(self.additional_properties)
+        field_dict.update({
+            "description": description,
+            "max_points": max_points,
+            "message": message,
+            "name": name,
+            "output": output,
+            "points": points,
+        })
+
+        return field_dict
+
+
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        d = dict(src_dict)
+        description = d.pop("description")
+
+        max_points = d.pop("max_points")
+
+        message = d.pop("message")
+
+        name = d.pop("name")
+
+        output = d.pop("output")
+
+        points = d.pop("points")
+
+        instance_ = cls(
+            description=description,
+            max_points=max_points,
+            message=message,
+            name=name,
+            output=output,
+            points=points,
+        )
+
+
+        instance_.additional_properties = d
+        return instance_
+
+    @property
+    def additional_keys(self) -> list[str]:
+        return list(self.additional_properties.keys())
+
+    def __getitem__(self, key: str) -> Any:
+        return self.additional_properties[key]
+
+    def __setitem__(self, key: str, value: Any) -> None:
+        self.additional_properties[key] = value
+
+    def __delitem__(self, key: str) -> None:
+        del self.additional_properties[key]
+
+    def __contains__(self, key: str) -> bool:
+        return key in self.additional_properties
