@@ -11,6 +11,7 @@ use super::{AppState, job};
 use crate::kind::limits::Limits;
 use crate::kind::plots;
 use crate::kind::problem::{ApiError, PostErrors};
+use crate::kind::solution::Solution;
 use crate::kind::{Kind, Register, Table, compute, json_bytes, serialized};
 use crate::store::JobRow;
 use axum::extract::State;
@@ -79,6 +80,15 @@ pub trait AnyKind: Send + Sync {
     /// Its files' names and content types, and one made from a result.
     fn files(&self) -> &'static [(&'static str, &'static str)] {
         &[]
+    }
+    /// Its worked solution of step `step` of a stored job, within `limits`;
+    /// None for a kind without one.
+    fn solution(&self, _job: &plots::Job, _step: usize, _limits: &Limits) -> Option<Result<Solution, ApiError>> {
+        None
+    }
+    /// Whether its jobs have a worked solution.
+    fn has_solution(&self) -> bool {
+        false
     }
     fn file(&self, _result: &Value, _name: &str) -> Option<Vec<u8>> {
         None
@@ -161,6 +171,12 @@ impl<K: Kind> AnyKind for Registered<K> {
     }
     fn has_file(&self, result: &Value, name: &str) -> bool {
         K::has_file(result, name)
+    }
+    fn solution(&self, job: &plots::Job, step: usize, limits: &Limits) -> Option<Result<Solution, ApiError>> {
+        K::SOLUTION.map(|solve| solve(job, step, limits))
+    }
+    fn has_solution(&self) -> bool {
+        K::SOLUTION.is_some()
     }
 }
 

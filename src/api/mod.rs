@@ -31,6 +31,7 @@ pub mod read;
 pub mod retention;
 pub mod serve;
 pub mod service;
+pub mod solution;
 pub mod tables;
 pub mod templates;
 pub mod watchdog;
@@ -175,10 +176,12 @@ fn routes(kinds: &kind::Registry) -> OpenApiRouter<AppState> {
         .routes(utoipa_axum::routes!(metrics::metrics))
         .routes(utoipa_axum::routes!(pages::home))
         .routes(utoipa_axum::routes!(pages::job::job))
+        .routes(utoipa_axum::routes!(pages::solution::solution))
         .routes(utoipa_axum::routes!(pages::form::template))
         .routes(utoipa_axum::routes!(pages::favicon))
         .routes(utoipa_axum::routes!(pages::signin::form, pages::signin::sign_in))
         .routes(utoipa_axum::routes!(pages::signin::sign_out))
+        .routes(utoipa_axum::routes!(solution::solution))
         .routes(utoipa_axum::routes!(files::file))
 }
 

@@ -87,3 +87,17 @@ pub const READ_MEMORY_FACTOR: usize = 3;
 /// The same for a CSV answer or a part of a result: the read, the result as
 /// a JSON tree (about eight times its text) and the CSV text.
 pub const CSV_MEMORY_FACTOR: usize = 12;
+
+/// `?step=`, when given, a whole number from 0 to `last` (a blank one too
+/// is a 400: the document says integer, and the page's form requires the
+/// field); whether the job has that step is its reader's to say.
+pub fn step(q: &HashMap<String, String>, last: usize) -> Result<Option<usize>, ApiError> {
+    q.get("step")
+        .map(|s| {
+            s.trim().parse::<usize>().ok().filter(|&n| n <= last).ok_or_else(|| {
+                let why = crate::i18n::Msg::new("query-step").arg("text", s).arg("last", last);
+                ApiError::BadQuery(vec![FieldError::parameter_said("step", why)])
+            })
+        })
+        .transpose()
+}

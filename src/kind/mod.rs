@@ -10,6 +10,7 @@
 pub mod chart;
 pub mod constants;
 pub mod expression;
+pub mod free_body_chart;
 pub mod function_csv;
 pub mod function_read;
 pub mod limits;
@@ -19,6 +20,7 @@ pub mod plots;
 pub mod problem;
 pub mod quantity;
 pub mod refused;
+pub mod solution;
 
 use crate::engine::Progress;
 use crate::i18n::Msg;
@@ -84,6 +86,10 @@ pub trait Kind: Send + Sync + 'static {
     fn has_file(result: &Value, name: &str) -> bool {
         Self::file(result, name).is_some()
     }
+
+    /// Its worked solution at a step (`GET /v1/jobs/{id}/solution`): every
+    /// moving body's free body; None for a kind without bodies.
+    const SOLUTION: Option<solution::Solve> = None;
 
     /// The unit of the number at `pointer` (split into tokens) of `result`.
     /// Kinds whose units depend on the request (a force or a torque drives

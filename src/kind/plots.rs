@@ -45,6 +45,12 @@ pub fn no_step(step: usize, count: usize) -> ApiError {
     ApiError::BadQuery(vec![FieldError::parameter_said("step", message)])
 }
 
+/// A step at a singular position, where no force is solved, as a 422 at `?step=`.
+pub fn singular_step(step: usize) -> ApiError {
+    let message = crate::i18n::Msg::new("plot-singular-step").count("step", step);
+    ApiError::Invalid(vec![FieldError::parameter_said("step", message)])
+}
+
 /// The plots' cursor: `chart` with a line across it at x (the input or
 /// the time of step `step`, the step a page's drawing of the mechanism
 /// shows), where the step exists.
@@ -128,7 +134,8 @@ pub fn magnitudes(mut c: Chart, mut series: Vec<Series>) -> Chart {
 /// `v` with four significant figures, for labels, in the language of the
 /// request (a decimal comma in Spanish).
 pub fn sig(v: f64) -> String {
-    crate::i18n::current().figures(v)
+    // −0 (a product with a zero) written as 0.
+    crate::i18n::current().figures(if v == 0.0 { 0.0 } else { v })
 }
 
 /// Radians to degrees, for the angle axes.

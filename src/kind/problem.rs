@@ -146,6 +146,11 @@ pub enum ApiError {
         known: Vec<String>,
     },
     NoTemplate(String),
+    /// A job of a kind without a worked solution (`GET /v1/jobs/{id}/solution`).
+    NoSolution {
+        id: String,
+        kind: String,
+    },
     Conflict(Msg),
     /// The first request of an `Idempotency-Key` is still being answered.
     InProgress(String),
@@ -217,6 +222,7 @@ impl ApiError {
             Self::NoPart { .. } => (StatusCode::NOT_FOUND, "no-such-part", "problem-no-such-part"),
             Self::NoPlot { .. } => (StatusCode::NOT_FOUND, "no-such-plot", "problem-no-such-plot"),
             Self::NoFile { .. } => (StatusCode::NOT_FOUND, "no-such-file", "problem-no-such-file"),
+            Self::NoSolution { .. } => (StatusCode::NOT_FOUND, "no-such-solution", "problem-no-such-solution"),
             Self::MethodNotAllowed => {
                 (StatusCode::METHOD_NOT_ALLOWED, "method-not-allowed", "problem-method-not-allowed")
             }

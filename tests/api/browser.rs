@@ -71,6 +71,8 @@ fn chromium_loads_every_page_submits_the_form_and_opens_every_plot() {
         ("job-kinetostatics", format!("/jobs/{kinetostatics}?step=3"), plots(port, &kinetostatics).len()),
         ("job-dynamics", format!("/jobs/{dynamics}"), plots(port, &dynamics).len()),
         ("template-form", "/templates/p103-slider-flywheel".to_string(), 0),
+        // K1's worked solution: its three bodies' free-body diagrams.
+        ("solution-kinetostatics", format!("/jobs/{kinetostatics}/solution?step=3"), 3),
     ];
     let plan = json!({
         "base": format!("http://127.0.0.1:{port}"),
@@ -162,6 +164,7 @@ const ENGLISH: [&str; 16] = [
 fn chromium_in_spanish_reads_and_fills_the_pages_with_decimal_commas() {
     let Some((dir, port, mut service)) = served() else { return };
     let flywheel = posted(port, "/v1/flywheel", &request("p103_slider"));
+    let kinetostatics = posted(port, "/v1/kinetostatics", &request("k1_offset_slider_crank"));
     let svgs = plots(port, &flywheel);
     let out = concat!(env!("CARGO_MANIFEST_DIR"), "/target/screenshots/es");
     let selectors = ["h1", "figure img", "form input"];
@@ -171,6 +174,7 @@ fn chromium_in_spanish_reads_and_fills_the_pages_with_decimal_commas() {
             {"name": "home", "path": "/", "selectors": selectors},
             {"name": "job-flywheel", "path": format!("/jobs/{flywheel}"), "selectors": selectors},
             {"name": "template-form", "path": "/templates/p103-slider-flywheel", "selectors": selectors},
+            {"name": "solution", "path": format!("/jobs/{kinetostatics}/solution?step=3"), "selectors": selectors},
         ],
         "forms": [
             {"name": "p103-submitted", "path": "/templates/p103-slider-flywheel", "fill": {"eps": "0,03"},
@@ -204,6 +208,16 @@ fn chromium_in_spanish_reads_and_fills_the_pages_with_decimal_commas() {
         ("home", &["Trabajos recientes", "Plantillas", "P.103: volante"][..]),
         ("job-flywheel", &["Valores", "Precisión y tiempo", "Gráficas", "353,5"]),
         ("template-form", &["Calcular", "Grado de irregularidad", "0,04"]),
+        (
+            "solution",
+            &[
+                "Solución desarrollada, paso 3",
+                "Los sólidos, numerados",
+                "sus ecuaciones dan",
+                "Potencias virtuales",
+                "reacción",
+            ],
+        ),
     ] {
         let r = &report["pages"][name];
         assert_eq!(r["lang"], "es", "{name}");
@@ -213,6 +227,7 @@ fn chromium_in_spanish_reads_and_fills_the_pages_with_decimal_commas() {
         }
     }
     assert_eq!(report["pages"]["job-flywheel"]["counts"]["figure img"], 4, "its plots shown");
+    assert_eq!(report["pages"]["solution"]["counts"]["figure img"], 3, "each body's free-body diagram");
     let base = format!("http://127.0.0.1:{port}/");
     // P.103's I* varies (Wittenbauer's diagram too); the punch press's is constant (three plots).
     for (form, filled, job, figures) in

@@ -29,6 +29,7 @@ mod errors;
 mod examples;
 mod followers;
 mod four_bars;
+mod free_bodies;
 mod full_disk;
 mod fuzz;
 mod gears;

@@ -19,21 +19,41 @@ struct Probe {
     body: Option<(&'static str, String)>,
 }
 
-/// A dynamics job with the most samples (100 000, whose last step is the
-/// largest `step` any job has) and a class's CSV, for the probes.
-async fn setting(app: &TestApp) -> (String, String) {
+/// What the probes ask of: a dynamics job with the most samples (100 000,
+/// whose last step is the largest `step` any job has), a kinetostatics job
+/// with the most steps (a pendulum driven at its pin, its driving torque
+/// only) for the worked solution, and a class's CSV.
+struct Setting {
+    job: String,
+    steps: String,
+    class: String,
+}
+
+async fn setting(app: &TestApp) -> Setting {
     let run = json!({"reduced_inertia": 1, "torques": [{"name": "t", "value": {"expr": "1 - sin(phi)"}}],
         "initial": {"speed": "5 rad/s"}, "duration": 1, "samples": 100_000, "tolerance": 1e-6});
     let r = app.post("/v1/dynamics", &run).await;
     assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let pendulum = json!({
+        "mechanism": {"points": {"O": [0, 0], "G": [0.1, 0]},
+            "bodies": [{"name": "bar", "mass": 1, "inertia": 0.01, "cg": "G"}],
+            "joints": [{"name": "O", "type": "revolute", "bodies": ["ground", "bar"], "at": "O"}],
+            "gravity": [0, -9.81]},
+        "input": {"joint": "O", "speed": 1, "start": 0, "end": "360 deg", "steps": 100_000},
+        "outputs": ["driving"]});
+    let k = app.post("/v1/kinetostatics", &pendulum).await;
+    assert_eq!(k.status, StatusCode::CREATED, "{}", k.text);
     let class = "student,variant,inertia_exact\nana,1,459.6\n".to_string();
-    (r.json()["id"].as_str().unwrap().to_string(), class)
+    let id = |r: &crate::helpers::Reply| r.json()["id"].as_str().unwrap().to_string();
+    Setting { job: id(&r), steps: id(&k), class }
 }
 
-fn probe(path: &str, name: &str, (job, class): &(String, String)) -> Probe {
+fn probe(path: &str, name: &str, Setting { job, steps, class }: &Setting) -> Probe {
     let get = |path: String, query: &str| Probe { method: "GET", path, query: query.into(), body: None };
     match path {
         "/jobs/{id}" => get(format!("/jobs/{job}"), ""),
+        "/v1/jobs/{id}/solution" => get(format!("/v1/jobs/{steps}/solution"), ""),
+        "/jobs/{id}/solution" => get(format!("/jobs/{steps}/solution"), ""),
         "/v1/jobs/{id}/plots/{name}.svg" => get(format!("/v1/jobs/{job}/plots/speed.svg"), ""),
         "/v1/jobs" => get("/v1/jobs".into(), ""),
         "/v1/templates/{id}/variants" => {
@@ -85,7 +105,8 @@ fn beside(x: &Value, integer: bool, up: bool) -> String {
 
 #[tokio::test]
 async fn every_range_of_the_document_is_the_services() {
-    let app = TestApp::new().await;
+    // Room for the kinetostatics job of 100 000 steps (26 MB).
+    let app = TestApp::with_limits(mechdyn::kind::Limits { result_bytes: 64 << 20, ..Default::default() }).await;
     let doc = app.get("/openapi.json").await.json();
     let setting = setting(&app).await;
     let mut probed = 0;

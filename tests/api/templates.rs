@@ -6,7 +6,7 @@ use crate::helpers::{TestApp, case, request};
 use axum::http::StatusCode;
 use serde_json::{Value, json};
 
-const BUILTIN: [&str; 29] = [
+const BUILTIN: [&str; 31] = [
     "p103-slider-flywheel",
     "p103-class",
     "p107-two-stroke-engine",
@@ -32,6 +32,8 @@ const BUILTIN: [&str; 29] = [
     "tooth-thickness",
     "p63-scotch-yoke",
     "p115-shaper",
+    "p23-four-bar-statics",
+    "p53-shaper-dynamics",
     "differential-train",
     "rotor-disk-angle",
     "rotor-disk-accelerating",

@@ -8,6 +8,7 @@ pub mod form;
 pub mod job;
 mod layout;
 pub mod signin;
+pub mod solution;
 mod unstored;
 
 use super::AppState;

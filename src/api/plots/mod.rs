@@ -16,11 +16,12 @@ pub mod svg;
 
 use super::AppState;
 use super::kind::AnyKind;
+pub use super::read::step;
 use super::read::{query, result_tree};
 pub use crate::kind::chart::{Chart, Listed};
 use crate::kind::plots::{Job, Options};
 
-use crate::kind::problem::{ApiError, FieldError, PrivateErrors, ReadErrors};
+use crate::kind::problem::{ApiError, PrivateErrors, ReadErrors};
 use axum::Json;
 use axum::extract::rejection::QueryRejection;
 use axum::extract::{Path, Query, State};
@@ -120,15 +121,30 @@ pub async fn plot(
 
 /// The SVG of plot `name` of job `id` (also the pages' pictures).
 pub async fn render(state: &AppState, id: &str, name: &str, options: Options) -> Result<String, ApiError> {
-    let (row, result, _reserved) = result_tree(state, id).await?;
-    let request = serde_json::from_slice::<Value>(&row.request).unwrap_or_default();
-    let job = Job { request: &request, result: &result };
-    let chart = chart(state.kinds.find(&row.kind), &job, (id, name), &options)?;
+    let chart = match name.strip_prefix("free-body-") {
+        Some(body) => free_body(state, id, body, options.step.unwrap_or(0)).await?,
+        None => {
+            let (row, result, _reserved) = result_tree(state, id).await?;
+            let request = serde_json::from_slice::<Value>(&row.request).unwrap_or_default();
+            let job = Job { request: &request, result: &result };
+            chart(state.kinds.find(&row.kind), &job, (id, name), &options)?
+        }
+    };
     let lang = crate::i18n::current();
     tokio::task::spawn_blocking(move || crate::i18n::within_sync(lang, || animate::render(&chart)))
         .await
         .map_err(|e| ApiError::Internal(format!("plot: {e}")))?
         .map_err(ApiError::Internal)
+}
+
+/// Body `body`'s free body at step `step` of job `id` (a kind with a worked
+/// solution), or the 404 naming the bodies it has.
+async fn free_body(state: &AppState, id: &str, body: &str, step: usize) -> Result<Chart, ApiError> {
+    let solution = super::solution::solve(state, id, step).await?;
+    crate::kind::free_body_chart::chart(&solution, body).ok_or_else(|| {
+        let known = solution.bodies.iter().map(|b| format!("free-body-{}", b.body)).collect();
+        ApiError::NoPlot { id: id.into(), name: format!("free-body-{body}"), known }
+    })
 }
 
 /// The chart of plot `name` of `job` (of `kind`, its id `id`), or the 404
@@ -150,20 +166,6 @@ pub async fn listed(state: &AppState, id: &str) -> Result<(Vec<Listed>, crate::s
     let request = serde_json::from_slice::<Value>(&row.request).unwrap_or_default();
     let plots = state.kinds.find(&row.kind).map(|k| k.plots(&Job { request: &request, result: &result }));
     Ok((plots.unwrap_or_default(), row))
-}
-
-/// `?step=`, when given, a whole number from 0 to `last` (a blank one too
-/// is a 400: the document says integer, and the page's form requires the
-/// field); whether the job has that step is its reader's to say.
-pub fn step(q: &HashMap<String, String>, last: usize) -> Result<Option<usize>, ApiError> {
-    q.get("step")
-        .map(|s| {
-            s.trim().parse::<usize>().ok().filter(|&n| n <= last).ok_or_else(|| {
-                let why = crate::i18n::Msg::new("query-step").arg("text", s).arg("last", last);
-                ApiError::BadQuery(vec![FieldError::parameter_said("step", why)])
-            })
-        })
-        .transpose()
 }
 
 #[cfg(test)]

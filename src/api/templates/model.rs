@@ -230,6 +230,8 @@ pub const LIBRARY_FILES: &[(&str, &str)] = &[
     ("tooth-thickness.json", include_str!("../../../library/tooth-thickness.json")),
     ("p63-scotch-yoke.json", include_str!("../../../library/p63-scotch-yoke.json")),
     ("p115-shaper.json", include_str!("../../../library/p115-shaper.json")),
+    ("p23-four-bar-statics.json", include_str!("../../../library/p23-four-bar-statics.json")),
+    ("p53-shaper-dynamics.json", include_str!("../../../library/p53-shaper-dynamics.json")),
     ("differential-train.json", include_str!("../../../library/differential-train.json")),
     ("rotor-disk-angle.json", include_str!("../../../library/rotor-disk-angle.json")),
     ("rotor-disk-accelerating.json", include_str!("../../../library/rotor-disk-accelerating.json")),

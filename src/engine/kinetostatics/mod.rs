@@ -16,18 +16,22 @@
 mod actions;
 mod actuators;
 mod contacts;
+mod free_body;
 mod friction;
 mod loads;
 mod locking;
 mod magnitudes;
 mod multipliers;
+mod order;
 mod reactions;
 mod summary;
 
 pub use contacts::{ContactState, Frame, contact_state};
+pub use free_body::{Action, Couple, Force, FreeBody, acting_joint, free_bodies, linear_input};
 pub use loads::{
     Energy, Load, applied_forces, applied_forces_into, energy, point_acceleration, point_motion, potential,
 };
+pub use order::{Group, solving_order};
 pub use reactions::reactions;
 pub use summary::Summary;
 use summary::Tally;

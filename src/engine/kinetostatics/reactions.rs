@@ -117,19 +117,31 @@ fn placed(m: &Mechanism, (q, trig): (&[f64], &[(f64, f64)]), b: BodyId, p: [f64;
 /// couple on it: tangential M₂/r₂, radial |M₂/r₂|·tan α pushing the teeth apart
 /// (towards the gear's centre; outwards for the ring of an internal mesh).
 fn tooth_force(m: &Mechanism, q: &[f64], [i, j]: [BodyId; 2], pitch: &Pitch, couple: f64) -> [f64; 2] {
-    let zero = [0.0; 2];
+    let Some((_, w)) = mesh_line(m, q, [i, j], pitch) else { return [0.0; 2] };
+    let t = perp(w);
+    let tangential = couple / pitch.radius;
+    let radial = tangential.abs() * pitch.pressure_angle.tan() * if pitch.second_is_ring { 1.0 } else { -1.0 };
+    [tangential * t[0] + radial * w[0], tangential * t[1] + radial * w[1]]
+}
+
+/// The pitch point of a mesh at q, where its tooth force acts: the second
+/// gear's pitch radius from its centre along w.
+pub(super) fn pitch_point(m: &Mechanism, q: &[f64], bodies: [BodyId; 2], pitch: &Pitch) -> [f64; 2] {
+    mesh_line(m, q, bodies, pitch)
+        .map_or(pitch.centers[1], |(c2, w)| [c2[0] + pitch.radius * w[0], c2[1] + pitch.radius * w[1]])
+}
+
+/// The second gear's centre at q and w, the unit vector from it to the
+/// pitch point (towards the first gear's centre, or away from the ring's);
+/// None where the centres coincide.
+fn mesh_line(m: &Mechanism, q: &[f64], [i, j]: [BodyId; 2], pitch: &Pitch) -> Option<([f64; 2], [f64; 2])> {
     let (c1, _) = point_motion(m, q, &vec![0.0; q.len()], (i, pitch.centers[0]));
     let (c2, _) = point_motion(m, q, &vec![0.0; q.len()], (j, pitch.centers[1]));
     let d = [c1[0] - c2[0], c1[1] - c2[1]];
     let length = d[0].hypot(d[1]);
     if length == 0.0 {
-        return zero;
+        return None;
     }
-    // w: from the second gear's centre to the pitch point.
     let away = pitch.internal && !pitch.second_is_ring;
-    let w = if away { [-d[0] / length, -d[1] / length] } else { [d[0] / length, d[1] / length] };
-    let t = perp(w);
-    let tangential = couple / pitch.radius;
-    let radial = tangential.abs() * pitch.pressure_angle.tan() * if pitch.second_is_ring { 1.0 } else { -1.0 };
-    [tangential * t[0] + radial * w[0], tangential * t[1] + radial * w[1]]
+    Some((c2, if away { [-d[0] / length, -d[1] / length] } else { [d[0] / length, d[1] / length] }))
 }

@@ -20,6 +20,7 @@ problem-job-not-done = The job has no result
 problem-no-such-part = No such part of the result
 problem-no-such-plot = No such plot of the job
 problem-no-such-file = No such file of the job
+problem-no-such-solution = The job has no worked solution
 problem-method-not-allowed = Method not allowed
 problem-compute-budget = The job ran out of its compute budget
 problem-result-too-large = The result would be too large
@@ -56,6 +57,7 @@ detail-no-plot = job '{ $id }' has no plot '{ $name }' (its plots: { $known })
 detail-no-plot-none = job '{ $id }' has no plot '{ $name }' (it has no plots)
 detail-no-file = job '{ $id }' has no file '{ $name }' (its files: { $known })
 detail-no-file-none = job '{ $id }' has no file '{ $name }' (it has none)
+detail-no-solution = job '{ $id }' is a { $kind } job, which has no free bodies to solve (a kinetostatics job has)
 detail-no-template = no template with id '{ $id }' (GET /v1/templates lists them)
 text-as-is = { $why }
 text-nothing = { "" }
@@ -308,6 +310,9 @@ plot-wittenbauer-note = The tangents meet at (−I, −T₀) = ({ $x } kg·m², 
 plot-joint = joint { $joint }
 plot-most-joints = the { $most } largest of { $total } joints; each joint's own plot shows the rest
 plot-reactions-to-scale = joint reactions to scale: the largest, { $force } N, drawn { $length } m long
+plot-free-body = Free body of { $body } ({ $number }), step { $step }
+plot-free-body-sums = ΣFx = { $fx } N, ΣFy = { $fy } N, ΣM_G = { $moment } N·m
+plot-forces-to-scale = forces to scale: the largest, { $force } N, drawn { $length } m long
 plot-ks-driving = Driving action against the input
 plot-ks-reactions = Joint reactions |R| against the input
 plot-ks-polar = Polar diagram of the reaction at joint { $joint }
@@ -541,6 +546,7 @@ size-also-outputs = ; or ask for fewer "outputs" (every body's kinematics is the
 ## A plot's step
 
 plot-no-steps = { $step }: this job draws no mechanism, so it has no steps to choose
+plot-singular-step = { $step }: the mechanism is at a singular position at this step, where no force is solved; choose a step beside it
 plot-steps = { $step }: the job has { $count ->
         [one] 1 step (0)
        *[other] { $count } steps (0 to { $last })
@@ -569,3 +575,31 @@ progress-cam-lift = the lift had been evaluated at { $angle } of { $of } angles
 progress-reading = while the request was being read: its sketch assembled, its contacts placed, its inputs laid out
 progress-stopped = it did not stop by itself, and was stopped from outside
 detail-request-timeout = the request's body did not arrive in time: { $read } bytes in { $seconds } s; this service needs a body to keep arriving at { $rate } bytes/s once { $grace } s have passed
+
+## The worked solution (free bodies)
+
+page-solution-title = Worked solution, step { $step }
+page-solution-input = Input:
+page-solution-job = The job
+page-solution-previous = Previous step
+page-solution-next = Next step
+page-solution-numbering = The bodies, numbered
+page-solution-order = The order of the solution
+page-solution-order-why = Each group's equations give its unknowns once the groups before it are solved: from the last group of the mechanism to its input.
+page-solution-group = { $bodies }: its equations give { $unknowns }
+page-solution-diagram = Free-body diagram of { $body }, its forces to one scale
+page-solution-action = Action
+page-solution-from = From
+page-solution-at = Point (m)
+page-solution-reaction = reaction
+page-solution-inertia = inertia
+page-solution-weight = weight
+page-solution-driving = driving
+page-solution-load = load
+page-solution-power = Virtual power
+page-solution-power-why = The power of every action at this step: by the principle of virtual power they add up to zero (a joint's two sides cancel but for its friction).
+page-solution-reactions = reactions (their friction)
+page-solution-total = total
+page-solution-link = Worked solution (free bodies)
+page-solution-at-step = Solve step
+page-solution-solve = Solve

@@ -20,6 +20,7 @@ problem-job-not-done = El trabajo no tiene resultado
 problem-no-such-part = El resultado no tiene esa parte
 problem-no-such-plot = El trabajo no tiene esa gráfica
 problem-no-such-file = El trabajo no tiene ese fichero
+problem-no-such-solution = El trabajo no tiene solución desarrollada
 problem-method-not-allowed = Método no permitido
 problem-compute-budget = El trabajo agotó su tiempo de cálculo
 problem-result-too-large = El resultado sería demasiado grande
@@ -56,6 +57,7 @@ detail-no-plot = el trabajo '{ $id }' no tiene la gráfica '{ $name }' (sus grá
 detail-no-plot-none = el trabajo '{ $id }' no tiene la gráfica '{ $name }' (no tiene gráficas)
 detail-no-file = el trabajo '{ $id }' no tiene el fichero '{ $name }' (sus ficheros: { $known })
 detail-no-file-none = el trabajo '{ $id }' no tiene el fichero '{ $name }' (no tiene ninguno)
+detail-no-solution = el trabajo '{ $id }' es de tipo { $kind }, que no tiene sólidos libres que resolver (uno de cinetostática sí)
 detail-no-template = no hay ninguna plantilla con id '{ $id }' (GET /v1/templates las lista)
 text-as-is = { $why }
 text-nothing = { "" }
@@ -308,6 +310,9 @@ plot-wittenbauer-note = Las tangentes se cortan en (−I, −T₀) = ({ $x } kg�
 plot-joint = par { $joint }
 plot-most-joints = los { $most } mayores de { $total } pares; la gráfica propia de cada par muestra el resto
 plot-reactions-to-scale = reacciones en los pares a escala: la mayor, { $force } N, dibujada de { $length } m
+plot-free-body = Sólido libre de { $body } ({ $number }), paso { $step }
+plot-free-body-sums = ΣFx = { $fx } N, ΣFy = { $fy } N, ΣM_G = { $moment } N·m
+plot-forces-to-scale = fuerzas a escala: la mayor, { $force } N, dibujada de { $length } m
 plot-ks-driving = Acción motriz frente a la entrada
 plot-ks-reactions = Reacciones en los pares |R| frente a la entrada
 plot-ks-polar = Diagrama polar de la reacción en el par { $joint }
@@ -541,6 +546,7 @@ size-also-outputs = ; o pida menos "outputs" (la cinemática de cada sólido es 
 ## El paso de un dibujo
 
 plot-no-steps = { $step }: este trabajo no dibuja ningún mecanismo, así que no tiene pasos que elegir
+plot-singular-step = { $step }: en este paso el mecanismo está en una posición singular, donde no se resuelve ninguna fuerza; elija un paso próximo
 plot-steps = { $step }: el trabajo tiene { $count ->
         [one] 1 paso (0)
        *[other] { $count } pasos (de 0 a { $last })
@@ -569,3 +575,31 @@ progress-cam-lift = se había evaluado la alzada en { $angle } de { $of } ángul
 progress-reading = mientras se leía la petición: al montar su croquis, situar sus contactos o preparar sus entradas
 progress-stopped = no se detuvo por sí mismo, y se detuvo desde fuera
 detail-request-timeout = el cuerpo de la petición no llegó a tiempo: { $read } bytes en { $seconds } s; este servicio necesita que el cuerpo siga llegando a { $rate } bytes/s pasados { $grace } s
+
+## La solución desarrollada (sólidos libres)
+
+page-solution-title = Solución desarrollada, paso { $step }
+page-solution-input = Entrada:
+page-solution-job = El trabajo
+page-solution-previous = Paso anterior
+page-solution-next = Paso siguiente
+page-solution-numbering = Los sólidos, numerados
+page-solution-order = El orden de la solución
+page-solution-order-why = Las ecuaciones de cada grupo dan sus incógnitas una vez resueltos los grupos anteriores: desde el último grupo del mecanismo hasta su entrada.
+page-solution-group = { $bodies }: sus ecuaciones dan { $unknowns }
+page-solution-diagram = Diagrama de sólido libre de { $body }, sus fuerzas a una misma escala
+page-solution-action = Acción
+page-solution-from = Ejercida por
+page-solution-at = Punto (m)
+page-solution-reaction = reacción
+page-solution-inertia = inercia
+page-solution-weight = peso
+page-solution-driving = motriz
+page-solution-load = carga
+page-solution-power = Potencias virtuales
+page-solution-power-why = La potencia de cada acción en este paso: por el principio de las potencias virtuales suman cero (las dos caras de un par se anulan salvo su rozamiento).
+page-solution-reactions = reacciones (su rozamiento)
+page-solution-total = total
+page-solution-link = Solución desarrollada (sólidos libres)
+page-solution-at-step = Resolver el paso
+page-solution-solve = Resolver

@@ -20,6 +20,7 @@ impl ApiError {
             Self::NoPart { id, pointer } => Msg::new("detail-no-part").arg("id", id).arg("pointer", pointer),
             Self::NoPlot { id, name, known } => listed("detail-no-plot", "detail-no-plot-none", id, name, known),
             Self::NoFile { id, name, known } => listed("detail-no-file", "detail-no-file-none", id, name, known),
+            Self::NoSolution { id, kind } => Msg::new("detail-no-solution").arg("id", id).arg("kind", kind),
             Self::NoTemplate(id) => Msg::new("detail-no-template").arg("id", id),
             Self::Conflict(why) | Self::OverBudget(why) | Self::RequestTimeout(why) => why.clone(),
             Self::InProgress(key) => Msg::new("detail-in-progress").arg("key", key),

@@ -6,6 +6,7 @@ mod plots;
 mod request;
 mod result;
 mod shaking;
+mod solution;
 mod table;
 
 pub use request::{KinetostaticsRequest, OutputKind};
@@ -97,6 +98,7 @@ impl Kind for Kinetostatics {
     type Request = KinetostaticsRequest;
     type Result = KinetostaticsResult;
     const PLOTS: Plots = Plots { list: plots::list, draw: plots::draw };
+    const SOLUTION: Option<crate::kind::solution::Solve> = Some(solution::solution);
 
     fn compute(
         request: &KinetostaticsRequest,

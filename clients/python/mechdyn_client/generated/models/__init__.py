@@ -43,6 +43,7 @@ from .contact_dto import ContactDto
 from .correction_plane_dto import CorrectionPlaneDto
 from .count import Count
 from .counterweight_dto import CounterweightDto
+from .couple import Couple
 from .curve_dto_type_0 import CurveDtoType0
 from .curve_dto_type_1 import CurveDtoType1
 from .curve_dto_type_2 import CurveDtoType2
@@ -62,6 +63,7 @@ from .dynamics_result import DynamicsResult
 from .dynamics_sample import DynamicsSample
 from .dynamics_torque import DynamicsTorque
 from .energy_dto import EnergyDto
+from .equations import Equations
 from .equivalent_request import EquivalentRequest
 from .equivalent_request_points import EquivalentRequestPoints
 from .equivalent_result import EquivalentResult
@@ -74,8 +76,10 @@ from .flywheel_request_constants_type_0 import FlywheelRequestConstantsType0
 from .flywheel_result import FlywheelResult
 from .flywheel_result_assembled_points_type_0 import FlywheelResultAssembledPointsType0
 from .flywheel_sample import FlywheelSample
+from .force import Force
 from .format_ import Format
 from .frame_dto import FrameDto
+from .free_body import FreeBody
 from .friction_dto import FrictionDto
 from .function_spec import FunctionSpec
 from .gear_request import GearRequest
@@ -87,6 +91,7 @@ from .given_torque import GivenTorque
 from .gradescope import Gradescope
 from .gradescope_messages import GradescopeMessages
 from .gradescope_test import GradescopeTest
+from .group import Group
 from .grubler_dto import GrublerDto
 from .health import Health
 from .in_spanish import InSpanish
@@ -218,6 +223,8 @@ from .segment_dto import SegmentDto
 from .segment_peaks import SegmentPeaks
 from .shaking_dto import ShakingDto
 from .sign_in import SignIn
+from .solution import Solution
+from .solution_numbering import SolutionNumbering
 from .spline_dto import SplineDto
 from .stated import Stated
 from .step_dto import StepDto
@@ -250,6 +257,8 @@ from .variant import Variant
 from .variant_parameters import VariantParameters
 from .variant_values import VariantValues
 from .variants import Variants
+from .virtual_power import VirtualPower
+from .virtual_power_actions import VirtualPowerActions
 
 __all__ = (
     "AccuracyDto",
@@ -295,6 +304,7 @@ __all__ = (
     "CorrectionPlaneDto",
     "Count",
     "CounterweightDto",
+    "Couple",
     "CurveDtoType0",
     "CurveDtoType1",
     "CurveDtoType2",
@@ -314,6 +324,7 @@ __all__ = (
     "DynamicsTorque",
     "DynamicUnbalanceDto",
     "EnergyDto",
+    "Equations",
     "EquivalentRequest",
     "EquivalentRequestPoints",
     "EquivalentResult",
@@ -326,8 +337,10 @@ __all__ = (
     "FlywheelResult",
     "FlywheelResultAssembledPointsType0",
     "FlywheelSample",
+    "Force",
     "Format",
     "FrameDto",
+    "FreeBody",
     "FrictionDto",
     "FunctionSpec",
     "GearRequest",
@@ -339,6 +352,7 @@ __all__ = (
     "Gradescope",
     "GradescopeMessages",
     "GradescopeTest",
+    "Group",
     "GrublerDto",
     "Health",
     "InertiaDto",
@@ -470,6 +484,8 @@ __all__ = (
     "SegmentPeaks",
     "ShakingDto",
     "SignIn",
+    "Solution",
+    "SolutionNumbering",
     "SplineDto",
     "Stated",
     "StepDto",
@@ -502,4 +518,6 @@ __all__ = (
     "VariantParameters",
     "Variants",
     "VariantValues",
+    "VirtualPower",
+    "VirtualPowerActions",
 )

@@ -1,0 +1,145 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any, TypeVar, BinaryIO, TextIO, TYPE_CHECKING, Generator
+
+from attrs import define as _attrs_define
+from attrs import field as _attrs_field
+
+from ..types import UNSET, Unset
+
+from ..types import UNSET, Unset
+from typing import cast
+
+
+
+
+
+
+T = TypeVar("T", bound="Couple")
+
+
+
+@_attrs_define
+class Couple:
+    """ A couple on the body (counter-clockwise positive).
+
+        Attributes:
+            kind (str):
+            moment (float): N·m
+            name (str): `M_I3`, `M23` (a pin's friction, a guide's couple), `M_m`.
+            power (float): M·ω of the body, W.
+            by (None | str | Unset):
+            joint (None | str | Unset):
+     """
+
+    kind: str
+    moment: float
+    name: str
+    power: float
+    by: None | str | Unset = UNSET
+    joint: None | str | Unset = UNSET
+    additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
+
+
+
+
+
+    def to_dict(self) -> dict[str, Any]:
+        kind = self.kind
+
+        moment = self.moment
+
+        name = self.name
+
+        power = self.power
+
+        by: None | str | Unset
+        if isinstance(self.by, Unset):
+            by = UNSET
+        else:
+            by = self.by
+
+        joint: None | str | Unset
+        if isinstance(self.joint, Unset):
+            joint = UNSET
+        else:
+            joint = self.joint
+
+
+        field_dict: dict[str, Any] = {}
+        field_dict.update(self.additional_properties)
+        field_dict.update({
+            "kind": kind,
+            "moment": moment,
+            "name": name,
+            "power": power,
+        })
+        if by is not UNSET:
+            field_dict["by"] = by
+        if joint is not UNSET:
+            field_dict["joint"] = joint
+
+        return field_dict
+
+
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        d = dict(src_dict)
+        kind = d.pop("kind")
+
+        moment = d.pop("moment")
+
+        name = d.pop("name")
+
+        power = d.pop("power")
+
+        def _parse_by(data: object) -> None | str | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(None | str | Unset, data)
+
+        by = _parse_by(d.pop("by", UNSET))
+
+
+        def _parse_joint(data: object) -> None | str | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(None | str | Unset, data)
+
+        joint = _parse_joint(d.pop("joint", UNSET))
+
+
+        instance_ = cls(
+            kind=kind,
+            moment=moment,
+            name=name,
+            power=power,
+            by=by,
+            joint=joint,
+        )
+
+
+        instance_.additional_properties = d
+        return instance_
+
+    @property
+    def additional_keys(self) -> list[str]:
+        return list(self.additional_properties.keys())
+
+    def __getitem__(self, key: str) -> Any:
+        return self.additional_properties[key]
+
+    def __setitem__(self, key: str, value: Any) -> None:
+        self.additional_properties[key] = value
+
+    def __delitem__(self, key: str) -> None:
+        del self.additional_properties[key]
+
+    def __contains__(self, key: str) -> bool:
+        return key in self.additional_properties
