@@ -86,8 +86,8 @@ pub trait AnyKind: Send + Sync {
     fn solution(&self, _job: &plots::Job, _step: usize, _limits: &Limits) -> Option<Result<Solution, ApiError>> {
         None
     }
-    /// Whether its jobs have a worked solution.
-    fn has_solution(&self) -> bool {
+    /// Whether a stored result of it has a worked solution.
+    fn has_solution(&self, _result: &Value) -> bool {
         false
     }
     fn file(&self, _result: &Value, _name: &str) -> Option<Vec<u8>> {
@@ -175,8 +175,8 @@ impl<K: Kind> AnyKind for Registered<K> {
     fn solution(&self, job: &plots::Job, step: usize, limits: &Limits) -> Option<Result<Solution, ApiError>> {
         K::SOLUTION.map(|solve| solve(job, step, limits))
     }
-    fn has_solution(&self) -> bool {
-        K::SOLUTION.is_some()
+    fn has_solution(&self, result: &Value) -> bool {
+        K::has_solution(result)
     }
 }
 

@@ -30,7 +30,9 @@ use std::collections::HashMap;
     ),
     responses(
         (status = 200, description = "The worked solution of the step", body = Solution),
-        (status = 422, description = "The step is at a singular position, where no force is solved",
+        (status = 400, description = "An unknown query parameter, or `step` given twice or not a whole number within \
+            the limit", body = crate::kind::problem::Problem, content_type = "application/problem+json"),
+        (status = 422, description = "A step the job has not, or one at a singular position, where no force is solved",
             body = crate::kind::problem::Problem, content_type = "application/problem+json"),
         ReadErrors, PrivateErrors,
     ))]
@@ -54,7 +56,11 @@ pub async fn solve(state: &AppState, id: &str, at: usize) -> Result<Solution, Ap
         crate::i18n::within_sync(lang, || {
             let job = Job { request: &request, result: &result };
             let solved = kinds.find(&kind).and_then(|k| k.solution(&job, at, &limits));
-            solved.unwrap_or(Err(ApiError::NoSolution { id, kind }))
+            // A kind whose job has no bodies (a run in reduced form) names it without its id.
+            match solved {
+                None | Some(Err(ApiError::NoSolution { .. })) => Err(ApiError::NoSolution { id, kind }),
+                Some(solved) => solved,
+            }
         })
     })
     .await

@@ -91,6 +91,12 @@ pub trait Kind: Send + Sync + 'static {
     /// moving body's free body; None for a kind without bodies.
     const SOLUTION: Option<solution::Solve> = None;
 
+    /// Whether a stored result has a worked solution (a kind whose results
+    /// may have no bodies, a run in reduced form, says so).
+    fn has_solution(_result: &Value) -> bool {
+        Self::SOLUTION.is_some()
+    }
+
     /// The unit of the number at `pointer` (split into tokens) of `result`.
     /// Kinds whose units depend on the request (a force or a torque drives
     /// a mechanism) override this and fall back to [`unit_in`].

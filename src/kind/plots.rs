@@ -38,11 +38,21 @@ pub type Drawn = Result<Option<Chart>, ApiError>;
 
 /// A step beyond the result's `count` steps, as a 400 at `?step=`.
 pub fn no_step(step: usize, count: usize) -> ApiError {
-    let message = match count {
+    ApiError::BadQuery(vec![FieldError::parameter_said("step", steps_said(step, count))])
+}
+
+/// A step beyond the job's `count` steps of a request well formed (a
+/// worked solution's), as a 422 at `?step=`.
+pub fn beyond_steps(step: usize, count: usize) -> ApiError {
+    ApiError::Invalid(vec![FieldError::parameter_said("step", steps_said(step, count))])
+}
+
+/// "12: the job has 12 steps (0 to 11)".
+fn steps_said(step: usize, count: usize) -> crate::i18n::Msg {
+    match count {
         0 => crate::i18n::Msg::new("plot-no-steps").count("step", step),
         n => crate::i18n::Msg::new("plot-steps").count("step", step).count("count", n).count("last", n - 1),
-    };
-    ApiError::BadQuery(vec![FieldError::parameter_said("step", message)])
+    }
 }
 
 /// A step at a singular position, where no force is solved, as a 422 at `?step=`.

@@ -284,7 +284,7 @@ async fn p53_s_shaper_is_solved_from_the_ram_to_the_crank() {
 }
 
 /// What cannot be solved says why: a flywheel job has no free bodies
-/// (404 naming its kind), a step beyond the job's is a 400 at `step`, a
+/// (404 naming its kind), a step beyond the job's is a 422 at `step`, a
 /// body the job has not is a 404 listing the free-body plots it has; a
 /// body's diagram is an SVG drawn to scale with its name.
 #[tokio::test]
@@ -302,7 +302,7 @@ async fn a_solution_that_cannot_be_had_says_why() {
     let k1 = app.post("/v1/kinetostatics", &request("k1_offset_slider_crank")).await.json();
     let id = k1["id"].as_str().unwrap();
     let beyond = app.get(&format!("/v1/jobs/{id}/solution?step=12")).await;
-    assert_eq!(beyond.status, 400, "{}", beyond.text);
+    assert_eq!(beyond.status, 422, "{}", beyond.text);
     assert_eq!(beyond.json()["errors"][0]["parameter"], "step", "{}", beyond.text);
     let none = app.get(&format!("/v1/jobs/{id}/plots/free-body-wheel.svg?step=2")).await;
     assert_eq!(none.status, 404, "{}", none.text);
@@ -310,4 +310,39 @@ async fn a_solution_that_cannot_be_had_says_why() {
     let svg = app.get(&format!("/v1/jobs/{id}/plots/free-body-rod.svg?step=2")).await;
     assert_eq!(svg.status, 200, "{}", svg.text);
     assert!(svg.text.contains("R23") && svg.text.contains("F_I3") && svg.text.contains("M_I3"), "{}", svg.text);
+}
+
+/// A run's sample: D1's scotch yoke from rest with its crank free, and
+/// P.68's two-link arm (two free inputs, a motor's torque at each joint
+/// as a load): the reactions the run stored, the loads at the sample's
+/// time and the bodies' inertia balance every body at every tenth sample,
+/// to 1e-6 of its largest action — d'Alembert's check of the run itself;
+/// the free inputs have no effort, their accelerations are what the
+/// crank's group gives. A run in reduced form has no free bodies (404).
+#[tokio::test]
+async fn a_run_s_samples_balance_with_the_reactions_it_stored() {
+    let app = TestApp::new().await;
+    for name in ["d1_scotch_yoke_machine", "p68_two_link_arm"] {
+        let job = app.post("/v1/dynamics", &request(name)).await;
+        assert_eq!(job.status, 201, "{name}: {}", job.text);
+        let job = job.json();
+        let id = job["id"].as_str().unwrap();
+        let samples = job["result"]["machine"]["samples"].as_array().unwrap();
+        for k in (0..samples.len()).step_by(10) {
+            let got = app.get(&format!("/v1/jobs/{id}/solution?step={k}")).await;
+            assert_eq!(got.status, 200, "{name} sample {k}: {}", got.text);
+            let s = got.json();
+            balanced(&s, k, 1e-6);
+            opposite_and_the_jobs(&s, &samples[k], k, 1e-12);
+            let efforts = s["bodies"].as_array().unwrap().iter().flat_map(|b| b["couples"].as_array().unwrap().clone());
+            assert!(efforts.filter(|c| c["kind"] == "driving").count() == 0, "{name} {k}: a free input has no effort");
+        }
+        let solution = app.get(&format!("/v1/jobs/{id}/solution?step=0")).await.json();
+        let last = solution["groups"].as_array().unwrap().last().unwrap()["unknowns"].clone();
+        assert!(last.as_array().unwrap().iter().any(|u| u.as_str().unwrap().starts_with("φ̈")), "{name}: {last}");
+    }
+    let reduced = json!({"reduced_inertia": 1, "torques": [{"name": "t", "value": 1}], "duration": 1});
+    let job = app.post("/v1/dynamics", &reduced).await.json();
+    let got = app.get(&format!("/v1/jobs/{}/solution", job["id"].as_str().unwrap())).await;
+    assert_eq!(got.status, 404, "{}", got.text);
 }

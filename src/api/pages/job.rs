@@ -121,7 +121,7 @@ pub fn page(
             li { a href=(format!("/v1/jobs/{id}/values?format=csv")) { (t("page-every-value")) } }
             li { a href=(format!("/v1/jobs/{id}/plots")) { (t("page-plots-json")) } }
             @for name in &files { li { a href=(format!("/v1/jobs/{id}/{name}")) { (name) } } }
-            @if kind.has_solution() {
+            @if kind.has_solution(&result) {
                 li { a href=(format!("/jobs/{id}/solution?step={}", step.unwrap_or(0))) { (t("page-solution-link")) } }
             }
         } } @else {

@@ -24,10 +24,10 @@ use std::collections::HashMap;
         ("step" = Option<usize>, Query, minimum = 0, maximum = 99999, description = "The step, from 0 (the default) \
             to the job's last")),
     responses((status = 200, description = "The worked solution's page", content_type = "text/html", body = String),
-        (status = 400, description = "A step beyond the job's or an unknown query parameter", content_type = "text/html", body = String),
+        (status = 400, description = "An unknown query parameter, or a step not a whole number within the limit", content_type = "text/html", body = String),
         (status = 401, description = "The service keeps its jobs to its token's holders and this browser has not signed in", content_type = "text/html", body = String),
         (status = 404, description = "No job with this id, or a job without free bodies", content_type = "text/html", body = String),
-        (status = 422, description = "A step at a singular position", content_type = "text/html", body = String)))]
+        (status = 422, description = "A step the job has not, or one at a singular position", content_type = "text/html", body = String)))]
 pub async fn solution(
     State(state): State<AppState>,
     id: IdPath,

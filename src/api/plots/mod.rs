@@ -140,7 +140,13 @@ pub async fn render(state: &AppState, id: &str, name: &str, options: Options) ->
 /// Body `body`'s free body at step `step` of job `id` (a kind with a worked
 /// solution), or the 404 naming the bodies it has.
 async fn free_body(state: &AppState, id: &str, body: &str, step: usize) -> Result<Chart, ApiError> {
-    let solution = super::solution::solve(state, id, step).await?;
+    // A step beyond the job's is the plot's 400, as for its other plots.
+    let solution = super::solution::solve(state, id, step).await.map_err(|e| match e {
+        ApiError::Invalid(errors) if errors.iter().any(|f| f.parameter.as_deref() == Some("step")) => {
+            ApiError::BadQuery(errors)
+        }
+        e => e,
+    })?;
     crate::kind::free_body_chart::chart(&solution, body).ok_or_else(|| {
         let known = solution.bodies.iter().map(|b| format!("free-body-{}", b.body)).collect();
         ApiError::NoPlot { id: id.into(), name: format!("free-body-{body}"), known }

@@ -67,10 +67,15 @@ pub struct FreeBody {
 }
 
 /// Every moving body's free body at a solved `step` (its motion kept),
-/// reached by `inputs` (coordinate, speed, acceleration of each: the
-/// loads' functions read the first's coordinate and speed); None at a
-/// singular position or without the motion.
-pub fn free_bodies(m: &Mechanism, loads: &[Load], step: &Step, inputs: &[[f64; 3]]) -> Option<Vec<FreeBody>> {
+/// reached by `inputs` (coordinate, speed, acceleration of each) at `time`
+/// (the loads' functions read the first input's coordinate and speed, and
+/// the time); None at a singular position or without the motion.
+pub fn free_bodies(
+    m: &Mechanism,
+    loads: &[Load],
+    step: &Step,
+    (inputs, time): (&[[f64; 3]], f64),
+) -> Option<Vec<FreeBody>> {
     let motion = step.kinematics.as_ref().filter(|_| !step.singular)?;
     let (q, qd, qdd) = (&motion.q[..], &motion.qd[..], &motion.qdd[..]);
     let mut bodies: Vec<FreeBody> = (1..m.bodies.len()).map(|b| own_actions(m, (q, qd, qdd), b)).collect();
@@ -85,7 +90,7 @@ pub fn free_bodies(m: &Mechanism, loads: &[Load], step: &Step, inputs: &[[f64; 3
     };
     let first = inputs.first().copied().unwrap_or([0.0; 3]);
     for (k, load) in loads.iter().enumerate() {
-        for (b, at, f, moment) in load_actions(m, (q, qd), load, (first[0], [first[1], 0.0])) {
+        for (b, at, f, moment) in load_actions(m, (q, qd), load, (first[0], [first[1], time])) {
             on(b, Action::Load(k), at, f, moment);
         }
     }

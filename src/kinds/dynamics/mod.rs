@@ -8,6 +8,7 @@ mod refused;
 mod request;
 mod result;
 mod size;
+mod solution;
 
 use crate::engine::dynamics::mechanism::{self, MechanismProblem};
 use crate::engine::dynamics::{Integrator, ReducedProblem, solve};
@@ -227,6 +228,12 @@ impl Kind for Dynamics {
     type Request = DynamicsRequest;
     type Result = DynamicsResult;
     const PLOTS: Plots = Plots { list: plots::list, draw: plots::draw };
+    const SOLUTION: Option<crate::kind::solution::Solve> = Some(solution::solution);
+
+    /// A mechanism's run has its bodies' free bodies; one in reduced form has none.
+    fn has_solution(result: &Value) -> bool {
+        result["machine"].is_object()
+    }
 
     fn compute(
         request: &DynamicsRequest,

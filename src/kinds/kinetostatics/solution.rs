@@ -1,18 +1,16 @@
 //! A kinetostatics job's worked solution at one step: the stored request
 //! solved again up to that step (the same sweep, so the same branch and the
 //! same numbers as the job's), its free bodies (`engine::kinetostatics::
-//! free_bodies`) named in the notes' notation ([`crate::kind::solution`]),
-//! the Assur groups in the order they are solved, and the virtual power.
+//! free_bodies`) written by [`crate::kinds::mechanism::solution`].
 
 use super::request::{KinetostaticsRequest, Problem};
-use crate::engine::kinetostatics::{Action, FreeBody, Load, Outputs, Step, free_bodies, solve_each, solving_order};
-use crate::engine::model::{BodyId, Mechanism};
+use crate::engine::kinetostatics::{Outputs, Step, free_bodies, solve_each};
 use crate::kind::limits::Limits;
-use crate::kind::plots::{self, no_step};
+use crate::kind::plots::{self, beyond_steps};
 use crate::kind::problem::ApiError;
-use crate::kind::solution::{self as wire, Solution};
+use crate::kind::solution::Solution;
 use crate::kind::validated;
-use std::collections::BTreeMap;
+use crate::kinds::mechanism::solution::written;
 
 /// Step `step` of a stored kinetostatics job, solved again, with its problem.
 pub fn solved_step(job: &plots::Job, step: usize, limits: &Limits) -> Result<(Problem, Step), ApiError> {
@@ -21,7 +19,7 @@ pub fn solved_step(job: &plots::Job, step: usize, limits: &Limits) -> Result<(Pr
     let mut problem = validated(vec![], request.to_problem(limits))?;
     let count = problem.positions.len();
     if step >= count {
-        return Err(no_step(step, count));
+        return Err(beyond_steps(step, count));
     }
     problem.outputs = Outputs { driving: true, reactions: true, reduced: false, kinematics: true, condition: false };
     let (mut k, mut found) = (0, None);
@@ -49,176 +47,8 @@ pub fn solved_step(job: &plots::Job, step: usize, limits: &Limits) -> Result<(Pr
 pub fn solution(job: &plots::Job, step: usize, limits: &Limits) -> Result<Solution, ApiError> {
     let (problem, solved) = solved_step(job, step, limits)?;
     let inputs = &problem.positions[step];
-    let Some(bodies) = free_bodies(&problem.mechanism, &problem.loads, &solved, inputs) else {
+    let Some(bodies) = free_bodies(&problem.mechanism, &problem.loads, &solved, (inputs, 0.0)) else {
         return Err(crate::kind::plots::singular_step(step));
     };
-    Ok(written(&problem.mechanism, &problem.body_names, &problem.loads, (step, &solved.input), &bodies))
-}
-
-/// The free bodies in the notes' words.
-pub fn written(
-    m: &Mechanism,
-    names: &[String],
-    loads: &[Load],
-    (step, input): (usize, &[f64]),
-    bodies: &[FreeBody],
-) -> Solution {
-    let notation = Notation { m, names, loads };
-    let groups: Vec<wire::Group> = solving_order(m)
-        .into_iter()
-        .map(|g| wire::Group {
-            bodies: g.bodies.iter().map(|&b| names[b].clone()).collect(),
-            unknowns: g
-                .joints
-                .iter()
-                .map(|&k| notation.reaction(k, &g.bodies))
-                .chain(g.inputs.iter().map(|&i| notation.driving(i)))
-                .collect(),
-        })
-        .collect();
-    let written: Vec<wire::FreeBody> = bodies.iter().map(|fb| notation.free_body(fb)).collect();
-    Solution {
-        step,
-        input: input.to_vec(),
-        numbering: (0..m.bodies.len()).map(|b| (names[b].clone(), b + 1)).collect(),
-        order: groups.iter().flat_map(|g| g.bodies.clone()).collect(),
-        groups,
-        virtual_power: virtual_power(&written),
-        bodies: written,
-    }
-}
-
-/// Names as the notes write them.
-struct Notation<'a> {
-    m: &'a Mechanism,
-    names: &'a [String],
-    loads: &'a [Load],
-}
-
-impl Notation<'_> {
-    /// `ij` of bodies i and j (the ground 1), `i,j` where one has two digits.
-    fn pair(by: BodyId, on: BodyId) -> String {
-        let (i, j) = (by + 1, on + 1);
-        if i < 10 && j < 10 { format!("{i}{j}") } else { format!("{i},{j}") }
-    }
-
-    /// Joint k's reaction as its group's equations give it: on the group's
-    /// body (on its second body when both are the group's).
-    fn reaction(&self, k: usize, group: &[BodyId]) -> String {
-        let [i, j] = self.m.joints[k].bodies;
-        let (by, on) = if group.contains(&j) { (i, j) } else { (j, i) };
-        format!("R{}", Self::pair(by, on))
-    }
-
-    /// Input i's effort: `M_m` (a couple) or `F_m` (a force), numbered when there are several.
-    fn driving(&self, i: usize) -> String {
-        let linear = crate::engine::kinetostatics::linear_input(self.m, i);
-        let n = if self.m.drivers.len() > 1 { format!("{}", i + 1) } else { String::new() };
-        format!("{}_m{n}", if linear { "F" } else { "M" })
-    }
-
-    /// An action's name on body `on`, for a force (`R23`, `F_I3`) or a couple (`M23`, `M_I3`).
-    fn name(&self, action: Action, on: BodyId, couple: bool) -> String {
-        let n = on + 1;
-        match action {
-            Action::Reaction { by, .. } => format!("{}{}", if couple { "M" } else { "R" }, Self::pair(by, on)),
-            Action::Inertia => format!("{}_I{n}", if couple { "M" } else { "F" }),
-            Action::Weight => format!("W{n}"),
-            Action::Load(k) => load_name(&self.loads[k], k),
-            Action::Driving(i) => {
-                let base = self.driving(i);
-                if couple && base.starts_with('F') { base.replacen('F', "M", 1) } else { base }
-            }
-        }
-    }
-
-    fn kind(action: Action) -> &'static str {
-        match action {
-            Action::Reaction { .. } => "reaction",
-            Action::Inertia => "inertia",
-            Action::Weight => "weight",
-            Action::Load(_) => "load",
-            Action::Driving(_) => "driving",
-        }
-    }
-
-    /// The body it comes from and the joint it acts through.
-    fn source(&self, action: Action) -> (Option<String>, Option<String>) {
-        match action {
-            Action::Reaction { joint, by } => (Some(self.names[by].clone()), Some(self.m.joints[joint].name.clone())),
-            Action::Driving(i) => {
-                (None, crate::engine::kinetostatics::acting_joint(self.m, i).map(|k| self.m.joints[k].name.clone()))
-            }
-            _ => (None, None),
-        }
-    }
-
-    fn free_body(&self, fb: &FreeBody) -> wire::FreeBody {
-        let forces = fb
-            .forces
-            .iter()
-            .map(|f| {
-                let (by, joint) = self.source(f.action);
-                let name = self.name(f.action, fb.body, false);
-                let power = fb.power(f.at, f.f);
-                wire::Force {
-                    name,
-                    kind: Self::kind(f.action).into(),
-                    by,
-                    joint,
-                    at: f.at,
-                    fx: f.f[0],
-                    fy: f.f[1],
-                    power,
-                }
-            })
-            .collect();
-        let couples = fb
-            .couples
-            .iter()
-            .map(|c| {
-                let (by, joint) = self.source(c.action);
-                let name = self.name(c.action, fb.body, true);
-                let power = c.moment * fb.omega;
-                wire::Couple { name, kind: Self::kind(c.action).into(), by, joint, moment: c.moment, power }
-            })
-            .collect();
-        let [sum_fx, sum_fy, sum_moment_about_cg] = fb.sums;
-        wire::FreeBody {
-            body: self.names[fb.body].clone(),
-            number: fb.body + 1,
-            cg: fb.cg,
-            forces,
-            couples,
-            equations: wire::Equations { sum_fx, sum_fy, sum_moment_about_cg },
-        }
-    }
-}
-
-/// A load's name: `F1` (a force), `M2` (a torque), `F_k3` (a spring), `F_c4` (a damper), by its place in `loads`.
-fn load_name(load: &Load, k: usize) -> String {
-    let n = k + 1;
-    match load {
-        Load::Force { .. } => format!("F{n}"),
-        Load::Torque { .. } => format!("M{n}"),
-        Load::Spring { .. } => format!("F_k{n}"),
-        Load::Damper { .. } => format!("F_c{n}"),
-    }
-}
-
-/// Every action's power summed by name over the bodies, the reactions' together.
-fn virtual_power(bodies: &[wire::FreeBody]) -> wire::VirtualPower {
-    let (mut actions, mut reactions) = (BTreeMap::<String, f64>::new(), 0.0);
-    let all = bodies.iter().flat_map(|b| {
-        let forces = b.forces.iter().map(|f| (f.kind.as_str(), &f.name, f.power));
-        forces.chain(b.couples.iter().map(|c| (c.kind.as_str(), &c.name, c.power)))
-    });
-    for (kind, name, power) in all {
-        match kind {
-            "reaction" => reactions += power,
-            _ => *actions.entry(name.clone()).or_default() += power,
-        }
-    }
-    let total = actions.values().sum::<f64>() + reactions;
-    wire::VirtualPower { actions, reactions, total }
+    Ok(written(&problem.mechanism, &problem.body_names, &problem.loads, (step, &solved.input), &bodies, false))
 }

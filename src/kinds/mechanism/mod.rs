@@ -12,6 +12,7 @@ mod loads;
 pub mod motion;
 mod points;
 mod reactions;
+pub mod solution;
 pub mod track;
 
 pub use contact::{CircleDto, CurveDto, LineDto, PolarDto, SplineDto};
