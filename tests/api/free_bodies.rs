@@ -172,13 +172,15 @@ async fn a_static_slider_crank_s_free_bodies_are_its_closed_form() {
 
 /// The library's four-bar (gravity and its load), the cam and flat
 /// follower of seed 002 (its contact), the scissor lift (a point input
-/// with the piston as actuator), P.115's shaper (pins in slots); K1 with
+/// with the piston as actuator), P.115's shaper (pins in slots), the ring
+/// driven along the rim (an effort along a contact), the bar on a slider
+/// (two inputs); K1 with
 /// friction at every pin (μ = 0.1 on 10 mm pins) and with a 60 mm guide
 /// with friction (its two ends): every body balances at every step.
 #[tokio::test]
 async fn bodies_with_friction_a_guide_s_ends_and_a_cam_s_contact_balance() {
     let app = TestApp::new().await;
-    for id in ["four-bar", "cam-flat-follower", "scissor-lift", "p115-shaper"] {
+    for id in ["four-bar", "cam-flat-follower", "scissor-lift", "p115-shaper", "ring-on-rim", "bar-on-slider"] {
         checked(&app, "/v1/kinetostatics", &template_request(id), 1e-8).await;
     }
     let mut friction = request("k1_offset_slider_crank");

@@ -245,6 +245,10 @@ fn driving_actions(m: &Mechanism, q: &[f64], driving: &[f64], inputs: &[[f64; 3]
     let first = sys.jacobian.nrows() - m.drivers.len();
     let mut out = vec![];
     for (i, (d, &effort)) in by_actuators.drivers.iter().zip(driving).enumerate().filter(|(_, (_, e))| e.is_finite()) {
+        if let Some(part) = sliding_contact_effort(m, q, d.coordinate, effort) {
+            out.extend(part.map(|p| (i, p)));
+            continue;
+        }
         for b in 1..m.bodies.len() {
             let c = m.column(b).expect("a moving body has coordinates");
             let [qx, qy, qm] = [0, 1, 2].map(|k| sys.jacobian[(first + i, c + k)] * effort);
@@ -268,4 +272,22 @@ fn driving_actions(m: &Mechanism, q: &[f64], driving: &[f64], inputs: &[[f64; 3]
         }
     }
     out
+}
+
+/// An effort along a sliding contact's arc length (its row moves the arc's
+/// parameter, no body): the force effort·t the contact passes to its second
+/// body at the point of contact, t the way the arc runs, and its opposite
+/// to the first — what [`super::reactions`] leaves out of the contact's
+/// reaction.
+fn sliding_contact_effort(m: &Mechanism, q: &[f64], c: Coordinate, effort: f64) -> Option<[Part; 2]> {
+    let Coordinate::Joint(k) = c else { return None };
+    let JointKind::Contact(contact) = &m.joints[k].kind else { return None };
+    if contact.rolling {
+        return None;
+    }
+    let t = m.contact_arc_direction(k, q)?;
+    let [i, j] = m.joints[k].bodies;
+    let f = [effort * t[0], effort * t[1]];
+    let at = |b: BodyId| Some(placed(m, q, b, m.contact_point(k, b, q).unwrap_or(m.joints[k].at)));
+    Some([(j, at(j), f, 0.0), (i, at(i), [-f[0], -f[1]], 0.0)])
 }
