@@ -28,6 +28,7 @@ pub mod rotor;
 pub mod samples;
 pub mod shaking;
 pub mod sketch;
+pub mod spatial;
 pub mod touch;
 pub mod variants;
 
