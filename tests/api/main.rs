@@ -82,6 +82,7 @@ mod slow_clients;
 mod small_disk;
 mod spanish;
 mod spanish_results;
+mod spatial;
 mod stiff;
 mod storage;
 mod student;

@@ -358,7 +358,8 @@ async fn the_readers_expectations_in_spanish() {
     let mut k1 = request("k1_offset_slider_crank");
     k1["mechanism"]["joints"][0]["at"] = json!({"x": 0});
     let said = field_messages(&app, "/v1/kinetostatics", &k1, true).await;
-    let expected = "se esperaba el nombre de un punto o sus coordenadas [x, y] y llegó un objeto";
+    let expected =
+        "se esperaba el nombre de un punto o sus coordenadas [x, y] (en el espacio [x, y, z]) y llegó un objeto";
     assert_eq!(said, [("/mechanism/joints/0/at".into(), expected.into())]);
     let mut k1 = request("k1_offset_slider_crank");
     k1["input"]["start"] = json!(["0", "deg"]);

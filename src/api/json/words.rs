@@ -39,7 +39,7 @@ pub fn plain(message: &str) -> Msg {
 
 /// What the service's own readers expect (their visitors' `expecting`
 /// writes the catalogue's id, so that serde's message carries it here).
-const EXPECTING: [&str; 8] = [
+const EXPECTING: [&str; 9] = [
     "json-expect-quantity",
     "json-expect-function",
     "json-expect-program",
@@ -48,6 +48,7 @@ const EXPECTING: [&str; 8] = [
     "json-expect-point",
     "json-expect-length",
     "json-expect-fewer",
+    "json-expect-inertia",
 ];
 
 /// What serde expected, in words.

@@ -50,9 +50,7 @@ impl Scaled {
     /// far (in scaled rows) the rows are from holding at it.
     pub fn solve(&self, rhs: &DVector<f64>) -> (DVector<f64>, f64) {
         let b = DVector::from_fn(self.row.len(), |k, _| rhs[k] / self.row[k]);
-        let svd = self.jac.clone().svd(true, true);
-        let tolerance = RANK_TOLERANCE * svd.singular_values.max();
-        let y = svd.solve(&b, tolerance).unwrap_or_else(|_| DVector::zeros(self.col.len()));
+        let y = least_norm(self.jac.clone(), &b);
         let miss = (&self.jac * &y - &b).amax();
         (DVector::from_fn(self.col.len(), |c, _| y[c] * self.col[c]), miss)
     }
@@ -60,18 +58,40 @@ impl Scaled {
     /// λ with Φ_qᵀ·λ = `q` (six a body), of least norm.
     pub fn solve_transposed(&self, q: &DVector<f64>) -> DVector<f64> {
         let b = DVector::from_fn(self.col.len(), |c, _| q[c] * self.col[c]);
-        let svd = self.jac.transpose().svd(true, true);
-        let tolerance = RANK_TOLERANCE * svd.singular_values.max();
-        let mu = svd.solve(&b, tolerance).unwrap_or_else(|_| DVector::zeros(self.row.len()));
+        let mu = least_norm(self.jac.transpose(), &b);
         DVector::from_fn(self.row.len(), |k, _| mu[k] / self.row[k])
     }
 
-    /// The rank of the scaled Φ_q.
+    /// The rank of the scaled Φ_q (0 where its SVD does not converge: numbers out of range).
     pub fn rank(&self) -> usize {
-        let s = self.jac.singular_values();
-        let tolerance = RANK_TOLERANCE * s.max();
-        s.iter().filter(|&&v| v > tolerance).count()
+        self.checked_rank().unwrap_or(0)
     }
+
+    /// The rank, or why there is none: a Φ_q of numbers out of range
+    /// (a drawing of 1e300 m), whose SVD does not converge.
+    pub fn checked_rank(&self) -> Result<usize, EngineError> {
+        let finite = self.jac.iter().all(|v| v.is_finite());
+        let svd = finite.then(|| self.jac.clone().try_svd(false, false, SVD_EPSILON, SVD_ITERATIONS)).flatten();
+        let s = svd.ok_or(EngineError::NotFiniteResult)?.singular_values;
+        let tolerance = RANK_TOLERANCE * s.max();
+        Ok(s.iter().filter(|&&v| v > tolerance).count())
+    }
+}
+
+/// The SVD's sweeps before it is said not to converge (it does in tens;
+/// a matrix of non-finite numbers never does).
+pub const SVD_ITERATIONS: usize = 10_000;
+/// The SVD's convergence threshold, nalgebra's own (5 ε).
+pub const SVD_EPSILON: f64 = 5.0 * f64::EPSILON;
+
+/// The least-squares solution of least norm of a·x = b (zeros where the SVD fails).
+fn least_norm(a: DMatrix<f64>, b: &DVector<f64>) -> DVector<f64> {
+    let cols = a.ncols();
+    let solved = a.try_svd(true, true, SVD_EPSILON, SVD_ITERATIONS).and_then(|svd| {
+        let tolerance = RANK_TOLERANCE * svd.singular_values.max();
+        svd.solve(b, tolerance).ok()
+    });
+    solved.unwrap_or_else(|| DVector::zeros(cols))
 }
 
 /// The pose where Φ = 0 with the inputs at `inputs` (their values; rates

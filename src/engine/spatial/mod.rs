@@ -35,5 +35,5 @@ mod tests;
 pub use constraints::{Rows, coordinate, evaluate};
 pub use kinematics::{Motion, Scaled, assemble, motion, sweep};
 pub use kinetostatics::{Actions, Reaction, Wrench, inverse_dynamics};
-pub use mobility::{Mobility, mobility};
+pub use mobility::{Mobility, candidate_inputs, mobility};
 pub use model::{Body, BodyId, Coordinate, Input, Joint, JointKind, Load, Mechanism, Pose, perpendiculars};

@@ -107,7 +107,7 @@ fn hooke(beta: f64, load: f64) -> (Mechanism, Vec<Load>) {
 fn hooke_joint_speed_ratio_and_power() {
     let (beta, w1, torque) = (0.5_f64, 3.0, 7.0);
     let (m, loads) = hooke(beta, torque);
-    let found = mobility(&m, &Pose::drawn(&m));
+    let found = mobility(&m, &Pose::drawn(&m)).unwrap();
     assert_eq!((found.dof, found.redundant_constraints, found.kutzbach.mobility), (1, 3, -2));
     let steps: Vec<Vec<[f64; 3]>> = (0..72).map(|k| vec![[k as f64 * PI / 36.0 + 0.01, w1, 0.0]]).collect();
     let motions = sweep(&m, &steps, &Deadline::none()).unwrap();
@@ -160,7 +160,7 @@ fn spatial_slider_crank_against_closed_form() {
         inputs: vec![Input { joint: 0, coordinate: Coordinate::Rotation }],
         gravity: Vector3::zeros(),
     };
-    let found = mobility(&m, &Pose::drawn(&m));
+    let found = mobility(&m, &Pose::drawn(&m)).unwrap();
     assert_eq!((found.dof, found.redundant_constraints, found.kutzbach.mobility), (1, 0, 1));
     let loads = vec![Load::Force { body: 3, at: b, force: v(p, 0.0, 0.0) }];
     let steps: Vec<Vec<[f64; 3]>> = (0..36).map(|k| vec![[k as f64 * PI / 18.0, w, 0.0]]).collect();
@@ -271,7 +271,7 @@ pub fn bricard() -> Mechanism {
 #[test]
 fn bricard_moves_though_the_count_says_not() {
     let m = bricard();
-    let found = mobility(&m, &Pose::drawn(&m));
+    let found = mobility(&m, &Pose::drawn(&m)).unwrap();
     assert_eq!((found.dof, found.redundant_constraints, found.kutzbach.mobility), (1, 1, 0));
     assert_eq!(found.indeterminate_joints, vec![0, 1, 2, 3, 4, 5]);
     // Driven at its first joint, it turns: from the drawing to 60°, each
@@ -281,7 +281,7 @@ fn bricard_moves_though_the_count_says_not() {
     m.inputs.push(Input { joint: 0, coordinate: Coordinate::Rotation });
     let steps: Vec<Vec<[f64; 3]>> = (0..=20).map(|k| vec![[k as f64 * PI / 60.0, 1.0, 0.0]]).collect();
     let motions = sweep(&m, &steps, &Deadline::none()).unwrap_or_else(|e| panic!("{e}"));
-    let again = mobility(&m, &motions[3].pose);
+    let again = mobility(&m, &motions[3].pose).unwrap();
     assert_eq!((again.dof, again.redundant_constraints), (1, 1), "still mobile away from the drawing");
     let last = &motions[20].pose;
     for joint in &m.joints[1..] {
@@ -330,7 +330,7 @@ fn seed_003_rotor_as_a_mechanism() {
         ],
         gravity: rotor.gravity,
     };
-    let found = mobility(&m, &Pose::drawn(&m));
+    let found = mobility(&m, &Pose::drawn(&m)).unwrap();
     assert_eq!((found.dof, found.redundant_constraints, found.kutzbach.mobility), (2, 0, 2));
     let times = [0.0, 0.1, 0.25, 0.4];
     let steps: Vec<Vec<[f64; 3]>> =

@@ -196,7 +196,8 @@ json-expect-function = a number, a quantity text, or an object with expr, segmen
 json-expect-program = a list of segments or an object {"{"}"lift": ...{"}"}
 json-expect-inputs = an input object or a list of them
 json-expect-track = a point's name or an object {"{"}"name", "body", "at"{"}"}
-json-expect-point = a point's name or coordinates [x, y]
+json-expect-point = a point's name or coordinates [x, y] (in space [x, y, z])
+json-expect-inertia = a moment of inertia, or in space [Ixx, Iyy, Izz] or a 3×3 matrix
 json-expect-length = a length: a number in m, or with its unit ("8 cm")
 json-expect-fewer = fewer items (a decimal comma splits a JSON number in two: 0,45 is written 0.45, or as the text "0,45")
 

@@ -196,7 +196,8 @@ json-expect-function = un número, un texto con unidad o un objeto con expr, seg
 json-expect-program = una lista de tramos o un objeto {"{"}"lift": ...{"}"}
 json-expect-inputs = un objeto de entrada o una lista de ellos
 json-expect-track = el nombre de un punto o un objeto {"{"}"name", "body", "at"{"}"}
-json-expect-point = el nombre de un punto o sus coordenadas [x, y]
+json-expect-point = el nombre de un punto o sus coordenadas [x, y] (en el espacio [x, y, z])
+json-expect-inertia = un momento de inercia, o en el espacio [Ixx, Iyy, Izz] o una matriz 3×3
 json-expect-length = una longitud: un número en m, o con su unidad ("8 cm")
 json-expect-fewer = menos elementos (una coma decimal parte en dos un número de JSON: 0,45 se escribe 0.45, o como el texto "0,45")
 

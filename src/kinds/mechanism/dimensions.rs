@@ -2,7 +2,7 @@
 //! points used are the least change from it that meets every dimension
 //! ([`crate::engine::sketch`]).
 
-use super::MechanismDto;
+use super::{DrawnPoints, MechanismDto};
 use crate::engine::numeric::plane::diagonal;
 use crate::engine::sketch::{Dimension, solve};
 use crate::i18n::Msg;
@@ -50,7 +50,7 @@ impl Assembled {
     /// For a result: what [`MechanismDto::assembled`] made of `given`
     /// (`dto`, its `warnings`); None for a mechanism without dimensions.
     pub fn of(given: &MechanismDto, dto: &MechanismDto, warnings: Vec<crate::i18n::Msg>) -> Option<Self> {
-        given.dimensions.is_some().then(|| Self { points: dto.points.clone().unwrap_or_default(), warnings })
+        given.dimensions.is_some().then(|| Self { points: dto.points.clone().unwrap_or_default().xy, warnings })
     }
 }
 
@@ -61,7 +61,7 @@ impl MechanismDto {
     /// (the errors are in `e`).
     pub fn assembled(&self, e: &mut Errors, at: &str) -> Option<(Cow<'_, MechanismDto>, Vec<crate::i18n::Msg>)> {
         let Some(dimensions) = self.dimensions.as_ref() else { return Some((Cow::Borrowed(self), Vec::new())) };
-        let sketch = self.points.clone().unwrap_or_default();
+        let sketch = self.points.clone().unwrap_or_default().xy;
         let names: Vec<&String> = sketch.keys().collect();
         if dimensions.len() > MAX_DIMENSIONS {
             return e.refuse(&format!("{at}/dimensions"), Msg::new("dimensions-too-many").arg("max", MAX_DIMENSIONS));
@@ -93,7 +93,14 @@ impl MechanismDto {
         warnings.extend(scale_gap(&points, &solved.points));
         let assembled: BTreeMap<String, [f64; 2]> = names.into_iter().cloned().zip(solved.points).collect();
         let dto = self.clone().carried(&sketch, &assembled);
-        Some((Cow::Owned(MechanismDto { points: Some(assembled), dimensions: None, ..dto }), warnings))
+        Some((
+            Cow::Owned(MechanismDto {
+                points: Some(DrawnPoints { xy: assembled, z: BTreeMap::new() }),
+                dimensions: None,
+                ..dto
+            }),
+            warnings,
+        ))
     }
 }
 

@@ -43,6 +43,9 @@ pub fn friction(e: &mut Errors, j: &JointDto, at: &str) -> Option<Friction> {
             e.refuse(&format!("{at}/radius"), Msg::new("joint-radius-revolute"))
         }
         (JointType::Gear, _) => e.refuse(&at, Msg::new("joint-gear-friction")),
+        (JointType::Cylindrical | JointType::Spherical | JointType::Universal | JointType::SphereInCylinder, _) => {
+            e.refuse(&at, Msg::new("joint-spatial-friction"))
+        }
     }
 }
 
@@ -78,6 +81,9 @@ pub fn not_for_others(e: &mut Errors, j: &JointDto, at: &str) {
 pub fn joint_kind(e: &mut Errors, j: &JointDto, names: &[String], at: &str) -> Option<JointKind> {
     match j.kind {
         JointType::Contact => None,
+        JointType::Cylindrical | JointType::Spherical | JointType::Universal | JointType::SphereInCylinder => {
+            e.refuse(&format!("{at}/type"), Msg::new("joint-spatial-type"))
+        }
         JointType::Revolute => Some(JointKind::Revolute),
         JointType::Prismatic => unit_axis(e, j.axis.as_deref(), at).map(|axis| JointKind::Prismatic { axis }),
         JointType::PinSlot => unit_axis(e, j.axis.as_deref(), at).map(|axis| JointKind::PinSlot { axis }),

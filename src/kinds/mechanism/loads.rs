@@ -75,6 +75,7 @@ fn point_of(e: &mut Errors, p: &PointRef, dto: &MechanismDto, at: &str) -> Optio
     match p {
         PointRef::Coords(c) if c.iter().all(|v| v.is_finite()) => Some(*c),
         PointRef::Coords(_) => e.refuse(at, Msg::new("mechanism-coordinates")),
+        PointRef::Space(_) => e.refuse(at, Msg::new("mechanism-spatial-point")),
         PointRef::Name(n) => match dto.points.as_ref().and_then(|ps| ps.get(n)) {
             Some(c) => Some(*c),
             None => e.refuse(at, Msg::new("mechanism-unknown-point").arg("name", n)),

@@ -6,6 +6,7 @@ mod contact;
 mod dimensions;
 pub mod drawing;
 mod energy;
+mod inertia;
 mod inputs;
 mod joints;
 mod loads;
@@ -13,14 +14,16 @@ pub mod motion;
 mod points;
 mod reactions;
 pub mod solution;
+pub mod spatial;
 pub mod track;
 
 pub use contact::{CircleDto, CurveDto, LineDto, PolarDto, SplineDto};
 pub use dimensions::{Assembled, DimensionDto};
 pub use energy::{ByName, EnergyDto, NameOrder};
+pub use inertia::BodyInertia;
 pub use inputs::{InputDto, Inputs, coordinate, machine_parts};
 pub use loads::{LoadDto, LoadType, MAX_LOADS, convert_loads};
-pub use points::{BodyPoint, Coords, DrawnCoords, PointRef};
+pub use points::{BodyPoint, Coords, DrawnCoords, DrawnPoints, PointRef};
 pub use reactions::{ContactDto, Name, Names, ReactionDto, Reactions, contact_warnings, names};
 
 use crate::engine::model::{Body, BodyId, Joint, JointKind, Mechanism, Pitch};
@@ -43,9 +46,10 @@ pub struct BodyDto {
     /// kg (≥ 0; default 0)
     #[schema(value_type = Option<Quantity>)]
     pub mass: Option<Quantity>,
-    /// Inertia about the centre of mass, kg·m² (≥ 0; default 0).
-    #[schema(value_type = Option<Quantity>)]
-    pub inertia: Option<Quantity>,
+    /// Inertia about the centre of mass, kg·m² (≥ 0; default 0); in space
+    /// the tensor in the drawn axes, [Ixx, Iyy, Izz] or the 3×3 matrix.
+    #[schema(value_type = Option<BodyInertia>)]
+    pub inertia: Option<BodyInertia>,
     /// Centre of mass: required when the mass is not 0.
     #[schema(value_type = Option<PointRef>)]
     pub cg: Option<PointRef>,
@@ -61,6 +65,16 @@ pub enum JointType {
     Gear,
     /// A higher pair: a curve of each body touching (`curves`, `rolling`).
     Contact,
+    /// In space: a rotation about `axis` and a slide along it.
+    Cylindrical,
+    /// In space: three rotations about `at` (a rotation input turns about `axis`, if given).
+    Spherical,
+    /// In space: Hooke's (Cardan) joint, rotations about `axes` [a, b], a
+    /// fixed in the first body and b in the second, perpendicular as drawn.
+    Universal,
+    /// In space: the second body's `at` on the first's line along `axis`
+    /// (sphere in a cylinder, class IV: a self-aligning radial bearing).
+    SphereInCylinder,
 }
 
 /// A joint between two bodies (`ground` is implicit). `axis` for prismatic and
@@ -81,8 +95,13 @@ pub struct JointDto {
     pub bodies: Vec<String>,
     #[schema(value_type = Option<PointRef>)]
     pub at: Option<PointRef>,
-    #[schema(min_items = 2, max_items = 2)]
+    /// [x, y], in space [x, y, z]: any length (made unit).
+    #[schema(min_items = 2, max_items = 3)]
     pub axis: Option<Vec<f64>>,
+    /// A universal joint's axes [a, b] ([x, y, z] each): a fixed in the
+    /// first body, b in the second, perpendicular as drawn.
+    #[schema(min_items = 2, max_items = 2)]
+    pub axes: Option<Vec<[f64; 3]>>,
     /// Gear: ω₂ − ω_c = ratio·(ω₁ − ω_c).
     pub ratio: Option<f64>,
     /// Gear: tooth numbers [z₁, z₂].
@@ -133,17 +152,20 @@ pub struct FrictionDto {
 /// example of KinetostaticsRequest).
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct MechanismDto {
+    /// `planar` (the default) or `spatial`: points, axes and gravity with
+    /// three coordinates, an inertia tensor, the spatial pairs.
+    pub space: Option<MechanismSpace>,
     /// Named points in the drawn configuration: `{NAME: [x, y]}`, each
     /// coordinate in m or a length with its unit (`"8 cm"`).
     #[schema(value_type = Option<BTreeMap<String, DrawnCoords>>)]
     #[serde(default, deserialize_with = "points::drawn")]
-    pub points: Option<BTreeMap<String, [f64; 2]>>,
+    pub points: Option<DrawnPoints>,
     #[schema(min_items = 1, max_items = 200)]
     pub bodies: Vec<BodyDto>,
     #[schema(min_items = 1, max_items = 200)]
     pub joints: Vec<JointDto>,
-    /// Gravitational acceleration [gx, gy], m/s² (default none).
-    #[schema(min_items = 2, max_items = 2)]
+    /// Gravitational acceleration [gx, gy] (in space [gx, gy, gz]), m/s² (default none).
+    #[schema(min_items = 2, max_items = 3)]
     pub gravity: Option<Vec<f64>>,
     /// The statement's dimensions: `points` are then a sketch, moved as
     /// little as they can be (a point that cannot move — a pivot with the
@@ -153,6 +175,15 @@ pub struct MechanismDto {
     /// `assembled_points` says where the points went.
     #[schema(max_items = 400)]
     pub dimensions: Option<Vec<DimensionDto>>,
+}
+
+/// The plane or space.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum MechanismSpace {
+    #[default]
+    Planar,
+    Spatial,
 }
 
 /// The model and the names needed to read results back.
@@ -165,6 +196,9 @@ impl MechanismDto {
     /// Converts to the engine model (without drivers), at pointer `at`.
     pub fn convert(&self, e: &mut Errors, at: &str) -> Option<Converted> {
         let before = e.list.len();
+        if self.is_spatial() {
+            return e.refuse(&format!("{at}/space"), Msg::new("mechanism-spatial-not-here"));
+        }
         if self.bodies.len() > MAX_ITEMS || self.joints.len() > MAX_ITEMS {
             e.say(at, Msg::new("mechanism-too-many").arg("max", MAX_ITEMS));
         }
@@ -172,9 +206,13 @@ impl MechanismDto {
         if let Some((name, _)) = points.iter().find(|(_, p)| !p.iter().all(|v| v.is_finite())) {
             e.say(&format!("{at}/points/{}", crate::kind::problem::escape(name)), Msg::new("mechanism-coordinates"));
         }
+        for name in points.z.keys() {
+            e.say(&format!("{at}/points/{}", crate::kind::problem::escape(name)), Msg::new("mechanism-spatial-point"));
+        }
         let point = |e: &mut Errors, p: &PointRef, ptr: &str| match p {
             PointRef::Coords(c) if c.iter().all(|v| v.is_finite()) => Some(*c),
             PointRef::Coords(_) => e.refuse(ptr, Msg::new("mechanism-coordinates")),
+            PointRef::Space(_) => e.refuse(ptr, Msg::new("mechanism-spatial-point")),
             PointRef::Name(n) if n.chars().count() > NAME_MAX_LENGTH => {
                 e.refuse(ptr, Msg::new("field-at-most-characters").arg("max", NAME_MAX_LENGTH))
             }
@@ -193,7 +231,12 @@ impl MechanismDto {
             }
             names.push(b.name.clone());
             let mass = non_negative(e, b.mass.as_ref(), Dim::MASS, &format!("{ptr}/mass"));
-            let inertia = non_negative(e, b.inertia.as_ref(), Dim::INERTIA, &format!("{ptr}/inertia"));
+            let given = b.inertia.as_ref().map(|i| i.scalar(e, &format!("{ptr}/inertia")));
+            let inertia = match given {
+                Some(None) => None,
+                Some(q) => non_negative(e, q, Dim::INERTIA, &format!("{ptr}/inertia")),
+                None => Some(0.0),
+            };
             let cg = match &b.cg {
                 Some(p) => point(e, p, &format!("{ptr}/cg")),
                 None if mass.unwrap_or(0.0) > 0.0 => e.refuse(&ptr, Msg::new("mechanism-cg")),
@@ -326,7 +369,7 @@ impl MechanismDto {
         self.joints.iter().filter(|j| j.bodies.iter().any(|b| b == body)).find_map(|j| match &j.at {
             Some(PointRef::Coords(c)) => Some(*c),
             Some(PointRef::Name(n)) => points.get(n).copied(),
-            None => None,
+            Some(PointRef::Space(_)) | None => None,
         })
     }
 }

@@ -12,13 +12,15 @@ use utoipa::openapi::RefOr;
 use utoipa::openapi::schema::{ArrayBuilder, ObjectBuilder, OneOfBuilder, Schema, Type};
 use utoipa::{PartialSchema, ToSchema};
 
-/// A point: the name of a point of `points`, or coordinates [x, y], each
-/// in m or a length with its unit (as `points`' are read).
+/// A point: the name of a point of `points`, or coordinates [x, y] (in
+/// space [x, y, z]), each in m or a length with its unit (as `points`' are read).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum PointRef {
     Name(String),
     Coords([f64; 2]),
+    /// A spatial mechanism's point.
+    Space([f64; 3]),
 }
 
 struct PointVisitor;
@@ -33,8 +35,10 @@ impl<'de> Visitor<'de> for PointVisitor {
         Ok(PointRef::Name(v.to_string()))
     }
     fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<PointRef, A::Error> {
-        <[Length; 2]>::deserialize(de::value::SeqAccessDeserializer::new(seq))
-            .map(|[x, y]| PointRef::Coords([x.0, y.0]))
+        match Coordinates::deserialize(de::value::SeqAccessDeserializer::new(seq))? {
+            Coordinates::Plane(c) => Ok(PointRef::Coords(c)),
+            Coordinates::Space(c) => Ok(PointRef::Space(c)),
+        }
     }
 }
 
@@ -102,11 +106,80 @@ impl<'de> Deserialize<'de> for Length {
     }
 }
 
+/// Two coordinates or three, each a [`Length`].
+enum Coordinates {
+    Plane([f64; 2]),
+    Space([f64; 3]),
+}
+
+impl<'de> Deserialize<'de> for Coordinates {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let c = Vec::<Length>::deserialize(d)?;
+        match c[..] {
+            [Length(x), Length(y)] => Ok(Self::Plane([x, y])),
+            [Length(x), Length(y), Length(z)] => Ok(Self::Space([x, y, z])),
+            // Four numbers or more: most likely [x, y] written with decimal commas.
+            _ if c.len() > 3 => Err(de::Error::invalid_length(c.len(), &"json-expect-fewer")),
+            _ => Err(de::Error::invalid_length(c.len(), &"json-expect-point")),
+        }
+    }
+}
+
+/// A mechanism's `points` as drawn: [x, y] of each (what a planar
+/// mechanism reads, by `Deref`), and z of those given three coordinates
+/// (a spatial mechanism's).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct DrawnPoints {
+    pub xy: BTreeMap<String, [f64; 2]>,
+    pub z: BTreeMap<String, f64>,
+}
+
+impl std::ops::Deref for DrawnPoints {
+    type Target = BTreeMap<String, [f64; 2]>;
+    fn deref(&self) -> &Self::Target {
+        &self.xy
+    }
+}
+
+impl DrawnPoints {
+    /// A point's [x, y, z], where it was given three coordinates.
+    pub fn xyz(&self, name: &str) -> Option<[f64; 3]> {
+        Some(self.xy.get(name).zip(self.z.get(name)).map(|([x, y], z)| [*x, *y, *z])).flatten()
+    }
+}
+
+impl Serialize for DrawnPoints {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut map = s.serialize_map(Some(self.xy.len()))?;
+        for (name, [x, y]) in &self.xy {
+            match self.z.get(name) {
+                Some(z) => map.serialize_entry(name, &[x, y, z])?,
+                None => map.serialize_entry(name, &[x, y])?,
+            }
+        }
+        map.end()
+    }
+}
+
 /// A mechanism's `points`, each coordinate a number (m) or a length with
 /// its unit, read in m.
-pub fn drawn<'de, D: Deserializer<'de>>(d: D) -> Result<Option<BTreeMap<String, [f64; 2]>>, D::Error> {
-    let points: Option<BTreeMap<String, [Length; 2]>> = Option::deserialize(d)?;
-    Ok(points.map(|p| p.into_iter().map(|(name, [x, y])| (name, [x.0, y.0])).collect()))
+pub fn drawn<'de, D: Deserializer<'de>>(d: D) -> Result<Option<DrawnPoints>, D::Error> {
+    let points: Option<BTreeMap<String, Coordinates>> = Option::deserialize(d)?;
+    Ok(points.map(|p| {
+        let mut drawn = DrawnPoints::default();
+        for (name, c) in p {
+            let [x, y] = match c {
+                Coordinates::Plane(c) => c,
+                Coordinates::Space([x, y, z]) => {
+                    drawn.z.insert(name.clone(), z);
+                    [x, y]
+                }
+            };
+            drawn.xy.insert(name, [x, y]);
+        }
+        drawn
+    }))
 }
 
 /// `points`' coordinates `[x, y]` as the document states them: each a
@@ -137,8 +210,8 @@ fn drawn_schema() -> ArrayBuilder {
     ArrayBuilder::new()
         .items(length)
         .min_items(Some(2))
-        .max_items(Some(2))
-        .description(Some("[x, y]: each in m, or a length with its unit (\"8 cm\", \"0,08 m\")"))
+        .max_items(Some(3))
+        .description(Some("[x, y], in space [x, y, z]: each in m, or a length with its unit (\"8 cm\", \"0,08 m\")"))
 }
 
 fn coords_schema() -> ArrayBuilder {

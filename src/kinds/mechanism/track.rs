@@ -88,6 +88,7 @@ pub fn resolve(dto: &MechanismDto, track: &[TrackDto], names: &[String], e: &mut
     let drawn = |e: &mut Errors, p: &PointRef, ptr: &str| match p {
         PointRef::Coords(c) if c.iter().all(|v| v.is_finite()) => Some(*c),
         PointRef::Coords(_) => e.refuse(ptr, Msg::new("mechanism-coordinates")),
+        PointRef::Space(_) => e.refuse(ptr, Msg::new("mechanism-spatial-point")),
         PointRef::Name(n) => {
             points.get(n).copied().or_else(|| e.refuse(ptr, Msg::new("mechanism-unknown-point").arg("name", n)))
         }

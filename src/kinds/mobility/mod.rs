@@ -6,6 +6,8 @@
 //! Symbols: n the bodies (the ground counted), p_k the pairs of class k (a
 //! pair of class k leaves k relative freedoms), M the mobility.
 
+mod space;
+
 use crate::engine::mobility::{Space, candidate_inputs, kutzbach, mobility};
 use crate::engine::model::Grubler;
 use crate::i18n::Msg;
@@ -29,7 +31,8 @@ const CLASSES: [&str; 5] = ["I", "II", "III", "IV", "V"];
 #[schema(example = json!({"counts": {"space": "planar", "bodies": 5, "pairs": {"I": 5, "II": 1}}}))]
 pub struct MobilityRequest {
     /// A mechanism as kinetostatics takes it, without inputs: its mobility
-    /// at the drawn position.
+    /// at the drawn position (planar, or with `"space": "spatial"` in space:
+    /// 6n − rank beside Kutzbach's 6(N − 1) − Σ(6 − fᵢ)).
     pub mechanism: Option<MechanismDto>,
     /// The counts alone: Kutzbach's formula.
     pub counts: Option<PairCounts>,
@@ -145,6 +148,7 @@ impl Kind for Mobility {
         limits: &Limits,
     ) -> Result<MobilityResult, ApiError> {
         match (&request.mechanism, &request.counts) {
+            (Some(mechanism), None) if mechanism.is_spatial() => space::drawn(mechanism, unknown, limits),
             (Some(mechanism), None) => drawn(mechanism, unknown, limits),
             (None, Some(counts)) => counted(counts, unknown),
             _ => {

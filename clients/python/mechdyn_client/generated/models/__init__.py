@@ -183,6 +183,7 @@ from .machine_pose import MachinePose
 from .machine_sample import MachineSample
 from .mechanism_dto import MechanismDto
 from .mechanism_dto_points_type_0 import MechanismDtoPointsType0
+from .mechanism_space import MechanismSpace
 from .member_result import MemberResult
 from .mesh_dto import MeshDto
 from .message_doc import MessageDoc
@@ -444,6 +445,7 @@ __all__ = (
     "MachineSample",
     "MechanismDto",
     "MechanismDtoPointsType0",
+    "MechanismSpace",
     "MemberResult",
     "MeshDto",
     "MessageDoc",

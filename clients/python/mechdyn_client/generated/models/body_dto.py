@@ -26,13 +26,13 @@ class BodyDto:
         Attributes:
             name (str):
             cg (list[float | str] | None | str | Unset):
-            inertia (float | None | str | Unset):
+            inertia (float | list[float | list[float] | str] | None | str | Unset):
             mass (float | None | str | Unset):
      """
 
     name: str
     cg: list[float | str] | None | str | Unset = UNSET
-    inertia: float | None | str | Unset = UNSET
+    inertia: float | list[float | list[float] | str] | None | str | Unset = UNSET
     mass: float | None | str | Unset = UNSET
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
@@ -57,9 +57,22 @@ class BodyDto:
         else:
             cg = self.cg
 
-        inertia: float | None | str | Unset
+        inertia: float | list[float | list[float] | str] | None | str | Unset
         if isinstance(self.inertia, Unset):
             inertia = UNSET
+        elif isinstance(self.inertia, list):
+            inertia = []
+            for inertia_item_data in self.inertia:
+                inertia_item: float | list[float] | str
+                if isinstance(inertia_item_data, list):
+                    inertia_item = inertia_item_data
+
+
+                else:
+                    inertia_item = inertia_item_data
+                inertia.append(inertia_item)
+
+
         else:
             inertia = self.inertia
 
@@ -117,12 +130,36 @@ class BodyDto:
         cg = _parse_cg(d.pop("cg", UNSET))
 
 
-        def _parse_inertia(data: object) -> float | None | str | Unset:
+        def _parse_inertia(data: object) -> float | list[float | list[float] | str] | None | str | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
                 return data
-            return cast(float | None | str | Unset, data)
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                componentsschemas_body_inertia_type_2 = []
+                _componentsschemas_body_inertia_type_2 = data
+                for componentsschemas_body_inertia_type_2_item_data in (_componentsschemas_body_inertia_type_2):
+                    def _parse_componentsschemas_body_inertia_type_2_item(data: object) -> float | list[float] | str:
+                        try:
+                            if not isinstance(data, list):
+                                raise TypeError()
+                            componentsschemas_body_inertia_type_2_item_type_2 = list(data)
+
+                            return componentsschemas_body_inertia_type_2_item_type_2
+                        except (TypeError, ValueError, AttributeError, KeyError):
+                            pass
+                        return cast(float | list[float] | str, data)
+
+                    componentsschemas_body_inertia_type_2_item = _parse_componentsschemas_body_inertia_type_2_item(componentsschemas_body_inertia_type_2_item_data)
+
+                    componentsschemas_body_inertia_type_2.append(componentsschemas_body_inertia_type_2_item)
+
+                return componentsschemas_body_inertia_type_2
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(float | list[float | list[float] | str] | None | str | Unset, data)
 
         inertia = _parse_inertia(d.pop("inertia", UNSET))
 

@@ -45,7 +45,9 @@ class JointDto:
             name (str):
             type_ (JointType): Joint types.
             at (list[float | str] | None | str | Unset):
-            axis (list[float] | None | Unset):
+            axes (list[list[float]] | None | Unset): A universal joint's axes [a, b] ([x, y, z] each): a fixed in the
+                first body, b in the second, perpendicular as drawn.
+            axis (list[float] | None | Unset): [x, y], in space [x, y, z]: any length (made unit).
             carrier (None | str | Unset): Gear: the carrier body (default ground).
             curves (list[CurveDtoType0 | CurveDtoType1 | CurveDtoType2 | CurveDtoType3 | CurveDtoType4 | CurveDtoType5] |
                 None | Unset): Contact: the curve fixed in each body, in `bodies` order.
@@ -64,6 +66,7 @@ class JointDto:
     name: str
     type_: JointType
     at: list[float | str] | None | str | Unset = UNSET
+    axes: list[list[float]] | None | Unset = UNSET
     axis: list[float] | None | Unset = UNSET
     carrier: None | str | Unset = UNSET
     curves: list[CurveDtoType0 | CurveDtoType1 | CurveDtoType2 | CurveDtoType3 | CurveDtoType4 | CurveDtoType5] | None | Unset = UNSET
@@ -111,6 +114,21 @@ class JointDto:
 
         else:
             at = self.at
+
+        axes: list[list[float]] | None | Unset
+        if isinstance(self.axes, Unset):
+            axes = UNSET
+        elif isinstance(self.axes, list):
+            axes = []
+            for axes_item_data in self.axes:
+                axes_item = axes_item_data
+
+
+                axes.append(axes_item)
+
+
+        else:
+            axes = self.axes
 
         axis: list[float] | None | Unset
         if isinstance(self.axis, Unset):
@@ -224,6 +242,8 @@ class JointDto:
         })
         if at is not UNSET:
             field_dict["at"] = at
+        if axes is not UNSET:
+            field_dict["axes"] = axes
         if axis is not UNSET:
             field_dict["axis"] = axis
         if carrier is not UNSET:
@@ -297,6 +317,29 @@ class JointDto:
             return cast(list[float | str] | None | str | Unset, data)
 
         at = _parse_at(d.pop("at", UNSET))
+
+
+        def _parse_axes(data: object) -> list[list[float]] | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                axes_type_0 = []
+                _axes_type_0 = data
+                for axes_type_0_item_data in (_axes_type_0):
+                    axes_type_0_item = cast(list[float], axes_type_0_item_data)
+
+                    axes_type_0.append(axes_type_0_item)
+
+                return axes_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[list[float]] | None | Unset, data)
+
+        axes = _parse_axes(d.pop("axes", UNSET))
 
 
         def _parse_axis(data: object) -> list[float] | None | Unset:
@@ -522,6 +565,7 @@ class JointDto:
             name=name,
             type_=type_,
             at=at,
+            axes=axes,
             axis=axis,
             carrier=carrier,
             curves=curves,

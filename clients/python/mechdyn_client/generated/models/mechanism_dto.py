@@ -8,6 +8,7 @@ from attrs import field as _attrs_field
 
 from ..types import UNSET, Unset
 
+from ..models.mechanism_space import MechanismSpace
 from ..types import UNSET, Unset
 from typing import cast
 
@@ -39,9 +40,11 @@ class MechanismDto:
                 the sketch picks the branch) until every dimension holds; a body's
                 `cg` given as [x, y] moves with its body; the result's
                 `assembled_points` says where the points went.
-            gravity (list[float] | None | Unset): Gravitational acceleration [gx, gy], m/s² (default none).
+            gravity (list[float] | None | Unset): Gravitational acceleration [gx, gy] (in space [gx, gy, gz]), m/s² (default
+                none).
             points (MechanismDtoPointsType0 | None | Unset): Named points in the drawn configuration: `{NAME: [x, y]}`, each
                 coordinate in m or a length with its unit (`"8 cm"`).
+            space (MechanismSpace | None | Unset):
      """
 
     bodies: list[BodyDto]
@@ -49,6 +52,7 @@ class MechanismDto:
     dimensions: list[DimensionDto] | None | Unset = UNSET
     gravity: list[float] | None | Unset = UNSET
     points: MechanismDtoPointsType0 | None | Unset = UNSET
+    space: MechanismSpace | None | Unset = UNSET
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
 
@@ -105,6 +109,14 @@ class MechanismDto:
         else:
             points = self.points
 
+        space: None | str | Unset
+        if isinstance(self.space, Unset):
+            space = UNSET
+        elif isinstance(self.space, MechanismSpace):
+            space = self.space.value
+        else:
+            space = self.space
+
 
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
@@ -118,6 +130,8 @@ class MechanismDto:
             field_dict["gravity"] = gravity
         if points is not UNSET:
             field_dict["points"] = points
+        if space is not UNSET:
+            field_dict["space"] = space
 
         return field_dict
 
@@ -213,12 +227,33 @@ class MechanismDto:
         points = _parse_points(d.pop("points", UNSET))
 
 
+        def _parse_space(data: object) -> MechanismSpace | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, str):
+                    raise TypeError()
+                space_type_0 = MechanismSpace(data)
+
+
+
+                return space_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(MechanismSpace | None | Unset, data)
+
+        space = _parse_space(d.pop("space", UNSET))
+
+
         instance_ = cls(
             bodies=bodies,
             joints=joints,
             dimensions=dimensions,
             gravity=gravity,
             points=points,
+            space=space,
         )
 
 
