@@ -28,6 +28,9 @@ pub struct Motion {
     pub a: DVector<f64>,
     /// Φ_q and γ at this pose and velocity (the reactions' rows).
     pub rows: Rows,
+    /// σ₁/σ₆ₙ of the unit-free Φ_q (the joints' rows and the inputs'):
+    /// how near the position is to a singular one.
+    pub condition: f64,
 }
 
 /// Φ_q scaled free of units, with what undoes it.
@@ -62,6 +65,13 @@ impl Scaled {
         DVector::from_fn(self.row.len(), |k, _| mu[k] / self.row[k])
     }
 
+    /// Its singular values, largest first; none converging (numbers out of range) an error.
+    pub fn singular_values(&self) -> Result<Vec<f64>, EngineError> {
+        let finite = self.jac.iter().all(|v| v.is_finite());
+        let svd = finite.then(|| self.jac.clone().try_svd(false, false, SVD_EPSILON, SVD_ITERATIONS)).flatten();
+        Ok(svd.ok_or(EngineError::NotFiniteResult)?.singular_values.iter().copied().collect())
+    }
+
     /// The rank of the scaled Φ_q (0 where its SVD does not converge: numbers out of range).
     pub fn rank(&self) -> usize {
         self.checked_rank().unwrap_or(0)
@@ -70,10 +80,8 @@ impl Scaled {
     /// The rank, or why there is none: a Φ_q of numbers out of range
     /// (a drawing of 1e300 m), whose SVD does not converge.
     pub fn checked_rank(&self) -> Result<usize, EngineError> {
-        let finite = self.jac.iter().all(|v| v.is_finite());
-        let svd = finite.then(|| self.jac.clone().try_svd(false, false, SVD_EPSILON, SVD_ITERATIONS)).flatten();
-        let s = svd.ok_or(EngineError::NotFiniteResult)?.singular_values;
-        let tolerance = RANK_TOLERANCE * s.max();
+        let s = self.singular_values()?;
+        let tolerance = RANK_TOLERANCE * s.first().copied().unwrap_or(0.0);
         Ok(s.iter().filter(|&&v| v > tolerance).count())
     }
 }
@@ -95,18 +103,18 @@ fn least_norm(a: DMatrix<f64>, b: &DVector<f64>) -> DVector<f64> {
 }
 
 /// The pose where Φ = 0 with the inputs at `inputs` (their values; rates
-/// unused), by Newton's method from `start`; at `step` of a sweep for the
-/// error's words.
-pub fn assemble(m: &Mechanism, inputs: &[[f64; 3]], start: &Pose, step: usize) -> Result<Pose, EngineError> {
+/// unused), by Newton's method from `start`, and the iterations it took;
+/// at `step` of a sweep for the error's words.
+pub fn assemble(m: &Mechanism, inputs: &[[f64; 3]], start: &Pose, step: usize) -> Result<(Pose, usize), EngineError> {
     let size = m.size();
     let mut pose = start.clone();
     let mut residual = f64::INFINITY;
-    for _ in 0..NEWTON_ITERATIONS {
+    for iterations in 0..NEWTON_ITERATIONS {
         let rows = evaluate(m, &pose, None, inputs);
         let scaled = Scaled::new(&rows, rows.phi.len(), size);
         residual = (0..rows.phi.len()).map(|k| (rows.phi[k] / scaled.row[k]).abs()).fold(0.0, f64::max);
         if residual < ASSEMBLED {
-            return Ok(pose);
+            return Ok((pose, iterations));
         }
         let (delta, _) = scaled.solve(&-&rows.phi);
         pose.apply(delta.as_slice());
@@ -137,16 +145,20 @@ pub fn motion(m: &Mechanism, pose: Pose, inputs: &[[f64; 3]], step: usize) -> Re
     let at_rest = evaluate(m, &pose, None, inputs);
     let scaled = Scaled::new(&at_rest, at_rest.phi.len(), size);
     let singular = || EngineError::Singular { step, input: inputs.first().map_or(0.0, |x| x[0]) };
-    if scaled.rank() < 6 * m.n() {
+    let values = scaled.singular_values()?;
+    let tolerance = RANK_TOLERANCE * values.first().copied().unwrap_or(0.0);
+    let columns = 6 * m.n();
+    if values.len() < columns || values[columns - 1] <= tolerance {
         return Err(singular());
     }
+    let condition = values[0] / values[columns - 1];
     let (v, miss) = scaled.solve(&at_rest.rate);
     if miss > 1e-8 * at_rest.rate.amax().max(1.0) {
         return Err(singular());
     }
     let rows = evaluate(m, &pose, Some(&v), inputs);
     let (a, _) = Scaled::new(&rows, rows.phi.len(), size).solve(&rows.gamma);
-    Ok(Motion { pose, v, a, rows })
+    Ok(Motion { pose, v, a, rows, condition })
 }
 
 /// The mechanism at every step of its inputs, each position from the
@@ -156,7 +168,7 @@ pub fn sweep(m: &Mechanism, steps: &[Vec<[f64; 3]>], deadline: &Deadline) -> Res
     let mut out = Vec::with_capacity(steps.len());
     for (k, inputs) in steps.iter().enumerate() {
         deadline.check(|| Progress::Assembled { step: k, of: steps.len() })?;
-        pose = assemble(m, inputs, &pose, k)?;
+        pose = assemble(m, inputs, &pose, k)?.0;
         out.push(motion(m, pose.clone(), inputs, k)?);
     }
     Ok(out)

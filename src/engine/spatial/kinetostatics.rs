@@ -16,7 +16,7 @@
 use super::constraints::Rows;
 use super::kinematics::{Motion, Scaled};
 use super::mobility::dependent_rows;
-use super::model::{BodyId, Load, Mechanism};
+use super::model::{BodyId, Load, Mechanism, Pose};
 use nalgebra::{DVector, Vector3};
 
 /// A force and a couple.
@@ -52,8 +52,9 @@ pub struct Actions {
     pub largest_power: f64,
 }
 
-/// Each body's applied wrench about G (gravity and the loads), six a body.
-pub fn applied(m: &Mechanism, loads: &[Load], motion: &Motion) -> DVector<f64> {
+/// Each body's applied wrench about G (gravity and the loads) at `pose`
+/// and velocities `v`, six a body.
+pub fn applied(m: &Mechanism, loads: &[Load], pose: &Pose, v: &DVector<f64>) -> DVector<f64> {
     let mut q = DVector::zeros(6 * m.n());
     let add = |q: &mut DVector<f64>, b: BodyId, f: Vector3<f64>, n: Vector3<f64>| {
         if b > 0 {
@@ -66,7 +67,6 @@ pub fn applied(m: &Mechanism, loads: &[Load], motion: &Motion) -> DVector<f64> {
     for (b, body) in m.bodies.iter().enumerate() {
         add(&mut q, b + 1, m.gravity * body.mass, Vector3::zeros());
     }
-    let pose = &motion.pose;
     for load in loads {
         match load {
             Load::Force { body, at, force } => {
@@ -76,7 +76,7 @@ pub fn applied(m: &Mechanism, loads: &[Load], motion: &Motion) -> DVector<f64> {
             Load::Torque { body, torque } => add(&mut q, *body, Vector3::zeros(), *torque),
             Load::Spring { bodies, at, k, length, c } => {
                 let ends = [0, 1].map(|e| pose.point(m, bodies[e], &at[e]));
-                let rates = [0, 1].map(|e| point_rate(&motion.v, bodies[e], &ends[e].1));
+                let rates = [0, 1].map(|e| point_rate(v, bodies[e], &ends[e].1));
                 let e = ends[1].0 - ends[0].0;
                 let l = e.norm();
                 let u = if l > 0.0 { e / l } else { Vector3::zeros() };
@@ -117,7 +117,7 @@ pub fn inertia(m: &Mechanism, motion: &Motion) -> DVector<f64> {
 
 /// The reactions and efforts at `motion` under gravity and `loads`.
 pub fn inverse_dynamics(m: &Mechanism, loads: &[Load], motion: &Motion) -> Actions {
-    let q = applied(m, loads, motion);
+    let q = applied(m, loads, &motion.pose, &motion.v);
     let inertial = inertia(m, motion);
     let rows = &motion.rows;
     let scaled = Scaled::new(rows, rows.phi.len(), m.size());

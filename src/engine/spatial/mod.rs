@@ -25,6 +25,7 @@
 //! motion are written in (Newton–Euler about G, ground axes).
 
 mod constraints;
+pub mod dynamics;
 mod kinematics;
 mod kinetostatics;
 mod mobility;

@@ -1,0 +1,344 @@
+//! Direct dynamics in space: the index-1 Newton–Euler equations
+//!
+//! ```text
+//! [ M    Φ_qᵀ ] [ a ]   [ Q − (0, ω × J·ω) ]
+//! [ Φ_q   0   ] [ λ ] = [ γ                ]      M = diag(m·I, J) a body
+//! ```
+//!
+//! integrated by the plane's runner (the same Runge–Kutta pairs, Radau IIA
+//! for a stiff model, events and budget) over the state
+//! y = (r, p, v, φ, W): every body's G, its quaternion (i, j, k, w), its
+//! (ṙ, ω), the first input's coordinate φ (integrated, so that it runs on
+//! past ±π) and W, the work of the applied actions (Ẇ = Q·v). The inputs
+//! here are free: they set the start and report the motion. A redundant
+//! row (Bricard's linkage) is left out once, at the start, where the rows
+//! kept already span it. After every step the quaternions are made unit
+//! and the state is projected back onto Φ = 0 and Φ_q·v = 0 (least-norm
+//! Newton corrections), so the drift stays at the step's local error.
+
+use super::constraints::{Rows, coordinate, evaluate};
+use super::kinematics::{Scaled, assemble, motion};
+use super::kinetostatics::applied;
+use super::model::{Load, Mechanism, Pose};
+use crate::engine::Deadline;
+use crate::engine::dynamics::{DynamicsError, End, Integrator, Model, Settings, Start, energy_residual, run};
+use nalgebra::{DMatrix, DVector, Quaternion, UnitQuaternion, Vector3, Vector4};
+
+/// A validated spatial dynamics problem in SI.
+#[derive(Clone, Debug)]
+pub struct SpatialProblem {
+    /// Its inputs name the free coordinates that set the start and report the motion.
+    pub mechanism: Mechanism,
+    pub loads: Vec<Load>,
+    /// Coordinate and speed of every input at t = 0.
+    pub initial: Vec<[f64; 2]>,
+    pub end: End,
+    pub tolerance: f64,
+    pub integrator: Option<Integrator>,
+    pub samples: usize,
+    pub deadline: Deadline,
+}
+
+/// The mechanism at one instant.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SpatialSample {
+    pub t: f64,
+    /// The first input's coordinate and speed.
+    pub input: [f64; 2],
+    pub pose: Pose,
+    /// ṙ, ω of every body.
+    pub v: DVector<f64>,
+    pub kinetic: f64,
+    /// Of gravity and the springs.
+    pub potential: f64,
+    /// The work of every applied action since the start (integrated).
+    pub work: f64,
+    /// (W − ΔT)/max(|W|, |ΔT|, T₀, T, T_peak) from the start.
+    pub energy_residual: f64,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct SpatialSolution {
+    pub samples: Vec<SpatialSample>,
+    pub steps: usize,
+    pub evaluations: usize,
+    pub integrator: Integrator,
+    pub stiff_at: Option<f64>,
+    /// Largest |Φ| (m) a projection removed.
+    pub drift: f64,
+    /// Σ of the steps' local error estimates of the orientation, rad: a
+    /// first-order estimate of the global error.
+    pub estimated_error: f64,
+    /// Rows left out as redundant at the start.
+    pub redundant_rows: usize,
+}
+
+/// The equations the integrator sees.
+struct Equations<'a> {
+    p: &'a SpatialProblem,
+    /// The mechanism without its inputs (they are free).
+    joints: Mechanism,
+    /// The joint rows kept: independent at the start.
+    kept: Vec<usize>,
+    n: usize,
+    size: f64,
+}
+
+impl Equations<'_> {
+    /// The pose held in y (quaternions made unit).
+    fn pose(&self, y: &[f64]) -> Pose {
+        let n = self.n;
+        let r = (0..n).map(|b| Vector3::from_column_slice(&y[3 * b..3 * b + 3])).collect();
+        let p = (0..n)
+            .map(|b| {
+                UnitQuaternion::new_normalize(Quaternion::from(Vector4::from_column_slice(&y[3 * n + 4 * b..][..4])))
+            })
+            .collect();
+        Pose { r, p }
+    }
+
+    fn velocities<'y>(&self, y: &'y [f64]) -> &'y [f64] {
+        &y[7 * self.n..13 * self.n]
+    }
+
+    /// The kept rows of Φ at `pose` (with γ at `v`).
+    fn rows(&self, pose: &Pose, v: Option<&DVector<f64>>) -> Rows {
+        let all = evaluate(&self.joints, pose, v, &[]);
+        let k = &self.kept;
+        Rows {
+            phi: DVector::from_fn(k.len(), |r, _| all.phi[k[r]]),
+            jac: DMatrix::from_fn(k.len(), all.jac.ncols(), |r, c| all.jac[(k[r], c)]),
+            rate: DVector::zeros(k.len()),
+            gamma: DVector::from_fn(k.len(), |r, _| all.gamma[k[r]]),
+            length: k.iter().map(|&r| all.length[r]).collect(),
+        }
+    }
+
+    /// (a, Q·v): the accelerations and the applied actions' power; None
+    /// where the equations are singular.
+    fn accelerations(&self, pose: &Pose, v: &DVector<f64>) -> Option<(DVector<f64>, f64)> {
+        let (n, m) = (6 * self.n, self.kept.len());
+        let rows = self.rows(pose, Some(v));
+        let q = applied(&self.joints, &self.p.loads, pose, v);
+        let mut k = DMatrix::zeros(n + m, n + m);
+        let mut rhs = DVector::zeros(n + m);
+        for (b, body) in self.joints.bodies.iter().enumerate() {
+            let rot = pose.rotation(b + 1);
+            let j = rot * body.inertia * rot.transpose();
+            let omega = Vector3::from(v.fixed_rows::<3>(6 * b + 3));
+            let gyro = omega.cross(&(j * omega));
+            for c in 0..3 {
+                k[(6 * b + c, 6 * b + c)] = body.mass;
+                rhs[6 * b + c] = q[6 * b + c];
+                rhs[6 * b + 3 + c] = q[6 * b + 3 + c] - gyro[c];
+            }
+            k.view_mut((6 * b + 3, 6 * b + 3), (3, 3)).copy_from(&j);
+        }
+        k.view_mut((n, 0), (m, n)).copy_from(&rows.jac);
+        k.view_mut((0, n), (n, m)).copy_from(&rows.jac.transpose());
+        rhs.rows_mut(n, m).copy_from(&rows.gamma);
+        let solved = k.lu().solve(&rhs)?;
+        let a = solved.rows(0, n).into_owned();
+        a.iter().all(|x| x.is_finite()).then(|| (a, q.dot(v)))
+    }
+
+    /// The first input's speed at (pose, v): its row's gradient times v.
+    fn speed_at(&self, pose: &Pose, v: &DVector<f64>) -> f64 {
+        let first = Mechanism { inputs: self.p.mechanism.inputs[..1].to_vec(), ..self.joints.clone() };
+        let rows = evaluate(&first, pose, None, &[[0.0; 3]]);
+        (rows.jac.row(rows.phi.len() - 1) * v)[0]
+    }
+}
+
+impl Model for Equations<'_> {
+    fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
+        let n = self.n;
+        let pose = self.pose(y);
+        let v = DVector::from_column_slice(self.velocities(y));
+        let Some((a, power)) = self.accelerations(&pose, &v) else { return dy.fill(f64::NAN) };
+        for b in 0..n {
+            dy[3 * b..3 * b + 3].copy_from_slice(&y[7 * n + 6 * b..][..3]);
+            let omega = Quaternion::from_imag(Vector3::from(v.fixed_rows::<3>(6 * b + 3)));
+            let pd = omega * Quaternion::from(Vector4::from_column_slice(&y[3 * n + 4 * b..][..4])) * 0.5;
+            dy[3 * n + 4 * b..][..4].copy_from_slice(pd.coords.as_slice());
+        }
+        dy[7 * n..13 * n].copy_from_slice(a.as_slice());
+        dy[13 * n] = self.speed_at(&pose, &v);
+        dy[13 * n + 1] = power;
+    }
+
+    fn angle(&self, y: &[f64]) -> f64 {
+        y[13 * self.n]
+    }
+
+    fn speed(&self, y: &[f64]) -> f64 {
+        self.speed_at(&self.pose(y), &DVector::from_column_slice(self.velocities(y)))
+    }
+
+    /// Unit quaternions, then Φ = 0 and Φ_q·v = 0 by least-norm corrections.
+    fn project(&self, y: &mut [f64]) -> f64 {
+        let n = self.n;
+        let mut pose = self.pose(y);
+        let mut removed = 0.0f64;
+        for _ in 0..3 {
+            let rows = self.rows(&pose, None);
+            let scaled = Scaled::new(&rows, rows.phi.len(), self.size);
+            // |Φ| as a length: a cosine's row times the drawing's size.
+            let scale = |k: usize| if rows.length[k] { 1.0 } else { self.size };
+            let gap = (0..rows.phi.len()).map(|k| rows.phi[k].abs() * scale(k)).fold(0.0, f64::max);
+            removed = removed.max(gap);
+            if gap < 1e-14 * self.size {
+                break;
+            }
+            pose.apply(scaled.solve(&-&rows.phi).0.as_slice());
+        }
+        let rows = self.rows(&pose, None);
+        let v = DVector::from_column_slice(self.velocities(y));
+        let (dv, _) = Scaled::new(&rows, rows.phi.len(), self.size).solve(&(&rows.jac * &v));
+        let v = v - dv;
+        for b in 0..n {
+            y[3 * b..3 * b + 3].copy_from_slice(pose.r[b].as_slice());
+            y[3 * n + 4 * b..][..4].copy_from_slice(pose.p[b].coords.as_slice());
+        }
+        y[7 * n..13 * n].copy_from_slice(v.as_slice());
+        let input = &self.p.mechanism.inputs[0];
+        let now = coordinate(&self.joints, &pose, &self.joints.joints[input.joint], input.coordinate);
+        let phi = &mut y[13 * n];
+        *phi += (now - *phi + std::f64::consts::PI).rem_euclid(2.0 * std::f64::consts::PI) - std::f64::consts::PI;
+        removed
+    }
+}
+
+/// The rows of Φ_q (scaled) that raise its rank, in order (Gram–Schmidt, twice).
+fn independent(rows: &Rows, size: f64) -> Vec<usize> {
+    let scaled = Scaled::new(rows, rows.phi.len(), size);
+    let mut basis: Vec<DVector<f64>> = Vec::new();
+    let mut kept = Vec::new();
+    for k in 0..rows.phi.len() {
+        let mut row = scaled.jac.row(k).transpose();
+        let norm = row.norm();
+        for _ in 0..2 {
+            for e in &basis {
+                row -= e * e.dot(&row);
+            }
+        }
+        if row.norm() > 1e-8 * norm.max(f64::MIN_POSITIVE) {
+            basis.push(row.normalize());
+            kept.push(k);
+        }
+    }
+    kept
+}
+
+/// T of every body at (pose, v).
+pub fn kinetic(m: &Mechanism, pose: &Pose, v: &DVector<f64>) -> f64 {
+    let body = |(b, body): (usize, &super::model::Body)| {
+        let rot = pose.rotation(b + 1);
+        let omega = Vector3::from(v.fixed_rows::<3>(6 * b + 3));
+        let rdot = Vector3::from(v.fixed_rows::<3>(6 * b));
+        0.5 * body.mass * rdot.norm_squared() + 0.5 * omega.dot(&(rot * body.inertia * rot.transpose() * omega))
+    };
+    m.bodies.iter().enumerate().map(body).sum()
+}
+
+/// V of gravity and the springs at `pose`.
+pub fn potential(m: &Mechanism, loads: &[Load], pose: &Pose) -> f64 {
+    let gravity: f64 = m.bodies.iter().zip(&pose.r).map(|(b, r)| -b.mass * m.gravity.dot(r)).sum();
+    let springs: f64 = loads
+        .iter()
+        .map(|l| match l {
+            Load::Spring { bodies, at, k, length, .. } => {
+                let ends = [0, 1].map(|e| pose.point(m, bodies[e], &at[e]).0);
+                0.5 * k * ((ends[1] - ends[0]).norm() - length).powi(2)
+            }
+            _ => 0.0,
+        })
+        .sum();
+    gravity + springs
+}
+
+/// Integrates the mechanism from its inputs' initial coordinates and speeds.
+pub fn solve(p: &SpatialProblem) -> Result<SpatialSolution, DynamicsError> {
+    let m = &p.mechanism;
+    let initial = |reason: Start| DynamicsError::Initial { reason };
+    let inputs: Vec<[f64; 3]> = p.initial.iter().map(|[a, w]| [*a, *w, 0.0]).collect();
+    let (pose, _) = assemble(m, &inputs, &Pose::drawn(m), 0).map_err(|e| initial(Start::Engine(e)))?;
+    let start = motion(m, pose, &inputs, 0).map_err(|_| initial(Start::SingularInputs))?;
+    let joints = Mechanism { inputs: Vec::new(), ..m.clone() };
+    let size = m.size();
+    let all = evaluate(&joints, &start.pose, None, &[]);
+    let kept = independent(&all, size);
+    let dof = 6 * m.n() - kept.len();
+    // The first input reports the motion: a mechanism with none does not move.
+    if dof != m.inputs.len() || m.inputs.is_empty() || p.initial.len() != m.inputs.len() {
+        return Err(initial(Start::Dof { dof, inputs: m.inputs.len() }));
+    }
+    let n = m.n();
+    let dae = Equations { p, joints, kept: kept.clone(), n, size };
+    if dae.accelerations(&start.pose, &start.v).is_none() {
+        return Err(initial(Start::MovesNoMass));
+    }
+    let mut y0 = Vec::with_capacity(13 * n + 2);
+    (0..n).for_each(|b| y0.extend(start.pose.r[b].iter()));
+    (0..n).for_each(|b| y0.extend(start.pose.p[b].coords.iter()));
+    y0.extend(start.v.iter());
+    y0.extend([p.initial[0][0], 0.0]);
+    let settings = settings(p, &start.v, size);
+    let run = run(&dae, y0, &settings)?;
+    let kinetic_of = |y: &[f64]| kinetic(m, &dae.pose(y), &DVector::from_column_slice(dae.velocities(y)));
+    let t0 = run.states.first().map_or(0.0, |(_, y)| kinetic_of(y));
+    let mut peak = 0.0f64;
+    let samples = run
+        .states
+        .iter()
+        .map(|(t, y)| {
+            let pose = dae.pose(y);
+            let v = DVector::from_column_slice(dae.velocities(y));
+            let kinetic = kinetic(m, &pose, &v);
+            peak = peak.max(kinetic);
+            let work = y[13 * n + 1];
+            SpatialSample {
+                t: *t,
+                input: [y[13 * n], dae.speed_at(&pose, &v)],
+                potential: potential(m, &p.loads, &pose),
+                energy_residual: energy_residual(work, t0, kinetic, peak),
+                pose,
+                v,
+                kinetic,
+                work,
+            }
+        })
+        .collect();
+    let orientation = (3 * n..7 * n).map(|k| 2.0 * run.local_errors[k]).fold(0.0, f64::max);
+    Ok(SpatialSolution {
+        samples,
+        steps: run.attempted,
+        evaluations: run.evaluations,
+        integrator: run.integrator,
+        stiff_at: run.stiff_at,
+        drift: run.drift,
+        estimated_error: orientation,
+        redundant_rows: all.phi.len() - kept.len(),
+    })
+}
+
+/// Tolerances: positions to rtol·L, quaternions to rtol, velocities to
+/// those times the fastest rate (gravity's √(g/L), the initial spins).
+fn settings(p: &SpatialProblem, v: &DVector<f64>, size: f64) -> Settings {
+    let n = p.mechanism.n();
+    let g = p.mechanism.gravity.norm();
+    let spin = (0..n).map(|b| v.fixed_rows::<3>(6 * b + 3).norm()).fold(0.0, f64::max);
+    let rate = 1.0f64.max((g / size).sqrt()).max(spin);
+    let rtol = (0.01 * p.tolerance).clamp(1e-13, 1e-4);
+    let mut atol = vec![rtol * size; 3 * n];
+    atol.extend(vec![rtol; 4 * n]);
+    for _ in 0..n {
+        atol.extend([rtol * size * rate; 3]);
+        atol.extend([rtol * rate; 3]);
+    }
+    atol.extend([rtol, f64::INFINITY]);
+    let integrator = p.integrator.unwrap_or_else(|| Integrator::auto(p.tolerance, true));
+    let automatic = p.integrator.is_none();
+    let kept_bytes = crate::engine::dynamics::KEPT_BYTES;
+    Settings { end: p.end, samples: p.samples, kept_bytes, rtol, atol, integrator, automatic, deadline: p.deadline }
+}
