@@ -113,6 +113,9 @@ pub fn reaction_series(rows: &[Value], x: impl Fn(&Value) -> Option<f64>) -> Vec
             });
             if let (Some(fx), Some(fy)) = (num(r, "fx"), num(r, "fy")) {
                 out[k].points.push((x, fx, fy));
+            } else if let Some(magnitude) = num(r, "magnitude") {
+                // In space: |F| alone (a polar diagram of it is the plane's).
+                out[k].points.push((x, magnitude, 0.0));
             }
         }
     }

@@ -93,7 +93,7 @@ async fn mobility_from_the_drawing_beside_the_count() {
 /// Every field a spatial mechanism reads wrong is refused at its pointer,
 /// in Spanish with `lang=es`; a planar mechanism given a point in space or
 /// a spatial pair says how to ask for space; a kind that does not take a
-/// spatial mechanism yet says so at `/mechanism/space`.
+/// spatial mechanism yet (dynamics) says so at its `space`.
 #[tokio::test]
 async fn spatial_errors_point_at_the_field() {
     let app = TestApp::new().await;
@@ -131,9 +131,116 @@ async fn spatial_errors_point_at_the_field() {
     assert_eq!(errors[0]["pointer"], "/mechanism/points/A");
     assert!(errors[0]["message"].as_str().unwrap().contains("\"space\": \"spatial\""), "{errors}");
     assert_eq!(errors[1]["pointer"], "/mechanism/joints/0/type");
-    let mut statics =
-        json!({"mechanism": bricard(), "input": {"joint": "J1", "start": 0, "end": "30 deg", "steps": 3}});
-    statics["mechanism"]["bodies"][0]["mass"] = json!(1);
+    // Kinetostatics in space: an input is a joint's coordinate, a
+    // cylindrical joint says which, and what the plane alone offers is refused.
+    let mut cylinder = hooke();
+    cylinder["joints"][1]["type"] = json!("cylindrical");
+    let statics = json!({"mechanism": cylinder, "input": [{"joint": "B", "speed": 1}, {"point": "A", "speed": 1}],
+        "outputs": ["driving", "energy"], "track": [{"name": "P", "body": "input", "at": [0, 0, 1]}],
+        "loads": [{"type": "torque", "body": "output", "value": 1}]});
     let got = app.pointers("/v1/kinetostatics", &statics).await;
-    assert!(got.contains(&"/mechanism/space".to_string()), "{got:?}");
+    assert_eq!(got, ["/track", "/outputs/1", "/input/0", "/input/1/point", "/input/1", "/loads/0"]);
+    let run = json!({"machine": {"mechanism": bricard(), "input": {"joint": "J1"}}, "duration": 1});
+    let got = app.pointers("/v1/dynamics", &run).await;
+    assert!(got.contains(&"/machine/mechanism/space".to_string()), "{got:?}");
+}
+
+async fn kinetostatics(app: &TestApp, body: &Value) -> Value {
+    let r = app.post("/v1/kinetostatics", body).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    r.json()
+}
+
+/// Hooke's joint at β = 30° driven at 3 rad/s against a torque of 7 N·m
+/// on the output: ω₂/ω₁ = cos β/(1 − sin²β·cos²θ) (the yoke drawn in the
+/// shafts' plane at θ = 0) and, massless, the input torque T·ω₂/ω₁ — the
+/// power through the joint — at every step, to 1e-9; the three pairs hold O
+/// three times over, so their reactions are flagged and said.
+#[tokio::test]
+async fn hooke_joint_passes_its_power() {
+    let app = TestApp::new().await;
+    let (beta, w1, torque) = (std::f64::consts::PI / 6.0, 3.0, 7.0);
+    let e2 = [beta.cos(), beta.sin(), 0.0];
+    let request = json!({"mechanism": hooke(),
+        "input": {"joint": "A", "speed": w1, "start": 0, "end": "360 deg", "steps": 24},
+        "loads": [{"type": "torque", "body": "output", "direction": e2, "value": -torque}]});
+    let job = kinetostatics(&app, &request).await;
+    let r = &job["result"];
+    assert_eq!((r["dof"].as_i64(), r["redundant_constraints"].as_i64()), (Some(1), Some(3)));
+    assert!(r["warnings"][0].as_str().unwrap().contains("A, B, cross"), "{}", r["warnings"]);
+    for s in r["steps"].as_array().unwrap() {
+        let theta = s["input"].as_f64().unwrap();
+        let ratio = beta.cos() / (1.0 - beta.sin().powi(2) * theta.cos().powi(2));
+        let omega: Vec<f64> = (0..3).map(|k| s["kinematics"][1]["angular_velocity"][k].as_f64().unwrap()).collect();
+        let along: f64 = omega.iter().zip(e2).map(|(a, b)| a * b).sum();
+        assert!((along - ratio * w1).abs() < 1e-9, "ω₂ at θ = {theta}");
+        assert!((s["driving"].as_f64().unwrap() - torque * ratio).abs() < 1e-9, "τ₁ at θ = {theta}");
+        assert_eq!(s["reactions"][0]["determinate"], false);
+    }
+    // Its table has the vectors' components, its plots and page draw.
+    let id = job["id"].as_str().unwrap();
+    let csv = app.get(&format!("/v1/jobs/{id}/result.csv")).await.text;
+    let header = csv.lines().next().unwrap();
+    assert!(header.contains("cross_fz_N") && header.contains("output_omega_z_rad_s"), "{header}");
+    let plots = app.get(&format!("/v1/jobs/{id}/plots")).await.json();
+    let listed: Vec<&str> = plots["plots"].as_array().unwrap().iter().map(|p| p["name"].as_str().unwrap()).collect();
+    assert_eq!(listed, ["driving", "reactions", "reduced-inertia"]);
+    for p in plots["plots"].as_array().unwrap() {
+        let svg = app.get(p["href"].as_str().unwrap()).await;
+        assert_eq!(svg.status, StatusCode::OK, "{p}: {}", svg.text);
+        assert!(svg.text.contains("<svg"), "{p}");
+    }
+    assert_eq!(app.get(&format!("/jobs/{id}")).await.status, StatusCode::OK);
+    assert_eq!(app.get(&format!("/v1/jobs/{id}/solution?step=0")).await.status, StatusCode::NOT_FOUND);
+    let part = app.get(&format!("/v1/jobs/{id}/result/steps/3/reactions/2/moment/1?unit=N*cm")).await;
+    assert_eq!(part.status, StatusCode::OK, "{}", part.text);
+}
+
+/// Seed 003's rotor posed as a spatial mechanism: a massless frame on a
+/// thrust bearing E (a spherical pair, driven about x) and a radial bearing
+/// D (a sphere in a cylinder), carrying a disk spinning at 40 rad/s about
+/// its own axis on a revolute, the frame speeding up from 15 rad/s at
+/// 4 rad/s². At t = 0.1 s and 0.25 s, its bearing forces and driving moment
+/// are the rotor kind's (`POST /v1/rotor`, in the fixed axes), to 1e-9 of the largest.
+#[tokio::test]
+async fn seed_003_rotor_as_a_mechanism() {
+    let app = TestApp::new().await;
+    let axis = [0.0, 0.6, 0.8];
+    // I_G = R·diag(0.01, 0.01, 0.02)·Rᵀ about the spin axis: 0.01·(I + a·aᵀ).
+    let tensor: Vec<Vec<f64>> =
+        (0..3).map(|i| (0..3).map(|j| 0.01 * (f64::from(u8::from(i == j)) + axis[i] * axis[j])).collect()).collect();
+    let rotor = json!({"mass": 2, "cg": [0.3, 0.1, 0.05], "spin": axis.map(|a| 40.0 * a), "bearings": [0, 0.5],
+        "inertia": {"xx": tensor[0][0], "yy": tensor[1][1], "zz": tensor[2][2],
+                    "xy": -tensor[0][1], "xz": -tensor[0][2], "yz": -tensor[1][2]},
+        "gravity": [0, 0, -9.81], "frame": {"speed": 15, "acceleration": 4}, "times": [0.1, 0.25]});
+    let r = app.post("/v1/rotor", &rotor).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let expected = r.json()["result"]["states"].clone();
+    let angle = |t: f64| 15.0 * t + 2.0 * t * t;
+    let mechanism = json!({"space": "spatial",
+        "bodies": [{"name": "frame"}, {"name": "disk", "mass": 2, "cg": [0.3, 0.1, 0.05], "inertia": tensor}],
+        "joints": [
+            {"name": "D", "type": "sphere_in_cylinder", "bodies": ["ground", "frame"], "at": [0, 0, 0], "axis": [1, 0, 0]},
+            {"name": "E", "type": "spherical", "bodies": ["ground", "frame"], "at": [0.5, 0, 0], "axis": [1, 0, 0]},
+            {"name": "spin", "type": "revolute", "bodies": ["frame", "disk"], "at": [0.3, 0.1, 0.05], "axis": axis}
+        ],
+        "gravity": [0, 0, -9.81]});
+    let request = json!({"mechanism": mechanism, "input": [
+        {"joint": "E", "speed": {"expr": "sqrt(225 + 8*phi)"}, "start": angle(0.1),
+         "end": angle(0.1) + 2.0 * (angle(0.25) - angle(0.1)), "steps": 2},
+        {"joint": "spin", "speed": 40, "start": 4, "end": 16}]});
+    let job = kinetostatics(&app, &request).await;
+    for (k, state) in expected.as_array().unwrap().iter().enumerate() {
+        let step = &job["result"]["steps"][k];
+        let total = &state["reactions_fixed"]["total"];
+        let of = |v: &Value| -> Vec<f64> { (0..3).map(|c| v[c].as_f64().unwrap()).collect() };
+        let largest = of(&total["d"]).iter().chain(&of(&total["e"])).fold(0.0f64, |a, x| a.max(x.abs()));
+        for (joint, bearing) in [(0, "d"), (1, "e")] {
+            let (got, want) = (of(&step["reactions"][joint]["force"]), of(&total[bearing]));
+            let gap = got.iter().zip(&want).fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
+            assert!(gap < 1e-9 * largest, "{bearing} at step {k}: {got:?} against {want:?}");
+        }
+        let moment = state["reactions"]["total"]["driving_moment"].as_f64().unwrap();
+        assert!((step["driving"][0].as_f64().unwrap() - moment).abs() < 1e-9 * largest, "M_x at step {k}");
+    }
 }

@@ -109,6 +109,8 @@ pub fn page(
     // The kind's own files this result has (a cam's profile.dxf).
     let files: Vec<&str> = kind.files().iter().map(|f| f.0).filter(|name| kind.has_file(&result, name)).collect();
     let summary = summary(row, &result);
+    // Asked before `values` takes the long lists out of the result.
+    let solution = kind.has_solution(&result);
     let (values, long) = values(kind, &mut result);
     let (lang, id) = (i18n::current(), &row.id);
     let t = |key| tr(lang, key);
@@ -121,7 +123,7 @@ pub fn page(
             li { a href=(format!("/v1/jobs/{id}/values?format=csv")) { (t("page-every-value")) } }
             li { a href=(format!("/v1/jobs/{id}/plots")) { (t("page-plots-json")) } }
             @for name in &files { li { a href=(format!("/v1/jobs/{id}/{name}")) { (name) } } }
-            @if kind.has_solution(&result) {
+            @if solution {
                 li { a href=(format!("/jobs/{id}/solution?step={}", step.unwrap_or(0))) { (t("page-solution-link")) } }
             }
         } } @else {

@@ -136,3 +136,5 @@ accuracy-global-to-angle = the run ends at an angle, at another instant each tim
 accuracy-global-floor = the tolerance is already near the limit of double precision
 accuracy-global-budget = the run took over a quarter of the compute budget (raise --job-seconds, or shorten the run)
 accuracy-global-failed = the tighter run failed or stopped elsewhere
+accuracy-kinetostatics-spatial = positions by Newton–Raphson on the joints' rows (quaternions turned by rotation increments) to |Φ| ≤ 1e-12 of the drawing's size, velocities and accelerations from Φ_q·v = −Φ_t and Φ_q·a = γ, reactions and efforts from the Newton–Euler equations with Φ_qᵀ·λ (least-norm where rows repeat); the virtual power of the actions checks them
+warning-redundant-constraints-spatial = { $count } redundant constraint(s): equilibrium does not determine the reactions of joints { $joints }; each is given as the share of least norm, marked "determinate": false

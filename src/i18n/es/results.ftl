@@ -148,3 +148,8 @@ accuracy-global-to-angle = el cálculo termina en un ángulo, en otro instante c
 accuracy-global-floor = la tolerancia ya está cerca del límite de la doble precisión
 accuracy-global-budget = el cálculo llevó más de la cuarta parte del presupuesto de cálculo (suba --job-seconds o acorte el movimiento)
 accuracy-global-failed = el cálculo más estricto falló o se detuvo en otro punto
+accuracy-kinetostatics-spatial = posiciones por Newton–Raphson sobre las ecuaciones de los pares (cuaterniones girados por incrementos de rotación) hasta |Φ| ≤ 1e-12 del tamaño del dibujo, velocidades y aceleraciones de Φ_q·v = −Φ_t y Φ_q·a = γ, reacciones y esfuerzos de las ecuaciones de Newton–Euler con Φ_qᵀ·λ (de norma mínima donde las ecuaciones se repiten); la potencia virtual de las acciones los comprueba
+warning-redundant-constraints-spatial = { $count ->
+        [one] una restricción redundante
+       *[other] { $count } restricciones redundantes
+    }: el equilibrio no determina las reacciones de los pares { $joints }; se da de cada una el reparto de norma mínima, marcado "determinate": false

@@ -4,9 +4,10 @@
 
 use crate::engine::function::{Function, Side};
 use crate::engine::model::{Driver, JointKind, Mechanism};
+use crate::engine::spatial;
 use crate::i18n::Msg;
 use crate::kind::quantity::{Errors, Quantity};
-use crate::kinds::mechanism::{InputDto, MechanismDto, coordinate};
+use crate::kinds::mechanism::{InputCoordinate, InputDto, MechanismDto, coordinate};
 use crate::units::Dim;
 use std::f64::consts::PI;
 
@@ -132,4 +133,74 @@ fn input_range(e: &mut Errors, input: &InputDto, prismatic: bool, at: &str) -> O
     e.differentiable(&speed, 1, &format!("{at}/speed"))?;
     let slope = speed.constant().is_none().then(|| speed.derivative());
     Some((reference, Range { start, end, speed, slope, acceleration }))
+}
+
+/// A spatial mechanism's inputs, each a joint's coordinate (a revolute's
+/// rotation, a prismatic's slide, a cylindrical's `coordinate`, a
+/// spherical's rotation about its `axis`), and the positions of every step
+/// counted from the drawing (less each input's `reference`); per input
+/// whether its coordinate is a length.
+pub fn spatial(
+    e: &mut Errors,
+    m: &spatial::Mechanism,
+    inputs: &[InputDto],
+    many: bool,
+) -> (Vec<spatial::Input>, Vec<Vec<[f64; 3]>>, Vec<bool>) {
+    let steps = inputs.first().and_then(|i| i.steps).unwrap_or(DEFAULT_STEPS);
+    if inputs.is_empty() || inputs.len() > 10 {
+        e.say("/input", Msg::new("input-count"));
+    }
+    let max = e.limits.steps;
+    if steps == 0 || steps > max {
+        e.say(if many { "/input/0/steps" } else { "/input/steps" }, Msg::new("input-steps").arg("max", max));
+    }
+    let (mut chosen, mut ranges, mut linear) = (Vec::new(), Vec::new(), Vec::new());
+    for (k, input) in inputs.iter().enumerate() {
+        let at = if many { format!("/input/{k}") } else { "/input".to_string() };
+        if k > 0 && input.steps.is_some_and(|s| s != steps) {
+            e.say(&format!("{at}/steps"), Msg::new("input-same-steps"));
+        }
+        let Some(picked) = joint_coordinate(e, m, input, &at) else { continue };
+        let length = picked.coordinate == spatial::Coordinate::Slide;
+        if let Some((reference, mut range)) = input_range(e, input, length, &at) {
+            (range.start, range.end) = (range.start - reference, range.end - reference);
+            chosen.push(picked);
+            ranges.push(range);
+            linear.push(length);
+        }
+    }
+    let valid = ranges.len() == inputs.len() && (1..=max).contains(&steps);
+    let positions = if valid { laid_out(e, &ranges, steps) } else { Vec::new() };
+    (chosen, positions, linear)
+}
+
+/// The joint and coordinate an input names in space.
+fn joint_coordinate(e: &mut Errors, m: &spatial::Mechanism, input: &InputDto, at: &str) -> Option<spatial::Input> {
+    use spatial::{Coordinate, JointKind};
+    for (field, given) in
+        [("point", input.point.is_some()), ("body", input.body.is_some()), ("direction", input.direction.is_some())]
+    {
+        if given {
+            e.say(&format!("{at}/{field}"), Msg::new("input-spatial-joint"));
+        }
+    }
+    let Some(name) = &input.joint else { return e.refuse(at, Msg::new("input-spatial-joint")) };
+    let Some(joint) = m.joints.iter().position(|j| &j.name == name) else {
+        return e.refuse(&format!("{at}/joint"), Msg::new("mechanism-unknown-joint").arg("name", name));
+    };
+    let asked = input.coordinate.map(|c| match c {
+        InputCoordinate::Rotation => Coordinate::Rotation,
+        InputCoordinate::Slide => Coordinate::Slide,
+    });
+    let coordinate = match (&m.joints[joint].kind, asked) {
+        (JointKind::Revolute { .. } | JointKind::Spherical { axis: Some(_) }, None | Some(Coordinate::Rotation)) => {
+            Coordinate::Rotation
+        }
+        (JointKind::Prismatic { .. }, None | Some(Coordinate::Slide)) => Coordinate::Slide,
+        (JointKind::Cylindrical { .. }, Some(c)) => c,
+        (JointKind::Cylindrical { .. }, None) => return e.refuse(at, Msg::new("input-cylindrical-coordinate")),
+        (_, Some(_)) => return e.refuse(&format!("{at}/coordinate"), Msg::new("input-spatial-coordinate")),
+        (_, None) => return e.refuse(&format!("{at}/joint"), Msg::new("input-spatial-coordinate")),
+    };
+    Some(spatial::Input { joint, coordinate })
 }

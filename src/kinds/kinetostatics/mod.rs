@@ -2,11 +2,13 @@
 
 mod inputs;
 mod located;
+mod motion3;
 mod plots;
 mod request;
 mod result;
 mod shaking;
 mod solution;
+mod space;
 mod table;
 
 pub use request::{KinetostaticsRequest, OutputKind};
@@ -66,6 +68,15 @@ impl Kind for Kinetostatics {
         ("/steps/*/reactions/*/fx", "N"),
         ("/steps/*/reactions/*/fy", "N"),
         ("/steps/*/reactions/*/moment", "N*m"),
+        ("/steps/*/reactions/*/force/*", "N"),
+        ("/steps/*/reactions/*/moment/*", "N*m"),
+        ("/steps/*/reactions/*/magnitude", "N"),
+        ("/steps/*/kinematics/*/position/*", "m"),
+        ("/steps/*/kinematics/*/rotation/*/*", "1"),
+        ("/steps/*/kinematics/*/velocity/*", "m/s"),
+        ("/steps/*/kinematics/*/angular_velocity/*", "rad/s"),
+        ("/steps/*/kinematics/*/acceleration/*", "m/s^2"),
+        ("/steps/*/kinematics/*/angular_acceleration/*", "rad/s^2"),
         ("/steps/*/reactions/*/ends/*", "N"),
         ("/steps/*/reactions/*/normal", "N"),
         ("/steps/*/reactions/*/tangential", "N"),
@@ -99,6 +110,11 @@ impl Kind for Kinetostatics {
     type Result = KinetostaticsResult;
     const PLOTS: Plots = Plots { list: plots::list, draw: plots::draw };
     const SOLUTION: Option<crate::kind::solution::Solve> = Some(solution::solution);
+
+    /// A spatial mechanism's steps (reactions as force vectors) have none yet.
+    fn has_solution(result: &Value) -> bool {
+        !result["steps"][0]["reactions"][0]["force"].is_array()
+    }
 
     fn compute(
         request: &KinetostaticsRequest,
@@ -146,6 +162,9 @@ fn compute(
     unknown: Vec<FieldError>,
     limits: &Limits,
 ) -> Result<KinetostaticsResult, ApiError> {
+    if request.mechanism.is_spatial() {
+        return space::compute(request, unknown, limits);
+    }
     let deadline = limits.deadline();
     let problem = validated(unknown, request.to_problem(limits))?;
     let joint_names: Vec<String> = problem.mechanism.joints.iter().map(|j| j.name.clone()).collect();

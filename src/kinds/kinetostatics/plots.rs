@@ -19,8 +19,11 @@ pub fn list(job: &Job) -> Vec<Listed> {
     if has("driving") {
         out.push(Listed::new("driving", say("plot-ks-driving")));
     }
+    let spatial = steps.iter().any(|s| s["reactions"][0].get("force").is_some());
     if has("reactions") {
         out.push(Listed::new("reactions", say("plot-ks-reactions")));
+    }
+    if has("reactions") && !spatial {
         out.extend(
             joints(job.result)
                 .into_iter()
@@ -29,6 +32,8 @@ pub fn list(job: &Job) -> Vec<Listed> {
     }
     if has("reduced_inertia") {
         out.push(Listed::new("reduced-inertia", say("plot-ks-reduced-inertia")));
+    }
+    if has("reduced_torque") {
         out.push(Listed::new("reduced-torque", say("plot-ks-reduced-torque")));
     }
     if has("shaking") {

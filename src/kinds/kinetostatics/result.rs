@@ -1,5 +1,6 @@
 //! The `result` of a kinetostatics job, as stored and served, and its CSV table.
 
+use super::motion3::{BodyMotion3, Reaction3};
 use super::request::Problem;
 use super::shaking::{CounterweightDto, ShakingDto, largest};
 use crate::engine::kinetostatics::{Motion, Step, Totals, energy};
@@ -24,7 +25,7 @@ pub enum Scalars {
 }
 
 impl Scalars {
-    fn of(v: &[f64]) -> Self {
+    pub(crate) fn of(v: &[f64]) -> Self {
         if v.len() == 1 { Self::One(v[0]) } else { Self::Many(v.to_vec()) }
     }
 }
@@ -64,6 +65,32 @@ pub struct BodyMotion {
     pub inertia_moment: f64,
 }
 
+/// A step's bodies: planar (x, y, θ) or spatial (a mechanism with
+/// `"space": "spatial"`).
+#[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
+#[serde(untagged)]
+pub enum Kinematics {
+    Planar(Vec<BodyMotion>),
+    Spatial(Vec<BodyMotion3>),
+}
+
+/// A step's reactions: planar, or spatial as forces and moments.
+#[derive(Clone, Debug, Serialize)]
+#[serde(untagged)]
+pub enum StepReactions {
+    Planar(Reactions),
+    Spatial(Vec<Reaction3>),
+}
+
+/// [`StepReactions`] as the document states it.
+#[derive(Serialize, ToSchema)]
+#[serde(untagged)]
+#[allow(dead_code)]
+pub enum StepReactionsSchema<'a> {
+    Planar(Vec<ReactionDto<'a>>),
+    Spatial(Vec<Reaction3>),
+}
+
 #[derive(Clone, Debug, Serialize, ToSchema)]
 pub struct StepDto {
     #[schema(value_type = Scalars)]
@@ -71,8 +98,8 @@ pub struct StepDto {
     /// Torque (N·m) or force (N) of each input on the second body of its joint.
     #[schema(value_type = Option<Scalars>)]
     pub driving: Option<Scalars>,
-    #[schema(value_type = Option<Vec<ReactionDto>>)]
-    pub reactions: Option<Reactions>,
+    #[schema(value_type = Option<StepReactionsSchema>)]
+    pub reactions: Option<StepReactions>,
     /// I*(φ), one input only.
     pub reduced_inertia: Option<f64>,
     /// M*(φ) of every load, driver excluded.
@@ -94,7 +121,7 @@ pub struct StepDto {
     pub scaled_condition: f64,
     /// A singular position (toggle, change point): nothing but the input is computed here.
     pub singular: bool,
-    pub kinematics: Option<Vec<BodyMotion>>,
+    pub kinematics: Option<Kinematics>,
     /// Where `outputs` has "energy".
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub energy: Option<EnergyDto>,
@@ -317,6 +344,7 @@ impl StepDto {
         let (joint_names, names) = (&n.joints[..], &n.bodies[..]);
         let reactions =
             (p.outputs.reactions && !s.singular).then(|| Reactions::new(n, &s.reactions, &s.contacts, &p.mechanism));
+        let reactions = reactions.map(StepReactions::Planar);
         let contacts = (reactions.is_some() && !s.contacts.is_empty())
             .then(|| s.contacts.iter().map(|c| ContactDto::new(c, joint_names)).collect());
         StepDto {
@@ -333,7 +361,7 @@ impl StepDto {
                 .kinematics
                 .as_ref()
                 .filter(|_| p.kinematics)
-                .map(|m| motion(m, &p.mechanism, names, &p.centred)),
+                .map(|m| Kinematics::Planar(motion(m, &p.mechanism, names, &p.centred))),
             energy: s
                 .kinematics
                 .as_ref()

@@ -16,6 +16,10 @@ use crate::kinds::mechanism::solution::written;
 pub fn solved_step(job: &plots::Job, step: usize, limits: &Limits) -> Result<(Problem, Step), ApiError> {
     let request: KinetostaticsRequest = serde_json::from_value(job.request.clone())
         .map_err(|e| ApiError::Internal(format!("stored kinetostatics request: {e}")))?;
+    // A spatial mechanism's free bodies are not drawn yet: as a kind without bodies.
+    if request.mechanism.is_spatial() {
+        return Err(ApiError::NoSolution { id: String::new(), kind: "kinetostatics".into() });
+    }
     let mut problem = validated(vec![], request.to_problem(limits))?;
     let count = problem.positions.len();
     if step >= count {

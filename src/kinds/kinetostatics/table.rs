@@ -1,7 +1,7 @@
 //! The CSV table of a stored kinetostatics result (`result.csv`), read from
 //! the stored JSON: a row per step.
 
-use crate::kind::{cell, list, names};
+use crate::kind::{cell, names};
 use serde_json::Value;
 
 /// The CSV table of a stored result: one row per step; columns input(s),
@@ -32,13 +32,17 @@ pub fn csv_table(result: &Value) -> (Vec<String>, Vec<Vec<String>>) {
     let inputs = units("coordinate_unit").len().max(1);
     let driving = steps.iter().any(|s| !s["driving"].is_null());
     let (joints, bodies) = (names(&steps, "reactions", "joint"), names(&steps, "kinematics", "body"));
+    // A spatial mechanism's steps: vectors, each component a column.
+    let spatial =
+        steps.iter().any(|s| s["kinematics"][0].get("position").is_some() || s["reactions"][0].get("force").is_some());
+    let (reaction, motion): (Columns, Columns) = if spatial { (&REACTION_3, &MOTION_3) } else { (&REACTION, &MOTION) };
     let mut header = numbered("input", units("coordinate_unit"));
     if driving {
         header.extend(numbered("driving", units("driving_unit")));
     }
     header.extend(["reduced_inertia_kg_m2", "reduced_torque_N_m", "jacobian_condition"].map(String::from));
     for j in &joints {
-        header.extend([format!("{j}_fx_N"), format!("{j}_fy_N"), format!("{j}_moment_N_m")]);
+        header.extend(reaction.iter().map(|(_, column)| format!("{j}_{column}")));
     }
     let has = |key: &str| steps.iter().any(|s| !s["shaking"][key].is_null());
     let (shaking, balanced) = (has("force"), has("balanced_force"));
@@ -49,7 +53,7 @@ pub fn csv_table(result: &Value) -> (Vec<String>, Vec<Vec<String>>) {
         header.extend(["balanced_fx_N", "balanced_fy_N"].map(String::from));
     }
     for b in &bodies {
-        header.extend(MOTION.iter().map(|(field, unit)| format!("{b}_{field}_{unit}")));
+        header.extend(motion.iter().map(|(_, column)| format!("{b}_{column}")));
     }
     let rows = steps
         .iter()
@@ -59,7 +63,7 @@ pub fn csv_table(result: &Value) -> (Vec<String>, Vec<Vec<String>>) {
                 row.extend(cells(&s["driving"], inputs));
             }
             row.extend([cell(&s["reduced_inertia"]), cell(&s["reduced_torque"]), cell(&s["jacobian_condition"])]);
-            row.extend(list(&s["reactions"], joints.len(), &["fx", "fy", "moment"]));
+            row.extend(items(&s["reactions"], joints.len(), reaction));
             let f = |key: &str, k: usize| cell(&s["shaking"][key][k]);
             if shaking {
                 row.extend([f("force", 0), f("force", 1), cell(&s["shaking"]["moment"])]);
@@ -67,25 +71,67 @@ pub fn csv_table(result: &Value) -> (Vec<String>, Vec<Vec<String>>) {
             if balanced {
                 row.extend([f("balanced_force", 0), f("balanced_force", 1)]);
             }
-            row.extend(list(&s["kinematics"], bodies.len(), &MOTION.map(|(field, _)| field)));
+            row.extend(items(&s["kinematics"], bodies.len(), motion));
             row
         })
         .collect();
     (header, rows)
 }
 
-/// A body's motion in the CSV: field and unit.
-const MOTION: [(&str, &str); 9] = [
-    ("x", "m"),
-    ("y", "m"),
-    ("theta", "rad"),
-    ("vx", "m_s"),
-    ("vy", "m_s"),
-    ("omega", "rad_s"),
-    ("ax", "m_s2"),
-    ("ay", "m_s2"),
-    ("alpha", "rad_s2"),
+/// Columns of a list's items: where in the item (a pointer), and the column's name.
+type Columns = &'static [(&'static str, &'static str)];
+
+/// A joint's reaction in the CSV: where in the item, and the column's name.
+const REACTION: [(&str, &str); 3] = [("/fx", "fx_N"), ("/fy", "fy_N"), ("/moment", "moment_N_m")];
+const REACTION_3: [(&str, &str); 6] = [
+    ("/force/0", "fx_N"),
+    ("/force/1", "fy_N"),
+    ("/force/2", "fz_N"),
+    ("/moment/0", "mx_N_m"),
+    ("/moment/1", "my_N_m"),
+    ("/moment/2", "mz_N_m"),
 ];
+
+/// A body's motion in the CSV: where in the item, and the column's name.
+const MOTION: [(&str, &str); 9] = [
+    ("/x", "x_m"),
+    ("/y", "y_m"),
+    ("/theta", "theta_rad"),
+    ("/vx", "vx_m_s"),
+    ("/vy", "vy_m_s"),
+    ("/omega", "omega_rad_s"),
+    ("/ax", "ax_m_s2"),
+    ("/ay", "ay_m_s2"),
+    ("/alpha", "alpha_rad_s2"),
+];
+const MOTION_3: [(&str, &str); 15] = [
+    ("/position/0", "x_m"),
+    ("/position/1", "y_m"),
+    ("/position/2", "z_m"),
+    ("/velocity/0", "vx_m_s"),
+    ("/velocity/1", "vy_m_s"),
+    ("/velocity/2", "vz_m_s"),
+    ("/angular_velocity/0", "omega_x_rad_s"),
+    ("/angular_velocity/1", "omega_y_rad_s"),
+    ("/angular_velocity/2", "omega_z_rad_s"),
+    ("/acceleration/0", "ax_m_s2"),
+    ("/acceleration/1", "ay_m_s2"),
+    ("/acceleration/2", "az_m_s2"),
+    ("/angular_acceleration/0", "alpha_x_rad_s2"),
+    ("/angular_acceleration/1", "alpha_y_rad_s2"),
+    ("/angular_acceleration/2", "alpha_z_rad_s2"),
+];
+
+/// The cells at `fields` (pointers) of each of `n` items of a list (empty where the list is null).
+fn items(v: &Value, n: usize, fields: Columns) -> Vec<String> {
+    match v.as_array() {
+        Some(list) => list
+            .iter()
+            .flat_map(|item| fields.iter().map(|(at, _)| item.pointer(at).map(cell).unwrap_or_default()))
+            .collect(),
+        None => vec![String::new(); n * fields.len()],
+    }
+}
 
 /// A number or a list of `n` numbers as `n` cells (empty where null).
 fn cells(v: &Value, n: usize) -> Vec<String> {

@@ -61,6 +61,18 @@ pub struct InputDto {
     /// Coordinate of the drawn configuration (default 0).
     #[schema(value_type = Option<Quantity>)]
     pub reference: Option<Quantity>,
+    /// In space: which of the joint's coordinates, `rotation` (about its
+    /// axis) or `slide` (along it); a cylindrical joint has both (default:
+    /// a revolute's rotation, a prismatic's slide).
+    pub coordinate: Option<InputCoordinate>,
+}
+
+/// A spatial joint's coordinate.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum InputCoordinate {
+    Rotation,
+    Slide,
 }
 
 /// One input or several.
@@ -116,6 +128,9 @@ pub fn coordinate(
     input: &InputDto,
     at: &str,
 ) -> Option<(Coordinate, bool)> {
+    if input.coordinate.is_some() {
+        e.say(&format!("{at}/coordinate"), Msg::new("input-coordinate-planar"));
+    }
     let moving = |e: &mut Errors, name: &str, ptr: &str| match body_id(names, name) {
         Some(0) => e.refuse(ptr, Msg::new("input-ground")),
         Some(b) => Some(b),

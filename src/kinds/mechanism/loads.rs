@@ -31,7 +31,8 @@ pub struct LoadDto {
     pub body: Option<String>,
     #[schema(value_type = Option<PointRef>)]
     pub at: Option<PointRef>,
-    #[schema(min_items = 2, max_items = 2)]
+    /// [x, y]; in space [x, y, z], and a torque's axis.
+    #[schema(min_items = 2, max_items = 3)]
     pub direction: Option<Vec<f64>>,
     #[schema(value_type = Option<FunctionDto>)]
     pub magnitude: Option<FunctionDto>,

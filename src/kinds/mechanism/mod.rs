@@ -15,13 +15,14 @@ mod points;
 mod reactions;
 pub mod solution;
 pub mod spatial;
+pub mod spatial_loads;
 pub mod track;
 
 pub use contact::{CircleDto, CurveDto, LineDto, PolarDto, SplineDto};
 pub use dimensions::{Assembled, DimensionDto};
 pub use energy::{ByName, EnergyDto, NameOrder};
 pub use inertia::BodyInertia;
-pub use inputs::{InputDto, Inputs, coordinate, machine_parts};
+pub use inputs::{InputCoordinate, InputDto, Inputs, coordinate, machine_parts};
 pub use loads::{LoadDto, LoadType, MAX_LOADS, convert_loads};
 pub use points::{BodyPoint, Coords, DrawnCoords, DrawnPoints, PointRef};
 pub use reactions::{ContactDto, Name, Names, ReactionDto, Reactions, contact_warnings, names};

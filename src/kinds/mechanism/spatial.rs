@@ -48,19 +48,7 @@ impl MechanismDto {
                 Some(_) => {}
             }
         }
-        let point = |e: &mut Errors, p: &PointRef, ptr: &str| match p {
-            PointRef::Space(c) if c.iter().all(|v| v.is_finite()) => Some(Vector3::from(*c)),
-            PointRef::Space(_) => e.refuse(ptr, Msg::new("mechanism-coordinates")),
-            PointRef::Coords(_) => e.refuse(ptr, Msg::new("mechanism-planar-point")),
-            PointRef::Name(n) if n.chars().count() > NAME_MAX_LENGTH => {
-                e.refuse(ptr, Msg::new("field-at-most-characters").arg("max", NAME_MAX_LENGTH))
-            }
-            PointRef::Name(n) => match (points.get(n), points.xyz(n)) {
-                (_, Some(c)) => Some(Vector3::from(c)),
-                (Some(_), None) => None,
-                (None, _) => e.refuse(ptr, Msg::new("mechanism-unknown-point").arg("name", n)),
-            },
-        };
+        let point = |e: &mut Errors, p: &PointRef, ptr: &str| self.point_in_space(e, p, ptr);
         let mut names = vec!["ground".to_string()];
         let mut bodies = Vec::with_capacity(self.bodies.len());
         for (k, b) in self.bodies.iter().enumerate() {
@@ -78,7 +66,7 @@ impl MechanismDto {
             let cg = match &b.cg {
                 Some(p) => point(e, p, &format!("{ptr}/cg")),
                 None if mass.unwrap_or(0.0) > 0.0 => e.refuse(&ptr, Msg::new("mechanism-cg")),
-                None => Some(self.first_joint_point_in_space(&b.name, &point, e)),
+                None => Some(self.first_joint_point_in_space(&b.name, e)),
             };
             bodies.push(Body {
                 name: b.name.clone(),
@@ -130,21 +118,35 @@ impl MechanismDto {
         Some(SpatialConverted { mechanism, body_names: names })
     }
 
+    /// A point [x, y, z] given or named (a name given two coordinates is
+    /// said at its own pointer under `points`, not here).
+    pub fn point_in_space(&self, e: &mut Errors, p: &PointRef, ptr: &str) -> Option<Vector3<f64>> {
+        let points = self.points.as_ref();
+        match p {
+            PointRef::Space(c) if c.iter().all(|v| v.is_finite()) => Some(Vector3::from(*c)),
+            PointRef::Space(_) => e.refuse(ptr, Msg::new("mechanism-coordinates")),
+            PointRef::Coords(_) => e.refuse(ptr, Msg::new("mechanism-planar-point")),
+            PointRef::Name(n) if n.chars().count() > NAME_MAX_LENGTH => {
+                e.refuse(ptr, Msg::new("field-at-most-characters").arg("max", NAME_MAX_LENGTH))
+            }
+            PointRef::Name(n) => match (points.and_then(|p| p.get(n)), points.and_then(|p| p.xyz(n))) {
+                (_, Some(c)) => Some(Vector3::from(c)),
+                (Some(_), None) => None,
+                (None, _) => e.refuse(ptr, Msg::new("mechanism-unknown-point").arg("name", n)),
+            },
+        }
+    }
+
     /// The point of the first joint that names this body (the cg of a massless link).
-    fn first_joint_point_in_space(
-        &self,
-        body: &str,
-        point: &impl Fn(&mut Errors, &PointRef, &str) -> Option<Vector3<f64>>,
-        e: &mut Errors,
-    ) -> Vector3<f64> {
+    fn first_joint_point_in_space(&self, body: &str, e: &mut Errors) -> Vector3<f64> {
         let at = self.joints.iter().filter(|j| j.bodies.iter().any(|b| b == body)).find_map(|j| j.at.as_ref());
         let mut quiet = Errors::new(&e.limits);
-        at.and_then(|p| point(&mut quiet, p, "")).unwrap_or_else(Vector3::zeros)
+        at.and_then(|p| self.point_in_space(&mut quiet, p, "")).unwrap_or_else(Vector3::zeros)
     }
 }
 
 /// A unit vector from a finite, non-zero [x, y, z] at `at`.
-fn unit(e: &mut Errors, v: &[f64], at: &str) -> Option<Vector3<f64>> {
+pub fn unit(e: &mut Errors, v: &[f64], at: &str) -> Option<Vector3<f64>> {
     match v {
         [x, y, z] if [x, y, z].iter().all(|c| c.is_finite()) => {
             // Scaled by its largest component first: the norm of [1e300, 0, 0] is finite.

@@ -12,6 +12,7 @@ from .balancing_result import BalancingResult
 from .bearing_forces_dto import BearingForcesDto
 from .body_dto import BodyDto
 from .body_motion import BodyMotion
+from .body_motion_3 import BodyMotion3
 from .body_position import BodyPosition
 from .cam_curve_dto import CamCurveDto
 from .cam_dynamics_dto import CamDynamicsDto
@@ -100,6 +101,7 @@ from .in_spanish_statement import InSpanishStatement
 from .inertia_dto import InertiaDto
 from .inertia_pair import InertiaPair
 from .initial import Initial
+from .input_coordinate import InputCoordinate
 from .input_dto import InputDto
 from .input_info import InputInfo
 from .input_state import InputState
@@ -213,6 +215,7 @@ from .prairie_learn import PrairieLearn
 from .prairie_learn_messages import PrairieLearnMessages
 from .prairie_learn_test import PrairieLearnTest
 from .problem import Problem
+from .reaction_3 import Reaction3
 from .reaction_dto import ReactionDto
 from .reactions_dto import ReactionsDto
 from .readiness import Readiness
@@ -274,6 +277,7 @@ __all__ = (
     "BearingForcesDto",
     "BodyDto",
     "BodyMotion",
+    "BodyMotion3",
     "BodyPosition",
     "CamCurveDto",
     "CamDynamicsDto",
@@ -359,6 +363,7 @@ __all__ = (
     "InertiaDto",
     "InertiaPair",
     "Initial",
+    "InputCoordinate",
     "InputDto",
     "InputInfo",
     "InputState",
@@ -475,6 +480,7 @@ __all__ = (
     "PrairieLearnMessages",
     "PrairieLearnTest",
     "Problem",
+    "Reaction3",
     "ReactionDto",
     "ReactionsDto",
     "Readiness",

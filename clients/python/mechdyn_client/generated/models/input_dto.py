@@ -8,6 +8,7 @@ from attrs import field as _attrs_field
 
 from ..types import UNSET, Unset
 
+from ..models.input_coordinate import InputCoordinate
 from ..types import UNSET, Unset
 from typing import cast
 
@@ -31,6 +32,7 @@ class InputDto:
             acceleration (float | None | str | Unset):
             body (None | str | Unset): With `point`: the body it belongs to, where several hold it (a pin
                 in a slot). Alone: the body whose absolute rotation is the coordinate.
+            coordinate (InputCoordinate | None | Unset):
             direction (list[float] | None | Unset):
             end (float | None | str | Unset):
             joint (None | str | Unset): A revolute (crank) or prismatic (linear actuator) joint: its relative
@@ -50,6 +52,7 @@ class InputDto:
 
     acceleration: float | None | str | Unset = UNSET
     body: None | str | Unset = UNSET
+    coordinate: InputCoordinate | None | Unset = UNSET
     direction: list[float] | None | Unset = UNSET
     end: float | None | str | Unset = UNSET
     joint: None | str | Unset = UNSET
@@ -77,6 +80,14 @@ class InputDto:
             body = UNSET
         else:
             body = self.body
+
+        coordinate: None | str | Unset
+        if isinstance(self.coordinate, Unset):
+            coordinate = UNSET
+        elif isinstance(self.coordinate, InputCoordinate):
+            coordinate = self.coordinate.value
+        else:
+            coordinate = self.coordinate
 
         direction: list[float] | None | Unset
         if isinstance(self.direction, Unset):
@@ -141,6 +152,8 @@ class InputDto:
             field_dict["acceleration"] = acceleration
         if body is not UNSET:
             field_dict["body"] = body
+        if coordinate is not UNSET:
+            field_dict["coordinate"] = coordinate
         if direction is not UNSET:
             field_dict["direction"] = direction
         if end is not UNSET:
@@ -184,6 +197,26 @@ class InputDto:
             return cast(None | str | Unset, data)
 
         body = _parse_body(d.pop("body", UNSET))
+
+
+        def _parse_coordinate(data: object) -> InputCoordinate | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, str):
+                    raise TypeError()
+                coordinate_type_0 = InputCoordinate(data)
+
+
+
+                return coordinate_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(InputCoordinate | None | Unset, data)
+
+        coordinate = _parse_coordinate(d.pop("coordinate", UNSET))
 
 
         def _parse_direction(data: object) -> list[float] | None | Unset:
@@ -287,6 +320,7 @@ class InputDto:
         instance_ = cls(
             acceleration=acceleration,
             body=body,
+            coordinate=coordinate,
             direction=direction,
             end=end,
             joint=joint,

@@ -36,7 +36,7 @@ class LoadDto:
             b (list[list[float | str] | str] | None | Unset):
             body (None | str | Unset):
             coefficient (float | None | str | Unset):
-            direction (list[float] | None | Unset):
+            direction (list[float] | None | Unset): [x, y]; in space [x, y, z], and a torque's axis.
             free_length (float | None | str | Unset):
             magnitude (float | FunctionSpec | None | str | Unset):
             stiffness (float | None | str | Unset):

@@ -13,9 +13,11 @@ from typing import cast
 
 if TYPE_CHECKING:
   from ..models.body_motion import BodyMotion
+  from ..models.body_motion_3 import BodyMotion3
   from ..models.contact_dto import ContactDto
   from ..models.energy_dto import EnergyDto
   from ..models.point_state import PointState
+  from ..models.reaction_3 import Reaction3
   from ..models.reaction_dto import ReactionDto
   from ..models.shaking_dto import ShakingDto
   from ..models.step_dto_energy_contribution_type_0 import StepDtoEnergyContributionType0
@@ -49,9 +51,9 @@ class StepDto:
             energy (EnergyDto | None | Unset):
             energy_contribution (None | StepDtoEnergyContributionType0 | Unset): Quinn's energy-contribution coefficient
                 T_body/T of each moving body (one input).
-            kinematics (list[BodyMotion] | None | Unset):
+            kinematics (list[BodyMotion3] | list[BodyMotion] | None | Unset):
             points (list[PointState] | None | Unset): The points of `track`, where given.
-            reactions (list[ReactionDto] | None | Unset):
+            reactions (list[Reaction3] | list[ReactionDto] | None | Unset):
             reduced_inertia (float | None | Unset): I*(φ), one input only.
             reduced_torque (float | None | Unset): M*(φ) of every load, driver excluded.
             shaking (None | ShakingDto | Unset):
@@ -65,9 +67,9 @@ class StepDto:
     driving: float | list[float] | None | Unset = UNSET
     energy: EnergyDto | None | Unset = UNSET
     energy_contribution: None | StepDtoEnergyContributionType0 | Unset = UNSET
-    kinematics: list[BodyMotion] | None | Unset = UNSET
+    kinematics: list[BodyMotion3] | list[BodyMotion] | None | Unset = UNSET
     points: list[PointState] | None | Unset = UNSET
-    reactions: list[ReactionDto] | None | Unset = UNSET
+    reactions: list[Reaction3] | list[ReactionDto] | None | Unset = UNSET
     reduced_inertia: float | None | Unset = UNSET
     reduced_torque: float | None | Unset = UNSET
     shaking: None | ShakingDto | Unset = UNSET
@@ -79,9 +81,11 @@ class StepDto:
 
     def to_dict(self) -> dict[str, Any]:
         from ..models.body_motion import BodyMotion # noqa: PLC0415
+        from ..models.body_motion_3 import BodyMotion3 # noqa: PLC0415
         from ..models.contact_dto import ContactDto # noqa: PLC0415
         from ..models.energy_dto import EnergyDto # noqa: PLC0415
         from ..models.point_state import PointState # noqa: PLC0415
+        from ..models.reaction_3 import Reaction3 # noqa: PLC0415
         from ..models.reaction_dto import ReactionDto # noqa: PLC0415
         from ..models.shaking_dto import ShakingDto # noqa: PLC0415
         from ..models.step_dto_energy_contribution_type_0 import StepDtoEnergyContributionType0 # noqa: PLC0415
@@ -148,6 +152,13 @@ class StepDto:
                 kinematics.append(kinematics_item)
 
 
+        elif isinstance(self.kinematics, list):
+            kinematics = []
+            for kinematics_item_data in self.kinematics:
+                kinematics_item = kinematics_item_data.to_dict()
+                kinematics.append(kinematics_item)
+
+
         else:
             kinematics = self.kinematics
 
@@ -167,6 +178,13 @@ class StepDto:
         reactions: list[dict[str, Any]] | None | Unset
         if isinstance(self.reactions, Unset):
             reactions = UNSET
+        elif isinstance(self.reactions, list):
+            reactions = []
+            for reactions_item_data in self.reactions:
+                reactions_item = reactions_item_data.to_dict()
+                reactions.append(reactions_item)
+
+
         elif isinstance(self.reactions, list):
             reactions = []
             for reactions_item_data in self.reactions:
@@ -234,9 +252,11 @@ class StepDto:
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
         from ..models.body_motion import BodyMotion # noqa: PLC0415
+        from ..models.body_motion_3 import BodyMotion3 # noqa: PLC0415
         from ..models.contact_dto import ContactDto # noqa: PLC0415
         from ..models.energy_dto import EnergyDto # noqa: PLC0415
         from ..models.point_state import PointState # noqa: PLC0415
+        from ..models.reaction_3 import Reaction3 # noqa: PLC0415
         from ..models.reaction_dto import ReactionDto # noqa: PLC0415
         from ..models.shaking_dto import ShakingDto # noqa: PLC0415
         from ..models.step_dto_energy_contribution_type_0 import StepDtoEnergyContributionType0 # noqa: PLC0415
@@ -344,7 +364,7 @@ class StepDto:
         energy_contribution = _parse_energy_contribution(d.pop("energy_contribution", UNSET))
 
 
-        def _parse_kinematics(data: object) -> list[BodyMotion] | None | Unset:
+        def _parse_kinematics(data: object) -> list[BodyMotion3] | list[BodyMotion] | None | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -352,19 +372,34 @@ class StepDto:
             try:
                 if not isinstance(data, list):
                     raise TypeError()
-                kinematics_type_0 = []
-                _kinematics_type_0 = data
-                for kinematics_type_0_item_data in (_kinematics_type_0):
-                    kinematics_type_0_item = BodyMotion.from_dict(kinematics_type_0_item_data)
+                componentsschemas_kinematics_type_0 = []
+                _componentsschemas_kinematics_type_0 = data
+                for componentsschemas_kinematics_type_0_item_data in (_componentsschemas_kinematics_type_0):
+                    componentsschemas_kinematics_type_0_item = BodyMotion.from_dict(componentsschemas_kinematics_type_0_item_data)
 
 
 
-                    kinematics_type_0.append(kinematics_type_0_item)
+                    componentsschemas_kinematics_type_0.append(componentsschemas_kinematics_type_0_item)
 
-                return kinematics_type_0
+                return componentsschemas_kinematics_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(list[BodyMotion] | None | Unset, data)
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                componentsschemas_kinematics_type_1 = []
+                _componentsschemas_kinematics_type_1 = data
+                for componentsschemas_kinematics_type_1_item_data in (_componentsschemas_kinematics_type_1):
+                    componentsschemas_kinematics_type_1_item = BodyMotion3.from_dict(componentsschemas_kinematics_type_1_item_data)
+
+
+
+                    componentsschemas_kinematics_type_1.append(componentsschemas_kinematics_type_1_item)
+
+                return componentsschemas_kinematics_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[BodyMotion3] | list[BodyMotion] | None | Unset, data)
 
         kinematics = _parse_kinematics(d.pop("kinematics", UNSET))
 
@@ -394,7 +429,7 @@ class StepDto:
         points = _parse_points(d.pop("points", UNSET))
 
 
-        def _parse_reactions(data: object) -> list[ReactionDto] | None | Unset:
+        def _parse_reactions(data: object) -> list[Reaction3] | list[ReactionDto] | None | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -402,19 +437,34 @@ class StepDto:
             try:
                 if not isinstance(data, list):
                     raise TypeError()
-                reactions_type_0 = []
-                _reactions_type_0 = data
-                for reactions_type_0_item_data in (_reactions_type_0):
-                    reactions_type_0_item = ReactionDto.from_dict(reactions_type_0_item_data)
+                componentsschemas_step_reactions_schema_type_0 = []
+                _componentsschemas_step_reactions_schema_type_0 = data
+                for componentsschemas_step_reactions_schema_type_0_item_data in (_componentsschemas_step_reactions_schema_type_0):
+                    componentsschemas_step_reactions_schema_type_0_item = ReactionDto.from_dict(componentsschemas_step_reactions_schema_type_0_item_data)
 
 
 
-                    reactions_type_0.append(reactions_type_0_item)
+                    componentsschemas_step_reactions_schema_type_0.append(componentsschemas_step_reactions_schema_type_0_item)
 
-                return reactions_type_0
+                return componentsschemas_step_reactions_schema_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(list[ReactionDto] | None | Unset, data)
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                componentsschemas_step_reactions_schema_type_1 = []
+                _componentsschemas_step_reactions_schema_type_1 = data
+                for componentsschemas_step_reactions_schema_type_1_item_data in (_componentsschemas_step_reactions_schema_type_1):
+                    componentsschemas_step_reactions_schema_type_1_item = Reaction3.from_dict(componentsschemas_step_reactions_schema_type_1_item_data)
+
+
+
+                    componentsschemas_step_reactions_schema_type_1.append(componentsschemas_step_reactions_schema_type_1_item)
+
+                return componentsschemas_step_reactions_schema_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[Reaction3] | list[ReactionDto] | None | Unset, data)
 
         reactions = _parse_reactions(d.pop("reactions", UNSET))
 

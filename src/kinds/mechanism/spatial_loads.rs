@@ -1,0 +1,144 @@
+//! The loads of a spatial mechanism: a force at a point along a direction
+//! [x, y, z], a torque about an axis (its `direction`), each of a Function
+//! of the first input's coordinate φ; springs and dampers between two
+//! bodies' points. Each is read with its own fields only, every error at
+//! its pointer.
+
+use super::spatial::SpatialConverted;
+use super::{LoadDto, LoadType, MAX_LOADS, MechanismDto, PointRef, body_id};
+use crate::engine::function::{Function, Side};
+use crate::engine::spatial::{BodyId, Load};
+use crate::i18n::Msg;
+use crate::kind::quantity::Errors;
+use crate::units::Dim;
+use nalgebra::Vector3;
+
+/// A load as read: its Function evaluated at each step's φ.
+pub enum SpatialLoad {
+    Force { body: BodyId, at: Vector3<f64>, direction: Vector3<f64>, magnitude: Function },
+    Torque { body: BodyId, axis: Vector3<f64>, value: Function },
+    Fixed(Load),
+}
+
+impl SpatialLoad {
+    /// The engine's load at φ.
+    pub fn at(&self, phi: f64) -> Load {
+        match self {
+            Self::Force { body, at, direction, magnitude } => {
+                Load::Force { body: *body, at: *at, force: direction * magnitude.eval(phi, Side::Right) }
+            }
+            Self::Torque { body, axis, value } => {
+                Load::Torque { body: *body, torque: axis * value.eval(phi, Side::Right) }
+            }
+            Self::Fixed(load) => load.clone(),
+        }
+    }
+}
+
+/// Reads `list` (pointers under `at`) for the converted mechanism `c`.
+pub fn spatial_loads(
+    e: &mut Errors,
+    list: &[LoadDto],
+    (dto, c): (&MechanismDto, &SpatialConverted),
+    period: f64,
+    at: &str,
+    variables: &[&str],
+) -> Vec<SpatialLoad> {
+    if list.len() > MAX_LOADS {
+        e.say(at, Msg::new("load-too-many").arg("max", MAX_LOADS));
+        return Vec::new();
+    }
+    let read =
+        |e: &mut Errors, (k, l): (usize, &LoadDto)| load(e, l, (dto, c), period, &format!("{at}/{k}"), variables);
+    list.iter().enumerate().filter_map(|item| read(e, item)).collect()
+}
+
+fn load(
+    e: &mut Errors,
+    l: &LoadDto,
+    (dto, c): (&MechanismDto, &SpatialConverted),
+    period: f64,
+    at: &str,
+    variables: &[&str],
+) -> Option<SpatialLoad> {
+    if !fields(e, l, at) {
+        return None;
+    }
+    let names = &c.body_names;
+    let moving = |e: &mut Errors, name: &str| match body_id(names, name) {
+        Some(0) => e.refuse(&format!("{at}/body"), Msg::new("load-ground")),
+        Some(b) => Some(b),
+        None => e.refuse(&format!("{at}/body"), Msg::new("mechanism-unknown-body").arg("name", name)),
+    };
+    let direction = |e: &mut Errors| super::spatial::unit(e, l.direction.as_deref()?, &format!("{at}/direction"));
+    match l.kind {
+        LoadType::Force => {
+            let body = moving(e, l.body.as_deref()?);
+            let point = dto.point_in_space(e, l.at.as_ref()?, &format!("{at}/at"));
+            let direction = direction(e);
+            let magnitude =
+                e.function_of(l.magnitude.as_ref()?, Dim::FORCE, period, &format!("{at}/magnitude"), variables);
+            Some(SpatialLoad::Force { body: body?, at: point?, direction: direction?, magnitude: magnitude? })
+        }
+        LoadType::Torque => {
+            let body = moving(e, l.body.as_deref()?);
+            let axis = direction(e);
+            let value = e.function_of(l.value.as_ref()?, Dim::TORQUE, period, &format!("{at}/value"), variables);
+            Some(SpatialLoad::Torque { body: body?, axis: axis?, value: value? })
+        }
+        LoadType::Spring | LoadType::Damper => {
+            let end = |e: &mut Errors, side: &str, v: &(String, PointRef)| {
+                let unknown = Msg::new("mechanism-unknown-body").arg("name", &v.0);
+                let b = body_id(names, &v.0).or_else(|| e.refuse(&format!("{at}/{side}/0"), unknown));
+                let p = dto.point_in_space(e, &v.1, &format!("{at}/{side}/1"));
+                Some((b?, p?))
+            };
+            let (a, b) = (end(e, "a", l.a.as_ref()?), end(e, "b", l.b.as_ref()?));
+            let (k, length, c) = match l.kind {
+                LoadType::Spring => {
+                    let k = e.quantity(l.stiffness.as_ref()?, Dim::STIFFNESS, &format!("{at}/stiffness"));
+                    let l0 = e.quantity(l.free_length.as_ref()?, Dim::LENGTH, &format!("{at}/free_length"));
+                    (k?, l0?, 0.0)
+                }
+                _ => (0.0, 0.0, e.quantity(l.coefficient.as_ref()?, Dim::DAMPING, &format!("{at}/coefficient"))?),
+            };
+            let ((ba, pa), (bb, pb)) = (a?, b?);
+            Some(SpatialLoad::Fixed(Load::Spring { bodies: [ba, bb], at: [pa, pb], k, length, c }))
+        }
+    }
+}
+
+/// Whether the load has exactly the fields of its type in space (a
+/// torque's `direction` is its axis); each missing or extra one said.
+fn fields(e: &mut Errors, l: &LoadDto, at: &str) -> bool {
+    let present = [
+        ("body", l.body.is_some()),
+        ("at", l.at.is_some()),
+        ("direction", l.direction.is_some()),
+        ("magnitude", l.magnitude.is_some()),
+        ("value", l.value.is_some()),
+        ("a", l.a.is_some()),
+        ("b", l.b.is_some()),
+        ("stiffness", l.stiffness.is_some()),
+        ("free_length", l.free_length.is_some()),
+        ("coefficient", l.coefficient.is_some()),
+    ];
+    let wanted: &[&str] = match l.kind {
+        LoadType::Force => &["body", "at", "direction", "magnitude"],
+        LoadType::Torque => &["body", "direction", "value"],
+        LoadType::Spring => &["a", "b", "stiffness", "free_length"],
+        LoadType::Damper => &["a", "b", "coefficient"],
+    };
+    let before = e.list.len();
+    for (name, given) in present {
+        match (wanted.contains(&name), given) {
+            (true, false) => {
+                let kind = format!("{:?}", l.kind).to_lowercase();
+                e.say(at, Msg::new("load-needs").arg("type", kind).arg("field", name))
+            }
+            (false, true) => e.say(&format!("{at}/{name}"), Msg::new("load-not-this-type")),
+            _ => {}
+        }
+    }
+    e.list.len() == before
+}
