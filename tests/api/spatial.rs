@@ -85,6 +85,11 @@ async fn mobility_from_the_drawing_beside_the_count() {
         {"name": "B", "type": "universal", "bodies": ["slider", "rod"], "at": "B", "axes": [[0, 1, 0], [0.2, 0, -0.9]]},
         {"name": "guide", "type": "prismatic", "bodies": ["ground", "slider"], "at": "B", "axis": [1, 0, 0]}
     ]});
+    // Nothing joined: a free body keeps its six freedoms, nothing at all has none (no SVD of an empty Φ_q).
+    let free = json!({"mechanism": {"space": "spatial", "bodies": [{"name": "b"}], "joints": []}});
+    assert_eq!(mobility(&app, &free).await["dof"], 6);
+    let empty = json!({"mechanism": {"space": "spatial", "bodies": [], "joints": []}});
+    assert_eq!(mobility(&app, &empty).await["dof"], 0);
     let r = mobility(&app, &json!({"mechanism": slider_crank})).await;
     assert_eq!((r["dof"].as_i64(), r["grubler"]["mobility"].as_i64()), (Some(1), Some(1)));
     assert_eq!((r["redundant_constraints"].as_i64(), r["candidate_inputs"].clone()), (Some(0), json!(["O"])));

@@ -67,6 +67,10 @@ impl Scaled {
 
     /// Its singular values, largest first; none converging (numbers out of range) an error.
     pub fn singular_values(&self) -> Result<Vec<f64>, EngineError> {
+        // No rows (no joints) or no columns (no bodies): no singular value, rank 0.
+        if self.jac.is_empty() {
+            return Ok(Vec::new());
+        }
         let finite = self.jac.iter().all(|v| v.is_finite());
         let svd = finite.then(|| self.jac.clone().try_svd(false, false, SVD_EPSILON, SVD_ITERATIONS)).flatten();
         Ok(svd.ok_or(EngineError::NotFiniteResult)?.singular_values.iter().copied().collect())
@@ -95,6 +99,9 @@ pub const SVD_EPSILON: f64 = 5.0 * f64::EPSILON;
 /// The least-squares solution of least norm of a·x = b (zeros where the SVD fails).
 fn least_norm(a: DMatrix<f64>, b: &DVector<f64>) -> DVector<f64> {
     let cols = a.ncols();
+    if a.is_empty() {
+        return DVector::zeros(cols);
+    }
     let solved = a.try_svd(true, true, SVD_EPSILON, SVD_ITERATIONS).and_then(|svd| {
         let tolerance = RANK_TOLERANCE * svd.singular_values.max();
         svd.solve(b, tolerance).ok()

@@ -57,6 +57,9 @@ pub fn mobility(m: &Mechanism, pose: &Pose) -> Result<Mobility, EngineError> {
 /// whole null space from one SVD.
 pub fn dependent_rows(scaled: &Scaled) -> Vec<bool> {
     let (rows, cols) = scaled.jac.shape();
+    if rows == 0 {
+        return Vec::new();
+    }
     let mut padded = DMatrix::zeros(cols.max(rows), rows);
     padded.view_mut((0, 0), (cols, rows)).copy_from(&scaled.jac.transpose());
     let Some(svd) = padded.try_svd(false, true, SVD_EPSILON, SVD_ITERATIONS) else { return vec![false; rows] };
