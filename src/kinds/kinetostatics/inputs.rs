@@ -25,14 +25,7 @@ pub fn positions(
     let mut drivers = Vec::new();
     let mut ranges = Vec::new();
     let mut linear = Vec::new();
-    let steps = inputs.first().and_then(|i| i.steps).unwrap_or(DEFAULT_STEPS);
-    if inputs.is_empty() || inputs.len() > 10 {
-        e.say("/input", Msg::new("input-count"));
-    }
-    let max = e.limits.steps;
-    if steps == 0 || steps > max {
-        e.say(if many { "/input/0/steps" } else { "/input/steps" }, Msg::new("input-steps").arg("max", max));
-    }
+    let (steps, max) = counted(e, inputs, many);
     if let Some(a) = actuators.filter(|a| a.len() != inputs.len()) {
         e.say("/actuators", Msg::new("input-actuators").count("inputs", inputs.len()).count("actuators", a.len()));
     }
@@ -146,14 +139,7 @@ pub fn spatial(
     inputs: &[InputDto],
     many: bool,
 ) -> (Vec<spatial::Input>, Vec<Vec<[f64; 3]>>, Vec<bool>) {
-    let steps = inputs.first().and_then(|i| i.steps).unwrap_or(DEFAULT_STEPS);
-    if inputs.is_empty() || inputs.len() > 10 {
-        e.say("/input", Msg::new("input-count"));
-    }
-    let max = e.limits.steps;
-    if steps == 0 || steps > max {
-        e.say(if many { "/input/0/steps" } else { "/input/steps" }, Msg::new("input-steps").arg("max", max));
-    }
+    let (steps, max) = counted(e, inputs, many);
     let (mut chosen, mut ranges, mut linear) = (Vec::new(), Vec::new(), Vec::new());
     for (k, input) in inputs.iter().enumerate() {
         let at = if many { format!("/input/{k}") } else { "/input".to_string() };
@@ -203,4 +189,17 @@ fn joint_coordinate(e: &mut Errors, m: &spatial::Mechanism, input: &InputDto, at
         (_, None) => return e.refuse(&format!("{at}/joint"), Msg::new("input-spatial-coordinate")),
     };
     Some(spatial::Input { joint, coordinate })
+}
+
+/// The steps the inputs share and the most allowed, each count checked.
+fn counted(e: &mut Errors, inputs: &[InputDto], many: bool) -> (usize, usize) {
+    let steps = inputs.first().and_then(|i| i.steps).unwrap_or(DEFAULT_STEPS);
+    if inputs.is_empty() || inputs.len() > 10 {
+        e.say("/input", Msg::new("input-count"));
+    }
+    let max = e.limits.steps;
+    if steps == 0 || steps > max {
+        e.say(if many { "/input/0/steps" } else { "/input/steps" }, Msg::new("input-steps").arg("max", max));
+    }
+    (steps, max)
 }

@@ -103,36 +103,13 @@ fn load(
     at: &str,
     variables: &[&str],
 ) -> Option<Load> {
-    let present = [
-        ("body", l.body.is_some()),
-        ("at", l.at.is_some()),
-        ("direction", l.direction.is_some()),
-        ("magnitude", l.magnitude.is_some()),
-        ("value", l.value.is_some()),
-        ("a", l.a.is_some()),
-        ("b", l.b.is_some()),
-        ("stiffness", l.stiffness.is_some()),
-        ("free_length", l.free_length.is_some()),
-        ("coefficient", l.coefficient.is_some()),
-    ];
-    let fields: &[&str] = match l.kind {
+    let wanted: &[&str] = match l.kind {
         LoadType::Force => &["body", "at", "direction", "magnitude"],
         LoadType::Torque => &["body", "value"],
         LoadType::Spring => &["a", "b", "stiffness", "free_length"],
         LoadType::Damper => &["a", "b", "coefficient"],
     };
-    let before = e.list.len();
-    for (name, given) in present {
-        match (fields.contains(&name), given) {
-            (true, false) => {
-                let kind = format!("{:?}", l.kind).to_lowercase();
-                e.say(at, Msg::new("load-needs").arg("type", kind).arg("field", name))
-            }
-            (false, true) => e.say(&format!("{at}/{name}"), Msg::new("load-not-this-type")),
-            _ => {}
-        }
-    }
-    if e.list.len() > before {
+    if !has_fields(e, l, wanted, at) {
         return None;
     }
     let ends = |e: &mut Errors, side: &str, v: &(String, PointRef)| {
@@ -172,4 +149,33 @@ fn load(
             Some(Load::Damper { a: a?, b: b?, coefficient: c? })
         }
     }
+}
+
+/// Whether the load has exactly the `wanted` fields; each missing one said
+/// at the load, each extra one at its own pointer.
+pub fn has_fields(e: &mut Errors, l: &LoadDto, wanted: &[&str], at: &str) -> bool {
+    let present = [
+        ("body", l.body.is_some()),
+        ("at", l.at.is_some()),
+        ("direction", l.direction.is_some()),
+        ("magnitude", l.magnitude.is_some()),
+        ("value", l.value.is_some()),
+        ("a", l.a.is_some()),
+        ("b", l.b.is_some()),
+        ("stiffness", l.stiffness.is_some()),
+        ("free_length", l.free_length.is_some()),
+        ("coefficient", l.coefficient.is_some()),
+    ];
+    let before = e.list.len();
+    for (name, given) in present {
+        match (wanted.contains(&name), given) {
+            (true, false) => {
+                let kind = format!("{:?}", l.kind).to_lowercase();
+                e.say(at, Msg::new("load-needs").arg("type", kind).arg("field", name))
+            }
+            (false, true) => e.say(&format!("{at}/{name}"), Msg::new("load-not-this-type")),
+            _ => {}
+        }
+    }
+    e.list.len() == before
 }

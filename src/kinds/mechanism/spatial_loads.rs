@@ -4,6 +4,7 @@
 //! bodies' points. Each is read with its own fields only, every error at
 //! its pointer.
 
+use super::loads::has_fields;
 use super::spatial::SpatialConverted;
 use super::{LoadDto, LoadType, MAX_LOADS, MechanismDto, PointRef, body_id};
 use crate::engine::function::{Function, Side};
@@ -109,36 +110,13 @@ fn load(
 }
 
 /// Whether the load has exactly the fields of its type in space (a
-/// torque's `direction` is its axis); each missing or extra one said.
+/// torque's `direction` is its axis).
 fn fields(e: &mut Errors, l: &LoadDto, at: &str) -> bool {
-    let present = [
-        ("body", l.body.is_some()),
-        ("at", l.at.is_some()),
-        ("direction", l.direction.is_some()),
-        ("magnitude", l.magnitude.is_some()),
-        ("value", l.value.is_some()),
-        ("a", l.a.is_some()),
-        ("b", l.b.is_some()),
-        ("stiffness", l.stiffness.is_some()),
-        ("free_length", l.free_length.is_some()),
-        ("coefficient", l.coefficient.is_some()),
-    ];
     let wanted: &[&str] = match l.kind {
         LoadType::Force => &["body", "at", "direction", "magnitude"],
         LoadType::Torque => &["body", "direction", "value"],
         LoadType::Spring => &["a", "b", "stiffness", "free_length"],
         LoadType::Damper => &["a", "b", "coefficient"],
     };
-    let before = e.list.len();
-    for (name, given) in present {
-        match (wanted.contains(&name), given) {
-            (true, false) => {
-                let kind = format!("{:?}", l.kind).to_lowercase();
-                e.say(at, Msg::new("load-needs").arg("type", kind).arg("field", name))
-            }
-            (false, true) => e.say(&format!("{at}/{name}"), Msg::new("load-not-this-type")),
-            _ => {}
-        }
-    }
-    e.list.len() == before
+    has_fields(e, l, wanted, at)
 }
