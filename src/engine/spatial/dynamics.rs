@@ -78,6 +78,9 @@ struct Equations<'a> {
     p: &'a SpatialProblem,
     /// The mechanism without its inputs (they are free).
     joints: Mechanism,
+    /// The joints and the first input alone: its row gives φ̇ (built once,
+    /// not at every evaluation).
+    first: Mechanism,
     /// The joint rows kept: independent at the start.
     kept: Vec<usize>,
     n: usize,
@@ -144,8 +147,7 @@ impl Equations<'_> {
 
     /// The first input's speed at (pose, v): its row's gradient times v.
     fn speed_at(&self, pose: &Pose, v: &DVector<f64>) -> f64 {
-        let first = Mechanism { inputs: self.p.mechanism.inputs[..1].to_vec(), ..self.joints.clone() };
-        let rows = evaluate(&first, pose, None, &[[0.0; 3]]);
+        let rows = evaluate(&self.first, pose, None, &[[0.0; 3]]);
         (rows.jac.row(rows.phi.len() - 1) * v)[0]
     }
 }
@@ -274,7 +276,8 @@ pub fn solve(p: &SpatialProblem) -> Result<SpatialSolution, DynamicsError> {
         return Err(initial(Start::Dof { dof, inputs: m.inputs.len() }));
     }
     let n = m.n();
-    let dae = Equations { p, joints, kept: kept.clone(), n, size };
+    let first = Mechanism { inputs: m.inputs[..1].to_vec(), ..joints.clone() };
+    let dae = Equations { p, joints, first, kept: kept.clone(), n, size };
     if dae.accelerations(&start.pose, &start.v).is_none() {
         return Err(initial(Start::MovesNoMass));
     }

@@ -83,8 +83,7 @@ fn read(r: &KinetostaticsRequest, e: &mut Errors) -> Option<Problem> {
     }
     let served = [OutputKind::Driving, OutputKind::Reactions, OutputKind::Kinematics, OutputKind::Reduced];
     let outputs = r.outputs.clone().unwrap_or_else(|| served.to_vec());
-    for (k, o) in outputs.iter().enumerate().filter(|(_, o)| !served.contains(o)) {
-        let _ = o;
+    for (k, _) in outputs.iter().enumerate().filter(|(_, o)| !served.contains(o)) {
         e.say(&format!("/outputs/{k}"), Msg::new("kinetostatics-not-spatial"));
     }
     let (list, many) = match &r.input {
