@@ -33,7 +33,7 @@ mod stiff;
 
 use mechdyn::kind::Kind;
 use mechdyn::kind::Limits;
-use mechdyn::kinds::dynamics::{Dynamics, DynamicsRequest, DynamicsResult};
+use mechdyn::kinds::dynamics::{Dynamics, DynamicsRequest, DynamicsResult, MachineResult};
 use plotters::prelude::*;
 use serde_json::{Value, json};
 use std::fmt::Write as _;
@@ -109,7 +109,9 @@ fn a03(tolerance: f64, integrator: &str) -> Point {
     request["integrator"] = json!(integrator);
     let (seconds, r) = timed(&request, 5);
     let beta0 = -0.061_713_890_014_276_45;
-    let beta = r.machine.as_ref().expect("machine form").samples[1].inputs[0].angle + beta0;
+    let beta = r.machine.as_ref().and_then(MachineResult::planar).expect("planar machine form").samples[1].inputs[0]
+        .angle
+        + beta0;
     Point {
         series: format!("mechdyn A03 (mechanism, {integrator})"),
         tolerance,

@@ -11,6 +11,7 @@ pub mod elliptic;
 use crate::gauge::Reading;
 use crate::{INTEGRATORS, Point, fixture, timed};
 use elliptic::{complete_k, sn};
+use mechdyn::kinds::dynamics::MachineResult;
 use serde_json::json;
 use std::f64::consts::PI;
 
@@ -36,7 +37,8 @@ fn a01(tolerance: f64, integrator: &str, energy: bool) -> Point {
     let error = r
         .machine
         .as_ref()
-        .expect("machine form")
+        .and_then(MachineResult::planar)
+        .expect("planar machine form")
         .samples
         .iter()
         .map(|s| {

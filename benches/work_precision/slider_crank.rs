@@ -6,6 +6,7 @@
 //! integrators. Exudyn: its default implicit generalized-alpha at fixed steps.
 
 use crate::{Point, TOLERANCES, fixture, run_peer, time_at, timed};
+use mechdyn::kinds::dynamics::MachineResult;
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 
@@ -15,7 +16,16 @@ fn mechdyn(tolerance: f64) -> Point {
     let mut request = fixture("requests/slider_crank_startup.json");
     request["tolerance"] = json!(tolerance);
     let (seconds, r) = timed(&request, 5);
-    let phi = r.machine.as_ref().expect("machine form").samples.last().expect("a sample").inputs[0].angle;
+    let phi = r
+        .machine
+        .as_ref()
+        .and_then(MachineResult::planar)
+        .expect("planar machine form")
+        .samples
+        .last()
+        .expect("a sample")
+        .inputs[0]
+        .angle;
     Point {
         series: "mechdyn slider-crank".into(),
         tolerance,

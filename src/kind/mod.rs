@@ -360,6 +360,20 @@ pub fn list(v: &Value, n: usize, fields: &[&str]) -> Vec<String> {
     }
 }
 
+/// Columns of a list's items: where in the item (a pointer), and the column's name.
+pub type Columns = &'static [(&'static str, &'static str)];
+
+/// The cells at `fields` (pointers) of each of `n` items of a list (empty where the list is null).
+pub fn items(v: &Value, n: usize, fields: Columns) -> Vec<String> {
+    match v.as_array() {
+        Some(list) => list
+            .iter()
+            .flat_map(|item| fields.iter().map(|(at, _)| item.pointer(at).map(cell).unwrap_or_default()))
+            .collect(),
+        None => vec![String::new(); n * fields.len()],
+    }
+}
+
 /// An engine error as a field error. Engine labels are JSON pointers; errors
 /// without a field of their own point at `fallback`.
 pub fn engine_error(e: crate::engine::EngineError, fallback: &str) -> FieldError {

@@ -83,6 +83,7 @@ mod small_disk;
 mod spanish;
 mod spanish_results;
 mod spatial;
+mod spatial_dynamics;
 mod stiff;
 mod storage;
 mod student;

@@ -98,7 +98,7 @@ async fn mobility_from_the_drawing_beside_the_count() {
 /// Every field a spatial mechanism reads wrong is refused at its pointer,
 /// in Spanish with `lang=es`; a planar mechanism given a point in space or
 /// a spatial pair says how to ask for space; a kind that does not take a
-/// spatial mechanism yet (dynamics) says so at its `space`.
+/// spatial mechanism yet (a flywheel's machine) says so at its `space`.
 #[tokio::test]
 async fn spatial_errors_point_at_the_field() {
     let app = TestApp::new().await;
@@ -145,8 +145,9 @@ async fn spatial_errors_point_at_the_field() {
         "loads": [{"type": "torque", "body": "output", "value": 1}]});
     let got = app.pointers("/v1/kinetostatics", &statics).await;
     assert_eq!(got, ["/track", "/outputs/1", "/input/0", "/input/1/point", "/input/1", "/loads/0"]);
-    let run = json!({"machine": {"mechanism": bricard(), "input": {"joint": "J1"}}, "duration": 1});
-    let got = app.pointers("/v1/dynamics", &run).await;
+    let flywheel = json!({"mean_speed": "60 rpm", "irregularity": 0.04, "torques": [{"name": "motor", "balance": true}],
+        "machine": {"mechanism": bricard(), "input": {"joint": "J1"}}});
+    let got = app.pointers("/v1/flywheel", &flywheel).await;
     assert!(got.contains(&"/machine/mechanism/space".to_string()), "{got:?}");
 }
 

@@ -15,21 +15,36 @@
 //! kept already span it. After every step the quaternions are made unit
 //! and the state is projected back onto Φ = 0 and Φ_q·v = 0 (least-norm
 //! Newton corrections), so the drift stays at the step's local error.
+//! At each sample the accelerations are solved once more, every input's
+//! coordinate, speed and acceleration read from its row (φ̈ = Φ_q,φ·a − γ_φ),
+//! and, where asked, every joint's reaction from the kinetostatics of
+//! that motion.
 
 use super::constraints::{Rows, coordinate, evaluate};
-use super::kinematics::{Scaled, assemble, motion};
-use super::kinetostatics::applied;
-use super::model::{Load, Mechanism, Pose};
+use super::energy::energy;
+use super::kinematics::{Motion, Scaled, assemble, motion};
+use super::kinetostatics::{Actions, applied, inverse_dynamics};
+use super::model::{Load, LoadLaw, Mechanism, Pose};
 use crate::engine::Deadline;
-use crate::engine::dynamics::{DynamicsError, End, Integrator, Model, Settings, Start, energy_residual, run};
+use crate::engine::dynamics::{
+    DynamicsError, DynamicsSolution, End, Failure, Integrator, Model, Sample, Settings, Start, energy_residual, run,
+};
+use crate::engine::kinetostatics::Energy;
 use nalgebra::{DMatrix, DVector, Quaternion, UnitQuaternion, Vector3, Vector4};
+use std::borrow::Cow;
 
 /// A validated spatial dynamics problem in SI.
 #[derive(Clone, Debug)]
 pub struct SpatialProblem {
     /// Its inputs name the free coordinates that set the start and report the motion.
     pub mechanism: Mechanism,
-    pub loads: Vec<Load>,
+    /// Their Functions read φ (the first input's coordinate reduced to
+    /// `period`), ω (its speed) and t.
+    pub loads: Vec<LoadLaw>,
+    pub period: f64,
+    /// Each input's coordinate as drawn: the coordinates read and
+    /// reported are it plus the change from the drawing.
+    pub reference: Vec<f64>,
     /// Coordinate and speed of every input at t = 0.
     pub initial: Vec<[f64; 2]>,
     pub end: End,
@@ -37,38 +52,39 @@ pub struct SpatialProblem {
     pub integrator: Option<Integrator>,
     pub samples: usize,
     pub deadline: Deadline,
+    /// Solve every joint's reaction at the samples.
+    pub reactions: bool,
 }
 
-/// The mechanism at one instant.
-#[derive(Clone, Debug, PartialEq)]
+/// The mechanism at one sample.
+#[derive(Clone, Debug)]
 pub struct SpatialSample {
-    pub t: f64,
-    /// The first input's coordinate and speed.
-    pub input: [f64; 2],
     pub pose: Pose,
     /// ṙ, ω of every body.
     pub v: DVector<f64>,
-    pub kinetic: f64,
-    /// Of gravity and the springs.
-    pub potential: f64,
+    /// r̈, α of every body.
+    pub a: DVector<f64>,
+    /// Every input's [coordinate, speed, acceleration]: the first's
+    /// coordinate integrated (it runs on past ±π), the others' as the pose
+    /// has them (an angle within ±π).
+    pub inputs: Vec<[f64; 3]>,
+    pub energy: Energy,
     /// The work of every applied action since the start (integrated).
     pub work: f64,
-    /// (W − ΔT)/max(|W|, |ΔT|, T₀, T, T_peak) from the start.
-    pub energy_residual: f64,
+    /// Largest |Φ| of the joints, m (an angle's row times the drawing's size).
+    pub constraint_residual: f64,
+    /// The reactions, where asked (no efforts: the inputs are free).
+    pub actions: Option<Actions>,
 }
 
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub struct SpatialSolution {
-    pub samples: Vec<SpatialSample>,
-    pub steps: usize,
-    pub evaluations: usize,
-    pub integrator: Integrator,
-    pub stiff_at: Option<f64>,
+    /// The first input's motion, the events and the run's counts.
+    pub solution: DynamicsSolution,
+    /// The mechanism at each of `solution.samples`.
+    pub details: Vec<SpatialSample>,
     /// Largest |Φ| (m) a projection removed.
     pub drift: f64,
-    /// Σ of the steps' local error estimates of the orientation, rad: a
-    /// first-order estimate of the global error.
-    pub estimated_error: f64,
     /// Rows left out as redundant at the start.
     pub redundant_rows: usize,
 }
@@ -78,13 +94,15 @@ struct Equations<'a> {
     p: &'a SpatialProblem,
     /// The mechanism without its inputs (they are free).
     joints: Mechanism,
-    /// The joints and the first input alone: its row gives φ̇ (built once,
-    /// not at every evaluation).
-    first: Mechanism,
+    /// The joints and every input: their rows give the inputs' rates
+    /// (built once, not at every evaluation).
+    inputs: Mechanism,
     /// The joint rows kept: independent at the start.
     kept: Vec<usize>,
     n: usize,
     size: f64,
+    /// The loads, where none varies.
+    fixed: Option<Vec<Load>>,
 }
 
 impl Equations<'_> {
@@ -100,8 +118,18 @@ impl Equations<'_> {
         Pose { r, p }
     }
 
-    fn velocities<'y>(&self, y: &'y [f64]) -> &'y [f64] {
-        &y[7 * self.n..13 * self.n]
+    fn velocities(&self, y: &[f64]) -> DVector<f64> {
+        DVector::from_column_slice(&y[7 * self.n..13 * self.n])
+    }
+
+    /// The loads at (t, y).
+    fn loads(&self, t: f64, y: &[f64], pose: &Pose, v: &DVector<f64>) -> Cow<'_, [Load]> {
+        if let Some(fixed) = &self.fixed {
+            return Cow::Borrowed(fixed);
+        }
+        let phi = y[13 * self.n].rem_euclid(self.p.period);
+        let omega = if self.p.loads.iter().any(LoadLaw::uses_state) { self.speed_at(pose, v) } else { 0.0 };
+        Cow::Owned(self.p.loads.iter().map(|l| l.at(phi, [omega, t])).collect())
     }
 
     /// The kept rows of Φ at `pose` (with γ at `v`).
@@ -119,10 +147,10 @@ impl Equations<'_> {
 
     /// (a, Q·v): the accelerations and the applied actions' power; None
     /// where the equations are singular.
-    fn accelerations(&self, pose: &Pose, v: &DVector<f64>) -> Option<(DVector<f64>, f64)> {
+    fn accelerations(&self, pose: &Pose, v: &DVector<f64>, loads: &[Load]) -> Option<(DVector<f64>, f64)> {
         let (n, m) = (6 * self.n, self.kept.len());
         let rows = self.rows(pose, Some(v));
-        let q = applied(&self.joints, &self.p.loads, pose, v);
+        let q = applied(&self.joints, loads, pose, v);
         let mut k = DMatrix::zeros(n + m, n + m);
         let mut rhs = DVector::zeros(n + m);
         for (b, body) in self.joints.bodies.iter().enumerate() {
@@ -147,17 +175,33 @@ impl Equations<'_> {
 
     /// The first input's speed at (pose, v): its row's gradient times v.
     fn speed_at(&self, pose: &Pose, v: &DVector<f64>) -> f64 {
-        let rows = evaluate(&self.first, pose, None, &[[0.0; 3]]);
-        (rows.jac.row(rows.phi.len() - 1) * v)[0]
+        let rows = evaluate(&self.inputs, pose, None, &vec![[0.0; 3]; self.inputs.inputs.len()]);
+        (rows.jac.row(self.joints.joint_rows()) * v)[0]
+    }
+
+    /// Every input's [coordinate, speed, acceleration] at y with (v, a).
+    fn inputs_at(&self, y: &[f64], pose: &Pose, v: &DVector<f64>, a: &DVector<f64>) -> Vec<[f64; 3]> {
+        let list = &self.inputs.inputs;
+        let rows = evaluate(&self.inputs, pose, Some(v), &vec![[0.0; 3]; list.len()]);
+        let first = self.joints.joint_rows();
+        let read = |(k, input): (usize, &super::model::Input)| {
+            let row = rows.jac.row(first + k);
+            let joint = &self.joints.joints[input.joint];
+            let now = || self.p.reference[k] + coordinate(&self.joints, pose, joint, input.coordinate);
+            let x = if k == 0 { y[13 * self.n] } else { now() };
+            [x, (row * v)[0], (row * a)[0] - rows.gamma[first + k]]
+        };
+        list.iter().enumerate().map(read).collect()
     }
 }
 
 impl Model for Equations<'_> {
-    fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
+    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
         let n = self.n;
         let pose = self.pose(y);
-        let v = DVector::from_column_slice(self.velocities(y));
-        let Some((a, power)) = self.accelerations(&pose, &v) else { return dy.fill(f64::NAN) };
+        let v = self.velocities(y);
+        let loads = self.loads(t, y, &pose, &v);
+        let Some((a, power)) = self.accelerations(&pose, &v, &loads) else { return dy.fill(f64::NAN) };
         for b in 0..n {
             dy[3 * b..3 * b + 3].copy_from_slice(&y[7 * n + 6 * b..][..3]);
             let omega = Quaternion::from_imag(Vector3::from(v.fixed_rows::<3>(6 * b + 3)));
@@ -174,7 +218,7 @@ impl Model for Equations<'_> {
     }
 
     fn speed(&self, y: &[f64]) -> f64 {
-        self.speed_at(&self.pose(y), &DVector::from_column_slice(self.velocities(y)))
+        self.speed_at(&self.pose(y), &self.velocities(y))
     }
 
     /// Unit quaternions, then Φ = 0 and Φ_q·v = 0 by least-norm corrections.
@@ -184,18 +228,15 @@ impl Model for Equations<'_> {
         let mut removed = 0.0f64;
         for _ in 0..3 {
             let rows = self.rows(&pose, None);
-            let scaled = Scaled::new(&rows, rows.phi.len(), self.size);
-            // |Φ| as a length: a cosine's row times the drawing's size.
-            let scale = |k: usize| if rows.length[k] { 1.0 } else { self.size };
-            let gap = (0..rows.phi.len()).map(|k| rows.phi[k].abs() * scale(k)).fold(0.0, f64::max);
+            let gap = self.gap(&rows);
             removed = removed.max(gap);
             if gap < 1e-14 * self.size {
                 break;
             }
-            pose.apply(scaled.solve(&-&rows.phi).0.as_slice());
+            pose.apply(Scaled::new(&rows, rows.phi.len(), self.size).solve(&-&rows.phi).0.as_slice());
         }
         let rows = self.rows(&pose, None);
-        let v = DVector::from_column_slice(self.velocities(y));
+        let v = self.velocities(y);
         let (dv, _) = Scaled::new(&rows, rows.phi.len(), self.size).solve(&(&rows.jac * &v));
         let v = v - dv;
         for b in 0..n {
@@ -204,10 +245,43 @@ impl Model for Equations<'_> {
         }
         y[7 * n..13 * n].copy_from_slice(v.as_slice());
         let input = &self.p.mechanism.inputs[0];
-        let now = coordinate(&self.joints, &pose, &self.joints.joints[input.joint], input.coordinate);
+        let now =
+            self.p.reference[0] + coordinate(&self.joints, &pose, &self.joints.joints[input.joint], input.coordinate);
         let phi = &mut y[13 * n];
         *phi += (now - *phi + std::f64::consts::PI).rem_euclid(2.0 * std::f64::consts::PI) - std::f64::consts::PI;
         removed
+    }
+}
+
+impl Equations<'_> {
+    /// |Φ| as a length: a cosine's row times the drawing's size.
+    fn gap(&self, rows: &Rows) -> f64 {
+        let scale = |k: usize| if rows.length[k] { 1.0 } else { self.size };
+        (0..rows.phi.len()).map(|k| rows.phi[k].abs() * scale(k)).fold(0.0, f64::max)
+    }
+
+    /// The mechanism at a sample (t, y): its motion, energies and reactions.
+    fn detail(&self, t: f64, y: &[f64]) -> Result<SpatialSample, DynamicsError> {
+        let (pose, v) = (self.pose(y), self.velocities(y));
+        let loads = self.loads(t, y, &pose, &v);
+        let singular = DynamicsError::Integration { t, reason: Failure::SingularMotion };
+        let (a, _) = self.accelerations(&pose, &v, &loads).ok_or(singular)?;
+        let rows = evaluate(&self.joints, &pose, Some(&v), &[]);
+        let constraint_residual = self.gap(&rows);
+        let actions = self.p.reactions.then(|| {
+            let now = Motion { pose: pose.clone(), v: v.clone(), a: a.clone(), rows, condition: 0.0 };
+            inverse_dynamics(&self.joints, &loads, &now)
+        });
+        Ok(SpatialSample {
+            inputs: self.inputs_at(y, &pose, &v, &a),
+            energy: energy(&self.joints, &loads, &pose, &v),
+            work: y[13 * self.n + 1],
+            constraint_residual,
+            actions,
+            pose,
+            v,
+            a,
+        })
     }
 }
 
@@ -232,38 +306,11 @@ fn independent(rows: &Rows, size: f64) -> Vec<usize> {
     kept
 }
 
-/// T of every body at (pose, v).
-pub fn kinetic(m: &Mechanism, pose: &Pose, v: &DVector<f64>) -> f64 {
-    let body = |(b, body): (usize, &super::model::Body)| {
-        let rot = pose.rotation(b + 1);
-        let omega = Vector3::from(v.fixed_rows::<3>(6 * b + 3));
-        let rdot = Vector3::from(v.fixed_rows::<3>(6 * b));
-        0.5 * body.mass * rdot.norm_squared() + 0.5 * omega.dot(&(rot * body.inertia * rot.transpose() * omega))
-    };
-    m.bodies.iter().enumerate().map(body).sum()
-}
-
-/// V of gravity and the springs at `pose`.
-pub fn potential(m: &Mechanism, loads: &[Load], pose: &Pose) -> f64 {
-    let gravity: f64 = m.bodies.iter().zip(&pose.r).map(|(b, r)| -b.mass * m.gravity.dot(r)).sum();
-    let springs: f64 = loads
-        .iter()
-        .map(|l| match l {
-            Load::Spring { bodies, at, k, length, .. } => {
-                let ends = [0, 1].map(|e| pose.point(m, bodies[e], &at[e]).0);
-                0.5 * k * ((ends[1] - ends[0]).norm() - length).powi(2)
-            }
-            _ => 0.0,
-        })
-        .sum();
-    gravity + springs
-}
-
 /// Integrates the mechanism from its inputs' initial coordinates and speeds.
 pub fn solve(p: &SpatialProblem) -> Result<SpatialSolution, DynamicsError> {
     let m = &p.mechanism;
     let initial = |reason: Start| DynamicsError::Initial { reason };
-    let inputs: Vec<[f64; 3]> = p.initial.iter().map(|[a, w]| [*a, *w, 0.0]).collect();
+    let inputs: Vec<[f64; 3]> = p.initial.iter().zip(&p.reference).map(|([a, w], r)| [a - r, *w, 0.0]).collect();
     let (pose, _) = assemble(m, &inputs, &Pose::drawn(m), 0).map_err(|e| initial(Start::Engine(e)))?;
     let start = motion(m, pose, &inputs, 0).map_err(|_| initial(Start::SingularInputs))?;
     let joints = Mechanism { inputs: Vec::new(), ..m.clone() };
@@ -272,57 +319,60 @@ pub fn solve(p: &SpatialProblem) -> Result<SpatialSolution, DynamicsError> {
     let kept = independent(&all, size);
     let dof = 6 * m.n() - kept.len();
     // The first input reports the motion: a mechanism with none does not move.
-    if dof != m.inputs.len() || m.inputs.is_empty() || p.initial.len() != m.inputs.len() {
+    let given = p.initial.len() == m.inputs.len() && p.reference.len() == m.inputs.len();
+    if dof != m.inputs.len() || m.inputs.is_empty() || !given {
         return Err(initial(Start::Dof { dof, inputs: m.inputs.len() }));
     }
     let n = m.n();
-    let first = Mechanism { inputs: m.inputs[..1].to_vec(), ..joints.clone() };
-    let dae = Equations { p, joints, first, kept: kept.clone(), n, size };
-    if dae.accelerations(&start.pose, &start.v).is_none() {
-        return Err(initial(Start::MovesNoMass));
-    }
+    let fixed = p.loads.iter().map(LoadLaw::fixed).collect();
+    let dae = Equations { p, joints, inputs: m.clone(), kept: kept.clone(), n, size, fixed };
     let mut y0 = Vec::with_capacity(13 * n + 2);
     (0..n).for_each(|b| y0.extend(start.pose.r[b].iter()));
     (0..n).for_each(|b| y0.extend(start.pose.p[b].coords.iter()));
     y0.extend(start.v.iter());
     y0.extend([p.initial[0][0], 0.0]);
+    let loads = dae.loads(0.0, &y0, &start.pose, &start.v);
+    if dae.accelerations(&start.pose, &start.v, &loads).is_none() {
+        return Err(initial(Start::MovesNoMass));
+    }
     let settings = settings(p, &start.v, size);
     let run = run(&dae, y0, &settings)?;
-    let kinetic_of = |y: &[f64]| kinetic(m, &dae.pose(y), &DVector::from_column_slice(dae.velocities(y)));
-    let t0 = run.states.first().map_or(0.0, |(_, y)| kinetic_of(y));
+    let details = run.states.iter().map(|(t, y)| dae.detail(*t, y)).collect::<Result<Vec<_>, _>>()?;
+    let t0 = details.first().map_or(0.0, |d| d.energy.kinetic);
     let mut peak = 0.0f64;
-    let samples = run
-        .states
-        .iter()
-        .map(|(t, y)| {
-            let pose = dae.pose(y);
-            let v = DVector::from_column_slice(dae.velocities(y));
-            let kinetic = kinetic(m, &pose, &v);
-            peak = peak.max(kinetic);
-            let work = y[13 * n + 1];
-            SpatialSample {
+    let samples = (run.states.iter().zip(&details))
+        .map(|((t, _), d)| {
+            peak = peak.max(d.energy.kinetic);
+            let [angle, speed, acceleration] = d.inputs[0];
+            Sample {
                 t: *t,
-                input: [y[13 * n], dae.speed_at(&pose, &v)],
-                potential: potential(m, &p.loads, &pose),
-                energy_residual: energy_residual(work, t0, kinetic, peak),
-                pose,
-                v,
-                kinetic,
-                work,
+                angle,
+                speed,
+                acceleration,
+                energy_residual: energy_residual(d.work, t0, d.energy.kinetic, peak),
             }
         })
         .collect();
+    // The first input's error: its own integrated coordinate's, or the
+    // orientation's (2× a quaternion component's), whichever is larger.
     let orientation = (3 * n..7 * n).map(|k| 2.0 * run.local_errors[k]).fold(0.0, f64::max);
-    Ok(SpatialSolution {
+    let last = details.last();
+    let solution = DynamicsSolution {
         samples,
+        events: run.events,
+        energy_times: Vec::new(),
+        work_by_quadrature: false,
+        energy_residual: last.map_or(0.0, |d| energy_residual(d.work, t0, d.energy.kinetic, peak)),
         steps: run.attempted,
         evaluations: run.evaluations,
         integrator: run.integrator,
         stiff_at: run.stiff_at,
-        drift: run.drift,
-        estimated_error: orientation,
-        redundant_rows: all.phi.len() - kept.len(),
-    })
+        repeated: run.repeated,
+        estimated_error: orientation.max(run.local_errors[13 * n]),
+        stopped: run.stopped,
+        unlisted_turns: run.unlisted_turns,
+    };
+    Ok(SpatialSolution { solution, details, drift: run.drift, redundant_rows: all.phi.len() - kept.len() })
 }
 
 /// Tolerances: positions to rtol·L, quaternions to rtol, velocities to

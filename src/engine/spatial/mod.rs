@@ -26,6 +26,7 @@
 
 mod constraints;
 pub mod dynamics;
+mod energy;
 mod kinematics;
 mod kinetostatics;
 mod mobility;
@@ -34,7 +35,8 @@ mod model;
 mod tests;
 
 pub use constraints::{Rows, coordinate, evaluate};
+pub use energy::{energy, kinetic};
 pub use kinematics::{Motion, Scaled, assemble, motion, sweep};
 pub use kinetostatics::{Actions, Reaction, Wrench, inverse_dynamics};
 pub use mobility::{Mobility, candidate_inputs, mobility};
-pub use model::{Body, BodyId, Coordinate, Input, Joint, JointKind, Load, Mechanism, Pose, perpendiculars};
+pub use model::{Body, BodyId, Coordinate, Input, Joint, JointKind, Load, LoadLaw, Mechanism, Pose, perpendiculars};

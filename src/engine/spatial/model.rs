@@ -1,5 +1,6 @@
 //! The spatial mechanism: bodies, joints, inputs and loads, as drawn.
 
+use crate::engine::function::{Function, Side};
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
 /// Index of a body; 0 is the ground, b ≥ 1 is `bodies[b − 1]`.
@@ -105,6 +106,51 @@ pub enum Load {
     /// A linear spring k with free length l₀ and a damper c between a point
     /// of each body (as drawn); it pulls them together when stretched.
     Spring { bodies: [BodyId; 2], at: [Vector3<f64>; 2], k: f64, length: f64, c: f64 },
+}
+
+/// A load as given: a force's size or a torque's a Function of the first
+/// input's coordinate φ (and of its speed ω and of t, in dynamics).
+#[derive(Clone, Debug)]
+pub enum LoadLaw {
+    /// A force of `magnitude` along the unit `direction` (ground axes) at the
+    /// body's point `at` (as drawn).
+    Force { body: BodyId, at: Vector3<f64>, direction: Vector3<f64>, magnitude: Function },
+    /// A couple of `value` about the unit `axis` (ground axes).
+    Torque { body: BodyId, axis: Vector3<f64>, value: Function },
+    /// A load that does not vary (a spring, a damper).
+    Fixed(Load),
+}
+
+impl LoadLaw {
+    /// The load at φ and [ω, t].
+    pub fn at(&self, phi: f64, state: [f64; 2]) -> Load {
+        match self {
+            Self::Force { body, at, direction, magnitude } => {
+                Load::Force { body: *body, at: *at, force: direction * magnitude.eval_at(phi, Side::Right, state) }
+            }
+            Self::Torque { body, axis, value } => {
+                Load::Torque { body: *body, torque: axis * value.eval_at(phi, Side::Right, state) }
+            }
+            Self::Fixed(load) => load.clone(),
+        }
+    }
+
+    /// The load, where it does not vary (a constant force or torque, a spring, a damper).
+    pub fn fixed(&self) -> Option<Load> {
+        let constant = match self {
+            Self::Force { magnitude: f, .. } | Self::Torque { value: f, .. } => f.constant().is_some(),
+            Self::Fixed(_) => true,
+        };
+        constant.then(|| self.at(0.0, [0.0, 0.0]))
+    }
+
+    /// Whether it reads ω or t.
+    pub fn uses_state(&self) -> bool {
+        match self {
+            Self::Force { magnitude: f, .. } | Self::Torque { value: f, .. } => f.uses_state(),
+            Self::Fixed(_) => false,
+        }
+    }
 }
 
 #[derive(Clone, Debug, PartialEq)]

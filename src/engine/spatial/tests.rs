@@ -369,26 +369,48 @@ fn bricard_falls_with_its_energy() {
         mechanism: m.clone(),
         loads: vec![],
         initial: vec![[0.0, 0.0]],
+        reference: vec![0.0],
         end: End::Duration(10.0),
         tolerance: 1e-8,
         integrator,
         samples: 101,
         deadline: Deadline::none(),
+        period: 2.0 * PI,
+        reactions: true,
     };
     let run = solve(&problem(None)).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(run.redundant_rows, 1);
-    let e0 = -9.81 * 3.0;
-    for s in &run.samples {
-        let e = s.kinetic + s.potential;
+    let e0: f64 = -9.81 * 3.0;
+    for (s, d) in run.solution.samples.iter().zip(&run.details) {
+        let e = d.energy.kinetic + d.energy.gravity;
         assert!((e - e0).abs() < 1e-7 * e0.abs(), "T + V = {e} at t = {}", s.t);
+        // The reactions balance the motion the integrator found: their
+        // virtual power (the inputs are free, so Q·v − M·a·v) is nothing, to
+        // λ times what Φ_q·v keeps of the tolerance between the projected
+        // steps (a sample is the integrator's dense output).
+        let actions = d.actions.as_ref().unwrap();
+        assert!(
+            actions.virtual_power.abs() < 1e-7 * actions.largest_power.max(1.0),
+            "{} of {} at {}",
+            actions.virtual_power,
+            actions.largest_power,
+            s.t
+        );
+    }
+    // φ̈ read from the input's row against central differences of φ̇ (h = 0.1 s, O(h²)).
+    let speeds: Vec<f64> = run.solution.samples.iter().map(|s| s.speed).collect();
+    for k in 1..speeds.len() - 1 {
+        let difference = (speeds[k + 1] - speeds[k - 1]) / 0.2;
+        let read = run.solution.samples[k].acceleration;
+        assert!((difference - read).abs() < 0.05 * read.abs().max(1.0), "φ̈ {read} against {difference}");
     }
     let p3 = |s: &super::dynamics::SpatialSample| s.pose.point(&m, 2, &v(1.0, -1.0, 0.0)).0;
-    let last = p3(run.samples.last().unwrap());
+    let last = p3(run.details.last().unwrap());
     assert!((last - v(0.999731, -1.0, -2.69e-4)).norm() < 2e-3, "P3(10) = {last}");
     let radau = solve(&problem(Some(Integrator::Radau5))).unwrap();
-    assert!((p3(radau.samples.last().unwrap()) - last).norm() < 1e-6);
+    assert!((p3(radau.details.last().unwrap()) - last).norm() < 1e-6);
     // It moved: P3 swings to x = −1 and back within the 10 s.
-    assert!(run.samples.iter().any(|s| p3(s).x < -0.9));
+    assert!(run.details.iter().any(|s| p3(s).x < -0.9));
 }
 
 /// IFToMM A05, the stiff flyball governor, as Exudyn's
@@ -449,23 +471,26 @@ fn flyball_governor_settles_as_the_peer_says() {
     };
     let problem = SpatialProblem {
         mechanism: m,
-        loads: vec![spring(1.0, 2, mid1), spring(-1.0, 3, mid2)],
+        loads: vec![LoadLaw::Fixed(spring(1.0, 2, mid1)), LoadLaw::Fixed(spring(-1.0, 3, mid2))],
         initial: vec![[0.0, 2.0 * PI], [0.0, 0.0], [0.0, 0.0], [0.0, 0.0]],
+        reference: vec![0.0; 4],
         end: End::Duration(10.0),
         tolerance: 1e-6,
         integrator: None,
         samples: 11,
         deadline: Deadline::none(),
+        period: 2.0 * PI,
+        reactions: false,
     };
     let run = solve(&problem).unwrap_or_else(|e| panic!("{e}"));
-    let s = run.samples.last().unwrap().pose.r[3].z;
+    let s = run.details.last().unwrap().pose.r[3].z;
     assert!((s - 0.61963).abs() < 1e-4, "s(10) = {s}");
     let radau = solve(&SpatialProblem { integrator: Some(Integrator::Radau5), ..problem.clone() }).unwrap();
-    let again = radau.samples.last().unwrap().pose.r[3].z;
+    let again = radau.details.last().unwrap().pose.r[3].z;
     assert!((again - s).abs() < 1e-6, "Radau IIA: s(10) = {again}, against {s}");
     assert!(
-        run.samples.iter().all(|s| s.energy_residual.abs() < 1e-6),
+        run.solution.samples.iter().all(|s| s.energy_residual.abs() < 1e-6),
         "{:?}",
-        run.samples.iter().map(|s| s.energy_residual).collect::<Vec<_>>()
+        run.solution.samples.iter().map(|s| s.energy_residual).collect::<Vec<_>>()
     );
 }

@@ -138,3 +138,8 @@ accuracy-global-budget = the run took over a quarter of the compute budget (rais
 accuracy-global-failed = the tighter run failed or stopped elsewhere
 accuracy-kinetostatics-spatial = positions by Newton–Raphson on the joints' rows (quaternions turned by rotation increments) to |Φ| ≤ 1e-12 of the drawing's size, velocities and accelerations from Φ_q·v = −Φ_t and Φ_q·a = γ, reactions and efforts from the Newton–Euler equations with Φ_qᵀ·λ (least-norm where rows repeat); the virtual power of the actions checks them
 warning-redundant-constraints-spatial = { $count } redundant constraint(s): equilibrium does not determine the reactions of joints { $joints }; each is given as the share of least norm, marked "determinate": false
+accuracy-dynamics-spatial = the Newton–Euler equations of every body about its centre of mass with the joints' rows, [M Φ_qᵀ; Φ_q 0] solved by LU at every evaluation (orientations as unit quaternions, the Jacobian on rotation increments), integrated over the bodies' positions, quaternions and velocities; after every step the quaternions made unit and the state projected onto Φ = 0 and Φ_q·v = 0; events by Brent's method on the dense output; work as the integrated power; reactions from the Newton–Euler equations of the motion found
+warning-dynamics-redundant-spatial = { $count ->
+        [one] one constraint row repeats others at the start (as in Bricard's linkage) and was
+       *[other] { $count } constraint rows repeat others at the start (as in Bricard's linkage) and were
+    } left out of the equations of motion; the reactions they share are given as the share of least norm, marked "determinate": false

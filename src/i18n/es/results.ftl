@@ -153,3 +153,8 @@ warning-redundant-constraints-spatial = { $count ->
         [one] una restricción redundante
        *[other] { $count } restricciones redundantes
     }: el equilibrio no determina las reacciones de los pares { $joints }; se da de cada una el reparto de norma mínima, marcado "determinate": false
+accuracy-dynamics-spatial = las ecuaciones de Newton–Euler de cada sólido respecto a su centro de masas con las filas de los pares, [M Φ_qᵀ; Φ_q 0] resuelto por LU en cada evaluación (orientaciones como cuaterniones unitarios, el jacobiano sobre incrementos de giro), integradas sobre las posiciones, cuaterniones y velocidades de los sólidos; tras cada paso, los cuaterniones normalizados y el estado proyectado sobre Φ = 0 y Φ_q·v = 0; eventos por el método de Brent sobre la salida densa; trabajo como potencia integrada; reacciones de las ecuaciones de Newton–Euler del movimiento hallado
+warning-dynamics-redundant-spatial = { $count ->
+        [one] una fila de restricción repite otras al inicio (como en el mecanismo de Bricard) y se dejó
+       *[other] { $count } filas de restricción repiten otras al inicio (como en el mecanismo de Bricard) y se dejaron
+    } fuera de las ecuaciones del movimiento; las reacciones que comparten se dan como el reparto de norma mínima, marcadas "determinate": false

@@ -20,7 +20,10 @@ use std::collections::BTreeMap;
 use std::sync::Arc;
 use utoipa::ToSchema;
 
-/// A mechanism with free input joints, and its loads.
+/// A mechanism with free input joints, and its loads. A spatial one
+/// (`"space": "spatial"`) has joints' rotations or slides for inputs, and
+/// its result `machine` says `"space": "spatial"`, each body's motion and
+/// each reaction as vectors.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct DynamicsMachine {
     pub mechanism: MechanismDto,
@@ -140,6 +143,22 @@ fn free_input(
     initial: Option<&Initial>,
     at: &str,
 ) -> Option<(Driver, [f64; 2])> {
+    let coordinate = coordinate(e, parts, input, at);
+    let state = input_state(e, input, initial, coordinate.is_some_and(|c| c.1), at);
+    let (reference, state) = state?;
+    Some((Driver { coordinate: coordinate?.0, reference, actuator: None }, state))
+}
+
+/// A free input's `reference` and its [coordinate, speed] at t = 0, a
+/// length's in m and m/s (`initial` may give the first input's); the
+/// fields of a prescribed motion refused.
+pub(super) fn input_state(
+    e: &mut Errors,
+    input: &InputDto,
+    initial: Option<&Initial>,
+    length: bool,
+    at: &str,
+) -> Option<(f64, [f64; 2])> {
     let unused = [
         ("acceleration", input.acceleration.is_some()),
         ("end", input.end.is_some()),
@@ -148,8 +167,6 @@ fn free_input(
     for (name, _) in unused.iter().filter(|u| u.1) {
         e.say(&format!("{at}/{name}"), Msg::new("dynamics-not-applicable"));
     }
-    let coordinate = coordinate(e, parts, input, at);
-    let length = coordinate.is_some_and(|c| c.1);
     let (dim, rate) = if length { (Dim::LENGTH, Dim::SPEED) } else { (Dim::ANGLE, Dim::ANGULAR_SPEED) };
     let value = |e: &mut Errors, q: &Quantity, at: &str| if length { e.quantity(q, dim, at) } else { e.angle(q, at) };
     let reference = input.reference.as_ref().map_or(Some(0.0), |q| value(e, q, &format!("{at}/reference")));
@@ -168,8 +185,7 @@ fn free_input(
         (None, Some(FunctionDto::Spec(_))) => e.refuse(&format!("{at}/speed"), Msg::new("dynamics-speed-constant")),
         (None, None) => Some(0.0),
     };
-    let driver = Driver { coordinate: coordinate?.0, reference: reference?, actuator: None };
-    Some((driver, [start?, speed?]))
+    Some((reference?, [start?, speed?]))
 }
 
 /// One input's state at a sample.

@@ -9,6 +9,7 @@ mod request;
 mod result;
 mod size;
 mod solution;
+mod space;
 
 use crate::engine::dynamics::mechanism::{self, MechanismProblem};
 use crate::engine::dynamics::{Integrator, ReducedProblem, solve};
@@ -28,7 +29,8 @@ use serde_json::Value;
 use utoipa::ToSchema;
 
 pub use machine::{DynamicsMachine, InputState, MachineDynamics, MachineSample};
-pub use result::{DynamicsAccuracy, DynamicsResult, EventDto, SampleDto, csv_table};
+pub use result::{DynamicsAccuracy, DynamicsResult, EventDto, MachineResult, SampleDto, csv_table};
+pub use space::{SpatialMachineDynamics, SpatialMachineSample};
 
 /// Longest simulated time, s.
 pub const MAX_DURATION: f64 = 1e5;
@@ -219,6 +221,16 @@ impl Kind for Dynamics {
         ("/machine/samples/*/contacts/*/pressure_angle", "rad"),
         ("/machine/samples/*/contacts/*/penetration", "m"),
         ("/machine/samples/*/t", "s"),
+        ("/machine/samples/*/work", "J"),
+        ("/machine/samples/*/bodies/*/position/*", "m"),
+        ("/machine/samples/*/bodies/*/rotation/*/*", "1"),
+        ("/machine/samples/*/bodies/*/velocity/*", "m/s"),
+        ("/machine/samples/*/bodies/*/angular_velocity/*", "rad/s"),
+        ("/machine/samples/*/bodies/*/acceleration/*", "m/s^2"),
+        ("/machine/samples/*/bodies/*/angular_acceleration/*", "rad/s^2"),
+        ("/machine/samples/*/reactions/*/force/*", "N"),
+        ("/machine/samples/*/reactions/*/moment/*", "N*m"),
+        ("/machine/samples/*/reactions/*/magnitude", "N"),
         ("/samples/*/acceleration", "rad/s^2"),
         ("/samples/*/angle", "rad"),
         ("/samples/*/energy_residual", "1"),
@@ -232,7 +244,7 @@ impl Kind for Dynamics {
 
     /// A mechanism's run has its bodies' free bodies; one in reduced form has none.
     fn has_solution(result: &Value) -> bool {
-        result["machine"].is_object()
+        result["machine"].is_object() && result["machine"]["space"] != "spatial"
     }
 
     fn compute(
@@ -331,9 +343,10 @@ fn compute(request: &DynamicsRequest, unknown: Vec<FieldError>, limits: &Limits)
             let contacts = machine.samples.iter().filter_map(|x| Some((x.t, x.contacts.as_deref()?)));
             result.notes.extend(contact_warnings(contacts, &p.mechanism, result::at_time, true));
             result.notes.extend(result::slipping(&s, &p.mechanism));
-            result.machine = Some(machine);
+            result.machine = Some(MachineResult::Planar(machine));
             Ok(result)
         }
+        Problem::Spatial(p, report) => space::compute(request, &p, &report),
     }
 }
 

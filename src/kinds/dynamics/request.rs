@@ -2,11 +2,13 @@
 //! form, the machine and how the run ends, every error at its pointer.
 
 use super::machine::Report;
+use super::space::SpatialReport;
 use super::{DEFAULT_MAX_DURATION, DEFAULT_SAMPLES, DynamicsMachine, DynamicsRequest, IntegratorChoice, MAX_DURATION};
 use crate::engine::Deadline;
 use crate::engine::dynamics::mechanism::MechanismProblem;
 use crate::engine::dynamics::{End, KEPT_BYTES, ReducedProblem};
 use crate::engine::function::Function;
+use crate::engine::spatial::dynamics::SpatialProblem;
 use crate::i18n::Msg;
 use crate::kind::constants;
 use crate::kind::limits::Limits;
@@ -21,6 +23,8 @@ pub(super) enum Problem {
     /// With the joint and body names.
     /// The mechanism problem, and what its result reports beside the solution.
     Machine(MechanismProblem, Report),
+    /// A mechanism in space, and what its result reports.
+    Spatial(SpatialProblem, SpatialReport),
 }
 
 /// The settings both forms share, validated (defaults stand in for invalid
@@ -138,6 +142,9 @@ impl DynamicsRequest {
     }
 
     fn machine_problem(&self, e: &mut Errors, m: &DynamicsMachine, c: &Common) -> Option<Problem> {
+        if m.mechanism.is_spatial() {
+            return self.spatial_problem(e, m, c);
+        }
         let parts = m.convert(e, self.initial.as_ref(), c.period);
         let angle0 = parts.as_ref().and_then(|p| p.initial.first()).map_or(0.0, |s| s[0]);
         let end = self.end(e, angle0)?;
@@ -158,6 +165,27 @@ impl DynamicsRequest {
             motion: !parts.report.tracked.is_empty(),
         };
         Some(Problem::Machine(problem, parts.report))
+    }
+
+    fn spatial_problem(&self, e: &mut Errors, m: &DynamicsMachine, c: &Common) -> Option<Problem> {
+        let parts = m.spatial(e, self.initial.as_ref(), c.period);
+        let angle0 = parts.as_ref().and_then(|p| p.initial.first()).map_or(0.0, |s| s[0]);
+        let end = self.end(e, angle0)?;
+        let parts = parts?;
+        let problem = SpatialProblem {
+            mechanism: parts.mechanism,
+            loads: parts.loads,
+            period: c.period,
+            reference: parts.reference,
+            initial: parts.initial,
+            end,
+            tolerance: c.tolerance,
+            integrator: IntegratorChoice::engine(self.integrator),
+            samples: c.samples,
+            deadline: c.deadline,
+            reactions: m.reactions.unwrap_or(true),
+        };
+        Some(Problem::Spatial(problem, parts.report))
     }
 
     fn end(&self, e: &mut Errors, angle0: f64) -> Option<End> {

@@ -1,13 +1,14 @@
 //! The `result` of a dynamics job, as stored and served, and its CSV table.
 
-use super::{IntegratorChoice, MachineDynamics};
+use super::{IntegratorChoice, MachineDynamics, SpatialMachineDynamics};
 use crate::engine::dynamics::mechanism::MechanismSolution;
 use crate::engine::dynamics::{DynamicsSolution, EventKind, Integrator, KEPT_BYTES, MAX_TURN_EVENTS, Stopped};
 use crate::engine::model::Mechanism;
 use crate::engine::variants::round_sig;
 use crate::i18n::Msg;
 use crate::kind::notes::Notes;
-use crate::kind::{list, names};
+use crate::kind::{Columns, items, names};
+use crate::kinds::mechanism::motion3::{MOTION_3, REACTION_3};
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
@@ -131,9 +132,28 @@ pub struct DynamicsResult {
     pub accuracy: DynamicsAccuracy,
     /// Mechanism form: every input, the reactions and the constraint residual at the samples.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub machine: Option<MachineDynamics>,
+    pub machine: Option<MachineResult>,
     #[serde(flatten)]
     pub notes: Notes,
+}
+
+/// The mechanism form's part of a result: a planar mechanism's, or a
+/// spatial one's (with `"space": "spatial"`).
+#[derive(Clone, Debug, Serialize, ToSchema)]
+#[serde(untagged)]
+pub enum MachineResult {
+    Planar(MachineDynamics),
+    Spatial(SpatialMachineDynamics),
+}
+
+impl MachineResult {
+    /// The planar mechanism's part, where it is one.
+    pub fn planar(&self) -> Option<&MachineDynamics> {
+        match self {
+            Self::Planar(m) => Some(m),
+            Self::Spatial(_) => None,
+        }
+    }
 }
 
 impl crate::kind::JobResult for DynamicsResult {
@@ -342,20 +362,25 @@ pub fn csv_table(result: &serde_json::Value) -> (Vec<String>, Vec<Vec<String>>) 
     let machine = result["machine"]["samples"].as_array().filter(|m| m.len() == samples.len());
     let rows = machine.map_or(&[][..], Vec::as_slice);
     let (bodies, joints) = (names(rows, "bodies", "body"), names(rows, "reactions", "joint"));
-    for b in &bodies {
-        header.extend([format!("{b}_x_m"), format!("{b}_y_m"), format!("{b}_theta_rad")]);
-    }
-    for j in &joints {
-        header.extend([format!("{j}_fx_N"), format!("{j}_fy_N"), format!("{j}_moment_N_m")]);
-    }
+    // A spatial mechanism's bodies and reactions: vectors, a column each component.
+    let spatial = result["machine"]["space"] == "spatial";
+    let (body, reaction): (Columns, Columns) = match spatial {
+        true => (&MOTION_3, &REACTION_3),
+        false => (
+            &[("/x", "x_m"), ("/y", "y_m"), ("/theta", "theta_rad")],
+            &[("/fx", "fx_N"), ("/fy", "fy_N"), ("/moment", "moment_N_m")],
+        ),
+    };
+    header.extend(bodies.iter().flat_map(|b| body.iter().map(move |c| format!("{b}_{}", c.1))));
+    header.extend(joints.iter().flat_map(|j| reaction.iter().map(move |c| format!("{j}_{}", c.1))));
     let rows = samples
         .iter()
         .enumerate()
         .map(|(k, row)| {
             let mut cells: Vec<String> = columns.iter().map(|c| row[c.0].to_string()).collect();
             if let Some(m) = machine {
-                cells.extend(list(&m[k]["bodies"], bodies.len(), &["x", "y", "theta"]));
-                cells.extend(list(&m[k]["reactions"], joints.len(), &["fx", "fy", "moment"]));
+                cells.extend(items(&m[k]["bodies"], bodies.len(), body));
+                cells.extend(items(&m[k]["reactions"], joints.len(), reaction));
             }
             cells
         })

@@ -25,7 +25,7 @@ pub(super) fn refuse_if_it_cannot_fit(problem: &Problem, limit: usize) -> Result
     let (each, samples) = match problem {
         Problem::Reduced(p) => (least_sample(), p.samples),
         Problem::Machine(p, report) if !has_contact(p) => (least_sample() + least_machine_sample(p, report), p.samples),
-        Problem::Machine(..) => return Ok(()),
+        Problem::Machine(..) | Problem::Spatial(..) => return Ok(()),
     };
     // Each sample and its comma, in `samples` and in `machine.samples`.
     let least = (each + 2).saturating_mul(samples);

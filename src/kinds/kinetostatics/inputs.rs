@@ -7,7 +7,8 @@ use crate::engine::model::{Driver, JointKind, Mechanism};
 use crate::engine::spatial;
 use crate::i18n::Msg;
 use crate::kind::quantity::{Errors, Quantity};
-use crate::kinds::mechanism::{InputCoordinate, InputDto, MechanismDto, coordinate};
+use crate::kinds::mechanism::spatial::joint_coordinate;
+use crate::kinds::mechanism::{InputDto, MechanismDto, coordinate};
 use crate::units::Dim;
 use std::f64::consts::PI;
 
@@ -158,37 +159,6 @@ pub fn spatial(
     let valid = ranges.len() == inputs.len() && (1..=max).contains(&steps);
     let positions = if valid { laid_out(e, &ranges, steps) } else { Vec::new() };
     (chosen, positions, linear)
-}
-
-/// The joint and coordinate an input names in space.
-fn joint_coordinate(e: &mut Errors, m: &spatial::Mechanism, input: &InputDto, at: &str) -> Option<spatial::Input> {
-    use spatial::{Coordinate, JointKind};
-    for (field, given) in
-        [("point", input.point.is_some()), ("body", input.body.is_some()), ("direction", input.direction.is_some())]
-    {
-        if given {
-            e.say(&format!("{at}/{field}"), Msg::new("input-spatial-joint"));
-        }
-    }
-    let Some(name) = &input.joint else { return e.refuse(at, Msg::new("input-spatial-joint")) };
-    let Some(joint) = m.joints.iter().position(|j| &j.name == name) else {
-        return e.refuse(&format!("{at}/joint"), Msg::new("mechanism-unknown-joint").arg("name", name));
-    };
-    let asked = input.coordinate.map(|c| match c {
-        InputCoordinate::Rotation => Coordinate::Rotation,
-        InputCoordinate::Slide => Coordinate::Slide,
-    });
-    let coordinate = match (&m.joints[joint].kind, asked) {
-        (JointKind::Revolute { .. } | JointKind::Spherical { axis: Some(_) }, None | Some(Coordinate::Rotation)) => {
-            Coordinate::Rotation
-        }
-        (JointKind::Prismatic { .. }, None | Some(Coordinate::Slide)) => Coordinate::Slide,
-        (JointKind::Cylindrical { .. }, Some(c)) => c,
-        (JointKind::Cylindrical { .. }, None) => return e.refuse(at, Msg::new("input-cylindrical-coordinate")),
-        (_, Some(_)) => return e.refuse(&format!("{at}/coordinate"), Msg::new("input-spatial-coordinate")),
-        (_, None) => return e.refuse(&format!("{at}/joint"), Msg::new("input-spatial-coordinate")),
-    };
-    Some(spatial::Input { joint, coordinate })
 }
 
 /// The steps the inputs share and the most allowed, each count checked.

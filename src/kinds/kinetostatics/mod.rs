@@ -2,7 +2,6 @@
 
 mod inputs;
 mod located;
-mod motion3;
 mod plots;
 mod request;
 mod result;

@@ -1,12 +1,12 @@
 //! The `result` of a kinetostatics job, as stored and served, and its CSV table.
 
-use super::motion3::{BodyMotion3, Reaction3};
 use super::request::Problem;
 use super::shaking::{CounterweightDto, ShakingDto, largest};
 use crate::engine::kinetostatics::{Motion, Step, Totals, energy};
 use crate::engine::model::{Coordinate, Driver, Mechanism};
 use crate::i18n::Msg;
 use crate::kind::notes::Notes;
+use crate::kinds::mechanism::motion3::{BodyMotion3, Reaction3};
 use crate::kinds::mechanism::track::{PointState, states};
 use crate::kinds::mechanism::{
     ByName, ContactDto, Coords, EnergyDto, Name, Names, ReactionDto, Reactions, contact_warnings,

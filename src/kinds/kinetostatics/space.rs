@@ -6,14 +6,12 @@
 //! condition, energy, points and shaking) refused at its pointer.
 
 use super::inputs;
-use super::motion3::{BodyMotion3, Reaction3};
 use super::request::{KinetostaticsRequest, OutputKind};
 use super::result::{
     GrublerDto, InputInfo, Kinematics, KinetostaticsAccuracy, KinetostaticsResult, Scalars, StepDto, StepReactions,
     SummaryDto,
 };
-use crate::engine::spatial::dynamics::kinetic;
-use crate::engine::spatial::{Actions, Mechanism, Motion, Pose, assemble, inverse_dynamics, mobility, motion};
+use crate::engine::spatial::{Actions, Mechanism, Motion, Pose, assemble, inverse_dynamics, kinetic, mobility, motion};
 use crate::i18n::Msg;
 use crate::kind::constants;
 use crate::kind::limits::Limits;
@@ -21,8 +19,9 @@ use crate::kind::notes::Notes;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::quantity::Errors;
 use crate::kind::{engine_failure, validated};
-use crate::kinds::mechanism::spatial_loads::{SpatialLoad, spatial_loads};
-use crate::kinds::mechanism::{Inputs, Name};
+use crate::kinds::mechanism::Inputs;
+use crate::kinds::mechanism::motion3::{BodyMotion3, Reaction3};
+use crate::kinds::mechanism::spatial_loads::spatial_loads;
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
 
@@ -30,7 +29,7 @@ use std::f64::consts::PI;
 struct Problem {
     mechanism: Mechanism,
     body_names: Vec<String>,
-    loads: Vec<SpatialLoad>,
+    loads: Vec<crate::engine::spatial::LoadLaw>,
     positions: Vec<Vec<[f64; 3]>>,
     linear: Vec<bool>,
     outputs: Vec<OutputKind>,
@@ -62,7 +61,7 @@ pub fn compute(
         let (assembled, taken) = assemble(m, x, &pose, k).map_err(|e| engine_failure(e, "/input"))?;
         (pose, iterations) = (assembled, iterations.max(taken));
         let now = motion(m, pose.clone(), x, k).map_err(|e| engine_failure(e, "/input"))?;
-        let loads: Vec<_> = p.loads.iter().map(|l| l.at(x[0][0])).collect();
+        let loads: Vec<_> = p.loads.iter().map(|l| l.at(x[0][0], [x[0][1], 0.0])).collect();
         let actions = inverse_dynamics(m, &loads, &now);
         worst.0 = worst.0.max(actions.virtual_power.abs() / actions.largest_power.max(f64::MIN_POSITIVE));
         worst.1 = worst.1.max(now.rows.phi.amax());
@@ -98,43 +97,12 @@ fn read(r: &KinetostaticsRequest, e: &mut Errors) -> Option<Problem> {
     Some(Problem { mechanism, body_names: c.body_names, loads, positions, linear, outputs })
 }
 
-fn vector(v: &[f64]) -> [f64; 3] {
-    [v[0], v[1], v[2]]
-}
-
 /// One step as the result says it.
 fn step(p: &Problem, x: &[[f64; 3]], now: &Motion, actions: &Actions) -> StepDto {
     let m = &p.mechanism;
     let wants = |o: OutputKind| p.outputs.contains(&o);
-    let name = |b: usize| p.body_names[b].clone();
-    let reactions = actions
-        .reactions
-        .iter()
-        .map(|r| Reaction3 {
-            joint: m.joints[r.joint].name.clone(),
-            on: name(r.on),
-            by: name(r.by),
-            force: vector(r.wrench.force.as_slice()),
-            moment: vector(r.wrench.moment.as_slice()),
-            magnitude: r.wrench.force.norm(),
-            determinate: r.determinate,
-        })
-        .collect();
-    let kinematics = (0..m.n())
-        .map(|b| {
-            let rot = now.pose.rotation(b + 1);
-            let at = |v: &nalgebra::DVector<f64>, k: usize| vector(&v.as_slice()[6 * b + k..6 * b + k + 3]);
-            BodyMotion3 {
-                body: Name::from(p.body_names[b + 1].as_str()),
-                position: vector(now.pose.r[b].as_slice()),
-                rotation: [0, 1, 2].map(|i| [0, 1, 2].map(|j| rot[(i, j)])),
-                velocity: at(&now.v, 0),
-                angular_velocity: at(&now.v, 3),
-                acceleration: at(&now.a, 0),
-                angular_acceleration: at(&now.a, 3),
-            }
-        })
-        .collect();
+    let reactions = actions.reactions.iter().map(|r| Reaction3::new(r, m, &p.body_names)).collect();
+    let kinematics = (1..=m.n()).map(|b| BodyMotion3::new(&p.body_names[b], b, &now.pose, &now.v, &now.a)).collect();
     let rate = x[0][1];
     let reduced = (wants(OutputKind::Reduced) && x.len() == 1 && rate != 0.0)
         .then(|| 2.0 * kinetic(m, &now.pose, &now.v) / (rate * rate));

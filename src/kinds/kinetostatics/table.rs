@@ -1,7 +1,8 @@
 //! The CSV table of a stored kinetostatics result (`result.csv`), read from
 //! the stored JSON: a row per step.
 
-use crate::kind::{cell, names};
+use crate::kind::{Columns, cell, items, names};
+use crate::kinds::mechanism::motion3::{MOTION_3, REACTION_3};
 use serde_json::Value;
 
 /// The CSV table of a stored result: one row per step; columns input(s),
@@ -78,20 +79,8 @@ pub fn csv_table(result: &Value) -> (Vec<String>, Vec<Vec<String>>) {
     (header, rows)
 }
 
-/// Columns of a list's items: where in the item (a pointer), and the column's name.
-type Columns = &'static [(&'static str, &'static str)];
-
 /// A joint's reaction in the CSV: where in the item, and the column's name.
 const REACTION: [(&str, &str); 3] = [("/fx", "fx_N"), ("/fy", "fy_N"), ("/moment", "moment_N_m")];
-const REACTION_3: [(&str, &str); 6] = [
-    ("/force/0", "fx_N"),
-    ("/force/1", "fy_N"),
-    ("/force/2", "fz_N"),
-    ("/moment/0", "mx_N_m"),
-    ("/moment/1", "my_N_m"),
-    ("/moment/2", "mz_N_m"),
-];
-
 /// A body's motion in the CSV: where in the item, and the column's name.
 const MOTION: [(&str, &str); 9] = [
     ("/x", "x_m"),
@@ -104,34 +93,6 @@ const MOTION: [(&str, &str); 9] = [
     ("/ay", "ay_m_s2"),
     ("/alpha", "alpha_rad_s2"),
 ];
-const MOTION_3: [(&str, &str); 15] = [
-    ("/position/0", "x_m"),
-    ("/position/1", "y_m"),
-    ("/position/2", "z_m"),
-    ("/velocity/0", "vx_m_s"),
-    ("/velocity/1", "vy_m_s"),
-    ("/velocity/2", "vz_m_s"),
-    ("/angular_velocity/0", "omega_x_rad_s"),
-    ("/angular_velocity/1", "omega_y_rad_s"),
-    ("/angular_velocity/2", "omega_z_rad_s"),
-    ("/acceleration/0", "ax_m_s2"),
-    ("/acceleration/1", "ay_m_s2"),
-    ("/acceleration/2", "az_m_s2"),
-    ("/angular_acceleration/0", "alpha_x_rad_s2"),
-    ("/angular_acceleration/1", "alpha_y_rad_s2"),
-    ("/angular_acceleration/2", "alpha_z_rad_s2"),
-];
-
-/// The cells at `fields` (pointers) of each of `n` items of a list (empty where the list is null).
-fn items(v: &Value, n: usize, fields: Columns) -> Vec<String> {
-    match v.as_array() {
-        Some(list) => list
-            .iter()
-            .flat_map(|item| fields.iter().map(|(at, _)| item.pointer(at).map(cell).unwrap_or_default()))
-            .collect(),
-        None => vec![String::new(); n * fields.len()],
-    }
-}
 
 /// A number or a list of `n` numbers as `n` cells (empty where null).
 fn cells(v: &Value, n: usize) -> Vec<String> {

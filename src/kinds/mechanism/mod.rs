@@ -11,6 +11,7 @@ mod inputs;
 mod joints;
 mod loads;
 pub mod motion;
+pub mod motion3;
 mod points;
 mod reactions;
 pub mod solution;

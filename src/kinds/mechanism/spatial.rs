@@ -4,8 +4,10 @@
 //! planar field (friction, a guide's length, curves) or `dimensions` is
 //! refused at its pointer.
 
-use super::{JointDto, JointType, MAX_ITEMS, MechanismDto, NAME_MAX_LENGTH, PointRef, non_negative};
-use crate::engine::spatial::{Body, BodyId, Joint, JointKind, Mechanism};
+use super::{
+    InputCoordinate, InputDto, JointDto, JointType, MAX_ITEMS, MechanismDto, NAME_MAX_LENGTH, PointRef, non_negative,
+};
+use crate::engine::spatial::{Body, BodyId, Input, Joint, JointKind, Mechanism};
 use crate::i18n::Msg;
 use crate::kind::problem::escape;
 use crate::kind::quantity::Errors;
@@ -214,4 +216,35 @@ fn not_spatial(e: &mut Errors, j: &JointDto, at: &str) {
     for (field, _) in given.iter().filter(|(_, g)| *g) {
         e.say(&format!("{at}/{field}"), Msg::new("joint-not-spatial"));
     }
+}
+
+/// The joint and coordinate an input names in space.
+pub fn joint_coordinate(e: &mut Errors, m: &Mechanism, input: &InputDto, at: &str) -> Option<Input> {
+    use crate::engine::spatial::Coordinate;
+    for (field, given) in
+        [("point", input.point.is_some()), ("body", input.body.is_some()), ("direction", input.direction.is_some())]
+    {
+        if given {
+            e.say(&format!("{at}/{field}"), Msg::new("input-spatial-joint"));
+        }
+    }
+    let Some(name) = &input.joint else { return e.refuse(at, Msg::new("input-spatial-joint")) };
+    let Some(joint) = m.joints.iter().position(|j| &j.name == name) else {
+        return e.refuse(&format!("{at}/joint"), Msg::new("mechanism-unknown-joint").arg("name", name));
+    };
+    let asked = input.coordinate.map(|c| match c {
+        InputCoordinate::Rotation => Coordinate::Rotation,
+        InputCoordinate::Slide => Coordinate::Slide,
+    });
+    let coordinate = match (&m.joints[joint].kind, asked) {
+        (JointKind::Revolute { .. } | JointKind::Spherical { axis: Some(_) }, None | Some(Coordinate::Rotation)) => {
+            Coordinate::Rotation
+        }
+        (JointKind::Prismatic { .. }, None | Some(Coordinate::Slide)) => Coordinate::Slide,
+        (JointKind::Cylindrical { .. }, Some(c)) => c,
+        (JointKind::Cylindrical { .. }, None) => return e.refuse(at, Msg::new("input-cylindrical-coordinate")),
+        (_, Some(_)) => return e.refuse(&format!("{at}/coordinate"), Msg::new("input-spatial-coordinate")),
+        (_, None) => return e.refuse(&format!("{at}/joint"), Msg::new("input-spatial-coordinate")),
+    };
+    Some(Input { joint, coordinate })
 }

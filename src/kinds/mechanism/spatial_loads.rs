@@ -7,34 +7,10 @@
 use super::loads::has_fields;
 use super::spatial::SpatialConverted;
 use super::{LoadDto, LoadType, MAX_LOADS, MechanismDto, PointRef, body_id};
-use crate::engine::function::{Function, Side};
-use crate::engine::spatial::{BodyId, Load};
+use crate::engine::spatial::{Load, LoadLaw};
 use crate::i18n::Msg;
 use crate::kind::quantity::Errors;
 use crate::units::Dim;
-use nalgebra::Vector3;
-
-/// A load as read: its Function evaluated at each step's φ.
-pub enum SpatialLoad {
-    Force { body: BodyId, at: Vector3<f64>, direction: Vector3<f64>, magnitude: Function },
-    Torque { body: BodyId, axis: Vector3<f64>, value: Function },
-    Fixed(Load),
-}
-
-impl SpatialLoad {
-    /// The engine's load at φ.
-    pub fn at(&self, phi: f64) -> Load {
-        match self {
-            Self::Force { body, at, direction, magnitude } => {
-                Load::Force { body: *body, at: *at, force: direction * magnitude.eval(phi, Side::Right) }
-            }
-            Self::Torque { body, axis, value } => {
-                Load::Torque { body: *body, torque: axis * value.eval(phi, Side::Right) }
-            }
-            Self::Fixed(load) => load.clone(),
-        }
-    }
-}
 
 /// Reads `list` (pointers under `at`) for the converted mechanism `c`.
 pub fn spatial_loads(
@@ -44,7 +20,7 @@ pub fn spatial_loads(
     period: f64,
     at: &str,
     variables: &[&str],
-) -> Vec<SpatialLoad> {
+) -> Vec<LoadLaw> {
     if list.len() > MAX_LOADS {
         e.say(at, Msg::new("load-too-many").arg("max", MAX_LOADS));
         return Vec::new();
@@ -61,7 +37,7 @@ fn load(
     period: f64,
     at: &str,
     variables: &[&str],
-) -> Option<SpatialLoad> {
+) -> Option<LoadLaw> {
     if !fields(e, l, at) {
         return None;
     }
@@ -79,13 +55,13 @@ fn load(
             let direction = direction(e);
             let magnitude =
                 e.function_of(l.magnitude.as_ref()?, Dim::FORCE, period, &format!("{at}/magnitude"), variables);
-            Some(SpatialLoad::Force { body: body?, at: point?, direction: direction?, magnitude: magnitude? })
+            Some(LoadLaw::Force { body: body?, at: point?, direction: direction?, magnitude: magnitude? })
         }
         LoadType::Torque => {
             let body = moving(e, l.body.as_deref()?);
             let axis = direction(e);
             let value = e.function_of(l.value.as_ref()?, Dim::TORQUE, period, &format!("{at}/value"), variables);
-            Some(SpatialLoad::Torque { body: body?, axis: axis?, value: value? })
+            Some(LoadLaw::Torque { body: body?, axis: axis?, value: value? })
         }
         LoadType::Spring | LoadType::Damper => {
             let end = |e: &mut Errors, side: &str, v: &(String, PointRef)| {
@@ -104,7 +80,7 @@ fn load(
                 _ => (0.0, 0.0, e.quantity(l.coefficient.as_ref()?, Dim::DAMPING, &format!("{at}/coefficient"))?),
             };
             let ((ba, pa), (bb, pb)) = (a?, b?);
-            Some(SpatialLoad::Fixed(Load::Spring { bodies: [ba, bb], at: [pa, pb], k, length, c }))
+            Some(LoadLaw::Fixed(Load::Spring { bodies: [ba, bb], at: [pa, pb], k, length, c }))
         }
     }
 }

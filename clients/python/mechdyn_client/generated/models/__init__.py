@@ -229,6 +229,8 @@ from .shaking_dto import ShakingDto
 from .sign_in import SignIn
 from .solution import Solution
 from .solution_numbering import SolutionNumbering
+from .spatial_machine_dynamics import SpatialMachineDynamics
+from .spatial_machine_sample import SpatialMachineSample
 from .spline_dto import SplineDto
 from .stated import Stated
 from .step_dto import StepDto
@@ -494,6 +496,8 @@ __all__ = (
     "SignIn",
     "Solution",
     "SolutionNumbering",
+    "SpatialMachineDynamics",
+    "SpatialMachineSample",
     "SplineDto",
     "Stated",
     "StepDto",

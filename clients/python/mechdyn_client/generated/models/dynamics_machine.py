@@ -27,7 +27,10 @@ T = TypeVar("T", bound="DynamicsMachine")
 
 @_attrs_define
 class DynamicsMachine:
-    """ A mechanism with free input joints, and its loads.
+    """ A mechanism with free input joints, and its loads. A spatial one
+    (`"space": "spatial"`) has joints' rotations or slides for inputs, and
+    its result `machine` says `"space": "spatial"`, each body's motion and
+    each reaction as vectors.
 
         Attributes:
             input_ (InputDto | list[InputDto]):

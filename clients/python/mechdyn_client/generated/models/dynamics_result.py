@@ -17,6 +17,7 @@ if TYPE_CHECKING:
   from ..models.event_dto import EventDto
   from ..models.machine_dynamics import MachineDynamics
   from ..models.notes_messages import NotesMessages
+  from ..models.spatial_machine_dynamics import SpatialMachineDynamics
 
 
 
@@ -43,7 +44,7 @@ class DynamicsResult:
                 match a warning by its `id`; the texts themselves are in the
                 language asked for (`Accept-Language`, `?lang=`).
             end (EventDto | None | Unset):
-            machine (MachineDynamics | None | Unset):
+            machine (MachineDynamics | None | SpatialMachineDynamics | Unset):
             stopped (None | str | Unset): Why the run stopped before its end, where it did: "separation" (a
                 contact's normal force fell to 0: the bodies part), "not_reached"
                 (the end angle was not reached within the longest duration),
@@ -58,7 +59,7 @@ class DynamicsResult:
     samples: list[DynamicsSample]
     messages: NotesMessages | Unset = UNSET
     end: EventDto | None | Unset = UNSET
-    machine: MachineDynamics | None | Unset = UNSET
+    machine: MachineDynamics | None | SpatialMachineDynamics | Unset = UNSET
     stopped: None | str | Unset = UNSET
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
@@ -72,6 +73,7 @@ class DynamicsResult:
         from ..models.event_dto import EventDto # noqa: PLC0415
         from ..models.machine_dynamics import MachineDynamics # noqa: PLC0415
         from ..models.notes_messages import NotesMessages # noqa: PLC0415
+        from ..models.spatial_machine_dynamics import SpatialMachineDynamics # noqa: PLC0415
         warnings = self.warnings
 
 
@@ -110,6 +112,8 @@ class DynamicsResult:
         if isinstance(self.machine, Unset):
             machine = UNSET
         elif isinstance(self.machine, MachineDynamics):
+            machine = self.machine.to_dict()
+        elif isinstance(self.machine, SpatialMachineDynamics):
             machine = self.machine.to_dict()
         else:
             machine = self.machine
@@ -150,6 +154,7 @@ class DynamicsResult:
         from ..models.event_dto import EventDto # noqa: PLC0415
         from ..models.machine_dynamics import MachineDynamics # noqa: PLC0415
         from ..models.notes_messages import NotesMessages # noqa: PLC0415
+        from ..models.spatial_machine_dynamics import SpatialMachineDynamics # noqa: PLC0415
         d = dict(src_dict)
         warnings = cast(list[str], d.pop("warnings"))
 
@@ -211,7 +216,7 @@ class DynamicsResult:
         end = _parse_end(d.pop("end", UNSET))
 
 
-        def _parse_machine(data: object) -> MachineDynamics | None | Unset:
+        def _parse_machine(data: object) -> MachineDynamics | None | SpatialMachineDynamics | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -219,14 +224,24 @@ class DynamicsResult:
             try:
                 if not isinstance(data, dict):
                     raise TypeError()
-                machine_type_0 = MachineDynamics.from_dict(data)
+                componentsschemas_machine_result_type_0 = MachineDynamics.from_dict(data)
 
 
 
-                return machine_type_0
+                return componentsschemas_machine_result_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(MachineDynamics | None | Unset, data)
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                componentsschemas_machine_result_type_1 = SpatialMachineDynamics.from_dict(data)
+
+
+
+                return componentsschemas_machine_result_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(MachineDynamics | None | SpatialMachineDynamics | Unset, data)
 
         machine = _parse_machine(d.pop("machine", UNSET))
 
