@@ -190,11 +190,16 @@ async fn hooke_joint_passes_its_power() {
     assert!(header.contains("cross_fz_N") && header.contains("output_omega_z_rad_s"), "{header}");
     let plots = app.get(&format!("/v1/jobs/{id}/plots")).await.json();
     let listed: Vec<&str> = plots["plots"].as_array().unwrap().iter().map(|p| p["name"].as_str().unwrap()).collect();
-    assert_eq!(listed, ["driving", "reactions", "reduced-inertia"]);
+    assert_eq!(listed, ["driving", "reactions", "reduced-inertia", "mechanism"]);
     for p in plots["plots"].as_array().unwrap() {
         let svg = app.get(p["href"].as_str().unwrap()).await;
         assert_eq!(svg.status, StatusCode::OK, "{p}: {}", svg.text);
         assert!(svg.text.contains("<svg"), "{p}");
+    }
+    // The isometric drawing names every joint and says which way is up.
+    let drawn = app.get(&format!("/v1/jobs/{id}/plots/mechanism.svg?step=5")).await.text;
+    for joint in [">\nA\n<", ">\nB\n<", ">\ncross\n<", "isometric view, y up"] {
+        assert!(drawn.contains(joint), "{joint} not drawn");
     }
     assert_eq!(app.get(&format!("/jobs/{id}")).await.status, StatusCode::OK);
     assert_eq!(app.get(&format!("/v1/jobs/{id}/solution?step=0")).await.status, StatusCode::NOT_FOUND);

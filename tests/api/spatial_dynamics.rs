@@ -153,7 +153,7 @@ async fn a_free_hooke_joint_keeps_its_energy() {
     assert_eq!(csv.lines().count(), 42);
     let plots = app.get(&format!("/v1/jobs/{id}/plots")).await.json();
     let listed: Vec<&str> = plots["plots"].as_array().unwrap().iter().map(|p| p["name"].as_str().unwrap()).collect();
-    assert_eq!(listed, ["angle", "speed", "phase", "energy", "reactions"]);
+    assert_eq!(listed, ["angle", "speed", "phase", "energy", "reactions", "mechanism"]);
     for p in plots["plots"].as_array().unwrap() {
         let svg = app.get(p["href"].as_str().unwrap()).await;
         assert!(svg.status == StatusCode::OK && svg.text.contains("<svg"), "{p}: {}", svg.text);

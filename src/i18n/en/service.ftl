@@ -357,6 +357,7 @@ plot-dyn-phase = Phase portrait: speed against angle
 plot-dyn-energy = Energy residual against time
 plot-dyn-reactions = Joint reactions |R| against time
 plot-dyn-mechanism = The mechanism at a sample, over the paths of its joints
+plot-dyn-mechanism-spatial = The mechanism at a sample, with its joint reactions to scale
 plot-dyn-path = Path of joint { $joint }
 plot-dyn-phase-line = ω against φ
 plot-dyn-residual = energy residual (W − ΔT)/max(|W|, |ΔT|, T₀, T, T_peak)
@@ -381,6 +382,8 @@ plot-dyn-at-start = { $joint } at t = 0
 plot-dyn-at-end = { $joint } at the end
 plot-dyn-path-line = path of joint { $joint }
 plot-dyn-sample = sample { $step } of 0 to { $last }: t = { $t } s; dashed: the joints' paths
+plot-dyn-sample-spatial = sample { $step } of 0 to { $last }: t = { $t } s
+plot-isometric = isometric view, { $up } up; dashed: the joints' axes; arrows: the reactions to scale
 plot-cam-svaj = Lift, velocity, acceleration and jerk against the cam angle (each over its peak)
 plot-cam-profile = The cam's profile, pitch curve and base circle, the follower at the largest pressure angle
 plot-cam-pressure = Pressure angle and radius of curvature against the cam angle

@@ -357,6 +357,7 @@ plot-dyn-phase = Retrato de fase: velocidad frente a ángulo
 plot-dyn-energy = Residuo de energía frente al tiempo
 plot-dyn-reactions = Reacciones en los pares |R| frente al tiempo
 plot-dyn-mechanism = El mecanismo en una muestra, sobre las trayectorias de sus pares
+plot-dyn-mechanism-spatial = El mecanismo en una muestra, con las reacciones en sus pares a escala
 plot-dyn-path = Trayectoria del par { $joint }
 plot-dyn-phase-line = ω frente a φ
 plot-dyn-residual = residuo de energía (W − ΔT)/max(|W|, |ΔT|, T₀, T, T_pico)
@@ -381,6 +382,8 @@ plot-dyn-at-start = { $joint } en t = 0
 plot-dyn-at-end = { $joint } al final
 plot-dyn-path-line = trayectoria del par { $joint }
 plot-dyn-sample = muestra { $step } de 0 a { $last }: t = { $t } s; a trazos: las trayectorias de los pares
+plot-dyn-sample-spatial = muestra { $step } de 0 a { $last }: t = { $t } s
+plot-isometric = vista isométrica, { $up } arriba; a trazos: los ejes de los pares; flechas: las reacciones a escala
 plot-cam-svaj = Elevación, velocidad, aceleración y sobreaceleración frente al ángulo de leva (cada una sobre su máximo)
 plot-cam-profile = El perfil de la leva, la curva primitiva y la circunferencia base, el seguidor en el mayor ángulo de presión
 plot-cam-pressure = Ángulo de presión y radio de curvatura frente al ángulo de leva

@@ -7,8 +7,8 @@ use crate::engine::model::Mechanism;
 use crate::i18n::{Msg, say};
 use crate::kind::chart::{Axis, Chart, Level, Listed, Pen};
 use crate::kind::plots::{Drawn, Job, Options, cursor, deg, magnitudes, no_step, num, reaction_series, rows, sig, xy};
-use crate::kinds::mechanism::drawing;
 use crate::kinds::mechanism::motion::{self, Still};
+use crate::kinds::mechanism::{drawing, isometric};
 use serde_json::Value;
 
 const MECHANISM: &str = "/machine/mechanism";
@@ -27,6 +27,9 @@ pub fn list(job: &Job) -> Vec<Listed> {
     let first = rows(machine, "samples").first();
     if first.is_some_and(|s| !rows(s, "reactions").is_empty()) {
         out.push(Listed::new("reactions", say("plot-dyn-reactions")));
+    }
+    if machine["space"] == "spatial" && isometric::model(job.request, MECHANISM).is_some() {
+        out.push(Listed::new("mechanism", say("plot-dyn-mechanism-spatial")));
     }
     if first.is_some_and(|s| !rows(s, "bodies").is_empty())
         && let Some(m) = drawing::model(job.request, MECHANISM)
@@ -202,6 +205,14 @@ fn motion(job: &Job, title: String) -> Drawn {
 fn mechanism(job: &Job, title: String, step: usize) -> Drawn {
     let samples = machine_samples(job.result);
     let s = samples.get(step).ok_or_else(|| no_step(step, samples.len()))?;
+    let t = num(s, "t").map_or(String::new(), sig);
+    let spatial = job.result["machine"]["space"] == "spatial";
+    let note = Msg::new(if spatial { "plot-dyn-sample-spatial" } else { "plot-dyn-sample" });
+    let note = note.arg("step", step).arg("last", samples.len() - 1).arg("t", t).text();
+    if spatial {
+        let drawn = isometric::drawn(job.request, MECHANISM, (rows(s, "bodies"), rows(s, "reactions")), title);
+        return Ok(drawn.map(|c| isometric::noted(c, note)));
+    }
     let Some(m) = drawing::model(job.request, MECHANISM) else { return Ok(None) };
     let mut c =
         drawing::draw(&m, &drawing::poses(&m, rows(s, "bodies")), rows(s, "reactions"), rows(s, "contacts"), title);
@@ -212,8 +223,5 @@ fn mechanism(job: &Job, title: String, step: usize) -> Drawn {
             l
         }));
     }
-    let t = num(s, "t").map_or(String::new(), sig);
-    let note = Msg::new("plot-dyn-sample").arg("step", step).arg("last", samples.len() - 1).arg("t", t);
-    c.subtitle = Some(note.text());
-    Ok(Some(c))
+    Ok(Some(c.subtitle(note)))
 }

@@ -8,8 +8,8 @@
 use crate::i18n::{Msg, say};
 use crate::kind::chart::{Axis, Chart, Level, Listed, Mark, Pen};
 use crate::kind::plots::{Drawn, Job, Options, cursor, deg, magnitudes, no_step, num, reaction_series, rows, sig, xy};
-use crate::kinds::mechanism::drawing;
 use crate::kinds::mechanism::motion::{self, Still};
+use crate::kinds::mechanism::{drawing, isometric};
 use serde_json::Value;
 
 pub fn list(job: &Job) -> Vec<Listed> {
@@ -19,7 +19,8 @@ pub fn list(job: &Job) -> Vec<Listed> {
     if has("driving") {
         out.push(Listed::new("driving", say("plot-ks-driving")));
     }
-    let spatial = steps.iter().any(|s| s["reactions"][0].get("force").is_some());
+    let spatial =
+        steps.iter().any(|s| s["kinematics"][0].get("position").is_some() || s["reactions"][0].get("force").is_some());
     if has("reactions") {
         out.push(Listed::new("reactions", say("plot-ks-reactions")));
     }
@@ -40,7 +41,10 @@ pub fn list(job: &Job) -> Vec<Listed> {
         out.push(Listed::new("shaking", say("plot-ks-shaking")));
         out.push(Listed::new("shaking-moment", say("plot-ks-shaking-moment")));
     }
-    if has("kinematics") && drawing::model(job.request, "/mechanism").is_some() {
+    if has("kinematics") && spatial && isometric::model(job.request, "/mechanism").is_some() {
+        out.push(Listed::new("mechanism", say("plot-ks-mechanism")));
+    }
+    if has("kinematics") && !spatial && drawing::model(job.request, "/mechanism").is_some() {
         out.push(Listed::new("mechanism", say("plot-ks-mechanism")));
         if steps.len() > 1 {
             out.push(Listed::new("motion", say("plot-ks-motion")));
@@ -223,13 +227,16 @@ const SWEEP_SECONDS: f64 = 4.0;
 fn mechanism(job: &Job, title: String, step: usize) -> Drawn {
     let steps = rows(job.result, "steps");
     let s = steps.get(step).ok_or_else(|| no_step(step, steps.len()))?;
+    let x = input(job.result)(s).map_or(String::new(), sig);
+    let unit = if angular(job.result) { "°" } else { " m" };
+    let note = Msg::new("plot-ks-step").arg("step", step).arg("last", steps.len() - 1);
+    let note = note.arg("value", format!("{x}{unit}")).text();
+    if s["kinematics"][0].get("position").is_some() {
+        let drawn = isometric::drawn(job.request, "/mechanism", (rows(s, "kinematics"), rows(s, "reactions")), title);
+        return Ok(drawn.map(|c| isometric::noted(c, note)));
+    }
     let Some(m) = drawing::model(job.request, "/mechanism") else { return Ok(None) };
     let poses = drawing::poses(&m, rows(s, "kinematics"));
     let reactions = s.get("reactions").and_then(Value::as_array).map_or(&[][..], Vec::as_slice);
-    let x = input(job.result)(s).map_or(String::new(), sig);
-    let unit = if angular(job.result) { "°" } else { " m" };
-    let mut c = drawing::draw(&m, &poses, reactions, rows(s, "contacts"), title);
-    let note = Msg::new("plot-ks-step").arg("step", step).arg("last", steps.len() - 1);
-    c.subtitle = Some(note.arg("value", format!("{x}{unit}")).text());
-    Ok(Some(c))
+    Ok(Some(drawing::draw(&m, &poses, reactions, rows(s, "contacts"), title).subtitle(note)))
 }

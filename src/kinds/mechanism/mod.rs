@@ -8,6 +8,7 @@ pub mod drawing;
 mod energy;
 mod inertia;
 mod inputs;
+pub mod isometric;
 mod joints;
 mod loads;
 pub mod motion;
