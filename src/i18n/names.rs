@@ -62,6 +62,24 @@ const SPANISH: &[(&str, &str)] = &[
     ("articulacion", "revolute"),
     ("prismatico", "prismatic"),
     ("prismatica", "prismatic"),
+    ("cilindrico", "cylindrical"),
+    ("cilindrica", "cylindrical"),
+    ("esferico", "spherical"),
+    ("esferica", "spherical"),
+    ("rotula", "spherical"),
+    ("cardan", "universal"),
+    ("junta-cardan", "universal"),
+    ("junta-de-cardan", "universal"),
+    ("junta-de-hooke", "universal"),
+    ("junta-universal", "universal"),
+    ("esfera-en-cilindro", "sphere-in-cylinder"),
+    ("esfera-cilindro", "sphere-in-cylinder"),
+    // A spatial input's coordinate.
+    ("giro", "rotation"),
+    ("rotacion", "rotation"),
+    ("deslizamiento", "slide"),
+    ("desplazamiento", "slide"),
+    ("traslacion", "slide"),
     ("pasador-ranura", "pin-slot"),
     ("pasador-en-ranura", "pin-slot"),
     ("engranaje", "gear"),
@@ -151,6 +169,14 @@ mod tests {
         assert_eq!(read("Polinómico 345", &["polynomial-345", "polynomial-4567"]), Some("polynomial-345"));
         assert_eq!(read("polinómica 4-5-6-7", &["polynomial-345", "polynomial-4567"]), Some("polynomial-4567"));
         assert_eq!(read("pin_slot", &["revolute", "pin-slot"]), Some("pin-slot"));
+        let spatial = ["revolute", "prismatic", "cylindrical", "spherical", "universal", "sphere-in-cylinder"];
+        assert_eq!(read("Esférico", &spatial), Some("spherical"));
+        assert_eq!(read("junta cardán", &spatial), Some("universal"));
+        assert_eq!(read("Cilíndrica", &spatial), Some("cylindrical"));
+        assert_eq!(read("esfera en cilindro", &spatial), Some("sphere-in-cylinder"));
+        assert_eq!(read("rotación", &spatial), Some("revolute"));
+        assert_eq!(read("rotación", &["rotation", "slide"]), Some("rotation"));
+        assert_eq!(read("Desplazamiento", &["rotation", "slide"]), Some("slide"));
         assert_eq!(read("rodillos", &FOLLOWERS), None);
         assert_eq!(read("reposo", &FOLLOWERS), None);
     }

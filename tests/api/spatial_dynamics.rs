@@ -192,3 +192,41 @@ async fn spatial_dynamics_refusals_point_at_their_fields() {
     let track = errors.as_array().unwrap().iter().find(|e| e["pointer"] == "/machine/track").unwrap();
     assert!(track["message"].as_str().unwrap().contains("espacial"), "{track}");
 }
+
+/// The spatial templates at their defaults, against their sources:
+/// `bricard-linkage` (IFToMM A04) puts the tip of rod 2 (drawn at (1, −1,
+/// 0)) where Exudyn 1.13.6 does at 10 s, (0.999731, −1.0000, −2.69e-4), to
+/// 2e-3 (our run of the peer, its error not stated), with T + V held at
+/// its start, −3·9.81 J, to 1e-7 of it; `flyball-governor` (IFToMM A05)
+/// settles its sleeve at Exudyn's test log's s(10) = 0.61963 m to 1e-4;
+/// `hooke-joint` needs τ₁ = T·ω₂/ω₁ over its turn, to 1e-9 N·m.
+#[tokio::test]
+async fn the_spatial_templates_answer_as_their_sources() {
+    use crate::helpers::template_request;
+    let app = TestApp::new().await;
+    let job = dynamics(&app, &template_request("bricard-linkage")).await;
+    let samples = job["result"]["machine"]["samples"].as_array().unwrap().clone();
+    let e0 = -3.0 * 9.81;
+    for s in &samples {
+        let e = number(&s["energy"]["kinetic"]["total"]) + number(&s["energy"]["potential"]["gravity"]);
+        assert!((e - e0).abs() < 1e-7 * e0.abs(), "T + V = {e} at t = {}", s["t"]);
+    }
+    let rod2 = &samples.last().unwrap()["bodies"][1];
+    // The tip: r + R·(P − G), P − G = (0, −0.5, 0) as drawn.
+    let tip: Vec<f64> = (0..3).map(|i| number(&rod2["position"][i]) - 0.5 * number(&rod2["rotation"][i][1])).collect();
+    let exudyn = [0.999731, -1.0, -2.69e-4];
+    let gap = tip.iter().zip(exudyn).map(|(a, b)| (a - b).powi(2)).sum::<f64>().sqrt();
+    assert!(gap < 2e-3, "P3(10) = {tip:?}");
+    let job = dynamics(&app, &template_request("flyball-governor")).await;
+    let last = job["result"]["machine"]["samples"].as_array().unwrap().last().unwrap().clone();
+    let s = number(&last["bodies"][3]["position"][2]);
+    assert!((s - 0.61963).abs() < 1e-4, "s(10) = {s}");
+    let r = app.post("/v1/kinetostatics", &template_request("hooke-joint")).await;
+    assert_eq!(r.status, StatusCode::CREATED, "{}", r.text);
+    let beta = std::f64::consts::PI / 6.0;
+    for step in r.json()["result"]["steps"].as_array().unwrap() {
+        let theta = number(&step["input"]);
+        let ratio = beta.cos() / (1.0 - beta.sin().powi(2) * theta.cos().powi(2));
+        assert!((number(&step["driving"]) - 7.0 * ratio).abs() < 1e-9, "τ₁ at θ = {theta}");
+    }
+}

@@ -6,7 +6,7 @@ use crate::helpers::{TestApp, case, request};
 use axum::http::StatusCode;
 use serde_json::{Value, json};
 
-const BUILTIN: [&str; 31] = [
+const BUILTIN: [&str; 34] = [
     "p103-slider-flywheel",
     "p103-class",
     "p107-two-stroke-engine",
@@ -38,6 +38,9 @@ const BUILTIN: [&str; 31] = [
     "rotor-disk-angle",
     "rotor-disk-accelerating",
     "double-pendulum",
+    "hooke-joint",
+    "bricard-linkage",
+    "flyball-governor",
 ];
 
 async fn number(app: &TestApp, path: &str) -> f64 {

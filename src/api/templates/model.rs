@@ -236,6 +236,9 @@ pub const LIBRARY_FILES: &[(&str, &str)] = &[
     ("rotor-disk-angle.json", include_str!("../../../library/rotor-disk-angle.json")),
     ("rotor-disk-accelerating.json", include_str!("../../../library/rotor-disk-accelerating.json")),
     ("double-pendulum.json", include_str!("../../../library/double-pendulum.json")),
+    ("hooke-joint.json", include_str!("../../../library/hooke-joint.json")),
+    ("bricard-linkage.json", include_str!("../../../library/bricard-linkage.json")),
+    ("flyball-governor.json", include_str!("../../../library/flyball-governor.json")),
 ];
 
 /// A new template checked: its kind, name, parameters' names, pointers,
