@@ -13,7 +13,8 @@
 //! squeezer, mechanism form, 0.03 s; error = |β − β_ref|, rad, β_ref from
 //! bench/peers/andrews_scipy.py at rtol 1e-13, which agrees with the
 //! service's own tightest run to 2e-14); IFToMM A01 in `pendulum.rs`, the
-//! Exudyn slider-crank in `slider_crank.rs`.
+//! Exudyn slider-crank in `slider_crank.rs`, the spatial mechanisms against
+//! Exudyn in `spatial.rs`.
 
 mod contacts;
 mod flywheel;
@@ -28,6 +29,7 @@ mod kinetostatics;
 mod large;
 mod pendulum;
 mod slider_crank;
+mod spatial;
 mod statements;
 mod stiff;
 
@@ -226,10 +228,11 @@ fn plot(points: &[Point], title: &str, path: &str) -> Result<(), Box<dyn std::er
 type Section = fn() -> String;
 
 fn main() {
-    // `cargo bench --bench work_precision -- grading` (or contacts, large, flywheel, http, kinetostatics,
+    // `cargo bench --bench work_precision -- grading` (or spatial, contacts, large, flywheel, http, kinetostatics,
     // kinematics, stiff, statements, gauge, isolation): that section alone, printed, docs/ left as they are (the flywheel's plot in the
     // temporary folder).
-    let alone: [(&str, Section); 11] = [
+    let alone: [(&str, Section); 12] = [
+        ("spatial", spatial::section),
         ("gauge", gauge::section),
         ("contacts", contacts::section),
         ("kinematics", kinematics::section),
@@ -362,6 +365,7 @@ fn write_docs() {
     let names = [
         "large",
         "stiff",
+        "spatial",
         "kinetostatics",
         "kinematics",
         "statements",

@@ -25,6 +25,7 @@ use super::energy::energy;
 use super::kinematics::{Motion, Scaled, assemble, motion};
 use super::kinetostatics::{Actions, applied, inverse_dynamics};
 use super::model::{Load, LoadLaw, Mechanism, Pose};
+use super::range;
 use crate::engine::Deadline;
 use crate::engine::dynamics::{
     DynamicsError, DynamicsSolution, End, Failure, Integrator, Model, Sample, Settings, Start, energy_residual, run,
@@ -103,6 +104,9 @@ struct Equations<'a> {
     size: f64,
     /// The loads, where none varies.
     fixed: Option<Vec<Load>>,
+    /// The inputs' [value, rate, second rate] given to `evaluate`: nothing
+    /// (their rows are read, not prescribed).
+    at_rest: Vec<[f64; 3]>,
 }
 
 impl Equations<'_> {
@@ -122,14 +126,25 @@ impl Equations<'_> {
         DVector::from_column_slice(&y[7 * self.n..13 * self.n])
     }
 
-    /// The loads at (t, y).
-    fn loads(&self, t: f64, y: &[f64], pose: &Pose, v: &DVector<f64>) -> Cow<'_, [Load]> {
+    /// The loads at (t, y), the first input turning at `omega`.
+    fn loads(&self, t: f64, y: &[f64], omega: f64) -> Cow<'_, [Load]> {
         if let Some(fixed) = &self.fixed {
             return Cow::Borrowed(fixed);
         }
         let phi = y[13 * self.n].rem_euclid(self.p.period);
-        let omega = if self.p.loads.iter().any(LoadLaw::uses_state) { self.speed_at(pose, v) } else { 0.0 };
         Cow::Owned(self.p.loads.iter().map(|l| l.at(phi, [omega, t])).collect())
+    }
+
+    /// Every row at (pose, v) with γ: the joints' (all, the redundant
+    /// too), then the inputs' — one evaluation for the equations of motion
+    /// and the inputs' rates.
+    fn all_rows(&self, pose: &Pose, v: &DVector<f64>) -> Rows {
+        evaluate(&self.inputs, pose, Some(v), &self.at_rest)
+    }
+
+    /// Input k's rate from `all`'s rows: its gradient times v.
+    fn rate_in(&self, all: &Rows, k: usize, v: &DVector<f64>) -> f64 {
+        all.jac.row(self.joints.joint_rows() + k).iter().zip(v.iter()).map(|(a, b)| a * b).sum()
     }
 
     /// The kept rows of Φ at `pose` (with γ at `v`).
@@ -147,51 +162,67 @@ impl Equations<'_> {
 
     /// (a, Q·v): the accelerations and the applied actions' power; None
     /// where the equations are singular.
-    fn accelerations(&self, pose: &Pose, v: &DVector<f64>, loads: &[Load]) -> Option<(DVector<f64>, f64)> {
+    fn accelerations(
+        &self,
+        (pose, v): (&Pose, &DVector<f64>),
+        loads: &[Load],
+        all: &Rows,
+    ) -> Option<(DVector<f64>, f64)> {
         let (n, m) = (6 * self.n, self.kept.len());
-        let rows = self.rows(pose, Some(v));
         let q = applied(&self.joints, loads, pose, v);
-        let mut k = DMatrix::zeros(n + m, n + m);
         let mut rhs = DVector::zeros(n + m);
+        let mut blocks = Vec::with_capacity(self.n);
         for (b, body) in self.joints.bodies.iter().enumerate() {
             let rot = pose.rotation(b + 1);
             let j = rot * body.inertia * rot.transpose();
             let omega = Vector3::from(v.fixed_rows::<3>(6 * b + 3));
             let gyro = omega.cross(&(j * omega));
-            for c in 0..3 {
-                k[(6 * b + c, 6 * b + c)] = body.mass;
-                rhs[6 * b + c] = q[6 * b + c];
-                rhs[6 * b + 3 + c] = q[6 * b + 3 + c] - gyro[c];
-            }
-            k.view_mut((6 * b + 3, 6 * b + 3), (3, 3)).copy_from(&j);
+            rhs.fixed_rows_mut::<3>(6 * b).copy_from(&q.fixed_rows::<3>(6 * b));
+            rhs.fixed_rows_mut::<3>(6 * b + 3).copy_from(&(q.fixed_rows::<3>(6 * b + 3) - gyro));
+            blocks.push((body.mass, j));
         }
-        k.view_mut((n, 0), (m, n)).copy_from(&rows.jac);
-        k.view_mut((0, n), (n, m)).copy_from(&rows.jac.transpose());
-        rhs.rows_mut(n, m).copy_from(&rows.gamma);
-        let solved = k.lu().solve(&rhs)?;
-        let a = solved.rows(0, n).into_owned();
+        let jac = DMatrix::from_fn(m, n, |i, c| all.jac[(self.kept[i], c)]);
+        for (i, &r) in self.kept.iter().enumerate() {
+            rhs[n + i] = all.gamma[r];
+        }
+        let forces = rhs.rows(0, n).into_owned();
+        let a = match range::accelerations(&blocks, &jac, &forces, &rhs.rows(n, m).into_owned()) {
+            Some(a) => a,
+            None => self.whole(&blocks, &jac, &rhs)?,
+        };
         a.iter().all(|x| x.is_finite()).then(|| (a, q.dot(v)))
     }
 
-    /// The first input's speed at (pose, v): its row's gradient times v.
-    fn speed_at(&self, pose: &Pose, v: &DVector<f64>) -> f64 {
-        let rows = evaluate(&self.inputs, pose, None, &vec![[0.0; 3]; self.inputs.inputs.len()]);
-        (rows.jac.row(self.joints.joint_rows()) * v)[0]
+    /// The accelerations from the whole system [M Φ_qᵀ; Φ_q 0] by LU (a
+    /// body without mass, rows near dependence).
+    fn whole(
+        &self,
+        blocks: &[(f64, nalgebra::Matrix3<f64>)],
+        jac: &DMatrix<f64>,
+        rhs: &DVector<f64>,
+    ) -> Option<DVector<f64>> {
+        let (n, m) = (jac.ncols(), jac.nrows());
+        let mut k = DMatrix::zeros(n + m, n + m);
+        for (b, (mass, j)) in blocks.iter().enumerate() {
+            k.view_mut((6 * b, 6 * b), (3, 3)).fill_diagonal(*mass);
+            k.view_mut((6 * b + 3, 6 * b + 3), (3, 3)).copy_from(j);
+        }
+        k.view_mut((n, 0), (m, n)).copy_from(jac);
+        k.view_mut((0, n), (n, m)).copy_from(&jac.transpose());
+        Some(k.lu().solve(rhs)?.rows(0, n).into_owned())
     }
 
-    /// Every input's [coordinate, speed, acceleration] at y with (v, a).
-    fn inputs_at(&self, y: &[f64], pose: &Pose, v: &DVector<f64>, a: &DVector<f64>) -> Vec<[f64; 3]> {
-        let list = &self.inputs.inputs;
-        let rows = evaluate(&self.inputs, pose, Some(v), &vec![[0.0; 3]; list.len()]);
+    /// Every input's [coordinate, speed, acceleration] at y with (v, a),
+    /// from `all`'s rows (φ̈ = Φ_q,φ·a − γ_φ).
+    fn inputs_at(&self, (y, pose): (&[f64], &Pose), all: &Rows, v: &DVector<f64>, a: &DVector<f64>) -> Vec<[f64; 3]> {
         let first = self.joints.joint_rows();
         let read = |(k, input): (usize, &super::model::Input)| {
-            let row = rows.jac.row(first + k);
             let joint = &self.joints.joints[input.joint];
             let now = || self.p.reference[k] + coordinate(&self.joints, pose, joint, input.coordinate);
             let x = if k == 0 { y[13 * self.n] } else { now() };
-            [x, (row * v)[0], (row * a)[0] - rows.gamma[first + k]]
+            [x, self.rate_in(all, k, v), self.rate_in(all, k, a) - all.gamma[first + k]]
         };
-        list.iter().enumerate().map(read).collect()
+        self.inputs.inputs.iter().enumerate().map(read).collect()
     }
 }
 
@@ -200,8 +231,10 @@ impl Model for Equations<'_> {
         let n = self.n;
         let pose = self.pose(y);
         let v = self.velocities(y);
-        let loads = self.loads(t, y, &pose, &v);
-        let Some((a, power)) = self.accelerations(&pose, &v, &loads) else { return dy.fill(f64::NAN) };
+        let all = self.all_rows(&pose, &v);
+        let speed = self.rate_in(&all, 0, &v);
+        let loads = self.loads(t, y, speed);
+        let Some((a, power)) = self.accelerations((&pose, &v), &loads, &all) else { return dy.fill(f64::NAN) };
         for b in 0..n {
             dy[3 * b..3 * b + 3].copy_from_slice(&y[7 * n + 6 * b..][..3]);
             let omega = Quaternion::from_imag(Vector3::from(v.fixed_rows::<3>(6 * b + 3)));
@@ -209,7 +242,7 @@ impl Model for Equations<'_> {
             dy[3 * n + 4 * b..][..4].copy_from_slice(pd.coords.as_slice());
         }
         dy[7 * n..13 * n].copy_from_slice(a.as_slice());
-        dy[13 * n] = self.speed_at(&pose, &v);
+        dy[13 * n] = speed;
         dy[13 * n + 1] = power;
     }
 
@@ -218,7 +251,8 @@ impl Model for Equations<'_> {
     }
 
     fn speed(&self, y: &[f64]) -> f64 {
-        self.speed_at(&self.pose(y), &self.velocities(y))
+        let v = self.velocities(y);
+        self.rate_in(&self.all_rows(&self.pose(y), &v), 0, &v)
     }
 
     /// Unit quaternions, then Φ = 0 and Φ_q·v = 0 by least-norm corrections.
@@ -263,9 +297,10 @@ impl Equations<'_> {
     /// The mechanism at a sample (t, y): its motion, energies and reactions.
     fn detail(&self, t: f64, y: &[f64]) -> Result<SpatialSample, DynamicsError> {
         let (pose, v) = (self.pose(y), self.velocities(y));
-        let loads = self.loads(t, y, &pose, &v);
+        let all = self.all_rows(&pose, &v);
+        let loads = self.loads(t, y, self.rate_in(&all, 0, &v));
         let singular = DynamicsError::Integration { t, reason: Failure::SingularMotion };
-        let (a, _) = self.accelerations(&pose, &v, &loads).ok_or(singular)?;
+        let (a, _) = self.accelerations((&pose, &v), &loads, &all).ok_or(singular)?;
         let rows = evaluate(&self.joints, &pose, Some(&v), &[]);
         let constraint_residual = self.gap(&rows);
         let actions = self.p.reactions.then(|| {
@@ -273,7 +308,7 @@ impl Equations<'_> {
             inverse_dynamics(&self.joints, &loads, &now)
         });
         Ok(SpatialSample {
-            inputs: self.inputs_at(y, &pose, &v, &a),
+            inputs: self.inputs_at((y, &pose), &all, &v, &a),
             energy: energy(&self.joints, &loads, &pose, &v),
             work: y[13 * self.n + 1],
             constraint_residual,
@@ -325,14 +360,16 @@ pub fn solve(p: &SpatialProblem) -> Result<SpatialSolution, DynamicsError> {
     }
     let n = m.n();
     let fixed = p.loads.iter().map(LoadLaw::fixed).collect();
-    let dae = Equations { p, joints, inputs: m.clone(), kept: kept.clone(), n, size, fixed };
+    let at_rest = vec![[0.0; 3]; m.inputs.len()];
+    let dae = Equations { p, joints, inputs: m.clone(), kept: kept.clone(), n, size, fixed, at_rest };
     let mut y0 = Vec::with_capacity(13 * n + 2);
     (0..n).for_each(|b| y0.extend(start.pose.r[b].iter()));
     (0..n).for_each(|b| y0.extend(start.pose.p[b].coords.iter()));
     y0.extend(start.v.iter());
     y0.extend([p.initial[0][0], 0.0]);
-    let loads = dae.loads(0.0, &y0, &start.pose, &start.v);
-    if dae.accelerations(&start.pose, &start.v, &loads).is_none() {
+    let moving = dae.all_rows(&start.pose, &start.v);
+    let loads = dae.loads(0.0, &y0, dae.rate_in(&moving, 0, &start.v));
+    if dae.accelerations((&start.pose, &start.v), &loads, &moving).is_none() {
         return Err(initial(Start::MovesNoMass));
     }
     let settings = settings(p, &start.v, size);

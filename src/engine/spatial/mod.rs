@@ -31,6 +31,7 @@ mod kinematics;
 mod kinetostatics;
 mod mobility;
 mod model;
+mod range;
 #[cfg(test)]
 mod tests;
 
