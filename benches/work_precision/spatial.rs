@@ -90,7 +90,11 @@ const PROBLEMS: [Problem; 3] = [
     Problem {
         name: "A05 flyball governor",
         model: "a05",
-        request: || template("flyball-governor"),
+        request: || {
+            let mut t = template("flyball-governor");
+            t["duration"] = json!("10 s");
+            t
+        },
         value: sleeve,
         integrator: "radau5",
         tolerances: &[1e-4, 1e-6, 1e-8],

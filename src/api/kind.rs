@@ -158,10 +158,12 @@ impl<K: Kind> AnyKind for Registered<K> {
         }
     }
     fn plots(&self, job: &plots::Job) -> Vec<crate::kind::chart::Listed> {
-        (K::PLOTS.list)(job)
+        let request = super::json::canonical::<K::Request>(job.request);
+        (K::PLOTS.list)(&plots::Job { request: &request, result: job.result })
     }
     fn plot(&self, job: &plots::Job, name: &str, options: &plots::Options) -> plots::Drawn {
-        (K::PLOTS.draw)(job, name, options)
+        let request = super::json::canonical::<K::Request>(job.request);
+        (K::PLOTS.draw)(&plots::Job { request: &request, result: job.result }, name, options)
     }
     fn files(&self) -> &'static [(&'static str, &'static str)] {
         K::FILES
@@ -173,7 +175,8 @@ impl<K: Kind> AnyKind for Registered<K> {
         K::has_file(result, name)
     }
     fn solution(&self, job: &plots::Job, step: usize, limits: &Limits) -> Option<Result<Solution, ApiError>> {
-        K::SOLUTION.map(|solve| solve(job, step, limits))
+        let request = super::json::canonical::<K::Request>(job.request);
+        K::SOLUTION.map(|solve| solve(&plots::Job { request: &request, result: job.result }, step, limits))
     }
     fn has_solution(&self, result: &Value) -> bool {
         K::has_solution(result)

@@ -137,6 +137,21 @@ pub fn parse<T: DeserializeOwned>(raw: impl Into<Bytes>) -> Result<JsonBody<T>, 
     Err(ApiError::Invalid(unknown))
 }
 
+/// `value` with every name of the contract's lists written otherwise (a
+/// Spanish word, another case: `"espacial"`, `"junta cardán"`) written as
+/// the name, as [`parse`] reads it: a stored request as its kind reads it
+/// again (its plots, its worked solution), whatever words it was sent in.
+pub fn canonical<T: DeserializeOwned>(value: &serde_json::Value) -> serde_json::Value {
+    let mut value = value.clone();
+    for _ in 0..MAX_NAME_FIXES {
+        match read::<T>(&value).0 {
+            Err(e) if as_listed(&mut value, &e) => {}
+            _ => break,
+        }
+    }
+    value
+}
+
 /// Bytes of request the readings past its first error may read in all,
 /// and the most readings: each is a whole reading of the request.
 const READ_BUDGET: usize = 4 << 20;

@@ -32,6 +32,7 @@ mod kinetostatics;
 mod mobility;
 mod model;
 mod range;
+mod setup;
 #[cfg(test)]
 mod tests;
 

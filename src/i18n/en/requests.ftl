@@ -15,6 +15,7 @@ mechanism-cg = a body with mass needs "cg"
 mechanism-not-negative = must not be negative
 mechanism-gravity = must be [gx, gy], finite
 mechanism-vector = must be a finite, non-zero vector [x, y]
+mechanism-vector-in-space = three components, a vector in space: a spatial mechanism says "space": "spatial"; in the plane [x, y]
 mechanism-not-finite = { $function } is not finite at phi = { $phi } rad
 mechanism-negative-inertia = { $function } is negative ({ $value } kg*m^2) at phi = { $phi } rad
 mechanism-not-steady = the cycle is not in steady state: the net work of the torques over a cycle is { $net_work } J (largest lobe { $largest_area } J); add a torque with "balance": true or correct the loads

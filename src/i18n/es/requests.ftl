@@ -15,6 +15,7 @@ mechanism-cg = un cuerpo con masa necesita "cg", su centro de masas
 mechanism-not-negative = no debe ser negativo
 mechanism-gravity = debe ser [gx, gy], con valores finitos
 mechanism-vector = debe ser un vector [x, y] finito y no nulo
+mechanism-vector-in-space = tres componentes, un vector en el espacio: un mecanismo espacial dice "space": "spatial"; en el plano [x, y]
 mechanism-not-finite = { $function } no es finita en phi = { $phi } rad
 mechanism-negative-inertia = { $function } es negativo ({ $value } kg*m^2) en phi = { $phi } rad
 mechanism-not-steady = el ciclo no es estacionario: el trabajo neto de los pares en un ciclo es { $net_work } J (lóbulo mayor { $largest_area } J); añada un par con "balance": true o corrija las cargas

@@ -10,6 +10,7 @@ mod result;
 mod size;
 mod solution;
 mod space;
+mod table;
 
 use crate::engine::dynamics::mechanism::{self, MechanismProblem};
 use crate::engine::dynamics::{Integrator, ReducedProblem, solve};
@@ -29,8 +30,9 @@ use serde_json::Value;
 use utoipa::ToSchema;
 
 pub use machine::{DynamicsMachine, InputState, MachineDynamics, MachineSample};
-pub use result::{DynamicsAccuracy, DynamicsResult, EventDto, MachineResult, SampleDto, csv_table};
+pub use result::{DynamicsAccuracy, DynamicsResult, EventDto, MachineResult, SampleDto};
 pub use space::{SpatialMachineDynamics, SpatialMachineSample};
+pub use table::csv_table;
 
 /// Longest simulated time, s.
 pub const MAX_DURATION: f64 = 1e5;

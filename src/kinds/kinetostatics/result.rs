@@ -32,11 +32,14 @@ impl Scalars {
 
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct GrublerDto {
-    /// 3(N − 1) − 2·P_I − P_II, N counting the ground.
+    /// 3(N − 1) − 2·P_I − P_II, N counting the ground; in space Kutzbach's
+    /// 6(N − 1) − Σ(6 − fᵢ).
     pub mobility: i64,
-    /// 3(N − 1) equilibrium equations.
+    /// 3(N − 1) equilibrium equations (in space 6(N − 1)).
     pub equations: i64,
-    /// Reaction components 2·P_I + P_II plus one driving action per input.
+    /// Reaction components 2·P_I + P_II plus one driving action per input;
+    /// in space the reactions' Σ(6 − fᵢ) alone (equations − unknowns is
+    /// then the mobility).
     pub unknowns: i64,
 }
 

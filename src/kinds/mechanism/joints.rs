@@ -63,6 +63,7 @@ pub fn unit(e: &mut Errors, v: &[f64], at: &str) -> Option<[f64; 2]> {
             let n = x.hypot(*y);
             Some([x / n, y / n])
         }
+        [_, _, _] => e.refuse(at, Msg::new("mechanism-vector-in-space")),
         _ => e.refuse(at, Msg::new("mechanism-vector")),
     }
 }

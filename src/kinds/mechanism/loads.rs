@@ -126,6 +126,7 @@ fn load(
                 Some([x, y]) if x.is_finite() && y.is_finite() && x.hypot(*y) > 0.0 => {
                     Some([x / x.hypot(*y), y / x.hypot(*y)])
                 }
+                Some([_, _, _]) => e.refuse(&format!("{at}/direction"), Msg::new("mechanism-vector-in-space")),
                 _ => e.refuse(&format!("{at}/direction"), Msg::new("mechanism-vector")),
             };
             let magnitude =

@@ -81,7 +81,10 @@ pub enum JointType {
 }
 
 /// A joint between two bodies (`ground` is implicit). `axis` for prismatic and
-/// pin_slot, fixed in the first body: a prismatic joint's first body is the
+/// pin_slot (in space also revolute, cylindrical and sphere_in_cylinder; a
+/// spherical joint's optional `axis` is the one a rotation input turns
+/// about: the angle about it from a perpendicular fixed in the first body
+/// to the same perpendicular carried by the second), fixed in the first body: a prismatic joint's first body is the
 /// guide and its second slides along it; a pin_slot's first body carries
 /// the slot and its second the pin (swapping them is another mechanism).
 /// `ratio` or `teeth` (and `internal`) and optional `carrier` for gears.
@@ -151,15 +154,16 @@ pub struct FrictionDto {
     pub radius: Option<Quantity>,
 }
 
-/// A planar mechanism drawn in one assembled configuration (see the
-/// example of KinetostaticsRequest).
+/// A mechanism drawn in one assembled configuration, planar (see the
+/// example of KinetostaticsRequest) or, with `"space": "spatial"`, in
+/// three dimensions.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct MechanismDto {
     /// `planar` (the default) or `spatial`: points, axes and gravity with
     /// three coordinates, an inertia tensor, the spatial pairs.
     pub space: Option<MechanismSpace>,
-    /// Named points in the drawn configuration: `{NAME: [x, y]}`, each
-    /// coordinate in m or a length with its unit (`"8 cm"`).
+    /// Named points in the drawn configuration: `{NAME: [x, y]}` (in space
+    /// `[x, y, z]`), each coordinate in m or a length with its unit (`"8 cm"`).
     #[schema(value_type = Option<BTreeMap<String, DrawnCoords>>)]
     #[serde(default, deserialize_with = "points::drawn")]
     pub points: Option<DrawnPoints>,

@@ -34,8 +34,9 @@ class DynamicsMachine:
 
         Attributes:
             input_ (InputDto | list[InputDto]):
-            mechanism (MechanismDto): A planar mechanism drawn in one assembled configuration (see the
-                example of KinetostaticsRequest).
+            mechanism (MechanismDto): A mechanism drawn in one assembled configuration, planar (see the
+                example of KinetostaticsRequest) or, with `"space": "spatial"`, in
+                three dimensions.
             conserve_energy (bool | None | Unset): Hold the energy T + V to its initial value after every step (the
                 velocities scaled onto it): a long conservative run's error then
                 grows linearly with time instead of quadratically. Default: wherever

@@ -22,9 +22,12 @@ T = TypeVar("T", bound="GrublerDto")
 class GrublerDto:
     """ 
         Attributes:
-            equations (int): 3(N − 1) equilibrium equations.
-            mobility (int): 3(N − 1) − 2·P_I − P_II, N counting the ground.
-            unknowns (int): Reaction components 2·P_I + P_II plus one driving action per input.
+            equations (int): 3(N − 1) equilibrium equations (in space 6(N − 1)).
+            mobility (int): 3(N − 1) − 2·P_I − P_II, N counting the ground; in space Kutzbach's
+                6(N − 1) − Σ(6 − fᵢ).
+            unknowns (int): Reaction components 2·P_I + P_II plus one driving action per input;
+                in space the reactions' Σ(6 − fᵢ) alone (equations − unknowns is
+                then the mobility).
      """
 
     equations: int

@@ -32,7 +32,10 @@ T = TypeVar("T", bound="JointDto")
 @_attrs_define
 class JointDto:
     """ A joint between two bodies (`ground` is implicit). `axis` for prismatic and
-    pin_slot, fixed in the first body: a prismatic joint's first body is the
+    pin_slot (in space also revolute, cylindrical and sphere_in_cylinder; a
+    spherical joint's optional `axis` is the one a rotation input turns
+    about: the angle about it from a perpendicular fixed in the first body
+    to the same perpendicular carried by the second), fixed in the first body: a prismatic joint's first body is the
     guide and its second slides along it; a pin_slot's first body carries
     the slot and its second the pin (swapping them is another mechanism).
     `ratio` or `teeth` (and `internal`) and optional `carrier` for gears.

@@ -45,8 +45,9 @@ class KinetostaticsRequest:
 
         Attributes:
             input_ (InputDto | list[InputDto]):
-            mechanism (MechanismDto): A planar mechanism drawn in one assembled configuration (see the
-                example of KinetostaticsRequest).
+            mechanism (MechanismDto): A mechanism drawn in one assembled configuration, planar (see the
+                example of KinetostaticsRequest) or, with `"space": "spatial"`, in
+                three dimensions.
             actuators (list[str] | None | Unset): Where each input's driving effort acts, one joint per input in
                 order: a revolute joint (a torque) or a prismatic one (a force along
                 its axis); `driving` is then the actuators' efforts. Default: each

@@ -33,8 +33,9 @@ class MachineDto:
         Attributes:
             input_ (InputDto): An input coordinate and its range: a driven joint, or where the
                 statement puts the motion (a point along a direction, a body's rotation).
-            mechanism (MechanismDto): A planar mechanism drawn in one assembled configuration (see the
-                example of KinetostaticsRequest).
+            mechanism (MechanismDto): A mechanism drawn in one assembled configuration, planar (see the
+                example of KinetostaticsRequest) or, with `"space": "spatial"`, in
+                three dimensions.
             loads (list[LoadDto] | None | Unset):
      """
 

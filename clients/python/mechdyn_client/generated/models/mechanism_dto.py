@@ -28,8 +28,9 @@ T = TypeVar("T", bound="MechanismDto")
 
 @_attrs_define
 class MechanismDto:
-    """ A planar mechanism drawn in one assembled configuration (see the
-    example of KinetostaticsRequest).
+    """ A mechanism drawn in one assembled configuration, planar (see the
+    example of KinetostaticsRequest) or, with `"space": "spatial"`, in
+    three dimensions.
 
         Attributes:
             bodies (list[BodyDto]):
@@ -42,8 +43,9 @@ class MechanismDto:
                 `assembled_points` says where the points went.
             gravity (list[float] | None | Unset): Gravitational acceleration [gx, gy] (in space [gx, gy, gz]), m/s² (default
                 none).
-            points (MechanismDtoPointsType0 | None | Unset): Named points in the drawn configuration: `{NAME: [x, y]}`, each
-                coordinate in m or a length with its unit (`"8 cm"`).
+            points (MechanismDtoPointsType0 | None | Unset): Named points in the drawn configuration: `{NAME: [x, y]}` (in
+                space
+                `[x, y, z]`), each coordinate in m or a length with its unit (`"8 cm"`).
             space (MechanismSpace | None | Unset):
      """
 

@@ -21,8 +21,8 @@ T = TypeVar("T", bound="MechanismDtoPointsType0")
 
 @_attrs_define
 class MechanismDtoPointsType0:
-    """ Named points in the drawn configuration: `{NAME: [x, y]}`, each
-    coordinate in m or a length with its unit (`"8 cm"`).
+    """ Named points in the drawn configuration: `{NAME: [x, y]}` (in space
+    `[x, y, z]`), each coordinate in m or a length with its unit (`"8 cm"`).
 
      """
 
