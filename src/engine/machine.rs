@@ -22,6 +22,10 @@ use std::sync::{Arc, Mutex};
 /// Anchor configurations per period.
 const ANCHORS: usize = 360;
 
+/// The last evaluation, φ and [I*, dI*/dφ, M*] there (None where it does
+/// not assemble): the three are usually asked at the same φ in turn.
+pub type Last = Mutex<Option<(f64, Option<[f64; 3]>)>>;
+
 /// What a machine function returns.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Reduced {
@@ -30,16 +34,25 @@ pub enum Reduced {
     Torque,
 }
 
+/// A 1-DOF machine reduced to its input, planar ([`Machine`]) or spatial.
+pub trait Reduces: Send + Sync + std::fmt::Debug {
+    /// I*, dI*/dφ or M* at φ; NaN where the mechanism cannot be assembled
+    /// or once the deadline has passed.
+    fn eval(&self, phi: f64, what: Reduced) -> f64;
+    /// The loads' breakpoints in (0, period), for the flywheel's pieces.
+    fn breakpoints(&self) -> Vec<f64>;
+}
+
 /// One reduced quantity of a machine as a function of φ.
 #[derive(Debug)]
 pub struct ReducedCurve {
-    pub machine: Arc<Machine>,
+    pub machine: Arc<dyn Reduces>,
     pub what: Reduced,
 }
 
 impl ReducedCurve {
     /// `what` of `machine` as a function of φ.
-    pub fn function(machine: Arc<Machine>, what: Reduced) -> Function {
+    pub fn function(machine: Arc<dyn Reduces>, what: Reduced) -> Function {
         Function::Curve(Arc::new(Self { machine, what }))
     }
 }
@@ -59,11 +72,11 @@ impl Curve for ReducedCurve {
 
 /// An assembled configuration q at φ with its velocity coefficients g and h.
 #[derive(Debug)]
-struct Anchor {
-    phi: f64,
-    q: Vec<f64>,
-    g: Vec<f64>,
-    h: Vec<f64>,
+pub struct Anchor {
+    pub phi: f64,
+    pub q: Vec<f64>,
+    pub g: Vec<f64>,
+    pub h: Vec<f64>,
 }
 
 /// A driven 1-DOF mechanism with its loads, reduced to its input coordinate.
@@ -75,8 +88,7 @@ pub struct Machine {
     speed: f64,
     period: f64,
     anchors: Vec<Anchor>,
-    /// The last evaluation: I*, dI*/dφ and M* are usually asked at the same φ in turn.
-    last: Mutex<Option<(f64, Option<[f64; 3]>)>>,
+    last: Last,
     /// Past it, every evaluation is NaN (the caller reports the budget).
     deadline: Deadline,
 }
@@ -107,50 +119,18 @@ impl Machine {
         // out to infinity between two anchors and back from the other side):
         // I* and M* are not finite there.
         let mut impassable: Vec<f64> = anchors.iter().zip(&passed).filter(|(_, p)| !**p).map(|(a, _)| a.phi).collect();
-        impassable.extend(jumps(&anchors, &passed, mechanism.n_body_coordinates()));
+        let (coordinates, angle) = (mechanism.n_body_coordinates(), |c: usize| c % 3 == 2);
+        // The mechanism's size: its farthest centre of mass from the origin.
+        let size = anchors
+            .iter()
+            .flat_map(|a| (0..coordinates).filter(|&c| !angle(c)).map(|c| a.q[c].abs()))
+            .fold(0.0, f64::max);
+        impassable.extend(jumps(&anchors, &passed, (coordinates, size), angle));
         impassable.sort_by(f64::total_cmp);
         if let Some(&input) = impassable.first() {
             return Err(EngineError::SingularCycle { input, count: impassable.len() });
         }
         Ok(Self { mechanism, loads, speed, period, anchors, last: Mutex::new(None), deadline })
-    }
-
-    /// The loads' breakpoints in (0, period), for the flywheel's pieces.
-    pub fn breakpoints(&self) -> Vec<f64> {
-        let mut b = Vec::new();
-        for load in &self.loads {
-            match load {
-                Load::Force { magnitude: f, .. } | Load::Torque { value: f, .. } => {
-                    b.extend(f.breakpoints(self.period))
-                }
-                _ => {}
-            }
-        }
-        b
-    }
-
-    /// I*, dI*/dφ or M* at φ; NaN where the mechanism cannot be assembled
-    /// or once the deadline has passed.
-    pub fn eval(&self, phi: f64, what: Reduced) -> f64 {
-        if self.deadline.expired() {
-            return f64::NAN;
-        }
-        let cached = self.last.lock().ok().and_then(|l| l.filter(|(at, _)| *at == phi));
-        let values = match cached {
-            Some((_, v)) => v,
-            None => {
-                let v = self.reduced(phi);
-                if let Ok(mut l) = self.last.lock() {
-                    *l = Some((phi, v));
-                }
-                v
-            }
-        };
-        values.map_or(f64::NAN, |[i, di, m]| match what {
-            Reduced::Inertia => i,
-            Reduced::InertiaSlope => di,
-            Reduced::Torque => m,
-        })
     }
 
     /// The mechanism's coordinates q at φ (the period's configuration: the
@@ -200,6 +180,50 @@ impl Machine {
     }
 }
 
+impl Reduces for Machine {
+    fn breakpoints(&self) -> Vec<f64> {
+        let mut b = Vec::new();
+        for load in &self.loads {
+            match load {
+                Load::Force { magnitude: f, .. } | Load::Torque { value: f, .. } => {
+                    b.extend(f.breakpoints(self.period))
+                }
+                _ => {}
+            }
+        }
+        b
+    }
+
+    fn eval(&self, phi: f64, what: Reduced) -> f64 {
+        if self.deadline.expired() {
+            return f64::NAN;
+        }
+        remembered(&self.last, phi, what, || self.reduced(phi))
+    }
+}
+
+/// `what` of the values at φ, from `last` where it was the last φ asked
+/// (I*, dI*/dφ and M* are usually asked at the same φ in turn), else
+/// from `reduce`; NaN where there are none.
+pub fn remembered(last: &Last, phi: f64, what: Reduced, reduce: impl FnOnce() -> Option<[f64; 3]>) -> f64 {
+    let cached = last.lock().ok().and_then(|l| l.filter(|(at, _)| *at == phi));
+    let values = match cached {
+        Some((_, v)) => v,
+        None => {
+            let v = reduce();
+            if let Ok(mut l) = last.lock() {
+                *l = Some((phi, v));
+            }
+            v
+        }
+    };
+    values.map_or(f64::NAN, |[i, di, m]| match what {
+        Reduced::Inertia => i,
+        Reduced::InertiaSlope => di,
+        Reduced::Torque => m,
+    })
+}
+
 /// The inputs halfway between two anchors where a body coordinate jumps: its step
 /// to the next anchor off the trapezoid rule's, q_{k+1} − q_k ≈ (g_k +
 /// g_{k+1})·Δφ/2, by more than half the larger of the two (a smooth motion
@@ -208,16 +232,19 @@ impl Machine {
 /// coordinate that does not move); angles modulo 2π. A point running out to
 /// infinity between two anchors comes back from the other side (y = d·tan φ:
 /// both slopes huge and positive, the step negative). Pairs with a singular
-/// anchor (not `passed`, its slopes unknown) are left to it.
-fn jumps(anchors: &[Anchor], passed: &[bool], coordinates: usize) -> Vec<f64> {
-    let wrapped = |c: usize, d: f64| if c % 3 == 2 { (d + PI).rem_euclid(2.0 * PI) - PI } else { d };
+/// anchor (not `passed`, its slopes unknown) are left to it. Coordinate c
+/// is an angle where `angle(c)`; `size` is the mechanism's, m.
+pub fn jumps(
+    anchors: &[Anchor],
+    passed: &[bool],
+    (coordinates, size): (usize, f64),
+    angle: impl Fn(usize) -> bool,
+) -> Vec<f64> {
+    let wrapped = |c: usize, d: f64| if angle(c) { (d + PI).rem_euclid(2.0 * PI) - PI } else { d };
     let step = |k: usize, c: usize| wrapped(c, anchors[k + 1].q[c] - anchors[k].q[c]);
     let pairs = anchors.len().saturating_sub(1);
     let largest: Vec<f64> =
         (0..coordinates).map(|c| (0..pairs).map(|k| step(k, c).abs()).fold(0.0, f64::max)).collect();
-    // The mechanism's size: its farthest centre of mass from the origin.
-    let size =
-        anchors.iter().flat_map(|a| (0..coordinates).filter(|c| c % 3 != 2).map(|c| a.q[c].abs())).fold(0.0, f64::max);
     (0..pairs)
         .filter(|&k| passed[k] && passed[k + 1])
         .filter(|&k| {
@@ -225,7 +252,7 @@ fn jumps(anchors: &[Anchor], passed: &[bool], coordinates: usize) -> Vec<f64> {
             (0..coordinates).any(|c| {
                 let (taken, trapezoid) = (step(k, c), (a.g[c] + b.g[c]) * (b.phi - a.phi) / 2.0);
                 let off = (taken - trapezoid).abs();
-                let floor = 1e-6 * largest[c].max(if c % 3 == 2 { 1e-3 } else { 1e-3 * size });
+                let floor = 1e-6 * largest[c].max(if angle(c) { 1e-3 } else { 1e-3 * size });
                 off > 0.5 * taken.abs().max(trapezoid.abs()) && off > floor
             })
         })

@@ -84,6 +84,7 @@ mod spanish;
 mod spanish_results;
 mod spatial;
 mod spatial_dynamics;
+mod spatial_flywheel;
 mod stiff;
 mod storage;
 mod student;

@@ -97,8 +97,7 @@ async fn mobility_from_the_drawing_beside_the_count() {
 
 /// Every field a spatial mechanism reads wrong is refused at its pointer,
 /// in Spanish with `lang=es`; a planar mechanism given a point in space or
-/// a spatial pair says how to ask for space; a kind that does not take a
-/// spatial mechanism yet (a flywheel's machine) says so at its `space`.
+/// a spatial pair says how to ask for space.
 #[tokio::test]
 async fn spatial_errors_point_at_the_field() {
     let app = TestApp::new().await;
@@ -145,10 +144,6 @@ async fn spatial_errors_point_at_the_field() {
         "loads": [{"type": "torque", "body": "output", "value": 1}]});
     let got = app.pointers("/v1/kinetostatics", &statics).await;
     assert_eq!(got, ["/track", "/outputs/1", "/input/0", "/input/1/point", "/input/1", "/loads/0"]);
-    let flywheel = json!({"mean_speed": "60 rpm", "irregularity": 0.04, "torques": [{"name": "motor", "balance": true}],
-        "machine": {"mechanism": bricard(), "input": {"joint": "J1"}}});
-    let got = app.pointers("/v1/flywheel", &flywheel).await;
-    assert!(got.contains(&"/machine/mechanism/space".to_string()), "{got:?}");
 }
 
 async fn kinetostatics(app: &TestApp, body: &Value) -> Value {
@@ -205,6 +200,18 @@ async fn hooke_joint_passes_its_power() {
     assert_eq!(app.get(&format!("/v1/jobs/{id}/solution?step=0")).await.status, StatusCode::NOT_FOUND);
     let part = app.get(&format!("/v1/jobs/{id}/result/steps/3/reactions/2/moment/1?unit=N*cm")).await;
     assert_eq!(part.status, StatusCode::OK, "{}", part.text);
+    // Counted from 30° as drawn: the steps say the request's angles, from
+    // 30°, and the engine's θ is φ − 30°, so each driving torque is the
+    // first run's at the same step.
+    let mut from = request.clone();
+    from["input"] =
+        json!({"joint": "A", "speed": w1, "reference": "30 deg", "start": "30 deg", "end": "390 deg", "steps": 24});
+    let shifted = kinetostatics(&app, &from).await;
+    for (a, b) in r["steps"].as_array().unwrap().iter().zip(shifted["result"]["steps"].as_array().unwrap()) {
+        let (x, y) = (a["input"].as_f64().unwrap(), b["input"].as_f64().unwrap());
+        assert!((y - x - std::f64::consts::FRAC_PI_6).abs() < 1e-12, "input {y} against {x} + 30°");
+        assert!((a["driving"].as_f64().unwrap() - b["driving"].as_f64().unwrap()).abs() < 1e-9, "τ₁ at θ = {x}");
+    }
 }
 
 /// Seed 003's rotor posed as a spatial mechanism: a massless frame on a

@@ -18,7 +18,7 @@ async fn dynamics(app: &TestApp, body: &Value) -> Value {
 /// ground 0.3 m) with masses at the links' middles, drawn in the plane or
 /// in space (z = 0, every revolute's axis z, each body's tensor
 /// diag(I/2, I/2, I): a plate in the plane).
-fn four_bar(spatial: bool) -> Value {
+pub(crate) fn four_bar(spatial: bool) -> Value {
     let points = [
         ("O2", [0.0, 0.0]),
         ("A", [0.05, 0.086_602_540_378_443_87]),

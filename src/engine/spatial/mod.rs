@@ -29,6 +29,7 @@ pub mod dynamics;
 mod energy;
 mod kinematics;
 mod kinetostatics;
+pub mod machine;
 mod mobility;
 mod model;
 mod range;

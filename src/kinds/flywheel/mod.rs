@@ -118,7 +118,10 @@ fn compute(request: &FlywheelRequest, unknown: Vec<FieldError>, limits: &Limits)
         result.notes.extend(a.warnings);
         result.assembled_points = Some(a.points);
     }
-    result.machine_poses = machine.map(|m| poses(&m, p.period));
+    // A spatial machine's motion is not drawn (yet): the page draws the plane's.
+    if let Some(request::MachineModel::Planar(m)) = machine {
+        result.machine_poses = Some(poses(&m, p.period));
+    }
     Ok(result)
 }
 

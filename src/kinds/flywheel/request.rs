@@ -3,18 +3,36 @@
 use crate::engine::Deadline;
 use crate::engine::flywheel::{DiskSize, DiskSpec, FlywheelProblem, Load, TorqueItem};
 use crate::engine::function::Function;
-use crate::engine::machine::{Machine, Reduced, ReducedCurve};
+use crate::engine::machine::{Machine, Reduced, ReducedCurve, Reduces};
+use crate::engine::spatial::machine::SpatialMachine;
 use crate::i18n::Msg;
 use crate::kind::constants::{self, Constants};
 use crate::kind::limits::Limits;
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
 use crate::kinds::mechanism::MechanismDto;
-use crate::kinds::mechanism::{InputDto, LoadDto, machine_parts};
+use crate::kinds::mechanism::{InputDto, LoadDto, machine_parts, spatial_machine_parts};
 use crate::units::Dim;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 use std::sync::Arc;
 use utoipa::ToSchema;
+
+/// A flywheel's machine: in the plane (its poses drawn on the page) or in space.
+#[derive(Clone, Debug)]
+pub enum MachineModel {
+    Planar(Arc<Machine>),
+    Spatial(Arc<SpatialMachine>),
+}
+
+impl MachineModel {
+    /// I*, dI*/dφ and M* of either.
+    fn reduces(&self) -> Arc<dyn Reduces> {
+        match self {
+            Self::Planar(m) => m.clone(),
+            Self::Spatial(m) => m.clone(),
+        }
+    }
+}
 
 /// Most torque items in one request.
 pub const MAX_TORQUES: usize = 100;
@@ -76,9 +94,10 @@ pub struct FlywheelRequest {
     pub machine: Option<MachineDto>,
 }
 
-/// A driven mechanism with its loads, as in kinetostatics. The input's
-/// `speed`, `start`, `end` and `steps` do not apply: the flywheel's mean speed
-/// and period rule.
+/// A driven mechanism with its loads, as in kinetostatics, in the plane or
+/// in space (`"space": "spatial"`: the input a revolute's rotation or a
+/// cylindrical's). The input's `speed`, `start`, `end` and `steps` do not
+/// apply: the flywheel's mean speed and period rule.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct MachineDto {
     pub mechanism: MechanismDto,
@@ -136,7 +155,7 @@ impl FlywheelRequest {
         &self,
         limits: &Limits,
         deadline: Deadline,
-    ) -> Result<(FlywheelProblem, Option<Arc<Machine>>), Vec<crate::kind::problem::FieldError>> {
+    ) -> Result<(FlywheelProblem, Option<MachineModel>), Vec<crate::kind::problem::FieldError>> {
         let mut e = Errors::new(limits);
         constants::read(self.constants.as_ref(), &mut e);
         let period = match &self.period {
@@ -166,7 +185,9 @@ impl FlywheelRequest {
                 .and_then(|f| e.differentiable(&f, 1, "/reduced_inertia").map(|()| f)),
             None => Some(Function::Constant(0.0)),
         };
-        if let (Some(m), Some(t), Some(i)) = (machine.clone(), torques.as_mut(), inertia.as_mut()) {
+        if let (Some(m), Some(t), Some(i)) =
+            (machine.as_ref().map(MachineModel::reduces), torques.as_mut(), inertia.as_mut())
+        {
             let label = "/machine".to_string();
             t.push(TorqueItem {
                 name: "machine".into(),
@@ -264,12 +285,20 @@ impl FlywheelRequest {
     }
 
     /// The machine's reduced quantities, solved around the period at the mean speed.
-    fn machine(&self, e: &mut Errors, period: f64, mean_speed: f64, deadline: Deadline) -> Option<Arc<Machine>> {
+    fn machine(&self, e: &mut Errors, period: f64, mean_speed: f64, deadline: Deadline) -> Option<MachineModel> {
         let m = self.machine.as_ref()?;
         let loads = m.loads.as_deref().unwrap_or_default();
-        let (mechanism, loads) = machine_parts(e, &m.mechanism, &m.input, loads, period, "/machine")?;
-        match Machine::new(mechanism, loads, mean_speed, period, deadline) {
-            Ok(m) => Some(Arc::new(m)),
+        let built = if m.mechanism.is_spatial() {
+            let (mechanism, loads, reference) =
+                spatial_machine_parts(e, &m.mechanism, &m.input, loads, period, "/machine")?;
+            SpatialMachine::new(mechanism, loads, (mean_speed, period, reference), deadline)
+                .map(|m| MachineModel::Spatial(Arc::new(m)))
+        } else {
+            let (mechanism, loads) = machine_parts(e, &m.mechanism, &m.input, loads, period, "/machine")?;
+            Machine::new(mechanism, loads, mean_speed, period, deadline).map(|m| MachineModel::Planar(Arc::new(m)))
+        };
+        match built {
+            Ok(m) => Some(m),
             Err(err) => e.refuse("/machine", crate::kind::refused::engine_msg(&err)),
         }
     }

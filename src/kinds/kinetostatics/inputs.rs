@@ -131,15 +131,15 @@ fn input_range(e: &mut Errors, input: &InputDto, prismatic: bool, at: &str) -> O
 
 /// A spatial mechanism's inputs, each a joint's coordinate (a revolute's
 /// rotation, a prismatic's slide, a cylindrical's `coordinate`, a
-/// spherical's rotation about its `axis`), and the positions of every step
-/// counted from the drawing (less each input's `reference`); per input
-/// whether its coordinate is a length.
+/// spherical's rotation about its `axis`) with its value as drawn, and the
+/// positions of every step as the request counts them; per input whether
+/// its coordinate is a length.
 pub fn spatial(
     e: &mut Errors,
     m: &spatial::Mechanism,
     inputs: &[InputDto],
     many: bool,
-) -> (Vec<spatial::Input>, Vec<Vec<[f64; 3]>>, Vec<bool>) {
+) -> (Vec<Drawn>, Vec<Vec<[f64; 3]>>, Vec<bool>) {
     let (steps, max) = counted(e, inputs, many);
     let (mut chosen, mut ranges, mut linear) = (Vec::new(), Vec::new(), Vec::new());
     for (k, input) in inputs.iter().enumerate() {
@@ -149,9 +149,8 @@ pub fn spatial(
         }
         let Some(picked) = joint_coordinate(e, m, input, &at) else { continue };
         let length = picked.coordinate == spatial::Coordinate::Slide;
-        if let Some((reference, mut range)) = input_range(e, input, length, &at) {
-            (range.start, range.end) = (range.start - reference, range.end - reference);
-            chosen.push(picked);
+        if let Some((reference, range)) = input_range(e, input, length, &at) {
+            chosen.push(Drawn { input: picked, reference });
             ranges.push(range);
             linear.push(length);
         }
@@ -159,6 +158,14 @@ pub fn spatial(
     let valid = ranges.len() == inputs.len() && (1..=max).contains(&steps);
     let positions = if valid { laid_out(e, &ranges, steps) } else { Vec::new() };
     (chosen, positions, linear)
+}
+
+/// A spatial input and its value as drawn (its `reference`): the engine
+/// counts it from the drawing, the request and the result from the
+/// reference.
+pub struct Drawn {
+    pub input: spatial::Input,
+    pub reference: f64,
 }
 
 /// The steps the inputs share and the most allowed, each count checked.

@@ -30,7 +30,10 @@ struct Problem {
     mechanism: Mechanism,
     body_names: Vec<String>,
     loads: Vec<crate::engine::spatial::LoadLaw>,
+    /// Each step's inputs as the request counts them (from each `reference`).
     positions: Vec<Vec<[f64; 3]>>,
+    /// Each input's value as drawn, where the engine counts it from.
+    reference: Vec<f64>,
     linear: Vec<bool>,
     outputs: Vec<OutputKind>,
 }
@@ -58,9 +61,10 @@ pub fn compute(
         deadline
             .check(|| crate::engine::Progress::Assembled { step: k, of: p.positions.len() })
             .map_err(|e| engine_failure(e, "/input"))?;
-        let (assembled, taken) = assemble(m, x, &pose, k).map_err(|e| engine_failure(e, "/input"))?;
+        let drawn: Vec<[f64; 3]> = x.iter().zip(&p.reference).map(|(v, r)| [v[0] - r, v[1], v[2]]).collect();
+        let (assembled, taken) = assemble(m, &drawn, &pose, k).map_err(|e| engine_failure(e, "/input"))?;
         (pose, iterations) = (assembled, iterations.max(taken));
-        let now = motion(m, pose.clone(), x, k).map_err(|e| engine_failure(e, "/input"))?;
+        let now = motion(m, pose.clone(), &drawn, k).map_err(|e| engine_failure(e, "/input"))?;
         let loads: Vec<_> = p.loads.iter().map(|l| l.at(x[0][0], [x[0][1], 0.0])).collect();
         let actions = inverse_dynamics(m, &loads, &now);
         worst.0 = worst.0.max(actions.virtual_power.abs() / actions.largest_power.max(f64::MIN_POSITIVE));
@@ -93,8 +97,9 @@ fn read(r: &KinetostaticsRequest, e: &mut Errors) -> Option<Problem> {
     let period = if linear.first().copied().unwrap_or(false) { 1.0 } else { 2.0 * PI };
     let loads =
         spatial_loads(e, r.loads.as_deref().unwrap_or_default(), (&r.mechanism, &c), period, "/loads", &["phi"]);
-    let mechanism = Mechanism { inputs: chosen, ..c.mechanism };
-    Some(Problem { mechanism, body_names: c.body_names, loads, positions, linear, outputs })
+    let reference = chosen.iter().map(|d| d.reference).collect();
+    let mechanism = Mechanism { inputs: chosen.into_iter().map(|d| d.input).collect(), ..c.mechanism };
+    Some(Problem { mechanism, body_names: c.body_names, loads, positions, reference, linear, outputs })
 }
 
 /// One step as the result says it.

@@ -19,7 +19,9 @@ impl MechanismDto {
     pub(super) fn weights(&self, names: &[&String]) -> Vec<f64> {
         let pivot = |name: &str| {
             self.joints.iter().any(|j| {
-                j.kind == JointType::Revolute && named(j.at.as_ref(), name) && j.bodies.iter().any(|b| b == "ground")
+                j.kind == JointType::Revolute
+                    && named(j.at.as_ref(), name)
+                    && j.bodies.iter().any(|b| super::is_ground(b))
             })
         };
         let moving = self.moving_points();

@@ -6,6 +6,7 @@ use super::track::body_of;
 use super::{Coords, JointType, MechanismDto, PointRef, body_id};
 use crate::engine::kinetostatics::Load;
 use crate::engine::model::{Coordinate, Driver, JointKind, Mechanism};
+use crate::engine::spatial;
 use crate::i18n::Msg;
 use crate::kind::quantity::{Errors, FunctionDto, Quantity};
 use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
@@ -134,7 +135,7 @@ pub fn coordinate(
     let moving = |e: &mut Errors, name: &str, ptr: &str| match body_id(names, name) {
         Some(0) => e.refuse(ptr, Msg::new("input-ground")),
         Some(b) => Some(b),
-        None => e.refuse(ptr, Msg::new("mechanism-unknown-body").arg("name", name)),
+        None => e.refuse(ptr, super::unknown_body(names, name)),
     };
     match (&input.joint, &input.point, &input.body) {
         (Some(joint), None, None) => {
@@ -179,7 +180,7 @@ fn pinned_to_ground(dto: &MechanismDto, point: &str, body: &str) -> bool {
     dto.joints.iter().any(|j| {
         matches!(j.kind, JointType::Revolute)
             && matches!(&j.at, Some(PointRef::Name(n)) if n == point)
-            && j.bodies.iter().any(|b| b == "ground")
+            && j.bodies.iter().any(|b| super::is_ground(b))
             && j.bodies.iter().any(|b| b == body)
     })
 }
@@ -225,4 +226,31 @@ pub fn machine_parts(
     let loads = convert_loads(e, loads, mech, &c.body_names, period, &format!("{at}/loads"), &["phi"]);
     mechanism.drivers = vec![Driver::joint(joint?, reference?)];
     Some((mechanism, loads))
+}
+
+/// A flywheel's machine in space: the mechanism with its shaft (a joint's
+/// rotation) as its input, the loads (Functions of φ) and φ as drawn (the
+/// input's `reference`), every error under `at`.
+pub fn spatial_machine_parts(
+    e: &mut Errors,
+    mech: &MechanismDto,
+    input: &InputDto,
+    loads: &[LoadDto],
+    period: f64,
+    at: &str,
+) -> Option<(spatial::Mechanism, Vec<spatial::LoadLaw>, f64)> {
+    let c = mech.spatial(e, &format!("{at}/mechanism"))?;
+    let shaft = super::spatial::joint_coordinate(e, &c.mechanism, input, &format!("{at}/input"));
+    let shaft = match shaft {
+        Some(s) if s.coordinate == spatial::Coordinate::Slide => {
+            e.refuse(&format!("{at}/input/joint"), Msg::new("input-shaft-rotation"))
+        }
+        s => s,
+    };
+    let reference = match &input.reference {
+        Some(q) => e.angle(q, &format!("{at}/input/reference")),
+        None => Some(0.0),
+    };
+    let loads = super::spatial_loads::spatial_loads(e, loads, (mech, &c), period, &format!("{at}/loads"), &["phi"]);
+    Some((spatial::Mechanism { inputs: vec![shaft?], ..c.mechanism }, loads, reference?))
 }

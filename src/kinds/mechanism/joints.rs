@@ -91,9 +91,9 @@ pub fn joint_kind(e: &mut Errors, j: &JointDto, names: &[String], at: &str) -> O
         JointType::Gear => {
             let carrier = match &j.carrier {
                 None => Some(0),
-                Some(c) => match names.iter().position(|n| n == c) {
+                Some(c) => match super::body_id(names, c) {
                     Some(i) => Some(i),
-                    None => e.refuse(&format!("{at}/carrier"), Msg::new("mechanism-unknown-body").arg("name", c)),
+                    None => e.refuse(&format!("{at}/carrier"), super::unknown_body(names, c)),
                 },
             };
             let ratio = match (j.ratio, j.teeth.as_deref()) {

@@ -88,7 +88,7 @@ fn moving_body(e: &mut Errors, names: &[String], name: &str, at: &str) -> Option
     match body_id(names, name) {
         Some(0) => e.refuse(at, Msg::new("load-ground")),
         Some(b) => Some(b),
-        None => e.refuse(at, Msg::new("mechanism-unknown-body").arg("name", name)),
+        None => e.refuse(at, super::unknown_body(names, name)),
     }
 }
 
@@ -113,7 +113,7 @@ fn load(
         return None;
     }
     let ends = |e: &mut Errors, side: &str, v: &(String, PointRef)| {
-        let unknown = Msg::new("mechanism-unknown-body").arg("name", &v.0);
+        let unknown = super::unknown_body(names, &v.0);
         let b = body_id(names, &v.0).or_else(|| e.refuse(&format!("{at}/{side}/0"), unknown));
         let p = point_of(e, &v.1, mech, &format!("{at}/{side}/1"));
         Some((b?, p?))

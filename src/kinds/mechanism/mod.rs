@@ -2,6 +2,7 @@
 //! conversion into the engine's model, with every error under its pointer.
 
 mod assembly;
+mod bodies;
 mod contact;
 mod dimensions;
 pub mod drawing;
@@ -20,11 +21,12 @@ pub mod spatial;
 pub mod spatial_loads;
 pub mod track;
 
+pub use bodies::{body_id, is_ground, unknown_body};
 pub use contact::{CircleDto, CurveDto, LineDto, PolarDto, SplineDto};
 pub use dimensions::{Assembled, DimensionDto};
 pub use energy::{ByName, EnergyDto, NameOrder};
 pub use inertia::BodyInertia;
-pub use inputs::{InputCoordinate, InputDto, Inputs, coordinate, machine_parts};
+pub use inputs::{InputCoordinate, InputDto, Inputs, coordinate, machine_parts, spatial_machine_parts};
 pub use loads::{LoadDto, LoadType, MAX_LOADS, convert_loads};
 pub use points::{BodyPoint, Coords, DrawnCoords, DrawnPoints, PointRef};
 pub use reactions::{ContactDto, Name, Names, ReactionDto, Reactions, contact_warnings, names};
@@ -256,9 +258,9 @@ impl MechanismDto {
                 cg: cg.unwrap_or([0.0; 2]),
             });
         }
-        let body = |e: &mut Errors, n: &str, ptr: &str| match names.iter().position(|x| x == n) {
+        let body = |e: &mut Errors, n: &str, ptr: &str| match body_id(&names, n) {
             Some(i) => Some(i),
-            None => e.refuse(ptr, Msg::new("mechanism-unknown-body").arg("name", n)),
+            None => e.refuse(ptr, unknown_body(&names, n)),
         };
         let size = self.size(&points);
         let mut joints = Vec::with_capacity(self.joints.len());
@@ -384,9 +386,4 @@ impl MechanismDto {
 fn non_negative(e: &mut Errors, q: Option<&Quantity>, dim: Dim, at: &str) -> Option<f64> {
     let v = q.map_or(Some(0.0), |q| e.quantity(q, dim, at))?;
     if v >= 0.0 { Some(v) } else { e.refuse(at, Msg::new("mechanism-not-negative")) }
-}
-
-/// The id of a named body.
-pub fn body_id(names: &[String], name: &str) -> Option<BodyId> {
-    names.iter().position(|n| n == name)
 }

@@ -88,11 +88,9 @@ impl MechanismDto {
                 e.say(&format!("{ptr}/bodies"), Msg::new("joint-two-bodies"));
                 continue;
             }
-            let body = |e: &mut Errors, b: usize| match names.iter().position(|x| *x == j.bodies[b]) {
+            let body = |e: &mut Errors, b: usize| match super::body_id(&names, &j.bodies[b]) {
                 Some(i) => Some(i as BodyId),
-                None => {
-                    e.refuse(&format!("{ptr}/bodies/{b}"), Msg::new("mechanism-unknown-body").arg("name", &j.bodies[b]))
-                }
+                None => e.refuse(&format!("{ptr}/bodies/{b}"), super::unknown_body(&names, &j.bodies[b])),
             };
             let (b0, b1) = (body(e, 0), body(e, 1));
             if j.bodies[0] == j.bodies[1] {

@@ -45,7 +45,7 @@ fn load(
     let moving = |e: &mut Errors, name: &str| match body_id(names, name) {
         Some(0) => e.refuse(&format!("{at}/body"), Msg::new("load-ground")),
         Some(b) => Some(b),
-        None => e.refuse(&format!("{at}/body"), Msg::new("mechanism-unknown-body").arg("name", name)),
+        None => e.refuse(&format!("{at}/body"), super::unknown_body(names, name)),
     };
     let direction = |e: &mut Errors| super::spatial::unit(e, l.direction.as_deref()?, &format!("{at}/direction"));
     match l.kind {
@@ -65,7 +65,7 @@ fn load(
         }
         LoadType::Spring | LoadType::Damper => {
             let end = |e: &mut Errors, side: &str, v: &(String, PointRef)| {
-                let unknown = Msg::new("mechanism-unknown-body").arg("name", &v.0);
+                let unknown = super::unknown_body(names, &v.0);
                 let b = body_id(names, &v.0).or_else(|| e.refuse(&format!("{at}/{side}/0"), unknown));
                 let p = dto.point_in_space(e, &v.1, &format!("{at}/{side}/1"));
                 Some((b?, p?))

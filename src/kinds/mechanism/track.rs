@@ -100,7 +100,7 @@ pub fn resolve(dto: &MechanismDto, track: &[TrackDto], names: &[String], e: &mut
             TrackDto::Name(n) => drawn(e, &PointRef::Name(n.clone()), &ptr)
                 .and_then(|p| body_of(dto, n, names, e, &ptr).map(|b| Tracked { name: n.clone(), body: b, at: p })),
             TrackDto::Point(p) => {
-                let unknown = Msg::new("mechanism-unknown-body").arg("name", &p.body);
+                let unknown = super::unknown_body(names, &p.body);
                 let body = body_id(names, &p.body).or_else(|| e.refuse(&format!("{ptr}/body"), unknown));
                 let place = p.at.clone().unwrap_or_else(|| PointRef::Name(p.name.clone()));
                 let pointer = if p.at.is_some() { format!("{ptr}/at") } else { format!("{ptr}/name") };
@@ -124,7 +124,7 @@ pub(super) fn body_of(dto: &MechanismDto, point: &str, names: &[String], e: &mut
     let on_joints = joints.iter().flat_map(|j| j.bodies.iter());
     let at_cg = dto.bodies.iter().filter(|b| named(&b.cg)).map(|b| &b.name);
     let moving = on_joints.chain(at_cg).filter_map(|b| body_id(names, b)).find(|b| *b != 0);
-    let on_ground = joints.iter().any(|j| j.bodies.iter().any(|b| b == "ground"));
+    let on_ground = joints.iter().any(|j| j.bodies.iter().any(|b| super::is_ground(b)));
     match moving {
         Some(b) => Some(b),
         None if on_ground => Some(0),

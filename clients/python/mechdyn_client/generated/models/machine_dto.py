@@ -26,9 +26,10 @@ T = TypeVar("T", bound="MachineDto")
 
 @_attrs_define
 class MachineDto:
-    """ A driven mechanism with its loads, as in kinetostatics. The input's
-    `speed`, `start`, `end` and `steps` do not apply: the flywheel's mean speed
-    and period rule.
+    """ A driven mechanism with its loads, as in kinetostatics, in the plane or
+    in space (`"space": "spatial"`: the input a revolute's rotation or a
+    cylindrical's). The input's `speed`, `start`, `end` and `steps` do not
+    apply: the flywheel's mean speed and period rule.
 
         Attributes:
             input_ (InputDto): An input coordinate and its range: a driven joint, or where the
