@@ -13,6 +13,7 @@ pub mod expression;
 pub mod free_body_chart;
 pub mod function_csv;
 pub mod function_read;
+pub mod isometric_view;
 pub mod limits;
 pub mod notes;
 pub mod noticed;

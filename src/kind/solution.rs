@@ -55,8 +55,8 @@ pub struct Group {
 pub struct FreeBody {
     pub body: String,
     pub number: usize,
-    /// Its centre of mass G at the step, m.
-    pub cg: [f64; 2],
+    /// Its centre of mass G at the step, m: [x, y], in space [x, y, z].
+    pub cg: Vec<f64>,
     pub forces: Vec<Force>,
     pub couples: Vec<Couple>,
     pub equations: Equations,
@@ -75,17 +75,21 @@ pub struct Force {
     /// The joint it acts through (a reaction, a driving effort at a joint).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub joint: Option<String>,
-    /// Where it acts at the step, m.
-    pub at: [f64; 2],
+    /// Where it acts at the step, m: [x, y], in space [x, y, z].
+    pub at: Vec<f64>,
     /// N
     pub fx: f64,
     /// N
     pub fy: f64,
+    /// N, in space.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fz: Option<f64>,
     /// Its power at the step, F·v of its point, W.
     pub power: f64,
 }
 
-/// A couple on the body (counter-clockwise positive).
+/// A couple on the body: about z, counter-clockwise positive (seen from +z),
+/// and in space about x and y too.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct Couple {
     /// `M_I3`, `M23` (a pin's friction, a guide's couple), `M_m`.
@@ -95,21 +99,37 @@ pub struct Couple {
     pub by: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub joint: Option<String>,
-    /// N·m
+    /// M_z, N·m.
     pub moment: f64,
+    /// M_x, N·m, in space.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mx: Option<f64>,
+    /// M_y, N·m, in space.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub my: Option<f64>,
     /// M·ω of the body, W.
     pub power: f64,
 }
 
-/// The body's three equations with its actions' numbers: each is zero to rounding.
+/// The body's three equations with its actions' numbers (six in space):
+/// each is zero to rounding.
 #[derive(Clone, Debug, Serialize, Deserialize, ToSchema)]
 pub struct Equations {
     /// ΣF_x, N.
     pub sum_fx: f64,
     /// ΣF_y, N.
     pub sum_fy: f64,
-    /// ΣM_G, about the body's centre of mass, N·m.
+    /// ΣM_G, about the body's centre of mass (about z through it in space), N·m.
     pub sum_moment_about_cg: f64,
+    /// ΣF_z, N, in space.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sum_fz: Option<f64>,
+    /// ΣM_G about x, N·m, in space.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sum_mx_about_cg: Option<f64>,
+    /// ΣM_G about y, N·m, in space.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sum_my_about_cg: Option<f64>,
 }
 
 /// Each action's power at the step, summed over the bodies: the inputs'

@@ -85,6 +85,7 @@ mod spanish_results;
 mod spatial;
 mod spatial_dynamics;
 mod spatial_flywheel;
+mod spatial_free_bodies;
 mod stiff;
 mod storage;
 mod student;

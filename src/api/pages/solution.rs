@@ -80,20 +80,34 @@ fn page(id: &str, s: &Solution) -> Markup {
     layout::page(&title, body)
 }
 
-/// One body: its diagram, its actions, its three equations with the numbers.
+/// One body: its diagram, its actions, its three equations with the
+/// numbers (six in space: ΣF and ΣM_G along x, y and z).
 fn body_section(id: &str, step: usize, b: &FreeBody) -> Markup {
     let lang = i18n::current();
     let t = |key| tr(lang, key);
     let src = format!("{}?step={step}", plots::href(id, &format!("free-body-{}", b.body)));
-    let x: Vec<(String, f64)> = b.forces.iter().map(|f| (format!("{}ₓ", f.name), f.fx)).collect();
-    let y: Vec<(String, f64)> = b.forces.iter().map(|f| (format!("{}ᵧ", f.name), f.fy)).collect();
-    let moments: Vec<(String, f64)> = b
-        .forces
-        .iter()
-        .map(|f| (format!("r×{}", f.name), (f.at[0] - b.cg[0]) * f.fy - (f.at[1] - b.cg[1]) * f.fx))
-        .chain(b.couples.iter().map(|c| (c.name.clone(), c.moment)))
-        .collect();
+    let space = b.equations.sum_fz.is_some();
+    let component = |k: usize| -> Vec<(String, f64)> {
+        let sub = ["ₓ", "ᵧ", "_z"][k];
+        b.forces.iter().map(|f| (format!("{}{sub}", f.name), [f.fx, f.fy, f.fz.unwrap_or(0.0)][k])).collect()
+    };
+    let moments = |k: usize| -> Vec<(String, f64)> {
+        let arm = |f: &crate::kind::solution::Force| -> [f64; 3] {
+            std::array::from_fn(|i| f.at.get(i).copied().unwrap_or(0.0) - b.cg.get(i).copied().unwrap_or(0.0))
+        };
+        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+        let sub = if space { ["ₓ", "ᵧ", "_z"][k] } else { "" };
+        let forces = b.forces.iter().map(|f| {
+            let (r, v) = (arm(f), [f.fx, f.fy, f.fz.unwrap_or(0.0)]);
+            let name = if space { format!("(r×{}){sub}", f.name) } else { format!("r×{}", f.name) };
+            (name, r[i] * v[j] - r[j] * v[i])
+        });
+        let couple = |c: &crate::kind::solution::Couple| [c.mx.unwrap_or(0.0), c.my.unwrap_or(0.0), c.moment][k];
+        forces.chain(b.couples.iter().map(|c| (format!("{}{sub}", c.name), couple(c)))).collect()
+    };
     let e = &b.equations;
+    let at = |p: &[f64]| p.iter().map(|v| sig(*v)).collect::<Vec<_>>().join("; ");
+    let g = b.number;
     html! {
         h2 { (b.body) " (" (b.number) ")" }
         figure {
@@ -102,25 +116,37 @@ fn body_section(id: &str, step: usize, b: &FreeBody) -> Markup {
         }
         div.scroll { table {
             thead { tr { th { (t("page-solution-action")) } th { (t("page-solution-from")) } th { (t("page-solution-at")) }
-                th { "Fₓ (N)" } th { "Fᵧ (N)" } th { "M (N·m)" } } }
+                th { "Fₓ (N)" } th { "Fᵧ (N)" } @if space { th { "F_z (N)" } th { "Mₓ (N·m)" } th { "Mᵧ (N·m)" } }
+                th { @if space { "M_z (N·m)" } @else { "M (N·m)" } } } }
             tbody {
                 @for f in &b.forces { tr {
                     td { strong { (f.name) } " · " (t(kind_key(&f.kind))) }
                     td { (f.by.as_deref().unwrap_or("")) @if let Some(j) = &f.joint { " (" (j) ")" } }
-                    td.num { "(" (sig(f.at[0])) "; " (sig(f.at[1])) ")" }
-                    td.num { (sig(f.fx)) } td.num { (sig(f.fy)) } td {}
+                    td.num { "(" (at(&f.at)) ")" }
+                    td.num { (sig(f.fx)) } td.num { (sig(f.fy)) }
+                    @if space { td.num { (sig(f.fz.unwrap_or(0.0))) } td {} td {} }
+                    td {}
                 } }
                 @for c in &b.couples { tr {
                     td { strong { (c.name) } " · " (t(kind_key(&c.kind))) }
                     td { (c.by.as_deref().unwrap_or("")) @if let Some(j) = &c.joint { " (" (j) ")" } }
-                    td {} td {} td {} td.num { (sig(c.moment)) }
+                    td {} td {} td {}
+                    @if space { td {} td.num { (sig(c.mx.unwrap_or(0.0))) } td.num { (sig(c.my.unwrap_or(0.0))) } }
+                    td.num { (sig(c.moment)) }
                 } }
             }
         } }
         ul {
-            li { (equation("ΣFₓ", &x, e.sum_fx, "N")) }
-            li { (equation("ΣFᵧ", &y, e.sum_fy, "N")) }
-            li { (equation(&format!("ΣM_G{}", b.number), &moments, e.sum_moment_about_cg, "N·m")) }
+            li { (equation("ΣFₓ", &component(0), e.sum_fx, "N")) }
+            li { (equation("ΣFᵧ", &component(1), e.sum_fy, "N")) }
+            @if let Some(fz) = e.sum_fz { li { (equation("ΣF_z", &component(2), fz, "N")) } }
+            @if let (Some(mx), Some(my)) = (e.sum_mx_about_cg, e.sum_my_about_cg) {
+                li { (equation(&format!("ΣM_G{g}ₓ"), &moments(0), mx, "N·m")) }
+                li { (equation(&format!("ΣM_G{g}ᵧ"), &moments(1), my, "N·m")) }
+                li { (equation(&format!("ΣM_G{g}_z"), &moments(2), e.sum_moment_about_cg, "N·m")) }
+            } @else {
+                li { (equation(&format!("ΣM_G{g}"), &moments(2), e.sum_moment_about_cg, "N·m")) }
+            }
         }
     }
 }

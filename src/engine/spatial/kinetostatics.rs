@@ -50,6 +50,8 @@ pub struct Actions {
     pub virtual_power: f64,
     /// The largest of those powers' magnitudes, W: what the sum is small against.
     pub largest_power: f64,
+    /// λ, the rows' multipliers (the joints' and then the inputs').
+    pub lambda: DVector<f64>,
 }
 
 /// Each body's applied wrench about G (gravity and the loads) at `pose`
@@ -74,20 +76,32 @@ pub fn applied(m: &Mechanism, loads: &[Load], pose: &Pose, v: &DVector<f64>) -> 
                 add(&mut q, *body, *force, s.cross(force));
             }
             Load::Torque { body, torque } => add(&mut q, *body, Vector3::zeros(), *torque),
-            Load::Spring { bodies, at, k, length, c } => {
-                let ends = [0, 1].map(|e| pose.point(m, bodies[e], &at[e]));
-                let rates = [0, 1].map(|e| point_rate(v, bodies[e], &ends[e].1));
-                let e = ends[1].0 - ends[0].0;
-                let l = e.norm();
-                let u = if l > 0.0 { e / l } else { Vector3::zeros() };
-                let tension = k * (l - length) + c * u.dot(&(rates[1] - rates[0]));
-                add(&mut q, bodies[0], u * tension, ends[0].1.cross(&(u * tension)));
-                add(&mut q, bodies[1], -u * tension, ends[1].1.cross(&(-u * tension)));
+            Load::Spring { bodies, .. } => {
+                for (b, (_, arm, f)) in bodies.iter().zip(spring_ends(m, load, pose, v).into_iter().flatten()) {
+                    add(&mut q, *b, f, arm.cross(&f));
+                }
             }
         }
     }
     q
 }
+
+/// A spring's (and its damper's) ends: each body's point, its arm from G
+/// and the force on it, pulling the ends together when stretched (None
+/// for another load).
+pub fn spring_ends(m: &Mechanism, load: &Load, pose: &Pose, v: &DVector<f64>) -> Option<[End; 2]> {
+    let Load::Spring { bodies, at, k, length, c } = load else { return None };
+    let ends = [0, 1].map(|e| pose.point(m, bodies[e], &at[e]));
+    let rates = [0, 1].map(|e| point_rate(v, bodies[e], &ends[e].1));
+    let e = ends[1].0 - ends[0].0;
+    let l = e.norm();
+    let u = if l > 0.0 { e / l } else { Vector3::zeros() };
+    let tension = k * (l - length) + c * u.dot(&(rates[1] - rates[0]));
+    Some([(ends[0].0, ends[0].1, u * tension), (ends[1].0, ends[1].1, -u * tension)])
+}
+
+/// A spring's end: the point, its arm from G and the force there.
+pub type End = (Vector3<f64>, Vector3<f64>, Vector3<f64>);
 
 /// The velocity of a body's point at arm s from G.
 fn point_rate(v: &DVector<f64>, b: BodyId, s: &Vector3<f64>) -> Vector3<f64> {
@@ -146,6 +160,7 @@ pub fn inverse_dynamics(m: &Mechanism, loads: &[Load], motion: &Motion) -> Actio
         efforts,
         virtual_power: powers.iter().sum(),
         largest_power: powers.iter().fold(0.0, |a, p| a.max(p.abs())),
+        lambda,
     }
 }
 

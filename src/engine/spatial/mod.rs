@@ -27,6 +27,7 @@
 mod constraints;
 pub mod dynamics;
 mod energy;
+pub mod free_body;
 mod kinematics;
 mod kinetostatics;
 pub mod machine;

@@ -313,6 +313,8 @@ plot-most-joints = the { $most } largest of { $total } joints; each joint's own 
 plot-reactions-to-scale = joint reactions to scale: the largest, { $force } N, drawn { $length } m long
 plot-free-body = Free body of { $body } ({ $number }), step { $step }
 plot-free-body-sums = ΣFx = { $fx } N, ΣFy = { $fy } N, ΣM_G = { $moment } N·m
+plot-free-body-sums-spatial = isometric view, { $up } up; ΣF = ({ $forces }) N, ΣM_G = ({ $moments }) N·m
+plot-moments-to-scale = couples as moment vectors (double head): the largest, { $moment } N·m, drawn { $length } m long
 plot-forces-to-scale = forces to scale: the largest, { $force } N, drawn { $length } m long
 plot-ks-driving = Driving action against the input
 plot-ks-reactions = Joint reactions |R| against the input

@@ -313,6 +313,8 @@ plot-most-joints = los { $most } mayores de { $total } pares; la gráfica propia
 plot-reactions-to-scale = reacciones en los pares a escala: la mayor, { $force } N, dibujada de { $length } m
 plot-free-body = Sólido libre de { $body } ({ $number }), paso { $step }
 plot-free-body-sums = ΣFx = { $fx } N, ΣFy = { $fy } N, ΣM_G = { $moment } N·m
+plot-free-body-sums-spatial = vista isométrica, { $up } arriba; ΣF = ({ $forces }) N, ΣM_G = ({ $moments }) N·m
+plot-moments-to-scale = pares como vectores momento (doble punta): el mayor, { $moment } N·m, dibujado de { $length } m
 plot-forces-to-scale = fuerzas a escala: la mayor, { $force } N, dibujada de { $length } m
 plot-ks-driving = Acción motriz frente a la entrada
 plot-ks-reactions = Reacciones en los pares |R| frente a la entrada

@@ -21,10 +21,14 @@ use serde_json::Value;
 pub fn solution(job: &plots::Job, step: usize, limits: &Limits) -> Result<Solution, ApiError> {
     let request: DynamicsRequest = serde_json::from_value(job.request.clone())
         .map_err(|e| ApiError::Internal(format!("stored dynamics request: {e}")))?;
-    let Problem::Machine(p, report) = validated(vec![], request.to_problem(limits))? else {
+    let problem = validated(vec![], request.to_problem(limits))?;
+    let samples = job.result["machine"]["samples"].as_array().map(Vec::as_slice).unwrap_or_default();
+    if let Some(spatial) = super::space_solution::spatial(&problem) {
+        return super::space_solution::solution(spatial, samples, step);
+    }
+    let Problem::Machine(p, report) = problem else {
         return Err(ApiError::NoSolution { id: String::new(), kind: "dynamics".into() });
     };
-    let samples = job.result["machine"]["samples"].as_array().map(Vec::as_slice).unwrap_or_default();
     if step >= samples.len() {
         return Err(beyond_steps(step, samples.len()));
     }

@@ -110,11 +110,6 @@ impl Kind for Kinetostatics {
     const PLOTS: Plots = Plots { list: plots::list, draw: plots::draw };
     const SOLUTION: Option<crate::kind::solution::Solve> = Some(solution::solution);
 
-    /// A spatial mechanism's steps (reactions as force vectors) have none yet.
-    fn has_solution(result: &Value) -> bool {
-        !result["steps"][0]["reactions"][0]["force"].is_array()
-    }
-
     fn compute(
         request: &KinetostaticsRequest,
         unknown: Vec<FieldError>,

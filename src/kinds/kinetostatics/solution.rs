@@ -12,14 +12,8 @@ use crate::kind::solution::Solution;
 use crate::kind::validated;
 use crate::kinds::mechanism::solution::written;
 
-/// Step `step` of a stored kinetostatics job, solved again, with its problem.
-pub fn solved_step(job: &plots::Job, step: usize, limits: &Limits) -> Result<(Problem, Step), ApiError> {
-    let request: KinetostaticsRequest = serde_json::from_value(job.request.clone())
-        .map_err(|e| ApiError::Internal(format!("stored kinetostatics request: {e}")))?;
-    // A spatial mechanism's free bodies are not drawn yet: as a kind without bodies.
-    if request.mechanism.is_spatial() {
-        return Err(ApiError::NoSolution { id: String::new(), kind: "kinetostatics".into() });
-    }
+/// Step `step` of a stored planar kinetostatics job, solved again, with its problem.
+fn solved_step(request: &KinetostaticsRequest, step: usize, limits: &Limits) -> Result<(Problem, Step), ApiError> {
     let mut problem = validated(vec![], request.to_problem(limits))?;
     let count = problem.positions.len();
     if step >= count {
@@ -46,10 +40,15 @@ pub fn solved_step(job: &plots::Job, step: usize, limits: &Limits) -> Result<(Pr
     Ok((problem, found))
 }
 
-/// The worked solution of step `step` of a stored kinetostatics job; a
-/// singular step has none (422 at `?step=`).
+/// The worked solution of step `step` of a stored kinetostatics job (a
+/// spatial one's by `space::solution`); a singular step has none (422 at `?step=`).
 pub fn solution(job: &plots::Job, step: usize, limits: &Limits) -> Result<Solution, ApiError> {
-    let (problem, solved) = solved_step(job, step, limits)?;
+    let request: KinetostaticsRequest = serde_json::from_value(job.request.clone())
+        .map_err(|e| ApiError::Internal(format!("stored kinetostatics request: {e}")))?;
+    if request.mechanism.is_spatial() {
+        return super::space::solution(&request, step, limits);
+    }
+    let (problem, solved) = solved_step(&request, step, limits)?;
     let inputs = &problem.positions[step];
     let Some(bodies) = free_bodies(&problem.mechanism, &problem.loads, &solved, (inputs, 0.0)) else {
         return Err(crate::kind::plots::singular_step(step));

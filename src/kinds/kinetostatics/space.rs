@@ -11,16 +11,21 @@ use super::result::{
     GrublerDto, InputInfo, Kinematics, KinetostaticsAccuracy, KinetostaticsResult, Scalars, StepDto, StepReactions,
     SummaryDto,
 };
-use crate::engine::spatial::{Actions, Mechanism, Motion, Pose, assemble, inverse_dynamics, kinetic, mobility, motion};
+use crate::engine::spatial::free_body::free_bodies;
+use crate::engine::spatial::{
+    Actions, Load, Mechanism, Motion, Pose, assemble, inverse_dynamics, kinetic, mobility, motion,
+};
 use crate::i18n::Msg;
 use crate::kind::constants;
 use crate::kind::limits::Limits;
 use crate::kind::notes::Notes;
 use crate::kind::problem::{ApiError, FieldError};
 use crate::kind::quantity::Errors;
+use crate::kind::solution::Solution;
 use crate::kind::{engine_failure, validated};
 use crate::kinds::mechanism::Inputs;
 use crate::kinds::mechanism::motion3::{BodyMotion3, Reaction3};
+use crate::kinds::mechanism::solution3::written;
 use crate::kinds::mechanism::spatial_loads::spatial_loads;
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
@@ -54,24 +59,58 @@ pub fn compute(
         let e = crate::engine::EngineError::DofMismatch { dof: found.dof, inputs: m.inputs.len() };
         return Err(engine_failure(e, "/input"));
     }
-    let mut pose = Pose::drawn(m);
     let mut steps = Vec::with_capacity(p.positions.len());
-    let (mut worst, mut iterations) = ((0.0f64, 0.0f64), 0);
-    for (k, x) in p.positions.iter().enumerate() {
+    let mut worst = (0.0f64, 0.0f64);
+    let iterations = swept(&p, p.positions.len(), &deadline, |x, now, actions, _| {
+        worst.0 = worst.0.max(actions.virtual_power.abs() / actions.largest_power.max(f64::MIN_POSITIVE));
+        worst.1 = worst.1.max(now.rows.phi.amax());
+        steps.push(step(&p, x, now, actions));
+    })?;
+    Ok(result(&p, steps, &found, worst, iterations))
+}
+
+/// The first `count` steps of the sweep, each handed to `each` with its
+/// inputs, motion, actions and loads; the most Newton iterations a step took.
+fn swept(
+    p: &Problem,
+    count: usize,
+    deadline: &crate::engine::Deadline,
+    mut each: impl FnMut(&[[f64; 3]], &Motion, &Actions, &[Load]),
+) -> Result<usize, ApiError> {
+    let m = &p.mechanism;
+    let (mut pose, mut iterations) = (Pose::drawn(m), 0);
+    for (k, x) in p.positions.iter().take(count).enumerate() {
         deadline
-            .check(|| crate::engine::Progress::Assembled { step: k, of: p.positions.len() })
+            .check(|| crate::engine::Progress::Assembled { step: k, of: count })
             .map_err(|e| engine_failure(e, "/input"))?;
         let drawn: Vec<[f64; 3]> = x.iter().zip(&p.reference).map(|(v, r)| [v[0] - r, v[1], v[2]]).collect();
         let (assembled, taken) = assemble(m, &drawn, &pose, k).map_err(|e| engine_failure(e, "/input"))?;
         (pose, iterations) = (assembled, iterations.max(taken));
         let now = motion(m, pose.clone(), &drawn, k).map_err(|e| engine_failure(e, "/input"))?;
         let loads: Vec<_> = p.loads.iter().map(|l| l.at(x[0][0], [x[0][1], 0.0])).collect();
-        let actions = inverse_dynamics(m, &loads, &now);
-        worst.0 = worst.0.max(actions.virtual_power.abs() / actions.largest_power.max(f64::MIN_POSITIVE));
-        worst.1 = worst.1.max(now.rows.phi.amax());
-        steps.push(step(&p, x, &now, &actions));
+        each(x, &now, &inverse_dynamics(m, &loads, &now), &loads);
     }
-    Ok(result(&p, steps, &found, worst, iterations))
+    Ok(iterations)
+}
+
+/// The worked solution of step `step` of a stored spatial job: the sweep
+/// run again up to it (the same branch), its free bodies written.
+pub fn solution(r: &KinetostaticsRequest, step: usize, limits: &Limits) -> Result<Solution, ApiError> {
+    let mut e = Errors::new(limits);
+    let read = read(r, &mut e);
+    let p = validated(vec![], read.filter(|_| e.list.is_empty()).ok_or(e.list))?;
+    let count = p.positions.len();
+    if step >= count {
+        return Err(crate::kind::plots::beyond_steps(step, count));
+    }
+    let mut found = None;
+    swept(&p, step + 1, &limits.deadline(), |x, now, actions, loads| {
+        found = Some((x[0][0], free_bodies(&p.mechanism, loads, now, actions)));
+    })?;
+    let (_, bodies) = found.ok_or_else(|| ApiError::Internal(format!("step {step} was not solved again")))?;
+    let input: Vec<f64> = p.positions[step].iter().map(|v| v[0]).collect();
+    let loads: Vec<Load> = p.loads.iter().map(|l| l.at(input[0], [p.positions[step][0][1], 0.0])).collect();
+    Ok(written(&p.mechanism, &p.body_names, &loads, (step, &input), &bodies, false))
 }
 
 fn read(r: &KinetostaticsRequest, e: &mut Errors) -> Option<Problem> {

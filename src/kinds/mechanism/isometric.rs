@@ -13,6 +13,7 @@ use super::MechanismDto;
 use crate::engine::spatial::{JointKind, Mechanism, Pose};
 use crate::i18n::Msg;
 use crate::kind::chart::{Arrow, Axis, Chart, Line, Mark, Pen};
+use crate::kind::isometric_view::View;
 use crate::kind::limits::Limits;
 use crate::kind::quantity::Errors;
 use nalgebra::{Matrix3, Rotation3, UnitQuaternion, Vector3};
@@ -59,36 +60,13 @@ pub fn noted(mut c: Chart, note: String) -> Chart {
     c
 }
 
-/// The isometric view: which axis is up.
-#[derive(Clone, Copy)]
-struct View {
-    up: usize,
-}
-
-impl View {
-    fn of(m: &Mechanism) -> Self {
-        let g = m.gravity.abs();
-        Self { up: if g.norm() > 0.0 { g.imax() } else { 1 } }
-    }
-
-    /// (u, v) on the page of a point in space, seen from (1, 1, 1): of the
-    /// two axes after `up` in turn, the first drawn 30° below the
-    /// horizontal to the left, the second to the right (so that the axes
-    /// stay right-handed).
-    fn project(self, p: &Vector3<f64>) -> (f64, f64) {
-        let (a, b) = (p[(self.up + 1) % 3], p[(self.up + 2) % 3]);
-        let (s, c) = std::f64::consts::FRAC_PI_6.sin_cos();
-        ((b - a) * c, p[self.up] - (a + b) * s)
-    }
-}
-
 /// The mechanism at `pose`, with each joint's reaction (`force`, on the
 /// joint's second body) as an arrow.
 pub fn draw(m: &Mechanism, pose: &Pose, reactions: &[Value], title: String) -> Chart {
-    let view = View::of(m);
+    let view = View::against(&m.gravity);
     let mut c = Chart::new(title, Axis::new("u", "m"), Axis::new("v", "m"));
     c.equal = true;
-    let up = ["x", "y", "z"][view.up];
+    let up = view.up_name();
     c.subtitle = Some(Msg::new("plot-isometric").arg("up", up).text());
     let at: Vec<Vector3<f64>> = m
         .joints
@@ -178,34 +156,4 @@ fn extent(points: &[(f64, f64)]) -> f64 {
         if hi >= lo { hi - lo } else { 0.0 }
     };
     range(|p| p.0).max(range(|p| p.1))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::View;
-    use nalgebra::Vector3;
-
-    /// An isometric view looks along (1, 1, 1): that direction falls on the
-    /// page's origin, each axis is drawn the same length, and x, y, z go
-    /// round counter-clockwise 120° apart (a right-handed frame seen from
-    /// outside), whichever axis is up.
-    #[test]
-    fn the_view_is_isometric_and_right_handed() {
-        for up in 0..3 {
-            let view = View { up };
-            let (u, v) = view.project(&Vector3::new(1.0, 1.0, 1.0));
-            assert!(u.abs() < 1e-15 && v.abs() < 1e-15, "up {up}: ({u}, {v})");
-            let angle = |k: usize| {
-                let (u, v) = view.project(&Vector3::ith(k, 1.0));
-                assert!((u.hypot(v) - 1.0).abs() < 1e-15);
-                v.atan2(u)
-            };
-            for k in 0..3 {
-                let turn = (angle((k + 1) % 3) - angle(k)).rem_euclid(std::f64::consts::TAU);
-                assert!((turn - 2.0 * std::f64::consts::FRAC_PI_3).abs() < 1e-12, "up {up}, axis {k}: {turn}");
-            }
-            let (u, v) = view.project(&Vector3::ith(up, 1.0));
-            assert!(u.abs() < 1e-15 && (v - 1.0).abs() < 1e-15);
-        }
-    }
 }

@@ -17,6 +17,7 @@ pub mod motion3;
 mod points;
 mod reactions;
 pub mod solution;
+pub mod solution3;
 pub mod spatial;
 pub mod spatial_loads;
 pub mod track;

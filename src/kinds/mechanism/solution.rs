@@ -55,18 +55,12 @@ struct Notation<'a> {
 }
 
 impl Notation<'_> {
-    /// `ij` of bodies i and j (the ground 1), `i,j` where one has two digits.
-    fn pair(by: BodyId, on: BodyId) -> String {
-        let (i, j) = (by + 1, on + 1);
-        if i < 10 && j < 10 { format!("{i}{j}") } else { format!("{i},{j}") }
-    }
-
     /// Joint k's reaction as its group's equations give it: on the group's
     /// body (on its second body when both are the group's).
     fn reaction(&self, k: usize, group: &[BodyId]) -> String {
         let [i, j] = self.m.joints[k].bodies;
         let (by, on) = if group.contains(&j) { (i, j) } else { (j, i) };
-        format!("R{}", Self::pair(by, on))
+        format!("R{}", pair(by, on))
     }
 
     /// Input i's effort: `M_m` (a couple) or `F_m` (a force), numbered when
@@ -86,7 +80,7 @@ impl Notation<'_> {
     fn name(&self, action: Action, on: BodyId, couple: bool) -> String {
         let n = on + 1;
         match action {
-            Action::Reaction { by, .. } => format!("{}{}", if couple { "M" } else { "R" }, Self::pair(by, on)),
+            Action::Reaction { by, .. } => format!("{}{}", if couple { "M" } else { "R" }, pair(by, on)),
             Action::Inertia => format!("{}_I{n}", if couple { "M" } else { "F" }),
             Action::Weight => format!("W{n}"),
             Action::Load(k) => load_name(&self.loads[k], k),
@@ -131,9 +125,10 @@ impl Notation<'_> {
                     kind: Self::kind(f.action).into(),
                     by,
                     joint,
-                    at: f.at,
+                    at: f.at.to_vec(),
                     fx: f.f[0],
                     fy: f.f[1],
+                    fz: None,
                     power,
                 }
             })
@@ -145,19 +140,33 @@ impl Notation<'_> {
                 let (by, joint) = self.source(c.action);
                 let name = self.name(c.action, fb.body, true);
                 let power = c.moment * fb.omega;
-                wire::Couple { name, kind: Self::kind(c.action).into(), by, joint, moment: c.moment, power }
+                let kind = Self::kind(c.action).into();
+                wire::Couple { name, kind, by, joint, moment: c.moment, mx: None, my: None, power }
             })
             .collect();
         let [sum_fx, sum_fy, sum_moment_about_cg] = fb.sums;
         wire::FreeBody {
             body: self.names[fb.body].clone(),
             number: fb.body + 1,
-            cg: fb.cg,
+            cg: fb.cg.to_vec(),
             forces,
             couples,
-            equations: wire::Equations { sum_fx, sum_fy, sum_moment_about_cg },
+            equations: wire::Equations {
+                sum_fx,
+                sum_fy,
+                sum_moment_about_cg,
+                sum_fz: None,
+                sum_mx_about_cg: None,
+                sum_my_about_cg: None,
+            },
         }
     }
+}
+
+/// `ij` of bodies i and j (the ground 1), `i,j` where one has two digits.
+pub fn pair(by: BodyId, on: BodyId) -> String {
+    let (i, j) = (by + 1, on + 1);
+    if i < 10 && j < 10 { format!("{i}{j}") } else { format!("{i},{j}") }
 }
 
 /// A load's name: `F1` (a force), `M2` (a torque), `F_k3` (a spring), `F_c4` (a damper), by its place in `loads`.
@@ -172,7 +181,7 @@ fn load_name(load: &Load, k: usize) -> String {
 }
 
 /// Every action's power summed by name over the bodies, the reactions' together.
-fn virtual_power(bodies: &[wire::FreeBody]) -> wire::VirtualPower {
+pub fn virtual_power(bodies: &[wire::FreeBody]) -> wire::VirtualPower {
     let (mut actions, mut reactions) = (BTreeMap::<String, f64>::new(), 0.0);
     let all = bodies.iter().flat_map(|b| {
         let forces = b.forces.iter().map(|f| (f.kind.as_str(), &f.name, f.power));

@@ -22,15 +22,18 @@ T = TypeVar("T", bound="Couple")
 
 @_attrs_define
 class Couple:
-    """ A couple on the body (counter-clockwise positive).
+    """ A couple on the body: about z, counter-clockwise positive (seen from +z),
+    and in space about x and y too.
 
         Attributes:
             kind (str):
-            moment (float): N·m
+            moment (float): M_z, N·m.
             name (str): `M_I3`, `M23` (a pin's friction, a guide's couple), `M_m`.
             power (float): M·ω of the body, W.
             by (None | str | Unset):
             joint (None | str | Unset):
+            mx (float | None | Unset): M_x, N·m, in space.
+            my (float | None | Unset): M_y, N·m, in space.
      """
 
     kind: str
@@ -39,6 +42,8 @@ class Couple:
     power: float
     by: None | str | Unset = UNSET
     joint: None | str | Unset = UNSET
+    mx: float | None | Unset = UNSET
+    my: float | None | Unset = UNSET
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
 
@@ -66,6 +71,18 @@ class Couple:
         else:
             joint = self.joint
 
+        mx: float | None | Unset
+        if isinstance(self.mx, Unset):
+            mx = UNSET
+        else:
+            mx = self.mx
+
+        my: float | None | Unset
+        if isinstance(self.my, Unset):
+            my = UNSET
+        else:
+            my = self.my
+
 
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
@@ -79,6 +96,10 @@ class Couple:
             field_dict["by"] = by
         if joint is not UNSET:
             field_dict["joint"] = joint
+        if mx is not UNSET:
+            field_dict["mx"] = mx
+        if my is not UNSET:
+            field_dict["my"] = my
 
         return field_dict
 
@@ -115,6 +136,26 @@ class Couple:
         joint = _parse_joint(d.pop("joint", UNSET))
 
 
+        def _parse_mx(data: object) -> float | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | Unset, data)
+
+        mx = _parse_mx(d.pop("mx", UNSET))
+
+
+        def _parse_my(data: object) -> float | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | Unset, data)
+
+        my = _parse_my(d.pop("my", UNSET))
+
+
         instance_ = cls(
             kind=kind,
             moment=moment,
@@ -122,6 +163,8 @@ class Couple:
             power=power,
             by=by,
             joint=joint,
+            mx=mx,
+            my=my,
         )
 
 

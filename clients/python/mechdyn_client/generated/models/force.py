@@ -25,13 +25,14 @@ class Force:
     """ A force on the body at the point `at`.
 
         Attributes:
-            at (list[float]): Where it acts at the step, m.
+            at (list[float]): Where it acts at the step, m: [x, y], in space [x, y, z].
             fx (float): N
             fy (float): N
             kind (str): `reaction`, `inertia`, `weight`, `load` or `driving`.
             name (str): `R23`, `F_I3`, `W3`, a load's name, `F_m`.
             power (float): Its power at the step, F·v of its point, W.
             by (None | str | Unset): The body it comes from (a reaction).
+            fz (float | None | Unset): N, in space.
             joint (None | str | Unset): The joint it acts through (a reaction, a driving effort at a joint).
      """
 
@@ -42,6 +43,7 @@ class Force:
     name: str
     power: float
     by: None | str | Unset = UNSET
+    fz: float | None | Unset = UNSET
     joint: None | str | Unset = UNSET
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
@@ -70,6 +72,12 @@ class Force:
         else:
             by = self.by
 
+        fz: float | None | Unset
+        if isinstance(self.fz, Unset):
+            fz = UNSET
+        else:
+            fz = self.fz
+
         joint: None | str | Unset
         if isinstance(self.joint, Unset):
             joint = UNSET
@@ -89,6 +97,8 @@ class Force:
         })
         if by is not UNSET:
             field_dict["by"] = by
+        if fz is not UNSET:
+            field_dict["fz"] = fz
         if joint is not UNSET:
             field_dict["joint"] = joint
 
@@ -122,6 +132,16 @@ class Force:
         by = _parse_by(d.pop("by", UNSET))
 
 
+        def _parse_fz(data: object) -> float | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | Unset, data)
+
+        fz = _parse_fz(d.pop("fz", UNSET))
+
+
         def _parse_joint(data: object) -> None | str | Unset:
             if data is None:
                 return data
@@ -140,6 +160,7 @@ class Force:
             name=name,
             power=power,
             by=by,
+            fz=fz,
             joint=joint,
         )
 

@@ -29,9 +29,10 @@ class FreeBody:
 
         Attributes:
             body (str):
-            cg (list[float]): Its centre of mass G at the step, m.
+            cg (list[float]): Its centre of mass G at the step, m: [x, y], in space [x, y, z].
             couples (list[Couple]):
-            equations (Equations): The body's three equations with its actions' numbers: each is zero to rounding.
+            equations (Equations): The body's three equations with its actions' numbers (six in space):
+                each is zero to rounding.
             forces (list[Force]):
             number (int):
      """
