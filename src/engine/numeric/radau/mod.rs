@@ -11,7 +11,10 @@
 //! the transformation that turns the method's A⁻¹ into γ and the pair
 //! α ± iβ, so that the simplified Newton iteration on W = T⁻¹Z solves one
 //! real system (γ/h − J) and one complex ((α − iβ)/h − J) of the size of y
-//! instead of one three times as large. The error estimate is the
+//! instead of one three times as large. Where one J for the three stages
+//! does not contract (a stiff direction that turns within the step), the
+//! stages' own Jacobians act through products, each one evaluation, in
+//! GMRES preconditioned by those two systems (`krylov`). The error estimate is the
 //! embedded one filtered through (γ/h − J)⁻¹ (so it stays bounded on a
 //! stiff mode); the dense output is the collocation polynomial through
 //! y and the three stages.
@@ -41,6 +44,13 @@ const TI: [[f64; 3]; 3] = [
 ];
 const NEWTON_MAXITER: usize = 6;
 const FULL_NEWTON_MAXITER: usize = 8;
+/// J is computed again after a step whose simplified iteration contracted
+/// slower than this (RADAU5's THET, at the 0.1 its notes advise where a
+/// Jacobian is costly: here n evaluations against three an iteration), or
+/// whose Krylov iteration needed more than this many products an iteration
+/// (J has turned away from the stages').
+const JACOBIAN_RATE: f64 = 0.1;
+const KRYLOV_JACOBIAN: usize = 3;
 const MIN_FACTOR: f64 = 0.2;
 const MAX_FACTOR: f64 = 10.0;
 /// Consecutive attempts with a non-finite f before giving up.
@@ -69,6 +79,10 @@ pub struct Radau5 {
     /// The last step's collocation polynomial, extrapolated for Newton's start.
     previous: Option<Step>,
     newton_tol: f64,
+    /// GMRES's products and Newton's iterations of the step just solved by the Krylov iteration.
+    krylov: Option<(usize, usize)>,
+    /// The last step needed the Krylov iteration with this J: the simplified one is not tried.
+    simplified_fails: bool,
     /// RADAU5's FACCON: θ/(1 − θ) of Newton's last contraction rate θ,
     /// carried from step to step, so that an iteration can converge at its
     /// first increment when the last ones contracted fast (the increment
@@ -105,6 +119,8 @@ impl Stepper for Radau5 {
             lu: None,
             previous: None,
             newton_tol: newton_tolerance(rtol),
+            krylov: None,
+            simplified_fails: false,
             contraction: 1.0,
             accepted: 0,
             rejected: 0,
@@ -128,21 +144,7 @@ impl Stepper for Radau5 {
             if self.lu.is_none() {
                 self.lu = self.factor(h);
             }
-            let outcome = if self.lu.is_some() { self.newton(f, h) } else { Newton::Failed };
-            let outcome = match outcome {
-                Newton::Failed if !self.jac_current => {
-                    self.jacobian(f);
-                    // A Jacobian not finite at an accepted state stays so at any step size
-                    // (f answers NaN past a job's budget): no factorisation can help.
-                    if !self.jac.iter().all(|v| v.is_finite()) {
-                        return Err(OdeError::NotFinite { t: self.t });
-                    }
-                    self.lu = None;
-                    continue;
-                }
-                Newton::Failed if self.lu.is_some() => self.full_newton(f, h),
-                other => other,
-            };
+            let Some(outcome) = self.solve(f, h)? else { continue };
             let (z, iterations, rate) = match outcome {
                 Newton::Converged { z, iterations, rate } => (z, iterations, rate),
                 failed => {
@@ -166,7 +168,11 @@ impl Stepper for Radau5 {
                 continue;
             }
             self.local_errors.iter_mut().zip(&estimate).for_each(|(s, e)| *s += e.abs());
-            let recompute = iterations > 2 && rate > 1e-3;
+            self.simplified_fails = self.krylov.is_some();
+            let recompute = match self.krylov {
+                Some((products, iterations)) => products > KRYLOV_JACOBIAN * iterations,
+                None => iterations > 2 && rate > JACOBIAN_RATE,
+            };
             let factor = (safety * self.predict(h, err)).min(MAX_FACTOR);
             let factor = if !recompute && factor < 1.2 { 1.0 } else { factor };
             return Ok(self.accept(f, h, z, y1, err, factor, recompute));
@@ -193,6 +199,34 @@ impl Stepper for Radau5 {
 }
 
 impl Radau5 {
+    /// Newton's iteration for the step h: the simplified one (unless it
+    /// failed with this J at the last step), else the Krylov one; where
+    /// that fails too, J computed again if it was not current (None: the
+    /// step starts over), else the full iteration with formed Jacobians.
+    fn solve(&mut self, f: &mut impl Rhs, h: f64) -> Result<Option<Newton>, OdeError> {
+        self.krylov = None;
+        let simplified = self.lu.is_some() && !self.simplified_fails;
+        let outcome = if simplified { self.newton(f, h) } else { Newton::Failed };
+        let outcome = match outcome {
+            Newton::Failed if self.lu.is_some() => self.krylov_newton(f, h),
+            other => other,
+        };
+        Ok(Some(match outcome {
+            Newton::Failed if !self.jac_current => {
+                self.jacobian(f);
+                // A Jacobian not finite at an accepted state stays so at any step size
+                // (f answers NaN past a job's budget): no factorisation can help.
+                if !self.jac.iter().all(|v| v.is_finite()) {
+                    return Err(OdeError::NotFinite { t: self.t });
+                }
+                self.lu = None;
+                return Ok(None);
+            }
+            Newton::Failed if self.lu.is_some() => self.full_newton(f, h),
+            other => other,
+        }))
+    }
+
     /// Whether f is finite at the accepted state: where it is not (past a
     /// job's budget f answers NaN), no smaller step can help.
     fn finite_here(&mut self, f: &mut impl Rhs) -> bool {
@@ -311,6 +345,7 @@ fn collocation(z: &Stages) -> Vec<Vec<f64>> {
     vec![z[2].clone(), r2, r3]
 }
 
+mod krylov;
 mod newton;
 #[cfg(test)]
 mod tests;

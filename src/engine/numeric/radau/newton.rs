@@ -11,6 +11,7 @@ impl Radau5 {
     pub(super) fn jacobian(&mut self, f: &mut impl Rhs) {
         let (y, fy) = (self.y.clone(), self.f.clone());
         self.jac = self.difference_jacobian(f, self.t, &y, &fy);
+        self.simplified_fails = false;
         self.jac_current = true;
     }
 
@@ -117,11 +118,11 @@ impl Radau5 {
 
     /// Newton's method on the collocation equations Z = h(A⊗I)F(Z) with
     /// each stage's own Jacobian (one 3n system, 3n more evaluations an
-    /// iteration), where the simplified iteration stalls with a fresh J: a
-    /// stiff spring that turns with its link turns the stiff direction
-    /// within the step, and one J for the three stages contracts only while
-    /// (hω)²·(hΩ) stays small (ω the spring's, Ω the link's rate). The last
-    /// stage's Jacobian (at y₁) is kept for the next step.
+    /// iteration), where the simplified iteration and the Krylov one both
+    /// stall with a fresh J: a stiff spring that turns with its link turns
+    /// the stiff direction within the step, and one J for the three stages
+    /// contracts only while (hω)²·(hΩ) stays small (ω the spring's, Ω the
+    /// link's rate). The last stage's Jacobian (at y₁) is kept for the next step.
     pub(super) fn full_newton(&mut self, f: &mut impl Rhs, h: f64) -> Newton {
         let n = self.y.len();
         let a = radau_matrix();
@@ -190,7 +191,7 @@ pub(super) fn radau_matrix() -> [[f64; 3]; 3] {
 }
 
 /// M·Z for a 3×3 M acting on the three stages.
-fn transform(m: &[[f64; 3]; 3], z: &Stages) -> Stages {
+pub(super) fn transform(m: &[[f64; 3]; 3], z: &Stages) -> Stages {
     let n = z[0].len();
     m.map(|row| (0..n).map(|i| row[0] * z[0][i] + row[1] * z[1][i] + row[2] * z[2][i]).collect())
 }
