@@ -46,52 +46,11 @@ pub fn solve(
     };
     let mut v = jac.transpose();
     inverse_mass(&mut v);
-    let mut lambda = v.tr_mul(q) - gamma;
-    cholesky_solve(normal(jac, &v), &mut lambda)?;
+    let s = jac * &v;
+    let lambda = s.cholesky()?.solve(&(v.tr_mul(q) - gamma));
     let mut a = DMatrix::from_column_slice(q.len(), 1, q.as_slice());
     inverse_mass(&mut a);
     Some(DVector::from_column_slice(a.as_slice()) - v * lambda)
-}
-
-/// S = Φ_q·V, symmetric (its lower half), skipping Φ_q's zeros (a row
-/// touches two bodies of the n): nalgebra's product packs its operands
-/// for blocks far larger than these.
-fn normal(jac: DMatrixView<'_, f64>, v: &DMatrix<f64>) -> DMatrix<f64> {
-    let (m, cols) = jac.shape();
-    let mut s = DMatrix::zeros(m, m);
-    for i in 0..m {
-        for c in (0..cols).filter(|&c| jac[(i, c)] != 0.0) {
-            let g = jac[(i, c)];
-            for k in 0..=i {
-                s[(i, k)] += g * v[(c, k)];
-            }
-        }
-    }
-    s
-}
-
-/// b ← S⁻¹b by Cholesky of S (its lower half) in place; None where S is
-/// not positive definite.
-fn cholesky_solve(mut s: DMatrix<f64>, b: &mut DVector<f64>) -> Option<()> {
-    let m = s.nrows();
-    for j in 0..m {
-        let d = s[(j, j)] - (0..j).map(|k| s[(j, k)] * s[(j, k)]).sum::<f64>();
-        if d.is_nan() || d <= 0.0 {
-            return None;
-        }
-        let d = d.sqrt();
-        s[(j, j)] = d;
-        for i in j + 1..m {
-            s[(i, j)] = (s[(i, j)] - (0..j).map(|k| s[(i, k)] * s[(j, k)]).sum::<f64>()) / d;
-        }
-    }
-    for i in 0..m {
-        b[i] = (b[i] - (0..i).map(|k| s[(i, k)] * b[k]).sum::<f64>()) / s[(i, i)];
-    }
-    for i in (0..m).rev() {
-        b[i] = (b[i] - (i + 1..m).map(|k| s[(k, i)] * b[k]).sum::<f64>()) / s[(i, i)];
-    }
-    Some(())
 }
 
 /// The accelerations from the whole system [M Φ_qᵀ; Φ_q 0] by LU (a
