@@ -22,7 +22,7 @@
 
 use super::constraints::{Rows, coordinate, evaluate};
 use super::energy::energy;
-use super::kinematics::{Motion, assemble, motion};
+use super::kinematics::{Motion, Scaled, assemble, motion};
 use super::kinetostatics::{Actions, applied, inverse_dynamics};
 use super::model::{Load, LoadLaw, Mechanism, Pose};
 use super::range;
@@ -30,7 +30,7 @@ pub use super::setup::SpatialProblem;
 use super::setup::{independent, settings};
 use crate::engine::dynamics::{DynamicsError, DynamicsSolution, Failure, Model, Sample, Start, energy_residual, run};
 use crate::engine::kinetostatics::Energy;
-use nalgebra::{DMatrix, DVector, Matrix3, Quaternion, UnitQuaternion, Vector3, Vector4};
+use nalgebra::{DMatrix, DVector, Quaternion, UnitQuaternion, Vector3, Vector4};
 use std::borrow::Cow;
 
 /// The mechanism at one sample.
@@ -76,11 +76,6 @@ struct Equations<'a> {
     inputs: Mechanism,
     /// The joint rows kept: independent at the start.
     kept: Vec<usize>,
-    /// They are the first ones (none left out).
-    contiguous: bool,
-    /// Every body's (1/m, J⁻¹) as drawn, where every body has a mass and
-    /// an invertible J (else the equations are solved whole).
-    inverse: Option<Vec<(f64, Matrix3<f64>)>>,
     n: usize,
     size: f64,
     /// The loads, where none varies.
@@ -151,40 +146,46 @@ impl Equations<'_> {
     ) -> Option<(DVector<f64>, f64)> {
         let (n, m) = (6 * self.n, self.kept.len());
         let q = applied(&self.joints, loads, pose, v);
-        let mut forces = DVector::zeros(n);
+        let mut rhs = DVector::zeros(n + m);
         let mut blocks = Vec::with_capacity(self.n);
         for (b, body) in self.joints.bodies.iter().enumerate() {
             let rot = pose.rotation(b + 1);
             let j = rot * body.inertia * rot.transpose();
             let omega = Vector3::from(v.fixed_rows::<3>(6 * b + 3));
             let gyro = omega.cross(&(j * omega));
-            forces.fixed_rows_mut::<3>(6 * b).copy_from(&q.fixed_rows::<3>(6 * b));
-            forces.fixed_rows_mut::<3>(6 * b + 3).copy_from(&(q.fixed_rows::<3>(6 * b + 3) - gyro));
-            blocks.push((body.mass, j, rot));
+            rhs.fixed_rows_mut::<3>(6 * b).copy_from(&q.fixed_rows::<3>(6 * b));
+            rhs.fixed_rows_mut::<3>(6 * b + 3).copy_from(&(q.fixed_rows::<3>(6 * b + 3) - gyro));
+            blocks.push((body.mass, j));
         }
-        // The kept rows: the first m as they stand where none was left out.
-        let copied = (!self.contiguous).then(|| DMatrix::from_fn(m, n, |i, c| all.jac[(self.kept[i], c)]));
-        let jac = copied.as_ref().map_or_else(|| all.jac.rows(0, m), |j| j.rows(0, m));
-        let gamma = DVector::from_fn(m, |i, _| all.gamma[self.kept[i]]);
-        let solved = match &self.inverse {
-            Some(inverse) => {
-                let turned: Vec<_> =
-                    inverse.iter().zip(&blocks).map(|((m1, j1), (_, _, r))| (*m1, r * j1 * r.transpose())).collect();
-                range::solve(&turned, jac, &forces, &gamma)
-            }
-            None => None,
-        };
-        let a = match solved {
+        let jac = DMatrix::from_fn(m, n, |i, c| all.jac[(self.kept[i], c)]);
+        for (i, &r) in self.kept.iter().enumerate() {
+            rhs[n + i] = all.gamma[r];
+        }
+        let forces = rhs.rows(0, n).into_owned();
+        let a = match range::accelerations(&blocks, &jac, &forces, &rhs.rows(n, m).into_owned()) {
             Some(a) => a,
-            None => {
-                let blocks: Vec<_> = blocks.iter().map(|(mass, j, _)| (*mass, *j)).collect();
-                match range::accelerations(&blocks, jac, &forces, &gamma) {
-                    Some(a) => a,
-                    None => range::whole(&blocks, &jac.into_owned(), &forces, &gamma)?,
-                }
-            }
+            None => self.whole(&blocks, &jac, &rhs)?,
         };
         a.iter().all(|x| x.is_finite()).then(|| (a, q.dot(v)))
+    }
+
+    /// The accelerations from the whole system [M Φ_qᵀ; Φ_q 0] by LU (a
+    /// body without mass, rows near dependence).
+    fn whole(
+        &self,
+        blocks: &[(f64, nalgebra::Matrix3<f64>)],
+        jac: &DMatrix<f64>,
+        rhs: &DVector<f64>,
+    ) -> Option<DVector<f64>> {
+        let (n, m) = (jac.ncols(), jac.nrows());
+        let mut k = DMatrix::zeros(n + m, n + m);
+        for (b, (mass, j)) in blocks.iter().enumerate() {
+            k.view_mut((6 * b, 6 * b), (3, 3)).fill_diagonal(*mass);
+            k.view_mut((6 * b + 3, 6 * b + 3), (3, 3)).copy_from(j);
+        }
+        k.view_mut((n, 0), (m, n)).copy_from(jac);
+        k.view_mut((0, n), (n, m)).copy_from(&jac.transpose());
+        Some(k.lu().solve(rhs)?.rows(0, n).into_owned())
     }
 
     /// Every input's [coordinate, speed, acceleration] at y with (v, a),
@@ -242,11 +243,11 @@ impl Model for Equations<'_> {
             if gap < 1e-14 * self.size {
                 break;
             }
-            pose.apply(range::least_norm(&rows, &-&rows.phi, self.size).as_slice());
+            pose.apply(Scaled::new(&rows, rows.phi.len(), self.size).solve(&-&rows.phi).0.as_slice());
         }
         let rows = self.rows(&pose, None);
         let v = self.velocities(y);
-        let dv = range::least_norm(&rows, &(&rows.jac * &v), self.size);
+        let (dv, _) = Scaled::new(&rows, rows.phi.len(), self.size).solve(&(&rows.jac * &v));
         let v = v - dv;
         for b in 0..n {
             y[3 * b..3 * b + 3].copy_from_slice(pose.r[b].as_slice());
@@ -315,16 +316,7 @@ pub fn solve(p: &SpatialProblem) -> Result<SpatialSolution, DynamicsError> {
     let n = m.n();
     let fixed = p.loads.iter().map(LoadLaw::fixed).collect();
     let at_rest = vec![[0.0; 3]; m.inputs.len()];
-    let contiguous = kept.iter().enumerate().all(|(i, &k)| i == k);
-    let inverse = joints
-        .bodies
-        .iter()
-        .map(|b| {
-            Some((1.0 / b.mass.is_finite().then_some(b.mass).filter(|m| *m > 0.0)?, b.inertia.cholesky()?.inverse()))
-        })
-        .collect();
-    let inputs = m.clone();
-    let dae = Equations { p, joints, inputs, kept: kept.clone(), contiguous, inverse, n, size, fixed, at_rest };
+    let dae = Equations { p, joints, inputs: m.clone(), kept: kept.clone(), n, size, fixed, at_rest };
     let mut y0 = Vec::with_capacity(13 * n + 2);
     (0..n).for_each(|b| y0.extend(start.pose.r[b].iter()));
     (0..n).for_each(|b| y0.extend(start.pose.p[b].coords.iter()));
