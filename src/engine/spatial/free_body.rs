@@ -11,21 +11,8 @@ use super::kinetostatics::{Actions, spring_ends};
 use super::model::{BodyId, Load, Mechanism};
 use nalgebra::Vector3;
 
-/// Who acts on the body.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Action {
-    /// Joint `joint`'s, from body `by`.
-    Reaction {
-        joint: usize,
-        by: BodyId,
-    },
-    Inertia,
-    Weight,
-    /// `loads[k]`.
-    Load(usize),
-    /// Input i's effort.
-    Driving(usize),
-}
+/// Who acts on the body: the plane's actions, the same in space.
+pub use crate::engine::kinetostatics::Action;
 
 /// A force at a point (ground axes), N and m.
 #[derive(Clone, Debug, PartialEq)]

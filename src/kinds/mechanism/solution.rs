@@ -91,16 +91,6 @@ impl Notation<'_> {
         }
     }
 
-    fn kind(action: Action) -> &'static str {
-        match action {
-            Action::Reaction { .. } => "reaction",
-            Action::Inertia => "inertia",
-            Action::Weight => "weight",
-            Action::Load(_) => "load",
-            Action::Driving(_) => "driving",
-        }
-    }
-
     /// The body it comes from and the joint it acts through.
     fn source(&self, action: Action) -> (Option<String>, Option<String>) {
         match action {
@@ -122,7 +112,7 @@ impl Notation<'_> {
                 let power = fb.power(f.at, f.f);
                 wire::Force {
                     name,
-                    kind: Self::kind(f.action).into(),
+                    kind: kind(f.action).into(),
                     by,
                     joint,
                     at: f.at.to_vec(),
@@ -140,7 +130,7 @@ impl Notation<'_> {
                 let (by, joint) = self.source(c.action);
                 let name = self.name(c.action, fb.body, true);
                 let power = c.moment * fb.omega;
-                let kind = Self::kind(c.action).into();
+                let kind = kind(c.action).into();
                 wire::Couple { name, kind, by, joint, moment: c.moment, mx: None, my: None, power }
             })
             .collect();
@@ -160,6 +150,17 @@ impl Notation<'_> {
                 sum_my_about_cg: None,
             },
         }
+    }
+}
+
+/// An action's `kind` as the solution says it.
+pub fn kind(action: Action) -> &'static str {
+    match action {
+        Action::Reaction { .. } => "reaction",
+        Action::Inertia => "inertia",
+        Action::Weight => "weight",
+        Action::Load(_) => "load",
+        Action::Driving(_) => "driving",
     }
 }
 

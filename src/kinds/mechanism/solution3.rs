@@ -4,7 +4,7 @@
 //! equations. Space has no Assur groups to solve one by one: every body's
 //! equations are solved together (Φ_qᵀ·λ = Q − M·a), one group.
 
-use super::solution::{pair, virtual_power};
+use super::solution::{kind, pair, virtual_power};
 use crate::engine::spatial::free_body::{Action, FreeBody};
 use crate::engine::spatial::{Coordinate, Load, Mechanism};
 use crate::kind::solution::{self as wire, Solution};
@@ -81,16 +81,6 @@ impl Notation<'_> {
         }
     }
 
-    fn kind(action: Action) -> &'static str {
-        match action {
-            Action::Reaction { .. } => "reaction",
-            Action::Inertia => "inertia",
-            Action::Weight => "weight",
-            Action::Load(_) => "load",
-            Action::Driving(_) => "driving",
-        }
-    }
-
     /// The body it comes from and the joint it acts through.
     fn source(&self, action: Action) -> (Option<String>, Option<String>) {
         match action {
@@ -103,14 +93,14 @@ impl Notation<'_> {
     fn free_body(&self, fb: &FreeBody) -> wire::FreeBody {
         let forces = fb.forces.iter().map(|f| {
             let (by, joint) = self.source(f.action);
-            let (name, kind) = (self.name(f.action, fb.body, false), Self::kind(f.action).into());
+            let (name, kind) = (self.name(f.action, fb.body, false), kind(f.action).into());
             let [fx, fy, fz] = [f.f.x, f.f.y, f.f.z];
             let power = fb.power(&f.at, &f.f);
             wire::Force { name, kind, by, joint, at: f.at.iter().copied().collect(), fx, fy, fz: Some(fz), power }
         });
         let couples = fb.couples.iter().map(|c| {
             let (by, joint) = self.source(c.action);
-            let (name, kind) = (self.name(c.action, fb.body, true), Self::kind(c.action).into());
+            let (name, kind) = (self.name(c.action, fb.body, true), kind(c.action).into());
             let power = c.moment.dot(&fb.omega);
             wire::Couple {
                 name,
