@@ -45,7 +45,7 @@ pub struct SpatialMachine {
 
 impl SpatialMachine {
     /// Assembles `mechanism` (one input) around one period of φ, from the
-    /// anchor nearest the drawing (φ = `reference`) both ways round.
+    /// anchor nearest the drawing (φ = `reference`) once round the period.
     pub fn new(
         mechanism: Mechanism,
         loads: Vec<LoadLaw>,
